@@ -1,0 +1,33 @@
+# Every dependency is a Debian 12 package installed by scripts/install-deps.sh.
+
+find_package(Threads REQUIRED)             # must precede glslang's config
+find_package(glslang CONFIG REQUIRED)      # glslang::glslang, glslang::glslang-default-resource-limits
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+
+if(SAFEGI_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(SAFEGI_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
+
+if(SAFEGI_BUILD_RENDERER OR SAFEGI_BUILD_GL)
+  find_package(glm REQUIRED)
+  find_package(OpenImageIO CONFIG REQUIRED)
+  # Debian's OpenImageIO target lists /usr/include/opencv4, which does not exist
+  # unless OpenCV's headers are installed; CMake refuses missing include dirs.
+  get_target_property(_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+  if(_oiio_includes)
+    list(FILTER _oiio_includes EXCLUDE REGEX "opencv4")
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_includes}")
+  endif()
+  find_package(tinyobjloader CONFIG QUIET)
+endif()
+
+if(SAFEGI_BUILD_GL)
+  find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+  find_library(OSMESA_LIBRARY NAMES OSMesa REQUIRED)
+  find_path(OSMESA_INCLUDE_DIR GL/osmesa.h REQUIRED)
+  find_program(GLAD_GENERATOR NAMES glad REQUIRED)
+endif()

@@ -1,0 +1,15 @@
+# Compiler flags shared by every SafeGI target.
+
+if(SAFEGI_SANITIZE)
+  # Debian's glslang is built without RTTI, so UBSan's vptr check cannot be used.
+  set(SAFEGI_SANITIZER_FLAGS -fsanitize=address,undefined -fno-sanitize=vptr
+                             -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
+  add_compile_options(${SAFEGI_SANITIZER_FLAGS})
+  add_link_options(${SAFEGI_SANITIZER_FLAGS})
+endif()
+
+# Applies the project's warning level to one target without forcing it on
+# third-party code pulled in through add_subdirectory.
+function(safegi_target_defaults target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wno-missing-field-initializers)
+endfunction()

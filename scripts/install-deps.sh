@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs SafeGI's build and test dependencies from Debian 12 packages.
+# Idempotent and non-interactive; does nothing (and needs no network) when
+# everything is already installed. Must run as root (or with sudo available).
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git python3
+  clang libclang-rt-14-dev           # libFuzzer target of the compiler
+  glslang-dev glslang-tools          # validates emitted GLSL; glslangValidator for benchmarks
+  libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
+  python3-glad                       # generates the GL loader at build time
+  libglm-dev
+  libopenimageio-dev
+  nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  valgrind                           # instruction counts for the benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The test command: installs dependencies, builds, and runs the whole test suite.
+#   scripts/test.sh               Release build + every ctest test
+#   scripts/test.sh --sanitize    also rebuilds the compiler under ASan+UBSan and runs its tests there
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+sanitize=0
+[[ "${1:-}" == "--sanitize" || -n "${SAFEGI_SANITIZE_TESTS:-}" ]] && sanitize=1
+
+"$root/scripts/install-deps.sh"
+jobs=${SAFEGI_JOBS:-$(nproc)}
+
+"$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
+(cd "$root/build" && ctest --output-on-failure -j "$jobs")
+
+if ((sanitize)); then
+  # The compiler and the typed library under ASan+UBSan (the GL and renderer
+  # parts are left out: Mesa and OpenImageIO are not built with sanitizers).
+  "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON \
+      -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_RENDERER=OFF -DSAFEGI_BUILD_BENCH=OFF
+  (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" -L sanitize)
+fi
