@@ -14,6 +14,8 @@ namespace {
 
 Float3 column(const Affine& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
 
+using kernel::Ray;
+
 Affine inverse(const Affine& a) {
   const auto& m = a.m;
   float c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
@@ -131,11 +133,11 @@ bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, floa
   });
 }
 
-std::optional<SurfaceHit> PrimitiveSet::intersect(const Ray& ray, float t_max) const {
+std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) const {
   uint32_t primitive = 0;
   float b1 = 0, b2 = 0;
   if (!trace<false>(ray, t_max, primitive, b1, b2)) return std::nullopt;
-  SurfaceHit hit;
+  kernel::Hit hit;
   hit.distance = t_max;
   if (primitive < triangles_.size()) {
     const Triangle& tri = triangles_[primitive];
@@ -273,11 +275,12 @@ namespace {
 
 float uniform_scale(const Affine& m) { return kernel::length(column(m, 0)); }
 
-void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Affine* to_world) {
-  auto place = [&](Float3 p) { return to_world ? to_world->apply_point(p) : p; };
+// Adds a shape in world space (`to_world` given) or in its own object space.
+void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const ObjectToWorld* to_world) {
+  auto place = [&](PointObject p) { return to_world ? to_kernel((*to_world)(p)) : to_kernel(p); };
   if (shape.type == Shape::Type::sphere) {
-    float scale = to_world ? uniform_scale(*to_world) : 1.0f;
-    set.add_sphere(place(shape.center), shape.radius * scale, index);
+    float scale = to_world ? uniform_scale(Affine::from(*to_world)) : 1.0f;
+    set.add_sphere(place(shape.center), sg::raw(shape.radius) * scale, index);
     return;
   }
   for (size_t i = 0; i + 2 < shape.indices.size(); i += 3)
@@ -287,21 +290,29 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Affi
 
 }  // namespace
 
+Affine Affine::from(const ObjectToWorld& map) {
+  glm::mat4 forward = sg::raw(map).forward;  // column-major
+  Affine a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) a.m[r][c] = forward[c][r];
+  return a;
+}
+
 Geometry::Geometry(const Scene& scene) {
   bool shutter_open = scene.camera.shutter_close > scene.camera.shutter_open;
+  float time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
     if (shutter_open && shape.render_from_object_at_close) {
       Instance instance{PrimitiveSet{},
-                        RigidMotion(shape.render_from_object, *shape.render_from_object_at_close,
-                                    scene.camera.shutter_open, scene.camera.shutter_close),
+                        RigidMotion(Affine::from(shape.render_from_object),
+                                    Affine::from(*shape.render_from_object_at_close), time_open, time_close),
                         Bounds3{}};
       add_shape(instance.primitives, shape, i, nullptr);
       instance.primitives.build();
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below
       for (int s = 0; s <= kPoseSamples; ++s) {
-        float time = scene.camera.shutter_open +
-                     (scene.camera.shutter_close - scene.camera.shutter_open) * static_cast<float>(s) / kPoseSamples;
+        float time = time_open + (time_close - time_open) * static_cast<float>(s) / kPoseSamples;
         instance.swept_bounds.extend(transform_bounds(instance.motion.at(time), instance.primitives.bounds()));
       }
       Float3 pad = instance.swept_bounds.extent() * 0.01f;
@@ -317,8 +328,10 @@ Geometry::Geometry(const Scene& scene) {
   if (!static_primitives_.empty()) bounds_.extend(static_primitives_.bounds());
 }
 
-std::optional<SurfaceHit> Geometry::intersect(const Ray& ray, float t_max) const {
-  std::optional<SurfaceHit> hit = static_primitives_.intersect(ray, t_max);
+std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
+  Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
+  float t_max = kernel::kInfinity;
+  std::optional<kernel::Hit> hit = static_primitives_.intersect(ray, t_max);
   if (hit) t_max = hit->distance;
   for (const Instance& instance : instances_) {
     if (!kernel::intersect_bounds(instance.swept_bounds, kernel::TraversalRay(ray.origin, ray.direction), t_max))
@@ -328,9 +341,9 @@ std::optional<SurfaceHit> Geometry::intersect(const Ray& ray, float t_max) const
     Float3 direction = object_from_render.apply_vector(ray.direction);
     float stretch = kernel::length(direction);
     Ray local{object_from_render.apply_point(ray.origin), direction * (1.0f / stretch), ray.time};
-    std::optional<SurfaceHit> local_hit = instance.primitives.intersect(local, t_max * stretch);
+    std::optional<kernel::Hit> local_hit = instance.primitives.intersect(local, t_max * stretch);
     if (!local_hit) continue;
-    SurfaceHit world = *local_hit;
+    kernel::Hit world = *local_hit;
     world.distance = local_hit->distance / stretch;
     world.position = render_from_object.apply_point(local_hit->position);
     world.position_error = abs_apply_vector(render_from_object, local_hit->position_error) +
@@ -340,10 +353,14 @@ std::optional<SurfaceHit> Geometry::intersect(const Ray& ray, float t_max) const
     t_max = world.distance;
     hit = world;
   }
-  return hit;
+  if (!hit) return std::nullopt;
+  return SurfaceHit{from_kernel<PointWorld>(hit->position), hit->position_error, from_kernel<NormalWorld>(hit->normal),
+                    sg::from_raw<Length>(hit->distance), hit->shape};
 }
 
-bool Geometry::occluded(const Ray& ray, float t_max) const {
+bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {
+  Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
+  float t_max = sg::raw(typed_t_max);
   if (static_primitives_.occluded(ray, t_max)) return true;
   for (const Instance& instance : instances_) {
     if (!kernel::intersect_bounds(instance.swept_bounds, kernel::TraversalRay(ray.origin, ray.direction), t_max))
@@ -360,20 +377,22 @@ bool Geometry::occluded(const Ray& ray, float t_max) const {
 // ---------------------------------------------------------------------------
 // Ray spawning
 
-Ray spawn_ray(const SurfaceHit& hit, Float3 direction, float time) {
-  return Ray{kernel::offset_ray_origin(hit.position, hit.position_error, hit.normal, direction), direction, time};
+TimedRay spawn_ray(const SurfaceHit& hit, DirectionWorld direction, Time time) {
+  Float3 origin =
+      kernel::offset_ray_origin(to_kernel(hit.position), hit.position_error, to_kernel(hit.normal), to_kernel(direction));
+  return TimedRay{ray<World>{from_kernel<PointWorld>(origin), direction}, time};
 }
 
-Ray spawn_ray_to(const SurfaceHit& from, Float3 target, Float3 target_error, Float3 target_normal, float time,
-                 float& t_max) {
-  Float3 toward = target - from.position;
-  Float3 origin = kernel::offset_ray_origin(from.position, from.position_error, from.normal, toward);
-  Float3 end = kernel::offset_ray_origin(target, target_error, target_normal, origin - target);
+TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Float3 target_error, Float3 target_normal, Time time,
+                      Length& t_max) {
+  Float3 start = to_kernel(from.position), end_point = to_kernel(target);
+  Float3 origin = kernel::offset_ray_origin(start, from.position_error, to_kernel(from.normal), end_point - start);
+  Float3 end = kernel::offset_ray_origin(end_point, target_error, target_normal, origin - end_point);
   Float3 d = end - origin;
   float distance = kernel::length(d);
   constexpr float kShadowEpsilon = 1e-4f;  // relative: stop just short of the (offset) light point
-  t_max = distance * (1 - kShadowEpsilon);
-  return Ray{origin, d * (1.0f / distance), time};
+  t_max = sg::from_raw<Length>(distance * (1 - kShadowEpsilon));
+  return TimedRay{ray<World>{from_kernel<PointWorld>(origin), from_kernel<DirectionWorld>(d * (1.0f / distance))}, time};
 }
 
 }  // namespace safegi::render

@@ -13,20 +13,63 @@ namespace safegi::render {
 
 using kernel::Float3;
 
-// A world-space ray; `time` picks the pose of moving objects.
-struct Ray {
-  Float3 origin;
-  Float3 direction;  // unit length
-  float time = 0.0f;
+// A world-space ray at an instant of the shutter interval, which picks the pose
+// of moving objects.
+struct TimedRay : ray<World> {
+  Time time = sg::zero;
 };
 
 struct SurfaceHit {
-  Float3 position;
-  Float3 position_error;  // rounding-error box around `position`
-  Float3 normal;          // unit geometric normal, on the side given by the winding
-  float distance = 0.0f;  // along the ray
+  PointWorld position;
+  Float3 position_error;  // rounding-error box around `position`, in metres
+  NormalWorld normal;     // geometric normal, on the side given by the winding
+  Length distance = sg::zero;  // along the ray
   uint32_t shape = 0;     // index into Scene::shapes
 };
+
+namespace kernel {
+
+// A ray in the kernel's plain floats: metres, seconds, a unit direction.
+struct Ray {
+  Float3 origin;
+  Float3 direction;
+  float time = 0.0f;
+};
+
+struct Hit {
+  Float3 position;
+  Float3 position_error;
+  Float3 normal;
+  float distance = 0.0f;
+  uint32_t shape = 0;
+};
+
+// An affine map on plain floats (row-major 3x4), for instancing and motion.
+struct Affine {
+  float m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+
+  static Affine from(const ObjectToWorld& map);
+  Float3 apply_point(Float3 p) const {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+  }
+  Float3 apply_vector(Float3 v) const {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+  }
+  friend Affine operator*(const Affine& a, const Affine& b) {
+    Affine r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j)
+        r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j] + (j == 3 ? a.m[i][3] : 0.0f);
+    return r;
+  }
+};
+
+}  // namespace kernel
+
+using kernel::Affine;
 
 // Primitives of one space: triangles first, then spheres, under one BVH.
 class PrimitiveSet {
@@ -48,12 +91,12 @@ class PrimitiveSet {
   bool empty() const { return triangles_.empty() && spheres_.empty(); }
   kernel::Bounds3 bounds() const { return bvh_.bounds(); }
 
-  std::optional<SurfaceHit> intersect(const Ray& ray, float t_max) const;
-  bool occluded(const Ray& ray, float t_max) const;
+  std::optional<kernel::Hit> intersect(const kernel::Ray& ray, float t_max) const;
+  bool occluded(const kernel::Ray& ray, float t_max) const;
 
  private:
   template <bool any_hit>
-  bool trace(const Ray& ray, float& t_max, uint32_t& primitive, float& b1, float& b2) const;
+  bool trace(const kernel::Ray& ray, float& t_max, uint32_t& primitive, float& b1, float& b2) const;
 
   std::vector<Triangle> triangles_;
   std::vector<Sphere> spheres_;
@@ -82,8 +125,8 @@ class Geometry {
  public:
   explicit Geometry(const Scene& scene);
 
-  std::optional<SurfaceHit> intersect(const Ray& ray, float t_max = kernel::kInfinity) const;
-  bool occluded(const Ray& ray, float t_max) const;
+  std::optional<SurfaceHit> intersect(const TimedRay& ray) const;
+  bool occluded(const TimedRay& ray, Length t_max) const;
   bool has_motion() const { return !instances_.empty(); }
   kernel::Bounds3 bounds() const { return bounds_; }
 
@@ -99,10 +142,11 @@ class Geometry {
   kernel::Bounds3 bounds_;
 };
 
-// Points a ray leaves from, pushed off the surface on the side of `direction`.
-Ray spawn_ray(const SurfaceHit& hit, Float3 direction, float time);
-// A shadow ray from a surface to a point; `t_max` stops just short of the target.
-Ray spawn_ray_to(const SurfaceHit& from, Float3 target, Float3 target_error, Float3 target_normal, float time,
-                 float& t_max);
+// A ray leaving a surface, its origin pushed off the surface on the side of `direction`.
+TimedRay spawn_ray(const SurfaceHit& hit, DirectionWorld direction, Time time);
+// A shadow ray from a surface to a point (with its error box and normal, zero
+// for point lights); `t_max` stops just short of the target.
+TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Float3 target_error, Float3 target_normal, Time time,
+                      Length& t_max);
 
 }  // namespace safegi::render

@@ -24,7 +24,7 @@ class Integrator {
         max_depth_(max_depth) {}
 
   // Radiance arriving at the camera along `camera_ray`.
-  Rgb radiance(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
+  Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
     // MIS bookkeeping exists only in the instantiation for scenes with area lights.
     return lights_.has_area_lights() ? trace<true>(camera_ray, sampler, counters)
                                      : trace<false>(camera_ray, sampler, counters);
@@ -32,11 +32,11 @@ class Integrator {
 
  private:
   template <bool area_lights>
-  Rgb trace(Ray ray, Sampler& sampler, RayCounters& counters) const;
+  Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
   template <bool area_lights>
-  Rgb sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const struct ShadingFrame& frame, Float3 wo,
-                    Sampler& sampler, float time, RayCounters& counters) const;
+  Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
+                         DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const;
 
   const Scene& scene_;
   const Geometry& geometry_;

@@ -6,57 +6,55 @@
 
 namespace safegi::render {
 
-using kernel::cross;
-using kernel::dot;
-
 Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
-  std::vector<float> powers;
+  std::vector<double> powers;  // watts, averaged over the channels
   for (const PointLight& point : scene.point_lights) {
-    Light light{};
+    Light light;
     light.type = Light::Type::point;
     light.position = point.position;
     light.intensity = point.intensity;
     lights_.push_back(light);
-    powers.push_back(4 * kPi * point.intensity.average());
+    powers.push_back(sg::raw(sg::average(point.intensity) * (4 * sg::pi * units::steradian)));
   }
   for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (!shape.emission) continue;
-    Light light{};
-    light.shape = s;
+    Light light;
     light.radiance = *shape.emission;
     light.two_sided = shape.two_sided_emission;
-    const Affine& to_world = shape.render_from_object;
+    const ObjectToWorld& render_from_object = shape.render_from_object;
+    quantity<dim::area> area = sg::zero;
     if (shape.type == Shape::Type::sphere) {
       light.type = Light::Type::sphere;
-      light.center = to_world.apply_point(shape.center);
-      light.radius = shape.radius * kernel::length(Float3{to_world.m[0][0], to_world.m[1][0], to_world.m[2][0]});
-      light.area = 4 * kPi * light.radius * light.radius;
+      light.position = render_from_object(shape.center);
+      light.radius = sg::length(render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero)));
+      area = 4 * sg::pi * light.radius * light.radius;
     } else {
       light.type = Light::Type::triangles;
       light.first_triangle = static_cast<uint32_t>(triangles_.size());
-      double area = 0;
       for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-        Float3 a = to_world.apply_point(shape.positions[shape.indices[i]]);
-        Float3 b = to_world.apply_point(shape.positions[shape.indices[i + 1]]);
-        Float3 c = to_world.apply_point(shape.positions[shape.indices[i + 2]]);
-        area += 0.5 * kernel::length(cross(b - a, c - a));
-        triangles_.push_back({a, b - a, c - a, static_cast<float>(area)});
+        PointWorld a = render_from_object(shape.positions[shape.indices[i]]);
+        PointWorld b = render_from_object(shape.positions[shape.indices[i + 1]]);
+        PointWorld c = render_from_object(shape.positions[shape.indices[i + 2]]);
+        area += 0.5f * sg::length(sg::cross(b - a, c - a));
+        triangles_.push_back({a, b - a, c - a, sg::raw(area)});
       }
       light.triangle_count = static_cast<uint32_t>(triangles_.size()) - light.first_triangle;
-      light.area = static_cast<float>(area);
-      for (uint32_t t = 0; t < light.triangle_count; ++t) triangles_[light.first_triangle + t].area_cdf /= light.area;
-      if (!(light.area > 0)) continue;
+      for (uint32_t t = 0; t < light.triangle_count; ++t) triangles_[light.first_triangle + t].area_cdf /= sg::raw(area);
     }
+    if (!(area > sg::zero)) continue;
+    light.pdf_area = 1.0f / area;
     light_of_shape_[s] = static_cast<int32_t>(lights_.size());
     lights_.push_back(light);
-    powers.push_back((light.two_sided ? 2 : 1) * kPi * light.area * light.radiance.average());
+    // A diffuse emitter radiates π·A·L per side.
+    auto power = sg::average(light.radiance) * area * (sg::pi * units::steradian * units::proj);
+    powers.push_back((light.two_sided ? 2 : 1) * sg::raw(power));
     has_area_lights_ = true;
   }
   double total = 0;
-  for (float p : powers) total += p;
+  for (double p : powers) total += p;
   double running = 0;
-  for (float p : powers) {
+  for (double p : powers) {
     running += total > 0 ? p / total : 1.0 / static_cast<double>(powers.size());
     power_cdf_.push_back(static_cast<float>(running));
   }
@@ -72,7 +70,7 @@ uint32_t Lights::choose(float u) const {
   return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
 }
 
-std::optional<LightSample> Lights::sample(Float3 reference, float u_light, float u1, float u2) const {
+std::optional<LightSample> Lights::sample(PointWorld reference, float u_light, float u1, float u2) const {
   if (lights_.empty()) return std::nullopt;
   uint32_t index = choose(u_light);
   const Light& light = lights_[index];
@@ -80,22 +78,23 @@ std::optional<LightSample> Lights::sample(Float3 reference, float u_light, float
   if (!(probability > 0)) return std::nullopt;
   LightSample sample;
   if (light.type == Light::Type::point) {
-    Float3 d = light.position - reference;
-    float distance2 = dot(d, d);
-    if (!(distance2 > 0)) return std::nullopt;
-    sample.distance = std::sqrt(distance2);
-    sample.wi = d * (1.0f / sample.distance);
+    VectorWorld toward = light.position - reference;
+    sample.distance = sg::length(toward);
+    if (!(sample.distance > sg::zero)) return std::nullopt;
+    sample.wi = sg::normalize(toward);
     sample.position = light.position;
-    sample.incident = light.intensity * (1.0f / distance2);
-    sample.pdf = probability;
+    sample.intensity = light.intensity;
+    sample.probability = probability;
     sample.delta = true;
     return sample;
   }
+  NormalWorld normal;
   if (light.type == Light::Type::sphere) {
-    Float3 n = sample_uniform_sphere(u1, u2);
-    sample.normal = n;
-    sample.position = light.center + n * light.radius;
-    sample.position_error = (kernel::abs(n * light.radius) + kernel::abs(light.center)) * kernel::gamma(6);
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    sample.position = light.position + offset;
+    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
   } else {
     // Reuse what is left of u_light to pick a triangle by area.
     float low = index == 0 ? 0.0f : power_cdf_[index - 1];
@@ -107,42 +106,43 @@ std::optional<LightSample> Lights::sample(Float3 reference, float u_light, float
     if (tri == last) tri = last - 1;
     float root = std::sqrt(u1);
     float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-    Float3 along_u = tri->e1 * b1, along_v = tri->e2 * b2;
+    VectorWorld along_u = tri->e1 * b1, along_v = tri->e2 * b2;
     sample.position = tri->p0 + along_u + along_v;
-    sample.position_error = (kernel::abs(tri->p0) + kernel::abs(along_u) + kernel::abs(along_v)) * kernel::gamma(7);
-    sample.normal = kernel::normalize(cross(tri->e1, tri->e2));
+    sample.position_error =
+        (kernel::abs(to_kernel(tri->p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+        kernel::gamma(7);
+    normal = sg::to_normal(sg::normalize(sg::cross(tri->e1, tri->e2)));
   }
-  Float3 d = sample.position - reference;
-  float distance2 = dot(d, d);
-  if (!(distance2 > 0)) return std::nullopt;
-  sample.distance = std::sqrt(distance2);
-  sample.wi = d * (1.0f / sample.distance);
-  float cos_light = -dot(sample.normal, sample.wi);
-  if (light.two_sided) cos_light = std::fabs(cos_light);
-  if (!(cos_light > 0)) return std::nullopt;
-  sample.incident = light.radiance;
-  // Area density to solid-angle density: dA = r^2 / cos(theta_light) dω.
-  sample.pdf = probability / light.area * distance2 / cos_light;
+  VectorWorld toward = sample.position - reference;
+  sample.distance = sg::length(toward);
+  if (!(sample.distance > sg::zero)) return std::nullopt;
+  sample.wi = sg::normalize(toward);
+  Proj cos_light = -sg::dot(normal, sample.wi);
+  if (light.two_sided) cos_light = sg::abs(cos_light);
+  if (!(cos_light > sg::zero)) return std::nullopt;
+  sample.emitter_normal = to_kernel(normal);
+  sample.radiance = light.radiance;
+  sample.pdf = probability * to_solid_angle_density(light.pdf_area, cos_light, sample.distance);
   return sample;
 }
 
-Rgb Lights::emitted(const SurfaceHit& hit, Float3 direction) const {
+Radiance Lights::emitted(const SurfaceHit& hit, DirectionWorld incoming) const {
   int32_t index = light_of_shape_[hit.shape];
-  if (index < 0) return Rgb(0.0f);
+  if (index < 0) return Radiance{};
   const Light& light = lights_[index];
-  if (!light.two_sided && dot(hit.normal, direction) >= 0) return Rgb(0.0f);
+  if (!light.two_sided && sg::dot(hit.normal, incoming) >= sg::zero) return Radiance{};
   return light.radiance;
 }
 
-float Lights::pdf(Float3 reference, const SurfaceHit& hit) const {
+PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit) const {
   int32_t index = light_of_shape_[hit.shape];
-  if (index < 0) return 0.0f;
+  if (index < 0) return sg::zero;
   const Light& light = lights_[index];
-  Float3 d = hit.position - reference;
-  float distance2 = dot(d, d);
-  float cos_light = std::fabs(dot(hit.normal, d)) / std::sqrt(distance2);
-  if (!(cos_light > 0)) return 0.0f;
-  return selection_probability(static_cast<uint32_t>(index)) / light.area * distance2 / cos_light;
+  VectorWorld toward = hit.position - reference;
+  Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
+  if (!(cos_light > sg::zero)) return sg::zero;
+  return selection_probability(static_cast<uint32_t>(index)) *
+         to_solid_angle_density(light.pdf_area, cos_light, sg::length(toward));
 }
 
 }  // namespace safegi::render

@@ -13,52 +13,53 @@ namespace safegi::render {
 
 // A point on a light as seen from a shading point.
 struct LightSample {
-  Float3 position;
-  Float3 position_error;
-  Float3 normal;          // emitter normal; zero for point lights
-  Float3 wi;              // unit direction from the shading point to the light
-  float distance = 0;
-  // Area lights: emitted radiance towards the shading point and the density of
-  // choosing this light and this direction, per solid angle.
-  // Point lights: intensity / distance^2 (irradiance at normal incidence) and
-  // the probability of choosing this light.
-  Rgb incident;
-  float pdf = 0;
-  bool delta = false;
+  PointWorld position;
+  Float3 position_error;   // metres
+  Float3 emitter_normal;   // unit normal of an area light; zero for point lights
+  DirectionWorld wi;       // from the shading point towards the light
+  Length distance = sg::zero;
+  bool delta = false;      // a point light: no density over directions
+  // Point lights: the intensity towards the shading point and the probability
+  // of having chosen this light.
+  Intensity intensity;
+  float probability = 0;
+  // Area lights: the emitted radiance and the density of this direction,
+  // light choice included.
+  Radiance radiance;
+  PdfSolidAngle pdf = sg::zero;
 };
 
 class Lights {
  public:
-  Lights(const Scene& scene);
+  explicit Lights(const Scene& scene);
 
   bool empty() const { return lights_.empty(); }
   bool has_area_lights() const { return has_area_lights_; }
 
   // One light chosen by power, then a point on it.
-  std::optional<LightSample> sample(Float3 reference, float u_light, float u1, float u2) const;
+  std::optional<LightSample> sample(PointWorld reference, float u_light, float u1, float u2) const;
 
-  // Radiance leaving an emissive shape at `hit` towards `-direction`.
-  Rgb emitted(const SurfaceHit& hit, Float3 direction) const;
+  // Radiance an emissive surface sends back along `incoming` (towards -incoming).
+  Radiance emitted(const SurfaceHit& hit, DirectionWorld incoming) const;
   // Solid-angle density with which sample() would have produced the emitter
   // point `hit` as seen from `reference`.
-  float pdf(Float3 reference, const SurfaceHit& hit) const;
+  PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit) const;
 
  private:
   struct Light {
-    enum class Type { point, triangles, sphere } type;
-    Float3 position;  // point light
-    Rgb intensity;    // point light
-    uint32_t shape = 0;
+    enum class Type { point, triangles, sphere } type = Type::point;
+    PointWorld position;  // point light, sphere centre
+    Intensity intensity;  // point light
     uint32_t first_triangle = 0, triangle_count = 0;
-    Float3 center;  // sphere
-    float radius = 0;
-    float area = 0;
-    Rgb radiance;
+    Length radius = sg::zero;  // sphere
+    PdfArea pdf_area = sg::zero;  // 1 / surface area
+    Radiance radiance;
     bool two_sided = false;
   };
   struct EmitterTriangle {
-    Float3 p0, e1, e2;
-    float area_cdf;  // cumulative area within its light, normalised to 1 at its last triangle
+    PointWorld p0;
+    VectorWorld e1, e2;
+    float area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
 
   float selection_probability(uint32_t light) const;

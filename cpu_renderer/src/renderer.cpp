@@ -159,9 +159,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
             double* sum = &sums[3 * (static_cast<size_t>(y - window.y) * window.width + (x - window.x))];
             for (int s = pass_begin; s < pass_end; ++s) {
               Sampler sampler(options.seed, static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(s));
-              Ray ray = camera.generate(x, y, sampler);
+              TimedRay ray = camera.generate(x, y, sampler);
               ++counter.camera;
-              Rgb L = integrator.radiance(ray, sampler, counter);
+              glm::vec3 L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
               if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
                 ++invalid[thread_index];
                 continue;

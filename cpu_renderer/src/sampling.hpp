@@ -1,5 +1,5 @@
-// Warps from the unit square to the domains the renderer samples, and the
-// local shading frame they are expressed in.
+// Warps from the unit square to the domains the renderer samples, on plain
+// floats (unit vectors around +z); callers give them their space.
 #pragma once
 
 #include <cmath>
@@ -13,21 +13,6 @@ using kernel::Float3;
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
 inline constexpr float kInversePi = 1.0f / kPi;
-
-// An orthonormal frame around a unit normal (Duff et al. 2017); local z is the normal.
-struct ShadingFrame {
-  Float3 tangent, bitangent, normal;
-
-  explicit ShadingFrame(Float3 n) : normal(n) {
-    float sign = std::copysign(1.0f, n.z);
-    float a = -1.0f / (sign + n.z);
-    float b = n.x * n.y * a;
-    tangent = {1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    bitangent = {b, sign + n.y * n.y * a, -n.y};
-  }
-  Float3 to_local(Float3 v) const { return {dot(v, tangent), dot(v, bitangent), dot(v, normal)}; }
-  Float3 to_world(Float3 v) const { return tangent * v.x + bitangent * v.y + normal * v.z; }
-};
 
 inline Float3 sample_cosine_hemisphere(float u1, float u2) {
   // Concentric disk mapping (Shirley–Chiu), lifted to the hemisphere.

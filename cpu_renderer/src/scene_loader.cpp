@@ -20,6 +20,33 @@ namespace {
 using Json = nlohmann::json;
 using Triple = std::array<double, 3>;
 
+// The run-time twin of a compile-time dimension, so that a field's expected
+// unit is derived from the type it is stored in. `proj` is internal
+// bookkeeping for the cosine and never written in a scene file.
+template <class Term>
+void add_term(RuntimeDimension& dimension) {
+  constexpr std::string_view name = Term::base::name.view();
+  constexpr std::pair<std::string_view, Base> kBases[] = {
+      {"length", Base::length}, {"time", Base::time}, {"energy", Base::energy},
+      {"angle", Base::angle},   {"solid_angle", Base::solid_angle}};
+  for (const auto& [base_name, base] : kBases)
+    if (name == base_name) dimension.exponents[static_cast<int>(base)] += Term::exponent;
+}
+template <class... Terms>
+RuntimeDimension runtime_dimension(dimension<Terms...>) {
+  RuntimeDimension result;
+  (add_term<Terms>(result), ...);
+  return result;
+}
+template <class D>
+RuntimeDimension runtime_dimension_of() {
+  return runtime_dimension(D{});
+}
+
+glm::vec3 to_vec3(const Triple& t) {
+  return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+}
+
 // Where a value sits in the document, spelled as in error messages: shapes[2].radius.
 class JsonPath {
  public:
@@ -141,21 +168,24 @@ class Loader {
   }
 
   // An RGB spectrum: a triple, or one scalar for grey.
-  Rgb spectrum(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
+  struct Rgb {
+    float r, g, b;
+  };
+  Rgb rgb_field(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
     bool is_triple = value.is_array() || (value.is_object() && value.contains("value") && value["value"].is_array());
     if (!is_triple) {
       float grey = static_cast<float>(scalar(value, path, expected));
-      return Rgb(grey);
+      return {grey, grey, grey};
     }
     Triple t = triple(value, path, expected);
-    return Rgb(static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2]));
+    return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
   }
 
   Reflectance reflectance(const Json& value, const JsonPath& path) {
-    Rgb rgb = spectrum(value, path, runtime_dim::none);
-    for (float c : {rgb.r, rgb.g, rgb.b})
-      if (c < 0 || c > 1) fail(path, "reflectance must lie in [0, 1], got " + short_dump(value));
-    return rgb;
+    Reflectance albedo = typed_spectrum<dim::dimensionless>(value, path);
+    for (int c = 0; c < 3; ++c)
+      if (albedo[c] < 0 || albedo[c] > 1) fail(path, "reflectance must lie in [0, 1], got " + short_dump(value));
+    return albedo;
   }
 
   int integer(const Json& value, const JsonPath& path, int minimum, int maximum) {
@@ -175,8 +205,19 @@ class Loader {
     return value.get<bool>();
   }
 
-  static kernel::Float3 to_float3(const Triple& t) {
-    return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+  // Typed fields: the expected dimension comes from the type the value is stored in.
+  template <class D>
+  quantity<D> typed_scalar(const Json& value, const JsonPath& path) {
+    return sg::from_raw<quantity<D>>(static_cast<float>(scalar(value, path, runtime_dimension_of<D>())));
+  }
+  template <class D>
+  sg::spectrum<D> typed_spectrum(const Json& value, const JsonPath& path) {
+    Rgb rgb = rgb_field(value, path, runtime_dimension_of<D>());
+    return sg::from_raw<sg::spectrum<D>>(glm::vec3(rgb.r, rgb.g, rgb.b));
+  }
+  template <class P>
+  P typed_point(const Json& value, const JsonPath& path) {
+    return sg::from_raw<P>(to_vec3(triple(value, path, runtime_dim::length)));
   }
 
   void load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings);
@@ -246,35 +287,34 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
 
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
   object(value, path, {"position", "look_at", "up", "fov", "lens_radius", "focus_distance", "shutter"});
-  camera.position = to_float3(triple(required(value, path, "position"), path.field("position"), runtime_dim::length));
-  camera.look_at = to_float3(triple(required(value, path, "look_at"), path.field("look_at"), runtime_dim::length));
-  camera.up = to_float3(triple(required(value, path, "up"), path.field("up"), runtime_dim::none));
-  double fov = scalar(required(value, path, "fov"), path.field("fov"), runtime_dim::angle);
-  if (!(fov > 0 && fov < std::numbers::pi)) fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
-  camera.fov = static_cast<Angle>(fov);
-  kernel::Float3 forward = camera.look_at - camera.position;
-  if (!(kernel::length(forward) > 0)) fail(path.field("look_at"), "must differ from position");
-  if (!(kernel::length(kernel::cross(forward, camera.up)) > 0))
+  camera.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
+  camera.look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
+  Triple up = triple(required(value, path, "up"), path.field("up"), runtime_dim::none);
+  Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
+  if (!(fov > 0.0f * units::degree && fov < 180.0f * units::degree))
+    fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
+  camera.fov = fov;
+  VectorWorld forward = camera.look_at - camera.position;
+  if (!(sg::length(forward) > sg::zero)) fail(path.field("look_at"), "must differ from position");
+  glm::vec3 up_raw = to_vec3(up);
+  if (!(glm::length(glm::cross(sg::raw(forward), up_raw)) > 0))
     fail(path.field("up"), "must not be parallel to the viewing direction");
+  camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(up_raw));
   if (value.contains("lens_radius")) {
-    double radius = scalar(value["lens_radius"], path.field("lens_radius"), runtime_dim::length);
-    if (radius < 0) fail(path.field("lens_radius"), "must not be negative");
-    camera.lens_radius = static_cast<Length>(radius);
+    camera.lens_radius = typed_scalar<dim::length>(value["lens_radius"], path.field("lens_radius"));
+    if (camera.lens_radius < sg::zero) fail(path.field("lens_radius"), "must not be negative");
   }
-  camera.focus_distance = kernel::length(forward);
+  camera.focus_distance = sg::length(forward);
   if (value.contains("focus_distance")) {
-    double distance = scalar(value["focus_distance"], path.field("focus_distance"), runtime_dim::length);
-    if (!(distance > 0)) fail(path.field("focus_distance"), "must be positive");
-    camera.focus_distance = static_cast<Length>(distance);
+    camera.focus_distance = typed_scalar<dim::length>(value["focus_distance"], path.field("focus_distance"));
+    if (!(camera.focus_distance > sg::zero)) fail(path.field("focus_distance"), "must be positive");
   }
   if (value.contains("shutter")) {
     const Json& shutter = object(value["shutter"], path.field("shutter"), {"open", "close"});
     JsonPath shutter_path = path.field("shutter");
-    double open = scalar(required(shutter, shutter_path, "open"), shutter_path.field("open"), runtime_dim::time);
-    double close = scalar(required(shutter, shutter_path, "close"), shutter_path.field("close"), runtime_dim::time);
-    if (close < open) fail(shutter_path, "close must not precede open");
-    camera.shutter_open = static_cast<Time>(open);
-    camera.shutter_close = static_cast<Time>(close);
+    camera.shutter_open = typed_scalar<dim::time>(required(shutter, shutter_path, "open"), shutter_path.field("open"));
+    camera.shutter_close = typed_scalar<dim::time>(required(shutter, shutter_path, "close"), shutter_path.field("close"));
+    if (camera.shutter_close < camera.shutter_open) fail(shutter_path, "close must not precede open");
   }
 }
 
@@ -295,8 +335,7 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
     if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
     material.exponent = static_cast<float>(exponent);
-    Rgb sum = material.diffuse + material.specular;
-    if (sum.max_component() > 1.0f)
+    if (sg::max_component(material.diffuse + material.specular) > 1.0f)
       fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else if (type == "mirror") {
     object(value, path, {"type", "reflectance"});
@@ -329,19 +368,18 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (type == "quad") {
     allow({"origin", "edge_u", "edge_v"});
     shape.type = Shape::Type::mesh;
-    auto origin = to_float3(triple(required(value, path, "origin"), path.field("origin"), runtime_dim::length));
-    auto u = to_float3(triple(required(value, path, "edge_u"), path.field("edge_u"), runtime_dim::length));
-    auto v = to_float3(triple(required(value, path, "edge_v"), path.field("edge_v"), runtime_dim::length));
-    if (!(kernel::length(kernel::cross(u, v)) > 0)) fail(path, "edge_u and edge_v must span a parallelogram");
+    auto origin = typed_point<PointObject>(required(value, path, "origin"), path.field("origin"));
+    auto u = sg::from_raw<vector<Object>>(to_vec3(triple(required(value, path, "edge_u"), path.field("edge_u"), runtime_dim::length)));
+    auto v = sg::from_raw<vector<Object>>(to_vec3(triple(required(value, path, "edge_v"), path.field("edge_v"), runtime_dim::length)));
+    if (!(sg::length(sg::cross(u, v)) > sg::zero)) fail(path, "edge_u and edge_v must span a parallelogram");
     shape.positions = {origin, origin + u, origin + u + v, origin + v};
     shape.indices = {0, 1, 2, 0, 2, 3};
   } else if (type == "sphere") {
     allow({"center", "radius"});
     shape.type = Shape::Type::sphere;
-    shape.center = to_float3(triple(required(value, path, "center"), path.field("center"), runtime_dim::length));
-    double radius = scalar(required(value, path, "radius"), path.field("radius"), runtime_dim::length);
-    if (!(radius > 0)) fail(path.field("radius"), "must be positive");
-    shape.radius = static_cast<Length>(radius);
+    shape.center = typed_point<PointObject>(required(value, path, "center"), path.field("center"));
+    shape.radius = typed_scalar<dim::length>(required(value, path, "radius"), path.field("radius"));
+    if (!(shape.radius > sg::zero)) fail(path.field("radius"), "must be positive");
   } else if (type == "mesh") {
     allow({"file", "unit"});
     load_mesh_file(value, path, shape);
@@ -360,15 +398,26 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     shape.material = found->second;
   }
   if (value.contains("emission")) {
-    Rgb radiance = spectrum(value["emission"], path.field("emission"), runtime_dim::radiance);
-    if (std::fmin(radiance.r, std::fmin(radiance.g, radiance.b)) < 0)
+    Radiance radiance = typed_spectrum<dim::radiance>(value["emission"], path.field("emission"));
+    if (radiance.r() < sg::zero || radiance.g() < sg::zero || radiance.b() < sg::zero)
       fail(path.field("emission"), "radiance must not be negative");
-    if (!radiance.is_black()) shape.emission = radiance;
+    if (!sg::is_black(radiance)) shape.emission = radiance;
   }
   if (value.contains("two_sided")) shape.two_sided_emission = boolean(value["two_sided"], path.field("two_sided"));
   if (value.contains("transform")) shape.render_from_object = load_transform(value["transform"], path.field("transform"));
   if (value.contains("transform_at_close"))
     shape.render_from_object_at_close = load_transform(value["transform_at_close"], path.field("transform_at_close"));
+  if (shape.emission && shape.render_from_object_at_close)
+    fail(path.field("transform_at_close"), "emitters cannot move (make the shape static or remove its emission)");
+  if (shape.type == Shape::Type::sphere) {
+    for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
+      if (!m) continue;
+      glm::mat4 forward = sg::raw(*m).forward;
+      float sx = glm::length(glm::vec3(forward[0])), sy = glm::length(glm::vec3(forward[1])), sz = glm::length(glm::vec3(forward[2]));
+      if (std::fabs(sx - sy) > 1e-4f * sx || std::fabs(sx - sz) > 1e-4f * sx)
+        fail(path.field("transform"), "a sphere's transform must scale uniformly");
+    }
+  }
   return shape;
 }
 
@@ -397,10 +446,10 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
   const auto& vertices = reader.GetAttrib().vertices;
   float scale = static_cast<float>(unit->to_reference);
   for (size_t i = 0; i + 2 < vertices.size(); i += 3) {
-    kernel::Float3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
+    glm::vec3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
-    shape.positions.push_back(p);
+    shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
   for (const tinyobj::shape_t& obj_shape : reader.GetShapes()) {
     for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
@@ -427,12 +476,12 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
   for (size_t i = 0; i < points.size(); ++i) {
     JsonPath point_path = positions_path.field("value").index(i);
     if (!points[i].is_array() || points[i].size() != 3) fail(point_path, "expected [x, y, z], got " + short_dump(points[i]));
-    kernel::Float3 p;
+    glm::vec3 p;
     for (int axis = 0; axis < 3; ++axis) {
       if (!points[i][axis].is_number()) fail(point_path.index(axis), "expected a number");
       p[axis] = static_cast<float>(points[i][axis].get<double>() * unit.to_reference);
     }
-    shape.positions.push_back(p);
+    shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
   const Json& indices = required(value, path, "indices");
   if (!indices.is_array() || indices.empty() || indices.size() % 3 != 0)
@@ -445,16 +494,17 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
 
 ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   if (!value.is_array()) fail(path, "expected an array of transform steps, got " + short_dump(value));
-  ObjectToWorld result;
+  // The steps compose into one map<object, world>; the spaces between steps are anonymous.
+  glm::mat4 result(1.0f);
   for (size_t i = 0; i < value.size(); ++i) {
     JsonPath step_path = path.index(i);
     const Json& step = value[i];
     if (!step.is_object() || step.size() != 1)
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
-    Affine m;
+    glm::mat4 m(1.0f);
     if (step.contains("translate")) {
       Triple t = triple(step["translate"], step_path.field("translate"), runtime_dim::length);
-      for (int r = 0; r < 3; ++r) m.m[r][3] = static_cast<float>(t[r]);
+      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<float>(t[r]);
     } else if (step.contains("rotate")) {
       JsonPath rotate_path = step_path.field("rotate");
       const Json& rotate = object(step["rotate"], rotate_path, {"axis", "angle"});
@@ -468,7 +518,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
                         {t * x * y + s * z, t * y * y + c, t * y * z - s * x},
                         {t * x * z - s * y, t * y * z + s * x, t * z * z + c}};
       for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m.m[row][col] = static_cast<float>(r[row][col]);
+        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<float>(r[row][col]);
     } else if (step.contains("scale")) {
       const Json& scale = step["scale"];
       Triple s = scale.is_array() ? triple(scale, step_path.field("scale"), runtime_dim::none)
@@ -476,14 +526,14 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
       if (!scale.is_array()) s.fill(scalar(scale, step_path.field("scale"), runtime_dim::none));
       for (int r = 0; r < 3; ++r) {
         if (!(std::fabs(s[r]) > 0)) fail(step_path.field("scale"), "must not be zero");
-        m.m[r][r] = static_cast<float>(s[r]);
+        m[r][r] = static_cast<float>(s[r]);
       }
     } else {
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
     }
     result = m * result;  // later steps apply after earlier ones
   }
-  return result;
+  return ObjectToWorld::from_matrix(result);
 }
 
 PointLight Loader::load_point_light(const Json& value, const JsonPath& path) {
@@ -492,17 +542,17 @@ PointLight Loader::load_point_light(const Json& value, const JsonPath& path) {
   if (type != "point") fail(path.field("type"), "expected \"point\", got " + short_dump(value["type"]));
   object(value, path, {"type", "name", "position", "intensity", "power"});
   PointLight light;
-  light.position = to_float3(triple(required(value, path, "position"), path.field("position"), runtime_dim::length));
+  light.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
   if (value.contains("intensity") == value.contains("power"))
     fail(path, "expected exactly one of 'intensity' and 'power'");
   if (value.contains("intensity")) {
-    light.intensity = spectrum(value["intensity"], path.field("intensity"), runtime_dim::intensity);
+    light.intensity = typed_spectrum<dim::intensity>(value["intensity"], path.field("intensity"));
   } else {
-    // An isotropic point source spreads its power over 4π sr.
-    Rgb power = spectrum(value["power"], path.field("power"), runtime_dim::power);
-    light.intensity = power / (4.0f * std::numbers::pi_v<float>);
+    // An isotropic point source spreads its power over the whole sphere.
+    sg::spectrum<dim::power> power = typed_spectrum<dim::power>(value["power"], path.field("power"));
+    light.intensity = power / (4.0f * sg::pi * units::steradian);
   }
-  if (std::fmin(light.intensity.r, std::fmin(light.intensity.g, light.intensity.b)) < 0)
+  if (light.intensity.r() < sg::zero || light.intensity.g() < sg::zero || light.intensity.b() < sg::zero)
     fail(path, "light output must not be negative");
   return light;
 }

@@ -14,8 +14,8 @@ namespace safegi::render {
 struct Material {
   enum class Type { lambert, phong, mirror, black };
   Type type = Type::black;
-  Reflectance diffuse{0.0f};   // Lambert albedo, Phong diffuse part
-  Reflectance specular{0.0f};  // Phong specular part, mirror tint
+  Reflectance diffuse{};   // Lambert albedo, Phong diffuse part
+  Reflectance specular{};  // Phong specular part, mirror tint
   float exponent = 1.0f;       // Phong lobe exponent (dimensionless)
   std::string name;
 };
@@ -29,7 +29,7 @@ struct Shape {
   std::vector<uint32_t> indices;
   // sphere, in object space
   PointObject center;
-  Length radius{0.0f};
+  Length radius = sg::zero;
 
   int material = -1;  // index into Scene::materials; -1: absorbs everything
   std::optional<Radiance> emission;
@@ -48,12 +48,12 @@ struct PointLight {
 struct Camera {
   PointWorld position;
   PointWorld look_at;
-  VectorWorld up;
-  Angle fov{0.0f};  // across the shorter image axis
-  Length lens_radius{0.0f};
-  Length focus_distance{0.0f};
-  Time shutter_open{0.0f};
-  Time shutter_close{0.0f};
+  DirectionWorld up;
+  Angle fov = sg::zero;  // across the shorter image axis
+  Length lens_radius = sg::zero;
+  Length focus_distance = sg::zero;
+  Time shutter_open = sg::zero;
+  Time shutter_close = sg::zero;
 };
 
 enum class IntegratorType { direct, path };

@@ -1,66 +1,67 @@
-// The renderer's vocabulary of typed values.
-//
-// TODO(typed): temporary plain-float stand-ins until the typed library's core
-// lands on branch `typed`; these aliases then become quantity<D>, spectrum<D>,
-// point<S>, direction<S> and map<A, B> from <safegi/typed.hpp>.
+// The renderer's vocabulary: typed quantities, spectra and geometry from the
+// SafeGI typed library (portable API only, so the same source builds checked
+// and unchecked), plus the explicit Jacobians between measures.
 #pragma once
 
-#include <cmath>
+#include <safegi/typed.hpp>
 
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
 namespace safegi::render {
 
-struct Rgb {
-  float r = 0, g = 0, b = 0;
+namespace sg = ::safegi;
+namespace dim = ::safegi::dim;
+namespace units = ::safegi::units;
 
-  Rgb() = default;
-  constexpr Rgb(float r_, float g_, float b_) : r(r_), g(g_), b(b_) {}
-  constexpr explicit Rgb(float v) : r(v), g(v), b(v) {}
+using World = spaces::world;
+using Object = spaces::object;
+using Shading = spaces::shading;
 
-  friend Rgb operator+(Rgb a, Rgb b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
-  friend Rgb operator*(Rgb a, Rgb b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
-  friend Rgb operator*(Rgb a, float s) { return {a.r * s, a.g * s, a.b * s}; }
-  friend Rgb operator*(float s, Rgb a) { return {a.r * s, a.g * s, a.b * s}; }
-  friend Rgb operator/(Rgb a, float s) { return {a.r / s, a.g / s, a.b / s}; }
-  Rgb& operator+=(Rgb o) { return *this = *this + o; }
-  Rgb& operator*=(Rgb o) { return *this = *this * o; }
-  float max_component() const { return std::fmax(r, std::fmax(g, b)); }
-  float average() const { return (r + g + b) / 3.0f; }
-  bool is_black() const { return r == 0 && g == 0 && b == 0; }
-};
+using Length = quantity<dim::length>;
+using Time = quantity<dim::time>;
+using Angle = quantity<dim::angle>;
+using Proj = quantity<dim::proj>;
+using PdfSolidAngle = quantity<dim::pdf_solid_angle>;
+using PdfArea = quantity<dim::pdf_area>;
+// dω/dA and dA/dω: converting densities between solid-angle and area measure.
+using SolidAnglePerArea = quantity<dim::quotient<dim::solid_angle, dim::area>>;
+using AreaPerSolidAngle = quantity<dim::quotient<dim::area, dim::solid_angle>>;
 
-// An affine map between two spaces (row-major 3x4).
-struct Affine {
-  float m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+using Reflectance = spectrum<dim::dimensionless>;  // albedos and path throughput
+using Radiance = spectrum<dim::radiance>;
+using Intensity = spectrum<dim::intensity>;
+using Brdf = spectrum<dim::brdf>;
 
-  kernel::Float3 apply_point(kernel::Float3 p) const {
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-  }
-  kernel::Float3 apply_vector(kernel::Float3 v) const {
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-  }
-  friend Affine operator*(const Affine& a, const Affine& b) {
-    Affine r;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 4; ++j)
-        r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j] + (j == 3 ? a.m[i][3] : 0.0f);
-    return r;
-  }
-};
+using PointObject = point<Object>;
+using PointWorld = point<World>;
+using VectorWorld = vector<World>;
+using DirectionWorld = direction<World>;
+using NormalWorld = normal<World>;
+using DirectionShading = direction<Shading>;
+using ObjectToWorld = map<Object, World>;
+using ShadingFrame = frame<World, Shading>;
 
-using Length = float;
-using Time = float;
-using Angle = float;
-using Reflectance = Rgb;
-using Radiance = Rgb;
-using Intensity = Rgb;
-using PointObject = kernel::Float3;
-using PointWorld = kernel::Float3;
-using VectorWorld = kernel::Float3;
-using ObjectToWorld = Affine;
+// Solid angle subtended per unit of area at distance r whose normal makes
+// angle θ with the line of sight: dω/dA = cos θ / r². The cosine is the
+// geometric factor of the change of measure, hence the explicit cast.
+inline SolidAnglePerArea solid_angle_per_area(Proj cos_theta, Length distance) {
+  return sg::dimension_cast<dim::quotient<dim::solid_angle, dim::area>>(cos_theta / (distance * distance));
+}
+
+// A density over area as a density over solid angle: p_ω = p_A · dA/dω.
+inline PdfSolidAngle to_solid_angle_density(PdfArea pdf, Proj cos_at_area, Length distance) {
+  return pdf / solid_angle_per_area(cos_at_area, distance);
+}
+
+// Plain components for the acceleration kernel (reference units: metres).
+template <class T>
+inline kernel::Float3 to_kernel(const T& value) {
+  glm::vec3 v = sg::raw(value);
+  return {v.x, v.y, v.z};
+}
+template <class T>
+inline T from_kernel(kernel::Float3 v) {
+  return sg::from_raw<T>(glm::vec3(v.x, v.y, v.z));
+}
 
 }  // namespace safegi::render
