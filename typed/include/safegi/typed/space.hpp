@@ -115,6 +115,20 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
       : base(glm::vec3(raw(x), raw(y), raw(z))) {}
   constexpr basic_point(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  // Conversions that are always mistakes; they exist so the error names both sides.
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_point(basic_point<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"point", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_point(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "vector", S2::name>);
+  }
+  template <class S2>
+  constexpr basic_point(basic_hpoint<S2> h) : base(glm::vec3(h.raw_value())) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "hpoint", S2::name>);
+  }
 
   [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
@@ -131,6 +145,12 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   constexpr basic_vector() = default;
   constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(glm::vec3(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2, class E>
+    requires(!std::is_same_v<S2, S> || !std::is_same_v<E, D>)
+  constexpr basic_vector(basic_vector<S2, E> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"vector", S2, S>();
+    rules::convertible_dimension<E, D>();
+  }
 
   [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
@@ -173,6 +193,15 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   /// Components of a unit vector (not renormalised; use normalize(vector) otherwise).
   constexpr explicit basic_direction(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
   constexpr basic_direction(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_direction(basic_direction<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"direction", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_direction(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "vector (use normalize)", S2::name>);
+  }
   /// A normal is not a direction: this only exists to say so in words.
   template <class S2>
   constexpr basic_direction(basic_normal<S2>) {  // NOLINT
@@ -195,6 +224,11 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   /// Components of a unit normal (not renormalised).
   constexpr explicit basic_normal(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
   constexpr basic_normal(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_normal(basic_normal<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"normal", S2, S>();
+  }
   /// A direction is not a normal: this only exists to say so in words.
   template <class S2>
   constexpr basic_normal(basic_direction<S2>) {  // NOLINT
@@ -281,11 +315,15 @@ constexpr bool operator==(basic_point<S> a, basic_point<S2> b) {
 
 template <class S, class S2, class D, class E>
 constexpr basic_vector<S, D> operator+(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  return a += b;
+  rules::same_space<"+", S, S2>();
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class S, class S2, class D, class E>
 constexpr basic_vector<S, D> operator-(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  return a -= b;
+  rules::same_space<"-", S, S2>();
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class S, class S2, class D, class E>
 constexpr bool operator==(basic_vector<S, D> a, basic_vector<S2, E> b) {
