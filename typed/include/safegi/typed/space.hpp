@@ -18,6 +18,7 @@
 //   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -133,6 +134,10 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
   [[nodiscard]] constexpr quantity<dim::length> z() const { return detail::component<dim::length>(this->xyz_.z); }
+  /// Component i (0, 1, 2), e.g. the split axis of a BVH.
+  [[nodiscard]] constexpr quantity<dim::length> operator[](int i) const {
+    return detail::component<dim::length>(this->xyz_[i]);
+  }
 };
 
 template <class S, class D>
@@ -155,6 +160,7 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
   [[nodiscard]] constexpr quantity<D> z() const { return detail::component<D>(this->xyz_.z); }
+  [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
 
   constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
   template <class S2, class E>
@@ -211,6 +217,7 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
   [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -238,6 +245,7 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
   [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -491,6 +499,23 @@ constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basi
   rules::same_space<"barycentric", S, S2>();
   return {detail::raw_tag{}, b0 * p0.raw_value() + b1 * p1.raw_value() + b2 * p2.raw_value()};
 }
+/// Componentwise minimum and maximum of two points (bounding boxes).
+template <class S, class S2>
+constexpr basic_point<S> min(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"min", S, S2>();
+  return {detail::raw_tag{}, glm::min(a.raw_value(), b.raw_value())};
+}
+template <class S, class S2>
+constexpr basic_point<S> max(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"max", S, S2>();
+  return {detail::raw_tag{}, glm::max(a.raw_value(), b.raw_value())};
+}
+/// Componentwise absolute value of a vector.
+template <class S, class D>
+constexpr basic_vector<S, D> abs(basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::abs(v.raw_value())};
+}
+
 /// The same unit vector, now transformed (and dotted) as a normal.
 template <class S>
 constexpr basic_normal<S> to_normal(basic_direction<S> d) {
