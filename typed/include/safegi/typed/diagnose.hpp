@@ -17,18 +17,21 @@ namespace safegi::diagnose {
 template <auto...>
 inline constexpr bool reported = false;
 
-template <fixed_string Operation, fixed_string Left, fixed_string Right>
+// Ratio is left / right (from / to) as a formula: proj^-1 is a missing cosine, a power
+// of solid_angle or length a pdf in the wrong measure.
+template <fixed_string Operation, fixed_string Left, fixed_string Right, fixed_string Ratio>
 struct dimension_mismatch {
-  static_assert(reported<Operation, Left, Right>,
+  static_assert(reported<Operation, Left, Right, Ratio>,
                 "dimension mismatch: the operands of this operation must have the same dimension "
-                "(operation, left and right dimension are named above)");
+                "(operation, left and right dimension, and left/right, are named above)");
 };
 
-template <fixed_string From, fixed_string To>
+template <fixed_string From, fixed_string To, fixed_string Ratio>
 struct conversion_between_dimensions {
-  static_assert(reported<From, To>,
-                "cannot convert a value of one dimension into another (from and to dimension are named "
-                "above); if the physics is right and only the bookkeeping is not, use dimension_cast<D>");
+  static_assert(reported<From, To, Ratio>,
+                "cannot convert a value of one dimension into another (from and to dimension, and "
+                "from/to, are named above); if the physics is right and only the bookkeeping is not, "
+                "use dimension_cast<D>");
 };
 
 template <fixed_string Kind, fixed_string From, fixed_string To>
@@ -126,13 +129,15 @@ namespace rules {
 template <fixed_string Operation, dimension_type Left, dimension_type Right>
 constexpr void same_dimension() {
   if constexpr (is_checked && !std::is_same_v<Left, Right>)
-    (void)sizeof(diagnose::dimension_mismatch<Operation, dimension_text<Left>, dimension_text<Right>>);
+    (void)sizeof(diagnose::dimension_mismatch<Operation, dimension_text<Left>, dimension_text<Right>,
+                                              formula_text<dim::quotient<Left, Right>>>);
 }
 
 template <dimension_type From, dimension_type To>
 constexpr void convertible_dimension() {
   if constexpr (is_checked && !std::is_same_v<From, To>)
-    (void)sizeof(diagnose::conversion_between_dimensions<dimension_text<From>, dimension_text<To>>);
+    (void)sizeof(diagnose::conversion_between_dimensions<dimension_text<From>, dimension_text<To>,
+                                                         formula_text<dim::quotient<From, To>>>);
 }
 
 template <fixed_string Kind, class From, class To>
