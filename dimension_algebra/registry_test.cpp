@@ -19,9 +19,10 @@ TEST_F(Prelude, HasTheRenderingVocabulary) {
   for (const char* derived : {"area", "power", "intensity", "irradiance", "radiance", "brdf", "pdf_solid_angle",
                               "pdf_projected_solid_angle", "pdf_area"})
     EXPECT_NE(r.find_derived(derived), nullptr) << derived;
-  EXPECT_TRUE(r.find_space("world"));
-  EXPECT_TRUE(r.find_space("clip"));
+  EXPECT_FALSE(r.find_space("world"));  // spaces are the program's own
+  EXPECT_TRUE(r.add_space("world"));
   EXPECT_FALSE(r.find_space("length"));
+  EXPECT_EQ(r.space_name(*r.find_space("world")), "world");
   EXPECT_FALSE(r.find_base("radiance"));
 }
 
@@ -40,7 +41,9 @@ TEST_F(Prelude, PrintsTheDerivedNameWhenExact) {
   EXPECT_EQ(r.format(dim({{"length", 1}})), "length");
   // brdf and the projected-solid-angle pdf coincide; the first declared wins.
   EXPECT_EQ(r.format(dim({{"pdf_projected_solid_angle", 1}})), "brdf");
-  EXPECT_EQ(r.format(Dimension{}), "1");
+  EXPECT_EQ(r.format(Dimension{}), "dimensionless");
+  EXPECT_EQ(DimensionRegistry{}.format(Dimension{}), "1");
+  EXPECT_EQ(r.format(dim({{"power", 1}, {"area", -1}})), "irradiance");  // not radiant_exitance
 }
 
 TEST_F(Prelude, PrintsANormalisedProductOtherwise) {
@@ -70,17 +73,17 @@ TEST_F(Prelude, UnitsCarryDimensionAndScale) {
 
 TEST_F(Prelude, NamesAreDeclaredOnce) {
   EXPECT_FALSE(r.add_base("length"));
-  EXPECT_FALSE(r.add_derived("world", Dimension{}));
+  EXPECT_FALSE(r.add_derived("meter", Dimension{}));
   EXPECT_FALSE(r.add_space("radiance"));
-  EXPECT_FALSE(r.add_unit("metre", Dimension{}, 2.0));
-  EXPECT_TRUE(r.is_declared("metre"));
+  EXPECT_FALSE(r.add_unit("meter", Dimension{}, 2.0));
+  EXPECT_TRUE(r.is_declared("meter"));
   EXPECT_FALSE(r.make({{"furlong", 1}}));
 }
 
 TEST_F(Prelude, UserBasesExtendTheVocabulary) {
   auto pixel = r.add_base("pixel");
   ASSERT_TRUE(pixel);
-  EXPECT_EQ(*pixel, 6u);
+  EXPECT_EQ(*pixel, 6u);  // after the six prelude bases
   EXPECT_TRUE(r.add_derived("pixel_density", dim({{"pixel", 1}, {"area", -1}})));
   EXPECT_EQ(r.format(dim({{"pixel", 1}, {"length", -2}})), "pixel_density");
   EXPECT_EQ(r.format(dim({{"pixel", 2}, {"length", -2}})), "pixel²·length⁻²");

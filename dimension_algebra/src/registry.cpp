@@ -155,11 +155,15 @@ DimensionRegistry DimensionRegistry::rendering_prelude() {
   auto derive = [&r](const char* name, std::initializer_list<std::pair<std::string_view, std::int32_t>> terms) {
     r.add_derived(name, *r.make(terms));
   };
+  // The same names, in the same order, as parser/prelude/safegi/prelude.sgl.
+  derive("dimensionless", {});
   derive("area", {{"length", 2}});
   derive("volume", {{"length", 3}});
+  derive("velocity", {{"length", 1}, {"time", -1}});
   derive("power", {{"energy", 1}, {"time", -1}});
   derive("intensity", {{"power", 1}, {"solid_angle", -1}});
   derive("irradiance", {{"power", 1}, {"area", -1}});
+  derive("radiant_exitance", {{"power", 1}, {"area", -1}});
   derive("radiance", {{"irradiance", 1}, {"solid_angle", -1}, {"proj", -1}});
   // brdf and the projected-solid-angle pdf are the same dimension; the first
   // declared (brdf) is the one printed.
@@ -167,15 +171,18 @@ DimensionRegistry DimensionRegistry::rendering_prelude() {
   derive("pdf_solid_angle", {{"solid_angle", -1}});
   derive("pdf_projected_solid_angle", {{"solid_angle", -1}, {"proj", -1}});
   derive("pdf_area", {{"area", -1}});
+  derive("pdf_length", {{"length", -1}});
+  derive("inv_length", {{"length", -1}});
+  derive("inv_area", {{"area", -1}});
 
   const double pi = std::numbers::pi;
   auto unit = [&r](const char* name, std::string_view dimension, double scale) {
     r.add_unit(name, *r.find_dimension(dimension), scale);
   };
-  unit("metre", "length", 1.0);
-  unit("centimetre", "length", 1e-2);
-  unit("millimetre", "length", 1e-3);
-  unit("kilometre", "length", 1e3);
+  unit("meter", "length", 1.0);
+  unit("centimeter", "length", 1e-2);
+  unit("millimeter", "length", 1e-3);
+  unit("kilometer", "length", 1e3);
   unit("inch", "length", 0.0254);
   unit("second", "time", 1.0);
   unit("millisecond", "time", 1e-3);
@@ -185,8 +192,6 @@ DimensionRegistry DimensionRegistry::rendering_prelude() {
   unit("degree", "angle", pi / 180.0);
   unit("steradian", "solid_angle", 1.0);
 
-  for (const char* space : {"world", "object", "camera", "light", "local", "tangent", "clip", "ndc", "screen"})
-    r.add_space(space);
   return r;
 }
 

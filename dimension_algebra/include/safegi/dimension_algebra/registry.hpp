@@ -39,10 +39,12 @@ struct RationalFactor {
 
 class DimensionRegistry {
  public:
-  // The rendering prelude: bases length, time, energy, angle, solid_angle, proj;
-  // derived area, volume, power, intensity, irradiance, radiance, brdf, pdfs per
-  // solid angle / projected solid angle / area; SI units and a few common ones;
-  // spaces world, object, camera, light, local, clip, screen, ndc, tangent.
+  // The rendering prelude, the same vocabulary as safegi/prelude.sgl (see
+  // docs/language.md): bases length, time, energy, angle, solid_angle, proj;
+  // derived dimensionless, area, volume, velocity, power, intensity, irradiance,
+  // radiant_exitance, radiance, brdf, pdfs per solid angle / projected solid
+  // angle / area / length, inv_length, inv_area; units meter … steradian.
+  // It declares no spaces: a program declares its own.
   static DimensionRegistry rendering_prelude();
 
   // Each add_* returns nothing (and changes nothing) when the name is already
@@ -75,7 +77,7 @@ class DimensionRegistry {
   // The first-declared derived name equal to d; else a base name; else the
   // normalised product: positive exponents first, then negative, each group in
   // base declaration order (`energy·length⁻²`, ASCII `energy*length^-2`).
-  // The dimensionless dimension prints as `1`.
+  // The dimensionless dimension prints as `1` unless a derived name (`dimensionless`) matches.
   std::string format(const Dimension& d, Notation notation = Notation::unicode) const;
   // Always the normalised product of bases, never a derived name.
   std::string format_product(const Dimension& d, Notation notation = Notation::unicode) const;
