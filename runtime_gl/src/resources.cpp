@@ -1,10 +1,13 @@
 // The GL side of the typed resources: each function is the handful of raw
-// calls one typed operation stands for. Bind-to-edit (GL 3.3) throughout, so
-// a 3.3 core context works too.
+// calls one typed operation stands for. Creating or editing a resource must not
+// disturb what is bound for drawing (a texture on a sampler's unit, the draw
+// framebuffer), so GL 4.5's direct state access is used where present; on a
+// 3.3 context the edit binds and then restores the previous binding.
 #include <glad/gl.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include "safegi/runtime_gl/resources.hpp"
 
@@ -42,6 +45,38 @@ GLenum internal_format(ScalarType scalar, int components) {
   };
   return formats[static_cast<int>(scalar)][components - 1];
 }
+
+// Binds `texture` to GL_TEXTURE_2D of the active unit for one edit on a
+// context without direct state access, restoring the previous binding after.
+class ScopedTextureEdit {
+ public:
+  explicit ScopedTextureEdit(GLuint texture) {
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous_);
+    glBindTexture(GL_TEXTURE_2D, texture);
+  }
+  ~ScopedTextureEdit() { glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous_)); }
+  ScopedTextureEdit(const ScopedTextureEdit&) = delete;
+  ScopedTextureEdit& operator=(const ScopedTextureEdit&) = delete;
+
+ private:
+  GLint previous_ = 0;
+};
+
+class ScopedFramebufferEdit {
+ public:
+  explicit ScopedFramebufferEdit(GLuint framebuffer) {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  }
+  ~ScopedFramebufferEdit() { glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous_)); }
+  ScopedFramebufferEdit(const ScopedFramebufferEdit&) = delete;
+  ScopedFramebufferEdit& operator=(const ScopedFramebufferEdit&) = delete;
+
+ private:
+  GLint previous_ = 0;
+};
+
+bool direct_state_access() { return GLAD_GL_VERSION_4_5 != 0; }
 
 }  // namespace
 
@@ -89,50 +124,78 @@ void draw_triangles(unsigned vertex_array, int first, int count) {
 }
 
 unsigned create_texture2d(int width, int height, ScalarType scalar, int components) {
+  const GLenum format = internal_format(scalar, components);
   GLuint texture = 0;
-  glGenTextures(1, &texture);
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format(scalar, components)), width, height, 0,
-               pixel_format(scalar, components), gl_scalar(scalar), nullptr);
   // Exact texel values: no filtering between texels, no mipmaps.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const std::pair<GLenum, GLint> parameters[] = {{GL_TEXTURE_MIN_FILTER, GL_NEAREST},
+                                                 {GL_TEXTURE_MAG_FILTER, GL_NEAREST},
+                                                 {GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE},
+                                                 {GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE}};
+  if (direct_state_access()) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, format, width, height);
+    for (const auto& [name, value] : parameters) glTextureParameteri(texture, name, value);
+    return texture;
+  }
+  glGenTextures(1, &texture);
+  ScopedTextureEdit edit(texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format), width, height, 0, pixel_format(scalar, components),
+               gl_scalar(scalar), nullptr);
+  for (const auto& [name, value] : parameters) glTexParameteri(GL_TEXTURE_2D, name, value);
   return texture;
 }
 
 void upload_texture2d(unsigned texture, int width, int height, ScalarType scalar, int components, const void* data) {
-  glBindTexture(GL_TEXTURE_2D, texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  if (direct_state_access()) {
+    glTextureSubImage2D(texture, 0, 0, 0, width, height, pixel_format(scalar, components), gl_scalar(scalar), data);
+    return;
+  }
+  ScopedTextureEdit edit(texture);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, pixel_format(scalar, components), gl_scalar(scalar), data);
 }
 
-void read_texture2d(unsigned texture, ScalarType scalar, int components, void* data) {
-  glBindTexture(GL_TEXTURE_2D, texture);
+void read_texture2d(unsigned texture, int width, int height, ScalarType scalar, int components, void* data) {
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  if (direct_state_access()) {
+    const auto bytes = static_cast<GLsizei>(width * height * components * 4);
+    glGetTextureImage(texture, 0, pixel_format(scalar, components), gl_scalar(scalar), bytes, data);
+    return;
+  }
+  ScopedTextureEdit edit(texture);
   glGetTexImage(GL_TEXTURE_2D, 0, pixel_format(scalar, components), gl_scalar(scalar), data);
 }
 
 unsigned create_framebuffer() {
   GLuint framebuffer = 0;
-  glGenFramebuffers(1, &framebuffer);
+  if (direct_state_access()) glCreateFramebuffers(1, &framebuffer);
+  else glGenFramebuffers(1, &framebuffer);
   return framebuffer;
 }
 
 void attach_color(unsigned framebuffer, int location, unsigned texture) {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(location), GL_TEXTURE_2D, texture,
-                         0);
+  const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(location);
+  if (direct_state_access()) {
+    glNamedFramebufferTexture(framebuffer, attachment, texture, 0);
+    return;
+  }
+  ScopedFramebufferEdit edit(framebuffer);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
 }
 
 unsigned attach_depth(unsigned framebuffer, int width, int height) {
   GLuint depth = 0;
+  if (direct_state_access()) {
+    glCreateRenderbuffers(1, &depth);
+    glNamedRenderbufferStorage(depth, GL_DEPTH_COMPONENT24, width, height);
+    glNamedFramebufferRenderbuffer(framebuffer, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    return depth;
+  }
   glGenRenderbuffers(1, &depth);
   glBindRenderbuffer(GL_RENDERBUFFER, depth);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  ScopedFramebufferEdit edit(framebuffer);
+  glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
   return depth;
 }
 

@@ -27,7 +27,7 @@ void bind_attribute(unsigned vertex_array, unsigned buffer, int location, Scalar
 void draw_triangles(unsigned vertex_array, int first, int count);
 unsigned create_texture2d(int width, int height, ScalarType scalar, int components);
 void upload_texture2d(unsigned texture, int width, int height, ScalarType scalar, int components, const void* data);
-void read_texture2d(unsigned texture, ScalarType scalar, int components, void* data);
+void read_texture2d(unsigned texture, int width, int height, ScalarType scalar, int components, void* data);
 unsigned create_framebuffer();
 void attach_color(unsigned framebuffer, int location, unsigned texture);
 unsigned attach_depth(unsigned framebuffer, int width, int height);
@@ -117,7 +117,7 @@ class texture2d {
   }
   std::vector<T> read_back() const {
     std::vector<T> texels(texel_count());
-    detail::read_texture2d(object_.name(), value_traits<T>::scalar, value_traits<T>::components, texels.data());
+    detail::read_texture2d(object_.name(), width_, height_, value_traits<T>::scalar, value_traits<T>::components, texels.data());
     return texels;
   }
 
