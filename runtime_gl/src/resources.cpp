@@ -46,33 +46,26 @@ GLenum internal_format(ScalarType scalar, int components) {
   return formats[static_cast<int>(scalar)][components - 1];
 }
 
-// Binds `texture` to GL_TEXTURE_2D of the active unit for one edit on a
-// context without direct state access, restoring the previous binding after.
-class ScopedTextureEdit {
+// Binds a texture (GL_TEXTURE_2D of the active unit) or a draw framebuffer for
+// one edit on a context without direct state access, restoring the previous
+// binding after.
+class ScopedEdit {
  public:
-  explicit ScopedTextureEdit(GLuint texture) {
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous_);
-    glBindTexture(GL_TEXTURE_2D, texture);
+  enum Target { texture2d, draw_framebuffer };
+  ScopedEdit(Target target, GLuint name) : target_(target) {
+    glGetIntegerv(target == texture2d ? GL_TEXTURE_BINDING_2D : GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
+    bind(name);
   }
-  ~ScopedTextureEdit() { glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous_)); }
-  ScopedTextureEdit(const ScopedTextureEdit&) = delete;
-  ScopedTextureEdit& operator=(const ScopedTextureEdit&) = delete;
+  ~ScopedEdit() { bind(static_cast<GLuint>(previous_)); }
+  ScopedEdit(const ScopedEdit&) = delete;
+  ScopedEdit& operator=(const ScopedEdit&) = delete;
 
  private:
-  GLint previous_ = 0;
-};
-
-class ScopedFramebufferEdit {
- public:
-  explicit ScopedFramebufferEdit(GLuint framebuffer) {
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  void bind(GLuint name) const {
+    if (target_ == texture2d) glBindTexture(GL_TEXTURE_2D, name);
+    else glBindFramebuffer(GL_DRAW_FRAMEBUFFER, name);
   }
-  ~ScopedFramebufferEdit() { glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous_)); }
-  ScopedFramebufferEdit(const ScopedFramebufferEdit&) = delete;
-  ScopedFramebufferEdit& operator=(const ScopedFramebufferEdit&) = delete;
-
- private:
+  Target target_;
   GLint previous_ = 0;
 };
 
@@ -138,7 +131,7 @@ unsigned create_texture2d(int width, int height, ScalarType scalar, int componen
     return texture;
   }
   glGenTextures(1, &texture);
-  ScopedTextureEdit edit(texture);
+  ScopedEdit edit(ScopedEdit::texture2d, texture);
   glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format), width, height, 0, pixel_format(scalar, components),
                gl_scalar(scalar), nullptr);
   for (const auto& [name, value] : parameters) glTexParameteri(GL_TEXTURE_2D, name, value);
@@ -151,7 +144,7 @@ void upload_texture2d(unsigned texture, int width, int height, ScalarType scalar
     glTextureSubImage2D(texture, 0, 0, 0, width, height, pixel_format(scalar, components), gl_scalar(scalar), data);
     return;
   }
-  ScopedTextureEdit edit(texture);
+  ScopedEdit edit(ScopedEdit::texture2d, texture);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, pixel_format(scalar, components), gl_scalar(scalar), data);
 }
 
@@ -162,7 +155,7 @@ void read_texture2d(unsigned texture, int width, int height, ScalarType scalar, 
     glGetTextureImage(texture, 0, pixel_format(scalar, components), gl_scalar(scalar), bytes, data);
     return;
   }
-  ScopedTextureEdit edit(texture);
+  ScopedEdit edit(ScopedEdit::texture2d, texture);
   glGetTexImage(GL_TEXTURE_2D, 0, pixel_format(scalar, components), gl_scalar(scalar), data);
 }
 
@@ -179,7 +172,7 @@ void attach_color(unsigned framebuffer, int location, unsigned texture) {
     glNamedFramebufferTexture(framebuffer, attachment, texture, 0);
     return;
   }
-  ScopedFramebufferEdit edit(framebuffer);
+  ScopedEdit edit(ScopedEdit::draw_framebuffer, framebuffer);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
 }
 
@@ -194,7 +187,7 @@ unsigned attach_depth(unsigned framebuffer, int width, int height) {
   glGenRenderbuffers(1, &depth);
   glBindRenderbuffer(GL_RENDERBUFFER, depth);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  ScopedFramebufferEdit edit(framebuffer);
+  ScopedEdit edit(ScopedEdit::draw_framebuffer, framebuffer);
   glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
   return depth;
 }

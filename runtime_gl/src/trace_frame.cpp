@@ -11,13 +11,13 @@
 
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/runtime_gl.hpp"
+#include "emission_scene.hpp"
 #include "test_support.hpp"
 #include "test_types.hpp"
 
 namespace {
 
 using namespace safegi::gl;
-using testing::ndc_point;
 using testing::radiance_rgb;
 using testing::unitless_rgb;
 
@@ -42,29 +42,20 @@ std::vector<radiance_rgb> frame_loop(int frames) {
   const auto tint = program.uniform_array<unitless_rgb>("tint");
   const auto environment = program.sampler<radiance_rgb>("environment");
 
-  const std::array<ndc_point, 3> positions{{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}};
-  const std::array<radiance_rgb, 3> vertex_le{{{0.5f, 0.25f, 0.125f}, {0.5f, 0.25f, 0.125f}, {0.5f, 0.25f, 0.125f}}};
-  vertex_buffer<ndc_point> position_buffer{std::span(positions)};
-  vertex_buffer<radiance_rgb> le_buffer{std::span(vertex_le)};
-  vertex_array triangle;
-  triangle.bind(program.attribute<ndc_point>("position"), position_buffer);
-  triangle.bind(program.attribute<radiance_rgb>("vertexLe"), le_buffer);
-
-  const radiance_rgb sky{0.5f, 0.5f, 0.5f};
-  texture2d<radiance_rgb> sky_texture(1, 1, std::span(&sky, 1));
+  using Scene = testing::EmissionScene;
+  Scene scene(program);
   texture2d<radiance_rgb> image(8, 8);
   framebuffer target(8, 8);
   target.attach(program.output<radiance_rgb>("color"), image);
 
-  const std::array<unitless_rgb, 2> tints{{{1.0f, 0.5f, 0.25f}, {2.0f, 2.0f, 2.0f}}};
   for (int frame = 0; frame < frames; ++frame) {
     target.bind();
     program.use();
-    program.bind(environment, sky_texture, 0);
+    program.bind(environment, scene.sky_texture, 0);
     program.set(le, radiance_rgb{1.0f, 2.0f, static_cast<float>(frame)});
-    program.set(exposure, 2.0f);
-    program.set(tint, std::span<const unitless_rgb>(tints));
-    triangle.draw_triangles(0, 3);
+    program.set(exposure, Scene::exposure);
+    program.set(tint, std::span(Scene::tints));
+    scene.triangle.draw_triangles(0, 3);
   }
   return image.read_back();
 }

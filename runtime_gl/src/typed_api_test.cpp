@@ -10,6 +10,7 @@
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/program.hpp"
 #include "safegi/runtime_gl/resources.hpp"
+#include "emission_scene.hpp"
 #include "test_gl.hpp"
 #include "test_types.hpp"
 
@@ -112,6 +113,9 @@ static_assert(settable<uniform_id<radiance_rgb>, radiance_rgb>);
 static_assert(!settable<uniform_id<radiance_rgb>, irradiance_rgb>);
 static_assert(!settable<uniform_id<radiance_rgb>, glm::vec3>);
 static_assert(!settable<uniform_id<float>, double>);
+static_assert(settable<uniform_array_id<unitless_rgb>, std::array<unitless_rgb, 2>>);
+static_assert(settable<uniform_array_id<unitless_rgb>, std::vector<unitless_rgb>>);
+static_assert(!settable<uniform_array_id<unitless_rgb>, std::array<radiance_rgb, 2>>);
 template <class Attribute, class Buffer>
 concept bindable = requires(vertex_array array, Attribute attribute, const Buffer& buffer) {
   array.bind(attribute, buffer);
@@ -132,35 +136,24 @@ static_assert(samplable<sampler_id<radiance_rgb>, texture2d<radiance_rgb>>);
 static_assert(!samplable<sampler_id<radiance_rgb>, texture2d<glm::vec3>>);
 
 TEST_F(TypedApiTest, DrawsAFrameIntoATypedFramebuffer) {
+  using Scene = testing::EmissionScene;
   const Program& program = *program_;
-  // One triangle covering the whole viewport.
-  const std::array<ndc_point, 3> positions{{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}};
-  const std::array<radiance_rgb, 3> vertex_le{{{0.5f, 0.25f, 0.125f}, {0.5f, 0.25f, 0.125f}, {0.5f, 0.25f, 0.125f}}};
-  vertex_buffer<ndc_point> position_buffer{std::span(positions)};
-  vertex_buffer<radiance_rgb> le_buffer{std::span(vertex_le)};
-  vertex_array triangle;
-  triangle.bind(program.attribute<ndc_point>("position"), position_buffer);
-  triangle.bind(program.attribute<radiance_rgb>("vertexLe"), le_buffer);
-
-  const radiance_rgb sky{0.5f, 0.5f, 0.5f};
-  texture2d<radiance_rgb> environment(1, 1, std::span(&sky, 1));
-  program.bind(program.sampler<radiance_rgb>("environment"), environment, 3);
-  program.set(program.uniform<radiance_rgb>("Le"), radiance_rgb{1.0f, 2.0f, 3.0f});
-  program.set(program.uniform<float>("exposure"), 2.0f);
-  const std::array<unitless_rgb, 2> tint{{{1.0f, 0.5f, 0.25f}, {2.0f, 2.0f, 2.0f}}};
-  program.set(program.uniform_array<unitless_rgb>("tint"), std::span<const unitless_rgb>(tint));
+  Scene scene(program);
+  program.bind(program.sampler<radiance_rgb>("environment"), scene.sky_texture, 3);
+  program.set(program.uniform<radiance_rgb>("Le"), Scene::le);
+  program.set(program.uniform<float>("exposure"), Scene::exposure);
+  program.set(program.uniform_array<unitless_rgb>("tint"), std::span(Scene::tints));
 
   texture2d<radiance_rgb> image(4, 3);
   framebuffer target(4, 3);
   target.attach(program.output<radiance_rgb>("color"), image);
   target.bind();
   program.use();
-  triangle.draw_triangles(0, 3);
+  scene.triangle.draw_triangles(0, 3);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 
-  // (vertexLe + Le + sky) * exposure * tint[0] * tint[1], exact in binary.
-  const radiance_rgb expected{(0.5f + 1.0f + 0.5f) * 2 * 1.0f * 2, (0.25f + 2.0f + 0.5f) * 2 * 0.5f * 2,
-                              (0.125f + 3.0f + 0.5f) * 2 * 0.25f * 2};
+  const radiance_rgb expected = Scene::expected_pixel(Scene::le);
+  EXPECT_EQ(expected, (radiance_rgb{8.0f, 5.5f, 3.625f}));
   for (const radiance_rgb& pixel : image.read_back()) EXPECT_EQ(pixel, expected);
 }
 

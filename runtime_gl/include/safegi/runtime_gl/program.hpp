@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "safegi/runtime_gl/handles.hpp"
@@ -69,8 +70,9 @@ class Program {
     detail::set_uniform(id(), uniform.location, value_traits<T>::scalar, value_traits<T>::components,
                         value_traits<T>::columns, 1, &value);
   }
+  // Any contiguous range of exactly T converts (std::array, std::vector, span).
   template <gl_value T>
-  void set(uniform_array_id<T> uniform, std::span<const T> values) const {
+  void set(uniform_array_id<T> uniform, std::type_identity_t<std::span<const T>> values) const {
     if (static_cast<int>(values.size()) > uniform.size)
       throw BindingError(name_ + ": error: " + std::to_string(values.size()) + " values for a uniform array of " +
                          std::to_string(uniform.size));
