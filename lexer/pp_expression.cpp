@@ -1,6 +1,7 @@
-// #if expressions: every C operator GLSL's preprocessor allows, evaluated in
-// 64-bit two's complement without undefined behaviour, with short-circuit
-// evaluation so `0 && 1 / 0` is not an error.
+// #if expressions: every C operator GLSL's preprocessor allows, evaluated as
+// GLSL's 32-bit int (two's complement, wrapping, as glslang does) without
+// undefined behaviour, with short-circuit evaluation so `0 && 1 / 0` is not
+// an error.
 
 #include <string>
 
@@ -71,7 +72,7 @@ class ExpressionEvaluator {
     }
   }
 
-  static std::int64_t wrap(std::uint64_t v) { return static_cast<std::int64_t>(v); }
+  static std::int64_t wrap(std::uint64_t v) { return static_cast<std::int32_t>(static_cast<std::uint32_t>(v)); }
 
   // Precedence climbing; `evaluated` is false on the unevaluated side of && / ||.
   std::int64_t binary(int min_precedence, bool evaluated) {
@@ -99,9 +100,9 @@ class ExpressionEvaluator {
     switch (kind) {
       case TokenKind::pipe_pipe: return (a != 0 || b != 0) ? 1 : 0;
       case TokenKind::amp_amp: return (a != 0 && b != 0) ? 1 : 0;
-      case TokenKind::pipe: return a | b;
-      case TokenKind::caret: return a ^ b;
-      case TokenKind::amp: return a & b;
+      case TokenKind::pipe: return wrap(ua | ub);
+      case TokenKind::caret: return wrap(ua ^ ub);
+      case TokenKind::amp: return wrap(ua & ub);
       case TokenKind::equal_equal: return a == b;
       case TokenKind::bang_equal: return a != b;
       case TokenKind::less: return a < b;
@@ -113,11 +114,11 @@ class ExpressionEvaluator {
       case TokenKind::star: return wrap(ua * ub);
       case TokenKind::less_less:
       case TokenKind::greater_greater:
-        if (b < 0 || b > 63) {
+        if (b < 0 || b > 31) {
           if (evaluated) fail(op.range, "shift count " + std::to_string(b) + " is out of range", op.expansion);
           return 0;
         }
-        return kind == TokenKind::less_less ? wrap(ua << b) : (a >> b);
+        return kind == TokenKind::less_less ? wrap(ua << b) : wrap(static_cast<std::uint64_t>(a >> b));
       case TokenKind::slash:
       case TokenKind::percent:
         if (b == 0) {
@@ -128,8 +129,8 @@ class ExpressionEvaluator {
           }
           return 0;
         }
-        if (a == INT64_MIN && b == -1) return kind == TokenKind::slash ? a : 0;
-        return kind == TokenKind::slash ? a / b : a % b;
+        if (a == INT32_MIN && b == -1) return kind == TokenKind::slash ? a : 0;
+        return wrap(static_cast<std::uint64_t>(kind == TokenKind::slash ? a / b : a % b));
       default: return 0;
     }
   }
@@ -152,7 +153,7 @@ class ExpressionEvaluator {
     switch (t->kind) {
       case TokenKind::plus: return unary(evaluated);
       case TokenKind::minus: return wrap(0 - static_cast<std::uint64_t>(unary(evaluated)));
-      case TokenKind::tilde: return ~unary(evaluated);
+      case TokenKind::tilde: return wrap(~static_cast<std::uint64_t>(unary(evaluated)));
       case TokenKind::bang: return unary(evaluated) == 0 ? 1 : 0;
       case TokenKind::l_paren: {
         std::int64_t value = binary(0, evaluated);

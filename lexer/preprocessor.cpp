@@ -276,6 +276,7 @@ void Preprocessor::skip_group(FileState& f) {
         unit_.skipped_ranges.push_back(sources_.range_of(f.file, skip_begin, t.range.begin.offset));
       }
       f.lexer.set_report_errors(true);
+      directive_name_end_ = name.range.end;
       directive_elif_else_endif(f, t, kind);
       return;
     }
@@ -687,7 +688,7 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
   std::vector<Token> line = read_line(f);
   SourceLocation last = line.empty() ? hash.range.end : line.back().range.end;
   record_directive(DirectiveKind::line, hash, last);
-  SourceRange directive{hash.range.begin, last};
+  SourceRange directive = directive_range(hash, line);
   std::vector<PPToken> raw;
   for (const Token& t : line) raw.push_back(PPToken{t});
   std::vector<PPToken> expanded = expand_list(std::move(raw), kNoExpansion, 0);
