@@ -37,6 +37,13 @@ Parser::Parser(std::vector<PToken> tokens, DiagnosticEngine& diagnostics, const 
 // ----------------------------------------------------------------- errors
 
 void Parser::fail(SourceRange range, std::string message) {
+  // One "end of file" error per run: the enclosing constructs that are also
+  // left open would only repeat it.
+  if (at(T::Eof) && range == peek().range) {
+    if (eof_reported_) throw ParseError{};
+    eof_reported_ = true;
+    range = {prev_end_, prev_end_};  // where the missing text should have been
+  }
   diagnostics_.report(Diagnostic::error(range, std::move(message)));
   throw ParseError{};
 }

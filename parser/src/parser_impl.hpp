@@ -156,6 +156,7 @@ class Parser {
   std::vector<std::unordered_map<std::string, NameKind>> scopes_;
   unsigned depth_ = 0;
   bool depth_reported_ = false;
+  bool eof_reported_ = false;
 };
 
 }  // namespace safegi::parser_detail
