@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "safegi/runtime_gl/context.hpp"
+#include "safegi/runtime_gl/error.hpp"
 #include "safegi/runtime_gl/program.hpp"
 #include "test_support.hpp"
 
@@ -36,5 +37,25 @@ inline Program emission_program() {
                   example_stage(Stage::fragment, "emission.frag.glsl", "emission.frag.json")},
                  "emission");
 }
+
+// A test with the example program linked; error_of() runs a lookup and gives
+// the BindingError's text ("no error" when it succeeds).
+class ExampleProgramTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    program_ = std::make_unique<Program>(emission_program());
+  }
+  template <class Lookup>
+  std::string error_of(Lookup lookup) {
+    try {
+      lookup(*program_);
+    } catch (const BindingError& error) {
+      return error.what();
+    }
+    return "no error";
+  }
+  std::unique_ptr<Program> program_;
+};
 
 }  // namespace safegi::gl::testing

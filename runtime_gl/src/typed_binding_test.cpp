@@ -22,23 +22,7 @@ using ndc_point = point<spaces::ndc>;
 using world_point = point<spaces::world>;
 using tint = spectrum<dim::dimensionless>;
 
-class TypedBindingTest : public testing::GlTest {
- protected:
-  void SetUp() override {
-    GlTest::SetUp();
-    program_ = std::make_unique<Program>(testing::emission_program());
-  }
-  template <class Lookup>
-  std::string error_of(Lookup lookup) {
-    try {
-      lookup(*program_);
-    } catch (const BindingError& error) {
-      return error.what();
-    }
-    return "no error";
-  }
-  std::unique_ptr<Program> program_;
-};
+class TypedBindingTest : public testing::ExampleProgramTest {};
 
 radiance rgb_radiance(float r, float g, float b) { return from_raw<radiance>(glm::vec3(r, g, b)); }
 
