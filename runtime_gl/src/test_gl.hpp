@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <string>
 
 #include "safegi/runtime_gl/context.hpp"
 #include "safegi/runtime_gl/error.hpp"
@@ -14,9 +15,14 @@
 
 namespace safegi::gl::testing {
 
+// The GL version the test contexts ask for: 4.5 (direct state access paths),
+// or 3.3 (bind-and-restore paths) when SAFEGI_GL_TEST_VERSION=33.
 inline ContextOptions test_context_options() {
   const char* requested = std::getenv("SAFEGI_GL_PLATFORM");
-  return ContextOptions{requested && *requested ? platform_from_environment() : Platform::osmesa};
+  const char* version = std::getenv("SAFEGI_GL_TEST_VERSION");
+  const bool core33 = version && std::string(version) == "33";
+  return ContextOptions{requested && *requested ? platform_from_environment() : Platform::osmesa, core33 ? 3 : 4,
+                        core33 ? 3 : 5};
 }
 
 class GlTest : public ::testing::Test {
