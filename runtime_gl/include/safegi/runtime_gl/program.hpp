@@ -95,6 +95,10 @@ class Program {
     detail::bind_sampler(id(), sampler.location, texture.id(), unit);
   }
 
+  // Throws BindingError unless the symbol table of `stage` carries `hash`
+  // (a generated handles header checks it was made from these sources).
+  void expect_source_hash(Stage stage, std::string_view hash) const;
+
   // The untyped core of every lookup. With `host` (checked build) the symbol
   // table is consulted first and a missing name or a mismatch throws
   // BindingError; without it (unchecked build) only the driver is asked.
