@@ -200,6 +200,7 @@ void Preprocessor::apply_version() {
   define_predefined("__LINE__", "", Macro::Builtin::line);
   define_predefined("__FILE__", "", Macro::Builtin::file);
   define_predefined("__VERSION__", save(std::to_string(unit_.version)));
+  for (const std::string& extension : options_.extension_macros) define_predefined(save(extension), "1");
   if (unit_.es) {
     define_predefined("GL_ES", "1");
     define_predefined("GL_es_profile", "1");
@@ -238,6 +239,7 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
     return;
   }
   extra_tokens_warning(line, 3, "extension");
+  if (name == "GL_EXT_debug_printf") strings_allowed_ = behavior != "disable";
   std::uint32_t groups = extension_groups_enabled_by(name);
   if (behavior == "disable") {
     unit_.keywords.extension_groups &= ~groups;

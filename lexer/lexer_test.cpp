@@ -90,7 +90,8 @@ TEST_F(LexerTest, FloatLiterals) {
                 Row{".5e2", K::float_literal}, Row{"1.0f", K::float_literal}, Row{"1.F", K::float_literal},
                 Row{"1e3f", K::float_literal}, Row{"1.0lf", K::double_literal}, Row{"2.LF", K::double_literal},
                 Row{"1e-2lf", K::double_literal}, Row{"1.5hf", K::float16_literal}, Row{"0.0", K::float_literal},
-                Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}}) {
+                Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}, Row{"1.0lF", K::double_literal},
+                Row{"1.0Lf", K::double_literal}, Row{"2.0hF", K::float16_literal}, Row{"1e+5", K::float_literal}}) {
     auto tokens = lex(r.text);
     ASSERT_EQ(tokens.size(), 2u) << r.text;
     EXPECT_EQ(tokens[0].kind, r.kind) << r.text;

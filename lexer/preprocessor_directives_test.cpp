@@ -45,7 +45,7 @@ TEST_F(Directives, ExpressionOperators) {
                 Row{"+1 == 1", true}, Row{"defined A && defined(B)", true}, Row{"defined C", false},
                 Row{"!defined C", true}, Row{"0 && 1 / 0", false}, Row{"1 || 1 % 0", true},
                 Row{"A + B == 3", true}, Row{"2147483647 + 1 < 0", true},
-                Row{"0xFFFFFFFF == -1", true}, Row{"-2147483648 / -1 < 0", true}, Row{"1 << 31 < 0", true}}) {
+                Row{"0xFFFFFFFF == -1", true}, Row{"-2147483648 / -1 == 0", true}, Row{"1 << 31 < 0", true}}) {
     std::string source = std::string("#define A 1\n#define B 2\n#if ") + r.expression + "\nyes\n#else\nno\n#endif\n";
     EXPECT_EQ(output(source), r.value ? "yes" : "no") << r.expression;
   }
@@ -251,6 +251,33 @@ TEST_F(Directives, HashOutsideDirectivesAndStrings) {
             "main.glsl:2:1: error: string literals are not allowed in GLSL\n"
             "\"str\"\n"
             "^~~~~\n");
+}
+
+TEST_F(Directives, NumbersAreCheckedWhereTheyAreUsed) {
+  EXPECT_EQ(output("#define SUFFIX 1D\n#if 0\n3.5L 09 0x\n#endif\nfloat x = 1.0;\n"), "float x = 1.0 ;");
+  EXPECT_EQ(errors(), "");
+  output("#define SUFFIX 1D\nSUFFIX\n#if 1D\n#endif\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:1:17: error: invalid suffix 'D' on integer literal\n"
+            "#define SUFFIX 1D\n"
+            "                ^\n"
+            "main.glsl:2:1: note: in expansion of macro 'SUFFIX' (defined at main.glsl:1:9)\n"
+            "SUFFIX\n"
+            "^~~~~~\n"
+            "main.glsl:3:5: error: invalid suffix 'D' on integer literal\n"
+            "#if 1D\n"
+            "    ^~\n");
+}
+
+TEST_F(Directives, StringsWithDebugPrintf) {
+  auto unit = run("#version 450\n#extension GL_EXT_debug_printf : enable\ndebugPrintfEXT(\"x = %f\", x);\n");
+  EXPECT_EQ(unit.tokens[2].kind, TokenKind::string_literal);
+  EXPECT_EQ(errors(), "");
+}
+
+TEST_F(Directives, ExtensionMacros) {
+  options.extension_macros = {"GL_ARB_gpu_shader5"};
+  EXPECT_EQ(output("#ifdef GL_ARB_gpu_shader5\nyes GL_ARB_gpu_shader5\n#endif\n"), "yes 1");
 }
 
 TEST_F(Directives, DirectiveLinesAndSkippedRangesAreRecorded) {
