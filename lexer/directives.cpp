@@ -298,11 +298,14 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
       diagnostics_.report(Diagnostic::warning(expanded[2].token.range, "extra tokens at end of #line directive"));
     }
   }
+  // Before GLSL 3.30 (desktop), `#line N` named the directive's own line, so
+  // the next line is N + 1 (glslang does the same).
+  std::uint32_t next_line_number = result.line + (!unit_.es && unit_.version < 330 ? 1 : 0);
   std::uint32_t next_line = line_end_offset(last);
   std::string_view text = sources_.text(f.file);
   if (next_line < text.size() && text[next_line] == '\r') ++next_line;
   if (next_line < text.size() && text[next_line] == '\n') ++next_line;
-  sources_.add_line_directive(f.file, next_line, result.line, result.file_name, result.source_string);
+  sources_.add_line_directive(f.file, next_line, next_line_number, result.file_name, result.source_string);
   unit_.line_directives.push_back(std::move(result));
 }
 

@@ -15,7 +15,9 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; 
 }  // namespace
 
 Lexer::Lexer(SourceManager& sources, FileId file, DiagnosticEngine& diagnostics, LexerOptions options)
-    : sources_(sources), diagnostics_(diagnostics), file_(file), text_(sources.text(file)), options_(options) {}
+    : sources_(sources), diagnostics_(diagnostics), file_(file), text_(sources.text(file)), options_(options) {
+  if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;  // a UTF-8 byte order mark is not text
+}
 
 std::size_t Lexer::skip_splices(std::size_t p) const {
   while (p + 1 < text_.size() && text_[p] == '\\') {

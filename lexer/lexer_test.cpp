@@ -263,6 +263,14 @@ TEST_F(LexerTest, RestOfLineAndHeaderName) {
   EXPECT_EQ(lexer.next().kind, K::eof);
 }
 
+TEST_F(LexerTest, ByteOrderMarkIsSkipped) {
+  auto tokens = lex("\xEF\xBB\xBFx");
+  ASSERT_EQ(tokens.size(), 2u);
+  EXPECT_EQ(tokens[0].text, "x");
+  EXPECT_EQ(tokens[0].range.begin.column, 4u);
+  EXPECT_EQ(errors(), "");
+}
+
 TEST_F(LexerTest, EofRepeats) {
   file = sources.add_file("t.glsl", "");
   Lexer lexer(sources, file, diagnostics);

@@ -196,7 +196,7 @@ TEST_F(Directives, Error) {
 }
 
 TEST_F(Directives, Line) {
-  auto unit = run("a\n#line 100\nb __LINE__\n#line 7 3\nc __LINE__ __FILE__\n#define L 50\n#line L\nd __LINE__\n");
+  auto unit = run("#version 330\na\n#line 100\nb __LINE__\n#line 7 3\nc __LINE__ __FILE__\n#define L 50\n#line L\nd __LINE__\n");
   EXPECT_EQ(spell(unit), "a\nb 100\nc 7 3\nd 50");
   ASSERT_EQ(unit.line_directives.size(), 3u);
   EXPECT_EQ(unit.line_directives[1].source_string, 3u);
@@ -208,8 +208,13 @@ TEST_F(Directives, Line) {
             "^\n");
 }
 
+TEST_F(Directives, LineBefore330NamesTheDirectivesOwnLine) {
+  EXPECT_EQ(output("#version 150\n#line 3000\n__LINE__\n"), "3001");
+  EXPECT_EQ(output("#version 100\n#line 3000\n__LINE__\n"), "3000");
+}
+
 TEST_F(Directives, LineWithFileName) {
-  auto unit = run("#line 10 \"generated.glsl\"\nx\n");
+  auto unit = run("#version 450\n#line 10 \"generated.glsl\"\nx\n");
   diagnostics.error(unit.tokens[0].range, "e");
   EXPECT_EQ(errors(),
             "generated.glsl:10:1: error: e\n"
