@@ -13,7 +13,9 @@ function(safegi_install_targets)
           RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   foreach(dir IN LISTS ARG_HEADERS_FROM)
-    install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    # Tests live beside the headers they test; only headers are installed.
+    install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+            FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h" PATTERN "*.sgl")
   endforeach()
   set_property(GLOBAL APPEND PROPERTY SAFEGI_EXPORTED_TARGETS ${ARG_UNPARSED_ARGUMENTS})
 endfunction()

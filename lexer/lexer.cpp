@@ -1,0 +1,422 @@
+#include <safegi/lexer/lexer.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace safegi {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_word_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_word_char(char c) { return is_word_start(c) || is_digit(c); }
+bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+bool is_newline(char c) { return c == '\n' || c == '\r'; }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+struct Suffix {
+  std::string_view spelling;
+  TokenKind kind;
+};
+constexpr Suffix kIntegerSuffixes[] = {
+    {"", TokenKind::int_literal},       {"u", TokenKind::uint_literal},     {"U", TokenKind::uint_literal},
+    {"l", TokenKind::int64_literal},    {"L", TokenKind::int64_literal},    {"ul", TokenKind::uint64_literal},
+    {"UL", TokenKind::uint64_literal},  {"uL", TokenKind::uint64_literal},  {"Ul", TokenKind::uint64_literal},
+    {"s", TokenKind::int16_literal},    {"S", TokenKind::int16_literal},    {"us", TokenKind::uint16_literal},
+    {"US", TokenKind::uint16_literal},
+};
+constexpr Suffix kFloatSuffixes[] = {
+    {"", TokenKind::float_literal},   {"f", TokenKind::float_literal},     {"F", TokenKind::float_literal},
+    {"lf", TokenKind::double_literal}, {"LF", TokenKind::double_literal}, {"hf", TokenKind::float16_literal},
+    {"HF", TokenKind::float16_literal},
+};
+
+template <std::size_t N>
+const Suffix* find_suffix(const Suffix (&suffixes)[N], std::string_view spelling) {
+  for (const Suffix& s : suffixes) {
+    if (s.spelling == spelling) return &s;
+  }
+  return nullptr;
+}
+
+std::uint64_t max_value(TokenKind kind) {
+  switch (kind) {
+    case TokenKind::int16_literal:
+    case TokenKind::uint16_literal: return 0xFFFF;
+    case TokenKind::int64_literal:
+    case TokenKind::uint64_literal: return UINT64_MAX;
+    default: return 0xFFFFFFFF;
+  }
+}
+
+}  // namespace
+
+Lexer::Lexer(SourceManager& sources, FileId file, DiagnosticEngine& diagnostics, LexerOptions options)
+    : sources_(sources), diagnostics_(diagnostics), file_(file), text_(sources.text(file)), options_(options) {}
+
+std::size_t Lexer::skip_splices(std::size_t p) const {
+  while (p + 1 < text_.size() && text_[p] == '\\') {
+    if (text_[p + 1] == '\n') {
+      p += 2;
+    } else if (text_[p + 1] == '\r') {
+      p += (p + 2 < text_.size() && text_[p + 2] == '\n') ? 3 : 2;
+    } else {
+      break;
+    }
+  }
+  return p;
+}
+
+void Lexer::error(std::size_t begin, std::size_t end, std::string message) {
+  if (!report_errors_) return;
+  diagnostics_.error(sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)),
+                     std::move(message));
+}
+
+bool Lexer::skip_blanks_and_comments() {
+  bool skipped = false;
+  for (;;) {
+    pos_ = skip_splices(pos_);
+    if (pos_ >= text_.size()) return skipped;
+    char c = text_[pos_];
+    if (is_blank(c)) {
+      ++pos_;
+    } else if (is_newline(c)) {
+      pos_ += (c == '\r' && at(pos_ + 1) == '\n') ? 2 : 1;
+      at_line_start_ = true;
+    } else if (c == '/' && peek2() == '/') {
+      while (!at_end(pos_) && !is_newline(peek())) advance();
+    } else if (c == '/' && peek2() == '*') {
+      std::size_t start = pos_;
+      advance();
+      advance();
+      for (;;) {
+        if (at_end(pos_)) {
+          // Reported even in skipped groups: it swallows the rest of the file.
+          bool report = report_errors_;
+          report_errors_ = true;
+          error(start, start + 2, "unterminated /* comment");
+          report_errors_ = report;
+          pos_ = text_.size();
+          return true;
+        }
+        if (peek() == '*' && peek2() == '/') {
+          advance();
+          advance();
+          break;
+        }
+        advance();
+      }
+    } else {
+      return skipped;
+    }
+    skipped = true;
+  }
+}
+
+void Lexer::finish(Token& token, std::size_t begin) {
+  token.range = sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(pos_));
+  std::string_view raw = text_.substr(begin, pos_ - begin);
+  if (raw.find('\\') == std::string_view::npos) {
+    token.text = raw;
+    return;
+  }
+  std::string spelled;
+  for (std::size_t p = skip_splices(begin); p < pos_; p = skip_splices(p + 1)) spelled.push_back(text_[p]);
+  token.text = sources_.save_string(spelled);
+}
+
+Token Lexer::next() {
+  Token token;
+  token.leading_space = skip_blanks_and_comments();
+  token.at_line_start = at_line_start_;
+  at_line_start_ = false;
+  std::size_t begin = pos_ = skip_splices(pos_);
+  if (pos_ >= text_.size()) {
+    token.kind = TokenKind::eof;
+    token.at_line_start = true;
+    finish(token, begin);
+    return token;
+  }
+  char c = text_[pos_];
+  if (is_digit(c) || (c == '.' && is_digit(peek2()))) {
+    lex_number(token);
+  } else if (is_word_start(c)) {
+    lex_word(token);
+  } else if (c == '"') {
+    advance();
+    while (!at_end(pos_) && peek() != '"' && !is_newline(peek())) advance();
+    if (peek() == '"') {
+      advance();
+    } else {
+      error(begin, pos_, "missing terminating '\"' character");
+    }
+    token.kind = TokenKind::string_literal;
+    finish(token, begin);
+  } else {
+    lex_punctuator(token);
+    if (token.kind == TokenKind::invalid) lex_invalid(token);
+  }
+  return token;
+}
+
+void Lexer::lex_word(Token& token) {
+  std::size_t begin = pos_;
+  while (is_word_char(peek())) advance();
+  finish(token, begin);
+  token.kind = options_.classify_words ? classify_word(token.text, options_.keywords) : TokenKind::identifier;
+}
+
+void Lexer::lex_number(Token& token) {
+  std::size_t begin = pos_;
+  bool hex = peek() == '0' && (peek2() == 'x' || peek2() == 'X');
+  bool is_float = false;
+  std::string digits;  // the number without its suffix, continuations removed
+  auto take = [&] {
+    digits.push_back(peek());
+    advance();
+  };
+  if (hex) {
+    take();
+    take();
+    while (is_hex_digit(peek())) take();
+  } else {
+    while (is_digit(peek())) take();
+    if (peek() == '.') {
+      is_float = true;
+      take();
+      while (is_digit(peek())) take();
+    }
+    if (peek() == 'e' || peek() == 'E') {
+      std::size_t save = pos_;
+      std::string saved_digits = digits;
+      take();
+      bool has_sign = peek() == '+' || peek() == '-';
+      if (has_sign) take();
+      if (is_digit(peek())) {
+        is_float = true;
+        while (is_digit(peek())) take();
+      } else if (has_sign) {
+        finish(token, begin);
+        error(begin, pos_, "exponent has no digits");
+        token.kind = TokenKind::float_literal;
+        return;
+      } else {
+        pos_ = save;  // "1e": the letters become a suffix, reported below
+        digits = std::move(saved_digits);
+      }
+    }
+  }
+  std::size_t suffix_begin = pos_;
+  while (is_word_char(peek()) || (peek() == '.' && !hex)) advance();
+  std::string suffix;
+  for (std::size_t p = skip_splices(suffix_begin); p < pos_; p = skip_splices(p + 1)) suffix.push_back(text_[p]);
+  finish(token, begin);
+
+  if (is_float) {
+    const Suffix* s = find_suffix(kFloatSuffixes, suffix);
+    token.kind = s ? s->kind : TokenKind::float_literal;
+    if (!s && (suffix[0] == 'e' || suffix[0] == 'E')) {
+      error(suffix_begin, pos_, "exponent has no digits");
+    } else if (!s) {
+      error(suffix_begin, pos_, "invalid suffix '" + suffix + "' on floating-point literal");
+    }
+    return;
+  }
+  const Suffix* s = find_suffix(kIntegerSuffixes, suffix);
+  if (!s && (suffix == "f" || suffix == "F" || suffix == "lf" || suffix == "LF") && !hex) {
+    error(begin, pos_, "a floating-point literal needs a '.' or an exponent (write '" + digits + ".0" + suffix + "')");
+    token.kind = TokenKind::float_literal;
+    return;
+  }
+  token.kind = s ? s->kind : TokenKind::int_literal;
+  if (!s) {
+    if (!suffix.empty() && (suffix[0] == 'e' || suffix[0] == 'E')) {
+      error(suffix_begin, pos_, "exponent has no digits");
+    } else {
+      error(suffix_begin, pos_, "invalid suffix '" + suffix + "' on integer literal");
+    }
+    return;
+  }
+  if (hex && digits.size() == 2) {
+    error(begin, pos_, "hexadecimal literal has no digits");
+    return;
+  }
+  if (!hex && digits.size() > 1 && digits[0] == '0') {
+    std::size_t bad = digits.find_first_of("89");
+    if (bad != std::string::npos) {
+      error(begin, pos_, std::string("invalid digit '") + digits[bad] + "' in octal literal");
+      return;
+    }
+  }
+  auto value = integer_literal_value(digits);
+  if (!value || *value > max_value(token.kind)) {
+    unsigned bits = max_value(token.kind) == 0xFFFF ? 16 : max_value(token.kind) == 0xFFFFFFFF ? 32 : 64;
+    error(begin, pos_, "integer literal '" + std::string(token.text) + "' does not fit in " + std::to_string(bits) +
+                           " bits");
+  }
+}
+
+void Lexer::lex_punctuator(Token& token) {
+  std::size_t begin = pos_;
+  char c = peek();
+  char n = peek2();
+  auto one = [&](TokenKind k) {
+    advance();
+    token.kind = k;
+  };
+  auto two = [&](TokenKind k) {
+    advance();
+    advance();
+    token.kind = k;
+  };
+  switch (c) {
+    case '(': one(TokenKind::l_paren); break;
+    case ')': one(TokenKind::r_paren); break;
+    case '[': one(TokenKind::l_bracket); break;
+    case ']': one(TokenKind::r_bracket); break;
+    case '{': one(TokenKind::l_brace); break;
+    case '}': one(TokenKind::r_brace); break;
+    case '.': one(TokenKind::dot); break;
+    case ',': one(TokenKind::comma); break;
+    case ';': one(TokenKind::semicolon); break;
+    case ':': one(TokenKind::colon); break;
+    case '?': one(TokenKind::question); break;
+    case '~': one(TokenKind::tilde); break;
+    case '+':
+      if (n == '+') two(TokenKind::plus_plus);
+      else if (n == '=') two(TokenKind::plus_equal);
+      else one(TokenKind::plus);
+      break;
+    case '-':
+      if (n == '-') two(TokenKind::minus_minus);
+      else if (n == '=') two(TokenKind::minus_equal);
+      else one(TokenKind::minus);
+      break;
+    case '*': n == '=' ? two(TokenKind::star_equal) : one(TokenKind::star); break;
+    case '/': n == '=' ? two(TokenKind::slash_equal) : one(TokenKind::slash); break;
+    case '%': n == '=' ? two(TokenKind::percent_equal) : one(TokenKind::percent); break;
+    case '=': n == '=' ? two(TokenKind::equal_equal) : one(TokenKind::equal); break;
+    case '!': n == '=' ? two(TokenKind::bang_equal) : one(TokenKind::bang); break;
+    case '#': n == '#' ? two(TokenKind::hash_hash) : one(TokenKind::hash); break;
+    case '<':
+      if (n == '<') {
+        advance();
+        peek2() == '=' ? two(TokenKind::less_less_equal) : one(TokenKind::less_less);
+      } else if (n == '=') {
+        two(TokenKind::less_equal);
+      } else {
+        one(TokenKind::less);
+      }
+      break;
+    case '>':
+      if (n == '>') {
+        advance();
+        peek2() == '=' ? two(TokenKind::greater_greater_equal) : one(TokenKind::greater_greater);
+      } else if (n == '=') {
+        two(TokenKind::greater_equal);
+      } else {
+        one(TokenKind::greater);
+      }
+      break;
+    case '&':
+      if (n == '&') two(TokenKind::amp_amp);
+      else if (n == '=') two(TokenKind::amp_equal);
+      else one(TokenKind::amp);
+      break;
+    case '|':
+      if (n == '|') two(TokenKind::pipe_pipe);
+      else if (n == '=') two(TokenKind::pipe_equal);
+      else one(TokenKind::pipe);
+      break;
+    case '^':
+      if (n == '^') two(TokenKind::caret_caret);
+      else if (n == '=') two(TokenKind::caret_equal);
+      else one(TokenKind::caret);
+      break;
+    default: token.kind = TokenKind::invalid; return;
+  }
+  finish(token, begin);
+}
+
+void Lexer::lex_invalid(Token& token) {
+  std::size_t begin = pos_;
+  auto byte = static_cast<unsigned char>(text_[pos_]);
+  token.kind = TokenKind::invalid;
+  if (byte >= 0x80) {
+    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) ++pos_;
+    finish(token, begin);
+    error(begin, pos_, "non-ASCII character '" + std::string(token.text) + "' outside a comment");
+    return;
+  }
+  ++pos_;
+  finish(token, begin);
+  if (byte == '\\') {
+    error(begin, pos_, "stray '\\' in program (a line continuation must be the last character on its line)");
+  } else if (byte < 0x20 || byte == 0x7F) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", byte);
+    error(begin, pos_, std::string("invalid control character ") + hex + " in program");
+  } else {
+    error(begin, pos_, "invalid character '" + std::string(1, static_cast<char>(byte)) + "' in program");
+  }
+}
+
+SourceRange Lexer::rest_of_line() {
+  std::size_t begin = std::string_view::npos;
+  std::size_t last = pos_;
+  for (;;) {
+    pos_ = skip_splices(pos_);
+    if (pos_ >= text_.size() || is_newline(text_[pos_])) break;
+    char c = text_[pos_];
+    if (c == '/' && peek2() == '/') break;
+    if (c == '/' && peek2() == '*') {
+      bool save_line_start = at_line_start_;
+      skip_blanks_and_comments();  // stops at the next token or newline
+      at_line_start_ = save_line_start;
+      continue;
+    }
+    if (!is_blank(c)) {
+      if (begin == std::string_view::npos) begin = pos_;
+      last = pos_ + 1;
+    }
+    ++pos_;
+  }
+  while (!at_end(pos_) && !is_newline(peek())) advance();  // a trailing // comment
+  if (begin == std::string_view::npos) begin = last = pos_;
+  return sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(last));
+}
+
+std::optional<Token> Lexer::header_name() {
+  std::size_t save = pos_;
+  bool line_start = at_line_start_;
+  bool space = skip_blanks_and_comments();
+  if (at_line_start_ != line_start || peek() != '<') {
+    pos_ = save;
+    at_line_start_ = line_start;
+    return std::nullopt;
+  }
+  std::size_t begin = skip_splices(pos_);
+  while (!at_end(pos_) && peek() != '>' && !is_newline(peek())) advance();
+  if (peek() != '>') {
+    pos_ = save;
+    at_line_start_ = line_start;
+    return std::nullopt;
+  }
+  advance();
+  Token token;
+  token.kind = TokenKind::string_literal;
+  token.leading_space = space;
+  finish(token, begin);
+  return token;
+}
+
+std::vector<Token> tokenize(SourceManager& sources, FileId file, DiagnosticEngine& diagnostics, LexerOptions options) {
+  Lexer lexer(sources, file, diagnostics, options);
+  std::vector<Token> tokens;
+  for (;;) {
+    tokens.push_back(lexer.next());
+    if (tokens.back().kind == TokenKind::eof) return tokens;
+  }
+}
+
+}  // namespace safegi
