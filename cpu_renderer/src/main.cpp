@@ -16,7 +16,7 @@ namespace {
 
 std::filesystem::path with_extension(std::filesystem::path output, const char* extension) {
   std::string ext = output.extension().string();
-  if (ext == ".exr" || ext == ".png") output.replace_extension();
+  if (ext == ".exr" || ext == ".png" || ext == ".pfm") output.replace_extension();
   output += extension;
   return output;
 }
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   int spp = 0, threads = 0, max_depth = 0;
   uint32_t seed = 0;
   double time_budget = 0;
-  bool quiet = false, stats_json = false;
+  bool quiet = false, stats_json = false, pfm = false;
   app.add_option("scene", scene_file, "scene file (.json)")->required();
   app.add_option("-o,--output", output, "output name; writes NAME.exr (linear) and NAME.png (sRGB)");
   app.add_option("--spp", spp, "samples per pixel (with --time-budget: the most to take)")->check(CLI::Range(1, 1 << 24));
@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"direct", "path"}));
   app.add_option("--max-depth", max_depth, "longest path, in bounces (default: the scene's)")->check(CLI::Range(1, 1024));
   app.add_flag("-q,--quiet", quiet, "no progress bar");
+  app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, e.g. for test references)");
   app.add_flag("--stats", stats_json, "print render statistics as one JSON line on stdout");
   CLI11_PARSE(app, argc, argv);
 
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
     Image image = render(scene, options, &stats);
     write_exr(with_extension(output, ".exr"), image);
     write_png(with_extension(output, ".png"), image);
+    if (pfm) write_pfm(with_extension(output, ".pfm"), image);
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);

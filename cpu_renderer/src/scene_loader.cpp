@@ -581,7 +581,17 @@ Scene parse_scene(std::string_view json_text, std::string_view display_name,
     std::string message = error.what();
     // nlohmann's text: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     size_t colon = message.find(": ", message.find("parse error"));
-    std::string reason = colon == std::string::npos ? message : message.substr(colon + 2);
+    std::string raw_reason = colon == std::string::npos ? message : message.substr(colon + 2);
+    // The parser quotes what it read, which may be any byte: keep messages printable.
+    std::string reason;
+    for (unsigned char c : raw_reason) {
+      if (c >= 0x20 && c < 0x7f) {
+        reason += static_cast<char>(c);
+      } else {
+        static const char* const kHex = "0123456789ABCDEF";
+        reason += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+      }
+    }
     size_t at = error.byte == 0 ? 0 : error.byte - 1;
     throw SceneError(std::string(display_name) + ":" + line_and_column(json_text, at) + ": invalid JSON: " + reason);
   }

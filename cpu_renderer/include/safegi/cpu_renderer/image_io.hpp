@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "safegi/cpu_renderer/renderer.hpp"
+#include "safegi/cpu_renderer/image.hpp"
 
 namespace safegi::render {
 

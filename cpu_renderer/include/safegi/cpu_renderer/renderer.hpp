@@ -5,18 +5,10 @@
 #include <optional>
 #include <vector>
 
+#include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
 namespace safegi::render {
-
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<float> rgb;  // row-major, top row first, linear radiance in W/(m2 sr)
-
-  float* pixel(int x, int y) { return &rgb[3 * (static_cast<size_t>(y) * width + x)]; }
-  const float* pixel(int x, int y) const { return &rgb[3 * (static_cast<size_t>(y) * width + x)]; }
-};
 
 struct CropWindow {
   int x = 0, y = 0, width = 0, height = 0;  // in pixels of the full image
