@@ -35,8 +35,7 @@ bool is_known_version(int v) {
 // ------------------------------------------------------------ #define ---
 
 void Preprocessor::directive_define(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::define, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::define, hash);
   if (line.empty()) {
     error(directive_range(hash, line), "macro name missing in #define");
     return;
@@ -104,8 +103,7 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
 }
 
 void Preprocessor::directive_undef(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::undef, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::undef, hash);
   if (line.empty()) {
     error(directive_range(hash, line), "macro name missing in #undef");
     return;
@@ -118,8 +116,7 @@ void Preprocessor::directive_undef(FileState& f, const Token& hash) {
 // ------------------------------------------------ version, extensions ---
 
 void Preprocessor::directive_version(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::version, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::version, hash);
   SourceRange directive = directive_range(hash, line);
   if (!f.is_main) {
     error(directive, "#version is only allowed in the main file, not in an included file");
@@ -211,8 +208,7 @@ void Preprocessor::apply_version() {
 }
 
 void Preprocessor::directive_extension(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::extension, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::extension, hash);
   SourceRange directive = directive_range(hash, line);
   if (line.empty() || line[0].kind != TokenKind::identifier) {
     error(line.empty() ? directive : line[0].range, "expected an extension name after #extension");
@@ -250,8 +246,7 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
 }
 
 void Preprocessor::directive_pragma(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::pragma, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::pragma, hash);
   SourceRange directive = directive_range(hash, line);
   std::string text;
   for (const Token& t : line) {

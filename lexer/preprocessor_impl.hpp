@@ -58,6 +58,8 @@ class Preprocessor {
   Token get(FileState& f);
   void unget(FileState& f, Token t) { f.peeked = t; }
   std::vector<Token> read_line(FileState& f);
+  // read_line for a directive, recorded in PreprocessedUnit::directives.
+  std::vector<Token> read_directive_line(FileState& f, DirectiveKind kind, const Token& hash);
   PPToken read_file_token();
   void handle_directive(FileState& f, const Token& hash);
   void skip_group(FileState& f);
