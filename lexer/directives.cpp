@@ -202,7 +202,10 @@ void Preprocessor::apply_version() {
     define_predefined("GL_ES", "1");
     define_predefined("GL_es_profile", "1");
     define_predefined("GL_FRAGMENT_PRECISION_HIGH", "1");
-  } else if (unit_.version >= 150) {
+    return;
+  }
+  if (unit_.version >= 130) define_predefined("GL_FRAGMENT_PRECISION_HIGH", "1");  // GLSL 1.30, 4.6.1
+  if (unit_.version >= 150) {
     define_predefined(unit_.profile == "compatibility" ? "GL_compatibility_profile" : "GL_core_profile", "1");
   }
 }

@@ -326,7 +326,10 @@ bool Preprocessor::evaluate_condition(const std::vector<Token>& line, const Toke
 void Preprocessor::emit(const PPToken& t) {
   Token token = t.token;
   switch (token.kind) {
-    case TokenKind::invalid: return;  // already reported by the lexer
+    case TokenKind::invalid:
+      diagnostics_.report(
+          Diagnostic::error(token.range, invalid_character_message(token.text)).with_expansion(token.expansion));
+      return;
     case TokenKind::identifier: token.kind = classify_word(token.text, unit_.keywords); break;
     case TokenKind::hash:
     case TokenKind::hash_hash:

@@ -274,6 +274,19 @@ TEST_F(Directives, NumbersAreCheckedWhereTheyAreUsed) {
             "    ^~\n");
 }
 
+TEST_F(Directives, InvalidCharactersAreReportedWhereUsed) {
+  EXPECT_EQ(output("#version 300 es\n#define eat_sushi \xE7\xAE\xB8\n#if 0\n@\n#endif\nok\n"), "ok");
+  EXPECT_EQ(errors(), "");
+  output("#define AT @\nAT\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:1:12: error: invalid character '@' in program\n"
+            "#define AT @\n"
+            "           ^\n"
+            "main.glsl:2:1: note: in expansion of macro 'AT' (defined at main.glsl:1:9)\n"
+            "AT\n"
+            "^~\n");
+}
+
 TEST_F(Directives, StringsWithDebugPrintf) {
   auto unit = run("#version 450\n#extension GL_EXT_debug_printf : enable\ndebugPrintfEXT(\"x = %f\", x);\n");
   EXPECT_EQ(unit.tokens[2].kind, TokenKind::string_literal);

@@ -29,7 +29,7 @@ class Preprocessor {
   // One file being read (the main file, an include, or the -D/-U prelude).
   struct FileState {
     FileState(SourceManager& s, FileId f, DiagnosticEngine& d, std::string p)
-        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false, false}) {}
+        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false, false, false}) {}
     FileId file;
     std::string path;
     Lexer lexer;
