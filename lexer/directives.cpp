@@ -1,6 +1,7 @@
 // The directives other than conditionals: #define, #undef, #version,
 // #extension, #pragma, #line, #error and #include.
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -244,6 +245,16 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
     unit_.keywords.extension_groups &= ~groups;
   } else {
     unit_.keywords.extension_groups |= groups;
+  }
+  const auto& supported = options_.extension_macros;
+  if (!supported.empty() && name != "all" && behavior != "disable" &&
+      std::find(supported.begin(), supported.end(), name) == supported.end()) {
+    std::string message = "extension '" + std::string(name) + "' is not supported";
+    if (behavior == "require") {
+      error(line[0].range, std::move(message));
+    } else {
+      diagnostics_.report(Diagnostic::warning(line[0].range, std::move(message)));
+    }
   }
   unit_.extensions.push_back({std::string(name), std::string(behavior), directive});
 }

@@ -296,6 +296,16 @@ TEST_F(Directives, StringsWithDebugPrintf) {
 TEST_F(Directives, ExtensionMacros) {
   options.extension_macros = {"GL_ARB_gpu_shader5"};
   EXPECT_EQ(output("#ifdef GL_ARB_gpu_shader5\nyes GL_ARB_gpu_shader5\n#endif\n"), "yes 1");
+  EXPECT_EQ(errors(), "");
+  run("#extension GL_ARB_gpu_shader5 : require\n#extension GL_FOO_bar : require\n#extension GL_FOO_baz : enable\n"
+      "#extension GL_FOO_baz : disable\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:12: error: extension 'GL_FOO_bar' is not supported\n"
+            "#extension GL_FOO_bar : require\n"
+            "           ^~~~~~~~~~\n"
+            "main.glsl:3:12: warning: extension 'GL_FOO_baz' is not supported\n"
+            "#extension GL_FOO_baz : enable\n"
+            "           ^~~~~~~~~~\n");
 }
 
 TEST_F(Directives, DirectiveLinesAndSkippedRangesAreRecorded) {

@@ -123,6 +123,9 @@ TEST_F(Preprocess, TokenPasting) {
   EXPECT_EQ(output("#define V(n) vec ## n\n#define N 4\nV(N)\n"), "vecN");  // operands are not expanded
   EXPECT_EQ(output("#define CAT3(a, b, c) a ## b ## c\nCAT3(x, y, z)\n"), "xyz");
   EXPECT_EQ(output("#define PLUSEQ + ## =\nPLUSEQ\n"), "+=");
+  // The pasted token is rescanned: macro expansion happens after pasting.
+  EXPECT_EQ(output("#define I i\n#define N n\n#define T t\n#define INT invalid_type\n#define IT I ## N ## T\nIT x;\n"),
+            "invalid_type x ;");
   EXPECT_EQ(errors(), "");
 }
 
