@@ -1,0 +1,98 @@
+#pragma once
+// The vocabulary a program declares: base dimensions, derived dimension names,
+// units (a dimension and a scale to the reference unit) and coordinate spaces.
+// It prints dimensions in the user's own words.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "safegi/dimension_algebra/dimension.hpp"
+
+namespace safegi {
+
+using SpaceId = std::uint32_t;
+
+struct DerivedDimension {
+  std::string name;
+  Dimension value;
+};
+
+struct Unit {
+  std::string name;
+  Dimension dimension;
+  double scale = 1.0;  // value in the reference unit of one of this unit
+};
+
+enum class Notation { unicode, ascii };
+
+// A rational exponent, used to describe non-integer unification results.
+struct RationalFactor {
+  BaseId base = 0;
+  std::int64_t numerator = 0;
+  std::int64_t denominator = 1;
+};
+
+class DimensionRegistry {
+ public:
+  // The rendering prelude, the same vocabulary as safegi/prelude.sgl (see
+  // docs/language.md): bases length, time, energy, angle, solid_angle, proj;
+  // derived dimensionless, area, volume, velocity, power, intensity, irradiance,
+  // radiant_exitance, radiance, brdf, pdfs per solid angle / projected solid
+  // angle / area / length, inv_length, inv_area; units meter … steradian.
+  // It declares no spaces: a program declares its own.
+  static DimensionRegistry rendering_prelude();
+
+  // Each add_* returns nothing (and changes nothing) when the name is already
+  // declared in any namespace of the registry; the caller reports the clash.
+  std::optional<BaseId> add_base(std::string name);
+  bool add_derived(std::string name, Dimension value);
+  bool add_unit(std::string name, Dimension dimension, double scale);
+  std::optional<SpaceId> add_space(std::string name);
+
+  bool is_declared(std::string_view name) const { return kinds_.count(std::string(name)) != 0; }
+  std::optional<BaseId> find_base(std::string_view name) const;
+  const DerivedDimension* find_derived(std::string_view name) const;
+  // A base or derived dimension name.
+  std::optional<Dimension> find_dimension(std::string_view name) const;
+  const Unit* find_unit(std::string_view name) const;
+  std::optional<SpaceId> find_space(std::string_view name) const;
+
+  std::size_t base_count() const { return bases_.size(); }
+  const std::string& base_name(BaseId id) const { return bases_.at(id); }
+  const std::string& space_name(SpaceId id) const { return spaces_.at(id); }
+  const std::vector<std::string>& bases() const { return bases_; }
+  const std::vector<DerivedDimension>& derived() const { return derived_; }
+  const std::vector<Unit>& units() const { return units_; }
+  const std::vector<std::string>& spaces() const { return spaces_; }
+
+  // Builds a dimension from (name, exponent) pairs of base or derived names;
+  // nothing if a name is unknown or the exponents overflow.
+  std::optional<Dimension> make(std::initializer_list<std::pair<std::string_view, std::int32_t>> terms) const;
+
+  // The first-declared derived name equal to d; else a base name; else the
+  // normalised product: positive exponents first, then negative, each group in
+  // base declaration order (`energy·length⁻²`, ASCII `energy*length^-2`).
+  // The dimensionless dimension prints as `1` unless a derived name (`dimensionless`) matches.
+  std::string format(const Dimension& d, Notation notation = Notation::unicode) const;
+  // Always the normalised product of bases, never a derived name.
+  std::string format_product(const Dimension& d, Notation notation = Notation::unicode) const;
+  std::string format_rational(const std::vector<RationalFactor>& factors, Notation notation = Notation::unicode) const;
+  std::string describe(const DimensionError& error) const;
+
+ private:
+  enum class Kind { base, derived, unit, space };
+  bool claim(const std::string& name, Kind kind);
+
+  std::vector<std::string> bases_;
+  std::vector<DerivedDimension> derived_;
+  std::vector<Unit> units_;
+  std::vector<std::string> spaces_;
+  std::unordered_map<std::string, std::pair<Kind, std::size_t>> kinds_;
+};
+
+}  // namespace safegi

@@ -1,0 +1,198 @@
+#include "safegi/dimension_algebra/registry.hpp"
+
+#include <numbers>
+
+namespace safegi {
+namespace {
+
+std::string superscript(std::int64_t n) {
+  static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  // The magnitude as unsigned so INT64_MIN is printed correctly, not negated into UB.
+  std::uint64_t magnitude = n < 0 ? 0 - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);
+  std::string s = n < 0 ? "⁻" : "";
+  for (char c : std::to_string(magnitude)) s += digits[c - '0'];
+  return s;
+}
+
+std::string power_text(const std::string& name, std::int64_t e, Notation notation) {
+  if (e == 1) return name;
+  if (notation == Notation::ascii) return name + "^" + std::to_string(e);
+  return name + superscript(e);
+}
+
+}  // namespace
+
+bool DimensionRegistry::claim(const std::string& name, Kind kind) {
+  std::size_t index = 0;
+  switch (kind) {
+    case Kind::base: index = bases_.size(); break;
+    case Kind::derived: index = derived_.size(); break;
+    case Kind::unit: index = units_.size(); break;
+    case Kind::space: index = spaces_.size(); break;
+  }
+  return kinds_.emplace(name, std::pair{kind, index}).second;
+}
+
+std::optional<BaseId> DimensionRegistry::add_base(std::string name) {
+  if (!claim(name, Kind::base)) return std::nullopt;
+  bases_.push_back(std::move(name));
+  return static_cast<BaseId>(bases_.size() - 1);
+}
+
+bool DimensionRegistry::add_derived(std::string name, Dimension value) {
+  if (!claim(name, Kind::derived)) return false;
+  derived_.push_back({std::move(name), std::move(value)});
+  return true;
+}
+
+bool DimensionRegistry::add_unit(std::string name, Dimension dimension, double scale) {
+  if (!claim(name, Kind::unit)) return false;
+  units_.push_back({std::move(name), std::move(dimension), scale});
+  return true;
+}
+
+std::optional<SpaceId> DimensionRegistry::add_space(std::string name) {
+  if (!claim(name, Kind::space)) return std::nullopt;
+  spaces_.push_back(std::move(name));
+  return static_cast<SpaceId>(spaces_.size() - 1);
+}
+
+std::optional<BaseId> DimensionRegistry::find_base(std::string_view name) const {
+  auto it = kinds_.find(std::string(name));
+  if (it == kinds_.end() || it->second.first != Kind::base) return std::nullopt;
+  return static_cast<BaseId>(it->second.second);
+}
+
+const DerivedDimension* DimensionRegistry::find_derived(std::string_view name) const {
+  auto it = kinds_.find(std::string(name));
+  if (it == kinds_.end() || it->second.first != Kind::derived) return nullptr;
+  return &derived_[it->second.second];
+}
+
+std::optional<Dimension> DimensionRegistry::find_dimension(std::string_view name) const {
+  if (auto b = find_base(name)) return Dimension::base(*b);
+  if (const DerivedDimension* d = find_derived(name)) return d->value;
+  return std::nullopt;
+}
+
+const Unit* DimensionRegistry::find_unit(std::string_view name) const {
+  auto it = kinds_.find(std::string(name));
+  if (it == kinds_.end() || it->second.first != Kind::unit) return nullptr;
+  return &units_[it->second.second];
+}
+
+std::optional<SpaceId> DimensionRegistry::find_space(std::string_view name) const {
+  auto it = kinds_.find(std::string(name));
+  if (it == kinds_.end() || it->second.first != Kind::space) return std::nullopt;
+  return static_cast<SpaceId>(it->second.second);
+}
+
+std::optional<Dimension> DimensionRegistry::make(
+    std::initializer_list<std::pair<std::string_view, std::int32_t>> terms) const {
+  Dimension result;
+  for (const auto& [name, exponent] : terms) {
+    std::optional<Dimension> d = find_dimension(name);
+    if (!d) return std::nullopt;
+    Checked<Dimension> p = power(*d, exponent);
+    if (!p) return std::nullopt;
+    Checked<Dimension> m = multiply(result, *p);
+    if (!m) return std::nullopt;
+    result = *m;
+  }
+  return result;
+}
+
+std::string DimensionRegistry::format(const Dimension& d, Notation notation) const {
+  for (const DerivedDimension& derived : derived_)
+    if (derived.value == d) return derived.name;
+  return format_product(d, notation);
+}
+
+std::string DimensionRegistry::format_product(const Dimension& d, Notation notation) const {
+  std::vector<RationalFactor> factors;
+  for (const Factor& f : d.factors()) factors.push_back({f.base, f.exponent, 1});
+  return format_rational(factors, notation);
+}
+
+std::string DimensionRegistry::format_rational(const std::vector<RationalFactor>& factors,
+                                               Notation notation) const {
+  std::string out;
+  const char* separator = notation == Notation::ascii ? "*" : "·";
+  auto emit = [&](const RationalFactor& f) {
+    if (!out.empty()) out += separator;
+    const std::string& name = f.base < bases_.size() ? bases_[f.base] : "?";
+    if (f.denominator == 1) {
+      out += power_text(name, f.numerator, notation);
+    } else {
+      out += name + "^(" + std::to_string(f.numerator) + "/" + std::to_string(f.denominator) + ")";
+    }
+  };
+  for (const RationalFactor& f : factors)
+    if (f.numerator > 0) emit(f);
+  for (const RationalFactor& f : factors)
+    if (f.numerator < 0) emit(f);
+  return out.empty() ? "1" : out;
+}
+
+std::string DimensionRegistry::describe(const DimensionError& error) const {
+  const std::string name = error.base < bases_.size() ? bases_[error.base] : "?";
+  switch (error.kind) {
+    case DimensionErrorKind::exponent_overflow:
+      return "exponent of '" + name + "' overflows (" + std::to_string(error.exponent) + " combined with " +
+             std::to_string(error.operand) + " leaves the 32-bit range)";
+    case DimensionErrorKind::not_a_root:
+      return "exponent " + std::to_string(error.exponent) + " of '" + name + "' is not divisible by " +
+             std::to_string(error.operand);
+    case DimensionErrorKind::invalid_root:
+      return "root of degree " + std::to_string(error.operand) + " is not defined";
+  }
+  return "invalid dimension";
+}
+
+DimensionRegistry DimensionRegistry::rendering_prelude() {
+  DimensionRegistry r;
+  for (const char* base : {"length", "time", "energy", "angle", "solid_angle", "proj"}) r.add_base(base);
+  auto derive = [&r](const char* name, std::initializer_list<std::pair<std::string_view, std::int32_t>> terms) {
+    r.add_derived(name, *r.make(terms));
+  };
+  // The same names, in the same order, as parser/prelude/safegi/prelude.sgl.
+  derive("dimensionless", {});
+  derive("area", {{"length", 2}});
+  derive("volume", {{"length", 3}});
+  derive("velocity", {{"length", 1}, {"time", -1}});
+  derive("power", {{"energy", 1}, {"time", -1}});
+  derive("intensity", {{"power", 1}, {"solid_angle", -1}});
+  derive("irradiance", {{"power", 1}, {"area", -1}});
+  derive("radiant_exitance", {{"power", 1}, {"area", -1}});
+  derive("radiance", {{"irradiance", 1}, {"solid_angle", -1}, {"proj", -1}});
+  // brdf and the projected-solid-angle pdf are the same dimension; the first
+  // declared (brdf) is the one printed.
+  derive("brdf", {{"solid_angle", -1}, {"proj", -1}});
+  derive("pdf_solid_angle", {{"solid_angle", -1}});
+  derive("pdf_projected_solid_angle", {{"solid_angle", -1}, {"proj", -1}});
+  derive("pdf_area", {{"area", -1}});
+  derive("pdf_length", {{"length", -1}});
+  derive("inv_length", {{"length", -1}});
+  derive("inv_area", {{"area", -1}});
+
+  const double pi = std::numbers::pi;
+  auto unit = [&r](const char* name, std::string_view dimension, double scale) {
+    r.add_unit(name, *r.find_dimension(dimension), scale);
+  };
+  unit("meter", "length", 1.0);
+  unit("centimeter", "length", 1e-2);
+  unit("millimeter", "length", 1e-3);
+  unit("kilometer", "length", 1e3);
+  unit("inch", "length", 0.0254);
+  unit("second", "time", 1.0);
+  unit("millisecond", "time", 1e-3);
+  unit("joule", "energy", 1.0);
+  unit("watt", "power", 1.0);
+  unit("radian", "angle", 1.0);
+  unit("degree", "angle", pi / 180.0);
+  unit("steradian", "solid_angle", 1.0);
+
+  return r;
+}
+
+}  // namespace safegi
