@@ -1,0 +1,87 @@
+#pragma once
+// The type checker: GLSL's own type rules plus SafeGI's dimension and space
+// analysis over the parser's AST (docs/typechecker.md).
+//
+//   DiagnosticEngine diags;
+//   CheckResult r = check(unit, CheckOptions{.stage = Stage::fragment}, diags);
+//
+// Every diagnostic goes to the engine; the result describes every declaration
+// and expression (for the elider) and the interface variables (for the symbol
+// table), and is complete even when there were errors (erroneous expressions
+// have the error type).
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <safegi/diagnostics/diagnostic.hpp>
+#include <safegi/parser/ast.hpp>
+
+#include "safegi/dimension_algebra/registry.hpp"
+#include "safegi/typechecker/type.hpp"
+
+namespace safegi {
+
+enum class Stage : std::uint8_t { vertex, tess_control, tess_evaluation, geometry, fragment, compute, unknown };
+
+struct CheckOptions {
+  Stage stage = Stage::unknown;  // selects the built-in variables (gl_Position, gl_FragCoord, …)
+  bool strict = false;           // warn on unannotated interface variables and on `?` flowing into annotations
+};
+
+enum class InterfaceKind : std::uint8_t { uniform, input, output, buffer, shared };
+
+struct InterfaceVariable {
+  InterfaceKind kind = InterfaceKind::uniform;
+  std::string name;        // `block.member` for members of an instance-named block
+  std::string block;       // the block name when a block member
+  Type type;               // annotated type (arrays included)
+  std::string type_text;   // type_name(type), in the program's words
+  SourceRange range;       // the declarator
+  const ast::Node* decl = nullptr;
+  int location = -1;       // layout(location = N), -1 when absent
+  int binding = -1;        // layout(binding = N), -1 when absent
+  bool annotated = false;
+};
+
+// How a geometric operation must be emitted (the elider's business).
+enum class GeometricOp : std::uint8_t {
+  none,
+  transform_point,      // map * point: (m * vec4(p, 1)).xyz
+  transform_vector,     // map * vector / direction: mat3(m) * v
+  transform_normal,     // map * normal: transpose(inverse(mat3(m))) * n
+  project,              // projmap * point: m * vec4(p, 1)
+  homogenize,           // h.xyz / h.w
+  compose,              // m2 * m1
+  inverse,              // inverse(m)
+};
+
+struct CallInfo {
+  std::string builtin;          // built-in name when a built-in was called
+  std::string signature;        // the chosen signature as text
+  GeometricOp op = GeometricOp::none;
+};
+
+struct CheckResult {
+  DimensionRegistry registry;                                    // the program's declarations (and the prelude it included)
+  std::unordered_map<const ast::Node*, Type> types;              // every expression and parameter
+  std::unordered_map<const ast::Declarator*, Type> declarators;  // every declared variable (locals inferred from initialisers)
+  std::unordered_map<const ast::Node*, CallInfo> calls;          // calls and operators that are geometric operations
+  std::vector<InterfaceVariable> interface;                      // uniforms (incl. block members), inputs, outputs, buffers
+  std::vector<std::unique_ptr<StructInfo>> structs;              // owned: Type::structure points here
+
+  const Type* type_of(const ast::Node* node) const;
+  const Type* type_of(const ast::Declarator* declarator) const;
+  std::string describe(const Type& t) const { return type_name(t, registry); }
+};
+
+CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics);
+
+// Cross-stage matching: every input of `consumer` with an output of the same
+// name in `producer` must have the identical annotated type; a mismatch is one
+// error naming both declarations.
+void check_interface_match(const CheckResult& producer, const CheckResult& consumer, DiagnosticEngine& diagnostics);
+
+}  // namespace safegi

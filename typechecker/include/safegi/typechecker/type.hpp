@@ -1,0 +1,131 @@
+#pragma once
+// The checker's types: a GLSL type (shape + scalar + arrays) with SafeGI's
+// annotation on top: a geometric kind, a dimension and up to two spaces, and a
+// sampler's texel type. Each annotation slot may be unknown (`?`, unannotated
+// GLSL), known, the zero literal (fits any dimension), or generic (a template
+// parameter of a function being declared or called).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "safegi/dimension_algebra/registry.hpp"
+#include "safegi/dimension_algebra/unifier.hpp"
+
+namespace safegi {
+
+enum class Shape : std::uint8_t { error, void_, scalar, vector, matrix, opaque, structure };
+enum class Scalar : std::uint8_t { none, bool_, int_, uint_, float_, double_ };
+
+// What an annotated type word says about a value (docs/language.md, "Annotated types").
+enum class Geometry : std::uint8_t {
+  none,       // float, vecN, ...: only a dimension
+  spectrum,   // vec3 of one dimension
+  point,      // vec3, length, in a space
+  vector,     // vec3 of a dimension (length by default), in a space
+  direction,  // unit vec3, dimensionless, in a space
+  normal,     // unit vec3 transforming by the inverse transpose, in a space
+  hpoint,     // vec4 homogeneous point in a space
+  map,        // mat4, space A -> space B
+  rigidmap,   // mat4, rigid, A -> B
+  projmap,    // mat4, projective, A -> hpoint in B
+};
+
+const char* geometry_name(Geometry g);
+bool has_space(Geometry g);
+bool is_map(Geometry g);
+
+struct DimSlot {
+  enum class State : std::uint8_t { unknown, known, zero, generic };
+  State state = State::unknown;
+  Dimension value;      // known
+  DimTerm term;         // generic: over the template's dimension parameters
+  std::string spelling; // the name an annotation used (`pdf_projected_solid_angle`), for display
+
+  static DimSlot unknown() { return {}; }
+  static DimSlot known(Dimension d, std::string spelling = {}) { return {State::known, std::move(d), {}, std::move(spelling)}; }
+  static DimSlot zero() { return {State::zero, {}, {}, {}}; }
+  static DimSlot generic(DimTerm t) { return {State::generic, {}, std::move(t), {}}; }
+  bool is_known() const { return state == State::known; }
+};
+
+struct SpaceSlot {
+  enum class State : std::uint8_t { unknown, known, generic };
+  State state = State::unknown;
+  std::uint32_t id = 0;  // SpaceId when known, template parameter index when generic
+  static SpaceSlot unknown() { return {}; }
+  static SpaceSlot known(SpaceId s) { return {State::known, s}; }
+  static SpaceSlot generic(std::uint32_t v) { return {State::generic, v}; }
+  bool is_known() const { return state == State::known; }
+  friend bool operator==(const SpaceSlot&, const SpaceSlot&) = default;
+};
+
+struct StructInfo;
+
+struct Type {
+  Shape shape = Shape::error;
+  Scalar scalar = Scalar::none;
+  std::uint8_t rows = 1;          // vector size, or matrix rows
+  std::uint8_t columns = 1;       // matrix columns
+  std::string opaque;             // sampler2D, image2D, atomic_uint, ...
+  const StructInfo* structure = nullptr;
+  std::vector<int> array;         // outermost first; -1 unsized
+  // Annotation.
+  Geometry geometry = Geometry::none;
+  DimSlot dim;
+  SpaceSlot from;                 // the space (or a map's source space)
+  SpaceSlot to;                   // a map's target space
+  std::shared_ptr<const Type> texel;  // annotated sampler
+
+  static Type error() { return {}; }
+  static Type void_type() { Type t; t.shape = Shape::void_; return t; }
+  static Type scalar_of(Scalar s) { Type t; t.shape = Shape::scalar; t.scalar = s; return t; }
+  static Type vector_of(Scalar s, int n) {
+    Type t; t.shape = n == 1 ? Shape::scalar : Shape::vector; t.scalar = s; t.rows = static_cast<std::uint8_t>(n); return t;
+  }
+  static Type matrix_of(Scalar s, int columns, int rows) {
+    Type t; t.shape = Shape::matrix; t.scalar = s; t.columns = static_cast<std::uint8_t>(columns);
+    t.rows = static_cast<std::uint8_t>(rows); return t;
+  }
+
+  bool is_error() const { return shape == Shape::error; }
+  bool is_array() const { return !array.empty(); }
+  bool is_numeric() const { return (shape == Shape::scalar || shape == Shape::vector || shape == Shape::matrix) && scalar != Scalar::bool_; }
+  bool is_floating() const { return scalar == Scalar::float_ || scalar == Scalar::double_; }
+  bool is_integer() const { return scalar == Scalar::int_ || scalar == Scalar::uint_; }
+  bool is_annotated() const { return geometry != Geometry::none || dim.state == DimSlot::State::known || texel != nullptr; }
+  int components() const { return shape == Shape::matrix ? rows * columns : rows; }
+  // The same GLSL type with every annotation slot unknown.
+  Type plain() const;
+  // The element type of an array, or a type without its outermost array dimension.
+  Type element() const;
+};
+
+struct StructField {
+  std::string name;
+  Type type;
+};
+
+struct StructInfo {
+  std::string name;
+  std::vector<StructField> fields;
+};
+
+// Same GLSL type (shape, scalar, sizes, arrays, struct, opaque name), ignoring annotations.
+bool same_glsl_type(const Type& a, const Type& b);
+// GLSL's implicit conversion of the scalar type (int -> uint -> float -> double).
+bool implicitly_converts(Scalar from, Scalar to);
+
+// The GLSL spelling: float, vec3, mat4x3, sampler2D, S, float[4].
+std::string glsl_name(const Type& t);
+// The annotated spelling in the user's words: float<radiance>, point<world>,
+// map<object, world>, spectrum<?>, vec3. Generic slots print the parameter names.
+std::string type_name(const Type& t, const DimensionRegistry& registry,
+                      const std::vector<std::string>* dim_params = nullptr,
+                      const std::vector<std::string>* space_params = nullptr);
+std::string dim_name(const DimSlot& d, const DimensionRegistry& registry,
+                     const std::vector<std::string>* dim_params = nullptr);
+
+}  // namespace safegi

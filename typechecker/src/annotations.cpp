@@ -1,0 +1,322 @@
+// Annotation declarations (dimension, unit, space) and the resolution of
+// annotated type specifiers into checker types.
+
+#include <cstdlib>
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+namespace {
+
+std::optional<Type> glsl_builtin_type(const std::string& name) {
+  if (name == "void") return Type::void_type();
+  if (name == "float") return Type::scalar_of(Scalar::float_);
+  if (name == "double") return Type::scalar_of(Scalar::double_);
+  if (name == "int") return Type::scalar_of(Scalar::int_);
+  if (name == "uint") return Type::scalar_of(Scalar::uint_);
+  if (name == "bool") return Type::scalar_of(Scalar::bool_);
+  static const struct {
+    const char* prefix;
+    Scalar scalar;
+  } kVectors[] = {{"vec", Scalar::float_}, {"dvec", Scalar::double_}, {"ivec", Scalar::int_}, {"uvec", Scalar::uint_},
+                  {"bvec", Scalar::bool_}};
+  for (const auto& v : kVectors) {
+    const std::string p = v.prefix;
+    if (name.size() == p.size() + 1 && name.compare(0, p.size(), p) == 0 && name.back() >= '2' && name.back() <= '4')
+      return Type::vector_of(v.scalar, name.back() - '0');
+  }
+  for (const auto& [prefix, scalar] : {std::pair{std::string("mat"), Scalar::float_}, std::pair{std::string("dmat"), Scalar::double_}}) {
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = name.substr(prefix.size());
+    auto digit = [](char c) { return c >= '2' && c <= '4'; };
+    if (rest.size() == 1 && digit(rest[0])) return Type::matrix_of(scalar, rest[0] - '0', rest[0] - '0');
+    if (rest.size() == 3 && digit(rest[0]) && rest[1] == 'x' && digit(rest[2]))
+      return Type::matrix_of(scalar, rest[0] - '0', rest[2] - '0');
+  }
+  for (const char* opaque : {"sampler", "isampler", "usampler", "image", "iimage", "uimage", "texture", "itexture",
+                             "utexture", "subpassInput", "isubpassInput", "usubpassInput", "atomic_uint",
+                             "accelerationStructure", "rayQuery"}) {
+    const std::string p = opaque;
+    if (name.compare(0, p.size(), p) == 0) {
+      Type t;
+      t.shape = Shape::opaque;
+      t.opaque = name;
+      return t;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void Checker::declare_dimension(const ast::DimensionDecl& d) {
+  DimensionRegistry& reg = result_.registry;
+  if (!d.definition) {
+    if (reg.find_base(d.name)) return;  // repeated identically: a header included twice
+    if (!reg.add_base(d.name))
+      report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+    return;
+  }
+  std::optional<DimSlot> value = resolve_dimension(d.definition);
+  if (!value || value->state != DimSlot::State::known) return;
+  if (const DerivedDimension* existing = reg.find_derived(d.name)) {
+    if (existing->value == value->value) return;
+    report(Diagnostic::error(d.name_range, "dimension '" + d.name + "' is redefined as " +
+                                               reg.format_product(value->value) + "; it was " +
+                                               reg.format_product(existing->value))
+               .with_code("E-REDECLARED"));
+    return;
+  }
+  if (!reg.add_derived(d.name, value->value))
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+}
+
+void Checker::declare_unit(const ast::UnitDecl& d) {
+  std::optional<DimSlot> dim = resolve_dimension(d.dimension);
+  if (!dim || dim->state != DimSlot::State::known) return;
+  double scale = 1.0;
+  if (const auto* lit = ast::dyn_cast<ast::LiteralExpr>(d.scale)) scale = std::strtod(lit->spelling.c_str(), nullptr);
+  // Non-literal scale expressions are constant folded by the elider; the checker needs only the dimension.
+  DimensionRegistry& reg = result_.registry;
+  if (const Unit* existing = reg.find_unit(d.name)) {
+    if (existing->dimension == dim->value) return;
+    report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with another dimension").with_code("E-REDECLARED"));
+    return;
+  }
+  if (!reg.add_unit(d.name, dim->value, scale))
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+}
+
+void Checker::declare_space(const ast::SpaceDecl& d) {
+  DimensionRegistry& reg = result_.registry;
+  if (reg.find_space(d.name)) return;
+  if (!reg.add_space(d.name))
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+}
+
+std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
+  const DimensionRegistry& reg = result_.registry;
+  if (const auto* name = ast::dyn_cast<ast::DimName>(e)) {
+    if (template_dims_) {
+      for (std::size_t i = 0; i < template_dims_->size(); ++i)
+        if ((*template_dims_)[i] == name->name) return DimSlot::generic(DimTerm::variable(static_cast<DimVarId>(i)));
+    }
+    if (std::optional<Dimension> d = reg.find_dimension(name->name)) return DimSlot::known(*d, name->name);
+    std::string message = "unknown dimension '" + name->name + "'";
+    std::string hint;
+    if (reg.find_space(name->name)) message = "'" + name->name + "' is a space, not a dimension";
+    else if (reg.find_unit(name->name)) hint = "'" + name->name + "' is a unit; annotations name dimensions, e.g. '" +
+                                               reg.format(reg.find_unit(name->name)->dimension) + "'";
+    else if (reg.base_count() == 0) hint = "did you forget '#include <safegi/prelude.sgl>'?";
+    Diagnostic d = Diagnostic::error(e->range, message).with_code("E-UNKNOWN-DIMENSION");
+    if (!hint.empty()) d.with_hint(hint);
+    report(std::move(d));
+    return std::nullopt;
+  }
+  if (ast::isa<ast::DimOne>(e)) return DimSlot::known(Dimension{});
+  if (const auto* paren = ast::dyn_cast<ast::DimParen>(e)) return resolve_dimension(paren->inner);
+  if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
+    std::optional<DimSlot> l = resolve_dimension(bin->lhs);
+    std::optional<DimSlot> r = resolve_dimension(bin->rhs);
+    if (!l || !r) return std::nullopt;
+    std::optional<DimSlot> out = combine(*l, *r, bin->is_division ? -1 : 1);
+    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    if (out) out->spelling.clear();
+    return out;
+  }
+  if (const auto* pow = ast::dyn_cast<ast::DimPower>(e)) {
+    std::optional<DimSlot> b = resolve_dimension(pow->base);
+    if (!b) return std::nullopt;
+    std::optional<DimSlot> out = raise(*b, pow->exponent);
+    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    if (out) out->spelling.clear();
+    return out;
+  }
+  return std::nullopt;
+}
+
+std::optional<long long> Checker::array_size(const ast::ArrayDim& dim) {
+  if (!dim.size) return std::nullopt;
+  Value v = expr(dim.size);
+  if (v.constant) {
+    if (*v.constant <= 0) {
+      report(Diagnostic::error(dim.size->range, "array size must be greater than zero").with_code("E-ARRAY-SIZE"));
+      return std::nullopt;
+    }
+    return v.constant;
+  }
+  return std::nullopt;
+}
+
+Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast::ArrayDim>* declarator_dims) {
+  if (!spec) return Type::error();
+  const DimensionRegistry& reg = result_.registry;
+  Type t;
+  auto space_arg = [&](const ast::Node* arg, SpaceSlot& slot) -> bool {
+    const auto* name = ast::dyn_cast<ast::DimName>(arg);
+    if (!name) {
+      report(Diagnostic::error(arg->range, "expected a space name").with_code("E-EXPECTED-SPACE"));
+      return false;
+    }
+    if (template_spaces_) {
+      for (std::size_t i = 0; i < template_spaces_->size(); ++i)
+        if ((*template_spaces_)[i] == name->name) {
+          slot = SpaceSlot::generic(static_cast<std::uint32_t>(i));
+          return true;
+        }
+    }
+    if (std::optional<SpaceId> s = reg.find_space(name->name)) {
+      slot = SpaceSlot::known(*s);
+      return true;
+    }
+    Diagnostic d = Diagnostic::error(arg->range, reg.find_dimension(name->name)
+                                                     ? "'" + name->name + "' is a dimension, not a space"
+                                                     : "unknown space '" + name->name + "'")
+                       .with_code("E-UNKNOWN-SPACE");
+    if (!reg.find_dimension(name->name)) d.with_hint("declare it with 'space " + name->name + ";'");
+    report(std::move(d));
+    return false;
+  };
+  auto dim_arg = [&](const ast::Node* arg) -> std::optional<DimSlot> {
+    if (const auto* e = ast::dyn_cast<ast::DimExpr>(arg)) return resolve_dimension(e);
+    report(Diagnostic::error(arg->range, "expected a dimension").with_code("E-EXPECTED-DIMENSION"));
+    return std::nullopt;
+  };
+  auto arity = [&](std::size_t lo, std::size_t hi, const char* what) -> bool {
+    const std::size_t n = spec->annotation->args.size();
+    if (n >= lo && n <= hi) return true;
+    report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' takes " + what).with_code("E-ANNOTATION-ARITY"));
+    return false;
+  };
+
+  switch (spec->form) {
+    case ast::TypeSpecifier::Form::Builtin: {
+      std::optional<Type> base = glsl_builtin_type(spec->name);
+      if (!base) {
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        return Type::error();
+      }
+      t = *base;
+      if (spec->annotation) {
+        if (!arity(1, 1, "one annotation")) return Type::error();
+        const ast::Node* arg = spec->annotation->args[0];
+        if (t.shape == Shape::opaque) {
+          const auto* texel = ast::dyn_cast<ast::TypeSpecifier>(arg);
+          if (!texel) {
+            report(Diagnostic::error(arg->range, "a sampler's annotation is its texel type, e.g. " + spec->name +
+                                                     "<float<length>>")
+                       .with_code("E-EXPECTED-TEXEL"));
+            return Type::error();
+          }
+          Type texel_type = resolve_type(texel);
+          if (texel_type.is_error()) return Type::error();
+          t.texel = std::make_shared<const Type>(texel_type);
+        } else if (t.is_numeric() && t.shape != Shape::void_) {
+          std::optional<DimSlot> d = dim_arg(arg);
+          if (!d) return Type::error();
+          t.dim = *d;
+        } else {
+          report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' cannot carry a dimension")
+                     .with_code("E-NOT-ANNOTATABLE"));
+          return Type::error();
+        }
+      }
+      break;
+    }
+    case ast::TypeSpecifier::Form::Annotated: {
+      static const struct {
+        const char* word;
+        Geometry geometry;
+      } kWords[] = {{"spectrum", Geometry::spectrum}, {"point", Geometry::point},       {"vector", Geometry::vector},
+                    {"direction", Geometry::direction}, {"normal", Geometry::normal}, {"hpoint", Geometry::hpoint},
+                    {"map", Geometry::map},           {"rigidmap", Geometry::rigidmap}, {"projmap", Geometry::projmap}};
+      Geometry g = Geometry::none;
+      for (const auto& w : kWords)
+        if (spec->name == w.word) g = w.geometry;
+      if (g == Geometry::none || !spec->annotation) {
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        return Type::error();
+      }
+      t = is_map(g) ? Type::matrix_of(Scalar::float_, 4, 4) : Type::vector_of(Scalar::float_, g == Geometry::hpoint ? 4 : 3);
+      t.geometry = g;
+      const auto& args = spec->annotation->args;
+      const std::optional<Dimension> length = reg.find_dimension("length");
+      switch (g) {
+        case Geometry::spectrum: {
+          if (!arity(1, 1, "one dimension")) return Type::error();
+          std::optional<DimSlot> d = dim_arg(args[0]);
+          if (!d) return Type::error();
+          t.dim = *d;
+          break;
+        }
+        case Geometry::vector:
+          if (!arity(1, 2, "a space and optionally a dimension")) return Type::error();
+          if (!space_arg(args[0], t.from)) return Type::error();
+          if (args.size() == 2) {
+            std::optional<DimSlot> d = dim_arg(args[1]);
+            if (!d) return Type::error();
+            t.dim = *d;
+          } else if (length) {
+            t.dim = DimSlot::known(*length);
+          }
+          break;
+        case Geometry::point:
+        case Geometry::direction:
+        case Geometry::normal:
+        case Geometry::hpoint:
+          if (!arity(1, 1, "one space")) return Type::error();
+          if (!space_arg(args[0], t.from)) return Type::error();
+          if (g == Geometry::point && length) t.dim = DimSlot::known(*length);
+          if (g == Geometry::direction || g == Geometry::normal) t.dim = DimSlot::known(Dimension{});
+          break;
+        default:  // maps
+          if (!arity(2, 2, "two spaces")) return Type::error();
+          if (!space_arg(args[0], t.from) || !space_arg(args[1], t.to)) return Type::error();
+          break;
+      }
+      break;
+    }
+    case ast::TypeSpecifier::Form::Named: {
+      auto it = structs_.find(spec->name);
+      if (it == structs_.end()) {
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        return Type::error();
+      }
+      t.shape = Shape::structure;
+      t.structure = it->second;
+      break;
+    }
+    case ast::TypeSpecifier::Form::Struct: {
+      auto info = std::make_unique<StructInfo>();
+      info->name = spec->struct_decl && !spec->struct_decl->name.empty() ? spec->struct_decl->name : "<anonymous struct>";
+      if (spec->struct_decl) {
+        for (const ast::VariableDecl* member : spec->struct_decl->members) {
+          for (const ast::Declarator& d : member->declarators) {
+            Type ft = resolve_type(member->type, &d.array_dims);
+            result_.declarators[&d] = ft;
+            info->fields.push_back({d.name, ft});
+          }
+        }
+      }
+      t.shape = Shape::structure;
+      t.structure = info.get();
+      if (spec->struct_decl && !spec->struct_decl->name.empty()) structs_[spec->struct_decl->name] = info.get();
+      result_.structs.push_back(std::move(info));
+      break;
+    }
+  }
+  for (const ast::ArrayDim& d : spec->array_dims) t.array.push_back(static_cast<int>(array_size(d).value_or(-1)));
+  return declarator_dims ? with_array_dims(std::move(t), *declarator_dims) : t;
+}
+
+Type Checker::with_array_dims(Type base, const std::vector<ast::ArrayDim>& outer) {
+  // The declarator's dimensions are outermost: `float[3] a[2]` is float[2][3].
+  std::vector<int> dims;
+  for (const ast::ArrayDim& d : outer) dims.push_back(static_cast<int>(array_size(d).value_or(-1)));
+  dims.insert(dims.end(), base.array.begin(), base.array.end());
+  base.array = std::move(dims);
+  return base;
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,386 @@
+#include "builtins.hpp"
+
+#include <cctype>
+#include <stdexcept>
+
+namespace safegi {
+namespace {
+
+struct Entry {
+  const char* name;
+  BuiltinRule rule;
+  const char* signature;
+};
+
+constexpr Entry kEntries[] = {
+#define BUILTIN(name, rule, signature) {#name, BuiltinRule::rule, signature},
+#include "builtins.def"
+#undef BUILTIN
+};
+
+// A tiny recursive-descent reader for the signature strings of builtins.def.
+// The table is ours, so a malformed entry is a programming error (logic_error),
+// caught by the unit tests that load the library.
+class SignatureReader {
+ public:
+  SignatureReader(std::string_view text, const DimensionRegistry& registry, Signature& out)
+      : text_(text), registry_(registry), sig_(out) {}
+
+  void read() {
+    skip();
+    if (!at("->")) {
+      sig_.params.push_back(type());
+      while (eat(",")) sig_.params.push_back(type());
+    }
+    expect("->");
+    sig_.result = type();
+    skip();
+    if (pos_ != text_.size()) fail("trailing text");
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::logic_error("builtins.def: " + sig_.name + " \"" + std::string(text_) + "\": " + what);
+  }
+  void skip() {
+    while (pos_ < text_.size() && text_[pos_] == ' ') ++pos_;
+  }
+  bool at(std::string_view s) {
+    skip();
+    return text_.substr(pos_, s.size()) == s;
+  }
+  bool eat(std::string_view s) {
+    if (!at(s)) return false;
+    pos_ += s.size();
+    return true;
+  }
+  void expect(std::string_view s) {
+    if (!eat(s)) fail("expected '" + std::string(s) + "'");
+  }
+  std::string word() {
+    skip();
+    std::size_t start = pos_;
+    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) ++pos_;
+    if (start == pos_) fail("expected a name");
+    return std::string(text_.substr(start, pos_ - start));
+  }
+  int integer() {
+    skip();
+    bool negative = eat("-");
+    std::size_t start = pos_;
+    while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    if (start == pos_) fail("expected an integer");
+    int v = std::stoi(std::string(text_.substr(start, pos_ - start)));
+    return negative ? -v : v;
+  }
+
+  std::uint32_t dim_var(const std::string& name) {
+    for (std::size_t i = 0; i < sig_.dim_params.size(); ++i)
+      if (sig_.dim_params[i] == name) return static_cast<std::uint32_t>(i);
+    sig_.dim_params.push_back(name);
+    return static_cast<std::uint32_t>(sig_.dim_params.size() - 1);
+  }
+  std::uint32_t space_var(const std::string& name) {
+    for (std::size_t i = 0; i < sig_.space_params.size(); ++i)
+      if (sig_.space_params[i] == name) return static_cast<std::uint32_t>(i);
+    sig_.space_params.push_back(name);
+    return static_cast<std::uint32_t>(sig_.space_params.size() - 1);
+  }
+
+  // dim := factor (("*" | "/") factor)* ; factor := (name | "1") ["^" int]
+  DimSlot dimension() {
+    DimTerm term;
+    bool unknown = false;
+    int sign = 1;
+    for (;;) {
+      std::string name;
+      if (eat("1")) name = "1";
+      else name = word();
+      int exponent = eat("^") ? integer() : 1;
+      exponent *= sign;
+      if (name == "D" || name == "E") {
+        term.variables.push_back({dim_var(name), exponent});
+      } else if (name != "1") {
+        std::optional<Dimension> d = registry_.find_dimension(name);
+        if (!d) {
+          unknown = true;
+        } else {
+          Checked<Dimension> p = power(*d, exponent);
+          Checked<Dimension> m = p ? multiply(term.constant, *p) : p;
+          if (!m) fail("dimension overflow");
+          term.constant = *m;
+        }
+      }
+      if (eat("*")) sign = 1;
+      else if (eat("/")) sign = -1;
+      else break;
+    }
+    if (unknown) return DimSlot::unknown();
+    if (term.variables.empty()) return DimSlot::known(term.constant);
+    return DimSlot::generic(term);
+  }
+
+  SigType type() {
+    SigType t;
+    if (eat("out ")) t.is_out = true;
+    else if (eat("inout ")) t.is_out = true;
+    const std::string w = word();
+    numeric_word(w, t);
+    if (eat("<")) {
+      if (t.type.geometry != Geometry::none || t.any_geometric) geometric_args(t);
+      else t.type.dim = dimension();
+      expect(">");
+    } else if (t.type.geometry != Geometry::none) {
+      fail("a geometric type needs its spaces");
+    }
+    return t;
+  }
+
+  void geometric_args(SigType& t) {
+    Geometry g = t.type.geometry;
+    if (g == Geometry::spectrum) {
+      t.type.dim = dimension();
+      return;
+    }
+    t.type.from = SpaceSlot::generic(space_var(word()));
+    if (is_map(g)) {
+      expect(",");
+      t.type.to = SpaceSlot::generic(space_var(word()));
+    } else if ((g == Geometry::vector || t.any_geometric) && eat(",")) {
+      t.type.dim = dimension();
+    }
+    if (g == Geometry::vector && t.type.dim.state == DimSlot::State::unknown) {
+      if (std::optional<Dimension> length = registry_.find_dimension("length")) t.type.dim = DimSlot::known(*length);
+    }
+    if (g == Geometry::point) {
+      if (std::optional<Dimension> length = registry_.find_dimension("length")) t.type.dim = DimSlot::known(*length);
+    }
+    if (g == Geometry::direction || g == Geometry::normal) t.type.dim = DimSlot::known(Dimension{});
+  }
+
+  void numeric_word(const std::string& w, SigType& t) {
+    static const struct {
+      const char* prefix;
+      Scalar scalar;
+    } kFamilies[] = {{"F", Scalar::float_}, {"D", Scalar::double_}, {"I", Scalar::int_}, {"U", Scalar::uint_}, {"B", Scalar::bool_}};
+    for (const auto& f : kFamilies) {
+      if (w == std::string("gen") + f.prefix) {
+        t.size = SizeClass::gen;
+        t.type = Type::scalar_of(f.scalar);
+        return;
+      }
+      if (w == std::string("vec") + f.prefix) {
+        t.size = SizeClass::vec;
+        t.type = Type::vector_of(f.scalar, 2);
+        return;
+      }
+    }
+    if (w == "matF") return set(t, SizeClass::mat, Type::matrix_of(Scalar::float_, 2, 2));
+    if (w == "matFT") return set(t, SizeClass::mat_transposed, Type::matrix_of(Scalar::float_, 2, 2));
+    if (w == "matFsq") return set(t, SizeClass::mat_square, Type::matrix_of(Scalar::float_, 2, 2));
+    if (w == "colF") return set(t, SizeClass::column, Type::vector_of(Scalar::float_, 2));
+    if (w == "rowF") return set(t, SizeClass::row, Type::vector_of(Scalar::float_, 2));
+    if (w == "void") return set(t, SizeClass::fixed, Type::void_type());
+    if (w == "geo") {
+      t.any_geometric = true;
+      t.type = Type::vector_of(Scalar::float_, 3);
+      return;
+    }
+    static const struct {
+      const char* word;
+      Geometry geometry;
+      int size;  // vec3 or vec4 or mat4 (16)
+    } kGeometric[] = {{"spectrum", Geometry::spectrum, 3}, {"point", Geometry::point, 3},   {"vector", Geometry::vector, 3},
+                      {"direction", Geometry::direction, 3}, {"normal", Geometry::normal, 3}, {"hpoint", Geometry::hpoint, 4},
+                      {"map", Geometry::map, 16},          {"rigidmap", Geometry::rigidmap, 16}, {"projmap", Geometry::projmap, 16}};
+    for (const auto& g : kGeometric) {
+      if (w == g.word) {
+        t.type = g.size == 16 ? Type::matrix_of(Scalar::float_, 4, 4) : Type::vector_of(Scalar::float_, g.size);
+        t.type.geometry = g.geometry;
+        return;
+      }
+    }
+    // Fixed GLSL types: float vec3 ivec2 mat4 mat3x2 ...
+    static const struct {
+      const char* prefix;
+      Scalar scalar;
+    } kVectors[] = {{"vec", Scalar::float_}, {"dvec", Scalar::double_}, {"ivec", Scalar::int_}, {"uvec", Scalar::uint_}, {"bvec", Scalar::bool_}};
+    if (w == "float") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::float_));
+    if (w == "double") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::double_));
+    if (w == "int") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::int_));
+    if (w == "uint") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::uint_));
+    if (w == "bool") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::bool_));
+    for (const auto& v : kVectors) {
+      const std::string p = v.prefix;
+      if (w.size() == p.size() + 1 && w.compare(0, p.size(), p) == 0 && w.back() >= '2' && w.back() <= '4')
+        return set(t, SizeClass::fixed, Type::vector_of(v.scalar, w.back() - '0'));
+    }
+    if (w.size() == 4 && w.compare(0, 3, "mat") == 0) return set(t, SizeClass::fixed, Type::matrix_of(Scalar::float_, w[3] - '0', w[3] - '0'));
+    fail("unknown type word '" + w + "'");
+  }
+  static void set(SigType& t, SizeClass size, Type type) {
+    t.size = size;
+    t.type = std::move(type);
+  }
+
+  std::string_view text_;
+  const DimensionRegistry& registry_;
+  Signature& sig_;
+  std::size_t pos_ = 0;
+};
+
+bool vec3_like(const Type& t) { return t.shape == Shape::vector && t.rows == 3 && t.scalar == Scalar::float_ && !t.is_array(); }
+
+}  // namespace
+
+BuiltinLibrary::BuiltinLibrary(const DimensionRegistry& registry) {
+  for (const Entry& e : kEntries) {
+    Signature sig;
+    sig.name = e.name;
+    sig.rule = e.rule;
+    sig.text = e.signature;
+    if (!sig.text.empty()) SignatureReader(sig.text, registry, sig).read();
+    by_name_[sig.name].push_back(std::move(sig));
+  }
+}
+
+const std::vector<Signature>* BuiltinLibrary::find(std::string_view name) const {
+  auto it = by_name_.find(std::string(name));
+  return it == by_name_.end() ? nullptr : &it->second;
+}
+
+DimSlot value_dimension(const Type& t, const DimensionRegistry& registry) {
+  switch (t.geometry) {
+    case Geometry::point:
+      if (t.dim.state != DimSlot::State::unknown) return t.dim;
+      if (std::optional<Dimension> length = registry.find_dimension("length")) return DimSlot::known(*length);
+      return DimSlot::unknown();
+    case Geometry::direction:
+    case Geometry::normal: return DimSlot::known(Dimension{});
+    case Geometry::hpoint:
+    case Geometry::map:
+    case Geometry::rigidmap:
+    case Geometry::projmap: return DimSlot::unknown();
+    default: return t.dim;
+  }
+}
+
+namespace {
+
+// Binds or checks a size variable; false when the argument's size disagrees.
+bool bind(int& slot, int value) {
+  if (slot == 0) slot = value;
+  return slot == value;
+}
+
+// The cost of passing `arg` for `param`, or nothing when it does not fit.
+std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMatch& m, int& n, int& c, int& r) {
+  const Type& a = arg.type;
+  const Type& p = param.type;
+  if (a.is_error()) return 0;  // an erroneous argument fits anything: no cascade
+  if (a.is_array()) return std::nullopt;
+  int cost = 0;
+  if (param.any_geometric || p.geometry != Geometry::none) {
+    if (!vec3_like(a) && !(p.geometry == Geometry::hpoint && a.shape == Shape::vector && a.rows == 4) &&
+        !(is_map(p.geometry) && a.shape == Shape::matrix && a.rows == 4 && a.columns == 4))
+      return std::nullopt;
+    if (param.any_geometric) {
+      if (a.geometry != Geometry::vector && a.geometry != Geometry::direction && a.geometry != Geometry::normal)
+        return std::nullopt;
+    } else if (a.geometry != p.geometry) {
+      // Plain vec3/mat4 is consistent with any geometric kind (gradual typing), at a cost.
+      if (a.geometry != Geometry::none || a.dim.is_known()) return std::nullopt;
+      cost += 2;
+    }
+    return cost;
+  }
+  if (a.geometry != Geometry::none && a.geometry != Geometry::spectrum) cost += 4;  // geometry dropped
+  if (a.shape == Shape::opaque || a.shape == Shape::structure || a.shape == Shape::void_) return std::nullopt;
+  const Scalar want = p.scalar;
+  if (param.is_out) {
+    if (a.scalar != want) return std::nullopt;
+  } else if (a.scalar != want) {
+    if (!implicitly_converts(a.scalar, want)) return std::nullopt;
+    cost += 1;
+  }
+  switch (param.size) {
+    case SizeClass::fixed:
+      if (a.shape != p.shape || a.rows != p.rows || a.columns != p.columns) return std::nullopt;
+      break;
+    case SizeClass::gen:
+      if (a.shape != Shape::scalar && a.shape != Shape::vector) return std::nullopt;
+      if (!bind(n, a.rows)) return std::nullopt;
+      break;
+    case SizeClass::vec:
+      if (a.shape != Shape::vector || !bind(n, a.rows)) return std::nullopt;
+      break;
+    case SizeClass::mat:
+      if (a.shape != Shape::matrix || !bind(c, a.columns) || !bind(r, a.rows)) return std::nullopt;
+      break;
+    case SizeClass::mat_transposed:
+      if (a.shape != Shape::matrix || !bind(c, a.rows) || !bind(r, a.columns)) return std::nullopt;
+      break;
+    case SizeClass::mat_square:
+      if (a.shape != Shape::matrix || a.rows != a.columns || !bind(c, a.columns) || !bind(r, a.rows)) return std::nullopt;
+      break;
+    case SizeClass::column:
+      if (a.shape != Shape::vector || !bind(r, a.rows)) return std::nullopt;
+      break;
+    case SizeClass::row:
+      if (a.shape != Shape::vector || !bind(c, a.rows)) return std::nullopt;
+      break;
+  }
+  (void)m;
+  return cost;
+}
+
+}  // namespace
+
+std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates, const std::vector<ArgInfo>& args) {
+  std::optional<ShapeMatch> best;
+  for (const Signature& sig : candidates) {
+    if (sig.rule != BuiltinRule::plain && sig.rule != BuiltinRule::pow && sig.rule != BuiltinRule::normal_transform) continue;
+    if (sig.params.size() != args.size()) continue;
+    ShapeMatch m;
+    m.signature = &sig;
+    int n = 0, c = 0, r = 0;
+    bool ok = true;
+    for (std::size_t i = 0; i < args.size() && ok; ++i) {
+      std::optional<int> cost = param_cost(sig.params[i], args[i], m, n, c, r);
+      if (!cost) ok = false;
+      else m.cost += *cost;
+    }
+    if (!ok) continue;
+    m.n = n == 0 ? 1 : n;
+    m.columns = c == 0 ? 2 : c;
+    m.rows = r == 0 ? 2 : r;
+    if (!best || m.cost < best->cost) best = m;
+  }
+  return best;
+}
+
+Type instantiate_shape(const SigType& t, const ShapeMatch& m) {
+  Type out = t.type;
+  switch (t.size) {
+    case SizeClass::fixed: break;
+    case SizeClass::gen:
+      out.shape = m.n == 1 ? Shape::scalar : Shape::vector;
+      out.rows = static_cast<std::uint8_t>(m.n);
+      break;
+    case SizeClass::vec: out.rows = static_cast<std::uint8_t>(m.n); break;
+    case SizeClass::mat:
+    case SizeClass::mat_square:
+      out.columns = static_cast<std::uint8_t>(m.columns);
+      out.rows = static_cast<std::uint8_t>(m.rows);
+      break;
+    case SizeClass::mat_transposed:
+      out.columns = static_cast<std::uint8_t>(m.rows);
+      out.rows = static_cast<std::uint8_t>(m.columns);
+      break;
+    case SizeClass::column: out.rows = static_cast<std::uint8_t>(m.rows); break;
+    case SizeClass::row: out.rows = static_cast<std::uint8_t>(m.columns); break;
+  }
+  return out;
+}
+
+}  // namespace safegi

@@ -1,0 +1,86 @@
+#pragma once
+// The built-in function library (builtins.def) parsed into signatures over the
+// checker's types, and matching of a call's argument types against them.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "safegi/typechecker/type.hpp"
+
+namespace safegi {
+
+// How a built-in is typed: by its signature, or by a rule for families whose
+// result depends on an opaque argument.
+enum class BuiltinRule : std::uint8_t {
+  plain,             // the signature says everything
+  pow,               // genF<1> ^ genF<1>, or float<D> ^ integer constant n -> float<D^n>
+  normal_transform,  // a normal through a non-rigid map: the elider uses the inverse transpose
+  texture,           // texture*(sampler<T>, ...) -> the sampler's texel, as gvec4 (or float for shadow)
+  texture_size,      // textureSize / imageSize -> int or ivecN by the sampler's dimensionality
+  texture_query,     // textureQueryLod -> vec2; textureQueryLevels, textureSamples -> int
+  image,             // imageLoad -> gvec4, imageStore -> void, imageAtomic* -> int/uint
+  atomic_counter,    // atomicCounter*(atomic_uint) -> uint
+};
+
+// How a signature's parameter or result sizes itself.
+enum class SizeClass : std::uint8_t { fixed, gen, vec, mat, mat_transposed, mat_square, column, row };
+
+struct SigType {
+  SizeClass size = SizeClass::fixed;
+  Type type;              // shape/scalar/sizes for fixed; scalar for the others; annotation slots (generic)
+  bool any_geometric = false;  // geo<S, D>: vector, direction or normal
+  bool is_out = false;    // out / inout: the argument must be an l-value of exactly this type
+};
+
+struct Signature {
+  std::string name;
+  BuiltinRule rule = BuiltinRule::plain;
+  std::vector<SigType> params;
+  SigType result;
+  std::vector<std::string> dim_params;    // D, E
+  std::vector<std::string> space_params;  // S, T, U
+  std::string text;                       // the signature as written in builtins.def
+};
+
+class BuiltinLibrary {
+ public:
+  // Resolves the dimension names the signatures use in `registry`; names the
+  // program does not declare make that slot unknown.
+  explicit BuiltinLibrary(const DimensionRegistry& registry);
+
+  const std::vector<Signature>* find(std::string_view name) const;
+  bool is_builtin(std::string_view name) const { return find(name) != nullptr; }
+
+ private:
+  std::unordered_map<std::string, std::vector<Signature>> by_name_;
+};
+
+// One call argument as matching sees it.
+struct ArgInfo {
+  Type type;
+  bool lvalue = false;
+};
+
+struct ShapeMatch {
+  const Signature* signature = nullptr;
+  int n = 1, columns = 1, rows = 1;  // bound sizes
+  int cost = 0;                      // implicit conversions + geometry dropped
+};
+
+// The best signature whose GLSL shapes (and geometric kinds) accept the
+// arguments, or nothing. Annotations (dimensions, spaces) are not looked at.
+std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates, const std::vector<ArgInfo>& args);
+
+// The concrete type a signature type stands for under the bound sizes, with
+// its annotation slots left as written (generic).
+Type instantiate_shape(const SigType& t, const ShapeMatch& m);
+
+// The dimension and kind a value brings to a numeric parameter: directions and
+// normals are dimensionless, points are lengths.
+DimSlot value_dimension(const Type& t, const DimensionRegistry& registry);
+
+}  // namespace safegi

@@ -1,0 +1,442 @@
+// Calls: built-in functions (by the signature table), user functions and
+// generic functions (unification over dimensions and spaces), constructors
+// and casts, and the map operators routed through the table.
+
+#include <cmath>
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+namespace {
+
+// A caller's own generic variables are rigid during a call: they are
+// represented as fresh base dimensions / spaces beyond the registry's.
+constexpr BaseId kRigidBase = 1u << 24;
+constexpr std::uint32_t kRigidSpace = 1u << 24;
+
+std::optional<Dimension> rigid(const DimSlot& s) {
+  if (s.state == DimSlot::State::known) return s.value;
+  if (s.state != DimSlot::State::generic) return std::nullopt;
+  Dimension d = s.term.constant;
+  for (const auto& [v, k] : s.term.variables) {
+    Checked<Dimension> m = multiply(d, Dimension::base(kRigidBase + v, k));
+    if (!m) return std::nullopt;
+    d = *m;
+  }
+  return d;
+}
+
+DimSlot unrigid(const Dimension& d) {
+  DimTerm t;
+  std::vector<Factor> plain;
+  for (const Factor& f : d.factors()) {
+    if (f.base >= kRigidBase) t.variables.push_back({f.base - kRigidBase, f.exponent});
+    else plain.push_back(f);
+  }
+  t.constant = *Dimension::from_factors(plain);
+  if (t.variables.empty()) return DimSlot::known(t.constant);
+  return DimSlot::generic(t);
+}
+
+std::optional<SpaceTerm> rigid(const SpaceSlot& s) {
+  if (s.state == SpaceSlot::State::known) return SpaceTerm::space(s.id);
+  if (s.state == SpaceSlot::State::generic) return SpaceTerm::space(kRigidSpace + s.id);
+  return std::nullopt;
+}
+
+SpaceSlot unrigid(SpaceId s) { return s >= kRigidSpace ? SpaceSlot::generic(s - kRigidSpace) : SpaceSlot::known(s); }
+
+std::string arguments_text(const std::vector<Value>& args, const Checker& c) {
+  std::string out;
+  for (const Value& a : args) out += (out.empty() ? "" : ", ") + c.name_of(a.type);
+  return out;
+}
+
+}  // namespace
+
+Value Checker::call(const ast::CallExpr& e) {
+  if (e.constructor_type) return constructor(e);
+  std::vector<Value> args;
+  bool bad = false;
+  for (const ast::Expr* a : e.args) {
+    args.push_back(expr(a));
+    bad = bad || args.back().type.is_error();
+  }
+  if (auto it = functions_.find(e.callee); it != functions_.end()) {
+    if (bad) return error_value(e.range);
+    return user_call(e, it->second, args);
+  }
+  if (const std::vector<Signature>* sigs = builtins_->find(e.callee)) {
+    if (bad) return error_value(e.range);
+    return builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
+  }
+  if (auto s = structs_.find(e.callee); s != structs_.end()) {
+    // A struct constructor the parser could not tell from a call.
+    Value out;
+    out.range = e.range;
+    out.type.shape = Shape::structure;
+    out.type.structure = s->second;
+    return out;
+  }
+  std::string message = "use of undeclared function '" + e.callee + "'";
+  if (lookup(e.callee)) message = "called object '" + e.callee + "' is not a function";
+  if (e.callee.rfind("gl", 0) == 0 || bad) return error_value(e.range);  // unmodelled extension built-ins
+  report(Diagnostic::error(e.callee_range, message).with_code("E-UNDECLARED-FUNCTION"));
+  return error_value(e.range);
+}
+
+Value Checker::method_call(const ast::MethodCallExpr& e) {
+  Value base = expr(e.base);
+  if (base.type.is_error()) return error_value(e.range);
+  if (e.method != "length" || !e.args.empty()) {
+    report(Diagnostic::error(e.method_range, "unknown method '" + e.method + "'; GLSL has only .length()").with_code("E-METHOD"));
+    return error_value(e.range);
+  }
+  const Type& t = base.type;
+  Value out;
+  out.range = e.range;
+  out.type = Type::scalar_of(Scalar::int_);
+  if (t.is_array()) {
+    if (t.array[0] > 0) out.constant = t.array[0];
+  } else if (t.shape == Shape::vector) {
+    out.constant = t.rows;
+  } else if (t.shape == Shape::matrix) {
+    out.constant = t.columns;
+  } else {
+    report(Diagnostic::error(e.method_range, ".length() needs an array, vector or matrix, not " + name_of(t)).with_code("E-METHOD"));
+    return error_value(e.range);
+  }
+  return out;
+}
+
+Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
+                            std::vector<Value>& args, SourceRange callee_range, SourceRange call_range) {
+  if (sigs.front().rule != BuiltinRule::plain && sigs.front().rule != BuiltinRule::pow &&
+      sigs.front().rule != BuiltinRule::normal_transform)
+    return rule_call(node, sigs.front(), args, call_range);
+  std::vector<ArgInfo> infos;
+  for (const Value& a : args) infos.push_back({a.type, a.lvalue});
+  std::optional<ShapeMatch> match = match_shapes(sigs, infos);
+  if (!match) {
+    Diagnostic d = Diagnostic::error(callee_range, "no matching overload for call to '" + name + "(" + arguments_text(args, *this) + ")'")
+                       .with_code("E-NO-OVERLOAD");
+    for (const Value& a : args) d.with_highlight(a.range);
+    std::string candidates;
+    int shown = 0;
+    for (const Signature& s : sigs) {
+      if (shown++ == 4) {
+        candidates += ", …";
+        break;
+      }
+      candidates += (candidates.empty() ? "" : ", ") + name + "(" + s.text.substr(0, s.text.find(" ->")) + ")";
+    }
+    d.with_hint("candidates: " + candidates);
+    report(std::move(d));
+    return error_value(call_range);
+  }
+  const Signature& sig = *match->signature;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (sig.params[i].is_out && (!args[i].lvalue || args[i].read_only)) {
+      report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + name +
+                                                  "' is an out parameter and needs a writable variable")
+                 .with_code("E-NOT-ASSIGNABLE"));
+      return error_value(call_range);
+    }
+  }
+  CallShape shape;
+  for (const SigType& p : sig.params) shape.params.push_back(instantiate_shape(p, *match));
+  shape.result = instantiate_shape(sig.result, *match);
+  shape.dim_params = &sig.dim_params;
+  shape.space_params = &sig.space_params;
+
+  if (sig.rule == BuiltinRule::pow && args.size() == 2) {
+    // float<D> ^ n with n an integer constant: the result is D^n.
+    const DimSlot base = value_dimension(args[0].type, result_.registry);
+    const bool dimensioned = base.state == DimSlot::State::generic ||
+                             (base.state == DimSlot::State::known && !base.value.is_dimensionless());
+    if (dimensioned) {
+      const std::optional<double> n = args[1].number;
+      if (!n || std::floor(*n) != *n || std::fabs(*n) > 1e6) {
+        Diagnostic d = Diagnostic::error(args[1].range, "pow of " + name_of(args[0].type) +
+                                                            " needs a constant integer exponent (or a dimensionless base)")
+                           .with_code("E-POW-EXPONENT")
+                           .with_highlight(args[0].range);
+        report(std::move(d));
+        return error_value(call_range);
+      }
+      std::optional<DimSlot> d = raise(base, static_cast<long long>(*n));
+      if (!d) {
+        report(Diagnostic::error(call_range, "dimension exponent overflows in pow").with_code("E-DIMENSION-OVERFLOW"));
+        return error_value(call_range);
+      }
+      Value out;
+      out.range = call_range;
+      out.type = shape.result;
+      out.type.dim = *d;
+      out.type.geometry = args[0].type.geometry == Geometry::spectrum ? Geometry::spectrum : Geometry::none;
+      return out;
+    }
+  }
+
+  std::optional<Type> result = unify_call(name, shape, args, call_range);
+  if (!result) return error_value(call_range);
+  // A spectrum through a component-wise built-in (min, max, mix, clamp, abs, …) stays a spectrum.
+  if (result->geometry == Geometry::none && sig.result.size == SizeClass::gen && result->rows == 3) {
+    bool all_spectra = false, other = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      if (sig.params[i].size != SizeClass::gen || args[i].type.shape != Shape::vector) continue;
+      if (args[i].type.geometry == Geometry::spectrum) all_spectra = true;
+      else if (args[i].type.geometry != Geometry::none) other = true;
+    }
+    if (all_spectra && !other) result->geometry = Geometry::spectrum;
+  }
+  if (node) {
+    CallInfo info;
+    info.builtin = name;
+    info.signature = sig.text;
+    const Geometry first = sig.params.empty() ? Geometry::none : sig.params[0].type.geometry;
+    const Geometry second = sig.params.size() > 1 ? sig.params[1].type.geometry : Geometry::none;
+    if (name == "transform" || name == "transform_normal") {
+      if (first == Geometry::projmap) info.op = GeometricOp::project;
+      else if (second == Geometry::point) info.op = GeometricOp::transform_point;
+      else if (sig.rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;
+      else info.op = GeometricOp::transform_vector;
+    } else if (name == "project") {
+      info.op = GeometricOp::project;
+    } else if (name == "homogenize") {
+      info.op = GeometricOp::homogenize;
+    } else if (name == "compose") {
+      info.op = GeometricOp::compose;
+    } else if (name == "inverse" && is_map(first)) {
+      info.op = GeometricOp::inverse;
+    }
+    result_.calls[node] = info;
+  }
+  Value out;
+  out.range = call_range;
+  out.type = *result;
+  return out;
+}
+
+std::optional<Value> Checker::geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
+                                                 const Value& rhs, SourceRange range) {
+  std::vector<Value> args{lhs, rhs};
+  const std::vector<Signature>* sigs = builtins_->find(builtin);
+  std::vector<ArgInfo> infos{{lhs.type, false}, {rhs.type, false}};
+  if (!sigs || !match_shapes(*sigs, infos)) {
+    operand_mismatch("invalid operands to binary expression (" + name_of(lhs.type) + " and " + name_of(rhs.type) + ")", lhs, rhs,
+                     range, is_map(lhs.type.geometry) ? "a map applies to a point, vector, direction or normal of its source space" : "",
+                     "E-INVALID-OPERANDS");
+    return std::nullopt;
+  }
+  Value v = builtin_call(static_cast<const ast::CallExpr*>(nullptr), builtin, *sigs, args, range, range);
+  if (v.type.is_error()) return std::nullopt;
+  if (node) {
+    // Recorded against the operator node so the elider can rewrite `m * x`.
+    std::optional<ShapeMatch> m = match_shapes(*sigs, infos);
+    CallInfo info;
+    info.builtin = builtin;
+    info.signature = m->signature->text;
+    const Geometry g = m->signature->params[1].type.geometry;
+    if (builtin == "compose") info.op = GeometricOp::compose;
+    else if (m->signature->params[0].type.geometry == Geometry::projmap) info.op = GeometricOp::project;
+    else if (g == Geometry::point) info.op = GeometricOp::transform_point;
+    else if (m->signature->rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;
+    else info.op = GeometricOp::transform_vector;
+    result_.calls[node] = info;
+  }
+  return v;
+}
+
+std::optional<Type> Checker::unify_call(const std::string& callee, const CallShape& shape, const std::vector<Value>& args,
+                                        SourceRange call_range) {
+  const DimensionRegistry& reg = result_.registry;
+  const std::size_t dim_count = shape.dim_params ? shape.dim_params->size() : 0;
+  const std::size_t space_count = shape.space_params ? shape.space_params->size() : 0;
+  DimensionUnifier dims;
+  for (std::size_t i = 0; i < dim_count; ++i) dims.add_variable((*shape.dim_params)[i]);
+  SpaceUnifier spaces;
+  for (std::size_t i = 0; i < space_count; ++i) spaces.add_variable((*shape.space_params)[i]);
+  std::vector<std::size_t> equation_arg;
+  const std::string fn = "'" + callee + "'";
+
+  auto arg_error = [&](std::size_t i, const std::string& message, const std::string& hint, const char* code) {
+    Diagnostic d = Diagnostic::error(args[i].range, message).with_code(code);
+    add_origin_note(d, args[i]);
+    if (!hint.empty()) d.with_hint(hint);
+    report(std::move(d));
+  };
+
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Type& p = shape.params[i];
+    const Value& a = args[i];
+    // Spaces.
+    const SpaceSlot* pslots[] = {&p.from, &p.to};
+    const SpaceSlot* aslots[] = {&a.type.from, &a.type.to};
+    for (int k = 0; k < 2; ++k) {
+      const SpaceSlot& ps = *pslots[k];
+      std::optional<SpaceTerm> at = rigid(*aslots[k]);
+      if (ps.state == SpaceSlot::State::unknown || !at) continue;
+      const SpaceTerm pt = ps.state == SpaceSlot::State::generic ? SpaceTerm::variable(ps.id) : *rigid(ps);
+      if (!spaces.unify(pt, *at)) {
+        // The space the earlier arguments fixed, for the message and the hint.
+        std::optional<SpaceId> want = spaces.resolve(pt);
+        const SpaceSlot expected = want ? unrigid(*want) : SpaceSlot::unknown();
+        const std::string space_word = expected.state == SpaceSlot::State::known ? reg.space_name(expected.id) : "another space";
+        arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " +
+                         (ps.state == SpaceSlot::State::generic ? "the other arguments are in " + space_word
+                                                                : fn + " expects " + name_of(p, shape)),
+                  space_hint(expected, *aslots[k]), "E-SPACE-MISMATCH");
+        return std::nullopt;
+      }
+    }
+    // Dimensions.
+    if (a.zero) continue;
+    const DimSlot ad = value_dimension(a.type, reg);
+    std::optional<Dimension> ar = rigid(ad);
+    if (!ar) continue;
+    if (p.dim.state == DimSlot::State::known) {
+      if (!(p.dim.value == *ar)) {
+        arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " + fn +
+                         " expects " + name_of(p, shape),
+                  physics_hint(p.dim, ad), "E-DIMENSION-MISMATCH");
+        return std::nullopt;
+      }
+    } else if (p.dim.state == DimSlot::State::generic) {
+      dims.add_equation(p.dim.term, DimTerm::of(*ar));
+      equation_arg.push_back(i);
+    }
+  }
+
+  UnifyResult solved = dims.solve();
+  if (solved.status == UnifyStatus::no_solution) {
+    const std::size_t i = equation_arg[solved.conflicting_equation];
+    // What the earlier arguments made this parameter.
+    DimensionUnifier prefix;
+    for (std::size_t v = 0; v < dim_count; ++v) prefix.add_variable((*shape.dim_params)[v]);
+    for (std::size_t k = 0; k < solved.conflicting_equation; ++k) {
+      const std::size_t j = equation_arg[k];
+      prefix.add_equation(shape.params[j].dim.term, DimTerm::of(*rigid(value_dimension(args[j].type, reg))));
+    }
+    UnifyResult before = prefix.solve();
+    std::optional<DimSlot> expected;
+    const DimTerm& term = shape.params[i].dim.term;
+    bool all = true;
+    Dimension value = term.constant;
+    for (const auto& [v, k] : term.variables) {
+      if (before.variables.size() <= v || before.variables[v].state != VariableSolution::State::determined) {
+        all = false;
+        break;
+      }
+      Checked<Dimension> p = power(before.variables[v].value, k);
+      Checked<Dimension> m = p ? multiply(value, *p) : p;
+      if (!m) {
+        all = false;
+        break;
+      }
+      value = *m;
+    }
+    if (all) expected = unrigid(value);
+    const DimSlot found = value_dimension(args[i].type, reg);
+    std::string message = "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(args[i].type);
+    if (expected) {
+      Type want = shape.params[i];
+      want.dim = *expected;
+      message += ", but the other arguments make it " + name_of(want);
+    } else {
+      message += ", which conflicts with the other arguments";
+    }
+    arg_error(i, message, expected ? physics_hint(*expected, found) : "", "E-DIMENSION-MISMATCH");
+    return std::nullopt;
+  }
+  if (solved.status == UnifyStatus::non_integer || solved.status == UnifyStatus::overflow) {
+    std::string args_text = arguments_text(args, *this);
+    Diagnostic d = Diagnostic::error(call_range, "cannot call " + fn + " with (" + args_text + "): " + dims.explain(solved, reg))
+                       .with_code(solved.status == UnifyStatus::overflow ? "E-DIMENSION-OVERFLOW" : "E-DIMENSION-ROOT");
+    for (const Value& a : args) d.with_highlight(a.range);
+    report(std::move(d));
+    return std::nullopt;
+  }
+
+  // Substitute the solution into the result; anything not determined is `?`.
+  Type result = shape.result;
+  if (result.dim.state == DimSlot::State::generic) {
+    bool all = true;
+    Dimension value = result.dim.term.constant;
+    for (const auto& [v, k] : result.dim.term.variables) {
+      if (solved.variables[v].state != VariableSolution::State::determined) {
+        all = false;
+        break;
+      }
+      Checked<Dimension> p = power(solved.variables[v].value, k);
+      Checked<Dimension> m = p ? multiply(value, *p) : p;
+      if (!m) {
+        all = false;
+        break;
+      }
+      value = *m;
+    }
+    result.dim = all ? unrigid(value) : DimSlot::unknown();
+  }
+  for (SpaceSlot* s : {&result.from, &result.to}) {
+    if (s->state != SpaceSlot::State::generic) continue;
+    std::optional<SpaceId> bound = spaces.resolve(SpaceTerm::variable(s->id));
+    *s = bound ? unrigid(*bound) : SpaceSlot::unknown();
+  }
+  return result;
+}
+
+Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& overloads, std::vector<Value>& args) {
+  const Function* best = nullptr;
+  int best_cost = 1 << 30;
+  for (const Function& f : overloads) {
+    if (f.params.size() != args.size()) continue;
+    int cost = 0;
+    bool ok = true;
+    for (std::size_t i = 0; i < args.size() && ok; ++i) {
+      Type p = f.params[i], a = args[i].type;
+      if (a.scalar != p.scalar) {
+        if (f.out_params[i] || !implicitly_converts(a.scalar, p.scalar)) ok = false;
+        ++cost;
+        a.scalar = p.scalar;
+      }
+      if (!same_glsl_type(a, p) && !(p.is_array() && !a.array.empty() && p.array[0] < 0)) ok = false;
+      if (p.geometry != Geometry::none && a.geometry != Geometry::none && p.geometry != a.geometry) ok = false;
+    }
+    if (ok && cost < best_cost) {
+      best = &f;
+      best_cost = cost;
+    }
+  }
+  if (!best) {
+    Diagnostic d = Diagnostic::error(e.callee_range, "no matching function for call to '" + e.callee + "(" +
+                                                         arguments_text(args, *this) + ")'")
+                       .with_code("E-NO-OVERLOAD");
+    for (const Function& f : overloads) {
+      std::string sig;
+      for (const Type& p : f.params) sig += (sig.empty() ? "" : ", ") + type_name(p, result_.registry, &f.dim_params, &f.space_params);
+      d.with_note(Diagnostic::note(f.decl->name_range, "candidate: " + f.name + "(" + sig + ")"));
+    }
+    report(std::move(d));
+    return error_value(e.range);
+  }
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (best->out_params[i] && (!args[i].lvalue || args[i].read_only)) {
+      report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + e.callee +
+                                                  "' is an out parameter and needs a writable variable")
+                 .with_code("E-NOT-ASSIGNABLE"));
+      return error_value(e.range);
+    }
+    // Kinds: a geometric parameter takes the same kind (or an unannotated value).
+  }
+  CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};
+  std::optional<Type> result = unify_call(e.callee, shape, args, e.range);
+  if (!result) return error_value(e.range);
+  Value out;
+  out.range = e.range;
+  out.type = *result;
+  return out;
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,167 @@
+#pragma once
+// The checker's internal state, shared by the files that implement it:
+// annotations.cpp (annotation declarations and annotated types),
+// declarations.cpp (scopes, declarations, statements), expressions.cpp,
+// calls.cpp (built-in, user and generic calls, constructors), mismatch.cpp
+// (type mismatch diagnostics and physics hints).
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "builtins.hpp"
+#include "safegi/typechecker/checker.hpp"
+
+namespace safegi::detail {
+
+// Where an operand's annotation came from, for the notes of a mismatch.
+struct Origin {
+  SourceRange range;
+  std::string text;  // "'L' declared here", "type of 'c' inferred from this initializer"
+};
+
+// The result of checking an expression.
+struct Value {
+  Type type;
+  SourceRange range;
+  bool lvalue = false;
+  bool read_only = false;        // const, uniform, in, read-only built-in
+  bool zero = false;             // a zero literal (or a constructor of zeros): fits any dimension
+  bool literal = false;          // a numeric literal (possibly negated or parenthesised)
+  std::optional<double> number;  // its value, for pow's exponent
+  std::optional<long long> constant;  // integer constant value, when known
+  std::optional<Origin> origin;
+  std::string name;              // the variable named, for messages
+};
+
+struct Variable {
+  std::string name;
+  Type type;
+  SourceRange range;
+  bool read_only = false;
+  bool builtin = false;
+  std::optional<long long> constant;
+  Origin origin;
+};
+
+struct Function {
+  std::string name;
+  std::vector<Type> params;
+  std::vector<bool> out_params;
+  Type result;
+  std::vector<std::string> dim_params;
+  std::vector<std::string> space_params;
+  const ast::FunctionDecl* decl = nullptr;
+  bool defined = false;
+};
+
+// A call's parameters after overload resolution, ready for annotation unification.
+struct CallShape {
+  std::vector<Type> params;
+  Type result;
+  const std::vector<std::string>* dim_params = nullptr;
+  const std::vector<std::string>* space_params = nullptr;
+};
+
+class Checker {
+ public:
+  Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result);
+  void run(const ast::TranslationUnit& unit);
+
+  // annotations.cpp
+  void declare_dimension(const ast::DimensionDecl& d);
+  void declare_unit(const ast::UnitDecl& d);
+  void declare_space(const ast::SpaceDecl& d);
+  std::optional<DimSlot> resolve_dimension(const ast::DimExpr* e);
+  Type resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast::ArrayDim>* declarator_dims = nullptr);
+  Type with_array_dims(Type base, const std::vector<ast::ArrayDim>& outer);
+  std::optional<long long> array_size(const ast::ArrayDim& dim);
+
+  // declarations.cpp
+  void global_decl(const ast::Decl* d);
+  void variable_decl(const ast::VariableDecl& d, bool global);
+  void block_decl(const ast::InterfaceBlockDecl& d);
+  void function_decl(const ast::FunctionDecl& d);
+  void statement(const ast::Stmt* s);
+  void declare_variable(Variable v);
+  const Variable* lookup(const std::string& name) const;
+  void push_scope() { scopes_.emplace_back(); }
+  void pop_scope() { scopes_.pop_back(); }
+  void declare_builtin_variables();
+  void record_interface(const ast::TypeQualifiers& q, const std::string& name, const std::string& block, const Type& t,
+                        SourceRange range, const ast::Node* decl);
+
+  // expressions.cpp
+  Value expr(const ast::Expr* e);
+  Value binary(const ast::BinaryExpr& e);
+  Value assign(const ast::AssignExpr& e);
+  Value unary(const ast::UnaryExpr& e);
+  Value member(const ast::MemberExpr& e);
+  Value index(const ast::IndexExpr& e);
+  Value ternary(const ast::TernaryExpr& e);
+  Value literal(const ast::LiteralExpr& e);
+  Value identifier(const ast::IdentifierExpr& e);
+  Value initializer_list(const ast::InitializerList& e, const Type& expected);
+  // operators.cpp: the type of `lhs op rhs` for arithmetic, comparison, logical and bit operators.
+  Value arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range,
+                   SourceRange range);
+  Value geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
+                             SourceRange range);
+  void operand_mismatch(const std::string& message, const Value& lhs, const Value& rhs, SourceRange op_range,
+                        const std::string& hint, const char* code);
+  void condition(const ast::Expr* e);
+  // Checks that `value` may be stored into a `target`; reports one error otherwise.
+  bool check_assignable(const Type& target, const Value& value, SourceRange target_range, const std::string& target_name,
+                        const std::optional<Origin>& target_origin, const char* action);
+
+  // calls.cpp
+  Value call(const ast::CallExpr& e);
+  Value method_call(const ast::MethodCallExpr& e);
+  Value constructor(const ast::CallExpr& e);
+  Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
+                     std::vector<Value>& args, SourceRange callee_range, SourceRange call_range);
+  Value rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range);
+  Value user_call(const ast::CallExpr& e, const std::vector<Function>& overloads, std::vector<Value>& args);
+  // Unifies the arguments' annotations with a resolved call shape; nothing after reporting an error.
+  std::optional<Type> unify_call(const std::string& callee, const CallShape& shape, const std::vector<Value>& args,
+                                 SourceRange call_range);
+  // Operators on maps and geometric values routed through the built-in table (transform, compose).
+  std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
+                                          const Value& rhs, SourceRange range);
+
+  // mismatch.cpp
+  std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
+  std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
+  void add_origin_note(Diagnostic& d, const Value& v) const;
+
+  std::string name_of(const Type& t) const { return type_name(t, result_.registry); }
+  std::string name_of(const Type& t, const CallShape& s) const {
+    return type_name(t, result_.registry, s.dim_params, s.space_params);
+  }
+  Value error_value(SourceRange range) const {
+    Value v;
+    v.range = range;
+    return v;
+  }
+  void report(Diagnostic d) { diagnostics_.report(std::move(d)); }
+  Value record(const ast::Node* node, Value v) {
+    result_.types[node] = v.type;
+    return v;
+  }
+
+  const CheckOptions& options_;
+  DiagnosticEngine& diagnostics_;
+  CheckResult& result_;
+  std::unique_ptr<BuiltinLibrary> builtins_;  // built after the program's dimension declarations
+  std::vector<std::unordered_map<std::string, Variable>> scopes_;
+  std::unordered_map<std::string, std::vector<Function>> functions_;
+  std::unordered_map<std::string, const StructInfo*> structs_;
+  // Template parameters of the function being declared (resolve_type maps their names to generic slots).
+  const std::vector<std::string>* template_dims_ = nullptr;
+  const std::vector<std::string>* template_spaces_ = nullptr;
+  const Function* current_function_ = nullptr;
+  int loop_depth_ = 0;
+};
+
+}  // namespace safegi::detail

@@ -1,0 +1,179 @@
+// Constructors, casts (`float<solid_angle>(x)`) and the rule-typed built-in
+// families (texture*, image*, atomic counters).
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+
+Value Checker::constructor(const ast::CallExpr& e) {
+  Type t = resolve_type(e.constructor_type);
+  std::vector<Value> args;
+  bool bad = t.is_error();
+  for (const ast::Expr* a : e.args) {
+    args.push_back(expr(a));
+    bad = bad || args.back().type.is_error();
+  }
+  if (bad) return error_value(e.range);
+  Value out;
+  out.range = e.range;
+  out.type = t;
+  const std::string what = name_of(t);
+  auto fail = [&](SourceRange r, const std::string& message, const std::string& hint = {}, const char* code = "E-CONSTRUCTOR") {
+    Diagnostic d = Diagnostic::error(r, message).with_code(code);
+    if (!hint.empty()) d.with_hint(hint);
+    report(std::move(d));
+    return error_value(e.range);
+  };
+
+  if (t.is_array()) {
+    if (t.array[0] < 0) out.type.array[0] = static_cast<int>(args.size());
+    else if (static_cast<std::size_t>(t.array[0]) != args.size())
+      return fail(e.range, "array constructor of " + what + " needs " + std::to_string(t.array[0]) + " arguments, found " +
+                               std::to_string(args.size()));
+    const Type element = out.type.element();
+    for (const Value& a : args)
+      if (!check_assignable(element, a, {}, "", std::nullopt, "initialize")) return error_value(e.range);
+    return out;
+  }
+  if (t.shape == Shape::structure) {
+    if (args.size() != t.structure->fields.size())
+      return fail(e.range, "constructor of '" + t.structure->name + "' needs " + std::to_string(t.structure->fields.size()) +
+                               " arguments, found " + std::to_string(args.size()));
+    for (std::size_t i = 0; i < args.size(); ++i)
+      if (!check_assignable(t.structure->fields[i].type, args[i], {}, t.structure->fields[i].name, std::nullopt, "initialize"))
+        return error_value(e.range);
+    return out;
+  }
+  if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
+  if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
+
+  // GLSL: one scalar (splat / diagonal), one matrix (resize), or enough components.
+  int components = 0;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Type& a = args[i].type;
+    if (a.is_array() || !(a.shape == Shape::scalar || a.shape == Shape::vector || a.shape == Shape::matrix))
+      return fail(args[i].range, "cannot use " + name_of(a) + " to construct " + what);
+    if (components >= t.components() && t.shape != Shape::matrix)
+      return fail(args[i].range, "too many arguments to constructor of " + what);
+    components += a.components();
+  }
+  const bool single = args.size() == 1;
+  const Type& first = args[0].type;
+  if (!single && components < t.components())
+    return fail(e.range, "too few components to construct " + what + " (" + std::to_string(components) + " of " +
+                             std::to_string(t.components()) + ")");
+  if (t.shape == Shape::matrix && !single && args.size() > 1)
+    for (const Value& a : args)
+      if (a.type.shape == Shape::matrix) return fail(a.range, "a matrix argument must be the only one in a matrix constructor");
+
+  const bool annotated = t.is_annotated();
+  const bool same_representation = single && first.shape == t.shape && first.rows == t.rows && first.columns == t.columns;
+  out.zero = true;
+  for (const Value& a : args) out.zero = out.zero && a.zero;
+
+  if (annotated) {
+    // A cast: one argument of the same representation takes the annotation, whatever it had.
+    if (same_representation) {
+      out.zero = args[0].zero;
+      return out;
+    }
+    if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");
+    // Components: zero, literals and unannotated values take the annotation; others must already have it.
+    const DimSlot want = value_dimension(t, result_.registry);
+    for (const Value& a : args) {
+      const DimSlot have = value_dimension(a.type, result_.registry);
+      if (a.zero || a.literal || have.state == DimSlot::State::unknown) continue;
+      if (!consistent(want, have) || (a.type.geometry != Geometry::none && a.type.geometry != Geometry::spectrum)) {
+        Diagnostic d = Diagnostic::error(a.range, "a component of type " + name_of(a.type) + " cannot build " + what)
+                           .with_code("E-DIMENSION-MISMATCH");
+        add_origin_note(d, a);
+        std::string hint = physics_hint(want, have);
+        d.with_hint(hint.empty() ? "to reinterpret a value, cast the whole of it: " + what + "(v)" : hint);
+        report(std::move(d));
+        return error_value(e.range);
+      }
+    }
+    return out;
+  }
+
+  // A plain GLSL constructor: the components' common dimension, if they share one.
+  if (t.shape == Shape::matrix) return out;  // matrices built from parts stay unannotated
+  std::optional<DimSlot> common;
+  bool mixed = false;
+  for (const Value& a : args) {
+    if (a.zero) continue;
+    DimSlot d = value_dimension(a.type, result_.registry);
+    if (a.type.geometry == Geometry::hpoint || a.type.shape == Shape::matrix) d = DimSlot::unknown();
+    if (!common) common = d;
+    else if (!same_dimension(*common, d)) mixed = true;
+  }
+  if (common && !mixed && common->state != DimSlot::State::unknown) {
+    out.type.dim = *common;
+    out.type.dim.spelling.clear();
+  } else if (out.zero) {
+    out.type.dim = DimSlot::zero();
+  }
+  // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.
+  return out;
+}
+
+Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range) {
+  (void)node;
+  Value out;
+  out.range = call_range;
+  auto no_match = [&]() {
+    std::string text;
+    for (const Value& a : args) text += (text.empty() ? "" : ", ") + name_of(a.type);
+    report(Diagnostic::error(call_range, "no matching overload for call to '" + sig.name + "(" + text + ")'").with_code("E-NO-OVERLOAD"));
+    return error_value(call_range);
+  };
+  if (sig.rule == BuiltinRule::atomic_counter) {
+    if (args.size() != 1 || args[0].type.opaque != "atomic_uint") return no_match();
+    out.type = Type::scalar_of(Scalar::uint_);
+    return out;
+  }
+  if (args.empty() || args[0].type.shape != Shape::opaque || args[0].type.is_array()) return no_match();
+  const Type& sampler = args[0].type;
+  const std::string& name = sampler.opaque;
+  const bool is_image = name.find("image") != std::string::npos;
+  if ((sig.rule == BuiltinRule::image) != is_image && sig.rule != BuiltinRule::texture_size && sig.rule != BuiltinRule::texture_query)
+    return no_match();
+  for (std::size_t i = 1; i < args.size(); ++i)
+    if (!(args[i].type.is_numeric() || args[i].type.scalar == Scalar::bool_) || args[i].type.is_array()) return no_match();
+  const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
+  switch (sig.rule) {
+    case BuiltinRule::texture: {
+      const bool shadow = name.find("Shadow") != std::string::npos;
+      const bool gather = sig.name.rfind("textureGather", 0) == 0;
+      out.type = (shadow && !gather) ? Type::scalar_of(Scalar::float_) : Type::vector_of(texel_scalar, 4);
+      if (sampler.texel) out.type.dim = value_dimension(*sampler.texel, result_.registry);
+      out.type.dim.spelling = sampler.texel ? sampler.texel->dim.spelling : std::string();
+      return out;
+    }
+    case BuiltinRule::texture_size: {
+      const int n = name.find("Cube") != std::string::npos && name.find("Array") == std::string::npos ? 2 : [&] {
+        if (name.find("1DArray") != std::string::npos) return 2;
+        if (name.find("2DArray") != std::string::npos || name.find("CubeArray") != std::string::npos ||
+            name.find("2DMSArray") != std::string::npos || name.find("3D") != std::string::npos)
+          return 3;
+        if (name.find("1D") != std::string::npos || name.find("Buffer") != std::string::npos) return 1;
+        return 2;
+      }();
+      out.type = Type::vector_of(Scalar::int_, n);
+      return out;
+    }
+    case BuiltinRule::texture_query:
+      out.type = sig.name == "textureQueryLod" ? Type::vector_of(Scalar::float_, 2) : Type::scalar_of(Scalar::int_);
+      return out;
+    case BuiltinRule::image:
+      if (sig.name == "imageStore") out.type = Type::void_type();
+      else if (sig.name == "imageLoad") out.type = Type::vector_of(texel_scalar, 4);
+      else out.type = Type::scalar_of(texel_scalar == Scalar::uint_ ? Scalar::uint_ : Scalar::int_);
+      if (sampler.texel && sig.name == "imageLoad") out.type.dim = value_dimension(*sampler.texel, result_.registry);
+      return out;
+    default: return no_match();
+  }
+}
+
+}  // namespace safegi::detail

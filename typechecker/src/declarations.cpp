@@ -1,0 +1,441 @@
+// Scopes, declarations, functions and statements.
+
+#include <cstring>
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+namespace {
+
+struct BuiltinVariableEntry {
+  const char* stages;
+  const char* name;
+  const char* type;
+  bool writable;
+};
+
+constexpr BuiltinVariableEntry kBuiltinVariables[] = {
+#define BUILTIN_VARIABLE(stages, name, type, writable) {stages, #name, type, writable},
+#include "builtin_variables.def"
+#undef BUILTIN_VARIABLE
+};
+
+char stage_letter(Stage s) {
+  switch (s) {
+    case Stage::vertex: return 'v';
+    case Stage::tess_control: return 'c';
+    case Stage::tess_evaluation: return 'e';
+    case Stage::geometry: return 'g';
+    case Stage::fragment: return 'f';
+    case Stage::compute: return 'x';
+    case Stage::unknown: break;
+  }
+  return '*';
+}
+
+Type parse_simple_type(std::string_view text) {
+  bool array = false;
+  int size = -1;
+  if (auto b = text.find('['); b != std::string_view::npos) {
+    array = true;
+    if (text[b + 1] != ']') size = text[b + 1] - '0';
+    text = text.substr(0, b);
+  }
+  Type t;
+  if (text == "int") t = Type::scalar_of(Scalar::int_);
+  else if (text == "uint") t = Type::scalar_of(Scalar::uint_);
+  else if (text == "bool") t = Type::scalar_of(Scalar::bool_);
+  else if (text == "float") t = Type::scalar_of(Scalar::float_);
+  else if (text == "vec2") t = Type::vector_of(Scalar::float_, 2);
+  else if (text == "vec3") t = Type::vector_of(Scalar::float_, 3);
+  else if (text == "vec4") t = Type::vector_of(Scalar::float_, 4);
+  else if (text == "uvec3") t = Type::vector_of(Scalar::uint_, 3);
+  else if (text == "mat3") t = Type::matrix_of(Scalar::float_, 3, 3);
+  else if (text == "mat4") t = Type::matrix_of(Scalar::float_, 4, 4);
+  if (array) t.array.push_back(size);
+  return t;
+}
+
+std::optional<int> layout_int(const ast::TypeQualifiers& q, const char* id, Checker& c) {
+  for (const ast::Qualifier& qual : q.list)
+    for (const ast::LayoutId& l : qual.layout_ids)
+      if (l.name == id && l.value) {
+        Value v = c.expr(l.value);
+        if (v.constant) return static_cast<int>(*v.constant);
+      }
+  return std::nullopt;
+}
+
+bool is_storage(const ast::TypeQualifiers& q, const char* word) { return q.has(word); }
+
+}  // namespace
+
+Checker::Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result)
+    : options_(options), diagnostics_(diagnostics), result_(result) {}
+
+void Checker::run(const ast::TranslationUnit& unit) {
+  // Annotation declarations first: the built-in signatures are resolved against them.
+  for (const ast::Decl* d : unit.decls) {
+    if (const auto* dim = ast::dyn_cast<ast::DimensionDecl>(d)) declare_dimension(*dim);
+    else if (const auto* u = ast::dyn_cast<ast::UnitDecl>(d)) declare_unit(*u);
+    else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
+  }
+  builtins_ = std::make_unique<BuiltinLibrary>(result_.registry);
+  push_scope();
+  declare_builtin_variables();
+  push_scope();  // the program's globals may shadow built-ins (redeclaring gl_* blocks)
+  for (const ast::Decl* d : unit.decls) {
+    if (diagnostics_.limit_reached()) break;
+    global_decl(d);
+  }
+}
+
+void Checker::declare_builtin_variables() {
+  const char letter = stage_letter(options_.stage);
+  for (const BuiltinVariableEntry& e : kBuiltinVariables) {
+    if (letter != '*' && !std::strchr(e.stages, letter)) continue;
+    if (lookup(e.name)) continue;  // listed for several stages
+    Variable v;
+    v.name = e.name;
+    v.type = parse_simple_type(e.type);
+    v.read_only = !e.writable;
+    v.builtin = true;
+    scopes_.back().emplace(v.name, v);
+  }
+  // gl_in[] / gl_out[]: arrays of gl_PerVertex.
+  auto per_vertex = std::make_unique<StructInfo>();
+  per_vertex->name = "gl_PerVertex";
+  per_vertex->fields = {{"gl_Position", Type::vector_of(Scalar::float_, 4)},
+                        {"gl_PointSize", Type::scalar_of(Scalar::float_)},
+                        {"gl_ClipDistance", parse_simple_type("float[]")},
+                        {"gl_CullDistance", parse_simple_type("float[]")}};
+  Type array;
+  array.shape = Shape::structure;
+  array.structure = per_vertex.get();
+  array.array = {-1};
+  structs_["gl_PerVertex"] = per_vertex.get();
+  result_.structs.push_back(std::move(per_vertex));
+  if (letter == '*' || letter == 'c' || letter == 'e' || letter == 'g') {
+    scopes_.back().emplace("gl_in", Variable{"gl_in", array, {}, true, true, std::nullopt, {}});
+  }
+  if (letter == '*' || letter == 'c') {
+    scopes_.back().emplace("gl_out", Variable{"gl_out", array, {}, false, true, std::nullopt, {}});
+  }
+}
+
+const Variable* Checker::lookup(const std::string& name) const {
+  for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+    auto found = it->find(name);
+    if (found != it->end()) return &found->second;
+  }
+  return nullptr;
+}
+
+void Checker::declare_variable(Variable v) {
+  auto& scope = scopes_.back();
+  auto it = scope.find(v.name);
+  if (it != scope.end() && !it->second.builtin) {
+    Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code("E-REDEFINITION");
+    d.with_note(Diagnostic::note(it->second.range, "previous definition is here"));
+    report(std::move(d));
+    return;
+  }
+  scope.insert_or_assign(v.name, std::move(v));
+}
+
+void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& name, const std::string& block,
+                               const Type& t, SourceRange range, const ast::Node* decl) {
+  std::optional<InterfaceKind> kind;
+  if (is_storage(q, "uniform")) kind = InterfaceKind::uniform;
+  else if (is_storage(q, "buffer")) kind = InterfaceKind::buffer;
+  else if (is_storage(q, "shared")) kind = InterfaceKind::shared;
+  else if (is_storage(q, "in") || is_storage(q, "attribute")) kind = InterfaceKind::input;
+  else if (is_storage(q, "out")) kind = InterfaceKind::output;
+  else if (is_storage(q, "varying")) kind = options_.stage == Stage::vertex ? InterfaceKind::output : InterfaceKind::input;
+  if (!kind) return;
+  InterfaceVariable iv;
+  iv.kind = *kind;
+  iv.name = name;
+  iv.block = block;
+  iv.type = t;
+  iv.type_text = name_of(t);
+  iv.range = range;
+  iv.decl = decl;
+  iv.location = layout_int(q, "location", *this).value_or(-1);
+  iv.binding = layout_int(q, "binding", *this).value_or(-1);
+  iv.annotated = t.is_annotated();
+  if (options_.strict && !iv.annotated && (t.shape == Shape::scalar || t.shape == Shape::vector || t.shape == Shape::matrix) &&
+      t.scalar != Scalar::bool_ && t.is_floating()) {
+    report(Diagnostic::warning(range, "interface variable '" + name + "' has no annotation")
+               .with_code("W-UNANNOTATED-INTERFACE")
+               .with_hint("give it a dimension or a space, e.g. '" + glsl_name(t.element()) + "<1>' if it is a pure number"));
+  }
+  result_.interface.push_back(std::move(iv));
+}
+
+void Checker::global_decl(const ast::Decl* d) {
+  switch (d->kind) {
+    case ast::NodeKind::VariableDecl: variable_decl(*static_cast<const ast::VariableDecl*>(d), true); break;
+    case ast::NodeKind::InterfaceBlockDecl: block_decl(*static_cast<const ast::InterfaceBlockDecl*>(d)); break;
+    case ast::NodeKind::FunctionDecl: function_decl(*static_cast<const ast::FunctionDecl*>(d)); break;
+    case ast::NodeKind::StructDecl: {
+      ast::TypeSpecifier spec;
+      spec.form = ast::TypeSpecifier::Form::Struct;
+      spec.struct_decl = const_cast<ast::StructDecl*>(static_cast<const ast::StructDecl*>(d));
+      resolve_type(&spec);
+      break;
+    }
+    default: break;  // precision, qualifier-only, annotation declarations (done), empty
+  }
+}
+
+void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
+  const bool is_const = d.qualifiers.has("const");
+  const bool is_input = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("attribute") ||
+                        (d.qualifiers.has("varying") && options_.stage != Stage::vertex);
+  const Type base = resolve_type(d.type);  // once: an inline struct is declared once
+  for (const ast::Declarator& decl : d.declarators) {
+    Type declared = base.is_error() ? base : with_array_dims(base, decl.array_dims);
+    Variable v;
+    v.name = decl.name;
+    v.range = decl.name_range;
+    v.read_only = is_const || (global && is_input);
+    v.origin = {decl.name_range, "'" + decl.name + "' declared here"};
+    if (declared.shape == Shape::void_) {
+      report(Diagnostic::error(decl.name_range, "variable '" + decl.name + "' declared void").with_code("E-VOID-VARIABLE"));
+      declared = Type::error();
+    }
+    if (const auto* list = ast::dyn_cast<ast::InitializerList>(decl.initializer)) {
+      initializer_list(*list, declared);
+    } else if (decl.initializer) {
+      Value init = expr(decl.initializer);
+      // Unsized arrays take their size from the initialiser.
+      if (!declared.array.empty() && declared.array[0] < 0 && !init.type.array.empty()) declared.array[0] = init.type.array[0];
+      const bool infer = !global && !declared.is_annotated() && !declared.is_error() && !init.type.is_error() &&
+                         !init.zero && declared.shape != Shape::structure && declared.shape != Shape::opaque &&
+                         declared.rows == init.type.rows && declared.shape == init.type.shape && declared.array == init.type.array;
+      if (infer && init.type.is_annotated()) {
+        // `auto`-style inference of unannotated locals (docs/language.md, gradual typing).
+        Type inferred = init.type;
+        inferred.scalar = declared.scalar;
+        inferred.dim.spelling = init.type.dim.spelling;
+        declared = inferred;
+        v.origin = {decl.initializer->range, "type of '" + decl.name + "' inferred as " + name_of(declared) + " from its initializer"};
+      } else if (!declared.is_error()) {
+        check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize");
+      }
+      if (is_const && init.constant && declared.shape == Shape::scalar && declared.is_integer()) v.constant = init.constant;
+    } else if (is_const && !global) {
+      report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
+    }
+    v.type = declared;
+    result_.declarators[&decl] = declared;
+    if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
+    declare_variable(std::move(v));
+  }
+}
+
+void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
+  auto info = std::make_unique<StructInfo>();
+  info->name = d.block_name;
+  const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in");
+  for (const ast::VariableDecl* member : d.members) {
+    for (const ast::Declarator& decl : member->declarators) {
+      Type t = resolve_type(member->type, &decl.array_dims);
+      result_.declarators[&decl] = t;
+      info->fields.push_back({decl.name, t});
+      const std::string full = d.instance_name.empty() ? decl.name : d.instance_name + "." + decl.name;
+      record_interface(d.qualifiers, full, d.block_name, t, decl.name_range, member);
+      if (d.instance_name.empty()) {
+        Variable v{decl.name, t, decl.name_range, read_only, false, std::nullopt, {decl.name_range, "'" + decl.name + "' declared here"}};
+        declare_variable(std::move(v));
+      }
+    }
+  }
+  if (!d.instance_name.empty()) {
+    Type t;
+    t.shape = Shape::structure;
+    t.structure = info.get();
+    for (const ast::ArrayDim& dim : d.instance_array_dims) t.array.push_back(static_cast<int>(array_size(dim).value_or(-1)));
+    Variable v{d.instance_name, t, d.instance_name_range, read_only, false, std::nullopt,
+               {d.instance_name_range, "'" + d.instance_name + "' declared here"}};
+    declare_variable(std::move(v));
+  }
+  result_.structs.push_back(std::move(info));
+}
+
+void Checker::function_decl(const ast::FunctionDecl& d) {
+  Function f;
+  f.name = d.name;
+  f.decl = &d;
+  for (const ast::TemplateParam& p : d.template_params)
+    (p.kind == ast::TemplateParamKind::Dimension ? f.dim_params : f.space_params).push_back(p.name);
+  template_dims_ = &f.dim_params;
+  template_spaces_ = &f.space_params;
+  f.result = resolve_type(d.return_type);
+  for (const ast::ParamDecl* p : d.params) {
+    Type t = resolve_type(p->type, &p->array_dims);
+    result_.types[p] = t;
+    f.params.push_back(t);
+    f.out_params.push_back(p->qualifiers.has("out") || p->qualifiers.has("inout"));
+  }
+  f.defined = d.body != nullptr;
+
+  // Overloads are told apart by GLSL parameter types; a second definition is an error.
+  std::vector<Function>& overloads = functions_[d.name];
+  Function* existing = nullptr;
+  for (Function& o : overloads) {
+    if (o.params.size() != f.params.size()) continue;
+    bool same = true;
+    for (std::size_t i = 0; i < f.params.size(); ++i) same = same && same_glsl_type(o.params[i], f.params[i]);
+    if (same) existing = &o;
+  }
+  if (existing) {
+    if (existing->defined && f.defined) {
+      report(Diagnostic::error(d.name_range, "redefinition of '" + d.name + "'")
+                 .with_code("E-REDEFINITION")
+                 .with_note(Diagnostic::note(existing->decl->name_range, "previous definition is here")));
+    } else if (!same_glsl_type(existing->result, f.result)) {
+      report(Diagnostic::error(d.name_range, "'" + d.name + "' is redeclared with a different return type")
+                 .with_code("E-REDEFINITION")
+                 .with_note(Diagnostic::note(existing->decl->name_range, "previous declaration is here")));
+    }
+    if (f.defined) *existing = f;
+  } else {
+    overloads.push_back(f);
+  }
+
+  if (d.body) {
+    const Function* self = nullptr;
+    for (const Function& o : functions_[d.name])
+      if (o.decl == &d) self = &o;
+    current_function_ = self;
+    push_scope();
+    for (std::size_t i = 0; i < d.params.size(); ++i) {
+      const ast::ParamDecl* p = d.params[i];
+      if (p->name.empty()) continue;
+      const bool in_only = !p->qualifiers.has("out") && !p->qualifiers.has("inout");
+      declare_variable({p->name, f.params[i], p->name_range, p->qualifiers.has("const") && in_only, false, std::nullopt,
+                        {p->name_range, "'" + p->name + "' declared here"}});
+    }
+    for (const ast::Stmt* s : d.body->statements) statement(s);
+    pop_scope();
+    current_function_ = nullptr;
+  }
+  template_dims_ = nullptr;
+  template_spaces_ = nullptr;
+}
+
+void Checker::statement(const ast::Stmt* s) {
+  if (!s || diagnostics_.limit_reached()) return;
+  switch (s->kind) {
+    case ast::NodeKind::CompoundStmt:
+      push_scope();
+      for (const ast::Stmt* c : static_cast<const ast::CompoundStmt*>(s)->statements) statement(c);
+      pop_scope();
+      break;
+    case ast::NodeKind::DeclStmt: {
+      const ast::Decl* d = static_cast<const ast::DeclStmt*>(s)->decl;
+      if (const auto* v = ast::dyn_cast<ast::VariableDecl>(d)) variable_decl(*v, false);
+      else if (const auto* f = ast::dyn_cast<ast::FunctionDecl>(d)) function_decl(*f);
+      else if (const auto* st = ast::dyn_cast<ast::StructDecl>(d)) global_decl(st);
+      break;
+    }
+    case ast::NodeKind::ExprStmt:
+      if (const ast::Expr* e = static_cast<const ast::ExprStmt*>(s)->expr) expr(e);
+      break;
+    case ast::NodeKind::IfStmt: {
+      const auto* i = static_cast<const ast::IfStmt*>(s);
+      condition(i->condition);
+      push_scope();
+      statement(i->then_stmt);
+      pop_scope();
+      push_scope();
+      statement(i->else_stmt);
+      pop_scope();
+      break;
+    }
+    case ast::NodeKind::SwitchStmt: {
+      const auto* sw = static_cast<const ast::SwitchStmt*>(s);
+      Value sel = expr(sw->selector);
+      if (!sel.type.is_error() && !(sel.type.shape == Shape::scalar && sel.type.is_integer() && !sel.type.is_array()))
+        report(Diagnostic::error(sel.range, "switch selector must be int or uint, found " + name_of(sel.type)).with_code("E-SWITCH-TYPE"));
+      ++loop_depth_;  // `break` is valid inside a switch
+      statement(sw->body);
+      --loop_depth_;
+      break;
+    }
+    case ast::NodeKind::CaseLabel:
+      if (const ast::Expr* e = static_cast<const ast::CaseLabel*>(s)->value) expr(e);
+      break;
+    case ast::NodeKind::WhileStmt: {
+      const auto* w = static_cast<const ast::WhileStmt*>(s);
+      push_scope();
+      if (w->condition.decl) variable_decl(*w->condition.decl, false);
+      else condition(w->condition.expr);
+      ++loop_depth_;
+      statement(w->body);
+      --loop_depth_;
+      pop_scope();
+      break;
+    }
+    case ast::NodeKind::DoStmt: {
+      const auto* w = static_cast<const ast::DoStmt*>(s);
+      ++loop_depth_;
+      statement(w->body);
+      --loop_depth_;
+      condition(w->condition);
+      break;
+    }
+    case ast::NodeKind::ForStmt: {
+      const auto* f = static_cast<const ast::ForStmt*>(s);
+      push_scope();
+      statement(f->init);
+      if (f->condition.decl) variable_decl(*f->condition.decl, false);
+      else if (f->condition.expr) condition(f->condition.expr);
+      if (f->increment) expr(f->increment);
+      ++loop_depth_;
+      statement(f->body);
+      --loop_depth_;
+      pop_scope();
+      break;
+    }
+    case ast::NodeKind::BreakStmt:
+    case ast::NodeKind::ContinueStmt:
+      if (loop_depth_ == 0)
+        report(Diagnostic::error(s->range, std::string("'") + (s->kind == ast::NodeKind::BreakStmt ? "break" : "continue") +
+                                               "' outside of a loop")
+                   .with_code("E-JUMP-OUTSIDE-LOOP"));
+      break;
+    case ast::NodeKind::DiscardStmt:
+      if (options_.stage != Stage::unknown && options_.stage != Stage::fragment)
+        report(Diagnostic::error(s->range, "'discard' is only allowed in fragment shaders").with_code("E-DISCARD-STAGE"));
+      break;
+    case ast::NodeKind::ReturnStmt: {
+      const auto* r = static_cast<const ast::ReturnStmt*>(s);
+      if (!current_function_) break;
+      const Type& want = current_function_->result;
+      if (!r->value) {
+        if (want.shape != Shape::void_ && !want.is_error())
+          report(Diagnostic::error(s->range, "non-void function '" + current_function_->name + "' must return a value")
+                     .with_code("E-RETURN"));
+        break;
+      }
+      Value v = expr(r->value);
+      if (want.shape == Shape::void_) {
+        if (!v.type.is_error())
+          report(Diagnostic::error(r->value->range, "void function '" + current_function_->name + "' cannot return a value")
+                     .with_code("E-RETURN"));
+        break;
+      }
+      std::optional<Origin> origin = Origin{current_function_->decl->return_type->range,
+                                            "return type of '" + current_function_->name + "' declared here"};
+      check_assignable(want, v, r->value->range, "", origin, "return");
+      break;
+    }
+    default: break;
+  }
+}
+
+}  // namespace safegi::detail

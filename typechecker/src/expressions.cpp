@@ -1,0 +1,429 @@
+// Expressions other than operators and calls: names, literals, assignment,
+// members and swizzles, indexing, the conditional operator, initialiser lists.
+
+#include <cstdlib>
+#include <cstring>
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+
+Value Checker::expr(const ast::Expr* e) {
+  if (!e) return error_value({});
+  switch (e->kind) {
+    case ast::NodeKind::IdentifierExpr: return record(e, identifier(*static_cast<const ast::IdentifierExpr*>(e)));
+    case ast::NodeKind::LiteralExpr: return record(e, literal(*static_cast<const ast::LiteralExpr*>(e)));
+    case ast::NodeKind::UnaryExpr: return record(e, unary(*static_cast<const ast::UnaryExpr*>(e)));
+    case ast::NodeKind::BinaryExpr: return record(e, binary(*static_cast<const ast::BinaryExpr*>(e)));
+    case ast::NodeKind::AssignExpr: return record(e, assign(*static_cast<const ast::AssignExpr*>(e)));
+    case ast::NodeKind::TernaryExpr: return record(e, ternary(*static_cast<const ast::TernaryExpr*>(e)));
+    case ast::NodeKind::CallExpr: return record(e, call(*static_cast<const ast::CallExpr*>(e)));
+    case ast::NodeKind::IndexExpr: return record(e, index(*static_cast<const ast::IndexExpr*>(e)));
+    case ast::NodeKind::MemberExpr: return record(e, member(*static_cast<const ast::MemberExpr*>(e)));
+    case ast::NodeKind::MethodCallExpr: return record(e, method_call(*static_cast<const ast::MethodCallExpr*>(e)));
+    case ast::NodeKind::ParenExpr: {
+      Value v = expr(static_cast<const ast::ParenExpr*>(e)->inner);
+      v.range = e->range;
+      return record(e, v);
+    }
+    case ast::NodeKind::InitializerList:
+      report(Diagnostic::error(e->range, "an initializer list can only initialize a declared variable").with_code("E-INIT-LIST"));
+      return record(e, error_value(e->range));
+    default: return record(e, error_value(e->range));
+  }
+}
+
+Value Checker::identifier(const ast::IdentifierExpr& e) {
+  if (const Variable* var = lookup(e.name)) {
+    Value v;
+    v.type = var->type;
+    v.range = e.range;
+    v.lvalue = true;
+    v.read_only = var->read_only;
+    v.constant = var->constant;
+    v.name = e.name;
+    if (var->range.valid()) v.origin = var->origin;
+    return v;
+  }
+  if (const Unit* unit = result_.registry.find_unit(e.name)) {
+    // A unit in an expression is a constant of its dimension (docs/language.md).
+    Value v;
+    v.type = Type::scalar_of(Scalar::float_);
+    v.type.dim = DimSlot::known(unit->dimension);
+    v.range = e.range;
+    v.read_only = true;
+    v.number = unit->scale;
+    return v;
+  }
+  if (e.name.rfind("gl_", 0) == 0) {
+    // Built-in names this checker does not model (gl_Max* constants, compatibility
+    // state, extensions) are left to the driver rather than reported wrongly.
+    if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {
+      Value v;
+      v.type = Type::scalar_of(Scalar::int_);
+      v.range = e.range;
+      v.read_only = true;
+      return v;
+    }
+    return error_value(e.range);
+  }
+  std::string message = "use of undeclared identifier '" + e.name + "'";
+  if (functions_.count(e.name) || builtins_->is_builtin(e.name)) message = "'" + e.name + "' is a function, not a variable";
+  report(Diagnostic::error(e.range, message).with_code("E-UNDECLARED"));
+  return error_value(e.range);
+}
+
+Value Checker::literal(const ast::LiteralExpr& e) {
+  Value v;
+  v.range = e.range;
+  v.literal = e.literal_kind != ast::LiteralKind::Bool;
+  v.zero = e.is_zero && v.literal;
+  switch (e.literal_kind) {
+    case ast::LiteralKind::Int:
+    case ast::LiteralKind::Uint: {
+      v.type = Type::scalar_of(e.literal_kind == ast::LiteralKind::Int ? Scalar::int_ : Scalar::uint_);
+      const char* text = e.spelling.c_str();
+      int base = 10;
+      if (e.spelling.size() > 1 && e.spelling[0] == '0') base = (e.spelling[1] == 'x' || e.spelling[1] == 'X') ? 16 : 8;
+      unsigned long long value = std::strtoull(text, nullptr, base);
+      v.constant = static_cast<long long>(value & 0xffffffffull);
+      if (e.literal_kind == ast::LiteralKind::Int && *v.constant > 0x7fffffff) *v.constant -= 0x100000000ll;
+      v.number = static_cast<double>(*v.constant);
+      break;
+    }
+    case ast::LiteralKind::Float: v.type = Type::scalar_of(Scalar::float_); v.number = std::strtod(e.spelling.c_str(), nullptr); break;
+    case ast::LiteralKind::Double: v.type = Type::scalar_of(Scalar::double_); v.number = std::strtod(e.spelling.c_str(), nullptr); break;
+    case ast::LiteralKind::Bool:
+      v.type = Type::scalar_of(Scalar::bool_);
+      v.constant = e.spelling == "true" ? 1 : 0;
+      return v;
+  }
+  // Literal policy: zero fits any dimension, every other literal is dimensionless.
+  v.type.dim = v.zero ? DimSlot::zero() : DimSlot::known(Dimension{});
+  return v;
+}
+
+Value Checker::unary(const ast::UnaryExpr& e) {
+  Value v = expr(e.operand);
+  if (v.type.is_error()) return error_value(e.range);
+  Value out = v;
+  out.range = e.range;
+  out.lvalue = false;
+  out.origin.reset();
+  const Type& t = v.type;
+  switch (e.op) {
+    case ast::UnaryOp::Plus:
+    case ast::UnaryOp::Minus:
+      if (!t.is_numeric() || t.is_array()) break;
+      if (t.geometry == Geometry::point) {
+        report(Diagnostic::error(e.range, "cannot negate " + name_of(t) + ": a point has no opposite")
+                   .with_code("E-POINT-ARITHMETIC")
+                   .with_hint("subtract it from another point to get a vector"));
+        return error_value(e.range);
+      }
+      if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = -*out.constant;
+      if (out.number && e.op == ast::UnaryOp::Minus) *out.number = -*out.number;
+      return out;
+    case ast::UnaryOp::Not:
+      if (t.shape == Shape::scalar && t.scalar == Scalar::bool_ && !t.is_array()) {
+        out.literal = false;
+        if (out.constant) *out.constant = !*out.constant;
+        return out;
+      }
+      break;
+    case ast::UnaryOp::BitNot:
+      if (t.is_integer() && !t.is_array() && (t.shape == Shape::scalar || t.shape == Shape::vector)) {
+        out.literal = false;
+        out.constant.reset();
+        return out;
+      }
+      break;
+    default:  // ++ and --
+      if (!v.lvalue || v.read_only) {
+        report(Diagnostic::error(e.operand->range, v.lvalue ? "cannot modify read-only variable '" + v.name + "'"
+                                                            : "expression is not assignable")
+                   .with_code("E-NOT-ASSIGNABLE"));
+        return error_value(e.range);
+      }
+      if (t.is_numeric() && !t.is_array()) {
+        // x++ adds a dimensionless 1: only dimensionless (or unannotated) values may be counted.
+        if (t.dim.is_known() && !t.dim.value.is_dimensionless()) {
+          report(Diagnostic::error(e.op_range, "cannot increment " + name_of(t) + " by a dimensionless 1")
+                     .with_code("E-DIMENSION-MISMATCH")
+                     .with_highlight(e.operand->range));
+          return error_value(e.range);
+        }
+        out.literal = false;
+        out.constant.reset();
+        return out;
+      }
+      break;
+  }
+  report(Diagnostic::error(e.op_range, "invalid argument type " + name_of(t) + " to unary expression")
+             .with_code("E-INVALID-OPERANDS")
+             .with_highlight(e.operand->range));
+  return error_value(e.range);
+}
+
+Value Checker::assign(const ast::AssignExpr& e) {
+  Value lhs = expr(e.lhs);
+  Value rhs = expr(e.rhs);
+  if (lhs.type.is_error() || rhs.type.is_error()) return error_value(e.range);
+  if (!lhs.lvalue || lhs.read_only) {
+    std::string message = "expression is not assignable";
+    if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";
+    Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code("E-NOT-ASSIGNABLE");
+    if (lhs.origin && lhs.lvalue) d.with_note(Diagnostic::note(lhs.origin->range, lhs.origin->text));
+    report(std::move(d));
+    return error_value(e.range);
+  }
+  Value value = rhs;
+  if (e.op != ast::AssignOp::Assign) {
+    static const ast::BinaryOp kOps[] = {ast::BinaryOp::Add, ast::BinaryOp::Mul, ast::BinaryOp::Div, ast::BinaryOp::Mod,
+                                         ast::BinaryOp::Add, ast::BinaryOp::Sub, ast::BinaryOp::Shl, ast::BinaryOp::Shr,
+                                         ast::BinaryOp::BitAnd, ast::BinaryOp::BitXor, ast::BinaryOp::BitOr};
+    value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
+    if (value.type.is_error()) return error_value(e.range);
+  }
+  if (!check_assignable(lhs.type, value, e.lhs->range, lhs.name, lhs.origin, "assign")) return error_value(e.range);
+  Value out = lhs;
+  out.range = e.range;
+  out.lvalue = false;
+  out.origin.reset();
+  return out;
+}
+
+bool Checker::check_assignable(const Type& target, const Value& value, SourceRange target_range,
+                               const std::string& target_name, const std::optional<Origin>& target_origin,
+                               const char* action) {
+  const Type& v = value.type;
+  if (target.is_error() || v.is_error()) return true;
+  const std::string subject = target_name.empty() ? std::string("a value") : "'" + target_name + "'";
+  auto fail = [&](const std::string& what, const std::string& hint, const char* code) {
+    Diagnostic d = Diagnostic::error(value.range, what).with_code(code);
+    if (target_range.valid() && !(target_range == value.range)) d.with_highlight(target_range);
+    if (target_origin && target_origin->range.valid()) d.with_note(Diagnostic::note(target_origin->range, target_origin->text));
+    add_origin_note(d, value);
+    if (!hint.empty()) d.with_hint(hint);
+    report(std::move(d));
+    return false;
+  };
+  const std::string sentence = std::string("cannot ") + action + " " + subject + " of type " + name_of(target) +
+                               " with a value of type " + name_of(v);
+  // GLSL first: the representation must match, up to implicit scalar conversion.
+  Type a = target, b = v;
+  const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
+  if (unsized) a.array[0] = b.array[0];
+  const bool scalar_ok = implicitly_converts(b.scalar, a.scalar);
+  b.scalar = a.scalar;
+  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, "", "E-TYPE-MISMATCH");
+  if (target.shape == Shape::opaque || target.shape == Shape::structure) return true;
+  // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
+  if (target.geometry != Geometry::none && v.geometry != Geometry::none && target.geometry != v.geometry) {
+    std::string hint;
+    if (target.geometry == Geometry::direction && v.geometry == Geometry::vector) hint = "a vector becomes a direction only through normalize()";
+    else if (target.geometry == Geometry::vector && (v.geometry == Geometry::direction || v.geometry == Geometry::normal))
+      hint = "scale it by a length to get a vector";
+    else if (target.geometry == Geometry::point && v.geometry == Geometry::vector) hint = "add it to a point to get a point";
+    else if (target.geometry == Geometry::vector && v.geometry == Geometry::point) hint = "subtract another point to get a vector";
+    else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction) hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
+    else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) hint = "a projective map gives hpoints, not points";
+    return fail(sentence, hint, "E-KIND-MISMATCH");
+  }
+  if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
+    const bool first = !consistent(target.from, v.from);
+    return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), "E-SPACE-MISMATCH");
+  }
+  const DimSlot found = value_dimension(v, result_.registry);
+  if (!value.zero && !consistent(target.dim, found))
+    return fail(sentence, physics_hint(target.dim, found), "E-DIMENSION-MISMATCH");
+  if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
+                                   consistent(target.texel->dim, v.texel->dim)))
+    return fail(sentence, "", "E-TEXEL-MISMATCH");
+  if (options_.strict && target.dim.is_known() && found.state == DimSlot::State::unknown && !value.zero) {
+    report(Diagnostic::warning(value.range, std::string("unannotated value used to ") + action + " " + subject + " of type " +
+                                                name_of(target))
+               .with_code("W-IMPLICIT-ANNOTATION"));
+  }
+  return true;
+}
+
+Value Checker::ternary(const ast::TernaryExpr& e) {
+  condition(e.condition);
+  Value a = expr(e.then_expr);
+  Value b = expr(e.else_expr);
+  if (a.type.is_error() || b.type.is_error()) return error_value(e.range);
+  Type ta = a.type, tb = b.type;
+  const bool glsl_ok = same_glsl_type(ta, tb) || (ta.shape == tb.shape && ta.rows == tb.rows && ta.columns == tb.columns &&
+                                                  ta.array == tb.array && (implicitly_converts(ta.scalar, tb.scalar) ||
+                                                                           implicitly_converts(tb.scalar, ta.scalar)));
+  const DimSlot da = value_dimension(ta, result_.registry), db = value_dimension(tb, result_.registry);
+  const bool annotations_ok = (ta.geometry == tb.geometry || ta.geometry == Geometry::none || tb.geometry == Geometry::none) &&
+                              consistent(ta.from, tb.from) && consistent(ta.to, tb.to) && (a.zero || b.zero || consistent(da, db));
+  if (!glsl_ok || !annotations_ok) {
+    Diagnostic d = Diagnostic::error(e.range, "the branches of '?:' have different types, " + name_of(ta) + " and " + name_of(tb))
+                       .with_code(glsl_ok ? "E-DIMENSION-MISMATCH" : "E-TYPE-MISMATCH")
+                       .with_highlight(e.then_expr->range)
+                       .with_highlight(e.else_expr->range);
+    if (glsl_ok) {
+      std::string hint = physics_hint(da, db);
+      if (!hint.empty()) d.with_hint(hint);
+    }
+    report(std::move(d));
+    return error_value(e.range);
+  }
+  Value out;
+  out.range = e.range;
+  out.type = a.zero ? tb : ta;
+  if (implicitly_converts(ta.scalar, tb.scalar) && ta.scalar != tb.scalar) out.type.scalar = tb.scalar;
+  if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
+  out.zero = a.zero && b.zero;
+  return out;
+}
+
+void Checker::condition(const ast::Expr* e) {
+  if (!e) return;
+  Value v = expr(e);
+  if (v.type.is_error()) return;
+  if (!(v.type.shape == Shape::scalar && v.type.scalar == Scalar::bool_ && !v.type.is_array()))
+    report(Diagnostic::error(e->range, "condition must be a bool, found " + name_of(v.type)).with_code("E-CONDITION-TYPE"));
+}
+
+Value Checker::index(const ast::IndexExpr& e) {
+  Value base = expr(e.base);
+  Value idx = expr(e.index);
+  if (base.type.is_error() || idx.type.is_error()) return error_value(e.range);
+  if (!(idx.type.shape == Shape::scalar && idx.type.is_integer() && !idx.type.is_array())) {
+    report(Diagnostic::error(e.index->range, "array subscript is not an integer: " + name_of(idx.type)).with_code("E-INDEX-TYPE"));
+    return error_value(e.range);
+  }
+  Value out = base;
+  out.range = e.range;
+  out.constant.reset();
+  out.literal = false;
+  out.origin.reset();
+  const Type& t = base.type;
+  int size = -1;
+  if (t.is_array()) {
+    size = t.array[0];
+    out.type = t.element();
+  } else if (t.shape == Shape::vector) {
+    size = t.rows;
+    out.type = Type::scalar_of(t.scalar);
+    out.type.dim = value_dimension(t, result_.registry);
+  } else if (t.shape == Shape::matrix) {
+    size = t.columns;
+    out.type = Type::vector_of(t.scalar, t.rows);
+    out.type.dim = is_map(t.geometry) ? DimSlot::unknown() : t.dim;
+  } else {
+    report(Diagnostic::error(e.base->range, "subscripted value of type " + name_of(t) + " is not an array, vector or matrix")
+               .with_code("E-INDEX-BASE"));
+    return error_value(e.range);
+  }
+  if (idx.constant && size > 0 && (*idx.constant < 0 || *idx.constant >= size)) {
+    report(Diagnostic::error(e.index->range, "index " + std::to_string(*idx.constant) + " is out of range for " + name_of(t))
+               .with_code("E-INDEX-RANGE"));
+    return error_value(e.range);
+  }
+  return out;
+}
+
+Value Checker::member(const ast::MemberExpr& e) {
+  Value base = expr(e.base);
+  if (base.type.is_error()) return error_value(e.range);
+  const Type& t = base.type;
+  Value out = base;
+  out.range = e.range;
+  out.constant.reset();
+  out.literal = false;
+  out.origin.reset();
+  if (t.shape == Shape::structure && !t.is_array()) {
+    for (const StructField& f : t.structure->fields) {
+      if (f.name == e.member) {
+        out.type = f.type;
+        return out;
+      }
+    }
+    report(Diagnostic::error(e.member_range, "no member named '" + e.member + "' in '" + t.structure->name + "'")
+               .with_code("E-NO-MEMBER"));
+    return error_value(e.range);
+  }
+  if ((t.shape == Shape::vector || t.shape == Shape::scalar) && !t.is_array()) {
+    static const char* const kSets[] = {"xyzw", "rgba", "stpq"};
+    const std::string& s = e.member;
+    int set = -1;
+    bool ok = !s.empty() && s.size() <= 4;
+    for (std::size_t i = 0; ok && i < s.size(); ++i) {
+      int found = -1, position = -1;
+      for (int k = 0; k < 3; ++k) {
+        const char* p = std::strchr(kSets[k], s[i]);
+        if (p && s[i] != '\0') {
+          found = k;
+          position = static_cast<int>(p - kSets[k]);
+        }
+      }
+      if (found < 0 || (set >= 0 && found != set) || position >= t.rows) ok = false;
+      set = found;
+    }
+    if (!ok) {
+      report(Diagnostic::error(e.member_range, "invalid swizzle '" + s + "' on " + name_of(t)).with_code("E-SWIZZLE"));
+      return error_value(e.range);
+    }
+    bool repeated = false;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      for (std::size_t j = i + 1; j < s.size(); ++j) repeated = repeated || s[i] == s[j];
+    const bool identity = static_cast<int>(s.size()) == t.rows && s == std::string(kSets[set]).substr(0, s.size());
+    if (!identity) {
+      out.type = Type::vector_of(t.scalar, static_cast<int>(s.size()));
+      out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
+    }
+    out.lvalue = base.lvalue && !repeated;
+    return out;
+  }
+  report(Diagnostic::error(e.member_range, "member reference base type " + name_of(t) + " is not a structure or vector")
+             .with_code("E-NO-MEMBER"));
+  return error_value(e.range);
+}
+
+Value Checker::initializer_list(const ast::InitializerList& e, const Type& expected) {
+  Value out;
+  out.range = e.range;
+  out.type = expected;
+  if (expected.is_error()) return record(&e, out);
+  auto element_of = [&](std::size_t i) -> std::optional<Type> {
+    if (expected.is_array()) return expected.element();
+    if (expected.shape == Shape::structure) {
+      if (i < expected.structure->fields.size()) return expected.structure->fields[i].type;
+      return std::nullopt;
+    }
+    if (expected.shape == Shape::matrix) {
+      Type column = Type::vector_of(expected.scalar, expected.rows);
+      column.dim = expected.dim;
+      return column;
+    }
+    if (expected.shape == Shape::vector) {
+      Type component = Type::scalar_of(expected.scalar);
+      component.dim = value_dimension(expected, result_.registry);
+      return component;
+    }
+    return std::nullopt;
+  };
+  for (std::size_t i = 0; i < e.elements.size(); ++i) {
+    std::optional<Type> want = element_of(i);
+    if (!want) {
+      report(Diagnostic::error(e.elements[i]->range, "excess elements in initializer list for " + name_of(expected))
+                 .with_code("E-INIT-LIST"));
+      break;
+    }
+    if (const auto* nested = ast::dyn_cast<ast::InitializerList>(e.elements[i])) {
+      initializer_list(*nested, *want);
+      continue;
+    }
+    Value v = expr(e.elements[i]);
+    check_assignable(*want, v, {}, "", std::nullopt, "initialize");
+  }
+  return record(&e, out);
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,60 @@
+// Physics-aware hints for dimension and space mismatches, and the notes that
+// say where an operand's annotation came from.
+
+#include "checker_impl.hpp"
+
+namespace safegi::detail {
+
+std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found) const {
+  if (expected.state != DimSlot::State::known || found.state != DimSlot::State::known) return {};
+  const DimensionRegistry& reg = result_.registry;
+  Checked<Dimension> ratio = divide(found.value, expected.value);  // what the value has too much of
+  if (!ratio) return {};
+  const Dimension& r = *ratio;
+  auto base = [&](const char* name) -> std::optional<BaseId> { return reg.find_base(name); };
+  auto is = [&](std::initializer_list<std::pair<const char*, int>> factors) {
+    std::vector<Factor> want;
+    for (const auto& [name, e] : factors) {
+      std::optional<BaseId> b = base(name);
+      if (!b) return false;
+      want.push_back({*b, e});
+    }
+    Checked<Dimension> d = Dimension::from_factors(want);
+    return d && *d == r;
+  };
+  if (is({{"proj", -1}})) return "the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?";
+  if (is({{"proj", 1}})) return "the value has an extra factor of proj: is a cosine applied twice?";
+  if (is({{"solid_angle", -1}})) return "the value lacks a factor of solid_angle: missing division by a pdf?";
+  if (is({{"solid_angle", 1}})) return "the value has an extra factor of solid_angle: divided by a pdf twice, or multiplied where it should divide?";
+  if (is({{"solid_angle", -2}})) return "the value lacks solid_angle²: multiplied by a pdf where it should divide by it?";
+  if (is({{"length", 2}, {"solid_angle", -1}}) || is({{"length", 2}, {"solid_angle", -1}, {"proj", -1}}) ||
+      is({{"length", 2}, {"solid_angle", -1}, {"proj", 1}}))
+    return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
+  if (is({{"length", -2}, {"solid_angle", 1}}) || is({{"length", -2}, {"solid_angle", 1}, {"proj", 1}}) ||
+      is({{"length", -2}, {"solid_angle", 1}, {"proj", -1}}))
+    return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
+  if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";
+  if (is({{"length", -2}})) return "the value lacks a factor of area: divided by the squared distance twice?";
+  if (is({{"angle", -1}}))
+    return "a plain number where an angle is expected: radians or degrees? Use radians(x) or write the unit, x * degree";
+  if (is({{"angle", 1}})) return "an angle where a plain number is expected: did you mean its sine or cosine, or degrees(x)?";
+  return "the value differs from " + reg.format(expected.value) + " by a factor of " + reg.format(r);
+}
+
+std::string Checker::space_hint(const SpaceSlot& expected, const SpaceSlot& found) const {
+  const DimensionRegistry& reg = result_.registry;
+  auto name = [&](const SpaceSlot& s) -> std::optional<std::string> {
+    if (s.state != SpaceSlot::State::known || s.id >= reg.spaces().size()) return std::nullopt;
+    return reg.space_name(s.id);
+  };
+  std::optional<std::string> from = name(found), to = name(expected);
+  if (!from || !to) return {};
+  return "missing transform by map<" + *from + ", " + *to + ">?";
+}
+
+void Checker::add_origin_note(Diagnostic& d, const Value& v) const {
+  if (!v.origin || !v.origin->range.valid() || !v.type.is_annotated()) return;
+  d.with_note(Diagnostic::note(v.origin->range, v.origin->text + " as " + name_of(v.type)));
+}
+
+}  // namespace safegi::detail

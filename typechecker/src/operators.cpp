@@ -1,0 +1,296 @@
+// Binary operators: GLSL's shape rules, then dimensions (Abelian group) and
+// the affine rules of points, vectors, directions and normals.
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+namespace {
+
+bool is_arith(ast::BinaryOp op) {
+  return op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div;
+}
+
+const char* verb(ast::BinaryOp op) {
+  switch (op) {
+    case ast::BinaryOp::Add: return "add";
+    case ast::BinaryOp::Sub: return "subtract";
+    case ast::BinaryOp::Mul: return "multiply";
+    case ast::BinaryOp::Div: return "divide";
+    case ast::BinaryOp::Mod: return "take the remainder of";
+    default: return "compare";
+  }
+}
+
+bool vectorish(Geometry g) { return g == Geometry::vector || g == Geometry::direction || g == Geometry::normal; }
+
+// GLSL's result shape of an arithmetic operator, or nothing when the operands do not fit.
+std::optional<Type> arithmetic_shape(ast::BinaryOp op, const Type& a, const Type& b) {
+  if (a.is_array() || b.is_array() || !a.is_numeric() || !b.is_numeric()) return std::nullopt;
+  Scalar scalar;
+  if (implicitly_converts(a.scalar, b.scalar)) scalar = b.scalar;
+  else if (implicitly_converts(b.scalar, a.scalar)) scalar = a.scalar;
+  else return std::nullopt;
+  if (op == ast::BinaryOp::Mod && (a.scalar == Scalar::float_ || a.scalar == Scalar::double_ ||
+                                   b.scalar == Scalar::float_ || b.scalar == Scalar::double_))
+    return std::nullopt;
+  auto with = [&](Type t) {
+    t.scalar = scalar;
+    return t.plain();
+  };
+  if (a.shape == Shape::scalar) return with(b);
+  if (b.shape == Shape::scalar) return with(a);
+  if (a.shape == Shape::vector && b.shape == Shape::vector) {
+    if (a.rows != b.rows) return std::nullopt;
+    return with(a);
+  }
+  if (a.shape == Shape::matrix && b.shape == Shape::matrix) {
+    if (op == ast::BinaryOp::Mul) {
+      if (a.columns != b.rows) return std::nullopt;
+      return Type::matrix_of(scalar, b.columns, a.rows);
+    }
+    if (a.columns != b.columns || a.rows != b.rows) return std::nullopt;
+    return with(a);
+  }
+  if (op != ast::BinaryOp::Mul) return std::nullopt;
+  if (a.shape == Shape::matrix && b.shape == Shape::vector) {
+    if (a.columns != b.rows) return std::nullopt;
+    return Type::vector_of(scalar, a.rows);
+  }
+  if (a.shape == Shape::vector && b.shape == Shape::matrix) {
+    if (a.rows != b.rows) return std::nullopt;
+    return Type::vector_of(scalar, b.columns);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void Checker::operand_mismatch(const std::string& message, const Value& lhs, const Value& rhs, SourceRange op_range,
+                               const std::string& hint, const char* code) {
+  Diagnostic d = Diagnostic::error(op_range, message).with_code(code).with_highlight(lhs.range).with_highlight(rhs.range);
+  add_origin_note(d, lhs);
+  add_origin_note(d, rhs);
+  if (!hint.empty()) d.with_hint(hint);
+  report(std::move(d));
+}
+
+Value Checker::binary(const ast::BinaryExpr& e) {
+  Value lhs = expr(e.lhs);
+  Value rhs = expr(e.rhs);
+  return arithmetic(&e, e.op, lhs, rhs, e.op_range, e.range);
+}
+
+Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& lhs, const Value& rhs,
+                          SourceRange op_range, SourceRange range) {
+  if (lhs.type.is_error() || rhs.type.is_error()) return error_value(range);
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  Value out;
+  out.range = range;
+  auto invalid = [&]() {
+    operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) + ")", lhs, rhs,
+                     op_range, "", "E-INVALID-OPERANDS");
+    return error_value(range);
+  };
+  switch (op) {
+    case ast::BinaryOp::Comma: return rhs;
+    case ast::BinaryOp::LogAnd:
+    case ast::BinaryOp::LogOr:
+    case ast::BinaryOp::LogXor: {
+      const Type boolean = Type::scalar_of(Scalar::bool_);
+      if (!same_glsl_type(a.plain(), boolean) || !same_glsl_type(b.plain(), boolean)) return invalid();
+      out.type = boolean;
+      return out;
+    }
+    case ast::BinaryOp::Lt:
+    case ast::BinaryOp::Gt:
+    case ast::BinaryOp::Le:
+    case ast::BinaryOp::Ge:
+    case ast::BinaryOp::Eq:
+    case ast::BinaryOp::Ne: {
+      const bool ordering = op != ast::BinaryOp::Eq && op != ast::BinaryOp::Ne;
+      Type pa = a, pb = b;
+      if (implicitly_converts(pa.scalar, pb.scalar)) pa.scalar = pb.scalar;
+      else if (implicitly_converts(pb.scalar, pa.scalar)) pb.scalar = pa.scalar;
+      if (!same_glsl_type(pa.plain(), pb.plain())) return invalid();
+      if (ordering && !(a.shape == Shape::scalar && a.is_numeric() && !a.is_array())) return invalid();
+      if (!ordering && (a.shape == Shape::opaque || a.shape == Shape::void_)) return invalid();
+      // Comparisons need equal dimensions; a zero literal compares with anything.
+      const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
+      if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range, physics_hint(da, db),
+                         "E-DIMENSION-MISMATCH");
+        return error_value(range);
+      }
+      if (!consistent(a.from, b.from)) {
+        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b) + ": they are in different spaces", lhs, rhs,
+                         op_range, space_hint(a.from, b.from), "E-SPACE-MISMATCH");
+        return error_value(range);
+      }
+      out.type = Type::scalar_of(Scalar::bool_);
+      return out;
+    }
+    case ast::BinaryOp::BitAnd:
+    case ast::BinaryOp::BitXor:
+    case ast::BinaryOp::BitOr:
+    case ast::BinaryOp::Shl:
+    case ast::BinaryOp::Shr: {
+      if (!a.is_integer() || !b.is_integer() || a.is_array() || b.is_array() || a.shape == Shape::matrix ||
+          b.shape == Shape::matrix)
+        return invalid();
+      const bool shift = op == ast::BinaryOp::Shl || op == ast::BinaryOp::Shr;
+      if (!shift && a.shape == Shape::vector && b.shape == Shape::vector && a.rows != b.rows) return invalid();
+      if (shift && a.shape == Shape::scalar && b.shape == Shape::vector) return invalid();
+      out.type = (shift || a.shape == Shape::vector) ? a.plain() : b.plain();
+      if (!shift && a.scalar != b.scalar) {
+        if (!implicitly_converts(a.scalar, b.scalar) && !implicitly_converts(b.scalar, a.scalar)) return invalid();
+        out.type.scalar = Scalar::uint_;
+      }
+      if (lhs.constant && rhs.constant) {
+        const long long x = *lhs.constant, y = *rhs.constant;
+        if (op == ast::BinaryOp::BitAnd) out.constant = x & y;
+        if (op == ast::BinaryOp::BitOr) out.constant = x | y;
+        if (op == ast::BinaryOp::BitXor) out.constant = x ^ y;
+        if (shift && y >= 0 && y < 32) out.constant = op == ast::BinaryOp::Shl ? (x << y) & 0xffffffffll : x >> y;
+      }
+      return out;
+    }
+    default: break;
+  }
+
+  // + - * / %
+  std::optional<Type> shape = arithmetic_shape(op, a, b);
+  const bool map_operand = is_map(a.geometry) || is_map(b.geometry);
+  if (map_operand && op == ast::BinaryOp::Mul) {
+    // `m * x` and `m2 * m1` are the map operations of the built-in table.
+    const bool composing = b.shape == Shape::matrix;
+    std::optional<Value> v = geometric_operator(node, composing ? "compose" : "transform", lhs, rhs, range);
+    if (v) return *v;
+    return error_value(range);
+  }
+  if (!shape) return invalid();
+  if (a.geometry != Geometry::none || b.geometry != Geometry::none) {
+    if (is_arith(op)) return geometric_arithmetic(op, lhs, rhs, *shape, op_range, range);
+  }
+
+  const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
+  out.type = *shape;
+  if (op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mod) {
+    if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+      operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
+                       physics_hint(da, db), "E-DIMENSION-MISMATCH");
+      return error_value(range);
+    }
+    if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
+    else out.type.dim = lhs.zero ? db : da;
+    out.type.dim.spelling.clear();
+    out.zero = lhs.zero && rhs.zero;
+  } else {
+    std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
+    if (!d) {
+      operand_mismatch("dimension exponent overflows in this product", lhs, rhs, op_range, "", "E-DIMENSION-OVERFLOW");
+      return error_value(range);
+    }
+    out.type.dim = *d;
+    out.zero = op == ast::BinaryOp::Mul && (lhs.zero || rhs.zero);
+    if (out.zero) out.type.dim = DimSlot::zero();
+  }
+  if (lhs.constant && rhs.constant && out.type.shape == Shape::scalar && out.type.is_integer()) {
+    const long long x = *lhs.constant, y = *rhs.constant;
+    if (op == ast::BinaryOp::Add) out.constant = x + y;
+    if (op == ast::BinaryOp::Sub) out.constant = x - y;
+    if (op == ast::BinaryOp::Mul) out.constant = x * y;
+    if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0) out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
+    if (out.constant && (*out.constant > 0xffffffffll || *out.constant < -0x80000000ll)) out.constant.reset();
+  }
+  return out;
+}
+
+Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape,
+                                    SourceRange op_range, SourceRange range) {
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  const Geometry ga = a.geometry, gb = b.geometry;
+  const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
+  Value out;
+  out.range = range;
+  out.type = shape;
+  auto reject = [&](const std::string& message, const std::string& hint, const char* code) {
+    operand_mismatch(message, lhs, rhs, op_range, hint, code);
+    return error_value(range);
+  };
+  const std::string both = name_of(a) + " and " + name_of(b);
+  const SpaceSlot space = a.from.state != SpaceSlot::State::unknown ? a.from : b.from;
+
+  if (op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub) {
+    const bool add = op == ast::BinaryOp::Add;
+    if (ga == Geometry::point && gb == Geometry::point && add)
+      return reject("cannot add two points (" + both + ")", "subtract them to get a vector, or average them with mix(p, q, 0.5)",
+                    "E-POINT-ARITHMETIC");
+    if (gb == Geometry::point && ga != Geometry::point && !add)
+      return reject("cannot subtract a point from " + name_of(a), "only point - point and point - vector are defined",
+                    "E-POINT-ARITHMETIC");
+    if (!consistent(a.from, b.from))
+      return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
+                    "E-SPACE-MISMATCH");
+    if (!lhs.zero && !rhs.zero && !consistent(da, db))
+      return reject(std::string("cannot ") + verb(op) + " " + both, physics_hint(da, db), "E-DIMENSION-MISMATCH");
+    const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
+    out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
+    out.type.dim.spelling.clear();
+    out.type.from = space;
+    if (ga == Geometry::point && gb == Geometry::point) {
+      out.type.geometry = Geometry::vector;  // point - point
+    } else if (ga == Geometry::point || gb == Geometry::point) {
+      out.type.geometry = Geometry::point;   // point ± displacement
+    } else if (ga == Geometry::spectrum || gb == Geometry::spectrum) {
+      out.type.geometry = (ga == Geometry::spectrum || ga == Geometry::none) && (gb == Geometry::spectrum || gb == Geometry::none)
+                              ? Geometry::spectrum : Geometry::none;
+      out.type.from = SpaceSlot::unknown();
+    } else if (ga == Geometry::hpoint || gb == Geometry::hpoint) {
+      out.type.geometry = Geometry::hpoint;
+      out.type.dim = DimSlot::unknown();
+    } else if (vectorish(ga) || vectorish(gb)) {
+      out.type.geometry = Geometry::vector;  // a sum of directions is no longer unit length
+    }
+    return out;
+  }
+
+  // * and /
+  const bool a_scalar = a.shape == Shape::scalar, b_scalar = b.shape == Shape::scalar;
+  if (ga == Geometry::point || gb == Geometry::point)
+    return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
+                  "subtract another point to get a vector, which can be scaled", "E-POINT-ARITHMETIC");
+  if (op == ast::BinaryOp::Div && !b_scalar && gb != Geometry::spectrum && gb != Geometry::none)
+    return reject("cannot divide by " + name_of(b), "", "E-INVALID-OPERANDS");
+  std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
+  if (!d) return reject("dimension exponent overflows in this product", "", "E-DIMENSION-OVERFLOW");
+  out.type.dim = *d;
+  const Geometry g = a_scalar ? gb : ga;
+  const Type& geo = a_scalar ? b : a;
+  if (a_scalar || b_scalar) {
+    if (vectorish(g)) {
+      out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
+      out.type.from = geo.from;
+    } else if (g == Geometry::hpoint) {
+      out.type.geometry = Geometry::hpoint;
+      out.type.from = geo.from;
+      out.type.dim = DimSlot::unknown();
+    } else if (g == Geometry::spectrum) {
+      out.type.geometry = Geometry::spectrum;
+    }
+    return out;
+  }
+  // Component-wise products of two vec3-shaped values.
+  if ((ga == Geometry::spectrum || ga == Geometry::none) && (gb == Geometry::spectrum || gb == Geometry::none)) {
+    out.type.geometry = Geometry::spectrum;
+    return out;
+  }
+  if (!consistent(a.from, b.from))
+    return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
+                  "E-SPACE-MISMATCH");
+  return out;  // e.g. vector * vector component-wise: a plain vec3 of the product dimension
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,172 @@
+#include "safegi/typechecker/type.hpp"
+
+namespace safegi {
+
+const char* geometry_name(Geometry g) {
+  switch (g) {
+    case Geometry::none: return "";
+    case Geometry::spectrum: return "spectrum";
+    case Geometry::point: return "point";
+    case Geometry::vector: return "vector";
+    case Geometry::direction: return "direction";
+    case Geometry::normal: return "normal";
+    case Geometry::hpoint: return "hpoint";
+    case Geometry::map: return "map";
+    case Geometry::rigidmap: return "rigidmap";
+    case Geometry::projmap: return "projmap";
+  }
+  return "";
+}
+
+bool has_space(Geometry g) {
+  return g == Geometry::point || g == Geometry::vector || g == Geometry::direction || g == Geometry::normal ||
+         g == Geometry::hpoint || is_map(g);
+}
+
+bool is_map(Geometry g) { return g == Geometry::map || g == Geometry::rigidmap || g == Geometry::projmap; }
+
+Type Type::plain() const {
+  Type t = *this;
+  t.geometry = Geometry::none;
+  t.dim = DimSlot::unknown();
+  t.from = t.to = SpaceSlot::unknown();
+  t.texel = nullptr;
+  return t;
+}
+
+Type Type::element() const {
+  Type t = *this;
+  if (!t.array.empty()) t.array.erase(t.array.begin());
+  return t;
+}
+
+bool same_glsl_type(const Type& a, const Type& b) {
+  return a.shape == b.shape && a.scalar == b.scalar && a.rows == b.rows && a.columns == b.columns &&
+         a.opaque == b.opaque && a.structure == b.structure && a.array == b.array;
+}
+
+bool implicitly_converts(Scalar from, Scalar to) {
+  if (from == to) return true;
+  switch (from) {
+    case Scalar::int_: return to == Scalar::uint_ || to == Scalar::float_ || to == Scalar::double_;
+    case Scalar::uint_: return to == Scalar::float_ || to == Scalar::double_;
+    case Scalar::float_: return to == Scalar::double_;
+    default: return false;
+  }
+}
+
+namespace {
+
+const char* scalar_word(Scalar s) {
+  switch (s) {
+    case Scalar::bool_: return "bool";
+    case Scalar::int_: return "int";
+    case Scalar::uint_: return "uint";
+    case Scalar::float_: return "float";
+    case Scalar::double_: return "double";
+    case Scalar::none: break;
+  }
+  return "?";
+}
+
+const char* vector_prefix(Scalar s) {
+  switch (s) {
+    case Scalar::bool_: return "b";
+    case Scalar::int_: return "i";
+    case Scalar::uint_: return "u";
+    case Scalar::double_: return "d";
+    default: return "";
+  }
+}
+
+std::string array_suffix(const Type& t) {
+  std::string out;
+  for (int n : t.array) out += n < 0 ? "[]" : "[" + std::to_string(n) + "]";
+  return out;
+}
+
+std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
+                       const std::vector<std::string>* space_params) {
+  switch (s.state) {
+    case SpaceSlot::State::unknown: return "?";
+    case SpaceSlot::State::known: return s.id < registry.spaces().size() ? registry.space_name(s.id) : "?";
+    case SpaceSlot::State::generic:
+      return space_params && s.id < space_params->size() ? (*space_params)[s.id] : "S" + std::to_string(s.id);
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string glsl_name(const Type& t) {
+  std::string base;
+  switch (t.shape) {
+    case Shape::error: return "<error>";
+    case Shape::void_: base = "void"; break;
+    case Shape::scalar: base = scalar_word(t.scalar); break;
+    case Shape::vector: base = std::string(vector_prefix(t.scalar)) + "vec" + std::to_string(t.rows); break;
+    case Shape::matrix:
+      base = std::string(t.scalar == Scalar::double_ ? "d" : "") + "mat" + std::to_string(t.columns);
+      if (t.rows != t.columns) base += "x" + std::to_string(t.rows);
+      break;
+    case Shape::opaque: base = t.opaque; break;
+    case Shape::structure: base = t.structure ? t.structure->name : "struct"; break;
+  }
+  return base + array_suffix(t);
+}
+
+std::string dim_name(const DimSlot& d, const DimensionRegistry& registry, const std::vector<std::string>* dim_params) {
+  switch (d.state) {
+    case DimSlot::State::unknown: return "?";
+    case DimSlot::State::zero: return "0";
+    case DimSlot::State::known: return d.spelling.empty() ? registry.format(d.value) : d.spelling;
+    case DimSlot::State::generic: {
+      std::string out;
+      auto var_name = [&](DimVarId v) {
+        return dim_params && v < dim_params->size() ? (*dim_params)[v] : "D" + std::to_string(v);
+      };
+      for (const auto& [v, k] : d.term.variables) {
+        if (!out.empty()) out += "·";
+        out += var_name(v);
+        if (k != 1) out += "^" + std::to_string(k);
+      }
+      if (!d.term.constant.is_dimensionless()) {
+        if (!out.empty()) out += "·";
+        out += registry.format(d.term.constant);
+      }
+      return out.empty() ? "1" : out;
+    }
+  }
+  return "?";
+}
+
+std::string type_name(const Type& t, const DimensionRegistry& registry, const std::vector<std::string>* dim_params,
+                      const std::vector<std::string>* space_params) {
+  if (t.shape == Shape::error) return "<error>";
+  const std::string suffix = array_suffix(t);
+  Type bare = t;
+  bare.array.clear();
+  if (t.geometry != Geometry::none) {
+    std::string out = geometry_name(t.geometry);
+    out += "<";
+    if (t.geometry == Geometry::spectrum) {
+      out += dim_name(t.dim, registry, dim_params);
+    } else {
+      out += space_text(t.from, registry, space_params);
+      if (is_map(t.geometry)) out += ", " + space_text(t.to, registry, space_params);
+      if (t.geometry == Geometry::vector && t.dim.state != DimSlot::State::unknown) {
+        const std::optional<Dimension> length = registry.find_dimension("length");
+        if (!(t.dim.is_known() && length && t.dim.value == *length))
+          out += ", " + dim_name(t.dim, registry, dim_params);
+      }
+    }
+    return out + ">" + suffix;
+  }
+  if (t.texel) return glsl_name(bare) + "<" + type_name(*t.texel, registry, dim_params, space_params) + ">" + suffix;
+  if (t.dim.state == DimSlot::State::unknown || t.dim.state == DimSlot::State::zero ||
+      (t.shape != Shape::scalar && t.shape != Shape::vector && t.shape != Shape::matrix))
+    return glsl_name(t);
+  return glsl_name(bare) + "<" + dim_name(t.dim, registry, dim_params) + ">" + suffix;
+}
+
+}  // namespace safegi

@@ -1,0 +1,47 @@
+#include "test_support.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <safegi/diagnostics/render.hpp>
+#include <safegi/lexer/lexer.hpp>
+
+namespace safegi::testing {
+
+std::vector<std::string> CheckedSource::messages() const {
+  std::vector<std::string> out;
+  for (const Diagnostic& d : diagnostics.diagnostics())
+    out.push_back(std::string(severity_name(d.severity)) + ": " + d.message);
+  return out;
+}
+
+std::string CheckedSource::rendered() const { return render_text(diagnostics.diagnostics(), sources); }
+
+std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptions options) {
+  auto c = std::make_unique<CheckedSource>();
+  if (options.prelude) {
+    std::ifstream in(SAFEGI_PRELUDE_FILE);
+    std::stringstream text;
+    text << in.rdbuf();
+    FileId prelude = c->sources.add_file("prelude.sgl", text.str());
+    c->tokens = tokenize(c->sources, prelude, c->diagnostics);
+    if (!c->tokens.empty()) c->tokens.pop_back();  // its eof
+  }
+  FileId file = c->sources.add_file("test.frag", std::string(source));
+  std::vector<Token> main = tokenize(c->sources, file, c->diagnostics);
+  c->tokens.insert(c->tokens.end(), main.begin(), main.end());
+  c->parsed = parse(c->tokens, c->diagnostics);
+  CheckOptions check_options;
+  check_options.stage = options.stage;
+  check_options.strict = options.strict;
+  c->result = check(*c->parsed.unit, check_options, c->diagnostics);
+  return c;
+}
+
+std::string declared_type(const CheckedSource& c, std::string_view name) {
+  for (const auto& [decl, type] : c.result.declarators)
+    if (decl->name == name) return c.result.describe(type);
+  return "<not declared>";
+}
+
+}  // namespace safegi::testing
