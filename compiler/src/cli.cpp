@@ -60,11 +60,12 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   std::size_t error_limit = 0;
   app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
   app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
-  app.add_option("-o", outputs, "write the plain GLSL of each input, in order ('-' for stdout)");
+  // Each occurrence of a repeatable flag takes one value (`-D A file.frag`).
+  app.add_option("-o", outputs, "write the plain GLSL of each input, in order ('-' for stdout)")->allow_extra_args(false);
   app.add_option("--symbols", symbols_path, "write the JSON symbol table ('-' for stdout)");
-  app.add_option("-I", include_paths, "add an #include search directory");
-  app.add_option("-D", defines, "define a macro: NAME or NAME=value");
-  app.add_option("-U", undefines, "undefine a macro");
+  app.add_option("-I", include_paths, "add an #include search directory")->allow_extra_args(false);
+  app.add_option("-D", defines, "define a macro: NAME or NAME=value")->allow_extra_args(false);
+  app.add_option("-U", undefines, "undefine a macro")->allow_extra_args(false);
   app.add_flag("--strict", strict, "warn about unannotated interface variables");
   app.add_flag("--Werror", werror, "treat warnings as errors (also -Werror)");
   app.add_flag("-w", no_warnings, "suppress warnings");
