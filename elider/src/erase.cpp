@@ -30,10 +30,16 @@ struct Edit {
   }
 };
 
+// The line breaks of `text`, and the indentation after the last one, so a
+// rewritten span that crossed lines still crosses them.
 std::string newlines_of(std::string_view text) {
   std::string out;
   for (char c : text)
     if (c == '\n') out += c;
+  if (const std::size_t last = text.find_last_of('\n'); last != std::string_view::npos) {
+    std::string_view rest = text.substr(last + 1);
+    out.append(rest.substr(0, rest.find_first_not_of(" \t")));
+  }
   return out;
 }
 
@@ -302,7 +308,7 @@ class Eraser {
 
   // `#line N` makes the next line N from GLSL 3.30 / ES 3.00 on, N + 1 before.
   std::uint32_t line_directive_number(std::uint32_t next_line) const {
-    const bool old_semantics = in_.preprocessed.version == 100 || (!in_.preprocessed.es && in_.preprocessed.version < 330);
+    const bool old_semantics = !in_.preprocessed.es && in_.preprocessed.version != 100 && in_.preprocessed.version < 330;
     return old_semantics ? next_line - 1 : next_line;
   }
 
