@@ -11,16 +11,16 @@
 namespace safegi {
 namespace {
 
-struct Run {
+struct CliRun {
   int status = 0;
   std::string out, err;
 };
 
-Run run(std::vector<std::string> args, const std::string& stdin_text = {}) {
+CliRun run(std::vector<std::string> args, const std::string& stdin_text = {}) {
   std::istringstream in(stdin_text);
   std::ostringstream out, err;
   CliStreams io{in, out, err, false};
-  Run r;
+  CliRun r;
   r.status = run_safeglslc(args, io);
   r.out = out.str();
   r.err = err.str();
@@ -28,13 +28,13 @@ Run run(std::vector<std::string> args, const std::string& stdin_text = {}) {
 }
 
 TEST(Safeglslc, NoInputIsAUsageError) {
-  Run r = run({});
+  CliRun r = run({});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("files is required"), std::string::npos) << r.err;
 }
 
 TEST(Safeglslc, HelpListsTheFlags) {
-  Run r = run({"--help"});
+  CliRun r = run({"--help"});
   EXPECT_EQ(r.status, 0);
   for (const char* flag : {"-S", "-o", "--symbols", "-I", "-D", "-U", "--Werror", "--error-limit", "--diagnostics-format", "--version"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
@@ -44,7 +44,7 @@ TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "safeglslc_cli_test";
   std::filesystem::create_directories(dir);
   const std::string glsl = (dir / "out.frag.glsl").string(), json = (dir / "out.json").string();
-  Run r = run({"-", "-S", "frag", "-o", glsl, "--symbols", json},
+  CliRun r = run({"-", "-S", "frag", "-o", glsl, "--symbols", json},
               "#version 330 core\n#include <safegi/prelude.sgl>\nuniform float<length> d;\nout vec4 c;\nvoid main() { c = vec4(d); }\n");
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream g(glsl), j(json);
@@ -57,7 +57,7 @@ TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
 }
 
 TEST(Safeglslc, UnwritableOutputIsAnIoError) {
-  Run r = run({"-", "-S", "frag", "-o", "/nonexistent-dir/x.glsl"}, "#version 330 core\nvoid main() {}\n");
+  CliRun r = run({"-", "-S", "frag", "-o", "/nonexistent-dir/x.glsl"}, "#version 330 core\nvoid main() {}\n");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
 }
