@@ -54,6 +54,36 @@ struct StageWork {
   bool ok = false;
 };
 
+// Diagnostics are text for terminals and JSON: bytes that are not UTF-8 (a
+// stray byte of the source quoted in a message, a file name) become `\xNN`.
+std::string valid_utf8(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
+    bool ok = length != 0 && i + length <= text.size();
+    for (std::size_t k = 1; ok && k < length; ++k) ok = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (ok) {
+      out.append(text.substr(i, length));
+      i += length;
+    } else {
+      static const char* digits = "0123456789ABCDEF";
+      out += "\\x";
+      out += digits[byte >> 4];
+      out += digits[byte & 0xF];
+      ++i;
+    }
+  }
+  return out;
+}
+
+void make_printable(Diagnostic& d) {
+  d.message = valid_utf8(d.message);
+  d.hint = valid_utf8(d.hint);
+  for (Diagnostic& note : d.notes) make_printable(note);
+}
+
 }  // namespace
 
 std::optional<Stage> stage_from_name(std::string_view name) {
@@ -130,7 +160,7 @@ CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOpt
   for (std::size_t i = 0; i < sources.size(); ++i) {
     StageWork& w = work[i];
     w.source = &sources[i];
-    w.file = manager->add_file(sources[i].path, sources[i].text);
+    w.file = manager->add_file(valid_utf8(sources[i].path), sources[i].text);
     std::optional<Stage> stage = sources[i].stage ? sources[i].stage : stage_from_path(sources[i].path);
     if (!stage || *stage == Stage::unknown) {
       diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
@@ -196,6 +226,7 @@ CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOpt
     table.stages.clear();
   }
   result.diagnostics = diags.diagnostics();
+  for (Diagnostic& d : result.diagnostics) make_printable(d);
   result.sources = std::move(manager);
   return result;
 }
