@@ -200,6 +200,7 @@ void Preprocessor::apply_version() {
   define_predefined("__LINE__", "", Macro::Builtin::line);
   define_predefined("__FILE__", "", Macro::Builtin::file);
   define_predefined("__VERSION__", save(std::to_string(unit_.version)));
+  for (const std::string& extension : options_.extension_macros) define_predefined(save(extension), "1");
   if (unit_.es) {
     define_predefined("GL_ES", "1");
     define_predefined("GL_es_profile", "1");
@@ -238,6 +239,7 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
     return;
   }
   extra_tokens_warning(line, 3, "extension");
+  if (name == "GL_EXT_debug_printf") strings_allowed_ = behavior != "disable";
   std::uint32_t groups = extension_groups_enabled_by(name);
   if (behavior == "disable") {
     unit_.keywords.extension_groups &= ~groups;
@@ -296,11 +298,14 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
       diagnostics_.report(Diagnostic::warning(expanded[2].token.range, "extra tokens at end of #line directive"));
     }
   }
+  // Before GLSL 3.30 (desktop), `#line N` named the directive's own line, so
+  // the next line is N + 1 (glslang does the same).
+  std::uint32_t next_line_number = result.line + (!unit_.es && unit_.version < 330 ? 1 : 0);
   std::uint32_t next_line = line_end_offset(last);
   std::string_view text = sources_.text(f.file);
   if (next_line < text.size() && text[next_line] == '\r') ++next_line;
   if (next_line < text.size() && text[next_line] == '\n') ++next_line;
-  sources_.add_line_directive(f.file, next_line, result.line, result.file_name, result.source_string);
+  sources_.add_line_directive(f.file, next_line, next_line_number, result.file_name, result.source_string);
   unit_.line_directives.push_back(std::move(result));
 }
 

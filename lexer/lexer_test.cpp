@@ -90,7 +90,8 @@ TEST_F(LexerTest, FloatLiterals) {
                 Row{".5e2", K::float_literal}, Row{"1.0f", K::float_literal}, Row{"1.F", K::float_literal},
                 Row{"1e3f", K::float_literal}, Row{"1.0lf", K::double_literal}, Row{"2.LF", K::double_literal},
                 Row{"1e-2lf", K::double_literal}, Row{"1.5hf", K::float16_literal}, Row{"0.0", K::float_literal},
-                Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}}) {
+                Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}, Row{"1.0lF", K::double_literal},
+                Row{"1.0Lf", K::double_literal}, Row{"2.0hF", K::float16_literal}, Row{"1e+5", K::float_literal}}) {
     auto tokens = lex(r.text);
     ASSERT_EQ(tokens.size(), 2u) << r.text;
     EXPECT_EQ(tokens[0].kind, r.kind) << r.text;
@@ -260,6 +261,14 @@ TEST_F(LexerTest, RestOfLineAndHeaderName) {
   ASSERT_TRUE(header);
   EXPECT_EQ(header->text, "<a/b.h>");
   EXPECT_EQ(lexer.next().kind, K::eof);
+}
+
+TEST_F(LexerTest, ByteOrderMarkIsSkipped) {
+  auto tokens = lex("\xEF\xBB\xBFx");
+  ASSERT_EQ(tokens.size(), 2u);
+  EXPECT_EQ(tokens[0].text, "x");
+  EXPECT_EQ(tokens[0].range.begin.column, 4u);
+  EXPECT_EQ(errors(), "");
 }
 
 TEST_F(LexerTest, EofRepeats) {

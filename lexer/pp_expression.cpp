@@ -129,7 +129,7 @@ class ExpressionEvaluator {
           }
           return 0;
         }
-        if (a == INT32_MIN && b == -1) return kind == TokenKind::slash ? a : 0;
+        if (a == INT32_MIN && b == -1) return 0;  // overflows; glslang yields 0
         return wrap(static_cast<std::uint64_t>(kind == TokenKind::slash ? a / b : a % b));
       default: return 0;
     }
@@ -172,6 +172,10 @@ class ExpressionEvaluator {
       case TokenKind::uint64_literal:
       case TokenKind::int16_literal:
       case TokenKind::uint16_literal: {
+        if (NumericLiteralCheck check = check_numeric_literal(t->text); !check.error.empty()) {
+          fail(t->range, check.error, t->expansion);
+          return 0;
+        }
         auto value = integer_literal_value(t->text);
         if (!value) {
           fail(t->range, "invalid integer literal '" + std::string(t->text) + "'", t->expansion);

@@ -42,14 +42,15 @@ Token Preprocessor::get(FileState& f) {
 
 std::vector<Token> Preprocessor::read_line(FileState& f) {
   std::vector<Token> line;
-  for (;;) {
-    Token t = get(f);
-    if (t.at_line_start || t.kind == TokenKind::eof) {
-      unget(f, t);
-      return line;
-    }
-    line.push_back(t);
+  if (f.peeked) {
+    if (f.peeked->at_line_start || f.peeked->kind == TokenKind::eof) return line;
+    line.push_back(*f.peeked);
+    f.peeked.reset();
   }
+  // The token after the line is not lexed here: whether its errors are
+  // reported depends on what this directive decides (a false #if skips it).
+  while (!f.lexer.next_starts_line()) line.push_back(f.lexer.next());
+  return line;
 }
 
 std::uint32_t Preprocessor::line_end_offset(SourceLocation at) const {
@@ -124,11 +125,8 @@ void Preprocessor::skip_group(FileState& f) {
       return;
     }
     if (t.kind != TokenKind::hash || !t.at_line_start) continue;
+    if (f.lexer.next_starts_line()) continue;
     Token name = get(f);
-    if (name.at_line_start || name.kind == TokenKind::eof) {
-      unget(f, name);
-      continue;
-    }
     DirectiveKind kind = directive_kind(name.text);
     if (kind == DirectiveKind::if_ || kind == DirectiveKind::ifdef || kind == DirectiveKind::ifndef) {
       ++depth;
@@ -149,12 +147,11 @@ void Preprocessor::skip_group(FileState& f) {
 }
 
 void Preprocessor::handle_directive(FileState& f, const Token& hash) {
-  Token name = get(f);
-  if (name.at_line_start || name.kind == TokenKind::eof) {  // `#` alone: the null directive
-    unget(f, name);
+  if (f.lexer.next_starts_line()) {  // `#` alone: the null directive
     record_directive(DirectiveKind::null_directive, hash, hash.range.end);
     return;
   }
+  Token name = get(f);
   directive_name_end_ = name.range.end;
   DirectiveKind kind = name.kind == TokenKind::identifier ? directive_kind(name.text) : DirectiveKind::unknown;
   if (kind != DirectiveKind::version) note_content(f);
@@ -333,7 +330,29 @@ void Preprocessor::emit(const PPToken& t) {
                                                              "' is only allowed at the start of a directive line")
                               .with_expansion(token.expansion));
       return;
+    case TokenKind::int_literal:
+    case TokenKind::uint_literal:
+    case TokenKind::int64_literal:
+    case TokenKind::uint64_literal:
+    case TokenKind::int16_literal:
+    case TokenKind::uint16_literal:
+    case TokenKind::float_literal:
+    case TokenKind::double_literal:
+    case TokenKind::float16_literal:
+      if (NumericLiteralCheck check = check_numeric_literal(token.text); !check.error.empty()) {
+        SourceRange range = token.range;
+        if (range.length() == token.text.size() && range.begin.line == range.end.line) {
+          range.begin.offset += check.error_begin;
+          range.begin.column += check.error_begin;
+          range.end = range.begin;
+          range.end.offset += check.error_end - check.error_begin;
+          range.end.column += check.error_end - check.error_begin;
+        }
+        diagnostics_.report(Diagnostic::error(range, std::move(check.error)).with_expansion(token.expansion));
+      }
+      break;
     case TokenKind::string_literal:
+      if (strings_allowed_) break;  // GL_EXT_debug_printf
       diagnostics_.report(
           Diagnostic::error(token.range, "string literals are not allowed in GLSL").with_expansion(token.expansion));
       return;

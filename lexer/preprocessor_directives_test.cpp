@@ -45,7 +45,7 @@ TEST_F(Directives, ExpressionOperators) {
                 Row{"+1 == 1", true}, Row{"defined A && defined(B)", true}, Row{"defined C", false},
                 Row{"!defined C", true}, Row{"0 && 1 / 0", false}, Row{"1 || 1 % 0", true},
                 Row{"A + B == 3", true}, Row{"2147483647 + 1 < 0", true},
-                Row{"0xFFFFFFFF == -1", true}, Row{"-2147483648 / -1 < 0", true}, Row{"1 << 31 < 0", true}}) {
+                Row{"0xFFFFFFFF == -1", true}, Row{"-2147483648 / -1 == 0", true}, Row{"1 << 31 < 0", true}}) {
     std::string source = std::string("#define A 1\n#define B 2\n#if ") + r.expression + "\nyes\n#else\nno\n#endif\n";
     EXPECT_EQ(output(source), r.value ? "yes" : "no") << r.expression;
   }
@@ -196,7 +196,7 @@ TEST_F(Directives, Error) {
 }
 
 TEST_F(Directives, Line) {
-  auto unit = run("a\n#line 100\nb __LINE__\n#line 7 3\nc __LINE__ __FILE__\n#define L 50\n#line L\nd __LINE__\n");
+  auto unit = run("#version 330\na\n#line 100\nb __LINE__\n#line 7 3\nc __LINE__ __FILE__\n#define L 50\n#line L\nd __LINE__\n");
   EXPECT_EQ(spell(unit), "a\nb 100\nc 7 3\nd 50");
   ASSERT_EQ(unit.line_directives.size(), 3u);
   EXPECT_EQ(unit.line_directives[1].source_string, 3u);
@@ -208,8 +208,13 @@ TEST_F(Directives, Line) {
             "^\n");
 }
 
+TEST_F(Directives, LineBefore330NamesTheDirectivesOwnLine) {
+  EXPECT_EQ(output("#version 150\n#line 3000\n__LINE__\n"), "3001");
+  EXPECT_EQ(output("#version 100\n#line 3000\n__LINE__\n"), "3000");
+}
+
 TEST_F(Directives, LineWithFileName) {
-  auto unit = run("#line 10 \"generated.glsl\"\nx\n");
+  auto unit = run("#version 450\n#line 10 \"generated.glsl\"\nx\n");
   diagnostics.error(unit.tokens[0].range, "e");
   EXPECT_EQ(errors(),
             "generated.glsl:10:1: error: e\n"
@@ -251,6 +256,33 @@ TEST_F(Directives, HashOutsideDirectivesAndStrings) {
             "main.glsl:2:1: error: string literals are not allowed in GLSL\n"
             "\"str\"\n"
             "^~~~~\n");
+}
+
+TEST_F(Directives, NumbersAreCheckedWhereTheyAreUsed) {
+  EXPECT_EQ(output("#define SUFFIX 1D\n#if 0\n3.5L 09 0x\n#endif\nfloat x = 1.0;\n"), "float x = 1.0 ;");
+  EXPECT_EQ(errors(), "");
+  output("#define SUFFIX 1D\nSUFFIX\n#if 1D\n#endif\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:1:17: error: invalid suffix 'D' on integer literal\n"
+            "#define SUFFIX 1D\n"
+            "                ^\n"
+            "main.glsl:2:1: note: in expansion of macro 'SUFFIX' (defined at main.glsl:1:9)\n"
+            "SUFFIX\n"
+            "^~~~~~\n"
+            "main.glsl:3:5: error: invalid suffix 'D' on integer literal\n"
+            "#if 1D\n"
+            "    ^~\n");
+}
+
+TEST_F(Directives, StringsWithDebugPrintf) {
+  auto unit = run("#version 450\n#extension GL_EXT_debug_printf : enable\ndebugPrintfEXT(\"x = %f\", x);\n");
+  EXPECT_EQ(unit.tokens[2].kind, TokenKind::string_literal);
+  EXPECT_EQ(errors(), "");
+}
+
+TEST_F(Directives, ExtensionMacros) {
+  options.extension_macros = {"GL_ARB_gpu_shader5"};
+  EXPECT_EQ(output("#ifdef GL_ARB_gpu_shader5\nyes GL_ARB_gpu_shader5\n#endif\n"), "yes 1");
 }
 
 TEST_F(Directives, DirectiveLinesAndSkippedRangesAreRecorded) {

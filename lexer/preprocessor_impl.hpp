@@ -29,7 +29,7 @@ class Preprocessor {
   // One file being read (the main file, an include, or the -D/-U prelude).
   struct FileState {
     FileState(SourceManager& s, FileId f, DiagnosticEngine& d, std::string p)
-        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false}) {}
+        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false, false}) {}
     FileId file;
     std::string path;
     Lexer lexer;
@@ -118,6 +118,7 @@ class Preprocessor {
   std::unordered_map<std::string, FileId> loaded_files_;
   std::unordered_set<std::string> once_files_;
   Stream main_stream_{{}, true};
+  bool strings_allowed_ = false;  // GL_EXT_debug_printf enabled
   bool saw_content_ = false;  // a token or non-#version directive in the main file
   bool version_applied_ = false;
   bool aborted_ = false;     // a limit was hit; wind down

@@ -57,6 +57,7 @@ class Dumper {
         if (c->void_arg) text("(void)");
         close();
         node(c->constructor_type, level + 1, "constructor");
+        node(c->callee_expr, level + 1, "callee");
         for (const Expr* a : c->args) node(a, level + 1);
         return;
       }

@@ -32,6 +32,16 @@ Parser::Parser(std::vector<PToken> tokens, DiagnosticEngine& diagnostics, const 
   }
   prev_end_ = tokens_.front().range.begin;
   push_scope();
+  // Built-in struct types (compatibility profile uniforms) and the opaque
+  // types of extensions glslang accepts in OpenGL GLSL but the lexer does not
+  // list as keywords; a program's own declaration shadows them.
+  for (const char* name : {"gl_DepthRangeParameters", "gl_PointParameters", "gl_MaterialParameters",
+                           "gl_LightSourceParameters", "gl_LightModelParameters", "gl_LightModelProducts",
+                           "gl_LightProducts", "gl_FogParameters", "accelerationStructureEXT",
+                           "accelerationStructureNV", "rayQueryEXT", "hitObjectNV"}) {
+    declare(name, NameKind::Type);
+  }
+  push_scope();  // the program's global scope
 }
 
 // ----------------------------------------------------------------- errors
@@ -604,6 +614,11 @@ TypeSpecifier* Parser::parse_type_specifier_nonarray() {
     type->form = annotated ? TypeSpecifier::Form::Annotated : TypeSpecifier::Form::Named;
     type->name = std::string(peek().text);
     type->name_range = advance().range;
+    if (!annotated && !is_type_name(type->name)) {
+      // Reported without unwinding: the declaration still parses, so its
+      // names exist and later uses do not cascade.
+      diagnostics_.report(Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'"));
+    }
     if (annotated) type->annotation = parse_annotation();
   } else {
     fail_expected("a type", "");

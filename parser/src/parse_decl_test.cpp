@@ -104,6 +104,20 @@ TEST(ParseDecl, Subroutines) {
       << dump;
 }
 
+TEST(ParseDecl, SubroutineArrayElementCall) {
+  EXPECT_EQ(dump_first("void f() { shade[1](n); }"),
+            "ExprStmt\n  CallExpr\n    callee: IndexExpr\n      IdentifierExpr shade\n      LiteralExpr 1\n"
+            "    IdentifierExpr n\n");
+}
+
+TEST(ParseDecl, UnknownTypeNameIsReportedOnceAndParsingGoesOn) {
+  auto parsed = parse_text("B x[1];\nvoid f(B y);\ngl_LightSourceParameters light;\n");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:1: error: unknown type name 'B'\nB x[1];\n^\n"
+            "test.glsl:2:8: error: unknown type name 'B'\nvoid f(B y);\n       ^\n");
+  EXPECT_EQ(parsed->unit().decls.size(), 3u);
+}
+
 TEST(ParseDecl, GlobalStraySemicolons) {
   auto parsed = parse_text("float a;; void f() {};");
   ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();

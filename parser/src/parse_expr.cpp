@@ -260,6 +260,12 @@ Expr* Parser::parse_postfix() {
         member->height = height_of({e});
         e = finish_expr(member, begin);
       }
+    } else if (at(T::LParen) && isa<IndexExpr>(e)) {  // subroutine array element: f[i](x)
+      auto* call = make<CallExpr>(begin);
+      call->callee_expr = e;
+      parse_call_args(call);
+      call->height = std::max(call->height, e->height + 1);
+      e = call;
     } else if (at(T::PlusPlus) || at(T::MinusMinus)) {
       auto* unary = make<UnaryExpr>(begin);
       unary->op = at(T::PlusPlus) ? UnaryOp::PostInc : UnaryOp::PostDec;

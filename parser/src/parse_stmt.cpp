@@ -38,7 +38,7 @@ void Parser::synchronize_global() {
     return;
   }
   synchronize_statement();
-  while (scopes_.size() > 1) pop_scope();
+  while (scopes_.size() > 2) pop_scope();  // built-ins + the global scope
 }
 
 Stmt* Parser::parse_statement_or_recover() {

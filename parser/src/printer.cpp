@@ -134,6 +134,8 @@ void GlslPrinter::expression(const Expr& e, int parent_precedence) {
       const auto& c = static_cast<const CallExpr&>(e);
       if (c.constructor_type) {
         type(*c.constructor_type);
+      } else if (c.callee_expr) {
+        expression(*c.callee_expr, 15);
       } else {
         out_ += c.callee;
       }

@@ -95,7 +95,8 @@ Context::Context(ContextOptions options) {
     throw ContextError("safegi::gl: no OpenGL " + std::to_string(options.major) + '.' +
                        std::to_string(options.minor) + " (or 3.3) core context on platform '" +
                        std::string(to_string(platform)) + "':\n" + why + kPlatformHint);
-  int version = load_gl_for(backend_.get(), backend_->loader());
+  cap_ = options.major * 10 + options.minor;
+  int version = load_gl_for(backend_.get(), backend_->loader(), cap_);
   if (version < 33) {
     forget_gl_owner(backend_.get());
     throw ContextError("safegi::gl: the " + std::string(to_string(backend_->platform)) +
@@ -123,6 +124,7 @@ Context& Context::operator=(Context&& other) noexcept {
     if (backend_) forget_gl_owner(backend_.get());
     backend_ = std::move(other.backend_);
     info_ = std::move(other.info_);
+    cap_ = other.cap_;
   }
   return *this;
 }
@@ -131,7 +133,7 @@ void Context::make_current() const {
   if (!backend_->make_current())
     throw ContextError("safegi::gl: could not make the " + std::string(to_string(backend_->platform)) +
                        " context current");
-  load_gl_for(backend_.get(), backend_->loader());
+  load_gl_for(backend_.get(), backend_->loader(), cap_);
 }
 
 const ContextInfo& Context::info() const { return info_; }

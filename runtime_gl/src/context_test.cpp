@@ -93,6 +93,15 @@ TEST(Context, FallsBackToCore33WhenTheRequestedVersionIsRefused) {
   // No driver offers 9.9; 3.3 core is the floor every platform tries next.
   Context context(ContextOptions{Platform::osmesa, 9, 9});
   EXPECT_GE(context.info().major * 10 + context.info().minor, 33);
+  EXPECT_NE(context.info().version.find("Core"), std::string::npos);
+}
+
+TEST(Context, ACore33RequestKeepsTo33) {
+  Context context(ContextOptions{Platform::osmesa, 3, 3});
+  EXPECT_EQ(context.info().major * 10 + context.info().minor, 33);
+  EXPECT_TRUE(GLAD_GL_VERSION_3_3);
+  EXPECT_FALSE(GLAD_GL_VERSION_4_1);
+  EXPECT_FALSE(GLAD_GL_VERSION_4_5);
 }
 
 }  // namespace

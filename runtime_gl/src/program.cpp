@@ -168,6 +168,18 @@ int Program::locate(Interface interface, std::string_view name, const ValueType*
   }
 }
 
+void Program::expect_source_hash(Stage stage, std::string_view hash) const {
+  for (const auto& entry : stages_) {
+    if (entry.stage != stage) continue;
+    if (entry.source_hash == hash) return;
+    throw BindingError(name_ + ": error: the handles were generated from " + entry.file + " with source hash " +
+                       std::string(hash) + ", but the program was built from source hash " +
+                       (entry.source_hash.empty() ? "(none)" : entry.source_hash) + "; regenerate the header");
+  }
+  throw BindingError(name_ + ": error: the handles expect a " + std::string(to_string(stage)) +
+                     " stage, which the program does not have");
+}
+
 int Program::array_size(std::string_view name) const {
   const Symbol* symbol = find(Interface::uniform_array, name, nullptr);
   return symbol && symbol->array_size ? *symbol->array_size : 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <utility>
 
 #include "safegi/runtime_gl/resources.hpp"
@@ -70,6 +71,22 @@ class ScopedEdit {
 };
 
 bool direct_state_access() { return GLAD_GL_VERSION_4_5 != 0; }
+
+std::string framebuffer_status_name(GLenum status) {
+  switch (status) {
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+      return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT (nothing attached)";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    default: {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "status 0x%04X", status);
+      return hex;
+    }
+  }
+}
 
 }  // namespace
 
@@ -205,11 +222,7 @@ void bind_framebuffer(unsigned framebuffer, const std::vector<int>& locations, i
   glDrawBuffers(count, buffers);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw ResourceError("safegi::gl: framebuffer incomplete (status 0x" + [&] {
-      char hex[9];
-      std::snprintf(hex, sizeof hex, "%04X", status);
-      return std::string(hex);
-    }() + ')');
+    throw ResourceError("safegi::gl: framebuffer incomplete: " + framebuffer_status_name(status));
   glViewport(0, 0, width, height);
 }
 

@@ -59,6 +59,17 @@ TEST_F(ResourcesTest, FramebufferAttachmentsMustMatchItsSize) {
   }
 }
 
+TEST_F(ResourcesTest, AnIncompleteFramebufferSaysWhy) {
+  framebuffer empty(2, 2);
+  try {
+    empty.bind();
+    FAIL();
+  } catch (const ResourceError& error) {
+    EXPECT_STREQ(error.what(),
+                 "safegi::gl: framebuffer incomplete: GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT (nothing attached)");
+  }
+}
+
 TEST_F(ResourcesTest, AFramebufferClearsIntoItsTypedAttachment) {
   texture2d<glm::vec4> texture(2, 2);
   framebuffer target(2, 2);

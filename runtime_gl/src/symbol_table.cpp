@@ -120,7 +120,7 @@ ValueType read_value_type(const Node& node) {
     case Kind::point: case Kind::vector: case Kind::direction: case Kind::normal: case Kind::hpoint:
       wanted_spaces = 1;
       break;
-    case Kind::map:
+    case Kind::map: case Kind::projective_map:
       wanted_spaces = 2;
       break;
     default:
@@ -316,7 +316,9 @@ json write_dimension(const Dimension& dimension) {
 void write_value_type(json& node, const ValueType& type) {
   node["kind"] = to_string(type.kind);
   node["glsl_type"] = type.glsl_type;
-  if (type.kind == Kind::scalar || type.kind == Kind::spectrum) node["dimension"] = write_dimension(type.dimension);
+  const bool dimensioned = type.kind == Kind::scalar || type.kind == Kind::spectrum;
+  if (dimensioned || (type.kind == Kind::vector && !type.dimension.exponents.empty()))
+    node["dimension"] = write_dimension(type.dimension);
   if (!type.spaces.empty()) node["spaces"] = type.spaces;
 }
 

@@ -35,27 +35,27 @@ struct world_point {
 namespace safegi::gl {
 
 template <>
-struct value_traits<testing::radiance_rgb> : detail::plain_traits<ScalarType::float32, 3, 1> {
+struct value_traits<testing::radiance_rgb> : detail::bitwise_traits<testing::radiance_rgb, glm::vec3> {
   static ValueType describe() { return {Kind::spectrum, "vec3", {testing::kRadiance, ""}, {}}; }
 };
 template <>
-struct value_traits<testing::irradiance_rgb> : detail::plain_traits<ScalarType::float32, 3, 1> {
+struct value_traits<testing::irradiance_rgb> : detail::bitwise_traits<testing::irradiance_rgb, glm::vec3> {
   static ValueType describe() { return {Kind::spectrum, "vec3", {testing::kIrradiance, ""}, {}}; }
 };
 template <>
-struct value_traits<testing::unitless_rgb> : detail::plain_traits<ScalarType::float32, 3, 1> {
+struct value_traits<testing::unitless_rgb> : detail::bitwise_traits<testing::unitless_rgb, glm::vec3> {
   static ValueType describe() { return {Kind::spectrum, "vec3", {}, {}}; }
 };
 template <>
-struct value_traits<testing::camera_from_world> : detail::plain_traits<ScalarType::float32, 4, 4> {
+struct value_traits<testing::camera_from_world> : detail::bitwise_traits<testing::camera_from_world, glm::mat4> {
   static ValueType describe() { return {Kind::map, "mat4", {}, {"world", "camera"}}; }
 };
 template <>
-struct value_traits<testing::ndc_point> : detail::plain_traits<ScalarType::float32, 3, 1> {
+struct value_traits<testing::ndc_point> : detail::bitwise_traits<testing::ndc_point, glm::vec3> {
   static ValueType describe() { return {Kind::point, "vec3", {}, {"ndc"}}; }
 };
 template <>
-struct value_traits<testing::world_point> : detail::plain_traits<ScalarType::float32, 3, 1> {
+struct value_traits<testing::world_point> : detail::bitwise_traits<testing::world_point, glm::vec3> {
   static ValueType describe() { return {Kind::point, "vec3", {}, {"world"}}; }
 };
 

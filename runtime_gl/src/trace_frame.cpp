@@ -1,9 +1,8 @@
-// Zero-cost evidence: one frame loop written once against the typed API, built
-// checked and unchecked (SAFEGI_GL_UNCHECKED) and linked with a glad loader
-// whose every GL entry point reports its name. The two builds must print the
-// same call trace; compare_traces.cmake diffs them under ctest.
-#include <array>
-#include <cstdio>
+// Zero-cost evidence: one frame loop written once against the typed API with
+// the typed library's types, built checked (SafeGI::typed) and unchecked
+// (SafeGI::typed_unchecked), each linked with a glad loader whose every GL
+// entry point reports its name. The two builds must print the same call trace;
+// compare_traces.cmake diffs them under ctest.
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -11,15 +10,13 @@
 
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/runtime_gl.hpp"
-#include "emission_scene.hpp"
 #include "test_support.hpp"
-#include "test_types.hpp"
+#include "typed_emission_scene.hpp"
 
 namespace {
 
 using namespace safegi::gl;
-using testing::radiance_rgb;
-using testing::unitless_rgb;
+using Scene = testing::TypedEmissionScene;
 
 std::vector<std::string> trace;
 bool recording = false;
@@ -33,31 +30,23 @@ ProgramSource stage(Stage which, const char* glsl, const char* table) {
   return {which, testing::read_testdata(glsl), parse_symbol_table(testing::read_testdata(table), table)};
 }
 
-std::vector<radiance_rgb> frame_loop(int frames) {
+glm::vec3 frame_loop(int frames) {
   Program program({stage(Stage::vertex, "emission.vert.glsl", "emission.vert.json"),
                    stage(Stage::fragment, "emission.frag.glsl", "emission.frag.json")},
                   "emission");
-  const auto le = program.uniform<radiance_rgb>("Le");
-  const auto exposure = program.uniform<float>("exposure");
-  const auto tint = program.uniform_array<unitless_rgb>("tint");
-  const auto environment = program.sampler<radiance_rgb>("environment");
-
-  using Scene = testing::EmissionScene;
+  const auto le = program.uniform<Scene::radiance>("Le");
   Scene scene(program);
-  texture2d<radiance_rgb> image(8, 8);
+  texture2d<Scene::radiance> image(8, 8);
   framebuffer target(8, 8);
-  target.attach(program.output<radiance_rgb>("color"), image);
-
+  target.attach(program.output<Scene::radiance>("color"), image);
   for (int frame = 0; frame < frames; ++frame) {
     target.bind();
     program.use();
-    program.bind(environment, scene.sky_texture, 0);
-    program.set(le, radiance_rgb{1.0f, 2.0f, static_cast<float>(frame)});
-    program.set(exposure, Scene::exposure);
-    program.set(tint, std::span(Scene::tints));
+    scene.set_uniforms(program, 0);
+    program.set(le, Scene::rgb(1.0f, 2.0f, static_cast<float>(frame)));
     scene.triangle.draw_triangles(0, 3);
   }
-  return image.read_back();
+  return safegi::raw(image.read_back().front());
 }
 
 }  // namespace
@@ -72,12 +61,12 @@ int main(int argc, char** argv) {
     gladSetGLPreCallback(record);
     gladSetGLPostCallback(ignore);
     recording = true;
-    const std::vector<radiance_rgb> pixels = frame_loop(3);
+    const glm::vec3 pixel = frame_loop(3);
     recording = false;
     std::ofstream out(argv[1]);
     for (const auto& call : trace) out << call << '\n';
-    out << "pixel " << pixels[0].r << ' ' << pixels[0].g << ' ' << pixels[0].b << '\n';
-    std::cout << (SAFEGI_GL_UNCHECKED ? "unchecked" : "checked") << ": " << trace.size() << " GL calls\n";
+    out << "pixel " << pixel.r << ' ' << pixel.g << ' ' << pixel.b << '\n';
+    std::cout << (build_mode::checks ? "checked" : "unchecked") << ": " << trace.size() << " GL calls\n";
   } catch (const std::exception& error) {
     std::cerr << error.what() << '\n';
     return 1;

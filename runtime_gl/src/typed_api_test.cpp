@@ -24,23 +24,7 @@ using testing::ndc_point;
 using testing::radiance_rgb;
 using testing::world_point;
 
-class TypedApiTest : public testing::GlTest {
- protected:
-  void SetUp() override {
-    GlTest::SetUp();
-    program_ = std::make_unique<Program>(testing::emission_program());
-  }
-  template <class Lookup>
-  std::string error_of(Lookup lookup) {
-    try {
-      lookup(*program_);
-    } catch (const BindingError& error) {
-      return error.what();
-    }
-    return "no error";
-  }
-  std::unique_ptr<Program> program_;
-};
+class TypedApiTest : public testing::ExampleProgramTest {};
 
 TEST_F(TypedApiTest, LookupsOfTheDeclaredTypesSucceed) {
   EXPECT_GE(program_->uniform<radiance_rgb>("Le").location, 0);

@@ -6,7 +6,7 @@
 namespace safegi::gl {
 namespace {
 
-constexpr std::array<std::pair<Kind, std::string_view>, 11> kKindNames{{
+constexpr std::array<std::pair<Kind, std::string_view>, 12> kKindNames{{
     {Kind::plain, "plain"},
     {Kind::scalar, "scalar"},
     {Kind::spectrum, "spectrum"},
@@ -16,6 +16,7 @@ constexpr std::array<std::pair<Kind, std::string_view>, 11> kKindNames{{
     {Kind::normal, "normal"},
     {Kind::hpoint, "hpoint"},
     {Kind::map, "map"},
+    {Kind::projective_map, "projective_map"},
     {Kind::sampler, "sampler"},
     {Kind::block, "block"},
 }};
@@ -48,10 +49,11 @@ void DimensionNamer::add(std::string name, DimensionExponents exponents) {
 }
 
 std::string DimensionNamer::name(const Dimension& dimension) const {
-  if (!dimension.name.empty()) return dimension.name;
+  if (!dimension.name.empty() && !dimension.name_is_hint) return dimension.name;
   if (dimension.exponents.empty()) return "1";
   for (const auto& [name, exponents] : derived_)
     if (exponents == dimension.exponents) return name;
+  if (!dimension.name.empty()) return dimension.name;
   std::string product;
   for (const auto& [base, exponent] : dimension.exponents) {
     if (!product.empty()) product += '*';
@@ -67,16 +69,20 @@ std::string in_words(const ValueType& type, const DimensionNamer& namer, const V
     case Kind::block:
       return type.glsl_type;
     case Kind::scalar:
-      if (type.dimension.exponents.empty() && type.dimension.name.empty()) return type.glsl_type;
+      if (type.dimension.exponents.empty()) return type.glsl_type;
       return type.glsl_type + '<' + namer.name(type.dimension) + '>';
     case Kind::spectrum:
       return "spectrum<" + namer.name(type.dimension) + '>';
-    case Kind::point:
     case Kind::vector:
+      if (!type.dimension.exponents.empty() && type.dimension.exponents != DimensionExponents{{"length", 1}})
+        return "vector<" + join_spaces(type.spaces) + ", " + namer.name(type.dimension) + '>';
+      [[fallthrough]];
+    case Kind::point:
     case Kind::direction:
     case Kind::normal:
     case Kind::hpoint:
     case Kind::map:
+    case Kind::projective_map:
       return std::string(to_string(type.kind)) + '<' + join_spaces(type.spaces) + '>';
     case Kind::sampler:
       if (texel) return type.glsl_type + '<' + in_words(*texel, namer) + '>';
@@ -85,7 +91,19 @@ std::string in_words(const ValueType& type, const DimensionNamer& namer, const V
   return type.glsl_type;
 }
 
-std::vector<std::string> differences(const ValueType& shader, const ValueType& host) {
+namespace {
+
+ValueType normalized(ValueType type) {
+  if (type.kind == Kind::scalar && type.dimension.exponents.empty()) type.kind = Kind::plain;
+  if (type.kind == Kind::vector && type.dimension.exponents.empty()) type.dimension.exponents = {{"length", 1}};
+  return type;
+}
+
+}  // namespace
+
+std::vector<std::string> differences(const ValueType& shader_type, const ValueType& host_type) {
+  const ValueType shader = normalized(shader_type);
+  const ValueType host = normalized(host_type);
   std::vector<std::string> parts;
   if (shader.kind != host.kind) parts.emplace_back("kind");
   if (shader.glsl_type != host.glsl_type) parts.emplace_back("GLSL type");

@@ -44,7 +44,7 @@ TEST(ValueType, ListsWhatDiffers) {
 
 TEST(ValueType, KindNamesRoundTrip) {
   for (Kind kind : {Kind::plain, Kind::scalar, Kind::spectrum, Kind::point, Kind::vector, Kind::direction,
-                    Kind::normal, Kind::hpoint, Kind::map, Kind::sampler, Kind::block})
+                    Kind::normal, Kind::hpoint, Kind::map, Kind::projective_map, Kind::sampler, Kind::block})
     EXPECT_EQ(kind_from_string(to_string(kind)), kind);
   EXPECT_FALSE(kind_from_string("colour").has_value());
 }

@@ -9,6 +9,7 @@
 #include "safegi/typed/frame.hpp"
 #include "safegi/typed/map.hpp"
 #include "safegi/typed/quantity.hpp"
+#include "safegi/typed/radiometry.hpp"
 #include "safegi/typed/ray.hpp"
 #include "safegi/typed/reflection.hpp"
 #include "safegi/typed/space.hpp"

@@ -24,6 +24,9 @@ struct PreprocessorOptions {
   std::vector<std::string> include_paths;                       // -I, searched in order
   std::vector<std::pair<std::string, std::string>> defines;     // -D NAME=value (value may be empty)
   std::vector<std::string> undefines;                           // -U NAME
+  // Extensions the target supports: each is predefined as a macro with value
+  // 1, as drivers do (`#ifdef GL_ARB_gpu_shader5`). None by default.
+  std::vector<std::string> extension_macros;
   // Reads an include candidate; nullopt when it does not exist. Default: the
   // file system. Tests and embedders (an in-memory prelude) replace it.
   std::function<std::optional<std::string>(const std::string& path)> read_file;

@@ -175,13 +175,16 @@ struct TernaryExpr : Expr {
 struct TypeSpecifier;
 
 // A function call (`callee` set) or a constructor (`constructor_type` set:
-// `vec3(1.0)`, `float[2](a, b)`, `S(x)`, and casts `float<solid_angle>(x)`).
+// `vec3(1.0)`, `float[2](a, b)`, `S(x)`, and casts `float<solid_angle>(x)`),
+// or a call through an expression (`callee_expr`: an element of a subroutine
+// uniform array, `shade[i](n)`).
 struct CallExpr : Expr {
   CallExpr() : Expr(NodeKind::CallExpr) {}
   static bool classof(NodeKind k) { return k == NodeKind::CallExpr; }
   std::string callee;
   SourceRange callee_range;
   TypeSpecifier* constructor_type = nullptr;
+  Expr* callee_expr = nullptr;
   std::vector<Expr*> args;
   bool void_arg = false;  // written `f(void)`
 };

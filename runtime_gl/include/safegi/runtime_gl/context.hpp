@@ -25,7 +25,9 @@ Platform platform_from_environment();
 
 struct ContextOptions {
   std::optional<Platform> platform;  // unset: platform_from_environment()
-  int major = 4;                     // requested core version; 3.3 is the floor
+  // The core version asked for, and the most runtime_gl will use: with 3.3 it
+  // keeps to 3.3 paths even on a 4.5 driver. Below it, 3.3 is the floor.
+  int major = 4;
   int minor = 5;
 };
 
@@ -34,7 +36,7 @@ struct ContextInfo {
   std::string device;                       // EGL device kind/extensions, or "OSMesa"
   bool software = true;                     // a software rasterizer (llvmpipe, softpipe, ...)
   std::string vendor, renderer, version, shading_language_version;
-  int major = 0, minor = 0;
+  int major = 0, minor = 0;  // the version runtime_gl uses (capped at the request)
 };
 
 // "egl-surfaceless: Mesa llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
@@ -61,6 +63,7 @@ class Context {
  private:
   std::unique_ptr<Backend> backend_;
   ContextInfo info_;
+  int cap_ = 45;
 };
 
 }  // namespace safegi::gl

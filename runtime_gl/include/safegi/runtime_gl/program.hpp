@@ -67,8 +67,9 @@ class Program {
 
   template <gl_value T>
   void set(uniform_id<T> uniform, const T& value) const {
-    detail::set_uniform(id(), uniform.location, value_traits<T>::scalar, value_traits<T>::components,
-                        value_traits<T>::columns, 1, &value);
+    const gl_type_of<T> data = value_traits<T>::to_gl(value);
+    detail::set_uniform(id(), uniform.location, gl_layout_of<T>::scalar, gl_layout_of<T>::components,
+                        gl_layout_of<T>::columns, 1, &data);
   }
   // Any contiguous range of exactly T converts (std::array, std::vector, span).
   template <gl_value T>
@@ -76,14 +77,27 @@ class Program {
     if (static_cast<int>(values.size()) > uniform.size)
       throw BindingError(name_ + ": error: " + std::to_string(values.size()) + " values for a uniform array of " +
                          std::to_string(uniform.size));
-    detail::set_uniform(id(), uniform.location, value_traits<T>::scalar, value_traits<T>::components,
-                        value_traits<T>::columns, static_cast<int>(values.size()), values.data());
+    const auto count = static_cast<int>(values.size());
+    if constexpr (gl_storable<T>) {
+      detail::set_uniform(id(), uniform.location, gl_layout_of<T>::scalar, gl_layout_of<T>::components,
+                          gl_layout_of<T>::columns, count, values.data());
+    } else {
+      std::vector<gl_type_of<T>> data;
+      data.reserve(values.size());
+      for (const T& value : values) data.push_back(value_traits<T>::to_gl(value));
+      detail::set_uniform(id(), uniform.location, gl_layout_of<T>::scalar, gl_layout_of<T>::components,
+                          gl_layout_of<T>::columns, count, data.data());
+    }
   }
   // Binds `texture` to texture unit `unit` and points the sampler at it.
-  template <gl_value T>
+  template <gl_storable T>
   void bind(sampler_id<T> sampler, const texture2d<T>& texture, int unit) const {
     detail::bind_sampler(id(), sampler.location, texture.id(), unit);
   }
+
+  // Throws BindingError unless the symbol table of `stage` carries `hash`
+  // (a generated handles header checks it was made from these sources).
+  void expect_source_hash(Stage stage, std::string_view hash) const;
 
   // The untyped core of every lookup. With `host` (checked build) the symbol
   // table is consulted first and a missing name or a mismatch throws

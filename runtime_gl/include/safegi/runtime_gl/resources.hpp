@@ -63,7 +63,7 @@ class Object {
 
 }  // namespace detail
 
-template <gl_value T>
+template <gl_storable T>
 class vertex_buffer {
  public:
   explicit vertex_buffer(std::span<const T> values)
@@ -82,11 +82,11 @@ class vertex_array {
   vertex_array() : object_(detail::ObjectKind::vertex_array, detail::create_vertex_array()) {}
 
   // Feeds attribute `attribute` from `buffer`, one T per vertex.
-  template <gl_value T>
+  template <gl_storable T>
   void bind(attribute_id<T> attribute, const vertex_buffer<T>& buffer) {
-    static_assert(value_traits<T>::columns == 1, "matrix attributes are not supported");
-    detail::bind_attribute(object_.name(), buffer.id(), attribute.location, value_traits<T>::scalar,
-                           value_traits<T>::components, sizeof(T));
+    static_assert(gl_layout_of<T>::columns == 1, "matrix attributes are not supported");
+    detail::bind_attribute(object_.name(), buffer.id(), attribute.location, gl_layout_of<T>::scalar,
+                           gl_layout_of<T>::components, sizeof(T));
   }
   void draw_triangles(int first, int count) const { detail::draw_triangles(object_.name(), first, count); }
   unsigned id() const { return object_.name(); }
@@ -95,14 +95,14 @@ class vertex_array {
   detail::Object object_;
 };
 
-template <gl_value T>
+template <gl_storable T>
 class texture2d {
-  static_assert(value_traits<T>::columns == 1, "a texel is a scalar or a vector");
+  static_assert(gl_layout_of<T>::columns == 1, "a texel is a scalar or a vector");
 
  public:
   texture2d(int width, int height)
       : object_(detail::ObjectKind::texture,
-                detail::create_texture2d(width, height, value_traits<T>::scalar, value_traits<T>::components)),
+                detail::create_texture2d(width, height, gl_layout_of<T>::scalar, gl_layout_of<T>::components)),
         width_(width),
         height_(height) {}
   texture2d(int width, int height, std::span<const T> texels) : texture2d(width, height) { upload(texels); }
@@ -112,12 +112,12 @@ class texture2d {
     if (texels.size() != texel_count())
       throw ResourceError("safegi::gl: texture2d upload of " + std::to_string(texels.size()) + " texels into a " +
                           std::to_string(width_) + 'x' + std::to_string(height_) + " texture");
-    detail::upload_texture2d(object_.name(), width_, height_, value_traits<T>::scalar, value_traits<T>::components,
+    detail::upload_texture2d(object_.name(), width_, height_, gl_layout_of<T>::scalar, gl_layout_of<T>::components,
                              texels.data());
   }
   std::vector<T> read_back() const {
     std::vector<T> texels(texel_count());
-    detail::read_texture2d(object_.name(), width_, height_, value_traits<T>::scalar, value_traits<T>::components, texels.data());
+    detail::read_texture2d(object_.name(), width_, height_, gl_layout_of<T>::scalar, gl_layout_of<T>::components, texels.data());
     return texels;
   }
 
@@ -139,7 +139,7 @@ class framebuffer {
   framebuffer(int width, int height)
       : object_(detail::ObjectKind::framebuffer, detail::create_framebuffer()), width_(width), height_(height) {}
 
-  template <gl_value T>
+  template <gl_storable T>
   void attach(output_id<T> output, const texture2d<T>& texture) {
     if (texture.width() != width_ || texture.height() != height_)
       throw ResourceError("safegi::gl: a " + std::to_string(texture.width()) + 'x' +

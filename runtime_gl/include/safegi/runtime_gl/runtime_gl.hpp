@@ -8,3 +8,8 @@
 #include "safegi/runtime_gl/resources.hpp"
 #include "safegi/runtime_gl/symbol_table.hpp"
 #include "safegi/runtime_gl/value_traits.hpp"
+// With the typed library on the include path (SafeGI::runtime_gl links it),
+// its types are GL values too.
+#if __has_include(<safegi/typed.hpp>)
+#include "safegi/runtime_gl/typed_traits.hpp"
+#endif

@@ -1,14 +1,21 @@
 #pragma once
-// How a host (C++) type travels to GL and what it means there. A type can be
-// bound to a shader variable when value_traits<T> describes it:
-//   scalar      float, int32 or uint32 components
-//   components  rows per column (1..4), columns (1 for vectors, 2..4 for matrices)
-//   describe()  the ValueType compared with the shader's declaration
-// Plain scalars and GLM vectors/matrices are described here; the typed
-// library's types in typed_traits.hpp. Layout: T must be trivially copyable
-// and exactly components*columns tightly packed scalars.
+// How a host (C++) type travels to GL and what it means there.
+//
+// gl_layout<G> describes plain GL data G (float, int32, uint32, GLM vectors and
+// matrices): scalar type, components per column, columns, GLSL name.
+//
+// value_traits<T> makes a host type T bindable:
+//   using gl_type = G;                  its GL representation (has a gl_layout)
+//   static ValueType describe();        compared with the shader's declaration
+//   static G to_gl(const T&);           leaving the typed world, explicitly
+//   static T from_gl(const G&);         (for read-back)
+// Plain GL data is its own representation; the typed library's types are
+// described in typed_traits.hpp; tests and users can add their own.
+#include <bit>
+#include <concepts>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 #include <type_traits>
 
 #include "safegi/runtime_gl/value_type.hpp"
@@ -17,26 +24,16 @@ namespace safegi::gl {
 
 enum class ScalarType { float32, int32, uint32 };
 
-template <class T>
-struct value_traits;  // no GL representation unless specialized
-
-template <class T>
-concept gl_value = requires {
-  { value_traits<T>::scalar } -> std::convertible_to<ScalarType>;
-  { value_traits<T>::components } -> std::convertible_to<int>;
-  { value_traits<T>::columns } -> std::convertible_to<int>;
-  { value_traits<T>::describe() } -> std::same_as<ValueType>;
-} && std::is_trivially_copyable_v<T> &&
-    sizeof(T) == 4u * value_traits<T>::components * value_traits<T>::columns;
+template <class G>
+struct gl_layout;  // not GL data unless specialized
 
 namespace detail {
 
 template <ScalarType S, int Components, int Columns>
-struct plain_traits {
+struct layout {
   static constexpr ScalarType scalar = S;
   static constexpr int components = Components;
   static constexpr int columns = Columns;
-  static ValueType describe() { return {Kind::plain, glsl_name(), {}, {}}; }
   static std::string glsl_name() {
     if constexpr (Columns > 1) {
       return Columns == Components ? "mat" + std::to_string(Columns)
@@ -51,16 +48,63 @@ struct plain_traits {
 
 }  // namespace detail
 
-template <> struct value_traits<float> : detail::plain_traits<ScalarType::float32, 1, 1> {};
-template <> struct value_traits<std::int32_t> : detail::plain_traits<ScalarType::int32, 1, 1> {};
-template <> struct value_traits<std::uint32_t> : detail::plain_traits<ScalarType::uint32, 1, 1> {};
-template <int N> struct value_traits<glm::vec<N, float, glm::defaultp>>
-    : detail::plain_traits<ScalarType::float32, N, 1> {};
-template <int N> struct value_traits<glm::vec<N, std::int32_t, glm::defaultp>>
-    : detail::plain_traits<ScalarType::int32, N, 1> {};
-template <int N> struct value_traits<glm::vec<N, std::uint32_t, glm::defaultp>>
-    : detail::plain_traits<ScalarType::uint32, N, 1> {};
-template <int C, int R> struct value_traits<glm::mat<C, R, float, glm::defaultp>>
-    : detail::plain_traits<ScalarType::float32, R, C> {};
+template <> struct gl_layout<float> : detail::layout<ScalarType::float32, 1, 1> {};
+template <> struct gl_layout<std::int32_t> : detail::layout<ScalarType::int32, 1, 1> {};
+template <> struct gl_layout<std::uint32_t> : detail::layout<ScalarType::uint32, 1, 1> {};
+template <int N> struct gl_layout<glm::vec<N, float, glm::defaultp>> : detail::layout<ScalarType::float32, N, 1> {};
+template <int N> struct gl_layout<glm::vec<N, std::int32_t, glm::defaultp>> : detail::layout<ScalarType::int32, N, 1> {};
+template <int N> struct gl_layout<glm::vec<N, std::uint32_t, glm::defaultp>> : detail::layout<ScalarType::uint32, N, 1> {};
+template <int C, int R> struct gl_layout<glm::mat<C, R, float, glm::defaultp>> : detail::layout<ScalarType::float32, R, C> {};
+
+template <class G>
+concept gl_data = requires {
+  { gl_layout<G>::components } -> std::convertible_to<int>;
+} && std::is_trivially_copyable_v<G> && sizeof(G) == 4u * gl_layout<G>::components * gl_layout<G>::columns;
+
+template <class T>
+struct value_traits;  // no GL meaning unless specialized
+
+// Plain GL data: unannotated in the shader.
+template <gl_data G>
+struct value_traits<G> {
+  using gl_type = G;
+  static ValueType describe() { return {Kind::plain, gl_layout<G>::glsl_name(), {}, {}}; }
+  static G to_gl(const G& value) { return value; }
+  static G from_gl(const G& value) { return value; }
+};
+
+template <class T>
+concept gl_value = requires(const T& value) {
+  typename value_traits<T>::gl_type;
+  requires gl_data<typename value_traits<T>::gl_type>;
+  { value_traits<T>::describe() } -> std::same_as<ValueType>;
+  { value_traits<T>::to_gl(value) } -> std::convertible_to<typename value_traits<T>::gl_type>;
+};
+
+template <gl_value T>
+using gl_type_of = typename value_traits<T>::gl_type;
+template <gl_value T>
+using gl_layout_of = gl_layout<gl_type_of<T>>;
+
+// A value whose bytes are its GL representation, so arrays of it go to
+// buffers and textures (and come back) without conversion.
+template <class T>
+concept gl_storable = gl_value<T> && std::is_trivially_copyable_v<T> && sizeof(T) == sizeof(gl_type_of<T>) &&
+                      requires(const gl_type_of<T>& g) {
+                        { value_traits<T>::from_gl(g) } -> std::convertible_to<T>;
+                      };
+
+namespace detail {
+
+// value_traits for a type that is G bit for bit (test stand-ins, user structs).
+template <class T, gl_data G>
+  requires(sizeof(T) == sizeof(G) && std::is_trivially_copyable_v<T>)
+struct bitwise_traits {
+  using gl_type = G;
+  static G to_gl(const T& value) { return std::bit_cast<G>(value); }
+  static T from_gl(const G& value) { return std::bit_cast<T>(value); }
+};
+
+}  // namespace detail
 
 }  // namespace safegi::gl

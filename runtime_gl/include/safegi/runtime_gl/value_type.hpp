@@ -16,11 +16,16 @@ using DimensionExponents = std::map<std::string, int>;
 struct Dimension {
   DimensionExponents exponents;
   std::string name;  // printed name when known ("radiance"); empty otherwise
+  // A name that yields to the symbol table's own name for these exponents
+  // (host types: the shader's vocabulary is what the user reads).
+  bool name_is_hint = false;
   friend bool operator==(const Dimension& a, const Dimension& b) { return a.exponents == b.exponents; }
 };
 
 // What a value is geometrically. `plain` is an unannotated GLSL type.
-enum class Kind { plain, scalar, spectrum, point, vector, direction, normal, hpoint, map, sampler, block };
+enum class Kind {
+  plain, scalar, spectrum, point, vector, direction, normal, hpoint, map, projective_map, sampler, block
+};
 
 std::string_view to_string(Kind kind);
 std::optional<Kind> kind_from_string(std::string_view text);
@@ -32,8 +37,8 @@ struct ValueType {
   std::vector<std::string> spaces;  // point/vector/...: one; map: {from, to}
 };
 
-// Names exponent vectors for messages: a derived dimension whose exponents match
-// ("radiance"), a single base with exponent 1 ("length"), or a product
+// Names exponent vectors for messages: the dimension's own name, a derived
+// dimension whose exponents match ("radiance"), or a product of bases
 // ("energy*length^-2"). Dimensionless prints as "1".
 class DimensionNamer {
  public:
@@ -51,7 +56,8 @@ std::string in_words(const ValueType& type, const DimensionNamer& namer,
                      const ValueType* texel = nullptr);
 
 // Empty when the types agree; otherwise which parts differ, in words
-// ("kind", "GLSL type", "dimension", "space").
+// ("kind", "GLSL type", "dimension", "space"). A dimensionless scalar is the
+// plain scalar, and a vector without a dimension is a length.
 std::vector<std::string> differences(const ValueType& shader, const ValueType& host);
 
 }  // namespace safegi::gl

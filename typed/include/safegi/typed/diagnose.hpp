@@ -17,11 +17,35 @@ namespace safegi::diagnose {
 template <auto...>
 inline constexpr bool reported = false;
 
-template <fixed_string Operation, fixed_string Left, fixed_string Right>
+// Ratio is left / right (from / to) as a formula: proj^-1 is a missing cosine, a power
+// of solid_angle or length a pdf in the wrong measure.
+template <fixed_string Operation, fixed_string Left, fixed_string Right, fixed_string Ratio>
 struct dimension_mismatch {
-  static_assert(reported<Operation, Left, Right>,
+  static_assert(reported<Operation, Left, Right, Ratio>,
                 "dimension mismatch: the operands of this operation must have the same dimension "
-                "(operation, left and right dimension are named above)");
+                "(operation, left and right dimension, and left/right, are named above)");
+};
+
+template <fixed_string From, fixed_string To, fixed_string Ratio>
+struct conversion_between_dimensions {
+  static_assert(reported<From, To, Ratio>,
+                "cannot convert a value of one dimension into another (from and to dimension, and "
+                "from/to, are named above); if the physics is right and only the bookkeeping is not, "
+                "use dimension_cast<D>");
+};
+
+template <fixed_string Kind, fixed_string From, fixed_string To>
+struct conversion_between_spaces {
+  static_assert(reported<Kind, From, To>,
+                "cannot convert a value from one space into another by assignment (kind, from and to "
+                "space are named above): apply a map<From, To>");
+};
+
+template <fixed_string FromSource, fixed_string FromTarget, fixed_string ToSource, fixed_string ToTarget>
+struct map_conversion {
+  static_assert(reported<FromSource, FromTarget, ToSource, ToTarget>,
+                "cannot convert map<A, B> into a map between other spaces (the given map's spaces, then "
+                "the wanted map's spaces, are named above); inverse(m) turns map<A, B> into map<B, A>");
 };
 
 template <fixed_string Operation, fixed_string Dimension>
@@ -89,9 +113,9 @@ struct cannot_add_points {
 template <fixed_string Expected, fixed_string Given, fixed_string Space>
 struct wrong_geometric_kind {
   static_assert(reported<Expected, Given, Space>,
-                "wrong kind of geometric value (expected kind, given kind and its space are named above): normals "
-                "transform by the inverse transpose, so convert explicitly with to_direction / to_normal "
-                "after transforming each as what it is");
+                "wrong kind of geometric value (expected kind, given kind and its space are named above): "
+                "points, vectors, directions, normals and hpoints transform differently, so convert "
+                "explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v");
 };
 
 }  // namespace safegi::diagnose
@@ -105,7 +129,21 @@ namespace rules {
 template <fixed_string Operation, dimension_type Left, dimension_type Right>
 constexpr void same_dimension() {
   if constexpr (is_checked && !std::is_same_v<Left, Right>)
-    (void)sizeof(diagnose::dimension_mismatch<Operation, dimension_text<Left>, dimension_text<Right>>);
+    (void)sizeof(diagnose::dimension_mismatch<Operation, dimension_text<Left>, dimension_text<Right>,
+                                              formula_text<dim::quotient<Left, Right>>>);
+}
+
+template <dimension_type From, dimension_type To>
+constexpr void convertible_dimension() {
+  if constexpr (is_checked && !std::is_same_v<From, To>)
+    (void)sizeof(diagnose::conversion_between_dimensions<dimension_text<From>, dimension_text<To>,
+                                                         formula_text<dim::quotient<From, To>>>);
+}
+
+template <fixed_string Kind, class From, class To>
+constexpr void convertible_space() {
+  if constexpr (is_checked && !std::is_same_v<From, To>)
+    (void)sizeof(diagnose::conversion_between_spaces<Kind, From::name, To::name>);
 }
 
 template <fixed_string Operation, dimension_type D>

@@ -100,6 +100,10 @@ constexpr std::string_view dimension_name() {
   return detail::frozen_name<D>.view();
 }
 
+/// dimension_formula<D>() as a fixed_string, for compile-time diagnostics.
+template <dimension_type D>
+inline constexpr auto formula_text = detail::frozen_formula<D>;
+
 /// dimension_name<D>() as a fixed_string, for compile-time diagnostics.
 template <dimension_type D>
 inline constexpr auto dimension_text = detail::frozen_name<D>;

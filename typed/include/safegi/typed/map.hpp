@@ -50,6 +50,12 @@ class basic_map {
   /// The identity.
   constexpr basic_map() = default;
   constexpr basic_map(detail::raw_tag, matrix_pair m) : m_(m) {}
+  /// A map between other spaces never converts; this only exists to say so in words.
+  template <class A2, class B2>
+    requires(!std::is_same_v<A2, A> || !std::is_same_v<B2, B>)
+  constexpr basic_map(const basic_map<A2, B2>& other) : m_(other.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::map_conversion<A2::name, B2::name, A::name, B::name>);
+  }
 
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
 
@@ -185,20 +191,22 @@ constexpr basic_projective_map<B, A> inverse(const basic_projective_map<A, B>& m
 }
 
 /// Composition where spaces meet: map<B, C> * map<A, B> is map<A, C> (apply the right one first).
+// (auto return types: the check runs as soon as the call is seen, so its error comes
+// before any error about what the caller does with the result.)
 template <class B, class C, class A, class B2>
-constexpr basic_map<A, C> operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
+constexpr auto operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
   rules::spaces_meet<B, C, A, B2>();
-  return {detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value())};
+  return basic_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
-constexpr basic_projective_map<A, C> operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
+constexpr auto operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
   rules::spaces_meet<B, C, A, B2>();
-  return {detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value())};
+  return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
-constexpr basic_projective_map<A, C> operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
+constexpr auto operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
   rules::spaces_meet<B, C, A, B2>();
-  return {detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value())};
+  return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE

@@ -65,6 +65,17 @@ class basic_quantity {
   constexpr basic_quantity(zero_t) {}  // NOLINT: implicit, zero has every dimension
   constexpr basic_quantity(detail::raw_tag, T value) : value_(value) {}
 
+  // Conversions that are always mistakes; they exist so the error names both sides.
+  template <class E>
+    requires(!std::is_same_v<E, D>)
+  constexpr basic_quantity(basic_quantity<E, T> other) : value_(other.raw_value()) {  // NOLINT
+    rules::convertible_dimension<E, D>();
+  }
+  template <arithmetic U>
+  constexpr basic_quantity(U number) : value_(T(number)) {  // NOLINT
+    rules::number_needs_dimensionless<"conversion", D>();
+  }
+
   /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
   [[nodiscard]] constexpr T raw_value() const { return value_; }
 

@@ -18,6 +18,7 @@
 //   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -115,10 +116,28 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
       : base(glm::vec3(raw(x), raw(y), raw(z))) {}
   constexpr basic_point(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  // Conversions that are always mistakes; they exist so the error names both sides.
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_point(basic_point<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"point", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_point(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "vector", S2::name>);
+  }
+  template <class S2>
+  constexpr basic_point(basic_hpoint<S2> h) : base(glm::vec3(h.raw_value())) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "hpoint", S2::name>);
+  }
 
   [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
   [[nodiscard]] constexpr quantity<dim::length> z() const { return detail::component<dim::length>(this->xyz_.z); }
+  /// Component i (0, 1, 2), e.g. the split axis of a BVH.
+  [[nodiscard]] constexpr quantity<dim::length> operator[](int i) const {
+    return detail::component<dim::length>(this->xyz_[i]);
+  }
 };
 
 template <class S, class D>
@@ -131,10 +150,17 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   constexpr basic_vector() = default;
   constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(glm::vec3(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2, class E>
+    requires(!std::is_same_v<S2, S> || !std::is_same_v<E, D>)
+  constexpr basic_vector(basic_vector<S2, E> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"vector", S2, S>();
+    rules::convertible_dimension<E, D>();
+  }
 
   [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
   [[nodiscard]] constexpr quantity<D> z() const { return detail::component<D>(this->xyz_.z); }
+  [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
 
   constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
   template <class S2, class E>
@@ -173,6 +199,15 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   /// Components of a unit vector (not renormalised; use normalize(vector) otherwise).
   constexpr explicit basic_direction(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
   constexpr basic_direction(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_direction(basic_direction<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"direction", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_direction(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "vector (use normalize)", S2::name>);
+  }
   /// A normal is not a direction: this only exists to say so in words.
   template <class S2>
   constexpr basic_direction(basic_normal<S2>) {  // NOLINT
@@ -182,6 +217,7 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
   [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -195,6 +231,11 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   /// Components of a unit normal (not renormalised).
   constexpr explicit basic_normal(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
   constexpr basic_normal(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_normal(basic_normal<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"normal", S2, S>();
+  }
   /// A direction is not a normal: this only exists to say so in words.
   template <class S2>
   constexpr basic_normal(basic_direction<S2>) {  // NOLINT
@@ -204,6 +245,7 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
   [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -281,11 +323,15 @@ constexpr bool operator==(basic_point<S> a, basic_point<S2> b) {
 
 template <class S, class S2, class D, class E>
 constexpr basic_vector<S, D> operator+(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  return a += b;
+  rules::same_space<"+", S, S2>();
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class S, class S2, class D, class E>
 constexpr basic_vector<S, D> operator-(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  return a -= b;
+  rules::same_space<"-", S, S2>();
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class S, class S2, class D, class E>
 constexpr bool operator==(basic_vector<S, D> a, basic_vector<S2, E> b) {
@@ -453,6 +499,23 @@ constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basi
   rules::same_space<"barycentric", S, S2>();
   return {detail::raw_tag{}, b0 * p0.raw_value() + b1 * p1.raw_value() + b2 * p2.raw_value()};
 }
+/// Componentwise minimum and maximum of two points (bounding boxes).
+template <class S, class S2>
+constexpr basic_point<S> min(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"min", S, S2>();
+  return {detail::raw_tag{}, glm::min(a.raw_value(), b.raw_value())};
+}
+template <class S, class S2>
+constexpr basic_point<S> max(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"max", S, S2>();
+  return {detail::raw_tag{}, glm::max(a.raw_value(), b.raw_value())};
+}
+/// Componentwise absolute value of a vector.
+template <class S, class D>
+constexpr basic_vector<S, D> abs(basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::abs(v.raw_value())};
+}
+
 /// The same unit vector, now transformed (and dotted) as a normal.
 template <class S>
 constexpr basic_normal<S> to_normal(basic_direction<S> d) {

@@ -101,6 +101,19 @@ TEST(Space, DirectionsAndNormals) {
   EXPECT_FLOAT_EQ(raw(normalize(half)).y, 0.6f / std::sqrt(0.36f + 1.8f * 1.8f));
 }
 
+TEST(Space, ComponentsAndBounds) {
+  const point<world> a = at(1, 5, -2);
+  const point<world> b = at(3, -1, 0);
+  EXPECT_EQ(raw(safegi::min(a, b)), glm::vec3(1, -1, -2));
+  EXPECT_EQ(raw(safegi::max(a, b)), glm::vec3(3, 5, 0));
+  EXPECT_FLOAT_EQ(raw(a[1]), 5.0f);
+  const vector<world> v = b - a;
+  EXPECT_FLOAT_EQ(raw(v[2]), 2.0f);
+  EXPECT_EQ(raw(safegi::abs(v)), glm::vec3(2, 6, 2));
+  EXPECT_FLOAT_EQ(direction<world>(0, 1, 0)[1], 1.0f);
+  EXPECT_FLOAT_EQ(normal<world>(0, 0, 1)[2], 1.0f);
+}
+
 TEST(Space, HomogeneousPoints) {
   const hpoint<world> h(2.0f, 4.0f, 6.0f, 2.0f);
   EXPECT_EQ(raw(dehomogenize(h)), glm::vec3(1, 2, 3));

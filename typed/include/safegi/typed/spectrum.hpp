@@ -24,6 +24,12 @@ class basic_spectrum {
   /// The same value in every channel.
   constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
   constexpr basic_spectrum(detail::raw_tag, glm::vec3 rgb) : rgb_(rgb) {}
+  /// Converting between dimensions is always a mistake; this only exists to say so in words.
+  template <class E>
+    requires(!std::is_same_v<E, D>)
+  constexpr basic_spectrum(basic_spectrum<E> other) : rgb_(other.raw_value()) {  // NOLINT
+    rules::convertible_dimension<E, D>();
+  }
 
   [[nodiscard]] constexpr glm::vec3 raw_value() const { return rgb_; }
   [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, float>(rgb_.r); }
@@ -81,11 +87,13 @@ constexpr spectrum<D> dimension_cast(basic_spectrum<E> s) {
 
 template <class D, class E>
 constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<E> b) {
-  return a += b;
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E>
 constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<E> b) {
-  return a -= b;
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E>
 constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<E> b) {
