@@ -12,6 +12,7 @@ struct Sample {
   const char* name;
   const char* stage;
   const char* source;  // without #version: the preamble adds "#version 460"
+  const char* extensions = "";  // #extension lines for glslang (the raw lexer of the tests skips no directives)
 };
 
 const Sample kSamples[] = {
@@ -113,6 +114,10 @@ void main() {
     extra = vec4(1.0);
 }
 )"},
+    {"debug_printf", "frag", R"(
+in float x;
+void main() { debugPrintfEXT("x = %f", x); }
+)", "#extension GL_EXT_debug_printf : enable\n"},
     // glslang does not implement subroutines, so they are tested in parse_decl_test only.
     {"precise", "frag", R"(
 in vec3 n;
@@ -155,10 +160,11 @@ TEST_P(RoundTrip, PrintThenParseGivesTheSameTree) {
 TEST_P(RoundTrip, GlslangAcceptsTheOriginalAndThePrintedGlsl) {
   const Sample& sample = GetParam();
   std::string log;
-  ASSERT_TRUE(glslang_accepts(std::string("#version 460\n") + sample.source, sample.stage, &log)) << log;
+  std::string preamble = std::string("#version 460\n") + sample.extensions;
+  ASSERT_TRUE(glslang_accepts(preamble + sample.source, sample.stage, &log)) << log;
   auto parsed = parse_text(sample.source);
   PrintOptions options;
-  options.preamble = "#version 460\n";
+  options.preamble = preamble;
   EXPECT_TRUE(glslang_accepts(print_glsl(parsed->unit(), options), sample.stage, &log)) << log;
 }
 
