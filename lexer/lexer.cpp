@@ -80,7 +80,8 @@ bool Lexer::skip_blanks_and_comments() {
 }
 
 void Lexer::finish(Token& token, std::size_t begin) {
-  token.range = sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(pos_));
+  token.range.begin = sources_.location_after(file_, static_cast<std::uint32_t>(begin), line_hint_);
+  token.range.end = sources_.location_after(file_, static_cast<std::uint32_t>(pos_), line_hint_);
   std::string_view raw = text_.substr(begin, pos_ - begin);
   if (raw.find('\\') == std::string_view::npos) {
     token.text = raw;

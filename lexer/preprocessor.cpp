@@ -378,6 +378,7 @@ PreprocessedUnit Preprocessor::run(FileId main_file) {
     unit_.tokens.push_back(end);
     return std::move(unit_);
   }
+  unit_.tokens.reserve(text.size() / 5);
   auto main_state = std::make_unique<FileState>(sources_, main_file, diagnostics_, sources_.path(main_file));
   main_state->is_main = true;
   files_.push_back(std::move(main_state));

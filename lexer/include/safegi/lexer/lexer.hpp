@@ -76,6 +76,7 @@ class Lexer {
   std::size_t pos_ = 0;
   bool at_line_start_ = true;
   bool pending_space_ = false;  // blanks skipped by next_starts_line()
+  std::uint32_t line_hint_ = 0;  // line of the last token, for SourceManager::location_after
   bool report_errors_ = true;
 };
 
