@@ -61,9 +61,19 @@ std::string valid_utf8(std::string_view text) {
   out.reserve(text.size());
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = static_cast<unsigned char>(text[i]);
-    std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
+    // RFC 3629: leads C2..F4; no overlong forms, surrogates or code points above U+10FFFF.
+    const std::size_t length = byte < 0x80 ? 1 : byte >= 0xC2 && byte <= 0xDF ? 2 : byte >= 0xE0 && byte <= 0xEF ? 3
+                             : byte >= 0xF0 && byte <= 0xF4 ? 4 : 0;
     bool ok = length != 0 && i + length <= text.size();
-    for (std::size_t k = 1; ok && k < length; ++k) ok = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    for (std::size_t k = 1; ok && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      unsigned char low = 0x80, high = 0xBF;
+      if (k == 1 && byte == 0xE0) low = 0xA0;
+      if (k == 1 && byte == 0xED) high = 0x9F;
+      if (k == 1 && byte == 0xF0) low = 0x90;
+      if (k == 1 && byte == 0xF4) high = 0x8F;
+      ok = next >= low && next <= high;
+    }
     if (ok) {
       out.append(text.substr(i, length));
       i += length;
