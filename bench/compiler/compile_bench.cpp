@@ -1,0 +1,65 @@
+// In-process cost of safegi::compile (preprocess + parse + check + elide +
+// symbol table) on each annotated example shader, beside glslang parsing the
+// GLSL that safeglslc emits for it (what a driver front end does).
+//
+//   build/bin/safegi_bench_compiler
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "glslang_check.hpp"
+#include "safegi/compiler/compile.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void bm_safegi_compile(benchmark::State& state, fs::path path) {
+  const std::string text = read(path);
+  const std::string name = path.filename().string();
+  for (auto _ : state) {
+    safegi::CompileResult r = safegi::compile({{name, text}});
+    if (!r.success) state.SkipWithError("compile failed");
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
+void bm_glslang_parse(benchmark::State& state, fs::path path) {
+  safegi::CompileResult r = safegi::compile({{path.filename().string(), read(path)}});
+  const std::string glsl = r.stages.at(0).glsl;
+  const safegi::Stage stage = r.stages.at(0).stage;
+  for (auto _ : state) {
+    safegi::testing::GlslangVerdict v = safegi::testing::glslang_validate(glsl, stage);
+    if (!v.accepted) state.SkipWithError("glslang rejected");
+    benchmark::DoNotOptimize(v);
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * glsl.size()));
+}
+
+const bool registered = [] {
+  std::vector<fs::path> examples;
+  for (const auto& e : fs::directory_iterator(SAFEGI_EXAMPLE_SHADERS))
+    if (e.path().filename().string().find(".sgl.") != std::string::npos) examples.push_back(e.path());
+  std::sort(examples.begin(), examples.end());
+  for (const fs::path& p : examples) {
+    benchmark::RegisterBenchmark(("safegi_compile/" + p.filename().string()).c_str(), bm_safegi_compile, p)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("glslang_parse/" + p.filename().string()).c_str(), bm_glslang_parse, p)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,83 @@
+#pragma once
+// safegi::compile: annotated GLSL in; plain GLSL per stage, one symbol table
+// and the diagnostics out. The whole pipeline (preprocess, parse, check,
+// elide) runs on values owned by the call: no global state, so several
+// threads may compile at once. The standard prelude is built in
+// (`#include <safegi/prelude.sgl>` needs no include path).
+//
+//   safegi::CompileResult r = safegi::compile({{"shade.sgl.frag", text}});
+//   if (!r.success) std::cerr << r.diagnostics_text();
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <safegi/diagnostics/diagnostic.hpp>
+#include <safegi/diagnostics/source_manager.hpp>
+#include <safegi/runtime_gl/symbol_table.hpp>
+#include <safegi/typechecker/checker.hpp>
+
+namespace safegi {
+
+inline constexpr std::string_view kCompilerName = "safeglslc";
+inline constexpr std::string_view kCompilerVersion = "0.1.0";
+
+struct ShaderSource {
+  std::string path;                 // as the user names it; used in diagnostics and the symbol table
+  std::string text;
+  std::optional<Stage> stage = {};  // default: from the file extension (stage_from_path)
+};
+
+struct CompileOptions {
+  std::vector<std::string> include_paths;                    // -I, searched in order, before the built-in prelude
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=value]
+  std::vector<std::string> undefines;                        // -U NAME
+  bool strict = false;                                       // --strict: warn on unannotated interface variables
+  DiagnosticOptions diagnostics;                             // -Werror, -w, error limit
+  // Reads `#include`d files; default: the file system. The prelude is always
+  // served from memory.
+  std::function<std::optional<std::string>(const std::string& path)> read_file;
+};
+
+struct StageOutput {
+  Stage stage = Stage::unknown;
+  std::string path;
+  std::string glsl;  // empty when the stage had errors
+};
+
+struct CompileResult {
+  bool success = false;               // no errors: every stage has its GLSL and the table is complete
+  std::vector<StageOutput> stages;    // in the order of the sources
+  gl::SymbolTable symbols;            // one table: "shader" mode for one source, "program" for several
+  std::vector<Diagnostic> diagnostics;
+  std::shared_ptr<const SourceManager> sources;  // what the diagnostics' locations refer to
+
+  std::string symbols_json() const { return gl::to_json(symbols); }
+  std::string diagnostics_text(bool color = false) const;
+  std::string diagnostics_json() const;
+  std::size_t error_count() const;
+  std::size_t warning_count() const;
+};
+
+// One shader, or several stages of one program (at most one per stage, then
+// checked against each other: each stage's outputs against the next stage's inputs).
+CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options = {});
+
+// `.vert .tesc .tese .geom .frag .comp`, also after the annotated-source
+// suffix `.sgl` (`light.sgl.frag`) and as `.vert.sgl`; nothing otherwise.
+std::optional<Stage> stage_from_path(std::string_view path);
+// `vert`/`vertex`, `frag`/`fragment`, … (glslangValidator's -S names).
+std::optional<Stage> stage_from_name(std::string_view name);
+std::string_view stage_extension(Stage stage);  // "vert", ...
+std::optional<gl::Stage> to_table_stage(Stage stage);
+
+// The built-in prelude's text and the virtual include directory that serves it.
+std::string_view prelude_text();
+inline constexpr std::string_view kBuiltinIncludeDir = "<builtin>";
+
+}  // namespace safegi

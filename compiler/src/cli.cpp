@@ -1,0 +1,166 @@
+#include "safegi/compiler/cli.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "safegi/compiler/compile.hpp"
+
+namespace safegi {
+namespace {
+
+constexpr int kExitDiagnostics = 1;
+constexpr int kExitUsage = 2;
+
+// glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N.
+std::vector<std::string> normalise(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (const std::string& a : args) {
+    if (a == "-Werror") out.emplace_back("--Werror");
+    else if (a.rfind("-ferror-limit=", 0) == 0) out.push_back("--error-limit=" + a.substr(14));
+    else if (a == "-ferror-limit") out.emplace_back("--error-limit");
+    else out.push_back(a);
+  }
+  return out;
+}
+
+std::pair<std::string, std::string> split_define(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos) return {text, "1"};
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+bool write_output(const std::string& path, const std::string& text, CliStreams& io) {
+  if (path == "-") {
+    io.out << text;
+    return static_cast<bool>(io.out);
+  }
+  std::ofstream file(path, std::ios::binary);
+  file << text;
+  file.close();
+  if (!file) {
+    io.err << "safeglslc: error: cannot write '" << path << "'\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
+  CLI::App app{"safeglslc: checks the dimensions and spaces of annotated GLSL and writes plain GLSL plus a "
+               "JSON symbol table (docs/safeglslc.md)",
+               "safeglslc"};
+  std::vector<std::string> files, outputs, include_paths, defines, undefines;
+  std::string stage_name, symbols_path, diagnostics_format = "text", color = "auto";
+  bool werror = false, no_warnings = false, strict = false;
+  std::size_t error_limit = 0;
+  app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
+  app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
+  // Each occurrence of a repeatable flag takes one value (`-D A file.frag`).
+  app.add_option("-o", outputs, "write the plain GLSL of each input, in order ('-' for stdout)")->allow_extra_args(false);
+  app.add_option("--symbols", symbols_path, "write the JSON symbol table ('-' for stdout)");
+  app.add_option("-I", include_paths, "add an #include search directory")->allow_extra_args(false);
+  app.add_option("-D", defines, "define a macro: NAME or NAME=value")->allow_extra_args(false);
+  app.add_option("-U", undefines, "undefine a macro")->allow_extra_args(false);
+  app.add_flag("--strict", strict, "warn about unannotated interface variables");
+  app.add_flag("--Werror", werror, "treat warnings as errors (also -Werror)");
+  app.add_flag("-w", no_warnings, "suppress warnings");
+  app.add_option("--error-limit", error_limit, "stop after N errors, 0 for no limit (also -ferror-limit=N)");
+  app.add_option("--diagnostics-format", diagnostics_format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--color", color, "auto (on a terminal), always or never")->check(CLI::IsMember({"auto", "always", "never"}));
+  app.set_version_flag("--version", std::string(kCompilerName) + " " + std::string(kCompilerVersion));
+
+  std::vector<std::string> args = normalise(raw_args);
+  std::reverse(args.begin(), args.end());  // CLI11 takes them in reverse order
+  try {
+    app.parse(args);
+  } catch (const CLI::CallForHelp&) {
+    io.out << app.help();
+    return 0;
+  } catch (const CLI::CallForVersion&) {
+    io.out << kCompilerName << " " << kCompilerVersion << "\n";
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    io.err << "safeglslc: error: " << e.what() << "\nRun with --help for usage.\n";
+    return kExitUsage;
+  }
+
+  std::optional<Stage> forced_stage;
+  if (!stage_name.empty()) {
+    forced_stage = stage_from_name(stage_name);
+    if (!forced_stage) {
+      io.err << "safeglslc: error: unknown stage '" << stage_name << "' (expected vert, tesc, tese, geom, frag or comp)\n";
+      return kExitUsage;
+    }
+  }
+  if (!outputs.empty() && outputs.size() != files.size()) {
+    io.err << "safeglslc: error: " << outputs.size() << " -o given for " << files.size()
+           << " inputs; give one per input, in order\n";
+    return kExitUsage;
+  }
+
+  std::vector<ShaderSource> sources;
+  for (const std::string& path : files) {
+    ShaderSource s;
+    s.stage = forced_stage;
+    if (path == "-") {
+      if (!forced_stage) {
+        io.err << "safeglslc: error: reading stdin needs the stage: give -S vert|tesc|tese|geom|frag|comp\n";
+        return kExitUsage;
+      }
+      s.path = "<stdin>";
+      std::ostringstream text;
+      text << io.in.rdbuf();
+      s.text = text.str();
+    } else {
+      std::ifstream in(path, std::ios::binary);
+      if (!in) {
+        io.err << "safeglslc: error: cannot read '" << path << "'\n";
+        return kExitUsage;
+      }
+      std::ostringstream text;
+      text << in.rdbuf();
+      s.path = path;
+      s.text = text.str();
+      if (!forced_stage && !stage_from_path(path)) {
+        io.err << "safeglslc: error: cannot tell the stage of '" << path
+               << "' from its extension (.vert .tesc .tese .geom .frag .comp, optionally after .sgl); use -S\n";
+        return kExitUsage;
+      }
+    }
+    sources.push_back(std::move(s));
+  }
+
+  CompileOptions options;
+  options.include_paths = include_paths;
+  for (const std::string& d : defines) options.defines.push_back(split_define(d));
+  options.undefines = undefines;
+  options.strict = strict;
+  options.diagnostics.warnings_as_errors = werror;
+  options.diagnostics.suppress_warnings = no_warnings;
+  options.diagnostics.error_limit = error_limit;
+  CompileResult result = compile(sources, options);
+
+  if (diagnostics_format == "json") {
+    io.err << result.diagnostics_json() << "\n";
+  } else if (!result.diagnostics.empty()) {
+    const char* no_color = std::getenv("NO_COLOR");
+    const bool use_color = color == "always" || (color == "auto" && io.err_is_terminal && no_color == nullptr);
+    io.err << result.diagnostics_text(use_color);
+    const std::size_t errors = result.error_count(), warnings = result.warning_count();
+    if (warnings) io.err << warnings << (warnings == 1 ? " warning" : " warnings") << (errors ? " and " : " generated.\n");
+    if (errors) io.err << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
+  }
+  if (!result.success) return kExitDiagnostics;
+
+  bool written = true;
+  for (std::size_t i = 0; i < outputs.size(); ++i) written = write_output(outputs[i], result.stages[i].glsl, io) && written;
+  if (!symbols_path.empty()) written = write_output(symbols_path, result.symbols_json(), io) && written;
+  return written ? 0 : kExitUsage;
+}
+
+}  // namespace safegi

@@ -1,0 +1,66 @@
+// The safeglslc command in-process: what the golden cases cannot express
+// (no input at all, --help) and the file outputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "safegi/compiler/cli.hpp"
+
+namespace safegi {
+namespace {
+
+struct CliRun {
+  int status = 0;
+  std::string out, err;
+};
+
+CliRun run(std::vector<std::string> args, const std::string& stdin_text = {}) {
+  std::istringstream in(stdin_text);
+  std::ostringstream out, err;
+  CliStreams io{in, out, err, false};
+  CliRun r;
+  r.status = run_safeglslc(args, io);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+TEST(Safeglslc, NoInputIsAUsageError) {
+  CliRun r = run({});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("files is required"), std::string::npos) << r.err;
+}
+
+TEST(Safeglslc, HelpListsTheFlags) {
+  CliRun r = run({"--help"});
+  EXPECT_EQ(r.status, 0);
+  for (const char* flag : {"-S", "-o", "--symbols", "-I", "-D", "-U", "--Werror", "--error-limit", "--diagnostics-format", "--version"})
+    EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+}
+
+TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "safeglslc_cli_test";
+  std::filesystem::create_directories(dir);
+  const std::string glsl = (dir / "out.frag.glsl").string(), json = (dir / "out.json").string();
+  CliRun r = run({"-", "-S", "frag", "-o", glsl, "--symbols", json},
+              "#version 330 core\n#include <safegi/prelude.sgl>\nuniform float<length> d;\nout vec4 c;\nvoid main() { c = vec4(d); }\n");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream g(glsl), j(json);
+  std::stringstream gs, js;
+  gs << g.rdbuf();
+  js << j.rdbuf();
+  EXPECT_NE(gs.str().find("uniform float         d;"), std::string::npos) << gs.str();
+  EXPECT_NE(js.str().find("\"name\": \"d\""), std::string::npos) << js.str();
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Safeglslc, UnwritableOutputIsAnIoError) {
+  CliRun r = run({"-", "-S", "frag", "-o", "/nonexistent-dir/x.glsl"}, "#version 330 core\nvoid main() {}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace safegi

@@ -1,0 +1,203 @@
+#include "safegi/compiler/compile.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include <safegi/diagnostics/render.hpp>
+#include <safegi/elider/elider.hpp>
+#include <safegi/lexer/preprocessor.hpp>
+#include <safegi/parser/parser.hpp>
+
+namespace safegi {
+namespace {
+
+struct StageTable {
+  Stage stage;
+  std::string_view extension;
+  std::string_view name;
+  std::optional<gl::Stage> table;
+};
+
+constexpr StageTable kStages[] = {
+    {Stage::vertex, "vert", "vertex", gl::Stage::vertex},
+    {Stage::tess_control, "tesc", "tesscontrol", gl::Stage::tess_control},
+    {Stage::tess_evaluation, "tese", "tesseval", gl::Stage::tess_evaluation},
+    {Stage::geometry, "geom", "geometry", gl::Stage::geometry},
+    {Stage::fragment, "frag", "fragment", gl::Stage::fragment},
+    {Stage::compute, "comp", "compute", gl::Stage::compute},
+};
+
+std::optional<std::string> read_from_disk(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
+// Pipeline order, for the cross-stage check between neighbours.
+int pipeline_index(Stage s) {
+  for (std::size_t i = 0; i < std::size(kStages); ++i)
+    if (kStages[i].stage == s) return static_cast<int>(i);
+  return static_cast<int>(std::size(kStages));
+}
+
+struct StageWork {
+  const ShaderSource* source = nullptr;
+  Stage stage = Stage::unknown;
+  FileId file = kNoFile;
+  PreprocessedUnit preprocessed;
+  ParseResult parsed;
+  std::optional<CheckResult> checked;
+  bool ok = false;
+};
+
+}  // namespace
+
+std::optional<Stage> stage_from_name(std::string_view name) {
+  for (const StageTable& s : kStages)
+    if (name == s.extension || name == s.name) return s.stage;
+  if (name == "tess_control") return Stage::tess_control;
+  if (name == "tess_evaluation") return Stage::tess_evaluation;
+  return std::nullopt;
+}
+
+std::optional<Stage> stage_from_path(std::string_view path) {
+  std::string_view name = path.substr(std::min(path.size(), path.find_last_of("/\\") + 1));
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".sgl") name.remove_suffix(4);  // light.vert.sgl
+  const std::size_t dot = name.find_last_of('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  std::string_view ext = name.substr(dot + 1);
+  for (const StageTable& s : kStages)
+    if (ext == s.extension) return s.stage;
+  return std::nullopt;
+}
+
+std::string_view stage_extension(Stage stage) {
+  for (const StageTable& s : kStages)
+    if (s.stage == stage) return s.extension;
+  return "";
+}
+
+std::optional<gl::Stage> to_table_stage(Stage stage) {
+  for (const StageTable& s : kStages)
+    if (s.stage == stage) return s.table;
+  return std::nullopt;
+}
+
+std::string CompileResult::diagnostics_text(bool color) const {
+  if (!sources) return {};
+  TextStyle style;
+  style.color = color;
+  return render_text(diagnostics, *sources, style);
+}
+
+std::string CompileResult::diagnostics_json() const {
+  if (!sources) return "{\"diagnostics\": []}";
+  return render_json(diagnostics, *sources);
+}
+
+std::size_t CompileResult::error_count() const {
+  return static_cast<std::size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                                [](const Diagnostic& d) { return d.severity == Severity::error; }));
+}
+
+std::size_t CompileResult::warning_count() const {
+  return static_cast<std::size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                                [](const Diagnostic& d) { return d.severity == Severity::warning; }));
+}
+
+CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
+  auto manager = std::make_shared<SourceManager>();
+  DiagnosticEngine diags(options.diagnostics);
+  CompileResult result;
+
+  PreprocessorOptions pp;
+  pp.include_paths = options.include_paths;
+  pp.include_paths.emplace_back(kBuiltinIncludeDir);
+  pp.defines = options.defines;
+  pp.undefines = options.undefines;
+  const std::string prelude_path = std::string(kBuiltinIncludeDir) + "/safegi/prelude.sgl";
+  pp.read_file = [&](const std::string& path) -> std::optional<std::string> {
+    if (path == prelude_path) return std::string(prelude_text());
+    if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
+    return options.read_file ? options.read_file(path) : read_from_disk(path);
+  };
+
+  std::vector<StageWork> work(sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    StageWork& w = work[i];
+    w.source = &sources[i];
+    w.file = manager->add_file(sources[i].path, sources[i].text);
+    std::optional<Stage> stage = sources[i].stage ? sources[i].stage : stage_from_path(sources[i].path);
+    if (!stage || *stage == Stage::unknown) {
+      diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
+                                     "cannot tell the shader stage of '" + sources[i].path + "' from its name")
+                       .with_hint("name it *.vert, *.frag, … (or *.sgl.frag), or give the stage with -S"));
+      continue;
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (work[j].stage == *stage) {
+        diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
+                                       "a program has at most one " + std::string(stage_extension(*stage)) +
+                                           " stage")
+                         .with_note(Diagnostic::note(manager->range_of(work[j].file, 0, 0), "the other one is here")));
+      }
+    w.stage = *stage;
+    if (diags.limit_reached()) break;
+    const std::size_t errors_before = diags.error_count();
+    w.preprocessed = preprocess(*manager, w.file, pp, diags);
+    w.parsed = parse(w.preprocessed.tokens, diags);
+    // A tree with syntax errors is partial: checking it would only add cascades.
+    if (diags.error_count() != errors_before || diags.limit_reached()) continue;
+    CheckOptions check_options;
+    check_options.stage = w.stage;
+    check_options.strict = options.strict;
+    w.checked = check(*w.parsed.unit, check_options, diags);
+    w.ok = diags.error_count() == errors_before;
+  }
+
+  // Cross-stage check between neighbouring stages of the pipeline.
+  std::vector<StageWork*> ordered;
+  for (StageWork& w : work)
+    if (w.checked) ordered.push_back(&w);
+  std::stable_sort(ordered.begin(), ordered.end(),
+                   [](const StageWork* a, const StageWork* b) { return pipeline_index(a->stage) < pipeline_index(b->stage); });
+  for (std::size_t i = 1; i < ordered.size(); ++i)
+    if (ordered[i - 1]->stage != Stage::compute && ordered[i]->stage != Stage::compute)
+      check_interface_match(*ordered[i - 1]->checked, *ordered[i]->checked, diags);
+
+  gl::SymbolTable& table = result.symbols;
+  table.mode = sources.size() > 1 ? gl::TableMode::program : gl::TableMode::shader;
+  table.compiler = std::string(kCompilerName) + " " + std::string(kCompilerVersion);
+  std::string stage_hashes;
+  for (StageWork& w : work) {
+    StageOutput out;
+    out.stage = w.stage;
+    out.path = w.source->path;
+    if (w.ok && !diags.has_errors()) {
+      ElideInput input{*manager, w.file, w.preprocessed, *w.parsed.unit, *w.checked, options.defines, options.undefines};
+      ElideResult elided = elide(input, diags);
+      out.glsl = std::move(elided.glsl);
+      if (std::optional<gl::Stage> table_stage = to_table_stage(w.stage)) {
+        table.stages.push_back(stage_symbols(input, *table_stage, w.source->path, elided.source_files));
+        stage_hashes += table.stages.back().source_hash;
+      }
+      add_declarations(table, input);
+    }
+    result.stages.push_back(std::move(out));
+  }
+  table.source_hash = source_hash(stage_hashes);
+  result.success = !diags.has_errors();
+  if (!result.success) {
+    for (StageOutput& s : result.stages) s.glsl.clear();
+    table.stages.clear();
+  }
+  result.diagnostics = diags.diagnostics();
+  result.sources = std::move(manager);
+  return result;
+}
+
+}  // namespace safegi

@@ -1,0 +1,156 @@
+// safegi::compile as a library: stages, program mode, diagnostics as values,
+// the built-in prelude, options, and concurrent use.
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "glslang_check.hpp"
+#include "safegi/compiler/cli.hpp"
+#include "safegi/compiler/compile.hpp"
+
+namespace safegi {
+namespace {
+
+const char* kFrag = R"(#version 330 core
+#include <safegi/prelude.sgl>
+uniform spectrum<radiance> Le;
+uniform float<1> gain;
+out vec4 color;
+void main() {
+    spectrum<radiance> L = Le * gain;
+    color = vec4(L, 1.0);
+}
+)";
+
+TEST(StageFromPath, ExtensionsWithAndWithoutTheAnnotatedSuffix) {
+  EXPECT_EQ(stage_from_path("a/light.sgl.frag"), Stage::fragment);
+  EXPECT_EQ(stage_from_path("light.frag"), Stage::fragment);
+  EXPECT_EQ(stage_from_path("light.vert.sgl"), Stage::vertex);
+  EXPECT_EQ(stage_from_path("x.comp"), Stage::compute);
+  EXPECT_EQ(stage_from_path("x.tesc"), Stage::tess_control);
+  EXPECT_EQ(stage_from_path("x.tese"), Stage::tess_evaluation);
+  EXPECT_EQ(stage_from_path("x.geom"), Stage::geometry);
+  EXPECT_EQ(stage_from_path("x.glsl"), std::nullopt);
+  EXPECT_EQ(stage_from_path("frag"), std::nullopt);
+  EXPECT_EQ(stage_from_name("fragment"), Stage::fragment);
+  EXPECT_EQ(stage_from_name("vert"), Stage::vertex);
+  EXPECT_EQ(stage_from_name("pixel"), std::nullopt);
+}
+
+TEST(Compile, OneShaderGivesGlslTheDriverAcceptsAndAShaderTable) {
+  CompileResult r = compile({{"light.sgl.frag", kFrag}});
+  ASSERT_TRUE(r.success) << r.diagnostics_text();
+  ASSERT_EQ(r.stages.size(), 1u);
+  EXPECT_EQ(r.stages[0].stage, Stage::fragment);
+  testing::GlslangVerdict v = testing::glslang_validate(r.stages[0].glsl, Stage::fragment);
+  EXPECT_TRUE(v.accepted) << v.log << r.stages[0].glsl;
+  EXPECT_EQ(r.symbols.mode, gl::TableMode::shader);
+  ASSERT_EQ(r.symbols.stages.size(), 1u);
+  const gl::Symbol* le = r.symbols.stages[0].find(gl::Storage::uniform, "Le");
+  ASSERT_NE(le, nullptr);
+  EXPECT_EQ(le->type.kind, gl::Kind::spectrum);
+  EXPECT_EQ(le->type.dimension.name, "radiance");
+  EXPECT_EQ(le->declared_at.line, 3);
+  // What we write is what the runtime reads.
+  gl::SymbolTable back = gl::parse_symbol_table(r.symbols_json());
+  EXPECT_EQ(gl::to_json(back), r.symbols_json());
+}
+
+TEST(Compile, DiagnosticsAreValuesWithLocations) {
+  CompileResult r = compile({{"bad.frag", "#version 330 core\n#include <safegi/prelude.sgl>\n"
+                                          "void main() { float<length> d = 1.0 * meter; float<time> t = d; }\n"}});
+  EXPECT_FALSE(r.success);
+  ASSERT_GE(r.error_count(), 1u);
+  EXPECT_EQ(r.diagnostics[0].range.begin.line, 3u);
+  EXPECT_NE(r.diagnostics_text().find("bad.frag:3:"), std::string::npos) << r.diagnostics_text();
+  EXPECT_TRUE(r.stages[0].glsl.empty());
+  EXPECT_TRUE(r.symbols.stages.empty());
+}
+
+TEST(Compile, UnknownStageIsAnError) {
+  CompileResult r = compile({{"shader.glsl", kFrag}});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.diagnostics_text().find("cannot tell the shader stage"), std::string::npos);
+}
+
+TEST(Compile, ProgramModeChecksStagesAgainstEachOther) {
+  const char* vert = "#version 330 core\n#include <safegi/prelude.sgl>\nout spectrum<irradiance> L;\n"
+                     "void main() { L = spectrum<irradiance>(0.0); gl_Position = vec4(0.0); }\n";
+  const char* frag = "#version 330 core\n#include <safegi/prelude.sgl>\nin spectrum<radiance> L;\nout vec4 c;\n"
+                     "void main() { c = vec4(L, 1.0); }\n";
+  CompileResult r = compile({{"p.sgl.vert", vert}, {"p.sgl.frag", frag}});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.diagnostics_text().find("p.sgl.frag:3"), std::string::npos) << r.diagnostics_text();
+
+  const char* good_vert = "#version 330 core\n#include <safegi/prelude.sgl>\nout spectrum<radiance> L;\n"
+                          "void main() { L = spectrum<radiance>(0.0); gl_Position = vec4(0.0); }\n";
+  CompileResult ok = compile({{"p.sgl.vert", good_vert}, {"p.sgl.frag", frag}});
+  ASSERT_TRUE(ok.success) << ok.diagnostics_text();
+  EXPECT_EQ(ok.symbols.mode, gl::TableMode::program);
+  EXPECT_EQ(ok.symbols.stages.size(), 2u);
+}
+
+TEST(Compile, TwoShadersOfOneStageAreRefused) {
+  CompileResult r = compile({{"a.frag", kFrag}, {"b.frag", kFrag}});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.diagnostics_text().find("at most one frag stage"), std::string::npos) << r.diagnostics_text();
+}
+
+TEST(Compile, IncludesComeFromTheCallersReader) {
+  CompileOptions options;
+  options.include_paths = {"inc"};
+  options.read_file = [](const std::string& path) -> std::optional<std::string> {
+    if (path == "inc/common.glsl") return std::string("float twice(float x) { return 2.0 * x; }\n");
+    return std::nullopt;
+  };
+  CompileResult r = compile({{"m.frag", "#version 330 core\n#include \"common.glsl\"\nout vec4 c;\n"
+                                        "void main() { c = vec4(twice(1.0)); }\n"}},
+                            options);
+  ASSERT_TRUE(r.success) << r.diagnostics_text();
+  const std::string& glsl = r.stages[0].glsl;
+  EXPECT_NE(glsl.find("#line 1 1\nfloat twice"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find("#line 3 0\nout vec4 c;"), std::string::npos) << glsl;
+  EXPECT_TRUE(testing::glslang_validate(glsl, Stage::fragment).accepted) << glsl;
+  ASSERT_EQ(r.symbols.stages[0].source_files.size(), 2u);
+  EXPECT_EQ(r.symbols.stages[0].source_files[1], "inc/common.glsl");
+}
+
+TEST(Compile, DefinesReachTheDriverToo) {
+  CompileOptions options;
+  options.defines = {{"USE_GAIN", "1"}};
+  CompileResult r = compile({{"d.frag", "#version 330 core\nout vec4 c;\nvoid main() {\n#ifdef USE_GAIN\n"
+                                        "  c = vec4(2.0);\n#else\n  c = vec4(float<length>(1.0));\n#endif\n}\n"}},
+                            options);
+  ASSERT_TRUE(r.success) << r.diagnostics_text();
+  EXPECT_EQ(r.stages[0].glsl.rfind("#version 330 core\n#define USE_GAIN 1\n#line 2\nout vec4 c;", 0), 0u)
+      << r.stages[0].glsl;
+}
+
+TEST(Compile, WerrorAndErrorLimit) {
+  CompileOptions options;
+  options.strict = true;
+  CompileResult warn = compile({{"w.frag", "#version 330 core\nuniform float gain;\nout vec4 c;\nvoid main() { c = vec4(gain); }\n"}},
+                               options);
+  EXPECT_TRUE(warn.success);
+  EXPECT_GE(warn.warning_count(), 1u);
+  options.diagnostics.warnings_as_errors = true;
+  EXPECT_FALSE(compile({{"w.frag", "#version 330 core\nuniform float gain;\nvoid main() {}\n"}}, options).success);
+
+  CompileOptions limited;
+  limited.diagnostics.error_limit = 1;
+  CompileResult many = compile({{"e.frag", "#version 330 core\nvoid main() { a = 1; b = 2; c = 3; }\n"}}, limited);
+  EXPECT_LE(many.error_count(), 2u);
+}
+
+TEST(Compile, IsSafeFromSeveralThreads) {
+  std::vector<std::string> outputs(8);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    threads.emplace_back([&outputs, i] { outputs[i] = compile({{"light.sgl.frag", kFrag}}).stages[0].glsl; });
+  for (std::thread& t : threads) t.join();
+  for (const std::string& o : outputs) EXPECT_EQ(o, outputs[0]);
+  EXPECT_FALSE(outputs[0].empty());
+}
+
+}  // namespace
+}  // namespace safegi

@@ -1,0 +1,39 @@
+// safegi_add_shaders() ran at build time for this test binary (see
+// CMakeLists.txt): its outputs exist, are plain GLSL a driver accepts and a
+// program-mode symbol table the runtime can read.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "glslang_check.hpp"
+#include "safegi/runtime_gl/symbol_table.hpp"
+
+namespace safegi {
+namespace {
+
+std::string read(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(SafegiAddShaders, WritesGlslADriverAcceptsAndOneProgramTable) {
+  const std::string dir = SAFEGI_GENERATED_SHADERS;
+  for (auto [name, stage] : {std::pair{"tint.vert.glsl", Stage::vertex}, std::pair{"tint.frag.glsl", Stage::fragment}}) {
+    const std::string glsl = read(dir + "/" + name);
+    ASSERT_FALSE(glsl.empty()) << name;
+    EXPECT_EQ(glsl.find('<'), std::string::npos) << glsl;
+    testing::GlslangVerdict verdict = testing::glslang_validate(glsl, stage);
+    EXPECT_TRUE(verdict.accepted) << verdict.log << glsl;
+  }
+  gl::SymbolTable table = gl::parse_symbol_table(read(dir + "/safegi_compiler_test.json"), "generated");
+  EXPECT_EQ(table.mode, gl::TableMode::program);
+  ASSERT_EQ(table.stages.size(), 2u);
+  ASSERT_NE(table.stage(gl::Stage::vertex), nullptr);
+  EXPECT_NE(table.stage(gl::Stage::vertex)->find(gl::Storage::uniform, "worldFromObject"), nullptr);
+}
+
+}  // namespace
+}  // namespace safegi

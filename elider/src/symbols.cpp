@@ -1,0 +1,185 @@
+// The symbol table of a checked stage (docs/symbol-table.md), built as a
+// safegi::gl::SymbolTable so that what the compiler writes is what the
+// runtime reads.
+
+#include <unordered_map>
+
+#include "safegi/elider/elider.hpp"
+
+namespace safegi {
+namespace {
+
+constexpr std::string_view kBuiltinDir = "<builtin>";
+
+gl::SourceLocation location_of(const SourceManager& sources, SourceLocation loc) {
+  gl::SourceLocation out;
+  if (!loc.valid()) return out;
+  PresumedLocation p = sources.presumed(loc);
+  out.file = std::string(p.file_name);
+  if (out.file.rfind(kBuiltinDir, 0) == 0) out.file = std::string(kBuiltinDir);
+  out.line = static_cast<int>(p.line);
+  out.column = static_cast<int>(p.column);
+  return out;
+}
+
+gl::DimensionExponents exponents_of(const Dimension& d, const DimensionRegistry& registry) {
+  gl::DimensionExponents out;
+  for (const Factor& f : d.factors()) out[registry.base_name(f.base)] = f.exponent;
+  return out;
+}
+
+class SymbolBuilder {
+ public:
+  explicit SymbolBuilder(const ElideInput& input) : in_(input), registry_(input.checked.registry) {}
+
+  gl::ValueType value_type(const Type& t) const {
+    gl::ValueType v;
+    v.glsl_type = glsl_name(t.element());
+    auto space = [&](const SpaceSlot& s) { return s.is_known() ? registry_.space_name(s.id) : std::string("?"); };
+    switch (t.geometry) {
+      case Geometry::spectrum: v.kind = gl::Kind::spectrum; break;
+      case Geometry::point: v.kind = gl::Kind::point; break;
+      case Geometry::vector: v.kind = gl::Kind::vector; break;
+      case Geometry::direction: v.kind = gl::Kind::direction; break;
+      case Geometry::normal: v.kind = gl::Kind::normal; break;
+      case Geometry::hpoint: v.kind = gl::Kind::hpoint; break;
+      case Geometry::map:
+      case Geometry::rigidmap:
+      case Geometry::projmap: v.kind = gl::Kind::map; break;
+      case Geometry::none:
+        if (t.texel) v.kind = gl::Kind::sampler;
+        else if (t.dim.is_known()) v.kind = gl::Kind::scalar;
+        else v.kind = gl::Kind::plain;
+        break;
+    }
+    if (has_space(t.geometry)) v.spaces.push_back(space(t.from));
+    if (is_map(t.geometry)) v.spaces.push_back(space(t.to));
+    if ((v.kind == gl::Kind::scalar || v.kind == gl::Kind::spectrum) && t.dim.is_known()) {
+      v.dimension.exponents = exponents_of(t.dim.value, registry_);
+      v.dimension.name = t.dim.spelling.empty() ? registry_.format(t.dim.value, Notation::ascii) : t.dim.spelling;
+    }
+    return v;
+  }
+
+  gl::Symbol symbol(const InterfaceVariable& iv, gl::Storage storage, const std::string& name) const {
+    gl::Symbol s;
+    s.name = name;
+    s.storage = storage;
+    s.type = value_type(iv.type);
+    s.printed_type = type_name(iv.type.element(), registry_);
+    if (iv.type.texel) s.texel = value_type(*iv.type.texel);
+    if (iv.type.is_array() && iv.type.array.front() > 0) s.array_size = iv.type.array.front();
+    if (iv.location >= 0) s.location = iv.location;
+    if (iv.binding >= 0) s.binding = iv.binding;
+    s.declared_at = location_of(in_.sources, iv.range.begin);
+    return s;
+  }
+
+  std::vector<gl::Symbol> symbols() const {
+    std::unordered_map<const ast::Node*, const ast::InterfaceBlockDecl*> block_of;
+    for (const ast::Decl* d : in_.unit.decls)
+      if (auto* b = ast::dyn_cast<ast::InterfaceBlockDecl>(d))
+        for (const ast::VariableDecl* m : b->members) block_of[m] = b;
+
+    std::vector<gl::Symbol> out;
+    const ast::InterfaceBlockDecl* open_block = nullptr;
+    for (const InterfaceVariable& iv : in_.checked.interface) {
+      std::optional<gl::Storage> storage;
+      switch (iv.kind) {
+        case InterfaceKind::uniform: storage = gl::Storage::uniform; break;
+        case InterfaceKind::input: storage = gl::Storage::input; break;
+        case InterfaceKind::output: storage = gl::Storage::output; break;
+        default: break;  // buffers and shared variables are not in schema v1
+      }
+      if (!storage) continue;
+      auto found = block_of.find(iv.decl);
+      if (iv.block.empty() || found == block_of.end()) {
+        open_block = nullptr;
+        out.push_back(symbol(iv, *storage, iv.name));
+        continue;
+      }
+      const ast::InterfaceBlockDecl* block = found->second;
+      if (block != open_block) {
+        open_block = block;
+        gl::Symbol b;
+        b.name = block->block_name;
+        b.storage = *storage;
+        b.type.kind = gl::Kind::block;
+        b.type.glsl_type = block->block_name;
+        b.printed_type = block->block_name;
+        b.instance_name = block->instance_name;
+        if (!block->instance_array_dims.empty() && block->instance_array_dims.front().size)
+          if (auto* lit = ast::dyn_cast<ast::LiteralExpr>(block->instance_array_dims.front().size))
+            if (auto n = integer_literal_value(lit->spelling); n && *n > 0 && *n < (1u << 31)) b.array_size = static_cast<int>(*n);
+        for (const ast::Qualifier& q : block->qualifiers.list)
+          for (const ast::LayoutId& id : q.layout_ids)
+            if (id.name == "binding" && id.value)
+              if (auto* lit = ast::dyn_cast<ast::LiteralExpr>(id.value))
+                if (auto n = integer_literal_value(lit->spelling); n && *n < (1u << 31)) b.binding = static_cast<int>(*n);
+        b.declared_at = location_of(in_.sources, block->block_name_range.begin);
+        out.push_back(std::move(b));
+      }
+      std::string member = iv.name;
+      if (!block->instance_name.empty() && member.rfind(block->instance_name + ".", 0) == 0)
+        member = member.substr(block->instance_name.size() + 1);
+      gl::Symbol m = symbol(iv, *storage, member);
+      m.block = block->block_name;
+      out.back().members.push_back(std::move(m));
+    }
+    return out;
+  }
+
+ private:
+  const ElideInput& in_;
+  const DimensionRegistry& registry_;
+};
+
+}  // namespace
+
+gl::StageSymbols stage_symbols(const ElideInput& input, gl::Stage stage, const std::string& file,
+                               const std::vector<std::string>& source_files) {
+  gl::StageSymbols s;
+  s.stage = stage;
+  s.file = file;
+  s.glsl_version = input.preprocessed.version;
+  s.glsl_profile = input.preprocessed.profile;
+  s.source_files = source_files;
+  if (!s.source_files.empty()) s.source_files.front() = file;
+  std::string all;
+  all += input.sources.text(input.main_file);
+  for (const IncludedFile& inc : input.preprocessed.includes) all += input.sources.text(inc.file);
+  s.source_hash = source_hash(all);
+  s.symbols = SymbolBuilder(input).symbols();
+  return s;
+}
+
+void add_declarations(gl::SymbolTable& table, const ElideInput& input) {
+  const DimensionRegistry& registry = input.checked.registry;
+  auto known = [](const auto& list, const std::string& name) {
+    for (const auto& item : list)
+      if (item.name == name) return true;
+    return false;
+  };
+  for (const ast::Decl* d : input.unit.decls) {
+    if (auto* dim = ast::dyn_cast<ast::DimensionDecl>(d)) {
+      gl::SourceLocation at = location_of(input.sources, dim->name_range.begin);
+      if (dim->definition == nullptr) {
+        if (!known(table.base_dimensions, dim->name) && registry.find_base(dim->name))
+          table.base_dimensions.push_back({dim->name, at});
+      } else if (const DerivedDimension* derived = registry.find_derived(dim->name)) {
+        if (!known(table.derived_dimensions, dim->name))
+          table.derived_dimensions.push_back({dim->name, exponents_of(derived->value, registry), at});
+      }
+    } else if (auto* unit = ast::dyn_cast<ast::UnitDecl>(d)) {
+      if (const Unit* u = registry.find_unit(unit->name); u && !known(table.units, unit->name)) {
+        gl::Dimension dimension{exponents_of(u->dimension, registry), registry.format(u->dimension, Notation::ascii)};
+        table.units.push_back({unit->name, dimension, u->scale, location_of(input.sources, unit->name_range.begin)});
+      }
+    } else if (auto* space = ast::dyn_cast<ast::SpaceDecl>(d)) {
+      if (!known(table.spaces, space->name) && registry.find_space(space->name))
+        table.spaces.push_back({space->name, location_of(input.sources, space->name_range.begin)});
+    }
+  }
+}
+
+}  // namespace safegi

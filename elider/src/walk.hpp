@@ -1,0 +1,15 @@
+#pragma once
+// Pre-order traversal of every node of a syntax tree, type specifiers and
+// annotation arguments included. The parser bounds tree height, so recursion
+// is safe here.
+
+#include <functional>
+
+#include <safegi/parser/ast.hpp>
+
+namespace safegi::elider_detail {
+
+using Visitor = std::function<void(const ast::Node&)>;
+void walk(const ast::Node* node, const Visitor& visit);
+
+}  // namespace safegi::elider_detail

@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --diagnostics-format=xml
+#version 330 core
+void main() {}

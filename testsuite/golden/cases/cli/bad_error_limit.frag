@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --error-limit=many
+#version 330 core
+void main() {}

@@ -1,0 +1,3 @@
+// ARGS: --color=always
+#version 330 core
+void main() { x = 1; }

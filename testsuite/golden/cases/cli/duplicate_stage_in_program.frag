@@ -1,0 +1,4 @@
+// WITH: cli/inputs/other.frag
+#version 330 core
+out vec4 c;
+void main() { c = vec4(1.0); }

@@ -1,0 +1,4 @@
+// RAW
+// ARGS: cli/does_not_exist.frag
+#version 330 core
+void main() {}

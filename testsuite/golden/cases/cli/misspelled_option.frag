@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --version-typo
+#version 330 core
+void main() {}

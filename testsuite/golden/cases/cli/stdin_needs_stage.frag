@@ -1,0 +1,3 @@
+// STDIN
+#version 330 core
+void main() {}

@@ -1,0 +1,5 @@
+// STDIN
+// ARGS: -S frag
+#version 330 core
+out vec4 c;
+void main() { c = vec4(1.0) @; }

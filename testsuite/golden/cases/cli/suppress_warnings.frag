@@ -1,0 +1,5 @@
+// ARGS: --strict -w
+#version 330 core
+uniform float gain;
+out vec4 c;
+void main() { c = vec4(gain); }

@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --frobnicate
+#version 330 core
+void main() {}

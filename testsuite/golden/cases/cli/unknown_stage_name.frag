@@ -1,0 +1,3 @@
+// ARGS: -S pixel
+#version 330 core
+void main() {}

@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --version
+#version 330 core
+void main() {}

@@ -1,0 +1,4 @@
+#version 330 core
+out vec4 c;
+/* never closed
+void main() { c = vec4(1.0); }

@@ -1,0 +1,4 @@
+#version 330 core
+dimension length;
+dimension area = ;
+void main() {}

@@ -1,0 +1,4 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+uniform float<> d;
+void main() {}

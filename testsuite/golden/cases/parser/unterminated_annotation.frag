@@ -1,0 +1,4 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+uniform float<length d;
+void main() {}

@@ -1,0 +1,4 @@
+#version 330 core
+#if defined()
+#endif
+void main() {}

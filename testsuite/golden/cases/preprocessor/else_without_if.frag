@@ -1,0 +1,3 @@
+#version 330 core
+#else
+void main() {}

@@ -1,0 +1,4 @@
+#version 330 core
+#define SQ(x) ((x) * (x))
+out vec4 c;
+void main() { c = vec4(SQ(1.0, 2.0)); }

@@ -1,0 +1,3 @@
+#version 330 core
+#include "inputs/cycle_a.glsl"
+void main() {}

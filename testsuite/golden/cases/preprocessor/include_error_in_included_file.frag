@@ -1,0 +1,3 @@
+#version 330 core
+#include "inputs/broken.glsl"
+void main() {}

@@ -1,0 +1,2 @@
+// shared helpers
+float twice(float x) { return 2.0 * x; }

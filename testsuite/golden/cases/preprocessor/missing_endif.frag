@@ -1,0 +1,4 @@
+#version 330 core
+#ifdef FOO
+out vec4 c;
+void main() {}

@@ -1,0 +1,8 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+out vec4 c;
+void main() {
+  float<length> d = 2.0 * meter;
+  float<time> t = 1.0 * second;
+  c = vec4(d + t);
+}

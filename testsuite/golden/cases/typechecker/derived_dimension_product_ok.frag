@@ -1,0 +1,9 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+out vec4 c;
+void main() {
+  float<length> d = 2.0 * meter;
+  float<area> a = d * d;
+  float<volume> v = a * d;
+  c = vec4(v);
+}

@@ -1,0 +1,8 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+uniform spectrum<power> Phi;
+out vec4 c;
+void main() {
+  spectrum<intensity> I = Phi / (4.0 * 3.14159265 * steradian);
+  c = vec4(I, 1.0);
+}

@@ -1,0 +1,10 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+out vec4 c;
+void main() {
+  float<length> d = 2.0 * meter;
+  float<time> t = 1.0 * second;
+  float<length> e = d + t;
+  float<length> f = e * 2.0;
+  c = vec4(f);
+}

@@ -1,0 +1,8 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+out vec4 c;
+void main() {
+  float<length> d = 2.0 * meter;
+  float<volume> v = pow(d, 3);
+  c = vec4(v);
+}

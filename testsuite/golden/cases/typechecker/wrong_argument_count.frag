@@ -1,0 +1,6 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+out vec4 c;
+void main() {
+  c = vec4(dot(vec3(1.0)));
+}
