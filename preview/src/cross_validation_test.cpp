@@ -1,7 +1,10 @@
 // The preview against the CPU renderer's direct-lighting integrator on the
-// bundled scenes, at small resolutions. The tolerances and what they cover
-// (CPU noise at the sample count used, shadow-map bias, tessellated spheres)
-// are in docs/preview.md; they are not loosened to pass.
+// bundled scenes, at small resolutions. Each tolerance is about twice the
+// difference measured when it was set (docs/preview.md, "Cross-validation"):
+// the CPU images' own noise is 5-10x smaller, so what is left is the
+// preview's approximation — shadow-map texels and bias at shadow edges and
+// contacts, 16 anti-aliasing positions per pixel at silhouettes, tessellated
+// spheres. They are not loosened to pass.
 #include <cmath>
 #include <cstdio>
 
@@ -78,8 +81,8 @@ TEST_F(CrossValidation, CornellBoxAreaLight) {
   options.light_samples = 64;
   options.passes = 16;
   Agreement a = check(load("cornell-box/cornell-box.json"), 64, 64, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.06);
-  expect_means_within(a, 0.02);
+  EXPECT_LT(a.relative_rmse, 0.04);
+  expect_means_within(a, 0.01);
 }
 
 // The box lit by a point light instead (preview/scenes/cornell-point-light.json): hard shadows from the cube map.
@@ -88,8 +91,8 @@ TEST_F(CrossValidation, CornellBoxPointLight) {
   PreviewOptions options;
   options.passes = 16;
   Agreement a = check(scene, 64, 64, 256, options);
-  EXPECT_LT(a.relative_rmse, 0.06);
-  expect_means_within(a, 0.02);
+  EXPECT_LT(a.relative_rmse, 0.02);
+  expect_means_within(a, 0.01);
 }
 
 // Phong spheres under a point light and an area light.
@@ -98,8 +101,8 @@ TEST_F(CrossValidation, PhongPointAndAreaLight) {
   options.light_samples = 64;
   options.passes = 16;
   Agreement a = check(load("phong.json"), 100, 40, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.08);
-  expect_means_within(a, 0.03);
+  EXPECT_LT(a.relative_rmse, 0.045);
+  expect_means_within(a, 0.01);
 }
 
 // Motion blur: 16 shutter times accumulated against the CPU renderer's random times.
@@ -108,8 +111,8 @@ TEST_F(CrossValidation, MotionBlur) {
   options.light_samples = 32;
   options.passes = 32;
   Agreement a = check(load("motion-blur.json"), 80, 60, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.08);
-  expect_means_within(a, 0.03);
+  EXPECT_LT(a.relative_rmse, 0.025);
+  expect_means_within(a, 0.01);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <regex>
+#include <ctime>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,20 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// CPU time of the whole process (llvmpipe's rasterizer threads included): on a
+// shared, loaded machine it says what a frame costs, where wall time says how
+// much of the machine the process got.
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -28,7 +43,7 @@ int main(int argc, char** argv) {
   std::string scene_file, output = "preview.exr", resolution, platform;
   safegi::preview::PreviewOptions options;
   int time_samples = 0, frames = 1;
-  bool no_area_shadows = false, stats = false;
+  bool no_area_shadows = false, stats = false, pfm = false;
   app.add_option("scene", scene_file, "scene file (.json, docs/scene-format.md)")->required();
   app.add_option("-o,--output", output, "NAME.exr: writes NAME.exr (linear) and NAME.png (sRGB); NAME.png: PNG only");
   app.add_option("--light-samples", options.light_samples, "points per area light per pass (default 16)")
@@ -52,6 +67,7 @@ int main(int argc, char** argv) {
                "redraw point-light shadow maps every frame even when nothing moves (timing)");
   app.add_option("--frames", frames, "render the frame this many times (timing; the last one is written)")
       ->check(CLI::Range(1, 100000));
+  app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, readable without OpenImageIO)");
   app.add_flag("--stats", stats, "timings on stderr: start-up phases, first frame, median frame");
   CLI11_PARSE(app, argc, argv);
 
@@ -81,14 +97,16 @@ int main(int argc, char** argv) {
     safegi::preview::Preview preview(scene, options);  // compiles the annotated shaders through safegi::compile
     const double programs_ready = seconds_since(start);
 
-    std::vector<double> frame_seconds;
+    std::vector<double> frame_seconds, frame_cpu_seconds;
     safegi::render::Image image;
     safegi::preview::FrameStats frame_stats;
     double first_frame = 0;
     for (int f = 0; f < frames; ++f) {
       Clock::time_point frame_start = Clock::now();
+      double cpu_start = process_cpu_seconds();
       image = preview.render(&frame_stats);  // read back included: a frame is done when its pixels are
       frame_seconds.push_back(seconds_since(frame_start));
+      frame_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       if (f == 0) first_frame = seconds_since(start);
     }
     if (out.extension() == ".exr") {
@@ -97,18 +115,19 @@ int main(int argc, char** argv) {
     } else {
       safegi::render::write_png(out, image);
     }
+    if (pfm) safegi::render::write_pfm(std::filesystem::path(out).replace_extension(".pfm"), image);
     if (stats) {
       std::vector<double> sorted = frame_seconds;
       std::sort(sorted.begin(), sorted.end());
-      double median = sorted[sorted.size() / 2];
+      double wall = median(frame_seconds), cpu = median(frame_cpu_seconds);
       std::fprintf(stderr,
                    "%s\n%dx%d, %d passes, %d area samples, %d shadow faces, %d draws per frame\n"
                    "start-up: scene %.3f s, context %.3f s, shaders compiled and linked %.3f s, first frame at %.3f s\n"
-                   "frames: %d, median %.2f ms (%.1f fps), min %.2f ms, max %.2f ms\n",
+                   "frames: %d, median %.2f ms (%.1f fps), min %.2f ms, max %.2f ms; process CPU time per frame: median %.2f ms\n",
                    safegi::gl::describe(context.info()).c_str(), preview.width(), preview.height(),
                    frame_stats.passes, frame_stats.area_samples, frame_stats.shadow_faces, frame_stats.draw_calls,
                    loaded, context_ready - loaded, programs_ready - context_ready, first_frame, frames,
-                   median * 1e3, 1.0 / median, sorted.front() * 1e3, sorted.back() * 1e3);
+                   wall * 1e3, 1.0 / wall, sorted.front() * 1e3, sorted.back() * 1e3, cpu * 1e3);
     }
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << "\n";

@@ -112,6 +112,20 @@ bool face_sees_front(int face, glm::vec3 emitter_normal) {
   return best > 0;
 }
 
+// Where pass p of n samples its pixels: the Halton points of bases 3 and 2,
+// whose 1-D projections are stratified (base 2 exactly, for n a power of two),
+// so a pixel cut by a horizontal or vertical edge is covered to within ~1/n.
+glm::vec2 pixel_offset(int pass, int passes) {
+  auto radical_inverse = [](uint32_t i, uint32_t base) {
+    double inverse = 1.0 / base, scale = inverse, value = 0;
+    for (; i > 0; i /= base, scale *= inverse) value += (i % base) * scale;
+    return value;
+  };
+  double shift = 0.5 / passes;
+  double x = radical_inverse(static_cast<uint32_t>(pass), 3) + shift, y = radical_inverse(static_cast<uint32_t>(pass), 2) + shift;
+  return {static_cast<float>(x - std::floor(x)), static_cast<float>(y - std::floor(y))};
+}
+
 }  // namespace
 
 struct Preview::Impl {
@@ -326,8 +340,7 @@ struct Preview::Impl {
     for (int p = 0; p < passes; ++p) {
       float stratum = (static_cast<float>(p) + 0.5f) / static_cast<float>(passes);
       Time time = camera.shutter_open + (camera.shutter_close - camera.shutter_open) * stratum;
-      glm::vec2 jitter(0.5f);
-      if (passes > 1) r2_point(static_cast<uint32_t>(p), jitter.x, jitter.y);
+      glm::vec2 jitter = passes > 1 ? pixel_offset(p, passes) : glm::vec2(0.5f);
       ClipFromWorld clip = clip_from_world(jitter);
       if (!point_shadows_valid || poses.animated() || options.refresh_shadows) {
         for (size_t i = 0; i < scene.point_lights.size(); ++i)
