@@ -8,7 +8,9 @@ if(SAFEGI_SANITIZE)
   add_link_options(${SAFEGI_SANITIZER_FLAGS})
   # ASan's instrumentation makes GCC 12 report -Wmaybe-uninitialized inside
   # libstdc++'s <regex> and <functional>; the uninstrumented build keeps it on.
-  add_compile_options(-Wno-maybe-uninitialized)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    add_compile_options(-Wno-maybe-uninitialized)
+  endif()
 endif()
 
 # Applies the project's warning level to one target without forcing it on
