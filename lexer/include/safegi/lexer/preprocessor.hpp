@@ -49,7 +49,7 @@ struct ExtensionDirective {
 };
 
 struct PragmaDirective {
-  std::string text;  // the tokens after #pragma, separated by single spaces
+  std::string text;  // the tokens after #pragma; one space wherever the source had white space
   SourceRange range;
 };
 
