@@ -224,17 +224,20 @@ TEST(Extremes, SliverTrianglesRenderLikeOneQuad) {
 }
 
 // A floor 2e7 m wide (float spacing ~1 m at its corners) lit 1 m above its centre
-// renders as a 4 m floor: hit points and ray offsets must not scale with the
-// triangle's far-away vertices.
+// renders as a 40 m floor (which already fills the view): hit points and ray
+// offsets must not scale with the triangle's far-away vertices. Level and tilted
+// by 10 deg (then no coordinate of the plane is exact).
 TEST(Extremes, HugeTriangleRendersLikeASmallOne) {
-  const double o[3] = {-2, 0, -2}, u[3] = {0, 0, 4}, v[3] = {4, 0, 0};
-  // The 40 m floor already fills the view (the camera looks 25 deg below the horizon at most).
-  Image reference = render_text(floor_scene(quad(10, o, u, v, R"("material": "matte")")), 16);
-  Image image = render_text(floor_scene(quad(5e6, o, u, v, R"("material": "matte")")), 16);
-  Difference d = compare(reference, image);
-  EXPECT_LT(std::fabs(d.mean_difference), 4 * d.standard_error + 1e-5 * d.mean_a);
-  EXPECT_LT(d.standard_error, 0.01 * d.mean_a);
-  std::printf("huge: mean %.5g difference %.3g se %.3g\n", d.mean_a, d.mean_difference, d.standard_error);
+  for (double tilt : {0.0, 10.0}) {
+    const double c = std::cos(tilt * std::numbers::pi / 180), s = std::sin(tilt * std::numbers::pi / 180);
+    const double o[3] = {-2 * c, 2 * s, -2}, u[3] = {0, 0, 4}, v[3] = {4 * c, -4 * s, 0};
+    Image reference = render_text(floor_scene(quad(10, o, u, v, R"("material": "matte")")), 16);
+    Image image = render_text(floor_scene(quad(5e6, o, u, v, R"("material": "matte")")), 16);
+    Difference d = compare(reference, image);
+    EXPECT_LT(std::fabs(d.mean_difference), 4 * d.standard_error + 1e-5 * d.mean_a) << tilt;
+    EXPECT_LT(d.standard_error, 0.01 * d.mean_a) << tilt;
+    std::printf("huge, tilt %g: mean %.5g difference %.3g se %.3g\n", tilt, d.mean_a, d.mean_difference, d.standard_error);
+  }
 }
 
 // --- Camera inside geometry ------------------------------------------------------

@@ -167,15 +167,15 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) 
                       static_cast<float>(o.z + t * d.z)};
       // Rounding to float, plus the double computation's own error (its t is
       // off by ~1e-16 |p0 - o| / |cos|, which moves the point along the ray:
-      // off the plane by ~1e-16 (|o| + |p0| + |t d|)); the barycentric box stays
-      // as a floor, as it also covers Möller–Trumbore's error on the next ray.
+      // off the plane by ~1e-16 (|o| + |p0| + |t d|)). The next ray's triangle
+      // test is double too, so this box alone keeps it off this triangle; the
+      // old barycentric box pushed rays metres off tilted 1e7 m triangles.
       constexpr double kDoubleError = 16 * 0x1p-53;
       Float3 computation_error = {
           static_cast<float>(kDoubleError * (std::fabs(o.x) + std::fabs(p0.x) + std::fabs(t * d.x))),
           static_cast<float>(kDoubleError * (std::fabs(o.y) + std::fabs(p0.y) + std::fabs(t * d.y))),
           static_cast<float>(kDoubleError * (std::fabs(o.z) + std::fabs(p0.z) + std::fabs(t * d.z)))};
-      Float3 barycentric_error = (abs(tri.p0) + abs(tri.e1 * b1) + abs(tri.e2 * b2)) * gamma(7);
-      hit.position_error = kernel::max(abs(hit.position) * gamma(2) + computation_error, barycentric_error);
+      hit.position_error = abs(hit.position) * gamma(2) + computation_error;
     } else {  // Möller–Trumbore accepted a hit the plane test cannot place: keep its own point
       Float3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
       hit.position = tri.p0 + along_u + along_v;
