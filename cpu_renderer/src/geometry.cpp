@@ -102,8 +102,8 @@ bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, floa
     if (index < triangle_count) {
       // Möller–Trumbore in double: in float its u, v and t carry an absolute
       // error that grows with |origin - p0| and the edge lengths, which opens
-      // metre-wide cracks along the shared edges of 1e7 m triangles. Scalar
-      // double costs the same as scalar float here; the data stays float.
+      // metre-wide cracks along the shared edges of 1e7 m triangles. The data
+      // stays float; the double arithmetic costs ~5% of rays/s (docs/stability.md).
       const Triangle& tri = triangles_[index];
       const Double3 d = to_double(ray.direction), e1 = to_double(tri.e1), e2 = to_double(tri.e2);
       Double3 p = cross(d, e2);
