@@ -61,6 +61,15 @@ Bounds3 transform_bounds(const Affine& m, const Bounds3& b) {
   return result;
 }
 
+// The triangle test's arithmetic (see PrimitiveSet::trace).
+struct Double3 {
+  double x, y, z;
+  friend Double3 operator-(Double3 a, Double3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+};
+Double3 to_double(Float3 v) { return {v.x, v.y, v.z}; }
+double dot(Double3 a, Double3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -91,24 +100,28 @@ bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, floa
   const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
   return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t index, float& t_limit) {
     if (index < triangle_count) {
-      // Möller–Trumbore.
+      // Möller–Trumbore in double: in float its u, v and t carry an absolute
+      // error that grows with |origin - p0| and the edge lengths, which opens
+      // metre-wide cracks along the shared edges of 1e7 m triangles. The data
+      // stays float; the double arithmetic costs ~5% of rays/s (docs/stability.md).
       const Triangle& tri = triangles_[index];
-      Float3 p = cross(ray.direction, tri.e2);
-      float det = dot(tri.e1, p);
-      if (det == 0.0f) return false;
-      float inverse_det = 1.0f / det;
-      Float3 s = ray.origin - tri.p0;
-      float u = dot(s, p) * inverse_det;
-      if (u < 0.0f || u > 1.0f) return false;
-      Float3 q = cross(s, tri.e1);
-      float v = dot(ray.direction, q) * inverse_det;
-      if (v < 0.0f || u + v > 1.0f) return false;
-      float t = dot(tri.e2, q) * inverse_det;
+      const Double3 d = to_double(ray.direction), e1 = to_double(tri.e1), e2 = to_double(tri.e2);
+      Double3 p = cross(d, e2);
+      double det = dot(e1, p);
+      if (det == 0.0) return false;
+      double inverse_det = 1.0 / det;
+      Double3 s = to_double(ray.origin) - to_double(tri.p0);
+      double u = dot(s, p) * inverse_det;
+      if (u < 0.0 || u > 1.0) return false;
+      Double3 q = cross(s, e1);
+      double v = dot(d, q) * inverse_det;
+      if (v < 0.0 || u + v > 1.0) return false;
+      float t = static_cast<float>(dot(e2, q) * inverse_det);
       if (!(t > 0.0f && t < t_limit)) return false;
       t_limit = t;
       primitive = index;
-      b1 = u;
-      b2 = v;
+      b1 = static_cast<float>(u);
+      b2 = static_cast<float>(v);
       return true;
     }
     // Sphere, with the discriminant computed from the perpendicular offset for
@@ -141,9 +154,33 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) 
   hit.distance = t_max;
   if (primitive < triangles_.size()) {
     const Triangle& tri = triangles_[primitive];
-    Float3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
-    hit.position = tri.p0 + along_u + along_v;
-    hit.position_error = (abs(tri.p0) + abs(along_u) + abs(along_v)) * gamma(7);
+    // Möller–Trumbore's barycentrics (and t) carry an absolute error that grows
+    // with |origin - p0| and the edge lengths: on a 2e7 m floor the hit lands
+    // ~1 m off and its error box spans metres. The hit is recomputed on the
+    // triangle's plane in double, so its error is that of rounding the point
+    // itself to float, whatever the triangle's size.
+    const Double3 o = to_double(ray.origin), d = to_double(ray.direction), p0 = to_double(tri.p0);
+    const Double3 n = cross(to_double(tri.e1), to_double(tri.e2));
+    double t = dot(p0 - o, n) / dot(d, n);
+    if (std::isfinite(t) && t > 0) {
+      hit.position = {static_cast<float>(o.x + t * d.x), static_cast<float>(o.y + t * d.y),
+                      static_cast<float>(o.z + t * d.z)};
+      // Rounding to float, plus the double computation's own error (its t is
+      // off by ~1e-16 |p0 - o| / |cos|, which moves the point along the ray:
+      // off the plane by ~1e-16 (|o| + |p0| + |t d|)). The next ray's triangle
+      // test is double too, so this box alone keeps it off this triangle; the
+      // old barycentric box pushed rays metres off tilted 1e7 m triangles.
+      constexpr double kDoubleError = 16 * 0x1p-53;
+      Float3 computation_error = {
+          static_cast<float>(kDoubleError * (std::fabs(o.x) + std::fabs(p0.x) + std::fabs(t * d.x))),
+          static_cast<float>(kDoubleError * (std::fabs(o.y) + std::fabs(p0.y) + std::fabs(t * d.y))),
+          static_cast<float>(kDoubleError * (std::fabs(o.z) + std::fabs(p0.z) + std::fabs(t * d.z)))};
+      hit.position_error = abs(hit.position) * gamma(2) + computation_error;
+    } else {  // Möller–Trumbore accepted a hit the plane test cannot place: keep its own point
+      Float3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+      hit.position = tri.p0 + along_u + along_v;
+      hit.position_error = (abs(tri.p0) + abs(along_u) + abs(along_v)) * gamma(7);
+    }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
   } else {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -101,6 +102,15 @@ class Loader {
     return *found;
   }
 
+  // Every value ends up in a float: one that would become infinite, or 0 from a
+  // non-zero value, is an error rather than a silently broken scene.
+  void require_float_range(const JsonPath& path, double value) const {
+    if (!std::isfinite(value)) fail(path, "value is not finite");
+    float stored = static_cast<float>(value);
+    if (std::isinf(stored) || (stored == 0 && value != 0))
+      fail(path, "value is out of float range (in SI units its magnitude must be 0 or lie in 1.4e-45 .. 3.4e38)");
+  }
+
   // A dimensioned scalar: "5 mm", {"value": 5, "unit": "mm"}, or a bare number
   // when the field is dimensionless.
   double scalar(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
@@ -124,7 +134,7 @@ class Loader {
     if (!(quantity.dimension == expected))
       fail(path, "expected " + describe(expected) + ", got " + short_dump(value) + " (" +
                      dimension_name(quantity.dimension) + ")");
-    if (!std::isfinite(quantity.value)) fail(path, "value is not finite");
+    require_float_range(path, quantity.value);
     return quantity.value;
   }
 
@@ -154,7 +164,7 @@ class Loader {
         if (!components[i].is_number())
           fail(path.field("value").index(i), "expected a number, got " + short_dump(components[i]));
         result[i] = components[i].get<double>() * unit.to_reference;
-        if (!std::isfinite(result[i])) fail(path.field("value").index(i), "value is not finite");
+        require_float_range(path.field("value").index(i), result[i]);
       }
       return result;
     }
@@ -479,7 +489,9 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
     glm::vec3 p;
     for (int axis = 0; axis < 3; ++axis) {
       if (!points[i][axis].is_number()) fail(point_path.index(axis), "expected a number");
-      p[axis] = static_cast<float>(points[i][axis].get<double>() * unit.to_reference);
+      double coordinate = points[i][axis].get<double>() * unit.to_reference;
+      require_float_range(point_path.index(axis), coordinate);
+      p[axis] = static_cast<float>(coordinate);
     }
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
@@ -533,6 +545,14 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
     }
     result = m * result;  // later steps apply after earlier ones
   }
+  // Each step is non-singular, but float products can still underflow or
+  // overflow (two 1e-30 scales): the inverse must exist in float.
+  glm::mat4 inverse = glm::inverse(result);
+  float determinant = glm::determinant(glm::mat3(result));
+  bool finite = std::isnormal(determinant);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(result[c][r]) && std::isfinite(inverse[c][r]);
+  if (!finite) fail(path, "is singular in float precision (its scales multiply to 0 or infinity)");
   return ObjectToWorld::from_matrix(result);
 }
 
