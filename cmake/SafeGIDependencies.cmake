@@ -4,6 +4,7 @@ find_package(Threads REQUIRED)             # must precede glslang's config
 find_package(glslang CONFIG REQUIRED)      # glslang::glslang, glslang::glslang-default-resource-limits
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
+find_package(glm REQUIRED)                 # the typed library wraps GLM
 
 if(SAFEGI_BUILD_TESTS)
   find_package(GTest REQUIRED)
@@ -13,7 +14,6 @@ if(SAFEGI_BUILD_BENCH)
 endif()
 
 if(SAFEGI_BUILD_RENDERER OR SAFEGI_BUILD_GL)
-  find_package(glm REQUIRED)
   find_package(OpenImageIO CONFIG REQUIRED)
   # Debian's OpenImageIO target lists /usr/include/opencv4, which does not exist
   # unless OpenCV's headers are installed; CMake refuses missing include dirs.

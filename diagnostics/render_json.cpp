@@ -60,13 +60,13 @@ json diagnostic_json(const Diagnostic& d, const SourceManager& sources) {
 }  // namespace
 
 std::string render_json(const Diagnostic& diagnostic, const SourceManager& sources) {
-  return diagnostic_json(diagnostic, sources).dump();
+  return diagnostic_json(diagnostic, sources).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string render_json(const std::vector<Diagnostic>& diagnostics, const SourceManager& sources) {
   json list = json::array();
   for (const Diagnostic& d : diagnostics) list.push_back(diagnostic_json(d, sources));
-  return json{{"diagnostics", std::move(list)}}.dump();
+  return json{{"diagnostics", std::move(list)}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace safegi

@@ -47,3 +47,16 @@ TEST(RenderJson, NoLocationIsNull) {
 
 }  // namespace
 }  // namespace safegi
+
+namespace safegi {
+namespace {
+
+TEST(RenderJson, InvalidUtf8IsReplacedNotThrown) {
+  SourceManager sm;
+  FileId f = sm.add_file("a.glsl", "\x86\n");
+  std::string json = render_json(Diagnostic::error(sm.range_of(f, 0, 1), "bad byte '\x86'"), sm);
+  EXPECT_NE(json.find("bad byte '\xEF\xBF\xBD'"), std::string::npos) << json;
+}
+
+}  // namespace
+}  // namespace safegi

@@ -103,6 +103,19 @@ SourceLocation SourceManager::location_of(FileId id, std::uint32_t offset) const
   return SourceLocation{id, offset, line, offset - starts[line - 1] + 1};
 }
 
+SourceLocation SourceManager::location_after(FileId id, std::uint32_t offset, std::uint32_t& line_hint) const {
+  const File& f = file(id);
+  const auto& starts = *f.line_starts;
+  offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(f.contents->size()));
+  if (line_hint == 0 || line_hint > starts.size() || starts[line_hint - 1] > offset) {
+    SourceLocation location = location_of(id, offset);
+    line_hint = location.line;
+    return location;
+  }
+  while (line_hint < starts.size() && starts[line_hint] <= offset) ++line_hint;
+  return SourceLocation{id, offset, line_hint, offset - starts[line_hint - 1] + 1};
+}
+
 SourceRange SourceManager::range_of(FileId id, std::uint32_t begin_offset, std::uint32_t end_offset) const {
   return SourceRange{location_of(id, begin_offset), location_of(id, end_offset)};
 }

@@ -22,6 +22,18 @@ TEST(SourceManager, LocationsAreOneBasedLinesAndByteColumns) {
   EXPECT_EQ(sm.line_text(f, 5), "");
 }
 
+TEST(SourceManager, LocationAfterAgreesWithLocationOf) {
+  SourceManager sm;
+  FileId f = sm.add_file("a.glsl", "ab\n\ncd\r\nef\rg\n");
+  std::uint32_t hint = 0;
+  for (std::uint32_t offset = 0; offset <= 13; ++offset) {
+    EXPECT_EQ(sm.location_after(f, offset, hint), sm.location_of(f, offset)) << offset;
+  }
+  hint = 5;  // a hint past the offset falls back to the search
+  EXPECT_EQ(sm.location_after(f, 1, hint), sm.location_of(f, 1));
+  EXPECT_EQ(hint, 1u);
+}
+
 TEST(SourceManager, FileIdsStartAtOneAndPathsAreKept) {
   SourceManager sm;
   EXPECT_FALSE(sm.valid(kNoFile));

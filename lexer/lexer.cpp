@@ -9,49 +9,15 @@ namespace {
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_word_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_word_char(char c) { return is_word_start(c) || is_digit(c); }
-bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 bool is_newline(char c) { return c == '\n' || c == '\r'; }
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-
-struct Suffix {
-  std::string_view spelling;
-  TokenKind kind;
-};
-constexpr Suffix kIntegerSuffixes[] = {
-    {"", TokenKind::int_literal},       {"u", TokenKind::uint_literal},     {"U", TokenKind::uint_literal},
-    {"l", TokenKind::int64_literal},    {"L", TokenKind::int64_literal},    {"ul", TokenKind::uint64_literal},
-    {"UL", TokenKind::uint64_literal},  {"uL", TokenKind::uint64_literal},  {"Ul", TokenKind::uint64_literal},
-    {"s", TokenKind::int16_literal},    {"S", TokenKind::int16_literal},    {"us", TokenKind::uint16_literal},
-    {"US", TokenKind::uint16_literal},
-};
-constexpr Suffix kFloatSuffixes[] = {
-    {"", TokenKind::float_literal},   {"f", TokenKind::float_literal},     {"F", TokenKind::float_literal},
-    {"lf", TokenKind::double_literal}, {"LF", TokenKind::double_literal}, {"hf", TokenKind::float16_literal},
-    {"HF", TokenKind::float16_literal},
-};
-
-template <std::size_t N>
-const Suffix* find_suffix(const Suffix (&suffixes)[N], std::string_view spelling) {
-  for (const Suffix& s : suffixes) {
-    if (s.spelling == spelling) return &s;
-  }
-  return nullptr;
-}
-
-std::uint64_t max_value(TokenKind kind) {
-  switch (kind) {
-    case TokenKind::int16_literal:
-    case TokenKind::uint16_literal: return 0xFFFF;
-    case TokenKind::int64_literal:
-    case TokenKind::uint64_literal: return UINT64_MAX;
-    default: return 0xFFFFFFFF;
-  }
-}
 
 }  // namespace
 
 Lexer::Lexer(SourceManager& sources, FileId file, DiagnosticEngine& diagnostics, LexerOptions options)
-    : sources_(sources), diagnostics_(diagnostics), file_(file), text_(sources.text(file)), options_(options) {}
+    : sources_(sources), diagnostics_(diagnostics), file_(file), text_(sources.text(file)), options_(options) {
+  if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;  // a UTF-8 byte order mark is not text
+}
 
 std::size_t Lexer::skip_splices(std::size_t p) const {
   while (p + 1 < text_.size() && text_[p] == '\\') {
@@ -114,7 +80,8 @@ bool Lexer::skip_blanks_and_comments() {
 }
 
 void Lexer::finish(Token& token, std::size_t begin) {
-  token.range = sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(pos_));
+  token.range.begin = sources_.location_after(file_, static_cast<std::uint32_t>(begin), line_hint_);
+  token.range.end = sources_.location_after(file_, static_cast<std::uint32_t>(pos_), line_hint_);
   std::string_view raw = text_.substr(begin, pos_ - begin);
   if (raw.find('\\') == std::string_view::npos) {
     token.text = raw;
@@ -125,9 +92,15 @@ void Lexer::finish(Token& token, std::size_t begin) {
   token.text = sources_.save_string(spelled);
 }
 
+bool Lexer::next_starts_line() {
+  pending_space_ = skip_blanks_and_comments() || pending_space_;
+  return at_line_start_ || pos_ >= text_.size();
+}
+
 Token Lexer::next() {
   Token token;
-  token.leading_space = skip_blanks_and_comments();
+  token.leading_space = skip_blanks_and_comments() || pending_space_;
+  pending_space_ = false;
   token.at_line_start = at_line_start_;
   at_line_start_ = false;
   std::size_t begin = pos_ = skip_splices(pos_);
@@ -166,93 +139,31 @@ void Lexer::lex_word(Token& token) {
   token.kind = options_.classify_words ? classify_word(token.text, options_.keywords) : TokenKind::identifier;
 }
 
+// Scans a pp-number: digits, letters, '_' and '.', and a sign right after an
+// exponent 'e' (not in hex, where 'e' is a digit); check_numeric_literal()
+// then says what it means.
 void Lexer::lex_number(Token& token) {
   std::size_t begin = pos_;
   bool hex = peek() == '0' && (peek2() == 'x' || peek2() == 'X');
-  bool is_float = false;
-  std::string digits;  // the number without its suffix, continuations removed
-  auto take = [&] {
-    digits.push_back(peek());
-    advance();
-  };
-  if (hex) {
-    take();
-    take();
-    while (is_hex_digit(peek())) take();
-  } else {
-    while (is_digit(peek())) take();
-    if (peek() == '.') {
-      is_float = true;
-      take();
-      while (is_digit(peek())) take();
-    }
-    if (peek() == 'e' || peek() == 'E') {
-      std::size_t save = pos_;
-      std::string saved_digits = digits;
-      take();
-      bool has_sign = peek() == '+' || peek() == '-';
-      if (has_sign) take();
-      if (is_digit(peek())) {
-        is_float = true;
-        while (is_digit(peek())) take();
-      } else if (has_sign) {
-        finish(token, begin);
-        error(begin, pos_, "exponent has no digits");
-        token.kind = TokenKind::float_literal;
-        return;
-      } else {
-        pos_ = save;  // "1e": the letters become a suffix, reported below
-        digits = std::move(saved_digits);
-      }
-    }
-  }
-  std::size_t suffix_begin = pos_;
-  while (is_word_char(peek()) || (peek() == '.' && !hex)) advance();
-  std::string suffix;
-  for (std::size_t p = skip_splices(suffix_begin); p < pos_; p = skip_splices(p + 1)) suffix.push_back(text_[p]);
-  finish(token, begin);
-
-  if (is_float) {
-    const Suffix* s = find_suffix(kFloatSuffixes, suffix);
-    token.kind = s ? s->kind : TokenKind::float_literal;
-    if (!s && (suffix[0] == 'e' || suffix[0] == 'E')) {
-      error(suffix_begin, pos_, "exponent has no digits");
-    } else if (!s) {
-      error(suffix_begin, pos_, "invalid suffix '" + suffix + "' on floating-point literal");
-    }
-    return;
-  }
-  const Suffix* s = find_suffix(kIntegerSuffixes, suffix);
-  if (!s && (suffix == "f" || suffix == "F" || suffix == "lf" || suffix == "LF") && !hex) {
-    error(begin, pos_, "a floating-point literal needs a '.' or an exponent (write '" + digits + ".0" + suffix + "')");
-    token.kind = TokenKind::float_literal;
-    return;
-  }
-  token.kind = s ? s->kind : TokenKind::int_literal;
-  if (!s) {
-    if (!suffix.empty() && (suffix[0] == 'e' || suffix[0] == 'E')) {
-      error(suffix_begin, pos_, "exponent has no digits");
+  for (;;) {
+    char c = peek();
+    if (!hex && (c == 'e' || c == 'E') && (peek2() == '+' || peek2() == '-')) {
+      advance();
+      advance();
+    } else if (is_word_char(c) || c == '.') {
+      advance();
     } else {
-      error(suffix_begin, pos_, "invalid suffix '" + suffix + "' on integer literal");
-    }
-    return;
-  }
-  if (hex && digits.size() == 2) {
-    error(begin, pos_, "hexadecimal literal has no digits");
-    return;
-  }
-  if (!hex && digits.size() > 1 && digits[0] == '0') {
-    std::size_t bad = digits.find_first_of("89");
-    if (bad != std::string::npos) {
-      error(begin, pos_, std::string("invalid digit '") + digits[bad] + "' in octal literal");
-      return;
+      break;
     }
   }
-  auto value = integer_literal_value(digits);
-  if (!value || *value > max_value(token.kind)) {
-    unsigned bits = max_value(token.kind) == 0xFFFF ? 16 : max_value(token.kind) == 0xFFFFFFFF ? 32 : 64;
-    error(begin, pos_, "integer literal '" + std::string(token.text) + "' does not fit in " + std::to_string(bits) +
-                           " bits");
+  finish(token, begin);
+  NumericLiteralCheck check = check_numeric_literal(token.text);
+  token.kind = check.kind;
+  if (check.error.empty() || !options_.check_numbers) return;
+  if (token.range.length() == token.text.size()) {
+    error(begin + check.error_begin, begin + check.error_end, std::move(check.error));
+  } else {
+    error(begin, pos_, std::move(check.error));
   }
 }
 
@@ -340,25 +251,26 @@ void Lexer::lex_punctuator(Token& token) {
 
 void Lexer::lex_invalid(Token& token) {
   std::size_t begin = pos_;
-  auto byte = static_cast<unsigned char>(text_[pos_]);
   token.kind = TokenKind::invalid;
-  if (byte >= 0x80) {
-    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) ++pos_;
-    finish(token, begin);
-    error(begin, pos_, "non-ASCII character '" + std::string(token.text) + "' outside a comment");
-    return;
+  if (static_cast<unsigned char>(text_[pos_]) >= 0x80) {
+    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) ++pos_;  // one UTF-8 run
+  } else {
+    ++pos_;
   }
-  ++pos_;
   finish(token, begin);
-  if (byte == '\\') {
-    error(begin, pos_, "stray '\\' in program (a line continuation must be the last character on its line)");
-  } else if (byte < 0x20 || byte == 0x7F) {
+  if (options_.check_characters) error(begin, pos_, invalid_character_message(token.text));
+}
+
+std::string invalid_character_message(std::string_view spelling) {
+  auto byte = spelling.empty() ? 0u : static_cast<unsigned char>(spelling[0]);
+  if (byte >= 0x80) return "non-ASCII character '" + std::string(spelling) + "' outside a comment";
+  if (byte == '\\') return "stray '\\' in program (a line continuation must be the last character on its line)";
+  if (byte < 0x20 || byte == 0x7F) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", byte);
-    error(begin, pos_, std::string("invalid control character ") + hex + " in program");
-  } else {
-    error(begin, pos_, "invalid character '" + std::string(1, static_cast<char>(byte)) + "' in program");
+    return std::string("invalid control character ") + hex + " in program";
   }
+  return "invalid character '" + std::string(1, static_cast<char>(byte)) + "' in program";
 }
 
 SourceRange Lexer::rest_of_line() {

@@ -46,12 +46,123 @@ const KindInfo& info(TokenKind kind) { return kKindInfo[static_cast<std::size_t>
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
+struct Suffix {
+  std::string_view spelling;
+  TokenKind kind;
+};
+constexpr Suffix kIntegerSuffixes[] = {
+    {"", TokenKind::int_literal},       {"u", TokenKind::uint_literal},     {"U", TokenKind::uint_literal},
+    {"l", TokenKind::int64_literal},    {"L", TokenKind::int64_literal},    {"ul", TokenKind::uint64_literal},
+    {"UL", TokenKind::uint64_literal},  {"uL", TokenKind::uint64_literal},  {"Ul", TokenKind::uint64_literal},
+    {"s", TokenKind::int16_literal},    {"S", TokenKind::int16_literal},    {"us", TokenKind::uint16_literal},
+    {"US", TokenKind::uint16_literal},
+};
+constexpr Suffix kFloatSuffixes[] = {
+    {"", TokenKind::float_literal},     {"f", TokenKind::float_literal},     {"F", TokenKind::float_literal},
+    {"lf", TokenKind::double_literal},  {"LF", TokenKind::double_literal},  {"lF", TokenKind::double_literal},
+    {"Lf", TokenKind::double_literal},  {"hf", TokenKind::float16_literal}, {"HF", TokenKind::float16_literal},
+    {"hF", TokenKind::float16_literal}, {"Hf", TokenKind::float16_literal},
+};
+
+template <std::size_t N>
+const Suffix* find_suffix(const Suffix (&suffixes)[N], std::string_view spelling) {
+  for (const Suffix& s : suffixes) {
+    if (s.spelling == spelling) return &s;
+  }
+  return nullptr;
+}
+
+std::uint64_t max_value(TokenKind kind) {
+  switch (kind) {
+    case TokenKind::int16_literal:
+    case TokenKind::uint16_literal: return 0xFFFF;
+    case TokenKind::int64_literal:
+    case TokenKind::uint64_literal: return UINT64_MAX;
+    default: return 0xFFFFFFFF;
+  }
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+
 }  // namespace
+
+NumericLiteralCheck check_numeric_literal(std::string_view text) {
+  NumericLiteralCheck result;
+  auto size = static_cast<std::uint32_t>(text.size());
+  auto fail = [&](std::uint32_t begin, std::uint32_t end, std::string message) {
+    result.error = std::move(message);
+    result.error_begin = begin;
+    result.error_end = end;
+    return result;
+  };
+  std::size_t i = 0;
+  bool hex = text.size() >= 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+  bool is_float = false;
+  if (hex) {
+    i = 2;
+    while (i < text.size() && is_hex_digit(text[i])) ++i;
+  } else {
+    while (i < text.size() && is_digit(text[i])) ++i;
+    if (i < text.size() && text[i] == '.') {
+      is_float = true;
+      ++i;
+      while (i < text.size() && is_digit(text[i])) ++i;
+    }
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+      std::size_t e = i + 1;
+      bool sign = e < text.size() && (text[e] == '+' || text[e] == '-');
+      if (sign) ++e;
+      if (e < text.size() && is_digit(text[e])) {
+        is_float = true;
+        i = e;
+        while (i < text.size() && is_digit(text[i])) ++i;
+      } else if (sign) {
+        result.kind = TokenKind::float_literal;
+        return fail(0, size, "exponent has no digits");
+      }
+    }
+  }
+  std::string_view digits = text.substr(0, i);
+  std::string_view suffix = text.substr(i);
+  auto suffix_begin = static_cast<std::uint32_t>(i);
+  if (is_float) {
+    const Suffix* s = find_suffix(kFloatSuffixes, suffix);
+    result.kind = s ? s->kind : TokenKind::float_literal;
+    if (s) return result;
+    if (suffix[0] == 'e' || suffix[0] == 'E') return fail(suffix_begin, size, "exponent has no digits");
+    return fail(suffix_begin, size, "invalid suffix '" + std::string(suffix) + "' on floating-point literal");
+  }
+  const Suffix* s = find_suffix(kIntegerSuffixes, suffix);
+  if (!s && !hex && (suffix == "f" || suffix == "F" || suffix == "lf" || suffix == "LF")) {
+    result.kind = TokenKind::float_literal;
+    return fail(0, size, "a floating-point literal needs a '.' or an exponent (write '" + std::string(digits) +
+                             ".0" + std::string(suffix) + "')");
+  }
+  result.kind = s ? s->kind : TokenKind::int_literal;
+  if (!s) {
+    if (!hex && (suffix[0] == 'e' || suffix[0] == 'E')) return fail(suffix_begin, size, "exponent has no digits");
+    return fail(suffix_begin, size, "invalid suffix '" + std::string(suffix) + "' on integer literal");
+  }
+  if (hex && digits.size() == 2) return fail(0, size, "hexadecimal literal has no digits");
+  if (!hex && digits.size() > 1 && digits[0] == '0') {
+    std::size_t bad = digits.find_first_of("89");
+    if (bad != std::string_view::npos) {
+      return fail(0, size, std::string("invalid digit '") + digits[bad] + "' in octal literal");
+    }
+  }
+  auto value = integer_literal_value(digits);
+  if (!value || *value > max_value(result.kind)) {
+    unsigned bits = max_value(result.kind) == 0xFFFF ? 16 : max_value(result.kind) == 0xFFFFFFFF ? 32 : 64;
+    return fail(0, size, "integer literal '" + std::string(text) + "' does not fit in " + std::to_string(bits) + " bits");
+  }
+  return result;
+}
 
 KeywordContext KeywordContext::everything() {
   KeywordContext context;
   context.version = 460;
-  context.extension_groups = ~0u;
+  context.extension_groups = ~0u & ~(1u << static_cast<unsigned>(ExtensionGroup::vulkan));
   return context;
 }
 

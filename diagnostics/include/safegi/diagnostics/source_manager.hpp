@@ -64,6 +64,9 @@ class SourceManager {
   // Offset clamped to the file's size.
   SourceLocation location_of(FileId file, std::uint32_t offset) const;
   SourceRange range_of(FileId file, std::uint32_t begin_offset, std::uint32_t end_offset) const;
+  // location_of for callers walking a file forwards (the lexer): `line_hint`
+  // is the line of an earlier offset, updated to this one's; O(1) per step.
+  SourceLocation location_after(FileId file, std::uint32_t offset, std::uint32_t& line_hint) const;
 
   // Include stack: where `file` was included from (invalid range for a main file).
   void set_included_from(FileId file, SourceRange directive);

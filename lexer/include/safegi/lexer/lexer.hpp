@@ -4,6 +4,8 @@
 // the preprocessor drives it.
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <safegi/diagnostics/diagnostic.hpp>
@@ -17,7 +19,18 @@ struct LexerOptions {
   // word is an identifier (the preprocessor classifies after macro expansion).
   KeywordContext keywords = KeywordContext::everything();
   bool classify_words = true;
+  // Report malformed numbers ("09", "1.0x") here; the preprocessor turns this
+  // off and checks the numbers that reach its output, as a C preprocessor
+  // accepts any pp-number (`#define SUFFIX 1D` is fine until it is used).
+  bool check_numbers = true;
+  // Report bytes that are no GLSL token (`@`, non-ASCII outside comments).
+  // Off in the preprocessor, which reports the ones that reach its output:
+  // an unused macro body may hold anything.
+  bool check_characters = true;
 };
+
+// The error for an `invalid` token's spelling, e.g. "invalid character '@' in program".
+std::string invalid_character_message(std::string_view spelling);
 
 class Lexer {
  public:
@@ -25,6 +38,11 @@ class Lexer {
 
   // The next token; at the end of the file, an eof token (again and again).
   Token next();
+
+  // Skips blanks and comments and tells whether the next token starts a new
+  // line (or is the end of the file), without lexing it: the preprocessor
+  // ends a directive line here before deciding whether to skip what follows.
+  bool next_starts_line();
 
   // Lexing errors are not reported while this is off (skipped #if groups);
   // an unterminated block comment is always reported.
@@ -66,6 +84,8 @@ class Lexer {
   LexerOptions options_;
   std::size_t pos_ = 0;
   bool at_line_start_ = true;
+  bool pending_space_ = false;  // blanks skipped by next_starts_line()
+  std::uint32_t line_hint_ = 0;  // line of the last token, for SourceManager::location_after
   bool report_errors_ = true;
 };
 

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -66,7 +67,8 @@ struct KeywordContext {
   bool enabled(ExtensionGroup group) const {
     return (extension_groups >> static_cast<unsigned>(group)) & 1u;
   }
-  // Every keyword of every version (no word is reserved-only or demoted).
+  // GLSL 4.60 with every extension group but Vulkan GLSL's (whose `sampler`
+  // and `texture2D` are common names and functions elsewhere).
   static KeywordContext everything();
 };
 
@@ -104,6 +106,17 @@ struct Token {
 // rest, for the parser closing nested annotations (`sampler2D<float<length>>`).
 // Returns nullopt for any other token.
 std::optional<std::pair<Token, Token>> split_leading_greater(const Token& token);
+
+// What a numeric literal's spelling (a C-style pp-number such as "1.5e3lf",
+// "0x1Fu" or "1D") means: its kind, and the error if it is not a valid GLSL
+// literal; error_begin / error_end are byte offsets into the spelling.
+struct NumericLiteralCheck {
+  TokenKind kind = TokenKind::int_literal;
+  std::string error;  // empty when valid
+  std::uint32_t error_begin = 0;
+  std::uint32_t error_end = 0;
+};
+NumericLiteralCheck check_numeric_literal(std::string_view spelling);
 
 // Value of an integer literal's spelling (decimal, octal, hex; suffix
 // ignored); nullopt when it does not fit in 64 bits or is malformed.

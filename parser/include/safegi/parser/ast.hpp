@@ -101,6 +101,10 @@ const T* dyn_cast(const Node* node) {
 struct Expr : Node {
   using Node::Node;
   static bool classof(NodeKind k) { return k >= NodeKind::IdentifierExpr && k <= NodeKind::InitializerList; }
+  // Height of the expression tree below and including this node. The parser
+  // rejects trees higher than ParseOptions::max_expression_height, so later
+  // stages may recurse over expressions without a stack check.
+  std::uint32_t height = 1;
 };
 
 struct IdentifierExpr : Expr {
@@ -136,7 +140,7 @@ enum class BinaryOp : std::uint8_t {
   BitAnd, BitXor, BitOr, LogAnd, LogXor, LogOr, Comma,
 };
 std::string_view binary_op_spelling(BinaryOp op);
-// Larger binds tighter: Mul/Div/Mod = 12 … LogOr = 3, Comma = 1.
+// Larger binds tighter: Mul/Div/Mod = 13 … LogOr = 3, Comma = 1.
 int binary_op_precedence(BinaryOp op);
 
 struct BinaryExpr : Expr {
@@ -171,13 +175,16 @@ struct TernaryExpr : Expr {
 struct TypeSpecifier;
 
 // A function call (`callee` set) or a constructor (`constructor_type` set:
-// `vec3(1.0)`, `float[2](a, b)`, `S(x)`, and casts `float<solid_angle>(x)`).
+// `vec3(1.0)`, `float[2](a, b)`, `S(x)`, and casts `float<solid_angle>(x)`),
+// or a call through an expression (`callee_expr`: an element of a subroutine
+// uniform array, `shade[i](n)`).
 struct CallExpr : Expr {
   CallExpr() : Expr(NodeKind::CallExpr) {}
   static bool classof(NodeKind k) { return k == NodeKind::CallExpr; }
   std::string callee;
   SourceRange callee_range;
   TypeSpecifier* constructor_type = nullptr;
+  Expr* callee_expr = nullptr;
   std::vector<Expr*> args;
   bool void_arg = false;  // written `f(void)`
 };
@@ -284,6 +291,12 @@ struct Annotation : Node {
 };
 
 struct StructDecl;
+
+// The GLSL type an annotated type word stands for (docs/language.md):
+// "point" -> "vec3", "hpoint" -> "vec4", "map" -> "mat4", ...; empty when
+// `word` is not one of spectrum point vector direction normal hpoint map
+// rigidmap projmap.
+std::string_view annotated_type_representation(std::string_view word);
 
 struct TypeSpecifier : Node {
   TypeSpecifier() : Node(NodeKind::TypeSpecifier) {}
@@ -559,7 +572,7 @@ struct ForStmt : Stmt {
 
 // break, continue, discard, demote: the kind says which.
 struct JumpStmt : Stmt {
-  explicit JumpStmt(NodeKind k) : Stmt(k) {}
+  explicit JumpStmt(NodeKind k = NodeKind::BreakStmt) : Stmt(k) {}
   static bool classof(NodeKind k) { return k >= NodeKind::BreakStmt && k <= NodeKind::DemoteStmt; }
 };
 

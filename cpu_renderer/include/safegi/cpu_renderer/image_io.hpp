@@ -1,0 +1,25 @@
+// Image files through OpenImageIO: EXR holds linear float radiance, PNG the
+// sRGB-encoded, clamped 8-bit rendition.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "safegi/cpu_renderer/image.hpp"
+
+namespace safegi::render {
+
+class ImageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+void write_exr(const std::filesystem::path& file, const Image& image);
+void write_png(const std::filesystem::path& file, const Image& image);
+// Reads any RGB(A) image OpenImageIO understands as linear floats (first three channels).
+Image read_image(const std::filesystem::path& file);
+
+// The sRGB transfer function of a linear value, clamped to [0, 1].
+float linear_to_srgb(float linear);
+
+}  // namespace safegi::render

@@ -1,0 +1,77 @@
+// A loaded scene: every physical value already in reference units (m, s, J,
+// rad, sr) and every geometric value tagged with the space it lives in.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "safegi/cpu_renderer/types.hpp"
+
+namespace safegi::render {
+
+struct Material {
+  enum class Type { lambert, phong, mirror, black };
+  Type type = Type::black;
+  Reflectance diffuse{};   // Lambert albedo, Phong diffuse part
+  Reflectance specular{};  // Phong specular part, mirror tint
+  float exponent = 1.0f;       // Phong lobe exponent (dimensionless)
+  std::string name;
+};
+
+struct Shape {
+  enum class Type { mesh, sphere };
+  Type type = Type::mesh;
+  std::string name;
+  // mesh: triangles over positions in object space
+  std::vector<PointObject> positions;
+  std::vector<uint32_t> indices;
+  // sphere, in object space
+  PointObject center;
+  Length radius = sg::zero;
+
+  int material = -1;  // index into Scene::materials; -1: absorbs everything
+  std::optional<Radiance> emission;
+  bool two_sided_emission = false;
+
+  ObjectToWorld render_from_object;
+  // Rigid motion: where the object is at shutter close (absent: static).
+  std::optional<ObjectToWorld> render_from_object_at_close;
+};
+
+struct PointLight {
+  PointWorld position;
+  Intensity intensity;
+};
+
+struct Camera {
+  PointWorld position;
+  PointWorld look_at;
+  DirectionWorld up;
+  Angle fov = sg::zero;  // across the shorter image axis
+  Length lens_radius = sg::zero;
+  Length focus_distance = sg::zero;
+  Time shutter_open = sg::zero;
+  Time shutter_close = sg::zero;
+};
+
+enum class IntegratorType { direct, path };
+
+struct RenderSettings {
+  int width = 256;
+  int height = 256;
+  int spp = 16;
+  int max_depth = 65;
+  IntegratorType integrator = IntegratorType::path;
+};
+
+struct Scene {
+  RenderSettings settings;
+  Camera camera;
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  std::vector<PointLight> point_lights;
+};
+
+}  // namespace safegi::render

@@ -1,0 +1,48 @@
+// Light transport estimators: direct lighting and path tracing, both with
+// next-event estimation and BSDF sampling combined by MIS (power heuristic).
+#pragma once
+
+#include <cstdint>
+
+#include "geometry.hpp"
+#include "lights.hpp"
+#include "safegi/cpu_renderer/scene.hpp"
+#include "sampler.hpp"
+
+namespace safegi::render {
+
+struct RayCounters {
+  uint64_t camera = 0;
+  uint64_t extension = 0;
+  uint64_t shadow = 0;
+};
+
+class Integrator {
+ public:
+  Integrator(const Scene& scene, const Geometry& geometry, const Lights& lights, IntegratorType type, int max_depth)
+      : scene_(scene), geometry_(geometry), lights_(lights), direct_only_(type == IntegratorType::direct),
+        max_depth_(max_depth) {}
+
+  // Radiance arriving at the camera along `camera_ray`.
+  Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
+    // MIS bookkeeping exists only in the instantiation for scenes with area lights.
+    return lights_.has_area_lights() ? trace<true>(camera_ray, sampler, counters)
+                                     : trace<false>(camera_ray, sampler, counters);
+  }
+
+ private:
+  template <bool area_lights>
+  Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
+
+  template <bool area_lights>
+  Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
+                         DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const;
+
+  const Scene& scene_;
+  const Geometry& geometry_;
+  const Lights& lights_;
+  bool direct_only_;
+  int max_depth_;
+};
+
+}  // namespace safegi::render

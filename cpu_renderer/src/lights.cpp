@@ -1,0 +1,148 @@
+#include "lights.hpp"
+
+#include <algorithm>
+
+#include "sampling.hpp"
+
+namespace safegi::render {
+
+Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
+  std::vector<double> powers;  // watts, averaged over the channels
+  for (const PointLight& point : scene.point_lights) {
+    Light light;
+    light.type = Light::Type::point;
+    light.position = point.position;
+    light.intensity = point.intensity;
+    lights_.push_back(light);
+    powers.push_back(sg::raw(sg::average(point.intensity) * (4 * sg::pi * units::steradian)));
+  }
+  for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
+    const Shape& shape = scene.shapes[s];
+    if (!shape.emission) continue;
+    Light light;
+    light.radiance = *shape.emission;
+    light.two_sided = shape.two_sided_emission;
+    const ObjectToWorld& render_from_object = shape.render_from_object;
+    quantity<dim::area> area = sg::zero;
+    if (shape.type == Shape::Type::sphere) {
+      light.type = Light::Type::sphere;
+      light.position = render_from_object(shape.center);
+      light.radius = sg::length(render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero)));
+      area = 4 * sg::pi * light.radius * light.radius;
+    } else {
+      light.type = Light::Type::triangles;
+      light.first_triangle = static_cast<uint32_t>(triangles_.size());
+      for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+        PointWorld a = render_from_object(shape.positions[shape.indices[i]]);
+        PointWorld b = render_from_object(shape.positions[shape.indices[i + 1]]);
+        PointWorld c = render_from_object(shape.positions[shape.indices[i + 2]]);
+        area += 0.5f * sg::length(sg::cross(b - a, c - a));
+        triangles_.push_back({a, b - a, c - a, sg::raw(area)});
+      }
+      light.triangle_count = static_cast<uint32_t>(triangles_.size()) - light.first_triangle;
+      for (uint32_t t = 0; t < light.triangle_count; ++t) triangles_[light.first_triangle + t].area_cdf /= sg::raw(area);
+    }
+    if (!(area > sg::zero)) continue;
+    light.pdf_area = 1.0f / area;
+    light_of_shape_[s] = static_cast<int32_t>(lights_.size());
+    lights_.push_back(light);
+    // A diffuse emitter radiates π·A·L per side.
+    auto power = sg::average(light.radiance) * area * (sg::pi * units::steradian * units::proj);
+    powers.push_back((light.two_sided ? 2 : 1) * sg::raw(power));
+    has_area_lights_ = true;
+  }
+  double total = 0;
+  for (double p : powers) total += p;
+  double running = 0;
+  for (double p : powers) {
+    running += total > 0 ? p / total : 1.0 / static_cast<double>(powers.size());
+    power_cdf_.push_back(static_cast<float>(running));
+  }
+  if (!power_cdf_.empty()) power_cdf_.back() = 1.0f;
+}
+
+float Lights::selection_probability(uint32_t light) const {
+  return power_cdf_[light] - (light == 0 ? 0.0f : power_cdf_[light - 1]);
+}
+
+uint32_t Lights::choose(float u) const {
+  auto found = std::upper_bound(power_cdf_.begin(), power_cdf_.end(), u);
+  return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
+}
+
+std::optional<LightSample> Lights::sample(PointWorld reference, float u_light, float u1, float u2) const {
+  if (lights_.empty()) return std::nullopt;
+  uint32_t index = choose(u_light);
+  const Light& light = lights_[index];
+  float probability = selection_probability(index);
+  if (!(probability > 0)) return std::nullopt;
+  LightSample sample;
+  if (light.type == Light::Type::point) {
+    VectorWorld toward = light.position - reference;
+    sample.distance = sg::length(toward);
+    if (!(sample.distance > sg::zero)) return std::nullopt;
+    sample.wi = sg::normalize(toward);
+    sample.position = light.position;
+    sample.intensity = light.intensity;
+    sample.probability = probability;
+    sample.delta = true;
+    return sample;
+  }
+  NormalWorld normal;
+  if (light.type == Light::Type::sphere) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    sample.position = light.position + offset;
+    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+  } else {
+    // Reuse what is left of u_light to pick a triangle by area.
+    float low = index == 0 ? 0.0f : power_cdf_[index - 1];
+    float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
+    const EmitterTriangle* first = triangles_.data() + light.first_triangle;
+    const EmitterTriangle* last = first + light.triangle_count;
+    const EmitterTriangle* tri =
+        std::upper_bound(first, last, u_triangle, [](float u, const EmitterTriangle& t) { return u < t.area_cdf; });
+    if (tri == last) tri = last - 1;
+    float root = std::sqrt(u1);
+    float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+    VectorWorld along_u = tri->e1 * b1, along_v = tri->e2 * b2;
+    sample.position = tri->p0 + along_u + along_v;
+    sample.position_error =
+        (kernel::abs(to_kernel(tri->p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+        kernel::gamma(7);
+    normal = sg::to_normal(sg::normalize(sg::cross(tri->e1, tri->e2)));
+  }
+  VectorWorld toward = sample.position - reference;
+  sample.distance = sg::length(toward);
+  if (!(sample.distance > sg::zero)) return std::nullopt;
+  sample.wi = sg::normalize(toward);
+  Proj cos_light = -sg::dot(normal, sample.wi);
+  if (light.two_sided) cos_light = sg::abs(cos_light);
+  if (!(cos_light > sg::zero)) return std::nullopt;
+  sample.emitter_normal = to_kernel(normal);
+  sample.radiance = light.radiance;
+  sample.pdf = probability * to_solid_angle_density(light.pdf_area, cos_light, sample.distance);
+  return sample;
+}
+
+Radiance Lights::emitted(const SurfaceHit& hit, DirectionWorld incoming) const {
+  int32_t index = light_of_shape_[hit.shape];
+  if (index < 0) return Radiance{};
+  const Light& light = lights_[index];
+  if (!light.two_sided && sg::dot(hit.normal, incoming) >= sg::zero) return Radiance{};
+  return light.radiance;
+}
+
+PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit) const {
+  int32_t index = light_of_shape_[hit.shape];
+  if (index < 0) return sg::zero;
+  const Light& light = lights_[index];
+  VectorWorld toward = hit.position - reference;
+  Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
+  if (!(cos_light > sg::zero)) return sg::zero;
+  return selection_probability(static_cast<uint32_t>(index)) *
+         to_solid_angle_density(light.pdf_area, cos_light, sg::length(toward));
+}
+
+}  // namespace safegi::render

@@ -1,0 +1,112 @@
+// safegi-render / safegi-render-unchecked: renders a scene file to EXR + PNG.
+// The same source builds both programs; only the typed library's mode differs.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <regex>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "safegi/cpu_renderer/image_io.hpp"
+#include "safegi/cpu_renderer/renderer.hpp"
+#include "safegi/cpu_renderer/scene_loader.hpp"
+
+namespace {
+
+std::filesystem::path with_extension(std::filesystem::path output, const char* extension) {
+  std::string ext = output.extension().string();
+  if (ext == ".exr" || ext == ".png" || ext == ".pfm") output.replace_extension();
+  output += extension;
+  return output;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace safegi::render;
+  CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG"};
+  std::string scene_file, output = "render", resolution, crop, integrator;
+  int spp = 0, threads = 0, max_depth = 0;
+  uint32_t seed = 0;
+  double time_budget = 0;
+  bool quiet = false, stats_json = false, pfm = false;
+  app.add_option("scene", scene_file, "scene file (.json)")->required();
+  app.add_option("-o,--output", output, "output name; writes NAME.exr (linear) and NAME.png (sRGB)");
+  app.add_option("--spp", spp, "samples per pixel (with --time-budget: the most to take)")->check(CLI::Range(1, 1 << 24));
+  app.add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.add_option("--seed", seed, "seed of the per-pixel sample sequences");
+  app.add_option("--resolution", resolution, "image size WIDTHxHEIGHT (default: the scene's)");
+  app.add_option("--crop", crop, "render only the window X,Y,WIDTH,HEIGHT (pixels)");
+  app.add_option("--time-budget", time_budget, "render until this many seconds are spent")->check(CLI::PositiveNumber);
+  app.add_option("--integrator", integrator, "direct or path (default: the scene's)")
+      ->check(CLI::IsMember({"direct", "path"}));
+  app.add_option("--max-depth", max_depth, "longest path, in bounces (default: the scene's)")->check(CLI::Range(1, 1024));
+  app.add_flag("-q,--quiet", quiet, "no progress bar");
+  app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, e.g. for test references)");
+  app.add_flag("--stats", stats_json, "print render statistics as one JSON line on stdout");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    Scene scene = load_scene(scene_file);
+    RenderOptions options;
+    options.settings = scene.settings;
+    if (spp > 0) options.settings.spp = spp;
+    else if (time_budget > 0) options.settings.spp = 1 << 24;
+    if (max_depth > 0) options.settings.max_depth = max_depth;
+    if (!integrator.empty()) options.settings.integrator = integrator == "direct" ? IntegratorType::direct : IntegratorType::path;
+    std::smatch match;
+    if (!resolution.empty()) {
+      if (!std::regex_match(resolution, match, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+        throw std::runtime_error("--resolution: expected WIDTHxHEIGHT, got '" + resolution + "'");
+      options.settings.width = std::stoi(match[1]);
+      options.settings.height = std::stoi(match[2]);
+      if (options.settings.width < 1 || options.settings.height < 1)
+        throw std::runtime_error("--resolution: width and height must be positive");
+    }
+    if (!crop.empty()) {
+      if (!std::regex_match(crop, match, std::regex(R"((\d{1,5}),(\d{1,5}),(\d{1,5}),(\d{1,5}))")))
+        throw std::runtime_error("--crop: expected X,Y,WIDTH,HEIGHT, got '" + crop + "'");
+      CropWindow window{std::stoi(match[1]), std::stoi(match[2]), std::stoi(match[3]), std::stoi(match[4])};
+      if (window.width < 1 || window.height < 1 || window.x + window.width > options.settings.width ||
+          window.y + window.height > options.settings.height)
+        throw std::runtime_error("--crop: the window must be non-empty and inside the image");
+      options.crop = window;
+    }
+    options.threads = threads;
+    options.seed = seed;
+    options.time_budget_seconds = time_budget;
+    options.progress = !quiet;
+
+    RenderStats stats;
+    Image image = render(scene, options, &stats);
+    write_exr(with_extension(output, ".exr"), image);
+    write_png(with_extension(output, ".png"), image);
+    if (pfm) write_pfm(with_extension(output, ".pfm"), image);
+
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.total_rays()) / stats.seconds : 0.0;
+    if (!quiet)
+      std::fprintf(stderr, "%dx%d, %d spp in %.2f s: %.2f M rays (%.2f M rays/s), peak memory %.1f MiB\n",
+                   image.width, image.height, stats.samples_per_pixel, stats.seconds, stats.total_rays() * 1e-6,
+                   rays_per_second * 1e-6, usage.ru_maxrss / 1024.0);
+    if (stats.invalid_samples > 0)
+      std::fprintf(stderr, "warning: %llu samples were NaN or infinite and were dropped\n",
+                   static_cast<unsigned long long>(stats.invalid_samples));
+    if (stats_json)
+      std::printf(
+          "{\"width\": %d, \"height\": %d, \"spp\": %d, \"seconds\": %.4f, \"camera_rays\": %llu, "
+          "\"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays_per_second\": %.0f, "
+          "\"samples_per_second\": %.0f, \"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
+          image.width, image.height, stats.samples_per_pixel, stats.seconds,
+          static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
+          static_cast<unsigned long long>(stats.shadow_rays), rays_per_second,
+          stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0, usage.ru_maxrss,
+          static_cast<unsigned long long>(stats.invalid_samples));
+  } catch (const std::exception& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

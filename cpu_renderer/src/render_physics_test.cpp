@@ -1,0 +1,255 @@
+// Physics checks of whole renders against closed forms, with tolerances
+// derived from the sample count (or, where the estimator is exact, from
+// float rounding).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "safegi/cpu_renderer/renderer.hpp"
+#include "safegi/cpu_renderer/scene_loader.hpp"
+
+namespace safegi::render {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Image render_text(const std::string& json, int spp, int threads = 2, std::optional<CropWindow> crop = std::nullopt) {
+  Scene scene = parse_scene(json, "test.json", SAFEGI_SCENES_DIR);
+  RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.spp = spp;
+  options.threads = threads;
+  options.crop = crop;
+  RenderStats stats;
+  Image image = render(scene, options, &stats);
+  EXPECT_EQ(stats.invalid_samples, 0u);
+  for (float v : image.rgb) EXPECT_TRUE(std::isfinite(v));
+  return image;
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Mean and standard error of the mean of one channel over all pixels.
+struct Estimate {
+  double mean, standard_error;
+};
+Estimate channel_estimate(const Image& image, int channel) {
+  double sum = 0, sum2 = 0;
+  size_t n = static_cast<size_t>(image.width) * image.height;
+  for (size_t i = 0; i < n; ++i) {
+    double v = image.rgb[3 * i + channel];
+    sum += v;
+    sum2 += v * v;
+  }
+  double mean = sum / n;
+  double variance = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
+  return {mean, std::sqrt(variance / n)};
+}
+
+// Diffuse plane under a point light: L = ρ/π · I cos θ / r², averaged over
+// each pixel's footprint on the plane (the estimator has no noise apart from
+// where in the pixel the samples fall).
+TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
+  const double rho = 0.5, intensity = 10.0, light_height = 2.0, camera_height = 5.0;
+  const int size = 33;
+  const double fov = 40.0;
+  std::string scene = R"json({
+    "render": {"resolution": [33, 33], "integrator": "direct"},
+    "camera": {"position": {"value": [0, 5, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 0, -1], "fov": "40 deg"},
+    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}],
+    "lights": [{"type": "point", "position": {"value": [0, 2, 0], "unit": "m"}, "intensity": "10 W/sr"}]})json";
+  for (const char* integrator : {"direct", "path"}) {
+    std::string text = scene;
+    text.replace(text.find("direct"), 6, integrator);
+    Image image = render_text(text, 64);
+    const double half = std::tan(fov / 2 * kPi / 180);
+    double worst = 0;
+    for (int py = 0; py < size; ++py) {
+      for (int px = 0; px < size; ++px) {
+        // Average the closed form over the pixel's footprint (x = h·sx, z = -h·sy).
+        double expected = 0;
+        constexpr int kSub = 16;
+        for (int j = 0; j < kSub; ++j)
+          for (int i = 0; i < kSub; ++i) {
+            double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
+            double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
+            double x = camera_height * sx, z = -camera_height * sy;
+            double r2 = x * x + z * z + light_height * light_height;
+            double cos_theta = light_height / std::sqrt(r2);
+            expected += rho / kPi * intensity * cos_theta / r2;
+          }
+        expected /= kSub * kSub;
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] / expected - 1));
+      }
+    }
+    // 64 stratified positions per pixel of a smooth function: well under 0.5%.
+    EXPECT_LT(worst, 5e-3) << integrator;
+  }
+}
+
+// White furnace: inside a closed sphere of albedo a emitting Le everywhere,
+// L = Le / (1 - a) in every direction.
+TEST(RenderPhysics, WhiteFurnace) {
+  for (double albedo : {0.5, 0.8}) {
+    std::string text = R"json({
+      "render": {"resolution": [16, 16], "integrator": "path", "max_depth": 400},
+      "camera": {"position": {"value": [0, 0, 0], "unit": "m"}, "look_at": {"value": [0, 0, -1], "unit": "m"},
+                 "up": [0, 1, 0], "fov": "120 deg"},
+      "materials": {"grey": {"type": "lambert", "reflectance": ALBEDO}},
+      "shapes": [{"type": "sphere", "material": "grey", "center": {"value": [0.1, 0.2, 0], "unit": "m"}, "radius": "1 m",
+                  "emission": "0.5 W/(m2 sr)", "two_sided": true}]})json";
+    text.replace(text.find("ALBEDO"), 6, std::to_string(albedo));
+    Image image = render_text(text, 64);
+    double expected = 0.5 / (1 - albedo);
+    for (int c = 0; c < 3; ++c) {
+      Estimate estimate = channel_estimate(image, c);
+      EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-4 * expected) << "albedo " << albedo;
+      EXPECT_LT(estimate.standard_error, 0.01 * expected);  // the test has the power to see a 5% error
+    }
+  }
+}
+
+// Irradiance from a parallel rectangle to a point below a corner, as a
+// differential-area-to-rectangle form factor.
+double corner_form_factor(double width, double length, double height) {
+  double a = width / height, b = length / height;
+  double sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
+  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPi);
+}
+
+// A small square emitter above a diffuse plane: L = ρ · Le · F, with F the form
+// factor from the point below its centre (four corner rectangles).
+TEST(RenderPhysics, AreaLightAbovePlaneMatchesFormFactor) {
+  std::string text = R"json({
+    "render": {"resolution": [16, 16], "integrator": "direct"},
+    "camera": {"position": {"value": [0, 0.5, 2], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 1, 0], "fov": "0.5 deg"},
+    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}},
+               {"type": "quad", "origin": {"value": [-0.1, 1, -0.1], "unit": "m"}, "edge_u": {"value": [0.2, 0, 0], "unit": "m"},
+                "edge_v": {"value": [0, 0, 0.2], "unit": "m"}, "emission": "10 W/(m2 sr)"}]})json";
+  Image image = render_text(text, 64);
+  double form_factor = 4 * corner_form_factor(0.1, 0.1, 1.0);
+  double expected = 0.5 * 10.0 * form_factor;
+  Estimate estimate = channel_estimate(image, 0);
+  EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-3 * expected);
+  EXPECT_LT(estimate.standard_error, 0.01 * expected);
+}
+
+// A mirror of reflectance r seen against a large emitter: L = r · Le exactly.
+TEST(RenderPhysics, MirrorReflectsEmitter) {
+  std::string text = R"json({
+    "render": {"resolution": [24, 24], "integrator": "path"},
+    "camera": {"position": {"value": [0, 1, 3], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 1, 0], "fov": "10 deg"},
+    "materials": {"mirror": {"type": "mirror", "reflectance": [0.8, 0.5, 0.25]}},
+    "shapes": [{"type": "quad", "material": "mirror", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}},
+               {"type": "quad", "origin": {"value": [-10, 2, -10], "unit": "m"}, "edge_u": {"value": [20, 0, 0], "unit": "m"},
+                "edge_v": {"value": [0, 0, 20], "unit": "m"}, "emission": {"value": [3, 2, 1], "unit": "W/(m2 sr)"}}]})json";
+  for (const char* integrator : {"path", "direct"}) {
+    std::string scene = text;
+    scene.replace(scene.find("\"path\""), 6, std::string("\"") + integrator + "\"");
+    Image image = render_text(scene, 4);
+    const float expected[3] = {0.8f * 3, 0.5f * 2, 0.25f * 1};
+    for (int p = 0; p < image.width * image.height; ++p)
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.rgb[3 * p + c], expected[c], 1e-5f * expected[c]) << integrator;
+  }
+}
+
+// The Cornell box written in millimetres and in kilometres: radiance does not
+// depend on scale, so the images must agree; acne at either scale would not.
+TEST(RenderPhysics, SameImageInMillimetresAndKilometres) {
+  std::string metres = read_text(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
+  auto in_unit = [&](const std::string& unit) {
+    std::string text = metres;
+    for (size_t at = text.find("\"unit\": \"m\""); at != std::string::npos; at = text.find("\"unit\": \"m\"", at + 1))
+      text.replace(at, 11, "\"unit\": \"" + unit + "\"");
+    // Meshes resolve against the scenes directory; point them into the box's folder.
+    for (const char* mesh : {"short-box.obj", "tall-box.obj"}) {
+      size_t at = text.find(mesh);
+      text.replace(at, std::strlen(mesh), std::string("cornell-box/") + mesh);
+    }
+    return text;
+  };
+  std::string millimetres = in_unit("mm"), kilometres = in_unit("km");
+  ASSERT_NE(millimetres.find("\"unit\": \"mm\""), std::string::npos);
+  CropWindow window{0, 0, 32, 32};
+  auto small = [](std::string text) {
+    text.replace(text.find("[512, 512]"), 10, "[32, 32]");
+    return text;
+  };
+  Image a = render_text(small(millimetres), 16, 2, window);
+  Image b = render_text(small(kilometres), 16, 2, window);
+  double difference = 0, total = 0;
+  int outliers = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) {
+    difference += std::fabs(a.rgb[i] - b.rgb[i]);
+    total += b.rgb[i];
+    if (std::fabs(a.rgb[i] - b.rgb[i]) > 0.02 * std::max(b.rgb[i], 0.01f)) ++outliers;
+  }
+  EXPECT_LT(difference / total, 2e-3);
+  EXPECT_LE(outliers, static_cast<int>(a.rgb.size() / 50));
+  EXPECT_NEAR(channel_estimate(a, 0).mean, 0.19, 0.03);  // lit, not black from self-intersection
+}
+
+TEST(RenderDeterminism, ThreadCountDoesNotChangeTheImage) {
+  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
+  RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.width = options.settings.height = 24;
+  options.settings.spp = 8;
+  std::vector<Image> images;
+  for (int threads : {1, 2, 3}) {
+    options.threads = threads;
+    images.push_back(render(scene, options));
+  }
+  for (const Image& image : images) {
+    ASSERT_EQ(image.rgb.size(), images[0].rgb.size());
+    EXPECT_EQ(std::memcmp(image.rgb.data(), images[0].rgb.data(), image.rgb.size() * sizeof(float)), 0);
+  }
+}
+
+TEST(RenderDeterminism, CropIsTheSameWindowOfTheFullImage) {
+  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
+  RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.width = options.settings.height = 40;
+  options.settings.spp = 4;
+  Image full = render(scene, options);
+  options.crop = CropWindow{13, 7, 17, 21};
+  Image crop = render(scene, options);
+  ASSERT_EQ(crop.width, 17);
+  ASSERT_EQ(crop.height, 21);
+  for (int y = 0; y < crop.height; ++y)
+    EXPECT_EQ(std::memcmp(crop.pixel(0, y), full.pixel(13, 7 + y), 3 * sizeof(float) * crop.width), 0);
+}
+
+TEST(RenderDeterminism, SeedChangesTheNoiseOnly) {
+  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
+  RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.width = options.settings.height = 24;
+  options.settings.spp = 8;
+  Image a = render(scene, options);
+  options.seed = 12345;
+  Image b = render(scene, options);
+  EXPECT_NE(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0);
+  EXPECT_NEAR(channel_estimate(a, 0).mean, channel_estimate(b, 0).mean, 0.02);
+}
+
+}  // namespace
+}  // namespace safegi::render

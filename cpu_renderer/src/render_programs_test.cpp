@@ -1,0 +1,66 @@
+// safegi-render (typed) and safegi-render-unchecked (plain floats) compile the
+// same source; they must render bit-identical images of every bundled scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "safegi/cpu_renderer/image_io.hpp"
+
+namespace safegi::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image run(const char* program, const fs::path& scene, const fs::path& output) {
+  std::string command = std::string(program) + " \"" + scene.string() + "\" --resolution 40x30 --spp 2 --threads 2 -q -o \"" +
+                        output.string() + "\"";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  return read_image(output.string() + ".exr");
+}
+
+TEST(RenderPrograms, CheckedAndUncheckedImagesAreBitIdentical) {
+  fs::path directory = fs::temp_directory_path() / ("safegi-render-programs-" + std::to_string(::getpid()));
+  fs::create_directories(directory);
+  int scenes = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(SAFEGI_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    std::string name = entry.path().stem().string();
+    Image checked = run(SAFEGI_RENDER_CHECKED, entry.path(), directory / (name + "-checked"));
+    Image unchecked = run(SAFEGI_RENDER_UNCHECKED, entry.path(), directory / (name + "-unchecked"));
+    ASSERT_EQ(checked.rgb.size(), unchecked.rgb.size()) << name;
+    ASSERT_EQ(checked.rgb.size(), 40u * 30u * 3u) << name;
+    EXPECT_EQ(std::memcmp(checked.rgb.data(), unchecked.rgb.data(), checked.rgb.size() * sizeof(float)), 0) << name;
+    for (float v : checked.rgb) ASSERT_TRUE(std::isfinite(v)) << name;
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 6);
+  fs::remove_all(directory);
+}
+
+TEST(RenderPrograms, BadSceneGivesAnErrorNotACrash) {
+  fs::path directory = fs::temp_directory_path() / ("safegi-render-bad-" + std::to_string(::getpid()));
+  fs::create_directories(directory);
+  fs::path scene = directory / "bad.json";
+  {
+    std::ofstream out(scene);
+    out << R"({"camera": {"position": "1 W"}})";
+  }
+  std::string command = std::string(SAFEGI_RENDER_CHECKED) + " " + scene.string() + " -q -o " +
+                        (directory / "out").string() + " 2> " + (directory / "err.txt").string();
+  int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1);
+  std::ifstream err(directory / "err.txt");
+  std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(message, "error: " + scene.string() +
+                         ": camera.position: expected 3 components of length (e.g. m), got \"1 W\"\n");
+  fs::remove_all(directory);
+}
+
+}  // namespace
+}  // namespace safegi::render

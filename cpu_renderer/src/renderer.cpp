@@ -1,0 +1,219 @@
+#include "safegi/cpu_renderer/renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
+
+#include "camera.hpp"
+#include "geometry.hpp"
+#include "integrator.hpp"
+#include "lights.hpp"
+#include "sampler.hpp"
+
+namespace safegi::render {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kTileSize = 16;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A progress bar with ETA on stderr, redrawn in place on a terminal and
+// printed as occasional lines otherwise.
+class Progress {
+ public:
+  Progress(bool enabled, uint64_t total_work)
+      : enabled_(enabled), terminal_(enabled && isatty(STDERR_FILENO)), total_(total_work), start_(Clock::now()) {
+    if (enabled_) reporter_ = std::thread([this] { report_loop(); });
+  }
+  ~Progress() { finish(); }
+
+  void advance(uint64_t work) { done_.fetch_add(work, std::memory_order_relaxed); }
+  void set_total(uint64_t total) { total_.store(total, std::memory_order_relaxed); }
+
+  void finish() {
+    if (!reporter_.joinable()) return;
+    {
+      std::lock_guard lock(mutex_);
+      finished_ = true;
+    }
+    wake_.notify_all();
+    reporter_.join();
+    draw(true);
+    std::fputc('\n', stderr);
+  }
+
+ private:
+  void report_loop() {
+    std::unique_lock lock(mutex_);
+    int last_decile = -1;
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(terminal_ ? 100 : 1000), [this] { return finished_; })) {
+      if (terminal_) {
+        draw(false);
+      } else {
+        int decile = static_cast<int>(fraction() * 10);
+        if (decile != last_decile) {
+          last_decile = decile;
+          draw(false);
+          std::fputc('\n', stderr);
+        }
+      }
+    }
+  }
+
+  double fraction() const {
+    uint64_t total = total_.load(std::memory_order_relaxed);
+    return total == 0 ? 1.0 : std::min(1.0, static_cast<double>(done_.load(std::memory_order_relaxed)) / total);
+  }
+
+  void draw(bool final) {
+    constexpr int kWidth = 40;
+    double f = final ? 1.0 : fraction();
+    double elapsed = seconds_since(start_);
+    int filled = static_cast<int>(f * kWidth);
+    char bar[kWidth + 1];
+    for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '.';
+    bar[kWidth] = '\0';
+    if (final || f <= 0) {
+      std::fprintf(stderr, "%s[%s] %5.1f%%  %.1fs", terminal_ ? "\r" : "", bar, f * 100, elapsed);
+    } else {
+      double eta = elapsed * (1 - f) / f;
+      std::fprintf(stderr, "%s[%s] %5.1f%%  %.1fs, ETA %.1fs ", terminal_ ? "\r" : "", bar, f * 100, elapsed, eta);
+    }
+    std::fflush(stderr);
+  }
+
+  bool enabled_, terminal_;
+  std::atomic<uint64_t> total_;
+  std::atomic<uint64_t> done_{0};
+  Clock::time_point start_;
+  std::thread reporter_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool finished_ = false;
+};
+
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  Clock::time_point start = Clock::now();
+  const RenderSettings& settings = options.settings;
+  CropWindow window = options.crop.value_or(CropWindow{0, 0, settings.width, settings.height});
+  window.x = std::clamp(window.x, 0, settings.width);
+  window.y = std::clamp(window.y, 0, settings.height);
+  window.width = std::clamp(window.width, 0, settings.width - window.x);
+  window.height = std::clamp(window.height, 0, settings.height - window.y);
+
+  Geometry geometry(scene);
+  Lights lights(scene);
+  PerspectiveCamera camera(scene.camera, settings.width, settings.height);
+  Integrator integrator(scene, geometry, lights, settings.integrator, settings.max_depth);
+
+  std::vector<Tile> tiles;
+  for (int y = 0; y < window.height; y += kTileSize)
+    for (int x = 0; x < window.width; x += kTileSize)
+      tiles.push_back({window.x + x, window.y + y, window.x + std::min(x + kTileSize, window.width),
+                       window.y + std::min(y + kTileSize, window.height)});
+
+  // Per-pixel sums in double; every pixel's samples are added in sample order,
+  // so the result does not depend on which thread rendered which tile.
+  std::vector<double> sums(3 * static_cast<size_t>(window.width) * window.height, 0.0);
+  int thread_count = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  thread_count = std::max(1, std::min<int>(thread_count, static_cast<int>(std::max<size_t>(tiles.size(), 1))));
+
+  const bool budgeted = options.time_budget_seconds > 0;
+  const int spp_cap = settings.spp;
+  // With a time budget, samples are added in passes; without, one pass renders all.
+  int pass_spp = budgeted ? 1 : spp_cap;
+  uint64_t pixel_count = static_cast<uint64_t>(window.width) * window.height;
+  Progress progress(options.progress, pixel_count * static_cast<uint64_t>(spp_cap));
+
+  std::vector<RayCounters> counters(thread_count);
+  std::vector<uint64_t> invalid(thread_count, 0);
+  int spp_done = 0;
+  while (spp_done < spp_cap) {
+    int pass_begin = spp_done;
+    int pass_end = std::min(spp_cap, spp_done + pass_spp);
+    Clock::time_point pass_start = Clock::now();
+    std::atomic<size_t> next_tile{0};
+    auto worker = [&](int thread_index) {
+      RayCounters& counter = counters[thread_index];
+      for (size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
+        const Tile& tile = tiles[t];
+        for (int y = tile.y0; y < tile.y1; ++y) {
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            double* sum = &sums[3 * (static_cast<size_t>(y - window.y) * window.width + (x - window.x))];
+            for (int s = pass_begin; s < pass_end; ++s) {
+              Sampler sampler(options.seed, static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(s));
+              TimedRay ray = camera.generate(x, y, sampler);
+              ++counter.camera;
+              glm::vec3 L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
+              if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
+                ++invalid[thread_index];
+                continue;
+              }
+              sum[0] += L.r;
+              sum[1] += L.g;
+              sum[2] += L.b;
+            }
+          }
+        }
+        progress.advance(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * (pass_end - pass_begin));
+      }
+    };
+    std::vector<std::thread> workers;
+    for (int i = 1; i < thread_count; ++i) workers.emplace_back(worker, i);
+    worker(0);
+    for (std::thread& w : workers) w.join();
+    spp_done = pass_end;
+
+    if (budgeted) {
+      double elapsed = seconds_since(start);
+      double pass_seconds = std::max(1e-6, seconds_since(pass_start));
+      double per_sample = pass_seconds / (pass_end - pass_begin);
+      double remaining = options.time_budget_seconds - elapsed;
+      if (remaining < per_sample) break;
+      // Grow passes so the budget is met with few synchronisation points.
+      pass_spp = std::max(1, std::min(static_cast<int>(remaining / per_sample / 2), 2 * (pass_end - pass_begin)));
+      double projected = (spp_done + std::min(spp_cap - spp_done, static_cast<int>(remaining / per_sample))) ;
+      progress.set_total(static_cast<uint64_t>(projected) * pixel_count);
+    }
+  }
+  progress.finish();
+
+  Image image;
+  image.width = window.width;
+  image.height = window.height;
+  image.rgb.resize(sums.size());
+  double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
+  for (size_t i = 0; i < sums.size(); ++i) image.rgb[i] = static_cast<float>(sums[i] * scale);
+
+  if (stats) {
+    *stats = RenderStats{};
+    for (int i = 0; i < thread_count; ++i) {
+      stats->camera_rays += counters[i].camera;
+      stats->extension_rays += counters[i].extension;
+      stats->shadow_rays += counters[i].shadow;
+      stats->invalid_samples += invalid[i];
+    }
+    stats->samples_per_pixel = spp_done;
+    stats->seconds = seconds_since(start);
+  }
+  return image;
+}
+
+}  // namespace safegi::render

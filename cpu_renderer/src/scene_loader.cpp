@@ -1,0 +1,609 @@
+#include "safegi/cpu_renderer/scene_loader.hpp"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <tiny_obj_loader.h>
+
+#include "safegi/cpu_renderer/unit_expression.hpp"
+
+namespace safegi::render {
+
+namespace {
+
+using Json = nlohmann::json;
+using Triple = std::array<double, 3>;
+
+// The run-time twin of a compile-time dimension, so that a field's expected
+// unit is derived from the type it is stored in. `proj` is internal
+// bookkeeping for the cosine and never written in a scene file.
+template <class Term>
+void add_term(RuntimeDimension& dimension) {
+  constexpr std::string_view name = Term::base::name.view();
+  constexpr std::pair<std::string_view, Base> kBases[] = {
+      {"length", Base::length}, {"time", Base::time}, {"energy", Base::energy},
+      {"angle", Base::angle},   {"solid_angle", Base::solid_angle}};
+  for (const auto& [base_name, base] : kBases)
+    if (name == base_name) dimension.exponents[static_cast<int>(base)] += Term::exponent;
+}
+template <class... Terms>
+RuntimeDimension runtime_dimension(dimension<Terms...>) {
+  RuntimeDimension result;
+  (add_term<Terms>(result), ...);
+  return result;
+}
+template <class D>
+RuntimeDimension runtime_dimension_of() {
+  return runtime_dimension(D{});
+}
+
+glm::vec3 to_vec3(const Triple& t) {
+  return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+}
+
+// Where a value sits in the document, spelled as in error messages: shapes[2].radius.
+class JsonPath {
+ public:
+  JsonPath() = default;
+  JsonPath field(std::string_view name) const {
+    return JsonPath(text_.empty() ? std::string(name) : text_ + "." + std::string(name));
+  }
+  JsonPath index(size_t i) const { return JsonPath(text_ + "[" + std::to_string(i) + "]"); }
+  const std::string& text() const { return text_; }
+
+ private:
+  explicit JsonPath(std::string text) : text_(std::move(text)) {}
+  std::string text_;
+};
+
+std::string short_dump(const Json& value) {
+  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+class Loader {
+ public:
+  Loader(std::string_view display_name, std::filesystem::path base_directory)
+      : display_name_(display_name), base_directory_(std::move(base_directory)) {}
+
+  Scene load(const Json& root);
+
+ private:
+  [[noreturn]] void fail(const JsonPath& path, const std::string& message) const {
+    std::string where = path.text().empty() ? "" : path.text() + ": ";
+    throw SceneError(display_name_ + ": " + where + message);
+  }
+
+  const Json& object(const Json& value, const JsonPath& path, std::initializer_list<std::string_view> allowed) {
+    if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+    for (const auto& [key, member] : value.items()) {
+      bool known = false;
+      for (std::string_view name : allowed) known = known || key == name;
+      if (!known) {
+        std::string list;
+        for (std::string_view name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+        fail(path.field(key), "unknown field (expected one of: " + list + ")");
+      }
+    }
+    return value;
+  }
+
+  const Json& required(const Json& parent, const JsonPath& path, const char* name) {
+    auto found = parent.find(name);
+    if (found == parent.end()) fail(path, std::string("missing field '") + name + "'");
+    return *found;
+  }
+
+  // A dimensioned scalar: "5 mm", {"value": 5, "unit": "mm"}, or a bare number
+  // when the field is dimensionless.
+  double scalar(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
+    Quantity quantity;
+    if (value.is_number()) {
+      if (!expected.dimensionless())
+        fail(path, "expected " + describe(expected) + ", got " + short_dump(value) + " (a number without unit)");
+      quantity = {value.get<double>(), {}};
+    } else if (value.is_string()) {
+      std::string error;
+      std::optional<Quantity> parsed = parse_quantity(value.get<std::string>(), error);
+      if (!parsed) fail(path, "cannot read " + short_dump(value) + ": " + error);
+      quantity = *parsed;
+    } else if (value.is_object() && value.contains("value") && value["value"].is_number()) {
+      object(value, path, {"value", "unit"});
+      Unit unit = parse_unit_field(value, path);
+      quantity = {value["value"].get<double>() * unit.to_reference, unit.dimension};
+    } else {
+      fail(path, "expected " + describe(expected) + ", got " + short_dump(value));
+    }
+    if (!(quantity.dimension == expected))
+      fail(path, "expected " + describe(expected) + ", got " + short_dump(value) + " (" +
+                     dimension_name(quantity.dimension) + ")");
+    if (!std::isfinite(quantity.value)) fail(path, "value is not finite");
+    return quantity.value;
+  }
+
+  Unit parse_unit_field(const Json& value, const JsonPath& path) {
+    if (!value.contains("unit")) return Unit{};
+    const Json& unit_json = value["unit"];
+    if (!unit_json.is_string()) fail(path.field("unit"), "expected a unit string, got " + short_dump(unit_json));
+    std::string error;
+    std::optional<Unit> unit = parse_unit(unit_json.get<std::string>(), error);
+    if (!unit) fail(path.field("unit"), "cannot read " + short_dump(unit_json) + ": " + error);
+    return *unit;
+  }
+
+  // Three components: {"value": [x, y, z], "unit": "m"}, ["1 m", "2 m", "3 m"],
+  // or [x, y, z] when dimensionless.
+  Triple triple(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
+    if (value.is_object() && value.contains("value") && value["value"].is_array()) {
+      object(value, path, {"value", "unit"});
+      const Json& components = value["value"];
+      if (components.size() != 3) fail(path.field("value"), "expected 3 numbers, got " + short_dump(components));
+      Unit unit = parse_unit_field(value, path);
+      if (!(unit.dimension == expected))
+        fail(path, "expected " + describe(expected) + ", got " + short_dump(value) + " (" +
+                       dimension_name(unit.dimension) + ")");
+      Triple result;
+      for (size_t i = 0; i < 3; ++i) {
+        if (!components[i].is_number())
+          fail(path.field("value").index(i), "expected a number, got " + short_dump(components[i]));
+        result[i] = components[i].get<double>() * unit.to_reference;
+        if (!std::isfinite(result[i])) fail(path.field("value").index(i), "value is not finite");
+      }
+      return result;
+    }
+    if (value.is_array()) {
+      if (value.size() != 3) fail(path, "expected 3 components, got " + short_dump(value));
+      Triple result;
+      for (size_t i = 0; i < 3; ++i) result[i] = scalar(value[i], path.index(i), expected);
+      return result;
+    }
+    fail(path, "expected 3 components of " + describe(expected) + ", got " + short_dump(value));
+  }
+
+  // An RGB spectrum: a triple, or one scalar for grey.
+  struct Rgb {
+    float r, g, b;
+  };
+  Rgb rgb_field(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
+    bool is_triple = value.is_array() || (value.is_object() && value.contains("value") && value["value"].is_array());
+    if (!is_triple) {
+      float grey = static_cast<float>(scalar(value, path, expected));
+      return {grey, grey, grey};
+    }
+    Triple t = triple(value, path, expected);
+    return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+  }
+
+  Reflectance reflectance(const Json& value, const JsonPath& path) {
+    Reflectance albedo = typed_spectrum<dim::dimensionless>(value, path);
+    for (int c = 0; c < 3; ++c)
+      if (albedo[c] < 0 || albedo[c] > 1) fail(path, "reflectance must lie in [0, 1], got " + short_dump(value));
+    return albedo;
+  }
+
+  int integer(const Json& value, const JsonPath& path, int minimum, int maximum) {
+    if (!value.is_number_integer() || value.get<long long>() < minimum || value.get<long long>() > maximum)
+      fail(path, "expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+                     "], got " + short_dump(value));
+    return value.get<int>();
+  }
+
+  std::string string(const Json& value, const JsonPath& path) {
+    if (!value.is_string()) fail(path, "expected a string, got " + short_dump(value));
+    return value.get<std::string>();
+  }
+
+  bool boolean(const Json& value, const JsonPath& path) {
+    if (!value.is_boolean()) fail(path, "expected true or false, got " + short_dump(value));
+    return value.get<bool>();
+  }
+
+  // Typed fields: the expected dimension comes from the type the value is stored in.
+  template <class D>
+  quantity<D> typed_scalar(const Json& value, const JsonPath& path) {
+    return sg::from_raw<quantity<D>>(static_cast<float>(scalar(value, path, runtime_dimension_of<D>())));
+  }
+  template <class D>
+  sg::spectrum<D> typed_spectrum(const Json& value, const JsonPath& path) {
+    Rgb rgb = rgb_field(value, path, runtime_dimension_of<D>());
+    return sg::from_raw<sg::spectrum<D>>(glm::vec3(rgb.r, rgb.g, rgb.b));
+  }
+  template <class P>
+  P typed_point(const Json& value, const JsonPath& path) {
+    return sg::from_raw<P>(to_vec3(triple(value, path, runtime_dim::length)));
+  }
+
+  void load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings);
+  void load_camera(const Json& value, const JsonPath& path, Camera& camera);
+  Material load_material(const std::string& name, const Json& value, const JsonPath& path);
+  Shape load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials);
+  void load_mesh_file(const Json& value, const JsonPath& path, Shape& shape);
+  void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
+  ObjectToWorld load_transform(const Json& value, const JsonPath& path);
+  PointLight load_point_light(const Json& value, const JsonPath& path);
+
+  std::string display_name_;
+  std::filesystem::path base_directory_;
+};
+
+Scene Loader::load(const Json& root) {
+  JsonPath top;
+  object(root, top, {"format", "description", "render", "camera", "materials", "shapes", "lights"});
+  if (root.contains("format") && root["format"] != "safegi-scene/1")
+    fail(top.field("format"), "expected \"safegi-scene/1\", got " + short_dump(root["format"]));
+  Scene scene;
+  if (root.contains("render")) load_render_settings(root["render"], top.field("render"), scene.settings);
+  load_camera(required(root, top, "camera"), top.field("camera"), scene.camera);
+
+  std::map<std::string, int> material_index;
+  if (root.contains("materials")) {
+    const Json& materials = root["materials"];
+    if (!materials.is_object()) fail(top.field("materials"), "expected an object of named materials");
+    for (const auto& [name, value] : materials.items()) {
+      material_index[name] = static_cast<int>(scene.materials.size());
+      scene.materials.push_back(load_material(name, value, top.field("materials").field(name)));
+    }
+  }
+  if (root.contains("shapes")) {
+    const Json& shapes = root["shapes"];
+    if (!shapes.is_array()) fail(top.field("shapes"), "expected an array, got " + short_dump(shapes));
+    for (size_t i = 0; i < shapes.size(); ++i)
+      scene.shapes.push_back(load_shape(shapes[i], top.field("shapes").index(i), material_index));
+  }
+  if (root.contains("lights")) {
+    const Json& lights = root["lights"];
+    if (!lights.is_array()) fail(top.field("lights"), "expected an array, got " + short_dump(lights));
+    for (size_t i = 0; i < lights.size(); ++i)
+      scene.point_lights.push_back(load_point_light(lights[i], top.field("lights").index(i)));
+  }
+  return scene;
+}
+
+void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
+  object(value, path, {"resolution", "spp", "integrator", "max_depth"});
+  if (value.contains("resolution")) {
+    const Json& resolution = value["resolution"];
+    if (!resolution.is_array() || resolution.size() != 2)
+      fail(path.field("resolution"), "expected [width, height], got " + short_dump(resolution));
+    settings.width = integer(resolution[0], path.field("resolution").index(0), 1, 65536);
+    settings.height = integer(resolution[1], path.field("resolution").index(1), 1, 65536);
+  }
+  if (value.contains("spp")) settings.spp = integer(value["spp"], path.field("spp"), 1, 1 << 24);
+  if (value.contains("max_depth")) settings.max_depth = integer(value["max_depth"], path.field("max_depth"), 1, 1024);
+  if (value.contains("integrator")) {
+    std::string name = string(value["integrator"], path.field("integrator"));
+    if (name == "direct") settings.integrator = IntegratorType::direct;
+    else if (name == "path") settings.integrator = IntegratorType::path;
+    else fail(path.field("integrator"), "expected \"direct\" or \"path\", got " + short_dump(value["integrator"]));
+  }
+}
+
+void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
+  object(value, path, {"position", "look_at", "up", "fov", "lens_radius", "focus_distance", "shutter"});
+  camera.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
+  camera.look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
+  Triple up = triple(required(value, path, "up"), path.field("up"), runtime_dim::none);
+  Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
+  if (!(fov > 0.0f * units::degree && fov < 180.0f * units::degree))
+    fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
+  camera.fov = fov;
+  VectorWorld forward = camera.look_at - camera.position;
+  if (!(sg::length(forward) > sg::zero)) fail(path.field("look_at"), "must differ from position");
+  glm::vec3 up_raw = to_vec3(up);
+  if (!(glm::length(glm::cross(sg::raw(forward), up_raw)) > 0))
+    fail(path.field("up"), "must not be parallel to the viewing direction");
+  camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(up_raw));
+  if (value.contains("lens_radius")) {
+    camera.lens_radius = typed_scalar<dim::length>(value["lens_radius"], path.field("lens_radius"));
+    if (camera.lens_radius < sg::zero) fail(path.field("lens_radius"), "must not be negative");
+  }
+  camera.focus_distance = sg::length(forward);
+  if (value.contains("focus_distance")) {
+    camera.focus_distance = typed_scalar<dim::length>(value["focus_distance"], path.field("focus_distance"));
+    if (!(camera.focus_distance > sg::zero)) fail(path.field("focus_distance"), "must be positive");
+  }
+  if (value.contains("shutter")) {
+    const Json& shutter = object(value["shutter"], path.field("shutter"), {"open", "close"});
+    JsonPath shutter_path = path.field("shutter");
+    camera.shutter_open = typed_scalar<dim::time>(required(shutter, shutter_path, "open"), shutter_path.field("open"));
+    camera.shutter_close = typed_scalar<dim::time>(required(shutter, shutter_path, "close"), shutter_path.field("close"));
+    if (camera.shutter_close < camera.shutter_open) fail(shutter_path, "close must not precede open");
+  }
+}
+
+Material Loader::load_material(const std::string& name, const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  Material material;
+  material.name = name;
+  if (type == "lambert") {
+    object(value, path, {"type", "reflectance"});
+    material.type = Material::Type::lambert;
+    material.diffuse = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+  } else if (type == "phong") {
+    object(value, path, {"type", "diffuse", "specular", "exponent"});
+    material.type = Material::Type::phong;
+    material.diffuse = reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
+    if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
+    material.exponent = static_cast<float>(exponent);
+    if (sg::max_component(material.diffuse + material.specular) > 1.0f)
+      fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
+  } else if (type == "mirror") {
+    object(value, path, {"type", "reflectance"});
+    material.type = Material::Type::mirror;
+    material.specular = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+  } else {
+    fail(path.field("type"), "expected \"lambert\", \"phong\" or \"mirror\", got " + short_dump(value["type"]));
+  }
+  return material;
+}
+
+Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  static constexpr const char* common[] = {"type", "name", "material", "emission", "two_sided", "transform", "transform_at_close"};
+  auto allow = [&](std::initializer_list<const char*> specific) {
+    std::vector<std::string_view> names(std::begin(common), std::end(common));
+    names.insert(names.end(), specific.begin(), specific.end());
+    for (const auto& [key, member] : value.items()) {
+      if (std::find(names.begin(), names.end(), key) == names.end()) {
+        std::string list;
+        for (std::string_view name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+        fail(path.field(key), "unknown field (expected one of: " + list + ")");
+      }
+    }
+  };
+
+  Shape shape;
+  if (value.contains("name")) shape.name = string(value["name"], path.field("name"));
+  if (type == "quad") {
+    allow({"origin", "edge_u", "edge_v"});
+    shape.type = Shape::Type::mesh;
+    auto origin = typed_point<PointObject>(required(value, path, "origin"), path.field("origin"));
+    auto u = sg::from_raw<vector<Object>>(to_vec3(triple(required(value, path, "edge_u"), path.field("edge_u"), runtime_dim::length)));
+    auto v = sg::from_raw<vector<Object>>(to_vec3(triple(required(value, path, "edge_v"), path.field("edge_v"), runtime_dim::length)));
+    if (!(sg::length(sg::cross(u, v)) > sg::zero)) fail(path, "edge_u and edge_v must span a parallelogram");
+    shape.positions = {origin, origin + u, origin + u + v, origin + v};
+    shape.indices = {0, 1, 2, 0, 2, 3};
+  } else if (type == "sphere") {
+    allow({"center", "radius"});
+    shape.type = Shape::Type::sphere;
+    shape.center = typed_point<PointObject>(required(value, path, "center"), path.field("center"));
+    shape.radius = typed_scalar<dim::length>(required(value, path, "radius"), path.field("radius"));
+    if (!(shape.radius > sg::zero)) fail(path.field("radius"), "must be positive");
+  } else if (type == "mesh") {
+    allow({"file", "unit"});
+    load_mesh_file(value, path, shape);
+  } else if (type == "triangles") {
+    allow({"positions", "indices"});
+    load_triangles(value, path, shape);
+  } else {
+    fail(path.field("type"),
+         "expected \"quad\", \"sphere\", \"mesh\" or \"triangles\", got " + short_dump(value["type"]));
+  }
+
+  if (value.contains("material")) {
+    std::string name = string(value["material"], path.field("material"));
+    auto found = materials.find(name);
+    if (found == materials.end()) fail(path.field("material"), "no material named " + short_dump(value["material"]));
+    shape.material = found->second;
+  }
+  if (value.contains("emission")) {
+    Radiance radiance = typed_spectrum<dim::radiance>(value["emission"], path.field("emission"));
+    if (radiance.r() < sg::zero || radiance.g() < sg::zero || radiance.b() < sg::zero)
+      fail(path.field("emission"), "radiance must not be negative");
+    if (!sg::is_black(radiance)) shape.emission = radiance;
+  }
+  if (value.contains("two_sided")) shape.two_sided_emission = boolean(value["two_sided"], path.field("two_sided"));
+  if (value.contains("transform")) shape.render_from_object = load_transform(value["transform"], path.field("transform"));
+  if (value.contains("transform_at_close"))
+    shape.render_from_object_at_close = load_transform(value["transform_at_close"], path.field("transform_at_close"));
+  if (shape.emission && shape.render_from_object_at_close)
+    fail(path.field("transform_at_close"), "emitters cannot move (make the shape static or remove its emission)");
+  if (shape.type == Shape::Type::sphere) {
+    for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
+      if (!m) continue;
+      glm::mat4 forward = sg::raw(*m).forward;
+      float sx = glm::length(glm::vec3(forward[0])), sy = glm::length(glm::vec3(forward[1])), sz = glm::length(glm::vec3(forward[2]));
+      if (std::fabs(sx - sy) > 1e-4f * sx || std::fabs(sx - sz) > 1e-4f * sx)
+        fail(path.field("transform"), "a sphere's transform must scale uniformly");
+    }
+  }
+  return shape;
+}
+
+void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shape) {
+  shape.type = Shape::Type::mesh;
+  std::string file = string(required(value, path, "file"), path.field("file"));
+  std::string unit_text = string(required(value, path, "unit"), path.field("unit"));
+  std::string error;
+  std::optional<Unit> unit = parse_unit(unit_text, error);
+  if (!unit) fail(path.field("unit"), "cannot read " + short_dump(value["unit"]) + ": " + error);
+  if (!(unit->dimension == runtime_dim::length))
+    fail(path.field("unit"), "expected length (e.g. m), got " + short_dump(value["unit"]) + " (" +
+                                 dimension_name(unit->dimension) + ")");
+
+  std::filesystem::path full = base_directory_ / file;
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  config.mtl_search_path = full.parent_path().string();
+  tinyobj::ObjReader reader;
+  if (!std::filesystem::is_regular_file(full) || !reader.ParseFromFile(full.string(), config)) {
+    std::string reason = reader.Error();
+    while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
+    fail(path.field("file"), "cannot read mesh '" + file + "'" + (reason.empty() ? "" : ": " + reason));
+  }
+  const auto& vertices = reader.GetAttrib().vertices;
+  float scale = static_cast<float>(unit->to_reference);
+  for (size_t i = 0; i + 2 < vertices.size(); i += 3) {
+    glm::vec3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
+    shape.positions.push_back(sg::from_raw<PointObject>(p));
+  }
+  for (const tinyobj::shape_t& obj_shape : reader.GetShapes()) {
+    for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
+      if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= shape.positions.size())
+        fail(path.field("file"), "mesh '" + file + "' has a face with a vertex index out of range");
+      shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
+    }
+  }
+  if (shape.indices.empty() || shape.indices.size() % 3 != 0)
+    fail(path.field("file"), "mesh '" + file + "' has no triangles");
+}
+
+void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shape) {
+  shape.type = Shape::Type::mesh;
+  const Json& positions = required(value, path, "positions");
+  JsonPath positions_path = path.field("positions");
+  object(positions, positions_path, {"value", "unit"});
+  const Json& points = required(positions, positions_path, "value");
+  Unit unit = parse_unit_field(positions, positions_path);
+  if (!(unit.dimension == runtime_dim::length))
+    fail(positions_path, "expected length (e.g. m), got " + short_dump(positions) + " (" +
+                             dimension_name(unit.dimension) + ")");
+  if (!points.is_array()) fail(positions_path.field("value"), "expected an array of [x, y, z]");
+  for (size_t i = 0; i < points.size(); ++i) {
+    JsonPath point_path = positions_path.field("value").index(i);
+    if (!points[i].is_array() || points[i].size() != 3) fail(point_path, "expected [x, y, z], got " + short_dump(points[i]));
+    glm::vec3 p;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!points[i][axis].is_number()) fail(point_path.index(axis), "expected a number");
+      p[axis] = static_cast<float>(points[i][axis].get<double>() * unit.to_reference);
+    }
+    shape.positions.push_back(sg::from_raw<PointObject>(p));
+  }
+  const Json& indices = required(value, path, "indices");
+  if (!indices.is_array() || indices.empty() || indices.size() % 3 != 0)
+    fail(path.field("indices"), "expected a non-empty array of vertex indices, three per triangle");
+  int last = static_cast<int>(shape.positions.size()) - 1;
+  if (last < 0) fail(positions_path.field("value"), "expected at least 3 points");
+  for (size_t i = 0; i < indices.size(); ++i)
+    shape.indices.push_back(static_cast<uint32_t>(integer(indices[i], path.field("indices").index(i), 0, last)));
+}
+
+ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
+  if (!value.is_array()) fail(path, "expected an array of transform steps, got " + short_dump(value));
+  // The steps compose into one map<object, world>; the spaces between steps are anonymous.
+  glm::mat4 result(1.0f);
+  for (size_t i = 0; i < value.size(); ++i) {
+    JsonPath step_path = path.index(i);
+    const Json& step = value[i];
+    if (!step.is_object() || step.size() != 1)
+      fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
+    glm::mat4 m(1.0f);
+    if (step.contains("translate")) {
+      Triple t = triple(step["translate"], step_path.field("translate"), runtime_dim::length);
+      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<float>(t[r]);
+    } else if (step.contains("rotate")) {
+      JsonPath rotate_path = step_path.field("rotate");
+      const Json& rotate = object(step["rotate"], rotate_path, {"axis", "angle"});
+      Triple axis = triple(required(rotate, rotate_path, "axis"), rotate_path.field("axis"), runtime_dim::none);
+      double angle = scalar(required(rotate, rotate_path, "angle"), rotate_path.field("angle"), runtime_dim::angle);
+      double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+      if (!(norm > 0)) fail(rotate_path.field("axis"), "must not be zero");
+      double x = axis[0] / norm, y = axis[1] / norm, z = axis[2] / norm;
+      double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
+      double r[3][3] = {{t * x * x + c, t * x * y - s * z, t * x * z + s * y},
+                        {t * x * y + s * z, t * y * y + c, t * y * z - s * x},
+                        {t * x * z - s * y, t * y * z + s * x, t * z * z + c}};
+      for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<float>(r[row][col]);
+    } else if (step.contains("scale")) {
+      const Json& scale = step["scale"];
+      Triple s = scale.is_array() ? triple(scale, step_path.field("scale"), runtime_dim::none)
+                                  : Triple{0, 0, 0};
+      if (!scale.is_array()) s.fill(scalar(scale, step_path.field("scale"), runtime_dim::none));
+      for (int r = 0; r < 3; ++r) {
+        if (!(std::fabs(s[r]) > 0)) fail(step_path.field("scale"), "must not be zero");
+        m[r][r] = static_cast<float>(s[r]);
+      }
+    } else {
+      fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
+    }
+    result = m * result;  // later steps apply after earlier ones
+  }
+  return ObjectToWorld::from_matrix(result);
+}
+
+PointLight Loader::load_point_light(const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  if (type != "point") fail(path.field("type"), "expected \"point\", got " + short_dump(value["type"]));
+  object(value, path, {"type", "name", "position", "intensity", "power"});
+  PointLight light;
+  light.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
+  if (value.contains("intensity") == value.contains("power"))
+    fail(path, "expected exactly one of 'intensity' and 'power'");
+  if (value.contains("intensity")) {
+    light.intensity = typed_spectrum<dim::intensity>(value["intensity"], path.field("intensity"));
+  } else {
+    // An isotropic point source spreads its power over the whole sphere.
+    sg::spectrum<dim::power> power = typed_spectrum<dim::power>(value["power"], path.field("power"));
+    light.intensity = power / (4.0f * sg::pi * units::steradian);
+  }
+  if (light.intensity.r() < sg::zero || light.intensity.g() < sg::zero || light.intensity.b() < sg::zero)
+    fail(path, "light output must not be negative");
+  return light;
+}
+
+std::string line_and_column(std::string_view text, size_t byte) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view json_text, std::string_view display_name,
+                  const std::filesystem::path& base_directory) {
+  Json root;
+  try {
+    root = Json::parse(json_text.begin(), json_text.end());
+  } catch (const Json::parse_error& error) {
+    std::string message = error.what();
+    // nlohmann's text: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    size_t colon = message.find(": ", message.find("parse error"));
+    std::string raw_reason = colon == std::string::npos ? message : message.substr(colon + 2);
+    // The parser quotes what it read, which may be any byte: keep messages printable.
+    std::string reason;
+    for (unsigned char c : raw_reason) {
+      if (c >= 0x20 && c < 0x7f) {
+        reason += static_cast<char>(c);
+      } else {
+        static const char* const kHex = "0123456789ABCDEF";
+        reason += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+      }
+    }
+    size_t at = error.byte == 0 ? 0 : error.byte - 1;
+    throw SceneError(std::string(display_name) + ":" + line_and_column(json_text, at) + ": invalid JSON: " + reason);
+  }
+  return Loader(display_name, base_directory).load(root);
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream || std::filesystem::is_directory(file)) throw SceneError(file.string() + ": cannot open scene file");
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return parse_scene(text.str(), file.string(), file.parent_path());
+}
+
+}  // namespace safegi::render

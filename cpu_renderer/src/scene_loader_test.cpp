@@ -1,0 +1,91 @@
+#include "safegi/cpu_renderer/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace safegi::render {
+namespace {
+
+
+std::string with_camera(const std::string& rest) {
+  return std::string("{\"camera\": {\"position\": {\"value\": [0, 0, 5], \"unit\": \"m\"}, \"look_at\": {\"value\": [0, 0, "
+                     "0], \"unit\": \"m\"}, \"up\": [0, 1, 0], \"fov\": \"40 deg\"}") +
+         (rest.empty() ? "" : ", " + rest) + "}";
+}
+
+std::string load_error(const std::string& json) {
+  try {
+    parse_scene(json, "test.json", ".");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "no error for " << json;
+  return "";
+}
+
+TEST(SceneLoader, WrongDimensionNamesPathExpectedAndFound) {
+  EXPECT_EQ(load_error(with_camera(R"("lights": [{"type": "point", "position": {"value": [0, 1, 0], "unit": "m"}, "power": "3 m"}])")),
+            "test.json: lights[0].power: expected power (e.g. W), got \"3 m\" (length)");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "m"}, "radius": "2 W"}])")),
+            "test.json: shapes[0].radius: expected length (e.g. m), got \"2 W\" (power)");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "m"}, "radius": 2}])")),
+            "test.json: shapes[0].radius: expected length (e.g. m), got 2 (a number without unit)");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "quad", "origin": {"value": [0, 0, 0], "unit": "s"}, "edge_u": "1 m", "edge_v": "1 m"}])")),
+            "test.json: shapes[0].origin: expected length (e.g. m), got {\"unit\":\"s\",\"value\":[0,0,0]} (time)");
+  EXPECT_EQ(load_error(with_camera(
+                R"("shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "m"}, "radius": "1 m", "emission": "5 W/m2"}])")),
+            "test.json: shapes[0].emission: expected radiance (e.g. W/(m2 sr)), got \"5 W/m2\" (irradiance)");
+  EXPECT_EQ(load_error(R"({"camera": {"position": {"value": [0, 0, 5], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"}, "up": [0, 1, 0], "fov": "40 sr"}})"),
+            "test.json: camera.fov: expected angle (e.g. deg), got \"40 sr\" (solid angle)");
+}
+
+TEST(SceneLoader, MalformedInput) {
+  EXPECT_EQ(load_error("{\n  \"camera\": [1, 2,\n}"), "test.json:3:1: invalid JSON: syntax error while parsing value - unexpected '}'; expected '[', '{', or a literal");
+  EXPECT_EQ(load_error("[]"), "test.json: expected an object, got []");
+  EXPECT_EQ(load_error("{}"), "test.json: missing field 'camera'");
+  EXPECT_EQ(load_error(with_camera(R"("colour": 1)")),
+            "test.json: colour: unknown field (expected one of: format, description, render, camera, materials, shapes, lights)");
+  EXPECT_EQ(load_error(with_camera(R"("lights": [{"type": "point", "position": {"value": [0, 1, 0], "unit": "m"}, "power": "3 parsec"}])")),
+            "test.json: lights[0].power: cannot read \"3 parsec\": unknown unit 'parsec'");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "m"}, "radius": "1 m", "material": "gold"}])")),
+            "test.json: shapes[0].material: no material named \"gold\"");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "mesh", "file": "missing.obj", "unit": "m"}])")),
+            "test.json: shapes[0].file: cannot read mesh 'missing.obj'");
+  EXPECT_EQ(load_error(with_camera(R"("materials": {"shiny": {"type": "phong", "diffuse": 0.6, "specular": 0.6, "exponent": 10}})")),
+            "test.json: materials.shiny: diffuse + specular must not exceed 1 in any channel (energy conservation)");
+  EXPECT_EQ(load_error(with_camera(R"("materials": {"m": {"type": "lambert", "reflectance": [0.5, 1.5, 0.5]}})")),
+            "test.json: materials.m.reflectance: reflectance must lie in [0, 1], got [0.5,1.5,0.5]");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"resolution": [0, 10]})")),
+            "test.json: render.resolution[0]: expected an integer in [1, 65536], got 0");
+  EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "triangles", "positions": {"value": [[0,0,0],[1,0,0],[0,1,0]], "unit": "m"}, "indices": [0, 1, 3]}])")),
+            "test.json: shapes[0].indices[2]: expected an integer in [0, 2], got 3");
+  EXPECT_EQ(load_error("\xff\xfe"), "test.json:1:1: invalid JSON: syntax error while parsing value - invalid literal; last read: '\\xFF'");
+}
+
+TEST(SceneLoader, ConvertsUnitsOnceAtLoad) {
+  Scene scene = parse_scene(with_camera(R"json(
+    "shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "mm"}, "radius": "250 mm",
+                "emission": {"value": [1, 2, 3], "unit": "W/(mm2 sr)"}}],
+    "lights": [{"type": "point", "position": ["1 m", "200 cm", "3000 mm"], "power": "4 kW"}])json"),
+                            "test.json", ".");
+  ASSERT_EQ(scene.shapes.size(), 1u);
+  EXPECT_FLOAT_EQ(sg::raw(scene.shapes[0].radius), 0.25f);
+  EXPECT_FLOAT_EQ(sg::raw(*scene.shapes[0].emission).g, 2e6f);
+  ASSERT_EQ(scene.point_lights.size(), 1u);
+  EXPECT_FLOAT_EQ(sg::raw(scene.point_lights[0].position).y, 2.0f);
+  EXPECT_FLOAT_EQ(sg::raw(scene.point_lights[0].intensity).r, 4000.0f / (4 * 3.14159265f));
+}
+
+TEST(SceneLoader, BundledScenesLoad) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(SAFEGI_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    EXPECT_NO_THROW(load_scene(entry.path())) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 6);
+}
+
+}  // namespace
+}  // namespace safegi::render

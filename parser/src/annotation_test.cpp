@@ -1,0 +1,154 @@
+// The SafeGI annotation syntax (docs/language.md): declarations, annotated
+// types everywhere, generics, casts, and the rules that keep annotation words
+// ordinary identifiers in plain GLSL.
+
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+TEST(Annotation, DimensionUnitAndSpaceDeclarations) {
+  EXPECT_EQ(dump_first("dimension length;"), "DimensionDecl length base\n");
+  EXPECT_EQ(dump_first("dimension radiance = irradiance / (solid_angle * proj);"),
+            "DimensionDecl radiance\n  DimBinary /\n    DimName irradiance\n    DimParen\n"
+            "      DimBinary *\n        DimName solid_angle\n        DimName proj\n");
+  EXPECT_EQ(dump_first("dimension d = length^2 * time^-1 / 1;"),
+            "DimensionDecl d\n  DimBinary /\n    DimBinary *\n      DimPower ^2\n        DimName length\n"
+            "      DimPower ^-1\n        DimName time\n    DimOne\n");
+  EXPECT_EQ(dump_first("unit degree : angle = 3.14159 / 180.0;"),
+            "UnitDecl degree\n  DimName angle\n  BinaryExpr /\n    LiteralExpr 3.14159\n    LiteralExpr 180.0\n");
+  EXPECT_EQ(dump_first("space world;"), "SpaceDecl world\n");
+}
+
+TEST(Annotation, AnnotatedTypesOnEveryKindOfVariable) {
+  auto parsed = parse_text(
+      "space world; space object; space clip;\n"
+      "uniform float<length> radius;\n"
+      "in point<world> P;\n"
+      "out spectrum<radiance> L[2];\n"
+      "layout(std140) uniform Xf { map<object, world> toWorld; rigidmap<world, object> toObject;"
+      " projmap<world, clip> proj; };\n"
+      "struct Hit { point<world> p; normal<world> n; direction<world> wo; float<length> t; };\n"
+      "uniform sampler2D<float<length>> shadowMap;\n"
+      "uniform samplerCube<spectrum<radiance>> env;\n"
+      "vec3<length> f(vector<world> v, hpoint<clip> h, vec2<1> uv) { float<length / time> s; return v; }\n");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  std::string dump = parsed->dump();
+  for (const char* expected :
+       {"TypeSpecifier builtin float\n      Annotation\n        DimName length",
+        "TypeSpecifier annotated point\n      Annotation\n        DimName world",
+        "TypeSpecifier annotated map\n        Annotation\n          DimName object\n          DimName world",
+        "TypeSpecifier builtin sampler2D\n      Annotation\n        TypeSpecifier builtin float\n"
+        "          Annotation\n            DimName length",
+        "TypeSpecifier builtin samplerCube\n      Annotation\n        TypeSpecifier annotated spectrum",
+        "returns: TypeSpecifier builtin vec3\n      Annotation\n        DimName length",
+        "ParamDecl v\n      TypeSpecifier annotated vector", "TypeSpecifier builtin vec2\n        Annotation\n          DimOne",
+        "Annotation\n              DimBinary /"}) {
+    EXPECT_NE(dump.find(expected), std::string::npos) << expected << "\n---\n" << dump;
+  }
+}
+
+TEST(Annotation, AnnotationRangesCoverTheAngleBrackets) {
+  auto parsed = parse_text("uniform sampler2D<float<length>> s;");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  const auto* decl = ast::dyn_cast<ast::VariableDecl>(parsed->unit().decls.front());
+  const ast::Annotation* outer = decl->type->annotation;
+  ASSERT_NE(outer, nullptr);
+  EXPECT_EQ(outer->range.begin.column, 18u);  // '<'
+  EXPECT_EQ(outer->range.end.column, 33u);    // just past the second half of '>>'
+  const auto* texel = ast::dyn_cast<ast::TypeSpecifier>(outer->args.front());
+  ASSERT_NE(texel, nullptr);
+  EXPECT_EQ(texel->annotation->range.begin.column, 24u);
+  EXPECT_EQ(texel->annotation->range.end.column, 32u);  // just past the first half of '>>'
+}
+
+TEST(Annotation, GenericFunctions) {
+  auto generic = parse_text("template<dimension D, space S> float<D> f(point<S> p, float<D> x) { return x; }");
+  EXPECT_EQ(dump_ast(*generic->unit().decls.front()).substr(0, 105),
+            "FunctionDecl f dimension:D space:S\n  returns: TypeSpecifier builtin float\n    Annotation\n"
+            "      DimName D\n");
+  auto parsed = parse_text("template<dimension D> spectrum<D> scale(spectrum<D> s, float k);");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  const auto* fn = ast::dyn_cast<ast::FunctionDecl>(parsed->unit().decls.front());
+  EXPECT_EQ(fn->template_range.begin.column, 1u);
+  EXPECT_EQ(fn->template_range.end.column, 22u);
+}
+
+TEST(Annotation, CastsAreAnnotatedConstructors) {
+  EXPECT_EQ(dump_expr("float<solid_angle>(area / (d * d))").substr(0, 107),
+            "CallExpr\n  constructor: TypeSpecifier builtin float\n    Annotation\n      DimName solid_angle\n"
+            "  BinaryExpr /");
+  EXPECT_EQ(dump_expr("point<world>(v)"),
+            "CallExpr\n  constructor: TypeSpecifier annotated point\n    Annotation\n      DimName world\n"
+            "  IdentifierExpr v\n");
+}
+
+TEST(Annotation, AnnotationWordsAreOrdinaryNamesInPlainGlsl) {
+  auto parsed = parse_text(
+      "uniform float map;\n"
+      "struct normal { float x; };\n"
+      "float vector(float point) { return point < map ? point : map; }\n"
+      "void main() {\n"
+      "  float dimension = 1.0, space = 2.0, unit = 3.0;\n"
+      "  normal n = normal(1.0);\n"
+      "  float spectrum = vector(map);\n"
+      "  bool b = map < dimension > bool(space);\n"
+      "}\n");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  EXPECT_EQ(parsed->dump().find("annotated"), std::string::npos) << parsed->dump();
+}
+
+TEST(Annotation, VariableShadowsAnnotationWordInItsScope) {
+  auto parsed = parse_text("space world; void f(float point) { bool b = point < world > (1.0); }"
+                           " void g() { point<world> p; }");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  std::string dump = parsed->dump();
+  EXPECT_NE(dump.find("BinaryExpr >\n              BinaryExpr <\n                IdentifierExpr point"),
+            std::string::npos) << dump;
+  EXPECT_NE(dump.find("TypeSpecifier annotated point"), std::string::npos) << dump;
+}
+
+TEST(Annotation, ExpressionThatIsNotAnAnnotation) {
+  // `point < a` has no closing '>' so it cannot be an annotation.
+  auto parsed = parse_text("void f() { bool b = point < a; }");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+}
+
+TEST(Annotation, StructNamedLikeADeclarationWord) {
+  auto parsed = parse_text("struct dimension { float x; }; dimension d; space s;");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  std::string dump = parsed->dump();
+  EXPECT_NE(dump.find("TypeSpecifier named dimension\n    Declarator d"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("SpaceDecl s"), std::string::npos) << dump;
+}
+
+TEST(Annotation, RationalPowersAreRejected) {
+  auto parsed = parse_text("dimension d = length^0.5;");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:22: error: dimension exponents must be integers: rational powers are not part of the "
+            "language\ndimension d = length^0.5;\n                     ^~~\n");
+}
+
+TEST(Annotation, ThePreludeParses) {
+  std::ifstream in(SAFEGI_PRELUDE_FILE);
+  std::stringstream text;
+  text << in.rdbuf();
+  ASSERT_FALSE(text.str().empty());
+  auto parsed = parse_text(text.str());
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  std::size_t dimensions = 0, units = 0;
+  for (const ast::Decl* d : parsed->unit().decls) {
+    dimensions += ast::isa<ast::DimensionDecl>(d);
+    units += ast::isa<ast::UnitDecl>(d);
+  }
+  EXPECT_EQ(dimensions, 22u);
+  EXPECT_EQ(units, 12u);
+}
+
+}  // namespace
+}  // namespace safegi::testing

@@ -1,0 +1,779 @@
+// Declarations: external declarations, qualifiers, type specifiers, structs,
+// interface blocks, functions, and the SafeGI annotation syntax.
+
+#include <algorithm>
+#include <charconv>
+
+#include "parser_impl.hpp"
+
+namespace safegi::parser_detail {
+
+using namespace ast;
+
+namespace {
+
+bool is_word(const PToken& t) {
+  return !t.text.empty() && ((t.text[0] >= 'a' && t.text[0] <= 'z') || (t.text[0] >= 'A' && t.text[0] <= 'Z') ||
+                             t.text[0] == '_');
+}
+
+constexpr std::string_view kAnnotatedTypeWords[] = {"spectrum", "point",    "vector",  "direction", "normal",
+                                                    "hpoint",   "map",      "rigidmap", "projmap"};
+
+}  // namespace
+
+Parser::Parser(std::vector<PToken> tokens, DiagnosticEngine& diagnostics, const ParseOptions& options,
+               AstContext& context)
+    : tokens_(std::move(tokens)), diagnostics_(diagnostics), options_(options), context_(context) {
+  if (tokens_.empty() || tokens_.back().kind != T::Eof) {
+    PToken eof;
+    if (!tokens_.empty()) eof.range = {tokens_.back().range.end, tokens_.back().range.end};
+    tokens_.push_back(eof);
+  }
+  prev_end_ = tokens_.front().range.begin;
+  push_scope();
+  // Built-in struct types (compatibility profile uniforms) and the opaque
+  // types of extensions glslang accepts in OpenGL GLSL but the lexer does not
+  // list as keywords; a program's own declaration shadows them.
+  for (const char* name : {"gl_DepthRangeParameters", "gl_PointParameters", "gl_MaterialParameters",
+                           "gl_LightSourceParameters", "gl_LightModelParameters", "gl_LightModelProducts",
+                           "gl_LightProducts", "gl_FogParameters", "accelerationStructureEXT",
+                           "accelerationStructureNV", "rayQueryEXT", "hitObjectNV"}) {
+    declare(name, NameKind::Type);
+  }
+  push_scope();  // the program's global scope
+}
+
+// ----------------------------------------------------------------- errors
+
+void Parser::fail(SourceRange range, std::string message) {
+  // One "end of file" error per run: the enclosing constructs that are also
+  // left open would only repeat it.
+  if (at(T::Eof) && range == peek().range) {
+    if (eof_reported_) throw ParseError{};
+    eof_reported_ = true;
+    range = {prev_end_, prev_end_};  // where the missing text should have been
+  }
+  diagnostics_.report(Diagnostic::error(range, std::move(message)));
+  throw ParseError{};
+}
+
+void Parser::fail_expected(std::string_view what, std::string_view context) {
+  std::string message = "expected " + std::string(what);
+  if (!context.empty()) message += " " + std::string(context);
+  message += ", found " + describe(peek());
+  fail(peek().range, std::move(message));
+}
+
+const PToken& Parser::expect(T kind, std::string_view what, std::string_view context) {
+  if (!at(kind)) fail_expected(what, context);
+  return advance();
+}
+
+void Parser::expect_semicolon(std::string_view context) {
+  if (accept(T::Semicolon)) return;
+  // Like clang: the caret goes just after the previous token, where the ';' is missing.
+  std::string message = "expected ';' " + std::string(context) + ", found " + describe(peek());
+  SourceRange at_end{prev_end_, prev_end_};
+  diagnostics_.report(Diagnostic::error(at_end, std::move(message)));
+  throw ParseError{};
+}
+
+Parser::DepthGuard::DepthGuard(Parser& p) : parser(p) {
+  if (++parser.depth_ > parser.options_.max_nesting) {
+    --parser.depth_;
+    if (!parser.depth_reported_) {
+      parser.depth_reported_ = true;
+      parser.fail(parser.peek().range, "nesting too deep: more than " + std::to_string(parser.options_.max_nesting) +
+                                           " levels of statements, parentheses or operators");
+    }
+    throw ParseError{};
+  }
+}
+
+// ----------------------------------------------------------------- scopes
+
+void Parser::declare(std::string_view name, NameKind kind) {
+  if (!name.empty()) scopes_.back()[std::string(name)] = kind;
+}
+
+const Parser::NameKind* Parser::lookup(std::string_view name) const {
+  std::string key(name);
+  for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+    auto found = it->find(key);
+    if (found != it->end()) return &found->second;
+  }
+  return nullptr;
+}
+
+bool Parser::is_type_name(std::string_view name) const {
+  const NameKind* kind = lookup(name);
+  return kind != nullptr && *kind == NameKind::Type;
+}
+
+bool Parser::is_annotated_type_word(const PToken& token) const {
+  if (token.kind != T::Ident) return false;
+  if (std::find(std::begin(kAnnotatedTypeWords), std::end(kAnnotatedTypeWords), token.text) ==
+      std::end(kAnnotatedTypeWords)) {
+    return false;
+  }
+  return lookup(token.text) == nullptr;  // a program's own declaration shadows the word
+}
+
+// ----------------------------------------------------------------- lookahead
+
+std::size_t Parser::scan_brackets(std::size_t i) const {
+  int depth = 0;
+  for (; i < tokens_.size(); ++i) {
+    T k = tokens_[i].kind;
+    if (k == T::LBracket || k == T::LParen) ++depth;
+    if (k == T::RBracket || k == T::RParen) {
+      if (--depth == 0) return i + 1;
+    }
+    if (k == T::Eof || k == T::Semicolon || k == T::LBrace || k == T::RBrace) return 0;
+  }
+  return 0;
+}
+
+std::size_t Parser::scan_dim_expr(std::size_t i, int nesting) const {
+  if (nesting > static_cast<int>(options_.max_nesting)) return 0;
+  for (;;) {
+    const PToken& t = tokens_[i];
+    if (t.kind == T::Ident || t.kind == T::IntLit) {
+      ++i;
+    } else if (t.kind == T::LParen) {
+      i = scan_dim_expr(i + 1, nesting + 1);
+      if (i == 0 || tokens_[i].kind != T::RParen) return 0;
+      ++i;
+    } else {
+      return 0;
+    }
+    if (tokens_[i].kind == T::Caret) {
+      ++i;
+      if (tokens_[i].kind == T::Minus || tokens_[i].kind == T::Plus) ++i;
+      if (tokens_[i].kind != T::IntLit) return 0;
+      ++i;
+    }
+    if (tokens_[i].kind != T::Star && tokens_[i].kind != T::Slash) return i;
+    ++i;
+  }
+}
+
+std::size_t Parser::scan_annotation(std::size_t i, int nesting) const {
+  if (tokens_[i].kind != T::Lt || nesting > static_cast<int>(options_.max_nesting)) return 0;
+  ++i;
+  for (;;) {
+    const PToken& t = tokens_[i];
+    if (t.kind == T::TypeKw || (is_annotated_type_word(t) && tokens_[i + 1].kind == T::Lt)) {
+      ++i;
+      if (tokens_[i].kind == T::Lt) {
+        i = scan_annotation(i, nesting + 1);
+        if (i == 0) return 0;
+      }
+    } else {
+      i = scan_dim_expr(i, nesting + 1);
+      if (i == 0) return 0;
+    }
+    if (tokens_[i].kind == T::Gt) return i + 1;
+    if (tokens_[i].kind != T::Comma) return 0;
+    ++i;
+  }
+}
+
+std::size_t Parser::scan_type_specifier(std::size_t i) const {
+  const PToken& t = tokens_[i];
+  if (t.kind == T::TypeKw) {
+    ++i;
+    if (tokens_[i].kind == T::Lt) {
+      i = scan_annotation(i, 0);
+      if (i == 0) return 0;
+    }
+  } else if (t.kind == T::Ident) {
+    ++i;
+    if (is_annotated_type_word(t) && tokens_[i].kind == T::Lt) {
+      i = scan_annotation(i, 0);
+      if (i == 0) return 0;
+    }
+  } else {
+    return 0;
+  }
+  while (tokens_[i].kind == T::LBracket) {
+    i = scan_brackets(i);
+    if (i == 0) return 0;
+  }
+  return i;
+}
+
+bool Parser::at_qualifier() const {
+  T k = peek().kind;
+  return k == T::QualKw || k == T::Layout || k == T::Subroutine;
+}
+
+bool Parser::at_declaration() const {
+  const PToken& t = peek();
+  switch (t.kind) {
+    case T::QualKw:
+    case T::Layout:
+    case T::Subroutine:
+    case T::Struct:
+    case T::Precision:
+      return true;
+    case T::TypeKw: {
+      std::size_t end = scan_type_specifier(pos_);
+      return end != 0 && tokens_[end].kind != T::LParen && tokens_[end].kind != T::Dot;
+    }
+    case T::Ident: {
+      if (peek(1).kind == T::Ident) return true;
+      bool annotated = is_annotated_type_word(t) && peek(1).kind == T::Lt;
+      if (!annotated && !is_type_name(t.text)) return false;
+      std::size_t end = scan_type_specifier(pos_);
+      return end != 0 && tokens_[end].kind == T::Ident;
+    }
+    default:
+      return false;
+  }
+}
+
+bool Parser::at_annotation_declaration() const {
+  const PToken& t = peek();
+  if (t.kind != T::Ident || peek(1).kind != T::Ident) return false;
+  if (t.text != "dimension" && t.text != "unit" && t.text != "space") return false;
+  return !is_type_name(t.text);
+}
+
+// ------------------------------------------------------- translation unit
+
+TranslationUnit* Parser::parse_translation_unit() {
+  auto* unit = make<TranslationUnit>(here());
+  while (!at(T::Eof) && !diagnostics_.limit_reached()) {
+    std::size_t start = pos_;
+    try {
+      parse_external_declaration(unit->decls);
+    } catch (const ParseError&) {
+      synchronize_global();
+      if (pos_ == start) advance();
+    }
+  }
+  unit->range.end = prev_end_;
+  return unit;
+}
+
+void Parser::parse_external_declaration(std::vector<Decl*>& out) {
+  if (at(T::Semicolon)) {
+    auto* empty = make<EmptyDecl>(here());
+    advance();
+    empty->range.end = prev_end_;
+    out.push_back(empty);
+    return;
+  }
+  out.push_back(parse_declaration(true));
+}
+
+Decl* Parser::parse_declaration(bool global) {
+  SourceLocation begin = here();
+  std::vector<TemplateParam> template_params;
+  SourceRange template_range;
+  if (at(T::Template)) {
+    if (!global) fail(peek().range, "a generic function must be declared at global scope");
+    parse_template_header(template_params, template_range);
+  } else if (global && at_annotation_declaration()) {
+    return parse_annotation_declaration();
+  }
+  if (at(T::Precision)) {
+    auto* decl = make<PrecisionDecl>(begin);
+    advance();
+    if (!(at(T::QualKw) && peek().qual == QualifierKind::Precision)) {
+      fail_expected("'highp', 'mediump' or 'lowp'", "after 'precision'");
+    }
+    decl->precision = std::string(peek().text);
+    decl->precision_range = advance().range;
+    decl->type = parse_type_specifier();
+    expect_semicolon("after precision statement");
+    decl->range = range_from(begin);
+    return decl;
+  }
+  TypeQualifiers qualifiers = parse_qualifiers();
+  Decl* decl = parse_declaration_after_qualifiers(std::move(qualifiers), global, std::move(template_params),
+                                                  template_range);
+  decl->range = range_from(begin);
+  return decl;
+}
+
+Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool global,
+                                                 std::vector<TemplateParam> template_params,
+                                                 SourceRange template_range) {
+  SourceLocation begin = qualifiers.empty() ? here() : qualifiers.range.begin;
+  if (!template_params.empty()) begin = template_range.begin;
+  if (!qualifiers.empty() && template_params.empty()) {
+    if (at(T::Semicolon)) {  // `layout(local_size_x = 8) in;`
+      auto* decl = make<QualifierDecl>(begin);
+      decl->qualifiers = std::move(qualifiers);
+      advance();
+      return decl;
+    }
+    if (at(T::Ident) && peek(1).kind == T::LBrace) {  // interface block
+      auto* block = make<InterfaceBlockDecl>(begin);
+      block->qualifiers = std::move(qualifiers);
+      block->block_name = std::string(peek().text);
+      block->block_name_range = advance().range;
+      block->members = parse_member_list("in block");
+      if (at(T::Ident)) {
+        block->instance_name = std::string(peek().text);
+        block->instance_name_range = advance().range;
+        parse_array_dims(block->instance_array_dims);
+        declare(block->instance_name, NameKind::Value);
+      } else {
+        for (VariableDecl* member : block->members) {
+          for (const Declarator& d : member->declarators) declare(d.name, NameKind::Value);
+        }
+      }
+      expect_semicolon("after interface block");
+      return block;
+    }
+    if (at(T::Ident) && (peek(1).kind == T::Comma || peek(1).kind == T::Semicolon) && !is_type_name(peek().text)) {
+      auto* decl = make<QualifierDecl>(begin);  // `invariant gl_Position;`, `precise a, b;`
+      decl->qualifiers = std::move(qualifiers);
+      do {
+        const PToken& name = expect(T::Ident, "a name", "in qualifier declaration");
+        decl->names.emplace_back(name.text);
+        decl->name_ranges.push_back(name.range);
+      } while (accept(T::Comma));
+      expect_semicolon("after qualifier declaration");
+      return decl;
+    }
+  }
+  TypeSpecifier* type = parse_type_specifier();
+  if (!template_params.empty() && !(at(T::Ident) && peek(1).kind == T::LParen)) {
+    fail_expected("a function declaration", "after 'template<...>'");
+  }
+  if (at(T::Semicolon)) {  // `struct S { ... };`
+    auto* decl = make<VariableDecl>(begin);
+    decl->qualifiers = std::move(qualifiers);
+    decl->type = type;
+    advance();
+    return decl;
+  }
+  if (!at(T::Ident)) {
+    fail_expected("a name", "after type '" + (type->name.empty() ? std::string("struct") : type->name) + "'");
+  }
+  if (peek(1).kind == T::LParen) {
+    const PToken& name = advance();
+    return parse_function_rest(std::move(qualifiers), type, name, begin, std::move(template_params),
+                               template_range, global);
+  }
+  return parse_init_declarators(std::move(qualifiers), type, begin);
+}
+
+// ------------------------------------------------------------ annotations
+
+void Parser::parse_template_header(std::vector<TemplateParam>& params, SourceRange& range) {
+  SourceLocation begin = here();
+  advance();  // template
+  expect(T::Lt, "'<'", "after 'template'");
+  do {
+    TemplateParam param;
+    SourceLocation param_begin = here();
+    if (at(T::Ident) && peek().text == "dimension") {
+      param.kind = TemplateParamKind::Dimension;
+    } else if (at(T::Ident) && peek().text == "space") {
+      param.kind = TemplateParamKind::Space;
+    } else {
+      fail_expected("'dimension' or 'space'", "in template parameter list");
+    }
+    advance();
+    const PToken& name = expect(T::Ident, "a parameter name", "in template parameter list");
+    param.name = std::string(name.text);
+    param.name_range = name.range;
+    param.range = range_from(param_begin);
+    params.push_back(std::move(param));
+  } while (accept(T::Comma));
+  expect(T::Gt, "'>'", "to close template parameter list");
+  range = range_from(begin);
+}
+
+Decl* Parser::parse_annotation_declaration() {
+  SourceLocation begin = here();
+  std::string_view word = advance().text;
+  const PToken& name = advance();  // checked to be an identifier by at_annotation_declaration
+  Decl* result = nullptr;
+  if (word == "dimension") {
+    auto* decl = make<DimensionDecl>(begin);
+    decl->name = std::string(name.text);
+    decl->name_range = name.range;
+    if (accept(T::Assign)) decl->definition = parse_dim_expr();
+    expect_semicolon("after dimension declaration");
+    result = decl;
+  } else if (word == "unit") {
+    auto* decl = make<UnitDecl>(begin);
+    decl->name = std::string(name.text);
+    decl->name_range = name.range;
+    expect(T::Colon, "':' and the unit's dimension", "after unit name");
+    decl->dimension = parse_dim_expr();
+    expect(T::Assign, "'=' and the unit's scale", "after unit dimension");
+    decl->scale = parse_conditional();
+    expect_semicolon("after unit declaration");
+    result = decl;
+  } else {
+    auto* decl = make<SpaceDecl>(begin);
+    decl->name = std::string(name.text);
+    decl->name_range = name.range;
+    expect_semicolon("after space declaration");
+    result = decl;
+  }
+  result->range = range_from(begin);
+  return result;
+}
+
+Annotation* Parser::parse_annotation() {
+  DepthGuard guard(*this);
+  auto* annotation = make<Annotation>(here());
+  expect(T::Lt, "'<'", "");
+  do {
+    annotation->args.push_back(parse_annotation_arg());
+  } while (accept(T::Comma));
+  if (!at(T::Gt)) fail_expected("',' or '>'", "in annotation");
+  advance();
+  annotation->range.end = prev_end_;
+  return annotation;
+}
+
+Node* Parser::parse_annotation_arg() {
+  if (at(T::TypeKw) || (is_annotated_type_word(peek()) && peek(1).kind == T::Lt)) {
+    return parse_type_specifier_nonarray();
+  }
+  return parse_dim_expr();
+}
+
+DimExpr* Parser::parse_dim_expr() {
+  SourceLocation begin = here();
+  DimExpr* lhs = parse_dim_term();
+  while (at(T::Star) || at(T::Slash)) {
+    auto* binary = make<DimBinary>(begin);
+    binary->is_division = at(T::Slash);
+    binary->op_range = advance().range;
+    binary->lhs = lhs;
+    binary->rhs = parse_dim_term();
+    binary->range = range_from(begin);
+    lhs = binary;
+  }
+  return lhs;
+}
+
+DimExpr* Parser::parse_dim_term() {
+  SourceLocation begin = here();
+  DimExpr* base = parse_dim_primary();
+  if (!at(T::Caret)) return base;
+  auto* power = make<DimPower>(begin);
+  SourceLocation exponent_begin = here();
+  advance();
+  bool negative = false;
+  if (at(T::Minus) || at(T::Plus)) negative = advance().kind == T::Minus;
+  const PToken& exponent = peek();
+  if (exponent.kind == T::FloatLit || exponent.kind == T::DoubleLit) {
+    fail(exponent.range, "dimension exponents must be integers: rational powers are not part of the language");
+  }
+  expect(T::IntLit, "an integer exponent", "after '^'");
+  int value = 0;
+  auto [ptr, ec] = std::from_chars(exponent.text.data(), exponent.text.data() + exponent.text.size(), value);
+  if (ec != std::errc{} || ptr != exponent.text.data() + exponent.text.size() || value > 1000) {
+    fail(exponent.range, "dimension exponent '" + std::string(exponent.text) + "' is not a small decimal integer");
+  }
+  power->base = base;
+  power->exponent = negative ? -value : value;
+  power->exponent_range = range_from(exponent_begin);
+  power->range = range_from(begin);
+  return power;
+}
+
+DimExpr* Parser::parse_dim_primary() {
+  DepthGuard guard(*this);
+  SourceLocation begin = here();
+  if (at(T::Ident)) {
+    auto* name = make<DimName>(begin);
+    name->name = std::string(advance().text);
+    name->range = range_from(begin);
+    return name;
+  }
+  if (at(T::IntLit)) {
+    if (peek().text != "1") {
+      fail(peek().range, "only the literal 1 may appear in a dimension expression, found " + describe(peek()));
+    }
+    auto* one = make<DimOne>(begin);
+    advance();
+    one->range = range_from(begin);
+    return one;
+  }
+  if (accept(T::LParen)) {
+    auto* paren = make<DimParen>(begin);
+    paren->inner = parse_dim_expr();
+    expect(T::RParen, "')'", "in dimension expression");
+    paren->range = range_from(begin);
+    return paren;
+  }
+  fail_expected("a dimension or space name", "in annotation");
+}
+
+// -------------------------------------------------------------- qualifiers
+
+TypeQualifiers Parser::parse_qualifiers() {
+  TypeQualifiers qualifiers;
+  qualifiers.range = {here(), here()};
+  while (at_qualifier()) {
+    if (at(T::Layout)) {
+      qualifiers.list.push_back(parse_layout_qualifier());
+    } else if (at(T::Subroutine)) {
+      qualifiers.list.push_back(parse_subroutine_qualifier());
+    } else {
+      Qualifier q;
+      q.kind = peek().qual;
+      q.word = std::string(peek().text);
+      q.range = advance().range;
+      qualifiers.list.push_back(std::move(q));
+    }
+  }
+  qualifiers.range.end = qualifiers.empty() ? qualifiers.range.begin : prev_end_;
+  return qualifiers;
+}
+
+Qualifier Parser::parse_layout_qualifier() {
+  Qualifier q;
+  q.kind = QualifierKind::Layout;
+  q.word = "layout";
+  SourceLocation begin = here();
+  advance();
+  expect(T::LParen, "'('", "after 'layout'");
+  do {
+    if (!is_word(peek())) fail_expected("a layout qualifier name", "in 'layout(...)'");
+    LayoutId id;
+    id.name = std::string(peek().text);
+    id.name_range = advance().range;
+    if (accept(T::Assign)) id.value = parse_conditional();
+    q.layout_ids.push_back(std::move(id));
+  } while (accept(T::Comma));
+  expect(T::RParen, "')'", "to close 'layout('");
+  q.range = range_from(begin);
+  return q;
+}
+
+Qualifier Parser::parse_subroutine_qualifier() {
+  Qualifier q;
+  q.kind = QualifierKind::Subroutine;
+  q.word = "subroutine";
+  SourceLocation begin = here();
+  advance();
+  if (accept(T::LParen)) {
+    q.has_type_list = true;
+    if (!at(T::RParen)) {
+      do {
+        q.type_names.emplace_back(expect(T::Ident, "a subroutine type name", "in 'subroutine(...)'").text);
+      } while (accept(T::Comma));
+    }
+    expect(T::RParen, "')'", "to close 'subroutine('");
+  }
+  q.range = range_from(begin);
+  return q;
+}
+
+// ------------------------------------------------------------------- types
+
+void Parser::parse_array_dims(std::vector<ArrayDim>& dims) {
+  while (at(T::LBracket)) {
+    ArrayDim dim;
+    SourceLocation begin = here();
+    advance();
+    if (!at(T::RBracket)) dim.size = parse_conditional();
+    expect(T::RBracket, "']'", "to close array size");
+    dim.range = range_from(begin);
+    dims.push_back(dim);
+  }
+}
+
+TypeSpecifier* Parser::parse_type_specifier() {
+  SourceLocation begin = here();
+  TypeSpecifier* type = parse_type_specifier_nonarray();
+  parse_array_dims(type->array_dims);
+  type->range = range_from(begin);
+  return type;
+}
+
+TypeSpecifier* Parser::parse_type_specifier_nonarray() {
+  SourceLocation begin = here();
+  auto* type = make<TypeSpecifier>(begin);
+  if (at(T::Struct)) {
+    type->form = TypeSpecifier::Form::Struct;
+    type->struct_decl = parse_struct_specifier();
+    type->name = type->struct_decl->name;
+    type->name_range = type->struct_decl->name_range;
+  } else if (at(T::TypeKw)) {
+    type->form = TypeSpecifier::Form::Builtin;
+    type->name = std::string(peek().text);
+    type->name_range = advance().range;
+    if (at(T::Lt)) type->annotation = parse_annotation();
+  } else if (at(T::Ident)) {
+    bool annotated = is_annotated_type_word(peek()) && peek(1).kind == T::Lt;
+    type->form = annotated ? TypeSpecifier::Form::Annotated : TypeSpecifier::Form::Named;
+    type->name = std::string(peek().text);
+    type->name_range = advance().range;
+    if (!annotated && !is_type_name(type->name)) {
+      // Reported without unwinding: the declaration still parses, so its
+      // names exist and later uses do not cascade.
+      diagnostics_.report(Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'"));
+    }
+    if (annotated) type->annotation = parse_annotation();
+  } else {
+    fail_expected("a type", "");
+  }
+  type->range = range_from(begin);
+  return type;
+}
+
+StructDecl* Parser::parse_struct_specifier() {
+  SourceLocation begin = here();
+  auto* decl = make<StructDecl>(begin);
+  advance();  // struct
+  if (at(T::Ident)) {
+    decl->name = std::string(peek().text);
+    decl->name_range = advance().range;
+  }
+  decl->members = parse_member_list("in struct");
+  declare(decl->name, NameKind::Type);
+  decl->range = range_from(begin);
+  return decl;
+}
+
+std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
+  DepthGuard guard(*this);
+  std::vector<VariableDecl*> members;
+  expect(T::LBrace, "'{'", context);
+  while (!at(T::RBrace) && !at(T::Eof) && !diagnostics_.limit_reached()) {
+    std::size_t start = pos_;
+    try {
+      SourceLocation begin = here();
+      TypeQualifiers qualifiers = parse_qualifiers();
+      TypeSpecifier* type = parse_type_specifier();
+      auto* member = make<VariableDecl>(begin);
+      member->qualifiers = std::move(qualifiers);
+      member->type = type;
+      do {
+        Declarator d;
+        SourceLocation d_begin = here();
+        const PToken& name = expect(T::Ident, "a member name", context);
+        d.name = std::string(name.text);
+        d.name_range = name.range;
+        parse_array_dims(d.array_dims);
+        d.range = range_from(d_begin);
+        member->declarators.push_back(std::move(d));
+      } while (accept(T::Comma));
+      expect_semicolon("after member declaration");
+      member->range = range_from(begin);
+      members.push_back(member);
+    } catch (const ParseError&) {
+      synchronize_statement();
+      if (pos_ == start) advance();
+    }
+  }
+  expect(T::RBrace, "'}'", context);
+  return members;
+}
+
+// --------------------------------------------------- functions and variables
+
+FunctionDecl* Parser::parse_function_rest(TypeQualifiers qualifiers, TypeSpecifier* type, const PToken& name,
+                                          SourceLocation begin, std::vector<TemplateParam> template_params,
+                                          SourceRange template_range, bool global) {
+  auto* fn = make<FunctionDecl>(begin);
+  fn->template_params = std::move(template_params);
+  fn->template_range = template_range;
+  fn->qualifiers = std::move(qualifiers);
+  fn->return_type = type;
+  fn->name = std::string(name.text);
+  fn->name_range = name.range;
+  bool subroutine_type = false;
+  for (const Qualifier& q : fn->qualifiers.list) {
+    subroutine_type |= q.kind == QualifierKind::Subroutine && !q.has_type_list;
+  }
+  declare(fn->name, subroutine_type ? NameKind::Type : NameKind::Value);
+
+  push_scope();
+  struct PopScope {
+    Parser& p;
+    ~PopScope() { p.pop_scope(); }
+  } pop{*this};
+  expect(T::LParen, "'('", "after function name");
+  if (at(T::TypeKw) && peek().text == "void" && peek(1).kind == T::RParen) {
+    advance();
+    fn->void_param = true;
+  } else if (!at(T::RParen)) {
+    do {
+      fn->params.push_back(parse_parameter());
+    } while (accept(T::Comma));
+  }
+  expect(T::RParen, "')'", "to close parameter list");
+  if (at(T::LBrace)) {
+    if (!global) fail(peek().range, "a function cannot be defined inside another function");
+    fn->body = parse_compound(false);
+  } else {
+    expect_semicolon("after function prototype");
+  }
+  fn->range = range_from(begin);
+  return fn;
+}
+
+ParamDecl* Parser::parse_parameter() {
+  SourceLocation begin = here();
+  auto* param = make<ParamDecl>(begin);
+  param->qualifiers = parse_qualifiers();
+  param->type = parse_type_specifier();
+  if (at(T::Ident)) {
+    param->name = std::string(peek().text);
+    param->name_range = advance().range;
+    parse_array_dims(param->array_dims);
+    declare(param->name, NameKind::Value);
+  }
+  param->range = range_from(begin);
+  return param;
+}
+
+VariableDecl* Parser::parse_init_declarators(TypeQualifiers qualifiers, TypeSpecifier* type, SourceLocation begin) {
+  auto* decl = make<VariableDecl>(begin);
+  decl->qualifiers = std::move(qualifiers);
+  decl->type = type;
+  do {
+    Declarator d;
+    SourceLocation d_begin = here();
+    const PToken& name = expect(T::Ident, "a variable name", "in declaration");
+    d.name = std::string(name.text);
+    d.name_range = name.range;
+    parse_array_dims(d.array_dims);
+    if (accept(T::Assign)) d.initializer = parse_initializer();
+    d.range = range_from(d_begin);
+    declare(d.name, NameKind::Value);
+    decl->declarators.push_back(std::move(d));
+  } while (accept(T::Comma));
+  expect_semicolon("after declaration");
+  return decl;
+}
+
+Expr* Parser::parse_initializer() {
+  if (!at(T::LBrace)) return parse_assignment();
+  DepthGuard guard(*this);
+  SourceLocation begin = here();
+  auto* list = make<InitializerList>(begin);
+  advance();
+  std::uint32_t height = 0;
+  do {
+    if (at(T::RBrace) && !list->elements.empty()) {
+      list->trailing_comma = true;
+      break;
+    }
+    Expr* element = parse_initializer();
+    height = std::max(height, element->height);
+    list->elements.push_back(element);
+  } while (accept(T::Comma));
+  expect(T::RBrace, "'}'", "to close initializer list");
+  list->height = height + 1;
+  list->range = range_from(begin);
+  return list;
+}
+
+}  // namespace safegi::parser_detail

@@ -1,0 +1,138 @@
+// Declarations: qualifiers, layout, structs, interface blocks, arrays,
+// functions, precision, subroutines.
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+TEST(ParseDecl, QualifiersInOrder) {
+  EXPECT_EQ(dump_first("layout(location = 2, std140, binding = 1 + 2) flat centroid in highp vec3 n;"),
+            "VariableDecl [layout(location=2,std140,binding=1 + 2)] [flat] [centroid] [in] [highp]\n"
+            "  TypeSpecifier builtin vec3\n  Declarator n\n");
+  EXPECT_EQ(dump_first("invariant precise noperspective sample out float a;"),
+            "VariableDecl [invariant] [precise] [noperspective] [sample] [out]\n"
+            "  TypeSpecifier builtin float\n  Declarator a\n");
+  EXPECT_EQ(dump_first("layout(rgba8) coherent volatile restrict readonly writeonly uniform image2D img;"),
+            "VariableDecl [layout(rgba8)] [coherent] [volatile] [restrict] [readonly] [writeonly] [uniform]\n"
+            "  TypeSpecifier builtin image2D\n  Declarator img\n");
+}
+
+TEST(ParseDecl, LayoutAcceptsKeywordsAsIdentifiers) {
+  EXPECT_EQ(dump_first("layout(shared, row_major) uniform;"), "QualifierDecl [layout(shared,row_major)] [uniform]\n");
+  EXPECT_EQ(dump_first("layout(local_size_x = 8, local_size_y = 8) in;"),
+            "QualifierDecl [layout(local_size_x=8,local_size_y=8)] [in]\n");
+}
+
+TEST(ParseDecl, QualifierOnlyDeclarations) {
+  EXPECT_EQ(dump_first("invariant gl_Position, v;"), "QualifierDecl [invariant] gl_Position v\n");
+  EXPECT_EQ(dump_first("precise out p;"), "QualifierDecl [precise] [out] p\n");
+}
+
+TEST(ParseDecl, MultipleDeclaratorsArraysAndInitialisers) {
+  EXPECT_EQ(dump_first("const float a = 1.0, b[2][3], c[] = float[](1.0);"),
+            "VariableDecl [const]\n  TypeSpecifier builtin float\n  Declarator a\n    init: LiteralExpr 1.0\n"
+            "  Declarator b\n    ArrayDim\n      LiteralExpr 2\n    ArrayDim\n      LiteralExpr 3\n"
+            "  Declarator c\n    ArrayDim unsized\n    init: CallExpr\n"
+            "      constructor: TypeSpecifier builtin float\n        ArrayDim unsized\n      LiteralExpr 1.0\n");
+  EXPECT_EQ(dump_first("vec4[2] pair;"),
+            "VariableDecl\n  TypeSpecifier builtin vec4\n    ArrayDim\n      LiteralExpr 2\n  Declarator pair\n");
+}
+
+TEST(ParseDecl, StructsNamedAnonymousAndNested) {
+  EXPECT_EQ(dump_first("struct Light { vec3 p; float r[2]; } lights[4];"),
+            "VariableDecl\n  TypeSpecifier struct Light\n    StructDecl Light\n"
+            "      VariableDecl\n        TypeSpecifier builtin vec3\n        Declarator p\n"
+            "      VariableDecl\n        TypeSpecifier builtin float\n        Declarator r\n"
+            "          ArrayDim\n            LiteralExpr 2\n"
+            "  Declarator lights\n    ArrayDim\n      LiteralExpr 4\n");
+  EXPECT_EQ(dump_first("struct { struct Inner { int i; } in1; } s;"),
+            "VariableDecl\n  TypeSpecifier struct\n    StructDecl\n      VariableDecl\n"
+            "        TypeSpecifier struct Inner\n          StructDecl Inner\n            VariableDecl\n"
+            "              TypeSpecifier builtin int\n              Declarator i\n        Declarator in1\n"
+            "  Declarator s\n");
+  auto parsed = parse_text("struct S { float x; }; S a; S b[2]; void f() { S c = S(1.0); S[2] d; }");
+  EXPECT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+}
+
+TEST(ParseDecl, InterfaceBlocks) {
+  EXPECT_EQ(dump_first("layout(std140, binding = 0) uniform Camera { mat4 view; layout(offset = 64) mat4 proj; } cam[2];"),
+            "InterfaceBlockDecl Camera instance=cam [layout(std140,binding=0)] [uniform]\n"
+            "  VariableDecl\n    TypeSpecifier builtin mat4\n    Declarator view\n"
+            "  VariableDecl [layout(offset=64)]\n    TypeSpecifier builtin mat4\n    Declarator proj\n"
+            "  ArrayDim\n    LiteralExpr 2\n");
+  EXPECT_EQ(dump_first("buffer Data { readonly float values[]; };"),
+            "InterfaceBlockDecl Data [buffer]\n  VariableDecl [readonly]\n    TypeSpecifier builtin float\n"
+            "    Declarator values\n      ArrayDim unsized\n");
+  EXPECT_EQ(dump_first("out VertexData { smooth vec3 n; } vd;"),
+            "InterfaceBlockDecl VertexData instance=vd [out]\n  VariableDecl [smooth]\n"
+            "    TypeSpecifier builtin vec3\n    Declarator n\n");
+}
+
+TEST(ParseDecl, FunctionsAndPrototypes) {
+  EXPECT_EQ(dump_first("highp float f(const in float x, out vec3 y[2], sampler2D);"),
+            "FunctionDecl f prototype [highp]\n  returns: TypeSpecifier builtin float\n"
+            "  ParamDecl x [const] [in]\n    TypeSpecifier builtin float\n"
+            "  ParamDecl y [out]\n    TypeSpecifier builtin vec3\n    ArrayDim\n      LiteralExpr 2\n"
+            "  ParamDecl\n    TypeSpecifier builtin sampler2D\n");
+  EXPECT_EQ(dump_first("void main(void) {}"),
+            "FunctionDecl main (void)\n  returns: TypeSpecifier builtin void\n  CompoundStmt\n");
+  auto parsed = parse_text("float[2] g() { return float[2](1.0, 2.0); }");
+  EXPECT_EQ(parsed->dump().substr(0, 111),
+            "TranslationUnit\n  FunctionDecl g\n    returns: TypeSpecifier builtin float\n      ArrayDim\n"
+            "        LiteralExpr 2\n");
+}
+
+TEST(ParseDecl, PrecisionStatements) {
+  EXPECT_EQ(dump_first("precision mediump float;"), "PrecisionDecl mediump\n  TypeSpecifier builtin float\n");
+  EXPECT_EQ(dump_first("void f() { precision highp int; }"), "DeclStmt\n  PrecisionDecl highp\n    TypeSpecifier builtin int\n");
+}
+
+TEST(ParseDecl, Subroutines) {
+  auto parsed = parse_text(
+      "subroutine vec4 colorRed_t(float x);\n"
+      "subroutine (colorRed_t) vec4 ColorRed(float x) { return vec4(x); }\n"
+      "subroutine uniform colorRed_t myRedFunc;\n"
+      "layout(location = 0) subroutine uniform colorRed_t other[2];\n");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  std::string dump = parsed->dump();
+  EXPECT_NE(dump.find("FunctionDecl colorRed_t prototype [subroutine]"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("FunctionDecl ColorRed [subroutine(colorRed_t)]"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("VariableDecl [subroutine] [uniform]\n    TypeSpecifier named colorRed_t"), std::string::npos)
+      << dump;
+}
+
+TEST(ParseDecl, SubroutineArrayElementCall) {
+  EXPECT_EQ(dump_first("void f() { shade[1](n); }"),
+            "ExprStmt\n  CallExpr\n    callee: IndexExpr\n      IdentifierExpr shade\n      LiteralExpr 1\n"
+            "    IdentifierExpr n\n");
+}
+
+TEST(ParseDecl, UnknownTypeNameIsReportedOnceAndParsingGoesOn) {
+  auto parsed = parse_text("B x[1];\nvoid f(B y);\ngl_LightSourceParameters light;\n");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:1: error: unknown type name 'B'\nB x[1];\n^\n"
+            "test.glsl:2:8: error: unknown type name 'B'\nvoid f(B y);\n       ^\n");
+  EXPECT_EQ(parsed->unit().decls.size(), 3u);
+}
+
+TEST(ParseDecl, GlobalStraySemicolons) {
+  auto parsed = parse_text("float a;; void f() {};");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  EXPECT_EQ(parsed->unit().decls.size(), 4u);
+}
+
+TEST(ParseDecl, DeclarationRangesAndNameRanges) {
+  auto parsed = parse_text("uniform vec3 color;");
+  const auto* decl = ast::dyn_cast<ast::VariableDecl>(parsed->unit().decls.front());
+  ASSERT_NE(decl, nullptr);
+  EXPECT_EQ(decl->range.begin.column, 1u);
+  EXPECT_EQ(decl->range.end.column, 20u);
+  EXPECT_EQ(decl->declarators[0].name_range.begin.column, 14u);
+  EXPECT_EQ(decl->type->name_range.begin.column, 9u);
+}
+
+}  // namespace
+}  // namespace safegi::testing

@@ -1,0 +1,113 @@
+#pragma once
+// The compiler's symbol table (schema v1, docs/symbol-table.md): what every
+// shader interface variable is, in GLSL and in SafeGI terms, and where it was
+// declared. runtime_gl binds typed host handles by it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "safegi/runtime_gl/value_type.hpp"
+
+namespace safegi::gl {
+
+inline constexpr int kSymbolTableVersion = 1;
+
+enum class Stage { vertex, tess_control, tess_evaluation, geometry, fragment, compute };
+
+std::string_view to_string(Stage stage);
+std::optional<Stage> stage_from_string(std::string_view text);
+
+enum class Storage { uniform, input, output };
+
+std::string_view to_string(Storage storage);  // "uniform", "in", "out"
+
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+// "file:line:col" (column omitted when 0).
+std::string to_string(const SourceLocation& location);
+
+struct Symbol {
+  std::string name;
+  Storage storage = Storage::uniform;
+  ValueType type;
+  std::string printed_type;            // the compiler's own words for the type
+  std::optional<ValueType> texel;      // samplers: the value one texel holds
+  std::optional<int> array_size;       // arrays: the declared element count
+  std::optional<int> location;         // explicit layout(location = N)
+  std::optional<int> binding;          // explicit layout(binding = N)
+  SourceLocation declared_at;
+  std::string instance_name;           // blocks: instance name, may be empty
+  std::string block;                   // block members: the enclosing block's name
+  std::vector<Symbol> members;         // blocks: members in declaration order
+};
+
+struct StageSymbols {
+  Stage stage = Stage::vertex;
+  std::string file;                       // the annotated source the stage came from
+  int glsl_version = 0;                   // 330, 450, ...
+  std::string glsl_profile;               // "core", "compatibility", "es" or empty
+  std::vector<std::string> source_files;  // #line source-string number -> file
+  std::string source_hash;
+  std::vector<Symbol> symbols;
+
+  // The interface variable of the given storage and name (blocks are searched
+  // by block name; members by "member" and "Block.member").
+  const Symbol* find(Storage storage, std::string_view name) const;
+  // File name for a driver source-string number (falls back to `file`).
+  const std::string& file_for_source_string(int index) const;
+};
+
+struct DerivedDimension {
+  std::string name;
+  DimensionExponents exponents;
+  SourceLocation declared_at;
+};
+
+struct BaseDimension {
+  std::string name;
+  SourceLocation declared_at;
+};
+
+struct Unit {
+  std::string name;
+  Dimension dimension;
+  double scale = 1.0;  // value of one unit in the dimension's reference unit
+  SourceLocation declared_at;
+};
+
+struct SpaceDeclaration {
+  std::string name;
+  SourceLocation declared_at;
+};
+
+enum class TableMode { shader, program };
+
+struct SymbolTable {
+  int version = kSymbolTableVersion;
+  TableMode mode = TableMode::shader;
+  std::string compiler;     // producer, e.g. "safeglslc 0.1.0"
+  std::string source_hash;  // over all stages' sources
+  std::vector<BaseDimension> base_dimensions;
+  std::vector<DerivedDimension> derived_dimensions;
+  std::vector<Unit> units;
+  std::vector<SpaceDeclaration> spaces;
+  std::vector<StageSymbols> stages;
+
+  const StageSymbols* stage(Stage which) const;
+  DimensionNamer namer() const;
+};
+
+// Parses schema v1. `origin` names the table in messages (a path or
+// "<in-memory>"). Throws SymbolTableError: "origin: error: <json pointer>: ...".
+SymbolTable parse_symbol_table(std::string_view json_text, std::string_view origin = "<symbol table>");
+
+// The canonical JSON text of a table (what the elider should emit).
+std::string to_json(const SymbolTable& table);
+
+}  // namespace safegi::gl

@@ -1,0 +1,120 @@
+#include "safegi/runtime_gl/symbol_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include "safegi/runtime_gl/error.hpp"
+#include "test_support.hpp"
+
+namespace safegi::gl {
+namespace {
+
+using testing::read_testdata;
+
+std::string error_of(std::string_view json) {
+  try {
+    parse_symbol_table(json, "t.json");
+  } catch (const SymbolTableError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(SymbolTable, ParsesTheFragmentExample) {
+  SymbolTable table = parse_symbol_table(read_testdata("emission.frag.json"), "emission.frag.json");
+  EXPECT_EQ(table.version, 1);
+  EXPECT_EQ(table.mode, TableMode::shader);
+  ASSERT_EQ(table.stages.size(), 1u);
+  const StageSymbols& stage = table.stages[0];
+  EXPECT_EQ(stage.stage, Stage::fragment);
+  EXPECT_EQ(stage.file, "emission.sgl.frag");
+  EXPECT_EQ(stage.glsl_version, 330);
+  EXPECT_EQ(stage.glsl_profile, "core");
+
+  const Symbol* le = stage.find(Storage::uniform, "Le");
+  ASSERT_NE(le, nullptr);
+  EXPECT_EQ(le->type.kind, Kind::spectrum);
+  EXPECT_EQ(le->type.glsl_type, "vec3");
+  EXPECT_EQ(le->type.dimension.name, "radiance");
+  EXPECT_EQ(le->type.dimension.exponents,
+            (DimensionExponents{{"energy", 1}, {"length", -2}, {"proj", -1}, {"solid_angle", -1}, {"time", -1}}));
+  EXPECT_EQ(to_string(le->declared_at), "emission.sgl.frag:4:28");
+
+  const Symbol* tint = stage.find(Storage::uniform, "tint");
+  ASSERT_NE(tint, nullptr);
+  EXPECT_EQ(tint->array_size, 2);
+  EXPECT_TRUE(tint->type.dimension.exponents.empty());
+
+  const Symbol* environment = stage.find(Storage::uniform, "environment");
+  ASSERT_NE(environment, nullptr);
+  EXPECT_EQ(environment->type.kind, Kind::sampler);
+  ASSERT_TRUE(environment->texel.has_value());
+  EXPECT_EQ(environment->texel->kind, Kind::spectrum);
+
+  const Symbol* map = stage.find(Storage::uniform, "cameraFromWorld");
+  ASSERT_NE(map, nullptr);
+  EXPECT_EQ(map->type.spaces, (std::vector<std::string>{"world", "camera"}));
+
+  const Symbol* focal = stage.find(Storage::uniform, "Camera.focalLength");
+  ASSERT_NE(focal, nullptr);
+  EXPECT_EQ(focal->block, "Camera");
+  EXPECT_EQ(stage.find(Storage::uniform, "focalLength"), focal);
+
+  const Symbol* color = stage.find(Storage::output, "color");
+  ASSERT_NE(color, nullptr);
+  EXPECT_EQ(color->location, 0);
+  EXPECT_EQ(stage.find(Storage::uniform, "color"), nullptr);
+}
+
+TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheDeclarations) {
+  SymbolTable table = parse_symbol_table(read_testdata("emission.program.json"));
+  EXPECT_EQ(table.mode, TableMode::program);
+  ASSERT_NE(table.stage(Stage::vertex), nullptr);
+  ASSERT_NE(table.stage(Stage::fragment), nullptr);
+  EXPECT_EQ(table.stage(Stage::geometry), nullptr);
+  EXPECT_EQ(table.base_dimensions.size(), 6u);
+  EXPECT_EQ(table.units.at(1).name, "millimetre");
+  EXPECT_DOUBLE_EQ(table.units.at(1).scale, 0.001);
+  EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
+}
+
+TEST(SymbolTable, WritesWhatItReads) {
+  const std::string text = read_testdata("emission.program.json");
+  SymbolTable table = parse_symbol_table(text);
+  EXPECT_EQ(to_json(parse_symbol_table(to_json(table))), to_json(table));
+  EXPECT_EQ(to_json(table), text);  // the example is in canonical form
+}
+
+TEST(SymbolTable, RejectsInvalidJson) {
+  EXPECT_EQ(error_of("{").substr(0, 30), "t.json: error: not valid JSON:");
+}
+
+TEST(SymbolTable, NamesThePlaceOfEveryStructuralError) {
+  EXPECT_EQ(error_of("[]"), "t.json: error: /: expected an object, found array");
+  EXPECT_EQ(error_of(R"({"format":"x"})"), "t.json: error: /format: expected \"safegi-symbol-table\"");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":2})"),
+            "t.json: error: /version: unsupported version 2 (this runtime reads 1)");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader"})"),
+            "t.json: error: /: missing required member \"stages\"");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+                 {"stage":"pixel","file":"a","glsl_version":{"number":330},"symbols":[]}]})"),
+            "t.json: error: /stages/0/stage: unknown stage \"pixel\"");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+                 {"stage":"vertex","file":"a","glsl_version":{"number":330},"symbols":[
+                   {"name":"p","storage":"in","kind":"point","glsl_type":"vec3","declared_at":{"file":"a","line":1}}]}]})"),
+            "t.json: error: /stages/0/symbols/0: a point needs 1 space(s), found 0");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+                 {"stage":"vertex","file":"a","glsl_version":{"number":330},"symbols":[
+                   {"name":"p","storage":"in","kind":"plain","glsl_type":"vec3","array_size":"2",
+                    "declared_at":{"file":"a","line":1}}]}]})"),
+            "t.json: error: /stages/0/symbols/0/array_size: expected an integer, found string");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+                 {"stage":"vertex","file":"a","glsl_version":{"number":330},"symbols":[
+                   {"name":"s","storage":"uniform","kind":"sampler","glsl_type":"sampler2D",
+                    "declared_at":{"file":"a","line":1}}]}]})"),
+            "t.json: error: /stages/0/symbols/0: a sampler needs a \"texel\" type");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[]})"),
+            "t.json: error: /stages: a shader-mode table has exactly one stage, found 0");
+}
+
+}  // namespace
+}  // namespace safegi::gl

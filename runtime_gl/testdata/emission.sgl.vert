@@ -1,0 +1,9 @@
+#version 330 core
+// A triangle in normalized device coordinates carrying emitted radiance.
+in point<ndc> position;
+in spectrum<radiance> vertexLe;
+out spectrum<radiance> Lv;
+void main() {
+  Lv = vertexLe;
+  gl_Position = vec4(position, 1.0);
+}

@@ -1,0 +1,289 @@
+// Measures the front end on shaders nobody here wrote (docs/frontend-corpus.md).
+//
+//   safegi_corpus_check glslang FILE...   which shaders glslang accepts, and
+//                                         the share of those safeglslc's front
+//                                         end parses and round-trips
+//   safegi_corpus_check piglit FILE...    glslparsertest files: the share where
+//                                         our syntax verdict agrees with
+//                                         `expect_result`
+//
+// Round trip: preprocess + parse, print (with the #version and #extension
+// lines), preprocess + parse the print, compare tree dumps; glslang must
+// accept the print too.
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <safegi/diagnostics/render.hpp>
+#include <safegi/lexer/preprocessor.hpp>
+#include <safegi/parser/parser.hpp>
+#include <safegi/parser/printer.hpp>
+
+namespace {
+
+std::optional<EShLanguage> stage_of(const std::filesystem::path& path) {
+  static const std::map<std::string, EShLanguage> stages = {
+      {".vert", EShLangVertex},         {".frag", EShLangFragment},      {".geom", EShLangGeometry},
+      {".comp", EShLangCompute},        {".tesc", EShLangTessControl},   {".tese", EShLangTessEvaluation}};
+  auto it = stages.find(path.extension().string());
+  if (it == stages.end()) return std::nullopt;
+  return it->second;
+}
+
+int glslang_crashes = 0;
+
+enum class Verdict { accepted, rejected, syntax_error };
+Verdict glslang_verdict(const std::string& text, EShLanguage stage);
+
+bool glslang_accepts(const std::string& text, EShLanguage stage) {
+  return glslang_verdict(text, stage) == Verdict::accepted;
+}
+
+// Debian's glslang 12 crashes on a few newer test files of its own Test/
+// folder, so each verdict is taken in a child process; a crash counts as
+// "not accepted".
+Verdict glslang_verdict(const std::string& text, EShLanguage stage) {
+  std::fflush(stdout);
+  pid_t child = fork();
+  if (child == 0) {
+    int null = open("/dev/null", O_WRONLY);  // glslang prints its own complaints
+    dup2(null, 1);
+    dup2(null, 2);
+    glslang::TShader shader(stage);
+    const char* source = text.c_str();
+    shader.setStrings(&source, 1);
+    // Without #version a shader is GLSL 1.10, as for our preprocessor.
+    if (shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) _exit(0);
+    _exit(std::string(shader.getInfoLog()).find("syntax error") != std::string::npos ? 2 : 1);
+  }
+  int status = 0;
+  if (child < 0 || waitpid(child, &status, 0) != child) return Verdict::rejected;
+  if (WIFSIGNALED(status)) {
+    ++glslang_crashes;
+    return Verdict::rejected;
+  }
+  if (!WIFEXITED(status)) return Verdict::rejected;
+  int code = WEXITSTATUS(status);
+  return code == 0 ? Verdict::accepted : code == 2 ? Verdict::syntax_error : Verdict::rejected;
+}
+
+struct FrontEnd {
+  bool ok = false;
+  std::string first_error;  // rendered, one line
+  std::string dump;
+  std::string printed;      // with #version / #extension preamble
+  int version = 110;
+  bool es = false;
+};
+
+FrontEnd run_front_end(const std::string& name, const std::string& text, const std::string& include_dir) {
+  FrontEnd result;
+  safegi::SourceManager sources;
+  safegi::DiagnosticEngine diagnostics;
+  safegi::FileId file = sources.add_file(name, text);
+  safegi::PreprocessorOptions options;
+  if (!include_dir.empty()) options.include_paths.push_back(include_dir);
+  safegi::PreprocessedUnit unit = safegi::preprocess(sources, file, options, diagnostics);
+  safegi::ParseResult parsed = safegi::parse(unit.tokens, diagnostics);
+  result.version = unit.version;
+  result.es = unit.es;
+  result.ok = !diagnostics.has_errors();
+  if (!result.ok) {
+    for (const safegi::Diagnostic& d : diagnostics.diagnostics()) {
+      if (d.severity != safegi::Severity::error) continue;
+      std::string text = safegi::render_text(d, sources);
+      result.first_error = text.substr(0, text.find('\n'));
+      break;
+    }
+    return result;
+  }
+  result.dump = safegi::dump_ast(*parsed.unit);
+  safegi::PrintOptions print;
+  if (unit.version_given) {
+    print.preamble = "#version " + std::to_string(unit.version);
+    if (!unit.profile.empty()) print.preamble += " " + unit.profile;
+    print.preamble += "\n";
+  }
+  for (const safegi::ExtensionDirective& e : unit.extensions) {
+    print.preamble += "#extension " + e.name + " : " + e.behavior + "\n";
+  }
+  result.printed = safegi::print_glsl(*parsed.unit, print);
+  return result;
+}
+
+std::string read(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// `// [config]` ... `// [end config]` of a piglit glslparsertest file.
+std::optional<std::string> piglit_expectation(const std::string& text) {
+  std::size_t begin = text.find("[config]");
+  if (begin == std::string::npos) return std::nullopt;
+  std::size_t end = text.find("[end config]", begin);
+  std::string config = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  std::size_t key = config.find("expect_result:");
+  if (key == std::string::npos) return std::nullopt;
+  std::istringstream value(config.substr(key + 14));
+  std::string word;
+  value >> word;
+  if (word != "pass" && word != "fail") return std::nullopt;
+  return word;
+}
+
+bool modern(const FrontEnd& f) { return f.es ? f.version >= 300 : f.version >= 330; }
+
+struct Tally {
+  int total = 0, parsed = 0, round_tripped = 0, printed_accepted = 0;
+  void print(const char* label) const {
+    auto pct = [&](int n) { return total ? 100.0 * n / total : 0.0; };
+    std::printf("  %-28s %5d   parsed %5d (%6.2f%%)   round-tripped %5d (%6.2f%%)   print accepted by glslang %5d (%6.2f%%)\n",
+                label, total, parsed, pct(parsed), round_tripped, pct(round_tripped), printed_accepted,
+                pct(printed_accepted));
+  }
+};
+
+int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
+  Tally all, recent;
+  int considered = 0, rejected_by_glslang = 0;
+  std::vector<std::string> failures;
+  for (const auto& path : files) {
+    auto stage = stage_of(path);
+    if (!stage) continue;
+    ++considered;
+    std::string text = read(path);
+    if (!glslang_accepts(text, *stage)) {
+      ++rejected_by_glslang;
+      continue;
+    }
+    FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
+    bool is_modern = first.ok ? modern(first) : true;
+    for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
+      if (t) ++t->total;
+    }
+    if (!first.ok) {
+      failures.push_back(path.string() + ": parse: " + first.first_error);
+      continue;
+    }
+    FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
+    bool same = second.ok && second.dump == first.dump;
+    bool accepted = glslang_accepts(first.printed, *stage);
+    for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
+      if (!t) continue;
+      ++t->parsed;
+      t->round_tripped += same;
+      t->printed_accepted += accepted;
+    }
+    if (!same) {
+      failures.push_back(path.string() + ": round trip: " +
+                         (second.ok ? std::string("tree differs after printing") : second.first_error));
+    } else if (!accepted) {
+      failures.push_back(path.string() + ": printed GLSL rejected by glslang");
+    }
+  }
+  std::printf("glslang corpus: %d shaders considered, %d rejected by glslang (not counted; %d of them crashed it), %d accepted\n",
+              considered, rejected_by_glslang, glslang_crashes, all.total);
+  all.print("accepted by glslang:");
+  recent.print("of which #version>=330/300es:");
+  std::printf("failures (%zu):\n", failures.size());
+  for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
+  return 0;
+}
+
+int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
+  int total = 0, agree = 0, glslang_agree = 0;
+  int pass_pass = 0, pass_fail = 0, fail_fail = 0, fail_pass = 0;
+  int syntax_fail = 0, syntax_fail_rejected = 0;  // expected to fail, and glslang says "syntax error"
+  std::vector<std::string> syntax_missed;
+  std::vector<std::string> ours_rejects_valid;
+  for (const auto& path : files) {
+    auto stage = stage_of(path);
+    if (!stage) continue;
+    std::string text = read(path);
+    auto expectation = piglit_expectation(text);
+    if (!expectation) continue;
+    ++total;
+    bool expect_pass = *expectation == "pass";
+    FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string());
+    Verdict verdict = glslang_verdict(text, *stage);
+    bool glslang_ok = verdict == Verdict::accepted;
+    agree += ours.ok == expect_pass;
+    glslang_agree += glslang_ok == expect_pass;
+    if (expect_pass) {
+      ours.ok ? ++pass_pass : ++pass_fail;
+      if (!ours.ok) ours_rejects_valid.push_back(path.string() + ": " + ours.first_error);
+    } else {
+      ours.ok ? ++fail_pass : ++fail_fail;
+      if (verdict == Verdict::syntax_error) {
+        ++syntax_fail;
+        syntax_fail_rejected += !ours.ok;
+        if (ours.ok) syntax_missed.push_back(path.string());
+      }
+    }
+  }
+  auto pct = [&](int n) { return total ? 100.0 * n / total : 0.0; };
+  std::printf("piglit glslparsertest: %d shaders with expect_result\n", total);
+  std::printf("  syntax verdict agrees with expect_result: %d (%.2f%%)   [glslang, a full compiler: %d (%.2f%%)]\n",
+              agree, pct(agree), glslang_agree, pct(glslang_agree));
+  std::printf("  expect pass: we accept %d, we reject %d\n", pass_pass, pass_fail);
+  std::printf("  expect fail: we reject %d, we accept %d (errors beyond syntax: types, versions, semantics)\n",
+              fail_fail, fail_pass);
+  std::printf("  expect fail with a glslang *syntax error*: %d, of which we reject %d (%.2f%%)\n", syntax_fail,
+              syntax_fail_rejected, syntax_fail ? 100.0 * syntax_fail_rejected / syntax_fail : 0.0);
+  std::printf("expected to fail with a glslang syntax error but accepted by the front end (%zu):\n",
+              syntax_missed.size());
+  for (const std::string& f : syntax_missed) std::printf("  %s\n", f.c_str());
+  std::printf("expected to pass but rejected by the front end (%zu):\n", ours_rejects_valid.size());
+  for (const std::string& f : ours_rejects_valid) std::printf("  %s\n", f.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3 || (std::string(argv[1]) != "glslang" && std::string(argv[1]) != "piglit")) {
+    std::fprintf(stderr, "usage: %s glslang|piglit FILE|DIR|@LIST...\n", argv[0]);
+    return 2;
+  }
+  std::vector<std::filesystem::path> files;
+  for (int i = 2; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (!arg.empty() && arg[0] == '@') {  // @LIST: one path per line
+      std::ifstream list(arg.substr(1));
+      for (std::string line; std::getline(list, line);) {
+        if (!line.empty()) files.emplace_back(line);
+      }
+      continue;
+    }
+    std::filesystem::path p(arg);
+    if (std::filesystem::is_directory(p)) {
+      for (const auto& entry : std::filesystem::recursive_directory_iterator(p)) {
+        if (entry.is_regular_file()) files.push_back(entry.path());
+      }
+    } else {
+      files.push_back(p);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  glslang::InitializeProcess();
+  int rc = std::string(argv[1]) == "glslang" ? run_glslang_mode(files) : run_piglit_mode(files);
+  glslang::FinalizeProcess();
+  return rc;
+}

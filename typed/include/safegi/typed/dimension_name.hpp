@@ -1,0 +1,111 @@
+// Dimensions in words: "radiance" for a dimension of the vocabulary, otherwise the
+// canonical product of base powers, e.g. "energy*length^-1*time^-1". Used by compile
+// errors (as fixed_string template arguments g++ prints verbatim) and by reflection.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "safegi/typed/dimension.hpp"
+
+namespace safegi {
+
+/// Specialise to give a user dimension a name in diagnostics and reflection:
+///   template <> struct safegi::dimension_label<pixel_density> {
+///     static constexpr std::string_view name = "pixel_density"; };
+template <dimension_type D>
+struct dimension_label {};
+
+namespace detail {
+
+template <class D, fixed_string Name>
+struct named_dimension {};
+
+template <class... Entries>
+struct vocabulary_list {};
+
+// Several names for one dimension are all listed ("brdf or pdf_projected_solid_angle").
+using vocabulary = vocabulary_list<
+    named_dimension<dim::dimensionless, "dimensionless">, named_dimension<dim::length, "length">,
+    named_dimension<dim::time, "time">, named_dimension<dim::energy, "energy">,
+    named_dimension<dim::angle, "angle">, named_dimension<dim::solid_angle, "solid_angle">,
+    named_dimension<dim::proj, "proj">, named_dimension<dim::area, "area">,
+    named_dimension<dim::volume, "volume">, named_dimension<dim::power, "power">,
+    named_dimension<dim::intensity, "intensity">, named_dimension<dim::irradiance, "irradiance">,
+    named_dimension<dim::radiance, "radiance">,
+    named_dimension<dim::projected_solid_angle, "projected_solid_angle">,
+    named_dimension<dim::brdf, "brdf">,
+    named_dimension<dim::pdf_projected_solid_angle, "pdf_projected_solid_angle">,
+    named_dimension<dim::pdf_solid_angle, "pdf_solid_angle">, named_dimension<dim::pdf_area, "pdf_area">,
+    named_dimension<dim::pdf_length, "pdf_length">>;
+
+template <class D, class Entry>
+constexpr void append_if_named(text_buffer&, Entry) {}
+template <class D, fixed_string Name>
+constexpr void append_if_named(text_buffer& names, named_dimension<D, Name>) {
+  if (!names.empty()) names += " or ";
+  names += Name.view();
+}
+
+template <class D, class... Entries>
+constexpr text_buffer vocabulary_names(vocabulary_list<Entries...>) {
+  text_buffer names;
+  (append_if_named<D>(names, Entries{}), ...);
+  return names;
+}
+
+template <class Term>
+constexpr void append_base_power(text_buffer& text) {
+  if (!text.empty()) text += "*";
+  text += Term::base::name.view();
+  if (Term::exponent != 1) (text += "^") += Term::exponent;
+}
+
+template <class... Terms>
+constexpr text_buffer formula(dimension<Terms...>) {
+  text_buffer text;
+  (append_base_power<Terms>(text), ...);
+  if (text.empty()) text += "dimensionless";
+  return text;
+}
+
+template <dimension_type D>
+constexpr text_buffer name() {
+  if constexpr (requires { dimension_label<D>::name; }) {
+    text_buffer text;
+    text += dimension_label<D>::name;
+    return text;
+  } else {
+    text_buffer names = vocabulary_names<D>(vocabulary{});
+    return names.empty() ? formula(D{}) : names;
+  }
+}
+
+template <dimension_type D>
+inline constexpr auto frozen_formula = freeze([] { return formula(D{}); });
+template <dimension_type D>
+inline constexpr auto frozen_name = freeze([] { return name<D>(); });
+
+}  // namespace detail
+
+/// The canonical product of base powers ("energy*length^-2*time^-1"); "dimensionless" if empty.
+template <dimension_type D>
+constexpr std::string_view dimension_formula() {
+  return detail::frozen_formula<D>.view();
+}
+
+/// The dimension's name: a user label, else the vocabulary name(s), else its formula.
+template <dimension_type D>
+constexpr std::string_view dimension_name() {
+  return detail::frozen_name<D>.view();
+}
+
+/// dimension_formula<D>() as a fixed_string, for compile-time diagnostics.
+template <dimension_type D>
+inline constexpr auto formula_text = detail::frozen_formula<D>;
+
+/// dimension_name<D>() as a fixed_string, for compile-time diagnostics.
+template <dimension_type D>
+inline constexpr auto dimension_text = detail::frozen_name<D>;
+
+}  // namespace safegi

@@ -1,0 +1,73 @@
+// A string usable as a template argument. Base dimensions and spaces are named with
+// one, and g++ prints its text verbatim in diagnostics (safegi::fixed_string<9>{"radiance"}),
+// which is how compile errors come to name dimensions and spaces in words.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace safegi {
+
+template <std::size_t N>
+struct fixed_string {
+  char text[N]{};  // the only member, so g++ prints the value as {"text"}
+
+  constexpr fixed_string() = default;
+  constexpr fixed_string(const char (&literal)[N]) {  // NOLINT: implicit on purpose
+    for (std::size_t i = 0; i < N; ++i) text[i] = literal[i];
+  }
+
+  [[nodiscard]] constexpr std::size_t size() const { return N - 1; }
+  [[nodiscard]] constexpr std::string_view view() const { return {text, N - 1}; }
+};
+
+template <std::size_t N>
+fixed_string(const char (&)[N]) -> fixed_string<N>;
+
+template <std::size_t N, std::size_t M>
+constexpr bool operator==(const fixed_string<N>& a, const fixed_string<M>& b) {
+  return a.view() == b.view();
+}
+
+namespace detail {
+/// A small constexpr string builder (g++ 12's constexpr std::string trips over its
+/// small-string buffer, so compile-time text is built here instead).
+struct text_buffer {
+  static constexpr std::size_t capacity = 512;
+  char chars[capacity]{};
+  std::size_t length = 0;
+
+  constexpr text_buffer& operator+=(std::string_view piece) {
+    for (char c : piece)
+      if (length + 1 < capacity) chars[length++] = c;
+    return *this;
+  }
+  constexpr text_buffer& operator+=(int value) {
+    char digits[16]{};
+    int count = 0;
+    long magnitude = value < 0 ? -static_cast<long>(value) : value;
+    do {
+      digits[count++] = static_cast<char>('0' + magnitude % 10);
+      magnitude /= 10;
+    } while (magnitude > 0);
+    if (value < 0) *this += "-";
+    while (count > 0) *this += std::string_view(&digits[--count], 1);
+    return *this;
+  }
+  [[nodiscard]] constexpr std::string_view view() const { return {chars, length}; }
+  [[nodiscard]] constexpr bool empty() const { return length == 0; }
+};
+
+/// Freezes the text of a constexpr text_buffer producer into a fixed_string.
+template <class Producer>
+constexpr auto freeze(Producer produce) {
+  constexpr std::size_t length = Producer{}().length;
+  fixed_string<length + 1> out{};
+  const text_buffer text = produce();
+  for (std::size_t i = 0; i < length; ++i) out.text[i] = text.chars[i];
+  return out;
+}
+}  // namespace detail
+
+}  // namespace safegi

@@ -1,0 +1,213 @@
+// map<A, B>: an affine transformation taking values in space A to space B, wrapping a
+// GLM matrix by composition. Its inverse is stored beside it (as in pbrt-v4), so
+// inverse() is free and normals, which transform by the inverse transpose, cost no
+// inversion either. Name maps after the spaces they connect: worldFromObject.
+//
+// projective_map<A, B> is a projective transformation (a perspective camera): applied
+// to a point it gives an hpoint<B>, never a point, so the divide by w stays explicit.
+#pragma once
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include "safegi/typed/space.hpp"
+
+namespace safegi {
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+namespace rules {
+template <class From, class To, class Argument>
+constexpr void applies_to() {
+  if constexpr (is_checked && !std::is_same_v<From, Argument>)
+    (void)sizeof(diagnose::map_applied_to_wrong_space<From::name, To::name, Argument::name>);
+}
+template <class OuterFrom, class OuterTo, class InnerFrom, class InnerTo>
+constexpr void spaces_meet() {
+  if constexpr (is_checked && !std::is_same_v<OuterFrom, InnerTo>)
+    (void)sizeof(diagnose::maps_do_not_meet<OuterFrom::name, OuterTo::name, InnerFrom::name, InnerTo::name>);
+}
+}  // namespace rules
+
+/// The matrix and its inverse; the part both kinds of map share.
+struct matrix_pair {
+  glm::mat4 forward{1.0f};
+  glm::mat4 inverse{1.0f};
+};
+
+/// outer ∘ inner: inner applies first.
+inline matrix_pair compose(const matrix_pair& outer, const matrix_pair& inner) {
+  return {outer.forward * inner.forward, inner.inverse * outer.inverse};
+}
+
+template <class A, class B>
+class basic_map {
+ public:
+  using from_space = A;
+  using to_space = B;
+
+  /// The identity.
+  constexpr basic_map() = default;
+  constexpr basic_map(detail::raw_tag, matrix_pair m) : m_(m) {}
+  /// A map between other spaces never converts; this only exists to say so in words.
+  template <class A2, class B2>
+    requires(!std::is_same_v<A2, A> || !std::is_same_v<B2, B>)
+  constexpr basic_map(const basic_map<A2, B2>& other) : m_(other.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::map_conversion<A2::name, B2::name, A::name, B::name>);
+  }
+
+  [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
+
+  static basic_map translation(basic_vector<B, detail::length_dimension> offset) {
+    return from_matrix(glm::translate(glm::mat4(1.0f), offset.raw_value()));
+  }
+  static basic_map scaling(float sx, float sy, float sz) {
+    return {detail::raw_tag{},
+            {glm::scale(glm::mat4(1.0f), glm::vec3(sx, sy, sz)),
+             glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / sx, 1.0f / sy, 1.0f / sz))}};
+  }
+  /// A rotation by `angle` about `axis` (right-handed).
+  static basic_map rotation(quantity<dim::angle> angle, basic_direction<A> axis) {
+    const glm::mat4 r = glm::rotate(glm::mat4(1.0f), float(raw(angle)), axis.raw_value());
+    return {detail::raw_tag{}, {r, glm::transpose(r)}};
+  }
+  /// A camera at `eye` looking at `target`; camera space as glm::lookAt (looking down -z).
+  template <class W>
+  static basic_map look_at(basic_point<W> eye, basic_point<W> target, basic_direction<W> up) {
+    rules::applies_to<A, B, W>();
+    const glm::mat4 view = glm::lookAt(eye.raw_value(), target.raw_value(), up.raw_value());
+    return {detail::raw_tag{}, {view, glm::inverse(view)}};
+  }
+  /// Any invertible affine matrix (the inverse is computed once here).
+  static basic_map from_matrix(const glm::mat4& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
+
+  // Application: each kind transforms as what it is.
+  template <class S>
+  constexpr basic_point<B> operator()(basic_point<S> p) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, glm::vec3(m_.forward * glm::vec4(p.raw_value(), 1.0f))};
+  }
+  template <class S, class D>
+  constexpr basic_vector<B, D> operator()(basic_vector<S, D> v) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, glm::mat3(m_.forward) * v.raw_value()};
+  }
+  /// Directions stay unit length (renormalised after non-rigid maps).
+  template <class S>
+  constexpr basic_direction<B> operator()(basic_direction<S> d) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, glm::normalize(glm::mat3(m_.forward) * d.raw_value())};
+  }
+  /// Normals transform by the inverse transpose, then are renormalised.
+  template <class S>
+  constexpr basic_normal<B> operator()(basic_normal<S> n) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, glm::normalize(glm::transpose(glm::mat3(m_.inverse)) * n.raw_value())};
+  }
+  template <class S>
+  constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, m_.forward * h.raw_value()};
+  }
+
+ private:
+  matrix_pair m_;
+};
+
+template <class A, class B>
+class basic_projective_map {
+ public:
+  using from_space = A;
+  using to_space = B;
+
+  constexpr basic_projective_map() = default;
+  constexpr basic_projective_map(detail::raw_tag, matrix_pair m) : m_(m) {}
+  [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
+
+  /// An OpenGL-style perspective projection (glm::perspective).
+  static basic_projective_map perspective(quantity<dim::angle> fov_y, float aspect, quantity<dim::length> near,
+                                          quantity<dim::length> far) {
+    const glm::mat4 p = glm::perspective(float(raw(fov_y)), aspect, float(raw(near)), float(raw(far)));
+    return {detail::raw_tag{}, {p, glm::inverse(p)}};
+  }
+  static basic_projective_map from_matrix(const glm::mat4& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
+
+  template <class S>
+  constexpr basic_hpoint<B> operator()(basic_point<S> p) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, m_.forward * glm::vec4(p.raw_value(), 1.0f)};
+  }
+  template <class S>
+  constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
+    rules::applies_to<A, B, S>();
+    return {detail::raw_tag{}, m_.forward * h.raw_value()};
+  }
+
+ private:
+  matrix_pair m_;
+};
+
+template <space_type A, space_type B>
+using map = basic_map<mode_space<A>, mode_space<B>>;
+template <space_type A, space_type B>
+using projective_map = basic_projective_map<mode_space<A>, mode_space<B>>;
+
+template <class A, class B>
+struct raw_access<basic_map<A, B>> {
+  using raw_type = matrix_pair;
+  static constexpr matrix_pair to(const basic_map<A, B>& m) { return m.raw_value(); }
+  static constexpr basic_map<A, B> from(matrix_pair m) { return {detail::raw_tag{}, m}; }
+};
+template <class A, class B>
+struct raw_access<basic_projective_map<A, B>> {
+  using raw_type = matrix_pair;
+  static constexpr matrix_pair to(const basic_projective_map<A, B>& m) { return m.raw_value(); }
+  static constexpr basic_projective_map<A, B> from(matrix_pair m) { return {detail::raw_tag{}, m}; }
+};
+
+/// The forward matrix, for uploading to a shader (glUniformMatrix4fv).
+template <class A, class B>
+constexpr glm::mat4 matrix(const basic_map<A, B>& m) {
+  return m.raw_value().forward;
+}
+template <class A, class B>
+constexpr glm::mat4 matrix(const basic_projective_map<A, B>& m) {
+  return m.raw_value().forward;
+}
+/// The 3x3 matrix that transforms normals (inverse transpose), for shaders.
+template <class A, class B>
+constexpr glm::mat3 normal_matrix(const basic_map<A, B>& m) {
+  return glm::transpose(glm::mat3(m.raw_value().inverse));
+}
+
+template <class A, class B>
+constexpr basic_map<B, A> inverse(const basic_map<A, B>& m) {
+  return {detail::raw_tag{}, {m.raw_value().inverse, m.raw_value().forward}};
+}
+template <class A, class B>
+constexpr basic_projective_map<B, A> inverse(const basic_projective_map<A, B>& m) {
+  return {detail::raw_tag{}, {m.raw_value().inverse, m.raw_value().forward}};
+}
+
+/// Composition where spaces meet: map<B, C> * map<A, B> is map<A, C> (apply the right one first).
+// (auto return types: the check runs as soon as the call is seen, so its error comes
+// before any error about what the caller does with the result.)
+template <class B, class C, class A, class B2>
+constexpr auto operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
+  rules::spaces_meet<B, C, A, B2>();
+  return basic_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
+}
+template <class B, class C, class A, class B2>
+constexpr auto operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
+  rules::spaces_meet<B, C, A, B2>();
+  return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
+}
+template <class B, class C, class A, class B2>
+constexpr auto operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
+  rules::spaces_meet<B, C, A, B2>();
+  return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
+}
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi

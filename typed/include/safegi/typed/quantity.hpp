@@ -1,0 +1,413 @@
+// quantity<D, T>: one T carrying the dimension D. Addition and comparison need equal
+// dimensions, multiplication and division combine them. A dimensionless quantity is
+// the plain number T itself, so it converts to and from float with no ceremony.
+//
+// Portable API (identical in the checked and the unchecked build): the alias
+// quantity<D, T>, the operators, the free functions below called as safegi::f(...),
+// raw / from_raw / dimension_cast, and safegi::zero.
+#pragma once
+
+#include <cmath>
+#include <compare>
+#include <concepts>
+#include <type_traits>
+
+#include "safegi/typed/config.hpp"
+#include "safegi/typed/diagnose.hpp"
+#include "safegi/typed/dimension.hpp"
+
+namespace safegi {
+
+template <class T>
+concept arithmetic = std::is_arithmetic_v<T>;
+
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+/// D in the checked build; every dimension collapses to dimensionless in the unchecked build.
+template <dimension_type D>
+using mode_dimension = std::conditional_t<is_checked, D, dim::dimensionless>;
+
+namespace detail {
+struct raw_tag {
+  explicit raw_tag() = default;
+};
+}  // namespace detail
+
+/// Zero of every dimension: `quantity<dim::radiance> L = safegi::zero;`, `if (pdf > safegi::zero)`.
+struct zero_t {
+  template <std::floating_point F>
+  constexpr operator F() const {  // NOLINT: implicit on purpose
+    return F(0);
+  }
+};
+inline constexpr zero_t zero{};
+
+template <std::floating_point F>
+constexpr bool operator==(F value, zero_t) {
+  return value == F(0);
+}
+template <std::floating_point F>
+constexpr std::partial_ordering operator<=>(F value, zero_t) {
+  return value <=> F(0);
+}
+
+/// The checked representation behind quantity<D, T> for a dimension other than
+/// dimensionless. Use the alias quantity<D, T> in code meant to build in both modes.
+template <dimension_type D, std::floating_point T = float>
+class basic_quantity {
+  static_assert(!std::is_same_v<D, dim::dimensionless>, "a dimensionless quantity is the plain number T");
+
+ public:
+  using dimension_type = D;
+  using rep = T;
+
+  constexpr basic_quantity() = default;
+  constexpr basic_quantity(zero_t) {}  // NOLINT: implicit, zero has every dimension
+  constexpr basic_quantity(detail::raw_tag, T value) : value_(value) {}
+
+  // Conversions that are always mistakes; they exist so the error names both sides.
+  template <class E>
+    requires(!std::is_same_v<E, D>)
+  constexpr basic_quantity(basic_quantity<E, T> other) : value_(other.raw_value()) {  // NOLINT
+    rules::convertible_dimension<E, D>();
+  }
+  template <arithmetic U>
+  constexpr basic_quantity(U number) : value_(T(number)) {  // NOLINT
+    rules::number_needs_dimensionless<"conversion", D>();
+  }
+
+  /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
+  [[nodiscard]] constexpr T raw_value() const { return value_; }
+
+  constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
+  constexpr basic_quantity operator+() const { return *this; }
+
+  template <class E>
+  constexpr basic_quantity& operator+=(basic_quantity<E, T> other) {
+    rules::same_dimension<"+=", D, E>();
+    value_ += other.raw_value();
+    return *this;
+  }
+  template <class E>
+  constexpr basic_quantity& operator-=(basic_quantity<E, T> other) {
+    rules::same_dimension<"-=", D, E>();
+    value_ -= other.raw_value();
+    return *this;
+  }
+  template <arithmetic U>
+  constexpr basic_quantity& operator*=(U factor) {
+    value_ *= T(factor);
+    return *this;
+  }
+  template <arithmetic U>
+  constexpr basic_quantity& operator/=(U divisor) {
+    value_ /= T(divisor);
+    return *this;
+  }
+
+ private:
+  T value_ = T(0);
+};
+
+namespace detail {
+template <dimension_type D, class T>
+struct checked_quantity {
+  using type = basic_quantity<D, T>;
+};
+template <class T>
+struct checked_quantity<dim::dimensionless, T> {
+  using type = T;
+};
+}  // namespace detail
+
+#if SAFEGI_TYPED_CHECKED
+template <dimension_type D, std::floating_point T = float>
+using quantity = typename detail::checked_quantity<D, T>::type;
+#else
+template <dimension_type D, std::floating_point T = float>
+using quantity = T;
+#endif
+
+// ---- what a quantity-like value is: a basic_quantity or a plain floating-point number
+
+template <class Q>
+struct quantity_traits {};
+template <std::floating_point T>
+struct quantity_traits<T> {
+  using dimension_type = dim::dimensionless;
+  using rep = T;
+};
+template <class D, class T>
+struct quantity_traits<basic_quantity<D, T>> {
+  using dimension_type = D;
+  using rep = T;
+};
+
+template <class Q>
+concept quantity_like = requires { typename quantity_traits<Q>::dimension_type; };
+
+template <quantity_like Q>
+using dimension_of = typename quantity_traits<Q>::dimension_type;
+template <quantity_like Q>
+using rep_of = typename quantity_traits<Q>::rep;
+
+/// Builds quantity<D, T> from a value in D's reference unit (internal building block).
+template <dimension_type D, std::floating_point T>
+constexpr quantity<D, T> make_quantity(T value) {
+  if constexpr (std::is_same_v<quantity<D, T>, T>)
+    return value;
+  else
+    return quantity<D, T>(detail::raw_tag{}, value);
+}
+
+// ---- leaving and entering the typed world: raw(x), from_raw<X>(r), dimension_cast<D>(x)
+
+/// Specialised by every typed kind: raw_type, to(x), from(raw).
+template <class X>
+struct raw_access {};
+
+template <std::floating_point T>
+struct raw_access<T> {
+  using raw_type = T;
+  static constexpr T to(T value) { return value; }
+  static constexpr T from(T value) { return value; }
+};
+template <class D, class T>
+struct raw_access<basic_quantity<D, T>> {
+  using raw_type = T;
+  static constexpr T to(basic_quantity<D, T> q) { return q.raw_value(); }
+  static constexpr basic_quantity<D, T> from(T value) { return {detail::raw_tag{}, value}; }
+};
+
+/// The plain representation of a typed value, in reference units (metre, second, ...).
+template <class X>
+constexpr auto raw(const X& x) -> decltype(raw_access<X>::to(x)) {
+  return raw_access<X>::to(x);
+}
+
+/// A typed value from its plain representation, in reference units: from_raw<point<world>>(v).
+template <class X>
+constexpr X from_raw(typename raw_access<X>::raw_type value) {
+  return raw_access<X>::from(value);
+}
+
+/// The explicit escape hatch: the same number, now claimed to have dimension D.
+template <dimension_type D, quantity_like Q>
+constexpr quantity<D, rep_of<Q>> dimension_cast(Q q) {
+  return make_quantity<D, rep_of<Q>>(raw(q));
+}
+
+// ---- operators (only basic_quantity needs them; plain numbers have their own)
+
+template <class D, class E, class T>
+constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class D, class E, class T>
+constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+template <class D, class E, class T>
+constexpr bool operator==(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  rules::same_dimension<"==", D, E>();
+  return a.raw_value() == b.raw_value();
+}
+template <class D, class E, class T>
+constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  rules::same_dimension<"<=>", D, E>();
+  return a.raw_value() <=> b.raw_value();
+}
+
+template <class D, class T>
+constexpr bool operator==(basic_quantity<D, T> a, zero_t) {
+  return a.raw_value() == T(0);
+}
+template <class D, class T>
+constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, zero_t) {
+  return a.raw_value() <=> T(0);
+}
+
+// A plain number next to a dimensioned quantity in + - == < ... is a mistake; these
+// overloads exist to say so in words (see diagnose.hpp).
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, U) {
+  rules::number_needs_dimensionless<"+", D>();
+  return a;
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator+(U, basic_quantity<D, T> b) {
+  rules::number_needs_dimensionless<"+", D>();
+  return b;
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, U) {
+  rules::number_needs_dimensionless<"-", D>();
+  return a;
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator-(U, basic_quantity<D, T> b) {
+  rules::number_needs_dimensionless<"-", D>();
+  return b;
+}
+template <class D, class T, arithmetic U>
+constexpr bool operator==(basic_quantity<D, T>, U) {
+  rules::number_needs_dimensionless<"==", D>();
+  return false;
+}
+template <class D, class T, arithmetic U>
+constexpr std::partial_ordering operator<=>(basic_quantity<D, T>, U) {
+  rules::number_needs_dimensionless<"<=>", D>();
+  return std::partial_ordering::unordered;
+}
+
+template <class D, class E, class T>
+constexpr quantity<dim::product<D, E>, T> operator*(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  return make_quantity<dim::product<D, E>, T>(a.raw_value() * b.raw_value());
+}
+template <class D, class E, class T>
+constexpr quantity<dim::quotient<D, E>, T> operator/(basic_quantity<D, T> a, basic_quantity<E, T> b) {
+  return make_quantity<dim::quotient<D, E>, T>(a.raw_value() / b.raw_value());
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator*(basic_quantity<D, T> a, U factor) {
+  return {detail::raw_tag{}, a.raw_value() * T(factor)};
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator*(U factor, basic_quantity<D, T> a) {
+  return {detail::raw_tag{}, T(factor) * a.raw_value()};
+}
+template <class D, class T, arithmetic U>
+constexpr basic_quantity<D, T> operator/(basic_quantity<D, T> a, U divisor) {
+  return {detail::raw_tag{}, a.raw_value() / T(divisor)};
+}
+template <class D, class T, arithmetic U>
+constexpr quantity<dim::inverse<D>, T> operator/(U numerator, basic_quantity<D, T> a) {
+  return make_quantity<dim::inverse<D>, T>(T(numerator) / a.raw_value());
+}
+
+// ---- functions of quantities; each works on plain numbers too, so call them as
+// safegi::sqrt(x) in code that must also build unchecked.
+
+namespace detail {
+template <quantity_like Q>
+constexpr Q same_kind(rep_of<Q> value) {
+  return make_quantity<dimension_of<Q>, rep_of<Q>>(value);
+}
+}  // namespace detail
+
+template <quantity_like Q>
+constexpr Q abs(Q q) {
+  return detail::same_kind<Q>(std::abs(raw(q)));
+}
+
+template <quantity_like Q, quantity_like R>
+constexpr Q min(Q a, R b) {
+  rules::same_dimension<"min", dimension_of<Q>, dimension_of<R>>();
+  return raw(b) < raw(a) ? detail::same_kind<Q>(raw(b)) : a;
+}
+template <quantity_like Q, quantity_like R>
+constexpr Q max(Q a, R b) {
+  rules::same_dimension<"max", dimension_of<Q>, dimension_of<R>>();
+  return raw(a) < raw(b) ? detail::same_kind<Q>(raw(b)) : a;
+}
+template <quantity_like Q, quantity_like L, quantity_like H>
+constexpr Q clamp(Q q, L low, H high) {
+  rules::same_dimension<"clamp", dimension_of<Q>, dimension_of<L>>();
+  rules::same_dimension<"clamp", dimension_of<Q>, dimension_of<H>>();
+  return detail::same_kind<Q>(raw(q) < raw(low) ? raw(low) : (raw(high) < raw(q) ? raw(high) : raw(q)));
+}
+/// a + t (b - a), like std::lerp; t is a plain number.
+template <quantity_like Q, quantity_like R>
+constexpr Q lerp(Q a, R b, rep_of<Q> t) {
+  rules::same_dimension<"lerp", dimension_of<Q>, dimension_of<R>>();
+  return detail::same_kind<Q>((rep_of<Q>(1) - t) * raw(a) + t * raw(b));
+}
+
+template <quantity_like Q>
+constexpr quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>> sqrt(Q q) {
+  rules::even_exponents<dimension_of<Q>>();
+  return make_quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>>(std::sqrt(raw(q)));
+}
+/// sqrt(max(q, 0)): pbrt's SafeSqrt, for values that rounding can push below zero.
+template <quantity_like Q>
+constexpr quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>> safe_sqrt(Q q) {
+  rules::even_exponents<dimension_of<Q>>();
+  const rep_of<Q> value = raw(q);
+  return make_quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>>(std::sqrt(value > 0 ? value : 0));
+}
+
+template <int N, quantity_like Q>
+constexpr quantity<dim::pow<dimension_of<Q>, N>, rep_of<Q>> pow(Q q) {
+  rep_of<Q> result(1);
+  for (int i = 0; i < (N < 0 ? -N : N); ++i) result *= raw(q);
+  return make_quantity<dim::pow<dimension_of<Q>, N>, rep_of<Q>>(N < 0 ? rep_of<Q>(1) / result : result);
+}
+/// A real exponent needs a dimensionless base.
+template <quantity_like Q>
+constexpr rep_of<Q> pow(Q base, rep_of<Q> exponent) {
+  rules::dimensionless<"pow", dimension_of<Q>>();
+  return std::pow(raw(base), exponent);
+}
+
+template <quantity_like Q>
+constexpr rep_of<Q> sin(Q angle) {
+  rules::angle<"sin", dimension_of<Q>>();
+  return std::sin(raw(angle));
+}
+template <quantity_like Q>
+constexpr rep_of<Q> cos(Q angle) {
+  rules::angle<"cos", dimension_of<Q>>();
+  return std::cos(raw(angle));
+}
+template <quantity_like Q>
+constexpr rep_of<Q> tan(Q angle) {
+  rules::angle<"tan", dimension_of<Q>>();
+  return std::tan(raw(angle));
+}
+template <quantity_like Q>
+constexpr quantity<dim::angle, rep_of<Q>> asin(Q ratio) {
+  rules::dimensionless<"asin", dimension_of<Q>>();
+  return make_quantity<dim::angle, rep_of<Q>>(std::asin(raw(ratio)));
+}
+template <quantity_like Q>
+constexpr quantity<dim::angle, rep_of<Q>> acos(Q ratio) {
+  rules::dimensionless<"acos", dimension_of<Q>>();
+  return make_quantity<dim::angle, rep_of<Q>>(std::acos(raw(ratio)));
+}
+template <quantity_like Q>
+constexpr quantity<dim::angle, rep_of<Q>> atan(Q ratio) {
+  rules::dimensionless<"atan", dimension_of<Q>>();
+  return make_quantity<dim::angle, rep_of<Q>>(std::atan(raw(ratio)));
+}
+/// The angle of (x, y); x and y may have any dimension, but the same one.
+template <quantity_like Q, quantity_like R>
+constexpr quantity<dim::angle, rep_of<Q>> atan2(Q y, R x) {
+  rules::same_dimension<"atan2", dimension_of<Q>, dimension_of<R>>();
+  return make_quantity<dim::angle, rep_of<Q>>(std::atan2(raw(y), raw(x)));
+}
+template <quantity_like Q>
+constexpr rep_of<Q> exp(Q exponent) {
+  rules::dimensionless<"exp", dimension_of<Q>>();
+  return std::exp(raw(exponent));
+}
+template <quantity_like Q>
+constexpr rep_of<Q> log(Q argument) {
+  rules::dimensionless<"log", dimension_of<Q>>();
+  return std::log(raw(argument));
+}
+template <quantity_like Q>
+constexpr bool isfinite(Q q) {
+  return std::isfinite(raw(q));
+}
+template <quantity_like Q>
+constexpr bool isnan(Q q) {
+  return std::isnan(raw(q));
+}
+
+/// π as a plain number (an angle is `pi * units::radian`).
+inline constexpr float pi = 3.14159265358979323846f;
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi

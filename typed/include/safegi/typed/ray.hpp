@@ -1,0 +1,40 @@
+// ray<S>: an origin and a unit direction in one space; r(t) is the point at distance t.
+#pragma once
+
+#include "safegi/typed/map.hpp"
+#include "safegi/typed/space.hpp"
+
+namespace safegi {
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+template <class S>
+struct basic_ray {
+  using space_type = S;
+  basic_point<S> o;
+  basic_direction<S> d;
+
+  constexpr basic_ray() = default;
+  constexpr basic_ray(basic_point<S> origin, basic_direction<S> dir) : o(origin), d(dir) {}
+  /// A ray of another space never converts; this only exists to say so in words.
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_ray(const basic_ray<S2>& other) : o(detail::raw_tag{}, raw(other.o)), d(detail::raw_tag{}, raw(other.d)) {
+    rules::convertible_space<"ray", S2, S>();
+  }
+
+  /// The point at distance t along the ray.
+  constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
+};
+
+template <space_type S>
+using ray = basic_ray<mode_space<S>>;
+
+/// A ray moves to another space by moving its origin and its direction.
+template <class A, class B, class S>
+constexpr auto transform(const basic_map<A, B>& m, const basic_ray<S>& r) {  // auto: see map.hpp's operator*
+  rules::applies_to<A, B, S>();
+  return basic_ray<B>{m(r.o), m(r.d)};
+}
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi

@@ -1,0 +1,552 @@
+// Coordinate spaces and the geometric kinds that live in them.
+//
+// A space is a tag type declared in one line:
+//   struct world : safegi::space_tag<"world"> {};      or   SAFEGI_SPACE(world);
+// point<S> (a position), vector<S, D = dim::length> (a displacement, or any vector with
+// dimension D), direction<S> (unit length, dimensionless), normal<S> (unit length,
+// transformed by the inverse transpose) and hpoint<S> (homogeneous, from projective maps).
+//
+// Affine rules: point - point = vector, point ± vector = point, point + point is an
+// error; every binary operation needs both operands in one space.
+//
+// Result dimensions of products (documented in docs/typed/reference.md):
+//   dot(vector<S,D>, vector<S,E>) = quantity<D·E>        e.g. vector·vector = area
+//   dot(direction, direction)     = dimensionless        (a cosine between directions)
+//   dot(normal, direction)        = quantity<dim::proj>  (the rendering equation's cosine)
+//   dot(normal, normal)           = dimensionless
+//   dot(direction|normal, vector<S,D>) = quantity<D>     (the component along the unit vector)
+//   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
+#pragma once
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "safegi/typed/quantity.hpp"
+
+namespace safegi {
+
+template <fixed_string Name>
+struct space_tag {
+  static constexpr auto name = Name;
+};
+
+template <class S>
+concept space_type = requires {
+  S::name;
+  requires std::is_base_of_v<space_tag<S::name>, S>;
+};
+
+/// Spaces most renderers need; declare your own the same way.
+namespace spaces {
+struct world : space_tag<"world"> {};
+struct object : space_tag<"object"> {};
+struct camera : space_tag<"camera"> {};
+struct light : space_tag<"light"> {};
+/// The local shading frame: the surface normal is +z.
+struct shading : space_tag<"shading"> {};
+struct clip : space_tag<"clip"> {};
+struct ndc : space_tag<"ndc"> {};
+struct raster : space_tag<"raster"> {};
+}  // namespace spaces
+
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+/// The one space of the unchecked build.
+struct any_space : space_tag<"unchecked"> {};
+
+/// S in the checked build; every space collapses to any_space in the unchecked build.
+template <class S>
+using mode_space = std::conditional_t<is_checked, S, any_space>;
+
+template <class S>
+class basic_point;
+template <class S, class D>
+class basic_vector;
+template <class S>
+class basic_direction;
+template <class S>
+class basic_normal;
+template <class S>
+class basic_hpoint;
+
+template <space_type S>
+using point = basic_point<mode_space<S>>;
+template <space_type S, dimension_type D = dim::length>
+using vector = basic_vector<mode_space<S>, mode_dimension<D>>;
+template <space_type S>
+using direction = basic_direction<mode_space<S>>;
+template <space_type S>
+using normal = basic_normal<mode_space<S>>;
+template <space_type S>
+using hpoint = basic_hpoint<mode_space<S>>;
+
+namespace detail {
+/// The length dimension as the current mode sees it.
+using length_dimension = mode_dimension<dim::length>;
+template <class S>
+using displacement = basic_vector<S, length_dimension>;
+
+template <dimension_type D>
+constexpr quantity<D> component(float value) {
+  return make_quantity<mode_dimension<D>, float>(value);
+}
+
+/// The storage and raw access every three-component kind shares.
+template <class Derived>
+class vec3_storage {
+ public:
+  [[nodiscard]] constexpr glm::vec3 raw_value() const { return xyz_; }
+
+ protected:
+  constexpr vec3_storage() = default;
+  constexpr explicit vec3_storage(glm::vec3 xyz) : xyz_(xyz) {}
+  glm::vec3 xyz_{0.0f};
+};
+}  // namespace detail
+
+template <class S>
+class basic_point : public detail::vec3_storage<basic_point<S>> {
+  using base = detail::vec3_storage<basic_point<S>>;
+
+ public:
+  using space_type = S;
+  constexpr basic_point() = default;
+  constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
+      : base(glm::vec3(raw(x), raw(y), raw(z))) {}
+  constexpr basic_point(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  // Conversions that are always mistakes; they exist so the error names both sides.
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_point(basic_point<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"point", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_point(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "vector", S2::name>);
+  }
+  template <class S2>
+  constexpr basic_point(basic_hpoint<S2> h) : base(glm::vec3(h.raw_value())) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"point", "hpoint", S2::name>);
+  }
+
+  [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
+  [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
+  [[nodiscard]] constexpr quantity<dim::length> z() const { return detail::component<dim::length>(this->xyz_.z); }
+  /// Component i (0, 1, 2), e.g. the split axis of a BVH.
+  [[nodiscard]] constexpr quantity<dim::length> operator[](int i) const {
+    return detail::component<dim::length>(this->xyz_[i]);
+  }
+};
+
+template <class S, class D>
+class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
+  using base = detail::vec3_storage<basic_vector<S, D>>;
+
+ public:
+  using space_type = S;
+  using dimension_type = D;
+  constexpr basic_vector() = default;
+  constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(glm::vec3(raw(x), raw(y), raw(z))) {}
+  constexpr basic_vector(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2, class E>
+    requires(!std::is_same_v<S2, S> || !std::is_same_v<E, D>)
+  constexpr basic_vector(basic_vector<S2, E> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"vector", S2, S>();
+    rules::convertible_dimension<E, D>();
+  }
+
+  [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
+  [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
+  [[nodiscard]] constexpr quantity<D> z() const { return detail::component<D>(this->xyz_.z); }
+  [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
+
+  constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+  template <class S2, class E>
+  constexpr basic_vector& operator+=(basic_vector<S2, E> other) {
+    rules::same_space<"+=", S, S2>();
+    rules::same_dimension<"+=", D, E>();
+    this->xyz_ += other.raw_value();
+    return *this;
+  }
+  template <class S2, class E>
+  constexpr basic_vector& operator-=(basic_vector<S2, E> other) {
+    rules::same_space<"-=", S, S2>();
+    rules::same_dimension<"-=", D, E>();
+    this->xyz_ -= other.raw_value();
+    return *this;
+  }
+  template <arithmetic U>
+  constexpr basic_vector& operator*=(U factor) {
+    this->xyz_ *= float(factor);
+    return *this;
+  }
+  template <arithmetic U>
+  constexpr basic_vector& operator/=(U divisor) {
+    this->xyz_ /= float(divisor);
+    return *this;
+  }
+};
+
+template <class S>
+class basic_direction : public detail::vec3_storage<basic_direction<S>> {
+  using base = detail::vec3_storage<basic_direction<S>>;
+
+ public:
+  using space_type = S;
+  constexpr basic_direction() : base(glm::vec3(0.0f, 0.0f, 1.0f)) {}
+  /// Components of a unit vector (not renormalised; use normalize(vector) otherwise).
+  constexpr explicit basic_direction(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
+  constexpr basic_direction(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_direction(basic_direction<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"direction", S2, S>();
+  }
+  template <class S2, class D>
+  constexpr basic_direction(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "vector (use normalize)", S2::name>);
+  }
+  /// A normal is not a direction: this only exists to say so in words.
+  template <class S2>
+  constexpr basic_direction(basic_normal<S2>) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "normal", S2::name>);
+  }
+
+  [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
+  constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+};
+
+template <class S>
+class basic_normal : public detail::vec3_storage<basic_normal<S>> {
+  using base = detail::vec3_storage<basic_normal<S>>;
+
+ public:
+  using space_type = S;
+  constexpr basic_normal() : base(glm::vec3(0.0f, 0.0f, 1.0f)) {}
+  /// Components of a unit normal (not renormalised).
+  constexpr explicit basic_normal(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
+  constexpr basic_normal(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  template <class S2>
+    requires(!std::is_same_v<S2, S>)
+  constexpr basic_normal(basic_normal<S2> other) : base(other.raw_value()) {  // NOLINT
+    rules::convertible_space<"normal", S2, S>();
+  }
+  /// A direction is not a normal: this only exists to say so in words.
+  template <class S2>
+  constexpr basic_normal(basic_direction<S2>) {  // NOLINT
+    (void)sizeof(diagnose::wrong_geometric_kind<"normal", "direction", S2::name>);
+  }
+
+  [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
+  constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+};
+
+template <class S>
+class basic_hpoint {
+ public:
+  using space_type = S;
+  constexpr basic_hpoint() = default;
+  constexpr explicit basic_hpoint(float x, float y, float z, float w) : xyzw_(x, y, z, w) {}
+  constexpr basic_hpoint(detail::raw_tag, glm::vec4 xyzw) : xyzw_(xyzw) {}
+  [[nodiscard]] constexpr glm::vec4 raw_value() const { return xyzw_; }
+  [[nodiscard]] constexpr float x() const { return xyzw_.x; }
+  [[nodiscard]] constexpr float y() const { return xyzw_.y; }
+  [[nodiscard]] constexpr float z() const { return xyzw_.z; }
+  [[nodiscard]] constexpr float w() const { return xyzw_.w; }
+
+ private:
+  glm::vec4 xyzw_{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+// ---- raw access
+
+namespace detail {
+template <class X, class Raw>
+struct raw_access_by_member {
+  using raw_type = Raw;
+  static constexpr Raw to(const X& x) { return x.raw_value(); }
+  static constexpr X from(Raw value) { return X(raw_tag{}, value); }
+};
+}  // namespace detail
+template <class S>
+struct raw_access<basic_point<S>> : detail::raw_access_by_member<basic_point<S>, glm::vec3> {};
+template <class S, class D>
+struct raw_access<basic_vector<S, D>> : detail::raw_access_by_member<basic_vector<S, D>, glm::vec3> {};
+template <class S>
+struct raw_access<basic_direction<S>> : detail::raw_access_by_member<basic_direction<S>, glm::vec3> {};
+template <class S>
+struct raw_access<basic_normal<S>> : detail::raw_access_by_member<basic_normal<S>, glm::vec3> {};
+template <class S>
+struct raw_access<basic_hpoint<S>> : detail::raw_access_by_member<basic_hpoint<S>, glm::vec4> {};
+
+// ---- affine arithmetic
+
+template <class S, class S2>
+constexpr detail::displacement<S> operator-(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"-", S, S2>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+template <class S, class S2, class D>
+constexpr basic_point<S> operator+(basic_point<S> p, basic_vector<S2, D> v) {
+  rules::same_space<"+", S, S2>();
+  rules::same_dimension<"+", detail::length_dimension, D>();
+  return {detail::raw_tag{}, p.raw_value() + v.raw_value()};
+}
+template <class S, class S2, class D>
+constexpr basic_point<S> operator+(basic_vector<S2, D> v, basic_point<S> p) {
+  return p + v;
+}
+template <class S, class S2, class D>
+constexpr basic_point<S> operator-(basic_point<S> p, basic_vector<S2, D> v) {
+  rules::same_space<"-", S, S2>();
+  rules::same_dimension<"-", detail::length_dimension, D>();
+  return {detail::raw_tag{}, p.raw_value() - v.raw_value()};
+}
+template <class S, class S2>
+constexpr basic_point<S> operator+(basic_point<S> a, basic_point<S2>) {
+  (void)sizeof(diagnose::cannot_add_points<S::name>);
+  return a;
+}
+template <class S, class S2>
+constexpr bool operator==(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"==", S, S2>();
+  return a.raw_value() == b.raw_value();
+}
+
+template <class S, class S2, class D, class E>
+constexpr basic_vector<S, D> operator+(basic_vector<S, D> a, basic_vector<S2, E> b) {
+  rules::same_space<"+", S, S2>();
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class S, class S2, class D, class E>
+constexpr basic_vector<S, D> operator-(basic_vector<S, D> a, basic_vector<S2, E> b) {
+  rules::same_space<"-", S, S2>();
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+template <class S, class S2, class D, class E>
+constexpr bool operator==(basic_vector<S, D> a, basic_vector<S2, E> b) {
+  rules::same_space<"==", S, S2>();
+  rules::same_dimension<"==", D, E>();
+  return a.raw_value() == b.raw_value();
+}
+template <class S, class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(basic_vector<S, D> v, Q factor) {
+  using F = std::conditional_t<quantity_like<Q>, Q, float>;
+  return basic_vector<S, dim::product<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() * float(raw(F(factor))));
+}
+template <class S, class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(Q factor, basic_vector<S, D> v) {
+  return v * factor;
+}
+template <class S, class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator/(basic_vector<S, D> v, Q divisor) {
+  using F = std::conditional_t<quantity_like<Q>, Q, float>;
+  return basic_vector<S, dim::quotient<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() / float(raw(F(divisor))));
+}
+
+/// A unit vector scaled by a quantity: direction * (2.0f * units::metre) is a displacement.
+template <class S, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(basic_direction<S> d, Q length) {
+  using F = std::conditional_t<quantity_like<Q>, Q, float>;
+  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, d.raw_value() * float(raw(F(length))));
+}
+template <class S, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(Q length, basic_direction<S> d) {
+  return d * length;
+}
+template <class S, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(basic_normal<S> n, Q length) {
+  using F = std::conditional_t<quantity_like<Q>, Q, float>;
+  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, n.raw_value() * float(raw(F(length))));
+}
+template <class S, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(Q length, basic_normal<S> n) {
+  return n * length;
+}
+/// The sum of two directions (e.g. the half vector wo + wi) is a dimensionless vector.
+template <class S, class S2>
+constexpr basic_vector<S, dim::dimensionless> operator+(basic_direction<S> a, basic_direction<S2> b) {
+  rules::same_space<"+", S, S2>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class S, class S2>
+constexpr basic_vector<S, dim::dimensionless> operator-(basic_direction<S> a, basic_direction<S2> b) {
+  rules::same_space<"-", S, S2>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+template <class S, class S2>
+constexpr bool operator==(basic_direction<S> a, basic_direction<S2> b) {
+  rules::same_space<"==", S, S2>();
+  return a.raw_value() == b.raw_value();
+}
+template <class S, class S2>
+constexpr bool operator==(basic_normal<S> a, basic_normal<S2> b) {
+  rules::same_space<"==", S, S2>();
+  return a.raw_value() == b.raw_value();
+}
+
+// ---- products
+
+template <class S, class S2, class D, class E>
+constexpr quantity<dim::product<D, E>> dot(basic_vector<S, D> a, basic_vector<S2, E> b) {
+  rules::same_space<"dot", S, S2>();
+  return make_quantity<dim::product<D, E>, float>(glm::dot(a.raw_value(), b.raw_value()));
+}
+template <class S, class S2, class D, class E>
+constexpr basic_vector<S, dim::product<D, E>> cross(basic_vector<S, D> a, basic_vector<S2, E> b) {
+  rules::same_space<"cross", S, S2>();
+  return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
+}
+template <class S, class S2>
+constexpr float dot(basic_direction<S> a, basic_direction<S2> b) {
+  rules::same_space<"dot", S, S2>();
+  return glm::dot(a.raw_value(), b.raw_value());
+}
+template <class S, class S2>
+constexpr basic_vector<S, dim::dimensionless> cross(basic_direction<S> a, basic_direction<S2> b) {
+  rules::same_space<"cross", S, S2>();
+  return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
+}
+/// The projected-cosine factor n·ω: the only way to get a quantity<dim::proj>.
+template <class S, class S2>
+constexpr quantity<dim::proj> dot(basic_normal<S> n, basic_direction<S2> w) {
+  rules::same_space<"dot", S, S2>();
+  return make_quantity<mode_dimension<dim::proj>, float>(glm::dot(n.raw_value(), w.raw_value()));
+}
+template <class S, class S2>
+constexpr quantity<dim::proj> dot(basic_direction<S> w, basic_normal<S2> n) {
+  return dot(n, w);
+}
+/// |n·ω|, for two-sided surfaces.
+template <class S, class S2>
+constexpr quantity<dim::proj> abs_dot(basic_normal<S> n, basic_direction<S2> w) {
+  return safegi::abs(dot(n, w));
+}
+template <class S, class S2>
+constexpr float dot(basic_normal<S> a, basic_normal<S2> b) {
+  rules::same_space<"dot", S, S2>();
+  return glm::dot(a.raw_value(), b.raw_value());
+}
+template <class S, class S2, class D>
+constexpr quantity<D> dot(basic_direction<S> u, basic_vector<S2, D> v) {
+  rules::same_space<"dot", S, S2>();
+  return make_quantity<D, float>(glm::dot(u.raw_value(), v.raw_value()));
+}
+template <class S, class S2, class D>
+constexpr quantity<D> dot(basic_vector<S2, D> v, basic_direction<S> u) {
+  return dot(u, v);
+}
+template <class S, class S2, class D>
+constexpr quantity<D> dot(basic_normal<S> n, basic_vector<S2, D> v) {
+  rules::same_space<"dot", S, S2>();
+  return make_quantity<D, float>(glm::dot(n.raw_value(), v.raw_value()));
+}
+template <class S, class S2, class D>
+constexpr quantity<D> dot(basic_vector<S2, D> v, basic_normal<S> n) {
+  return dot(n, v);
+}
+
+// ---- lengths, normalisation, conversions between kinds
+
+template <class S, class D>
+constexpr quantity<D> length(basic_vector<S, D> v) {
+  return make_quantity<D, float>(glm::length(v.raw_value()));
+}
+template <class S, class D>
+constexpr quantity<dim::pow<D, 2>> length_squared(basic_vector<S, D> v) {
+  return make_quantity<dim::pow<D, 2>, float>(glm::dot(v.raw_value(), v.raw_value()));
+}
+template <class S, class D>
+constexpr basic_direction<S> normalize(basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::normalize(v.raw_value())};
+}
+template <class S, class S2>
+constexpr quantity<dim::length> distance(basic_point<S> a, basic_point<S2> b) {
+  return length(a - b);
+}
+template <class S, class S2>
+constexpr quantity<dim::area> distance_squared(basic_point<S> a, basic_point<S2> b) {
+  return length_squared(a - b);
+}
+/// The point a + t (b - a).
+template <class S, class S2>
+constexpr basic_point<S> lerp(basic_point<S> a, basic_point<S2> b, float t) {
+  rules::same_space<"lerp", S, S2>();
+  return {detail::raw_tag{}, (1.0f - t) * a.raw_value() + t * b.raw_value()};
+}
+/// b0 p0 + b1 p1 + b2 p2 with b0 + b1 + b2 = 1 (a point on a triangle).
+template <class S, class S1, class S2>
+constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basic_point<S2> p2, float b0,
+                                     float b1, float b2) {
+  rules::same_space<"barycentric", S, S1>();
+  rules::same_space<"barycentric", S, S2>();
+  return {detail::raw_tag{}, b0 * p0.raw_value() + b1 * p1.raw_value() + b2 * p2.raw_value()};
+}
+/// Componentwise minimum and maximum of two points (bounding boxes).
+template <class S, class S2>
+constexpr basic_point<S> min(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"min", S, S2>();
+  return {detail::raw_tag{}, glm::min(a.raw_value(), b.raw_value())};
+}
+template <class S, class S2>
+constexpr basic_point<S> max(basic_point<S> a, basic_point<S2> b) {
+  rules::same_space<"max", S, S2>();
+  return {detail::raw_tag{}, glm::max(a.raw_value(), b.raw_value())};
+}
+/// Componentwise absolute value of a vector.
+template <class S, class D>
+constexpr basic_vector<S, D> abs(basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::abs(v.raw_value())};
+}
+
+/// The same unit vector, now transformed (and dotted) as a normal.
+template <class S>
+constexpr basic_normal<S> to_normal(basic_direction<S> d) {
+  return {detail::raw_tag{}, d.raw_value()};
+}
+/// The same unit vector, now transformed (and dotted) as a direction.
+template <class S>
+constexpr basic_direction<S> to_direction(basic_normal<S> n) {
+  return {detail::raw_tag{}, n.raw_value()};
+}
+/// n flipped into the hemisphere of w.
+template <class S, class S2>
+constexpr basic_normal<S> face_forward(basic_normal<S> n, basic_direction<S2> w) {
+  return dot(n, w) < zero ? -n : n;
+}
+/// The mirror direction of w about n (both pointing away from the surface).
+template <class S, class S2>
+constexpr basic_direction<S> reflect(basic_direction<S> w, basic_normal<S2> n) {
+  rules::same_space<"reflect", S, S2>();
+  return {detail::raw_tag{}, -w.raw_value() + 2.0f * glm::dot(w.raw_value(), n.raw_value()) * n.raw_value()};
+}
+/// The point an hpoint stands for (divides by w).
+template <class S>
+constexpr basic_point<S> dehomogenize(basic_hpoint<S> h) {
+  const glm::vec4 v = h.raw_value();
+  return {detail::raw_tag{}, glm::vec3(v) / v.w};
+}
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi
+
+/// Declares a coordinate space in one line: SAFEGI_SPACE(world);
+#define SAFEGI_SPACE(name) \
+  struct name : ::safegi::space_tag<#name> {}

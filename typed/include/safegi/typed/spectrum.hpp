@@ -1,0 +1,192 @@
+// spectrum<D>: an RGB triple with one dimension D for all three channels. It follows
+// the quantity rules: + - == need equal dimensions, * / combine them (per channel
+// with another spectrum, uniformly with a quantity).
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/exponential.hpp>
+
+#include "safegi/typed/quantity.hpp"
+#include "safegi/typed/units.hpp"
+
+namespace safegi {
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+template <class D>
+class basic_spectrum {
+ public:
+  using dimension_type = D;
+
+  /// Black.
+  constexpr basic_spectrum() = default;
+  constexpr basic_spectrum(zero_t) {}  // NOLINT: implicit, zero has every dimension
+  constexpr basic_spectrum(quantity<D> r, quantity<D> g, quantity<D> b) : rgb_(raw(r), raw(g), raw(b)) {}
+  /// The same value in every channel.
+  constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
+  constexpr basic_spectrum(detail::raw_tag, glm::vec3 rgb) : rgb_(rgb) {}
+  /// Converting between dimensions is always a mistake; this only exists to say so in words.
+  template <class E>
+    requires(!std::is_same_v<E, D>)
+  constexpr basic_spectrum(basic_spectrum<E> other) : rgb_(other.raw_value()) {  // NOLINT
+    rules::convertible_dimension<E, D>();
+  }
+
+  [[nodiscard]] constexpr glm::vec3 raw_value() const { return rgb_; }
+  [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, float>(rgb_.r); }
+  [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, float>(rgb_.g); }
+  [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, float>(rgb_.b); }
+  [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, float>(rgb_[channel]); }
+
+  constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
+  template <class E>
+  constexpr basic_spectrum& operator+=(basic_spectrum<E> other) {
+    rules::same_dimension<"+=", D, E>();
+    rgb_ += other.raw_value();
+    return *this;
+  }
+  template <class E>
+  constexpr basic_spectrum& operator-=(basic_spectrum<E> other) {
+    rules::same_dimension<"-=", D, E>();
+    rgb_ -= other.raw_value();
+    return *this;
+  }
+  /// Scaling by a dimensionless factor (a plain number or a dimensionless spectrum).
+  template <class Q>
+    requires arithmetic<Q> || std::is_same_v<Q, basic_spectrum<dim::dimensionless>>
+  constexpr basic_spectrum& operator*=(Q factor) {
+    if constexpr (arithmetic<Q>)
+      rgb_ *= float(factor);
+    else
+      rgb_ *= factor.raw_value();
+    return *this;
+  }
+  template <arithmetic U>
+  constexpr basic_spectrum& operator/=(U divisor) {
+    rgb_ /= float(divisor);
+    return *this;
+  }
+
+ private:
+  glm::vec3 rgb_{0.0f};
+};
+
+template <dimension_type D>
+using spectrum = basic_spectrum<mode_dimension<D>>;
+
+template <class D>
+struct raw_access<basic_spectrum<D>> {
+  using raw_type = glm::vec3;
+  static constexpr glm::vec3 to(basic_spectrum<D> s) { return s.raw_value(); }
+  static constexpr basic_spectrum<D> from(glm::vec3 rgb) { return {detail::raw_tag{}, rgb}; }
+};
+
+template <dimension_type D, class E>
+constexpr spectrum<D> dimension_cast(basic_spectrum<E> s) {
+  return {detail::raw_tag{}, s.raw_value()};
+}
+
+template <class D, class E>
+constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<E> b) {
+  rules::same_dimension<"+", D, E>();
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class D, class E>
+constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<E> b) {
+  rules::same_dimension<"-", D, E>();
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+template <class D, class E>
+constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<E> b) {
+  rules::same_dimension<"==", D, E>();
+  return a.raw_value() == b.raw_value();
+}
+template <class D, class E>
+constexpr basic_spectrum<dim::product<D, E>> operator*(basic_spectrum<D> a, basic_spectrum<E> b) {
+  return {detail::raw_tag{}, a.raw_value() * b.raw_value()};
+}
+template <class D, class E>
+constexpr basic_spectrum<dim::quotient<D, E>> operator/(basic_spectrum<D> a, basic_spectrum<E> b) {
+  return {detail::raw_tag{}, a.raw_value() / b.raw_value()};
+}
+
+namespace detail {
+template <class Q>
+using scalar_for = std::conditional_t<quantity_like<Q>, Q, float>;
+template <class Q>
+constexpr float scalar_value(Q q) {
+  return float(raw(scalar_for<Q>(q)));
+}
+}  // namespace detail
+
+template <class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr basic_spectrum<dim::product<D, dimension_of<detail::scalar_for<Q>>>> operator*(basic_spectrum<D> s, Q q) {
+  return {detail::raw_tag{}, s.raw_value() * detail::scalar_value(q)};
+}
+template <class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr basic_spectrum<dim::product<D, dimension_of<detail::scalar_for<Q>>>> operator*(Q q, basic_spectrum<D> s) {
+  return s * q;
+}
+template <class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr basic_spectrum<dim::quotient<D, dimension_of<detail::scalar_for<Q>>>> operator/(basic_spectrum<D> s, Q q) {
+  return {detail::raw_tag{}, s.raw_value() / detail::scalar_value(q)};
+}
+template <class D, class Q>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr basic_spectrum<dim::quotient<dimension_of<detail::scalar_for<Q>>, D>> operator/(Q q, basic_spectrum<D> s) {
+  return {detail::raw_tag{}, detail::scalar_value(q) / s.raw_value()};
+}
+
+/// A spectrum times or over a unit, like a number: spectrum<dim::dimensionless>(0.5f) * units::watt.
+template <class D, class E>
+constexpr basic_spectrum<dim::product<D, E>> operator*(basic_spectrum<D> s, basic_unit<E> u) {
+  return {detail::raw_tag{}, s.raw_value() * float(u.factor)};
+}
+template <class D, class E>
+constexpr basic_spectrum<dim::quotient<D, E>> operator/(basic_spectrum<D> s, basic_unit<E> u) {
+  return {detail::raw_tag{}, s.raw_value() / float(u.factor)};
+}
+
+/// Rec. 709 luminance Y, in the spectrum's own dimension.
+template <class D>
+constexpr quantity<D> luminance(basic_spectrum<D> s) {
+  const glm::vec3 c = s.raw_value();
+  return make_quantity<D, float>(0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b);
+}
+template <class D>
+constexpr quantity<D> max_component(basic_spectrum<D> s) {
+  const glm::vec3 c = s.raw_value();
+  return make_quantity<D, float>(c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b));
+}
+template <class D>
+constexpr quantity<D> average(basic_spectrum<D> s) {
+  const glm::vec3 c = s.raw_value();
+  return make_quantity<D, float>((c.r + c.g + c.b) / 3.0f);
+}
+template <class D>
+constexpr bool is_black(basic_spectrum<D> s) {
+  const glm::vec3 c = s.raw_value();
+  return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f;
+}
+/// Per-channel exponential (Beer–Lambert transmittance): the exponent must be dimensionless.
+template <class D>
+constexpr basic_spectrum<dim::dimensionless> exp(basic_spectrum<D> s) {
+  rules::dimensionless<"exp", D>();
+  return {detail::raw_tag{}, glm::exp(s.raw_value())};
+}
+/// Per-channel square root; every exponent of D must be even.
+template <class D>
+constexpr basic_spectrum<dim::root<D, 2>> sqrt(basic_spectrum<D> s) {
+  rules::even_exponents<D>();
+  return {detail::raw_tag{}, glm::sqrt(s.raw_value())};
+}
+template <class D, class E>
+constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<E> b, float t) {
+  rules::same_dimension<"lerp", D, E>();
+  return {detail::raw_tag{}, (1.0f - t) * a.raw_value() + t * b.raw_value()};
+}
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi

@@ -1,0 +1,104 @@
+// Units are constants of the right dimension. Every value is stored in one reference
+// unit per dimension (SI: metre, second, joule, radian, steradian), converted once
+// when it is built:  auto d = 5.0f * units::millimetre;   // holds 0.005 (metres)
+// and leaving the typed world names the unit:           float mm = in(d, units::millimetre);
+#pragma once
+
+#include <type_traits>
+
+#include "safegi/typed/quantity.hpp"
+
+namespace safegi {
+inline namespace SAFEGI_MODE_NAMESPACE {
+
+/// How many reference units of D one of this unit is.
+template <dimension_type D>
+struct basic_unit {
+  using dimension_type = D;
+  double factor = 1.0;
+};
+
+template <dimension_type D>
+using unit = basic_unit<mode_dimension<D>>;
+
+template <class D, class E>
+constexpr basic_unit<dim::product<D, E>> operator*(basic_unit<D> a, basic_unit<E> b) {
+  return {a.factor * b.factor};
+}
+template <class D, class E>
+constexpr basic_unit<dim::quotient<D, E>> operator/(basic_unit<D> a, basic_unit<E> b) {
+  return {a.factor / b.factor};
+}
+template <int N, class D>
+constexpr basic_unit<dim::pow<D, N>> pow(basic_unit<D> u) {
+  double factor = 1.0;
+  for (int i = 0; i < (N < 0 ? -N : N); ++i) factor *= u.factor;
+  return {N < 0 ? 1.0 / factor : factor};
+}
+
+// A number (or quantity) times or over a unit: the dimensions combine and the value
+// is converted to reference units, in the quantity's own precision.
+template <class Q, class D>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator*(Q value, basic_unit<D> u) {
+  using Value = std::conditional_t<quantity_like<Q>, Q, float>;
+  using T = rep_of<Value>;
+  return make_quantity<dim::product<dimension_of<Value>, D>, T>(T(raw(Value(value))) * T(u.factor));
+}
+template <class Q, class D>
+  requires quantity_like<Q> || arithmetic<Q>
+constexpr auto operator/(Q value, basic_unit<D> u) {
+  using Value = std::conditional_t<quantity_like<Q>, Q, float>;
+  using T = rep_of<Value>;
+  return make_quantity<dim::quotient<dimension_of<Value>, D>, T>(T(raw(Value(value))) / T(u.factor));
+}
+
+/// The number of `u` in q — the greppable way out of the typed world.
+template <quantity_like Q, class D>
+constexpr rep_of<Q> in(Q q, basic_unit<D> u) {
+  if constexpr (is_checked && !std::is_same_v<dimension_of<Q>, D>)
+    (void)sizeof(diagnose::unit_of_another_dimension<dimension_text<dimension_of<Q>>, dimension_text<D>>);
+  return raw(q) / rep_of<Q>(u.factor);
+}
+
+namespace units {
+// length (reference: metre)
+inline constexpr unit<dim::length> metre{1.0};
+inline constexpr unit<dim::length> kilometre{1e3};
+inline constexpr unit<dim::length> centimetre{1e-2};
+inline constexpr unit<dim::length> millimetre{1e-3};
+inline constexpr unit<dim::length> micrometre{1e-6};
+inline constexpr unit<dim::length> nanometre{1e-9};
+inline constexpr unit<dim::length> inch{0.0254};
+inline constexpr unit<dim::length> foot{0.3048};
+inline constexpr unit<dim::area> square_metre{1.0};
+inline constexpr unit<dim::area> square_millimetre{1e-6};
+// time (reference: second)
+inline constexpr unit<dim::time> second{1.0};
+inline constexpr unit<dim::time> millisecond{1e-3};
+inline constexpr unit<dim::time> microsecond{1e-6};
+inline constexpr unit<dim::time> nanosecond{1e-9};
+inline constexpr unit<dim::time> minute{60.0};
+inline constexpr unit<dim::time> hour{3600.0};
+// angles (reference: radian, steradian)
+inline constexpr unit<dim::angle> radian{1.0};
+inline constexpr unit<dim::angle> degree{3.14159265358979323846 / 180.0};
+inline constexpr unit<dim::solid_angle> steradian{1.0};
+/// The projected-cosine factor has no physical unit; this one makes radiance writable:
+/// watt / (square_metre * steradian * proj).
+inline constexpr unit<dim::proj> proj{1.0};
+// energy and power (reference: joule, watt)
+inline constexpr unit<dim::energy> joule{1.0};
+inline constexpr unit<dim::energy> kilojoule{1e3};
+inline constexpr unit<dim::energy> millijoule{1e-3};
+inline constexpr unit<dim::power> watt{1.0};
+inline constexpr unit<dim::power> milliwatt{1e-3};
+inline constexpr unit<dim::power> kilowatt{1e3};
+// radiometry
+inline constexpr unit<dim::irradiance> watt_per_square_metre{1.0};
+inline constexpr unit<dim::intensity> watt_per_steradian{1.0};
+inline constexpr unit<dim::radiance> radiance_unit{1.0};  // W / (m^2 sr proj)
+}  // namespace units
+
+}  // namespace SAFEGI_MODE_NAMESPACE
+}  // namespace safegi
