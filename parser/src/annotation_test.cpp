@@ -2,10 +2,14 @@
 // types everywhere, generics, casts, and the rules that keep annotation words
 // ordinary identifiers in plain GLSL.
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
+
+#include <safegi/diagnostics/render.hpp>
+#include <safegi/lexer/preprocessor.hpp>
 
 #include "test_support.hpp"
 
@@ -148,6 +152,27 @@ TEST(Annotation, ThePreludeParses) {
   }
   EXPECT_EQ(dimensions, 22u);
   EXPECT_EQ(units, 12u);
+}
+
+TEST(Annotation, ThePreludeLineThroughThePreprocessor) {
+  SourceManager sources;
+  DiagnosticEngine diagnostics;
+  FileId file = sources.add_file("shader.frag",
+                                 "#version 330 core\n"
+                                 "#include <safegi/prelude.sgl>\n"
+                                 "space world;\n"
+                                 "uniform spectrum<radiance> L;\n"
+                                 "uniform float<length> r = 2.0 * centimeter;\n");
+  PreprocessorOptions options;
+  options.include_paths.push_back(std::filesystem::path(SAFEGI_PRELUDE_FILE).parent_path().parent_path().string());
+  PreprocessedUnit unit = preprocess(sources, file, options, diagnostics);
+  ParseResult parsed = parse(unit.tokens, diagnostics);
+  ASSERT_FALSE(diagnostics.has_errors()) << render_text(diagnostics.diagnostics(), sources);
+  ASSERT_EQ(unit.includes.size(), 1u);
+  std::size_t from_prelude = 0;
+  for (const ast::Decl* d : parsed.unit->decls) from_prelude += d->range.begin.file == unit.includes[0].file;
+  EXPECT_EQ(from_prelude, 34u);  // every prelude declaration, located in the prelude file
+  EXPECT_EQ(parsed.unit->decls.size(), 37u);
 }
 
 }  // namespace

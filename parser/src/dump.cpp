@@ -297,26 +297,7 @@ class Dumper {
 
   void qualifiers(const TypeQualifiers& q, int level) {
     (void)level;
-    for (const Qualifier& qualifier : q.list) {
-      std::string word = qualifier.word;
-      if (qualifier.kind == QualifierKind::Layout) {
-        word += "(";
-        for (std::size_t i = 0; i < qualifier.layout_ids.size(); ++i) {
-          if (i) word += ",";
-          word += qualifier.layout_ids[i].name;
-          if (qualifier.layout_ids[i].value) word += "=" + print_expression(*qualifier.layout_ids[i].value);
-        }
-        word += ")";
-      } else if (qualifier.has_type_list) {
-        word += "(";
-        for (std::size_t i = 0; i < qualifier.type_names.size(); ++i) {
-          if (i) word += ",";
-          word += qualifier.type_names[i];
-        }
-        word += ")";
-      }
-      text("[" + word + "]");
-    }
+    for (const Qualifier& qualifier : q.list) text("[" + print_qualifier(qualifier) + "]");
   }
 
   void dims(const std::vector<ArrayDim>& list, int level) {

@@ -10,7 +10,7 @@ namespace {
 
 TEST(ParseDecl, QualifiersInOrder) {
   EXPECT_EQ(dump_first("layout(location = 2, std140, binding = 1 + 2) flat centroid in highp vec3 n;"),
-            "VariableDecl [layout(location=2,std140,binding=1 + 2)] [flat] [centroid] [in] [highp]\n"
+            "VariableDecl [layout(location = 2, std140, binding = 1 + 2)] [flat] [centroid] [in] [highp]\n"
             "  TypeSpecifier builtin vec3\n  Declarator n\n");
   EXPECT_EQ(dump_first("invariant precise noperspective sample out float a;"),
             "VariableDecl [invariant] [precise] [noperspective] [sample] [out]\n"
@@ -21,9 +21,9 @@ TEST(ParseDecl, QualifiersInOrder) {
 }
 
 TEST(ParseDecl, LayoutAcceptsKeywordsAsIdentifiers) {
-  EXPECT_EQ(dump_first("layout(shared, row_major) uniform;"), "QualifierDecl [layout(shared,row_major)] [uniform]\n");
+  EXPECT_EQ(dump_first("layout(shared, row_major) uniform;"), "QualifierDecl [layout(shared, row_major)] [uniform]\n");
   EXPECT_EQ(dump_first("layout(local_size_x = 8, local_size_y = 8) in;"),
-            "QualifierDecl [layout(local_size_x=8,local_size_y=8)] [in]\n");
+            "QualifierDecl [layout(local_size_x = 8, local_size_y = 8)] [in]\n");
 }
 
 TEST(ParseDecl, QualifierOnlyDeclarations) {
@@ -59,9 +59,9 @@ TEST(ParseDecl, StructsNamedAnonymousAndNested) {
 
 TEST(ParseDecl, InterfaceBlocks) {
   EXPECT_EQ(dump_first("layout(std140, binding = 0) uniform Camera { mat4 view; layout(offset = 64) mat4 proj; } cam[2];"),
-            "InterfaceBlockDecl Camera instance=cam [layout(std140,binding=0)] [uniform]\n"
+            "InterfaceBlockDecl Camera instance=cam [layout(std140, binding = 0)] [uniform]\n"
             "  VariableDecl\n    TypeSpecifier builtin mat4\n    Declarator view\n"
-            "  VariableDecl [layout(offset=64)]\n    TypeSpecifier builtin mat4\n    Declarator proj\n"
+            "  VariableDecl [layout(offset = 64)]\n    TypeSpecifier builtin mat4\n    Declarator proj\n"
             "  ArrayDim\n    LiteralExpr 2\n");
   EXPECT_EQ(dump_first("buffer Data { readonly float values[]; };"),
             "InterfaceBlockDecl Data [buffer]\n  VariableDecl [readonly]\n    TypeSpecifier builtin float\n"

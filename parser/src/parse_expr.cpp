@@ -21,7 +21,7 @@ std::uint32_t height_of(std::initializer_list<const Expr*> children) {
 }
 
 bool literal_is_zero(std::string_view s, T kind) {
-  if (kind == T::True || kind == T::False) return false;
+  if (kind == T::True || kind == T::False || kind == T::StringLit) return false;
   std::size_t i = 0;
   if (s.size() > 1 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) i = 2;
   bool hex = i == 2;
@@ -59,6 +59,7 @@ LiteralExpr* Parser::make_literal(const PToken& token) {
     case T::UintLit: lit->literal_kind = LiteralKind::Uint; break;
     case T::FloatLit: lit->literal_kind = LiteralKind::Float; break;
     case T::DoubleLit: lit->literal_kind = LiteralKind::Double; break;
+    case T::StringLit: lit->literal_kind = LiteralKind::String; break;
     case T::True:
     case T::False: lit->literal_kind = LiteralKind::Bool; break;
     default: lit->literal_kind = LiteralKind::Int; break;
@@ -320,6 +321,7 @@ Expr* Parser::parse_primary() {
     case T::UintLit:
     case T::FloatLit:
     case T::DoubleLit:
+    case T::StringLit:
     case T::True:
     case T::False:
       return make_literal(advance());

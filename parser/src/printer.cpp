@@ -26,6 +26,7 @@ class GlslPrinter {
 
   void expression(const Expr& e, int parent_precedence = 0);
   void type(const TypeSpecifier& t);
+  void qualifier(const Qualifier& q);
 
   std::string take() { return std::move(out_); }
 
@@ -257,28 +258,32 @@ void GlslPrinter::array_dims(const std::vector<ArrayDim>& dims) {
   }
 }
 
-void GlslPrinter::qualifiers(const TypeQualifiers& q) {
-  for (const Qualifier& qualifier : q.list) {
-    out_ += qualifier.word;
-    if (qualifier.kind == QualifierKind::Layout) {
-      out_ += '(';
-      for (std::size_t i = 0; i < qualifier.layout_ids.size(); ++i) {
-        if (i) out_ += ", ";
-        out_ += qualifier.layout_ids[i].name;
-        if (qualifier.layout_ids[i].value) {
-          out_ += " = ";
-          expression(*qualifier.layout_ids[i].value, 2);
-        }
+void GlslPrinter::qualifier(const Qualifier& q) {
+  out_ += q.word;
+  if (q.kind == QualifierKind::Layout) {
+    out_ += '(';
+    for (std::size_t i = 0; i < q.layout_ids.size(); ++i) {
+      if (i) out_ += ", ";
+      out_ += q.layout_ids[i].name;
+      if (q.layout_ids[i].value) {
+        out_ += " = ";
+        expression(*q.layout_ids[i].value, 2);
       }
-      out_ += ')';
-    } else if (qualifier.has_type_list) {
-      out_ += '(';
-      for (std::size_t i = 0; i < qualifier.type_names.size(); ++i) {
-        if (i) out_ += ", ";
-        out_ += qualifier.type_names[i];
-      }
-      out_ += ')';
     }
+    out_ += ')';
+  } else if (q.has_type_list) {
+    out_ += '(';
+    for (std::size_t i = 0; i < q.type_names.size(); ++i) {
+      if (i) out_ += ", ";
+      out_ += q.type_names[i];
+    }
+    out_ += ')';
+  }
+}
+
+void GlslPrinter::qualifiers(const TypeQualifiers& q) {
+  for (const Qualifier& one : q.list) {
+    qualifier(one);
     out_ += ' ';
   }
 }
@@ -527,10 +532,12 @@ void GlslPrinter::statement_inline(const Stmt& s) {
       const auto& sw = static_cast<const SwitchStmt&>(s);
       out_ += "switch (";
       expression(*sw.selector);
-      out_ += ") ";
-      ++level_;  // case labels print one level out, their statements one in
-      statement_inline(*sw.body);
-      --level_;
+      out_ += ") {\n";
+      level_ += 2;  // case labels print one level out, their statements one in
+      for (const Stmt* child : sw.body->statements) statement(*child);
+      level_ -= 2;
+      line_start();
+      out_ += '}';
       break;
     }
     case NodeKind::CaseLabel:
@@ -573,6 +580,13 @@ std::string print_expression(const Expr& expr) {
   PrintOptions options;
   GlslPrinter printer(options);
   printer.expression(expr);
+  return printer.take();
+}
+
+std::string print_qualifier(const Qualifier& qualifier) {
+  PrintOptions options;
+  GlslPrinter printer(options);
+  printer.qualifier(qualifier);
   return printer.take();
 }
 

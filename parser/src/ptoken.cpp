@@ -128,6 +128,7 @@ void append_lexer_token(std::vector<PToken>& out, const Token& token) {
     case TokenKind::float_literal:
     case TokenKind::float16_literal: t.kind = T::FloatLit; out.push_back(t); return;
     case TokenKind::double_literal: t.kind = T::DoubleLit; out.push_back(t); return;
+    case TokenKind::string_literal: t.kind = T::StringLit; out.push_back(t); return;
     default: break;
   }
   if (is_keyword(token.kind)) {

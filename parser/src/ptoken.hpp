@@ -24,6 +24,7 @@ enum class T : std::uint8_t {
   UintLit,
   FloatLit,
   DoubleLit,
+  StringLit,  // GL_EXT_debug_printf; the preprocessor rejects strings elsewhere
   True,
   False,
   // keywords

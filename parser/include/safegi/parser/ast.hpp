@@ -113,7 +113,8 @@ struct IdentifierExpr : Expr {
   std::string name;
 };
 
-enum class LiteralKind : std::uint8_t { Int, Uint, Float, Double, Bool };
+// String: only with GL_EXT_debug_printf (`debugPrintfEXT("x = %f", x)`).
+enum class LiteralKind : std::uint8_t { Int, Uint, Float, Double, Bool, String };
 
 struct LiteralExpr : Expr {
   LiteralExpr() : Expr(NodeKind::LiteralExpr) {}

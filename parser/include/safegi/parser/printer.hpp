@@ -23,6 +23,7 @@ struct PrintOptions {
 std::string print_glsl(const ast::TranslationUnit& unit, const PrintOptions& options = {});
 std::string print_expression(const ast::Expr& expr);
 std::string print_type(const ast::TypeSpecifier& type, bool annotations = true);
+std::string print_qualifier(const ast::Qualifier& qualifier);  // "layout(location = 0)", "flat"
 
 struct DumpOptions {
   bool ranges = false;  // append `@line:col-line:col` to each node
