@@ -147,6 +147,9 @@ class Checker {
     return v;
   }
   void report(Diagnostic d) { diagnostics_.report(std::move(d)); }
+  // Names of extension built-ins and types this checker does not model
+  // (subgroup*, *ARB/*EXT/*NV, int64_t, f16vec3, ...): left to the driver.
+  static bool extension_name(const std::string& name);
   Value record(const ast::Node* node, Value v) {
     result_.types[node] = v.type;
     return v;

@@ -135,7 +135,8 @@ const Variable* Checker::lookup(const std::string& name) const {
 void Checker::declare_variable(Variable v) {
   auto& scope = scopes_.back();
   auto it = scope.find(v.name);
-  if (it != scope.end() && !it->second.builtin) {
+  // Built-ins may be redeclared (`layout(origin_upper_left) in vec4 gl_FragCoord;`), even twice.
+  if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0) {
     Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code("E-REDEFINITION");
     d.with_note(Diagnostic::note(it->second.range, "previous definition is here"));
     report(std::move(d));
