@@ -54,6 +54,15 @@ TEST(Glsl, StageBuiltins) {
   EXPECT_EQ(plain("void main() { discard; }", Stage::vertex), Messages{"error: 'discard' is only allowed in fragment shaders"});
 }
 
+TEST(Glsl, ExtensionsAreLeftToTheDriver) {
+  // Built-ins and types of extensions this checker does not model are not reported.
+  EXPECT_EQ(plain("void main() { float s = subgroupAdd(1.0); int64_t big = int64_t(1); float t = fooEXT(s); }"), Messages{});
+  EXPECT_EQ(plain("layout(origin_upper_left) in vec4 gl_FragCoord; layout(origin_upper_left) in vec4 gl_FragCoord;"
+                  "out vec4 o; void main() { o = gl_FragCoord; }"),
+            Messages{});
+  EXPECT_EQ(plain("void main() { float s = subgroupAdd(undeclared); }"), Messages{"error: use of undeclared identifier 'undeclared'"});
+}
+
 TEST(Glsl, TypesAndConversions) {
   EXPECT_EQ(plain("void main() { float x = 1; double d = x; int i = 2; uint u = i; vec3 v = ivec3(1); }"), Messages{});
   EXPECT_EQ(plain("void main() { int i = 1.0; }"),

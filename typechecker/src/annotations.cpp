@@ -193,6 +193,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
   switch (spec->form) {
     case ast::TypeSpecifier::Form::Builtin: {
       std::optional<Type> base = glsl_builtin_type(spec->name);
+      if (!base && extension_name(spec->name)) return Type::error();  // left to the driver
       if (!base) {
         report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
         return Type::error();
@@ -279,6 +280,10 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     }
     case ast::TypeSpecifier::Form::Named: {
       auto it = structs_.find(spec->name);
+      if (it == structs_.end() && (extension_name(spec->name) || glsl_builtin_type(spec->name))) {
+        if (std::optional<Type> opaque = glsl_builtin_type(spec->name)) return *opaque;  // rayQueryEXT, accelerationStructureEXT
+        return Type::error();
+      }
       if (it == structs_.end()) {
         report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
         return Type::error();

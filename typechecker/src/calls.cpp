@@ -55,6 +55,26 @@ std::string arguments_text(const std::vector<Value>& args, const Checker& c) {
 
 }  // namespace
 
+bool Checker::extension_name(const std::string& name) {
+  auto ends = [&](const char* suffix) {
+    const std::string s = suffix;
+    return name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+  };
+  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (ends("ARB") || ends("EXT") || ends("NV") || ends("AMD") || ends("KHR") || ends("INTEL") || ends("QCOM")) return true;
+  if (starts("subgroup") || starts("anyInvocation") || starts("allInvocations") || starts("ballot") || starts("readInvocation") ||
+      starts("readFirstInvocation") || starts("nonuniform") || starts("traceRay") || starts("reportIntersection") ||
+      starts("executeCallable") || starts("debugPrintf") || starts("coopMat"))
+    return true;
+  // Explicit arithmetic types and their vectors (GL_EXT_shader_explicit_arithmetic_types) and their conversions.
+  for (const char* p : {"int8_t", "int16_t", "int32_t", "int64_t", "uint8_t", "uint16_t", "uint32_t", "uint64_t", "float16_t", "float32_t", "float64_t",
+                        "i8vec", "i16vec", "i64vec", "u8vec", "u16vec", "u64vec", "f16vec", "f32vec", "f64vec", "f16mat",
+                        "f32mat", "f64mat", "doubleBitsTo", "int64BitsTo", "uint64BitsTo", "packInt", "packUint",
+                        "unpackInt", "unpackUint", "packFloat2x16", "unpackFloat2x16"})
+    if (starts(p)) return true;
+  return false;
+}
+
 Value Checker::call(const ast::CallExpr& e) {
   if (e.constructor_type) return constructor(e);
   std::vector<Value> args;
@@ -81,7 +101,7 @@ Value Checker::call(const ast::CallExpr& e) {
   }
   std::string message = "use of undeclared function '" + e.callee + "'";
   if (lookup(e.callee)) message = "called object '" + e.callee + "' is not a function";
-  if (e.callee.rfind("gl", 0) == 0 || bad) return error_value(e.range);  // unmodelled extension built-ins
+  if (e.callee.rfind("gl", 0) == 0 || bad || extension_name(e.callee)) return error_value(e.range);  // unmodelled extension built-ins
   report(Diagnostic::error(e.callee_range, message).with_code("E-UNDECLARED-FUNCTION"));
   return error_value(e.range);
 }

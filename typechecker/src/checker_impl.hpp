@@ -18,7 +18,8 @@ namespace safegi::detail {
 // Where an operand's annotation came from, for the notes of a mismatch.
 struct Origin {
   SourceRange range;
-  std::string text;  // "'L' declared here", "type of 'c' inferred from this initializer"
+  std::string text;  // "'L' declared here", "type of 'c' inferred from its initializer"
+  bool inferred = false;  // the type is not written at `range`: notes print it
 };
 
 // The result of checking an expression.
@@ -146,6 +147,9 @@ class Checker {
     return v;
   }
   void report(Diagnostic d) { diagnostics_.report(std::move(d)); }
+  // Names of extension built-ins and types this checker does not model
+  // (subgroup*, *ARB/*EXT/*NV, int64_t, f16vec3, ...): left to the driver.
+  static bool extension_name(const std::string& name);
   Value record(const ast::Node* node, Value v) {
     result_.types[node] = v.type;
     return v;
