@@ -7,6 +7,13 @@ include(CMakePackageConfigHelpers)
 # under ${CMAKE_INSTALL_INCLUDEDIR}.
 function(safegi_install_targets)
   cmake_parse_arguments(ARG "" "" "HEADERS_FROM" ${ARGN})
+  # Installed names match the in-tree aliases: safegi_parser -> SafeGI::parser.
+  foreach(target IN LISTS ARG_UNPARSED_ARGUMENTS)
+    get_target_property(export_name ${target} EXPORT_NAME)
+    if(NOT export_name AND target MATCHES "^safegi_(.+)$")
+      set_target_properties(${target} PROPERTIES EXPORT_NAME ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
   install(TARGETS ${ARG_UNPARSED_ARGUMENTS} EXPORT SafeGITargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

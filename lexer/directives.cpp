@@ -1,6 +1,7 @@
 // The directives other than conditionals: #define, #undef, #version,
 // #extension, #pragma, #line, #error and #include.
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,8 +36,7 @@ bool is_known_version(int v) {
 // ------------------------------------------------------------ #define ---
 
 void Preprocessor::directive_define(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::define, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::define, hash);
   if (line.empty()) {
     error(directive_range(hash, line), "macro name missing in #define");
     return;
@@ -104,8 +104,7 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
 }
 
 void Preprocessor::directive_undef(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::undef, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::undef, hash);
   if (line.empty()) {
     error(directive_range(hash, line), "macro name missing in #undef");
     return;
@@ -118,8 +117,7 @@ void Preprocessor::directive_undef(FileState& f, const Token& hash) {
 // ------------------------------------------------ version, extensions ---
 
 void Preprocessor::directive_version(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::version, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::version, hash);
   SourceRange directive = directive_range(hash, line);
   if (!f.is_main) {
     error(directive, "#version is only allowed in the main file, not in an included file");
@@ -205,14 +203,16 @@ void Preprocessor::apply_version() {
     define_predefined("GL_ES", "1");
     define_predefined("GL_es_profile", "1");
     define_predefined("GL_FRAGMENT_PRECISION_HIGH", "1");
-  } else if (unit_.version >= 150) {
+    return;
+  }
+  if (unit_.version >= 130) define_predefined("GL_FRAGMENT_PRECISION_HIGH", "1");  // GLSL 1.30, 4.6.1
+  if (unit_.version >= 150) {
     define_predefined(unit_.profile == "compatibility" ? "GL_compatibility_profile" : "GL_core_profile", "1");
   }
 }
 
 void Preprocessor::directive_extension(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::extension, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::extension, hash);
   SourceRange directive = directive_range(hash, line);
   if (line.empty() || line[0].kind != TokenKind::identifier) {
     error(line.empty() ? directive : line[0].range, "expected an extension name after #extension");
@@ -246,12 +246,21 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
   } else {
     unit_.keywords.extension_groups |= groups;
   }
+  const auto& supported = options_.extension_macros;
+  if (!supported.empty() && name != "all" && behavior != "disable" &&
+      std::find(supported.begin(), supported.end(), name) == supported.end()) {
+    std::string message = "extension '" + std::string(name) + "' is not supported";
+    if (behavior == "require") {
+      error(line[0].range, std::move(message));
+    } else {
+      diagnostics_.report(Diagnostic::warning(line[0].range, std::move(message)));
+    }
+  }
   unit_.extensions.push_back({std::string(name), std::string(behavior), directive});
 }
 
 void Preprocessor::directive_pragma(FileState& f, const Token& hash) {
-  std::vector<Token> line = read_line(f);
-  record_directive(DirectiveKind::pragma, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, DirectiveKind::pragma, hash);
   SourceRange directive = directive_range(hash, line);
   std::string text;
   for (const Token& t : line) {

@@ -102,7 +102,10 @@ TEST_F(ExpansionLocations, JsonCarriesTheChain) {
   EXPECT_EQ(errors(),
             "main.glsl:1:16: error: invalid character '@' in program\n"
             "#define F(x) x @\n"
-            "               ^\n");
+            "               ^\n"
+            "main.glsl:2:1: note: in expansion of macro 'F' (defined at main.glsl:1:9)\n"
+            "F(1)\n"
+            "^~~~\n");
   std::string json = render_json(Diagnostic::error(unit.tokens[0].range, "e").with_expansion(unit.tokens[0].expansion),
                                  sources);
   EXPECT_NE(json.find("\"expansions\":[{\"defined_at\""), std::string::npos) << json;

@@ -251,25 +251,26 @@ void Lexer::lex_punctuator(Token& token) {
 
 void Lexer::lex_invalid(Token& token) {
   std::size_t begin = pos_;
-  auto byte = static_cast<unsigned char>(text_[pos_]);
   token.kind = TokenKind::invalid;
-  if (byte >= 0x80) {
-    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) ++pos_;
-    finish(token, begin);
-    error(begin, pos_, "non-ASCII character '" + std::string(token.text) + "' outside a comment");
-    return;
+  if (static_cast<unsigned char>(text_[pos_]) >= 0x80) {
+    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) ++pos_;  // one UTF-8 run
+  } else {
+    ++pos_;
   }
-  ++pos_;
   finish(token, begin);
-  if (byte == '\\') {
-    error(begin, pos_, "stray '\\' in program (a line continuation must be the last character on its line)");
-  } else if (byte < 0x20 || byte == 0x7F) {
+  if (options_.check_characters) error(begin, pos_, invalid_character_message(token.text));
+}
+
+std::string invalid_character_message(std::string_view spelling) {
+  auto byte = spelling.empty() ? 0u : static_cast<unsigned char>(spelling[0]);
+  if (byte >= 0x80) return "non-ASCII character '" + std::string(spelling) + "' outside a comment";
+  if (byte == '\\') return "stray '\\' in program (a line continuation must be the last character on its line)";
+  if (byte < 0x20 || byte == 0x7F) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", byte);
-    error(begin, pos_, std::string("invalid control character ") + hex + " in program");
-  } else {
-    error(begin, pos_, "invalid character '" + std::string(1, static_cast<char>(byte)) + "' in program");
+    return std::string("invalid control character ") + hex + " in program";
   }
+  return "invalid character '" + std::string(1, static_cast<char>(byte)) + "' in program";
 }
 
 SourceRange Lexer::rest_of_line() {

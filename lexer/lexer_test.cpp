@@ -23,6 +23,20 @@ class LexerTest : public ::testing::Test {
   }
   std::string errors() const { return render_text(diagnostics.diagnostics(), sources); }
 
+  struct Row {
+    const char* text;
+    TokenKind kind;
+  };
+  // Each text lexes to exactly one token of the given kind, spelled as written.
+  void expect_single_tokens(std::initializer_list<Row> rows) {
+    for (Row r : rows) {
+      auto tokens = lex(r.text);
+      ASSERT_EQ(tokens.size(), 2u) << r.text;
+      EXPECT_EQ(tokens[0].kind, r.kind) << r.text;
+      EXPECT_EQ(tokens[0].text, r.text);
+    }
+  }
+
   SourceManager sources;
   DiagnosticEngine diagnostics;
   FileId file = kNoFile;
@@ -61,42 +75,24 @@ TEST_F(LexerTest, LongestMatch) {
 }
 
 TEST_F(LexerTest, IntegerLiterals) {
-  struct Row {
-    const char* text;
-    TokenKind kind;
-  };
-  for (Row r : {Row{"0", K::int_literal}, Row{"123", K::int_literal}, Row{"0x1aF", K::int_literal},
-                Row{"0XFF", K::int_literal}, Row{"0777", K::int_literal}, Row{"4294967295", K::int_literal},
-                Row{"0xFFFFFFFF", K::int_literal}, Row{"7u", K::uint_literal}, Row{"7U", K::uint_literal},
-                Row{"0x10u", K::uint_literal}, Row{"017U", K::uint_literal}, Row{"5l", K::int64_literal},
-                Row{"5L", K::int64_literal}, Row{"5ul", K::uint64_literal}, Row{"5UL", K::uint64_literal},
-                Row{"18446744073709551615UL", K::uint64_literal}, Row{"3s", K::int16_literal},
-                Row{"3us", K::uint16_literal}, Row{"65535US", K::uint16_literal}}) {
-    auto tokens = lex(r.text);
-    ASSERT_EQ(tokens.size(), 2u) << r.text;
-    EXPECT_EQ(tokens[0].kind, r.kind) << r.text;
-    EXPECT_EQ(tokens[0].text, r.text);
-  }
+  expect_single_tokens({Row{"0", K::int_literal}, Row{"123", K::int_literal}, Row{"0x1aF", K::int_literal},
+                        Row{"0XFF", K::int_literal}, Row{"0777", K::int_literal}, Row{"4294967295", K::int_literal},
+                        Row{"0xFFFFFFFF", K::int_literal}, Row{"7u", K::uint_literal}, Row{"7U", K::uint_literal},
+                        Row{"0x10u", K::uint_literal}, Row{"017U", K::uint_literal}, Row{"5l", K::int64_literal},
+                        Row{"5L", K::int64_literal}, Row{"5ul", K::uint64_literal}, Row{"5UL", K::uint64_literal},
+                        Row{"18446744073709551615UL", K::uint64_literal}, Row{"3s", K::int16_literal},
+                        Row{"3us", K::uint16_literal}, Row{"65535US", K::uint16_literal}});
   EXPECT_EQ(errors(), "");
 }
 
 TEST_F(LexerTest, FloatLiterals) {
-  struct Row {
-    const char* text;
-    TokenKind kind;
-  };
-  for (Row r : {Row{"1.0", K::float_literal}, Row{".5", K::float_literal}, Row{"5.", K::float_literal},
-                Row{"1e10", K::float_literal}, Row{"1E-3", K::float_literal}, Row{"2.5e+7", K::float_literal},
-                Row{".5e2", K::float_literal}, Row{"1.0f", K::float_literal}, Row{"1.F", K::float_literal},
-                Row{"1e3f", K::float_literal}, Row{"1.0lf", K::double_literal}, Row{"2.LF", K::double_literal},
-                Row{"1e-2lf", K::double_literal}, Row{"1.5hf", K::float16_literal}, Row{"0.0", K::float_literal},
-                Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}, Row{"1.0lF", K::double_literal},
-                Row{"1.0Lf", K::double_literal}, Row{"2.0hF", K::float16_literal}, Row{"1e+5", K::float_literal}}) {
-    auto tokens = lex(r.text);
-    ASSERT_EQ(tokens.size(), 2u) << r.text;
-    EXPECT_EQ(tokens[0].kind, r.kind) << r.text;
-    EXPECT_EQ(tokens[0].text, r.text);
-  }
+  expect_single_tokens({Row{"1.0", K::float_literal}, Row{".5", K::float_literal}, Row{"5.", K::float_literal},
+                        Row{"1e10", K::float_literal}, Row{"1E-3", K::float_literal}, Row{"2.5e+7", K::float_literal},
+                        Row{".5e2", K::float_literal}, Row{"1.0f", K::float_literal}, Row{"1.F", K::float_literal},
+                        Row{"1e3f", K::float_literal}, Row{"1.0lf", K::double_literal}, Row{"2.LF", K::double_literal},
+                        Row{"1e-2lf", K::double_literal}, Row{"1.5hf", K::float16_literal}, Row{"0.0", K::float_literal},
+                        Row{"09.5", K::float_literal}, Row{"00.5", K::float_literal}, Row{"1.0lF", K::double_literal},
+                        Row{"1.0Lf", K::double_literal}, Row{"2.0hF", K::float16_literal}, Row{"1e+5", K::float_literal}});
   EXPECT_EQ(errors(), "");
 }
 

@@ -187,7 +187,7 @@ std::optional<PPToken> Preprocessor::paste(const PPToken& lhs, const PPToken& rh
   std::string joined = std::string(lhs.token.text) + std::string(rhs.token.text);
   FileId scratch = sources_.add_file("<paste>", joined);
   DiagnosticEngine quiet;
-  Lexer lexer(sources_, scratch, quiet, LexerOptions{KeywordContext{}, false, false});
+  Lexer lexer(sources_, scratch, quiet, LexerOptions{KeywordContext{}, false, false, false});
   Token first = lexer.next();
   Token second = lexer.next();
   if (first.kind == TokenKind::invalid || second.kind != TokenKind::eof || quiet.has_errors() ||

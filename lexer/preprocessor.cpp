@@ -53,6 +53,12 @@ std::vector<Token> Preprocessor::read_line(FileState& f) {
   return line;
 }
 
+std::vector<Token> Preprocessor::read_directive_line(FileState& f, DirectiveKind kind, const Token& hash) {
+  std::vector<Token> line = read_line(f);
+  record_directive(kind, hash, line.empty() ? directive_name_end_ : line.back().range.end);
+  return line;
+}
+
 std::uint32_t Preprocessor::line_end_offset(SourceLocation at) const {
   std::string_view line = sources_.line_text(at.file, at.line);
   return at.offset - (at.column - 1) + static_cast<std::uint32_t>(line.size());
@@ -211,8 +217,7 @@ bool Preprocessor::check_macro_name(const Token& name, bool defining, bool comma
 // -------------------------------------------------------- conditionals ---
 
 void Preprocessor::directive_if(FileState& f, const Token& hash, DirectiveKind kind) {
-  std::vector<Token> line = read_line(f);
-  record_directive(kind, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, kind, hash);
   SourceRange directive = directive_range(hash, line);
   if (static_cast<int>(conditionals_.size()) >= options_.max_conditional_depth) {
     error(directive, "#if nested too deeply (limit " + std::to_string(options_.max_conditional_depth) + ")");
@@ -238,8 +243,7 @@ void Preprocessor::directive_if(FileState& f, const Token& hash, DirectiveKind k
 }
 
 void Preprocessor::directive_elif_else_endif(FileState& f, const Token& hash, DirectiveKind kind) {
-  std::vector<Token> line = read_line(f);
-  record_directive(kind, hash, line.empty() ? hash.range.end : line.back().range.end);
+  std::vector<Token> line = read_directive_line(f, kind, hash);
   SourceRange directive = directive_range(hash, line);
   std::string_view spelled = kind == DirectiveKind::elif ? "elif" : kind == DirectiveKind::else_ ? "else" : "endif";
   if (conditionals_.size() <= f.conditional_base) {
@@ -322,7 +326,10 @@ bool Preprocessor::evaluate_condition(const std::vector<Token>& line, const Toke
 void Preprocessor::emit(const PPToken& t) {
   Token token = t.token;
   switch (token.kind) {
-    case TokenKind::invalid: return;  // already reported by the lexer
+    case TokenKind::invalid:
+      diagnostics_.report(
+          Diagnostic::error(token.range, invalid_character_message(token.text)).with_expansion(token.expansion));
+      return;
     case TokenKind::identifier: token.kind = classify_word(token.text, unit_.keywords); break;
     case TokenKind::hash:
     case TokenKind::hash_hash:

@@ -274,6 +274,19 @@ TEST_F(Directives, NumbersAreCheckedWhereTheyAreUsed) {
             "    ^~\n");
 }
 
+TEST_F(Directives, InvalidCharactersAreReportedWhereUsed) {
+  EXPECT_EQ(output("#version 300 es\n#define eat_sushi \xE7\xAE\xB8\n#if 0\n@\n#endif\nok\n"), "ok");
+  EXPECT_EQ(errors(), "");
+  output("#define AT @\nAT\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:1:12: error: invalid character '@' in program\n"
+            "#define AT @\n"
+            "           ^\n"
+            "main.glsl:2:1: note: in expansion of macro 'AT' (defined at main.glsl:1:9)\n"
+            "AT\n"
+            "^~\n");
+}
+
 TEST_F(Directives, StringsWithDebugPrintf) {
   auto unit = run("#version 450\n#extension GL_EXT_debug_printf : enable\ndebugPrintfEXT(\"x = %f\", x);\n");
   EXPECT_EQ(unit.tokens[2].kind, TokenKind::string_literal);
@@ -283,6 +296,16 @@ TEST_F(Directives, StringsWithDebugPrintf) {
 TEST_F(Directives, ExtensionMacros) {
   options.extension_macros = {"GL_ARB_gpu_shader5"};
   EXPECT_EQ(output("#ifdef GL_ARB_gpu_shader5\nyes GL_ARB_gpu_shader5\n#endif\n"), "yes 1");
+  EXPECT_EQ(errors(), "");
+  run("#extension GL_ARB_gpu_shader5 : require\n#extension GL_FOO_bar : require\n#extension GL_FOO_baz : enable\n"
+      "#extension GL_FOO_baz : disable\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:12: error: extension 'GL_FOO_bar' is not supported\n"
+            "#extension GL_FOO_bar : require\n"
+            "           ^~~~~~~~~~\n"
+            "main.glsl:3:12: warning: extension 'GL_FOO_baz' is not supported\n"
+            "#extension GL_FOO_baz : enable\n"
+            "           ^~~~~~~~~~\n");
 }
 
 TEST_F(Directives, DirectiveLinesAndSkippedRangesAreRecorded) {

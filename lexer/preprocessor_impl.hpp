@@ -29,7 +29,7 @@ class Preprocessor {
   // One file being read (the main file, an include, or the -D/-U prelude).
   struct FileState {
     FileState(SourceManager& s, FileId f, DiagnosticEngine& d, std::string p)
-        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false, false}) {}
+        : file(f), path(std::move(p)), lexer(s, f, d, LexerOptions{KeywordContext{}, false, false, false}) {}
     FileId file;
     std::string path;
     Lexer lexer;
@@ -58,6 +58,8 @@ class Preprocessor {
   Token get(FileState& f);
   void unget(FileState& f, Token t) { f.peeked = t; }
   std::vector<Token> read_line(FileState& f);
+  // read_line for a directive, recorded in PreprocessedUnit::directives.
+  std::vector<Token> read_directive_line(FileState& f, DirectiveKind kind, const Token& hash);
   PPToken read_file_token();
   void handle_directive(FileState& f, const Token& hash);
   void skip_group(FileState& f);

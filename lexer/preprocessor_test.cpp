@@ -83,6 +83,8 @@ TEST_F(Preprocess, PredefinedMacros) {
   EXPECT_EQ(output("#version 450\n__VERSION__ GL_core_profile __LINE__\n__LINE__ __FILE__\n"), "450 1 2\n3 0");
   EXPECT_EQ(output("#version 300 es\nGL_ES GL_es_profile GL_FRAGMENT_PRECISION_HIGH __VERSION__\n"), "1 1 1 300");
   EXPECT_EQ(output("#version 150 compatibility\nGL_compatibility_profile GL_core_profile\n"), "1 GL_core_profile");
+  EXPECT_EQ(output("#version 130\nGL_FRAGMENT_PRECISION_HIGH\n"), "1");
+  EXPECT_EQ(output("#version 120\nGL_FRAGMENT_PRECISION_HIGH\n"), "GL_FRAGMENT_PRECISION_HIGH");
   EXPECT_EQ(output("#ifdef GL_ES\nes\n#else\ndesktop\n#endif\n"), "desktop");
   EXPECT_EQ(errors(), "");
 }
@@ -121,6 +123,9 @@ TEST_F(Preprocess, TokenPasting) {
   EXPECT_EQ(output("#define V(n) vec ## n\n#define N 4\nV(N)\n"), "vecN");  // operands are not expanded
   EXPECT_EQ(output("#define CAT3(a, b, c) a ## b ## c\nCAT3(x, y, z)\n"), "xyz");
   EXPECT_EQ(output("#define PLUSEQ + ## =\nPLUSEQ\n"), "+=");
+  // The pasted token is rescanned: macro expansion happens after pasting.
+  EXPECT_EQ(output("#define I i\n#define N n\n#define T t\n#define INT invalid_type\n#define IT I ## N ## T\nIT x;\n"),
+            "invalid_type x ;");
   EXPECT_EQ(errors(), "");
 }
 

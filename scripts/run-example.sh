@@ -19,11 +19,11 @@ if [[ -x "$bin/safeglslc" ]]; then
   done
 fi
 if [[ -x "$bin/safegi-render" ]]; then
-  "$bin/safegi-render" "$root/examples/scenes/cornell-box.json" --spp 64 -o "$out/cornell-box.exr"
+  "$bin/safegi-render" "$root/examples/scenes/cornell-box/cornell-box.json" --spp 64 -o "$out/cornell-box.exr"
   echo "rendered out/cornell-box.exr and out/cornell-box.png"
 fi
 if [[ -x "$bin/safegi-preview" ]]; then
-  "$bin/safegi-preview" "$root/examples/scenes/cornell-box.json" -o "$out/cornell-box-preview.exr"
+  "$bin/safegi-preview" "$root/examples/scenes/cornell-box/cornell-box.json" -o "$out/cornell-box-preview.exr"
   echo "previewed out/cornell-box-preview.exr and .png"
 fi
 echo "outputs in $out"

@@ -14,9 +14,9 @@ jobs=${SAFEGI_JOBS:-$(nproc)}
 (cd "$root/build" && ctest --output-on-failure -j "$jobs")
 
 if ((sanitize)); then
-  # The compiler and the typed library under ASan+UBSan (the GL and renderer
-  # parts are left out: Mesa and OpenImageIO are not built with sanitizers).
+  # The compiler, the typed library and the renderer core under ASan+UBSan;
+  # the GL parts are left out (Mesa's llvmpipe is not built with sanitizers).
   "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON \
-      -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_RENDERER=OFF -DSAFEGI_BUILD_BENCH=OFF
-  (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" -L sanitize)
+      -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_BENCH=OFF
+  (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" -L sanitize --no-tests=error)
 fi

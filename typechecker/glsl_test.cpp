@@ -1,1 +1,109 @@
+// GLSL's own rules, as a driver would report them.
+
 #include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+using Messages = std::vector<std::string>;
+
+Messages plain(std::string_view source, Stage stage = Stage::fragment) {
+  return check_source(source, {.stage = stage, .prelude = false})->messages();
+}
+
+TEST(Glsl, Names) {
+  EXPECT_EQ(plain("void main() { float x = y; }"), Messages{"error: use of undeclared identifier 'y'"});
+  EXPECT_EQ(plain("void main() { float x = 1.0; float x = 2.0; }"), Messages{"error: redefinition of 'x'"});
+  EXPECT_EQ(plain("void main() { float x = 1.0; { float x = 2.0; } }"), Messages{});
+  EXPECT_EQ(plain("void main() { foo(1.0); }"), Messages{"error: use of undeclared function 'foo'"});
+  EXPECT_EQ(plain("void main() { float f = 1.0; f(2.0); }"), Messages{"error: called object 'f' is not a function"});
+}
+
+TEST(Glsl, Calls) {
+  EXPECT_EQ(plain("float f(float a, float b) { return a + b; } void main() { float x = f(1.0); }"),
+            Messages{"error: no matching function for call to 'f(float<1>)'"});
+  EXPECT_EQ(plain("float f(float a) { return a; } float f(vec2 a) { return a.x; } void main() { float x = f(vec2(1.0)) + f(1); }"),
+            Messages{});
+  EXPECT_EQ(plain("void main() { float x = max(vec2(1.0), vec3(1.0)).x; }"),
+            Messages{"error: no matching overload for call to 'max(vec2<1>, vec3<1>)'"});
+  EXPECT_EQ(plain("void main() { float x = sqrt(1.0, 2.0); }"), Messages{"error: no matching overload for call to 'sqrt(float<1>, float<1>)'"});
+  EXPECT_EQ(plain("void f(out float x) { x = 1.0; } void main() { f(2.0); }"),
+            Messages{"error: argument 1 of 'f' is an out parameter and needs a writable variable"});
+  EXPECT_EQ(plain("float f(float a) { return a; } float f(float a) { return a; } void main() {}"),
+            Messages{"error: redefinition of 'f'"});
+}
+
+TEST(Glsl, ReadOnly) {
+  EXPECT_EQ(plain("uniform float u; void main() { u = 1.0; }"), Messages{"error: cannot assign to read-only variable 'u'"});
+  EXPECT_EQ(plain("void main() { const float c = 1.0; c += 1.0; }"), Messages{"error: cannot assign to read-only variable 'c'"});
+  EXPECT_EQ(plain("out vec4 o; void main() { gl_FragCoord = vec4(1.0); o = gl_FragCoord; }"),
+            Messages{"error: cannot assign to read-only variable 'gl_FragCoord'"});
+  EXPECT_EQ(plain("in vec3 n; void main() { n.x = 1.0; }"), Messages{"error: cannot assign to read-only variable 'n'"});
+  EXPECT_EQ(plain("void main() { vec3 v = vec3(1.0); v.xx = vec2(1.0); }"), Messages{"error: expression is not assignable"});
+  EXPECT_EQ(plain("void main() { 1.0 = 2.0; }"), Messages{"error: expression is not assignable"});
+}
+
+TEST(Glsl, StageBuiltins) {
+  EXPECT_EQ(plain("void main() { gl_Position = vec4(float(gl_VertexID)); gl_PointSize = 1.0; }", Stage::vertex), Messages{});
+  // gl_* names a stage does not have are left to the driver (extensions and
+  // compatibility state are not modelled), so they are not reported here.
+  EXPECT_EQ(plain("void main() { gl_Position = vec4(1.0); }", Stage::fragment), Messages{});
+  EXPECT_EQ(plain("layout(local_size_x = 8) in; void main() { uvec3 id = gl_GlobalInvocationID; }", Stage::compute), Messages{});
+  EXPECT_EQ(plain("void main() { discard; }", Stage::vertex), Messages{"error: 'discard' is only allowed in fragment shaders"});
+}
+
+TEST(Glsl, TypesAndConversions) {
+  EXPECT_EQ(plain("void main() { float x = 1; double d = x; int i = 2; uint u = i; vec3 v = ivec3(1); }"), Messages{});
+  EXPECT_EQ(plain("void main() { int i = 1.0; }"),
+            Messages{"error: cannot initialize 'i' of type int with a value of type float<1>"});
+  EXPECT_EQ(plain("void main() { vec3 v = vec2(1.0); }"),
+            Messages{"error: cannot initialize 'v' of type vec3 with a value of type vec2<1>"});
+  EXPECT_EQ(plain("void main() { vec3 v = vec3(1.0) + vec2(1.0); }"),
+            Messages{"error: invalid operands to binary expression (vec3<1> and vec2<1>)"});
+  EXPECT_EQ(plain("void main() { mat4 m = mat4(1.0); vec4 v = m * vec4(1.0); vec3 w = mat3(m) * v.xyz; mat2x3 a = mat2x3(1.0); vec3 b = a * vec2(1.0); }"),
+            Messages{});
+  EXPECT_EQ(plain("void main() { mat4 m = mat4(1.0); vec4 v = m * vec3(1.0); }"),
+            Messages{"error: invalid operands to binary expression (mat4 and vec3<1>)"});
+}
+
+TEST(Glsl, Constructors) {
+  EXPECT_EQ(plain("void main() { vec4 a = vec4(vec2(1.0), 0.0, 1.0); vec3 b = vec3(a); float c[2] = float[2](1.0, 2.0); }"), Messages{});
+  EXPECT_EQ(plain("void main() { vec4 a = vec4(1.0, 2.0); }"), Messages{"error: too few components to construct vec4 (2 of 4)"});
+  EXPECT_EQ(plain("void main() { vec2 a = vec2(1.0, 2.0, 3.0); }"), Messages{"error: too many arguments to constructor of vec2"});
+  EXPECT_EQ(plain("struct S { float a; vec2 b; }; void main() { S s = S(1.0, vec2(0.0)); float x = s.b.y + s.a; S t = S(1.0); }"),
+            Messages{"error: constructor of 'S' needs 2 arguments, found 1"});
+}
+
+TEST(Glsl, MembersSwizzlesIndexing) {
+  EXPECT_EQ(plain("struct S { float a; }; void main() { S s = S(1.0); float x = s.b; }"), Messages{"error: no member named 'b' in 'S'"});
+  EXPECT_EQ(plain("void main() { vec2 v = vec2(1.0); float x = v.z; }"), Messages{"error: invalid swizzle 'z' on vec2<1>"});
+  EXPECT_EQ(plain("void main() { vec4 v = vec4(1.0); vec2 x = v.xg; }"), Messages{"error: invalid swizzle 'xg' on vec4<1>"});
+  EXPECT_EQ(plain("void main() { float a[3]; float x = a[3]; float y = a[1.0]; }"),
+            (Messages{"error: index 3 is out of range for float[3]", "error: array subscript is not an integer: float<1>"}));
+  EXPECT_EQ(plain("void main() { float a[3]; int n = a.length(); vec4 v = vec4(1.0); float x = v[2] + float(v.length()); }"), Messages{});
+}
+
+TEST(Glsl, Statements) {
+  EXPECT_EQ(plain("void main() { if (1.0) {} }"), Messages{"error: condition must be a bool, found float<1>"});
+  EXPECT_EQ(plain("void main() { break; }"), Messages{"error: 'break' outside of a loop"});
+  EXPECT_EQ(plain("void main() { for (int i = 0; i < 4; ++i) { if (i == 2) continue; } int k = 0; while (k < 3) k++; }"), Messages{});
+  EXPECT_EQ(plain("float f() { return; } void g() { return 1.0; } void main() {}"),
+            (Messages{"error: non-void function 'f' must return a value", "error: void function 'g' cannot return a value"}));
+  EXPECT_EQ(plain("void main() { switch (1.0) { default: break; } }"), Messages{"error: switch selector must be int or uint, found float<1>"});
+}
+
+TEST(Glsl, Textures) {
+  EXPECT_EQ(plain("uniform sampler2D t; uniform sampler2DShadow s; uniform samplerCube c; uniform isampler3D i; in vec2 uv;"
+                  "void main() { vec4 a = texture(t, uv); float b = texture(s, vec3(uv, 0.5)); vec4 d = textureLod(c, vec3(1.0), 0.0);"
+                  "ivec4 e = texelFetch(i, ivec3(0), 0); ivec2 sz = textureSize(t, 0); vec4 g = texture2D(t, uv); }"),
+            Messages{});
+  EXPECT_EQ(plain("uniform sampler2D t; void main() { float a = texture(t, vec2(0.0)); }"),
+            Messages{"error: cannot initialize 'a' of type float with a value of type vec4"});
+  EXPECT_EQ(plain("void main() { vec4 a = texture(vec2(0.0), vec2(0.0)); }"),
+            Messages{"error: no matching overload for call to 'texture(vec2, vec2)'"});
+}
+
+}  // namespace
+}  // namespace safegi::testing

@@ -1,1 +1,98 @@
+// Space analysis: affine rules, maps, normals, directions, projective maps.
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+using Messages = std::vector<std::string>;
+
+constexpr const char* kGlobals =
+    "space world; space object; space clip;\n"
+    "uniform map<object, world> worldFromObject;\n"
+    "uniform rigidmap<object, world> rigidWorldFromObject;\n"
+    "uniform projmap<world, clip> clipFromWorld;\n"
+    "uniform point<world> pw; uniform point<object> po;\n"
+    "uniform vector<world> vw; uniform normal<object> no; uniform direction<world> dw;\n";
+
+Messages messages_of(std::string_view body) {
+  return check_source(std::string(kGlobals) + "void main() {\n" + std::string(body) + "\n}\n")->messages();
+}
+
+TEST(Spaces, AffineRules) {
+  EXPECT_EQ(messages_of("vector<world> v = pw - pw; point<world> p = pw + v; p = p - v; vector<world> w = v + v;"), Messages{});
+  EXPECT_EQ(messages_of("point<world> p = pw + pw;"), Messages{"error: cannot add two points (point<world> and point<world>)"});
+  EXPECT_EQ(messages_of("point<world> p = pw * 2.0;"),
+            Messages{"error: cannot multiply point<world> and float<dimensionless>: a point cannot be scaled"});
+  EXPECT_EQ(messages_of("vector<world> v = vw - pw;"), Messages{"error: cannot subtract a point from vector<world>"});
+}
+
+TEST(Spaces, OperandsMustShareASpace) {
+  EXPECT_EQ(messages_of("vector<world> v = pw - po;"),
+            Messages{"error: cannot subtract point<world> and point<object>: they are in different spaces"});
+  auto c = check_source(std::string(kGlobals) + "void main() { vector<world> v = pw - po; }");
+  ASSERT_EQ(c->diagnostics.diagnostics().size(), 1u);
+  EXPECT_EQ(c->diagnostics.diagnostics()[0].hint, "missing transform by map<object, world>?");
+}
+
+TEST(Spaces, MapsChangeSpaces) {
+  EXPECT_EQ(messages_of("point<world> p = worldFromObject * po; point<world> q = transform(worldFromObject, po);"
+                        "normal<world> n = worldFromObject * no; hpoint<clip> h = clipFromWorld * pw;"
+                        "point<clip> back = homogenize(project(clipFromWorld, pw));"
+                        "map<world, object> inv = inverse(worldFromObject);"
+                        "projmap<object, clip> full = clipFromWorld * worldFromObject;"),
+            Messages{});
+  EXPECT_EQ(messages_of("point<world> p = worldFromObject * pw;"),
+            Messages{"error: cannot apply map<object, world> to point<world>: the map takes values in object"});
+  EXPECT_EQ(messages_of("map<object, clip> m = worldFromObject * clipFromWorld;"),
+            Messages{"error: cannot compose map<object, world> with projmap<world, clip>"});
+  EXPECT_EQ(messages_of("map<object, object> m = worldFromObject * worldFromObject;"),
+            Messages{"error: cannot compose map<object, world> with map<object, world>: the right-hand map must end where "
+                     "the left-hand one starts"});
+  EXPECT_EQ(messages_of("point<object> p = worldFromObject * po;"),
+            Messages{"error: cannot initialize 'p' of type point<object> with a value of type point<world>"});
+}
+
+TEST(Spaces, NormalsThroughNonRigidMapsUseTheInverseTranspose) {
+  auto c = check_source(std::string(kGlobals) + "void main() { normal<world> a = worldFromObject * no; normal<world> b = rigidWorldFromObject * no; }");
+  ASSERT_EQ(c->rendered(), "");
+  std::vector<GeometricOp> ops;
+  for (const auto& [node, info] : c->result.calls) ops.push_back(info.op);
+  std::sort(ops.begin(), ops.end());
+  EXPECT_EQ(ops, (std::vector<GeometricOp>{GeometricOp::transform_vector, GeometricOp::transform_normal}));
+}
+
+TEST(Spaces, VectorToDirectionNeedsNormalize) {
+  EXPECT_EQ(messages_of("direction<world> d = normalize(pw - pw);"), Messages{});
+  auto c = check_source(std::string(kGlobals) + "void main() { direction<world> d = pw - pw; }");
+  ASSERT_EQ(c->messages(), Messages{"error: cannot initialize 'd' of type direction<world> with a value of type vector<world>"});
+  EXPECT_EQ(c->diagnostics.diagnostics()[0].hint, "a vector becomes a direction only through normalize()");
+}
+
+TEST(Spaces, DotAndCrossNeedOneSpace) {
+  EXPECT_EQ(messages_of("float c = dot(dw, normalize(vw)); vector<world> x = cross(vw, dw);"), Messages{});
+  EXPECT_EQ(messages_of("float<proj> c = dot(no, dw);"),
+            Messages{"error: argument 2 of 'dot' has type direction<world>, but the other arguments are in object"});
+}
+
+TEST(Spaces, GenericSpaceFunctions) {
+  const std::string globals = std::string(kGlobals) +
+                              "template<space S> float<length> dist(point<S> a, point<S> b) { return length(a - b); }\n";
+  EXPECT_EQ(check_source(globals + "void main() { float<length> d = dist(pw, pw); float<length> e = dist(po, po); }")->messages(),
+            Messages{});
+  EXPECT_EQ(check_source(globals + "void main() { float<length> d = dist(pw, po); }")->messages(),
+            Messages{"error: argument 2 of 'dist' has type point<object>, but the other arguments are in world"});
+}
+
+TEST(Spaces, PlainVec3IsConsistentWithEveryKind) {
+  EXPECT_EQ(check_source(std::string(kGlobals) + "in vec3 raw; void main() { point<world> p = pw + raw; vector<world> v = raw; p = raw; }")
+                ->messages(),
+            Messages{});
+}
+
+}  // namespace
+}  // namespace safegi::testing

@@ -28,19 +28,20 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
     set.add_triangle(t.a, t.b, t.c, i);
   }
   set.build();
+  // One single-triangle set per triangle: the same Möller–Trumbore test, no hierarchy.
+  std::vector<PrimitiveSet> singles(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    singles[i].add_triangle(triangles[i].a, triangles[i].b, triangles[i].c, 0);
+    singles[i].build();
+  }
   int hits = 0;
   for (int r = 0; r < 2000; ++r) {
     Float3 origin{coordinate(rng) * 2, coordinate(rng) * 2, coordinate(rng) * 2};
     Float3 direction = kernel::normalize(Float3{coordinate(rng), coordinate(rng), coordinate(rng)});
     kernel::Ray ray{origin, direction, 0.0f};
-    // Brute force, the same Möller–Trumbore test.
     float best = kernel::kInfinity;
-    for (const Tri& t : triangles) {
-      PrimitiveSet single;
-      single.add_triangle(t.a, t.b, t.c, 0);
-      single.build();
+    for (const PrimitiveSet& single : singles)
       if (auto hit = single.intersect(ray, best)) best = hit->distance;
-    }
     std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
     ASSERT_EQ(hit.has_value(), best < kernel::kInfinity);
     if (hit) {

@@ -87,6 +87,10 @@ int main(int argc, char** argv) {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.total_rays()) / stats.seconds : 0.0;
+    // CPU time of the whole process: on a shared machine, rays per CPU-second is
+    // the per-core throughput even when wall-clock time is not.
+    double cpu_seconds = usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec +
+                         usage.ru_stime.tv_usec * 1e-6;
     if (!quiet)
       std::fprintf(stderr, "%dx%d, %d spp in %.2f s: %.2f M rays (%.2f M rays/s), peak memory %.1f MiB\n",
                    image.width, image.height, stats.samples_per_pixel, stats.seconds, stats.total_rays() * 1e-6,
@@ -98,11 +102,13 @@ int main(int argc, char** argv) {
       std::printf(
           "{\"width\": %d, \"height\": %d, \"spp\": %d, \"seconds\": %.4f, \"camera_rays\": %llu, "
           "\"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays_per_second\": %.0f, "
-          "\"samples_per_second\": %.0f, \"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
+          "\"samples_per_second\": %.0f, \"cpu_seconds\": %.3f, \"rays_per_cpu_second\": %.0f, "
+          "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
           image.width, image.height, stats.samples_per_pixel, stats.seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
           static_cast<unsigned long long>(stats.shadow_rays), rays_per_second,
-          stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0, usage.ru_maxrss,
+          stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0, cpu_seconds,
+          cpu_seconds > 0 ? static_cast<double>(stats.total_rays()) / cpu_seconds : 0.0, usage.ru_maxrss,
           static_cast<unsigned long long>(stats.invalid_samples));
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << "\n";

@@ -570,6 +570,26 @@ std::string line_and_column(std::string_view text, size_t byte) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
+// The parser quotes what it read, which may be any byte: keep messages printable.
+std::string printable(std::string_view text) {
+  std::string result;
+  for (unsigned char c : text) {
+    if (c >= 0x20 && c < 0x7f) {
+      result += static_cast<char>(c);
+    } else {
+      static const char* const kHex = "0123456789ABCDEF";
+      result += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+    }
+  }
+  return result;
+}
+
+// nlohmann's messages start with "[json.exception.<kind>.<id>] ".
+std::string without_exception_id(const std::string& message) {
+  size_t close = message.find("] ");
+  return message.rfind("[json.exception.", 0) == 0 && close != std::string::npos ? message.substr(close + 2) : message;
+}
+
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
@@ -578,24 +598,20 @@ Scene parse_scene(std::string_view json_text, std::string_view display_name,
   try {
     root = Json::parse(json_text.begin(), json_text.end());
   } catch (const Json::parse_error& error) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> our own line:col.
     std::string message = error.what();
-    // nlohmann's text: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     size_t colon = message.find(": ", message.find("parse error"));
-    std::string raw_reason = colon == std::string::npos ? message : message.substr(colon + 2);
-    // The parser quotes what it read, which may be any byte: keep messages printable.
-    std::string reason;
-    for (unsigned char c : raw_reason) {
-      if (c >= 0x20 && c < 0x7f) {
-        reason += static_cast<char>(c);
-      } else {
-        static const char* const kHex = "0123456789ABCDEF";
-        reason += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
-      }
-    }
+    std::string reason = printable(colon == std::string::npos ? message : message.substr(colon + 2));
     size_t at = error.byte == 0 ? 0 : error.byte - 1;
     throw SceneError(std::string(display_name) + ":" + line_and_column(json_text, at) + ": invalid JSON: " + reason);
+  } catch (const Json::exception& error) {  // e.g. a number too large for a double
+    throw SceneError(std::string(display_name) + ": invalid JSON: " + printable(without_exception_id(error.what())));
   }
-  return Loader(display_name, base_directory).load(root);
+  try {
+    return Loader(display_name, base_directory).load(root);
+  } catch (const Json::exception& error) {  // a value of a type the loader did not expect
+    throw SceneError(std::string(display_name) + ": " + printable(without_exception_id(error.what())));
+  }
 }
 
 Scene load_scene(const std::filesystem::path& file) {

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
 
 namespace safegi::render {
 namespace {
@@ -42,6 +45,8 @@ TEST(SceneLoader, WrongDimensionNamesPathExpectedAndFound) {
 
 TEST(SceneLoader, MalformedInput) {
   EXPECT_EQ(load_error("{\n  \"camera\": [1, 2,\n}"), "test.json:3:1: invalid JSON: syntax error while parsing value - unexpected '}'; expected '[', '{', or a literal");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"spp": 1e999})")),
+            "test.json: invalid JSON: number overflow parsing '1e999'");
   EXPECT_EQ(load_error("[]"), "test.json: expected an object, got []");
   EXPECT_EQ(load_error("{}"), "test.json: missing field 'camera'");
   EXPECT_EQ(load_error(with_camera(R"("colour": 1)")),
@@ -85,6 +90,39 @@ TEST(SceneLoader, BundledScenesLoad) {
     ++count;
   }
   EXPECT_GE(count, 6);
+}
+
+}  // namespace
+}  // namespace safegi::render
+
+namespace safegi::render {
+namespace {
+
+// Damaged scene files of every kind give a SceneError, never another exception or a crash.
+TEST(SceneLoader, DamagedFilesGiveSceneErrors) {
+  std::filesystem::path directory = std::filesystem::path(SAFEGI_SCENES_DIR);
+  std::string original;
+  {
+    std::ifstream in(directory / "phong.json");
+    original.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string replacements[] = {"", "0", "-1", "\"", "{", "]", "1e999", "\"5 W\"", "null", "[1,2]", "\"m\"", "true"};
+  std::mt19937 rng(2024);
+  int errors = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::string text = original;
+    size_t at = std::uniform_int_distribution<size_t>(0, text.size() - 1)(rng);
+    size_t length = std::uniform_int_distribution<size_t>(0, 12)(rng);
+    text.replace(at, length, replacements[trial % std::size(replacements)]);
+    try {
+      parse_scene(text, "damaged.json", directory);
+    } catch (const SceneError&) {
+      ++errors;
+    } catch (const std::exception& other) {
+      ADD_FAILURE() << "unexpected exception: " << other.what() << "\n" << text;
+    }
+  }
+  EXPECT_GT(errors, 200);
 }
 
 }  // namespace

@@ -532,10 +532,12 @@ void GlslPrinter::statement_inline(const Stmt& s) {
       const auto& sw = static_cast<const SwitchStmt&>(s);
       out_ += "switch (";
       expression(*sw.selector);
-      out_ += ") ";
-      ++level_;  // case labels print one level out, their statements one in
-      statement_inline(*sw.body);
-      --level_;
+      out_ += ") {\n";
+      level_ += 2;  // case labels print one level out, their statements one in
+      for (const Stmt* child : sw.body->statements) statement(*child);
+      level_ -= 2;
+      line_start();
+      out_ += '}';
       break;
     }
     case NodeKind::CaseLabel:

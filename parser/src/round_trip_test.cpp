@@ -1,6 +1,9 @@
 // Round trip: parse -> print -> parse gives the same tree (compared as
 // dumps), and glslang accepts the printed GLSL.
 
+#include <cstdio>
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
@@ -168,6 +171,26 @@ TEST_P(RoundTrip, GlslangAcceptsTheOriginalAndThePrintedGlsl) {
   EXPECT_TRUE(glslang_accepts(print_glsl(parsed->unit(), options), sample.stage, &log)) << log;
 }
 
+// Every node carries a range, and begin <= end.
+TEST_P(RoundTrip, EveryNodeHasASourceRange) {
+  auto parsed = parse_text(GetParam().source);
+  DumpOptions options;
+  options.ranges = true;
+  std::istringstream dump(dump_ast(parsed->unit(), options));
+  int nodes = 0;
+  for (std::string line; std::getline(dump, line);) {
+    std::size_t at = line.find(" @");
+    ASSERT_NE(at, std::string::npos) << line;
+    unsigned l1 = 0, c1 = 0, l2 = 0, c2 = 0;
+    ASSERT_EQ(std::sscanf(line.c_str() + at + 2, "%u:%u-%u:%u", &l1, &c1, &l2, &c2), 4) << line;
+    EXPECT_GT(l1, 0u) << line;
+    EXPECT_GT(c1, 0u) << line;
+    EXPECT_TRUE(l1 < l2 || (l1 == l2 && c1 <= c2)) << line;
+    ++nodes;
+  }
+  EXPECT_GT(nodes, 5);
+}
+
 INSTANTIATE_TEST_SUITE_P(Samples, RoundTrip, ::testing::ValuesIn(kSamples),
                          [](const auto& info) { return std::string(info.param.name); });
 
@@ -227,6 +250,44 @@ TEST(RoundTripAnnotated, PrintedWithoutAnnotationsIsPlainGlslThatGlslangAccepts)
   EXPECT_NE(plain.find("uniform mat4 lightFromWorld;"), std::string::npos) << plain;
   EXPECT_NE(plain.find("uniform sampler2D shadowMap;"), std::string::npos) << plain;
   EXPECT_NE(plain.find("2.0 * (0.01)"), std::string::npos) << plain;
+}
+
+TEST(Printer, LayoutOfPrintedGlsl) {
+  auto parsed = parse_text(
+      "layout(std140) uniform B { mat4 m; } b; struct S { float x; };"
+      "float f(float a) { if (a > 0.0) return a; else if (a < -1.0) { a = 1.0; } else a = 2.0;"
+      " switch (int(a)) { case 1: a = - -a; break; default: break; } for (int i = 0; i < 2; ++i) a += 1.0;"
+      " do a *= 2.0; while (a < 8.0); return a; }");
+  ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
+  EXPECT_EQ(parsed->glsl(),
+            "layout(std140) uniform B {\n"
+            "    mat4 m;\n"
+            "} b;\n"
+            "struct S {\n"
+            "    float x;\n"
+            "};\n"
+            "float f(float a) {\n"
+            "    if (a > 0.0)\n"
+            "        return a;\n"
+            "    else if (a < -1.0) {\n"
+            "        a = 1.0;\n"
+            "    }\n"
+            "    else\n"
+            "        a = 2.0;\n"
+            "    switch (int(a)) {\n"
+            "        case 1:\n"
+            "            a = - -a;\n"
+            "            break;\n"
+            "        default:\n"
+            "            break;\n"
+            "    }\n"
+            "    for (int i = 0; i < 2; ++i)\n"
+            "        a += 1.0;\n"
+            "    do\n"
+            "        a *= 2.0;\n"
+            "    while (a < 8.0);\n"
+            "    return a;\n"
+            "}\n");
 }
 
 }  // namespace

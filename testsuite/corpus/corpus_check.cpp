@@ -160,6 +160,41 @@ struct Tally {
   }
 };
 
+// Parse, print, re-parse one shader glslang accepts; tallies and notes failures.
+void check_round_trip(const std::filesystem::path& path, const std::string& text, EShLanguage stage, Tally& all,
+                      Tally& recent, std::vector<std::string>& failures) {
+  FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
+  bool is_modern = first.ok ? modern(first) : true;
+  ++all.total;
+  recent.total += is_modern;
+  if (!first.ok) {
+    failures.push_back(path.string() + ": parse: " + first.first_error);
+    return;
+  }
+  FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
+  bool same = second.ok && second.dump == first.dump;
+  bool accepted = glslang_accepts(first.printed, stage);
+  for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
+    if (!t) continue;
+    ++t->parsed;
+    t->round_tripped += same;
+    t->printed_accepted += accepted;
+  }
+  if (!same) {
+    failures.push_back(path.string() + ": round trip: " +
+                       (second.ok ? std::string("tree differs after printing") : second.first_error));
+  } else if (!accepted) {
+    failures.push_back(path.string() + ": printed GLSL rejected by glslang");
+  }
+}
+
+void print_round_trips(const Tally& all, const Tally& recent, const std::vector<std::string>& failures) {
+  all.print("accepted by glslang:");
+  recent.print("of which #version>=330/300es:");
+  std::printf("failures (%zu):\n", failures.size());
+  for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
+}
+
 int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
   Tally all, recent;
   int considered = 0, rejected_by_glslang = 0;
@@ -173,37 +208,11 @@ int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
       ++rejected_by_glslang;
       continue;
     }
-    FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
-    bool is_modern = first.ok ? modern(first) : true;
-    for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
-      if (t) ++t->total;
-    }
-    if (!first.ok) {
-      failures.push_back(path.string() + ": parse: " + first.first_error);
-      continue;
-    }
-    FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
-    bool same = second.ok && second.dump == first.dump;
-    bool accepted = glslang_accepts(first.printed, *stage);
-    for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
-      if (!t) continue;
-      ++t->parsed;
-      t->round_tripped += same;
-      t->printed_accepted += accepted;
-    }
-    if (!same) {
-      failures.push_back(path.string() + ": round trip: " +
-                         (second.ok ? std::string("tree differs after printing") : second.first_error));
-    } else if (!accepted) {
-      failures.push_back(path.string() + ": printed GLSL rejected by glslang");
-    }
+    check_round_trip(path, text, *stage, all, recent, failures);
   }
   std::printf("glslang corpus: %d shaders considered, %d rejected by glslang (not counted; %d of them crashed it), %d accepted\n",
               considered, rejected_by_glslang, glslang_crashes, all.total);
-  all.print("accepted by glslang:");
-  recent.print("of which #version>=330/300es:");
-  std::printf("failures (%zu):\n", failures.size());
-  for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
+  print_round_trips(all, recent, failures);
   return 0;
 }
 
@@ -213,6 +222,8 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
   int syntax_fail = 0, syntax_fail_rejected = 0;  // expected to fail, and glslang says "syntax error"
   std::vector<std::string> syntax_missed;
   std::vector<std::string> ours_rejects_valid;
+  Tally all, recent;  // round trips of the shaders glslang accepts, whatever piglit expects
+  std::vector<std::string> round_trip_failures;
   for (const auto& path : files) {
     auto stage = stage_of(path);
     if (!stage) continue;
@@ -224,6 +235,7 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
     FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string());
     Verdict verdict = glslang_verdict(text, *stage);
     bool glslang_ok = verdict == Verdict::accepted;
+    if (glslang_ok) check_round_trip(path, text, *stage, all, recent, round_trip_failures);
     agree += ours.ok == expect_pass;
     glslang_agree += glslang_ok == expect_pass;
     if (expect_pass) {
@@ -252,6 +264,8 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
   for (const std::string& f : syntax_missed) std::printf("  %s\n", f.c_str());
   std::printf("expected to pass but rejected by the front end (%zu):\n", ours_rejects_valid.size());
   for (const std::string& f : ours_rejects_valid) std::printf("  %s\n", f.c_str());
+  std::printf("piglit shaders glslang accepts, parsed and round-tripped:\n");
+  print_round_trips(all, recent, round_trip_failures);
   return 0;
 }
 

@@ -225,9 +225,13 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
   const std::vector<Signature>* sigs = builtins_->find(builtin);
   std::vector<ArgInfo> infos{{lhs.type, false}, {rhs.type, false}};
   if (!sigs || !match_shapes(*sigs, infos)) {
-    operand_mismatch("invalid operands to binary expression (" + name_of(lhs.type) + " and " + name_of(rhs.type) + ")", lhs, rhs,
-                     range, is_map(lhs.type.geometry) ? "a map applies to a point, vector, direction or normal of its source space" : "",
-                     "E-INVALID-OPERANDS");
+    std::string message = "invalid operands to binary expression (" + name_of(lhs.type) + " and " + name_of(rhs.type) + ")";
+    std::string hint = is_map(lhs.type.geometry) ? "a map applies to a point, vector, direction or normal of its source space" : "";
+    if (is_map(lhs.type.geometry) && is_map(rhs.type.geometry)) {
+      message = "cannot compose " + name_of(lhs.type) + " with " + name_of(rhs.type);
+      hint = rhs.type.geometry == Geometry::projmap ? "a projective map can only be applied last (leftmost)" : "";
+    }
+    operand_mismatch(message, lhs, rhs, range, hint, "E-INVALID-OPERANDS");
     return std::nullopt;
   }
   Value v = builtin_call(static_cast<const ast::CallExpr*>(nullptr), builtin, *sigs, args, range, range);
@@ -284,10 +288,16 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
         std::optional<SpaceId> want = spaces.resolve(pt);
         const SpaceSlot expected = want ? unrigid(*want) : SpaceSlot::unknown();
         const std::string space_word = expected.state == SpaceSlot::State::known ? reg.space_name(expected.id) : "another space";
-        arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " +
-                         (ps.state == SpaceSlot::State::generic ? "the other arguments are in " + space_word
-                                                                : fn + " expects " + name_of(p, shape)),
-                  space_hint(expected, *aslots[k]), "E-SPACE-MISMATCH");
+        std::string message = "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " +
+                              (ps.state == SpaceSlot::State::generic ? "the other arguments are in " + space_word
+                                                                     : fn + " expects " + name_of(p, shape));
+        const bool applying = callee == "transform" || callee == "transform_normal" || callee == "project";
+        if (applying && i == 1 && args.size() == 2)
+          message = "cannot apply " + name_of(args[0].type) + " to " + name_of(a.type) + ": the map takes values in " + space_word;
+        if (callee == "compose" && args.size() == 2)
+          message = "cannot compose " + name_of(args[0].type) + " with " + name_of(args[1].type) +
+                    ": the right-hand map must end where the left-hand one starts";
+        arg_error(i, message, callee == "compose" ? "" : space_hint(expected, *aslots[k]), "E-SPACE-MISMATCH");
         return std::nullopt;
       }
     }

@@ -135,7 +135,8 @@ class Checker {
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
   void add_origin_note(Diagnostic& d, const Value& v) const;
 
-  std::string name_of(const Type& t) const { return type_name(t, result_.registry); }
+  // In the program's words; inside a generic function its parameters print by name.
+  std::string name_of(const Type& t) const { return type_name(t, result_.registry, template_dims_, template_spaces_); }
   std::string name_of(const Type& t, const CallShape& s) const {
     return type_name(t, result_.registry, s.dim_params, s.space_params);
   }

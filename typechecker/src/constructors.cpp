@@ -7,6 +7,18 @@
 namespace safegi::detail {
 
 Value Checker::constructor(const ast::CallExpr& e) {
+  if (e.constructor_type && e.constructor_type->form == ast::TypeSpecifier::Form::Builtin && !e.constructor_type->annotation &&
+      e.constructor_type->array_dims.empty()) {
+    // texture2D(...) and friends: a Vulkan texture type word in newer GLSL, a built-in function in older.
+    if (const std::vector<Signature>* sigs = builtins_->find(e.constructor_type->name)) {
+      std::vector<Value> args;
+      for (const ast::Expr* a : e.args) {
+        args.push_back(expr(a));
+        if (args.back().type.is_error()) return error_value(e.range);
+      }
+      return builtin_call(&e, e.constructor_type->name, *sigs, args, e.constructor_type->range, e.range);
+    }
+  }
   Type t = resolve_type(e.constructor_type);
   std::vector<Value> args;
   bool bad = t.is_error();

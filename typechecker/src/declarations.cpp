@@ -216,12 +216,15 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
                          !init.zero && declared.shape != Shape::structure && declared.shape != Shape::opaque &&
                          declared.rows == init.type.rows && declared.shape == init.type.shape && declared.array == init.type.array;
       if (infer && init.type.is_annotated()) {
-        // `auto`-style inference of unannotated locals (docs/language.md, gradual typing).
-        Type inferred = init.type;
-        inferred.scalar = declared.scalar;
-        inferred.dim.spelling = init.type.dim.spelling;
-        declared = inferred;
-        v.origin = {decl.initializer->range, "type of '" + decl.name + "' inferred as " + name_of(declared) + " from its initializer"};
+        // `auto`-style inference of unannotated locals (docs/language.md, gradual typing),
+        // once the GLSL types agree.
+        if (check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize")) {
+          Type inferred = init.type;
+          inferred.scalar = declared.scalar;
+          declared = inferred;
+          v.origin = {decl.initializer->range,
+                      "type of '" + decl.name + "' inferred as " + name_of(declared) + " from its initializer"};
+        }
       } else if (!declared.is_error()) {
         check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize");
       }
@@ -431,7 +434,7 @@ void Checker::statement(const ast::Stmt* s) {
       }
       std::optional<Origin> origin = Origin{current_function_->decl->return_type->range,
                                             "return type of '" + current_function_->name + "' declared here"};
-      check_assignable(want, v, r->value->range, "", origin, "return");
+      check_assignable(want, v, r->value->range, current_function_->name, origin, "return");
       break;
     }
     default: break;

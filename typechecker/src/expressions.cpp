@@ -209,8 +209,10 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
     report(std::move(d));
     return false;
   };
-  const std::string sentence = std::string("cannot ") + action + " " + subject + " of type " + name_of(target) +
-                               " with a value of type " + name_of(v);
+  const std::string sentence =
+      std::string(action) == "return"
+          ? "cannot return a value of type " + name_of(v) + " from '" + target_name + "', which returns " + name_of(target)
+          : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(v);
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();

@@ -4,6 +4,8 @@
 // the preprocessor drives it.
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <safegi/diagnostics/diagnostic.hpp>
@@ -21,7 +23,14 @@ struct LexerOptions {
   // off and checks the numbers that reach its output, as a C preprocessor
   // accepts any pp-number (`#define SUFFIX 1D` is fine until it is used).
   bool check_numbers = true;
+  // Report bytes that are no GLSL token (`@`, non-ASCII outside comments).
+  // Off in the preprocessor, which reports the ones that reach its output:
+  // an unused macro body may hold anything.
+  bool check_characters = true;
 };
+
+// The error for an `invalid` token's spelling, e.g. "invalid character '@' in program".
+std::string invalid_character_message(std::string_view spelling);
 
 class Lexer {
  public:

@@ -25,7 +25,9 @@ struct PreprocessorOptions {
   std::vector<std::pair<std::string, std::string>> defines;     // -D NAME=value (value may be empty)
   std::vector<std::string> undefines;                           // -U NAME
   // Extensions the target supports: each is predefined as a macro with value
-  // 1, as drivers do (`#ifdef GL_ARB_gpu_shader5`). None by default.
+  // 1, as drivers do (`#ifdef GL_ARB_gpu_shader5`). When the list is not
+  // empty, `#extension X : require` of another extension is an error (enable
+  // and warn: a warning). Empty by default: every extension is accepted.
   std::vector<std::string> extension_macros;
   // Reads an include candidate; nullopt when it does not exist. Default: the
   // file system. Tests and embedders (an in-memory prelude) replace it.

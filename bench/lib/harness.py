@@ -1,0 +1,109 @@
+"""Shared measurement helpers for bench/*/run.py.
+
+Every comparison is measured in the same run: whole-process timings are
+interleaved (A B A B ...) so that drift in machine load hits both sides alike,
+and reported as median with min and max. Instruction counts come from
+valgrind's callgrind, which counts the same total whatever else the machine is
+doing, so they back every overhead claim that wall time on a shared 2-core
+machine cannot.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import statistics
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def build_dir() -> Path:
+    return Path(os.environ.get("SAFEGI_BUILD", ROOT / "build"))
+
+
+def quick() -> bool:
+    return os.environ.get("SAFEGI_BENCH_QUICK", "") not in ("", "0")
+
+
+def binary(name: str) -> Path:
+    path = build_dir() / "bin" / name
+    if not path.exists():
+        raise SystemExit(f"bench: {path} is missing; build first (scripts/build.sh)")
+    return path
+
+
+@dataclass
+class Timing:
+    samples: list[float]
+
+    @property
+    def median(self) -> float:
+        return statistics.median(self.samples)
+
+    def cell(self) -> str:
+        return f"{self.median:.3f} ({min(self.samples):.3f}–{max(self.samples):.3f})"
+
+
+def wall_time(command: list[str]) -> float:
+    start = time.perf_counter()
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def interleaved(commands: dict[str, list[str]], repeats: int) -> dict[str, Timing]:
+    """Runs every command `repeats` times, alternating between them."""
+    results: dict[str, list[float]] = {name: [] for name in commands}
+    for _ in range(repeats):
+        for name, command in commands.items():
+            results[name].append(wall_time(command))
+    return {name: Timing(samples) for name, samples in results.items()}
+
+
+def instructions(command: list[str]) -> int:
+    """Total instructions executed by `command` (all threads), by callgrind."""
+    if shutil.which("valgrind") is None:
+        raise SystemExit("bench: valgrind is needed for instruction counts (scripts/install-deps.sh)")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "callgrind.out"
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *command],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        for line in out.read_text().splitlines():
+            match = re.match(r"^(?:summary|totals):\s+(\d+)", line)
+            if match:
+                return int(match.group(1))
+    raise RuntimeError(f"no instruction total in callgrind output of {command}")
+
+
+def ratio(a: float, b: float) -> str:
+    return f"{a / b:.4f}" if b else "n/a"
+
+
+def table(header: list[str], rows: list[list[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines) + "\n"
+
+
+def machine_line() -> str:
+    load = os.getloadavg()[0]
+    cpu = "unknown CPU"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{os.cpu_count()} cores, {cpu}; load average at start {load:.2f}"
+
+
+def write_section(name: str, text: str) -> None:
+    out = Path(os.environ.get("SAFEGI_BENCH_OUT", ROOT / "out" / "bench"))
+    out.mkdir(parents=True, exist_ok=True)
+    (out / f"{name}.md").write_text(text)
+    print(text)

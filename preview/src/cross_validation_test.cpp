@@ -1,0 +1,119 @@
+// The preview against the CPU renderer's direct-lighting integrator on the
+// bundled scenes, at small resolutions. Each tolerance is about twice the
+// difference measured when it was set (docs/preview.md, "Cross-validation"):
+// the CPU images' own noise is 5-10x smaller, so what is left is the
+// preview's approximation — shadow-map texels and bias at shadow edges and
+// contacts, 16 anti-aliasing positions per pixel at silhouettes, tessellated
+// spheres. They are not loosened to pass.
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+#include <safegi/runtime_gl/context.hpp>
+
+#include "safegi/cpu_renderer/renderer.hpp"
+#include "safegi/cpu_renderer/scene_loader.hpp"
+#include "safegi/preview/preview.hpp"
+
+namespace safegi::preview {
+namespace {
+
+using render::Image;
+using render::Scene;
+
+struct Agreement {
+  double relative_rmse = 0;      // bench/renderer/image_compare.cpp's: sqrt(mean (v-r)² / (r² + 0.01))
+  double mean_ratio[3] = {0, 0, 0};
+};
+
+Agreement compare(const Image& image, const Image& reference) {
+  Agreement a;
+  double sum[3] = {0, 0, 0}, reference_sum[3] = {0, 0, 0}, relative = 0;
+  for (size_t i = 0; i < image.rgb.size(); ++i) {
+    double v = image.rgb[i], r = reference.rgb[i];
+    relative += (v - r) * (v - r) / (r * r + 0.01);
+    sum[i % 3] += v;
+    reference_sum[i % 3] += r;
+  }
+  a.relative_rmse = std::sqrt(relative / static_cast<double>(image.rgb.size()));
+  for (int c = 0; c < 3; ++c) a.mean_ratio[c] = sum[c] / reference_sum[c];
+  return a;
+}
+
+Image cpu_direct(Scene scene, int width, int height, int spp) {
+  render::RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.width = width;
+  options.settings.height = height;
+  options.settings.spp = spp;
+  options.settings.integrator = render::IntegratorType::direct;
+  options.seed = 7;
+  return render::render(scene, options);
+}
+
+class CrossValidation : public ::testing::Test {
+ protected:
+  gl::Context context;
+
+  Agreement check(const Scene& scene, int width, int height, int spp, PreviewOptions options) {
+    options.width = width;
+    options.height = height;
+    Preview preview(scene, options);
+    Image gl_image = preview.render();
+    Image cpu_image = cpu_direct(scene, width, height, spp);
+    for (float v : gl_image.rgb) EXPECT_TRUE(std::isfinite(v));
+    Agreement a = compare(gl_image, cpu_image);
+    std::printf("relative RMSE %.4f, mean ratio %.4f %.4f %.4f\n", a.relative_rmse, a.mean_ratio[0], a.mean_ratio[1],
+                a.mean_ratio[2]);
+    return a;
+  }
+};
+
+void expect_means_within(const Agreement& a, double tolerance) {
+  for (double ratio : a.mean_ratio) EXPECT_NEAR(ratio, 1.0, tolerance);
+}
+
+Scene load(const char* file) { return render::load_scene(std::string(SAFEGI_SCENES_DIR) + "/" + file); }
+
+// The Cornell box lit by its area light: 1024 light samples per pixel (64 × 16 passes).
+TEST_F(CrossValidation, CornellBoxAreaLight) {
+  PreviewOptions options;
+  options.light_samples = 64;
+  options.passes = 16;
+  Agreement a = check(load("cornell-box/cornell-box.json"), 64, 64, 1024, options);
+  EXPECT_LT(a.relative_rmse, 0.04);
+  expect_means_within(a, 0.01);
+}
+
+// The box lit by a point light instead (preview/scenes/cornell-point-light.json): hard shadows from the cube map.
+TEST_F(CrossValidation, CornellBoxPointLight) {
+  Scene scene = render::load_scene(SAFEGI_PREVIEW_SCENES_DIR "/cornell-point-light.json");
+  PreviewOptions options;
+  options.passes = 16;
+  Agreement a = check(scene, 64, 64, 256, options);
+  EXPECT_LT(a.relative_rmse, 0.02);
+  expect_means_within(a, 0.01);
+}
+
+// Phong spheres under a point light and an area light.
+TEST_F(CrossValidation, PhongPointAndAreaLight) {
+  PreviewOptions options;
+  options.light_samples = 64;
+  options.passes = 16;
+  Agreement a = check(load("phong.json"), 100, 40, 1024, options);
+  EXPECT_LT(a.relative_rmse, 0.045);
+  expect_means_within(a, 0.01);
+}
+
+// Motion blur: 16 shutter times accumulated against the CPU renderer's random times.
+TEST_F(CrossValidation, MotionBlur) {
+  PreviewOptions options;
+  options.light_samples = 32;
+  options.passes = 32;
+  Agreement a = check(load("motion-blur.json"), 80, 60, 1024, options);
+  EXPECT_LT(a.relative_rmse, 0.025);
+  expect_means_within(a, 0.01);
+}
+
+}  // namespace
+}  // namespace safegi::preview

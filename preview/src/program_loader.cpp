@@ -1,0 +1,52 @@
+#include "program_loader.hpp"
+
+#include <safegi/compiler/compile.hpp>
+
+namespace safegi::preview {
+
+namespace {
+
+// The compiler writes projmap<A, B> with kind "map" (docs/symbol-table.md: the
+// printed type keeps the word), while runtime_gl describes the typed library's
+// projective_map<A, B> with kind projective_map; without this the projection
+// uniforms could only be bound as affine maps. The printed type tells them apart.
+void mark_projective_maps(std::vector<gl::Symbol>& symbols) {
+  for (gl::Symbol& symbol : symbols) {
+    if (symbol.type.kind == gl::Kind::map && symbol.printed_type.starts_with("projmap<"))
+      symbol.type.kind = gl::Kind::projective_map;
+    mark_projective_maps(symbol.members);
+  }
+}
+
+}  // namespace
+
+gl::Program load_program(const std::vector<ShaderFile>& files,
+                         const std::vector<std::pair<std::string, std::string>>& defines, std::string name) {
+  std::vector<ShaderSource> sources;
+  for (const ShaderFile& file : files) sources.push_back({file.path, file.text, std::nullopt});
+  CompileOptions options;
+  options.defines = defines;
+  CompileResult result = compile(sources, options);
+  if (!result.success) throw ShaderLoadError(result.diagnostics_text(false));
+  for (gl::StageSymbols& stage : result.symbols.stages) mark_projective_maps(stage.symbols);
+  std::vector<gl::ProgramSource> stages;
+  for (const StageOutput& stage : result.stages) {
+    std::optional<gl::Stage> table_stage = to_table_stage(stage.stage);
+    if (!table_stage) throw ShaderLoadError(stage.path + ": error: a stage runtime_gl cannot load");
+    stages.push_back({*table_stage, stage.glsl, result.symbols});
+  }
+  return gl::Program(std::move(stages), std::move(name));
+}
+
+gl::Program load_embedded_program(const std::vector<std::string>& names,
+                                  const std::vector<std::pair<std::string, std::string>>& defines, std::string name) {
+  std::vector<ShaderFile> files;
+  for (const std::string& file : names) {
+    std::optional<std::string_view> text = embedded_shader(file);
+    if (!text) throw ShaderLoadError("safegi-preview: error: no embedded shader named '" + file + "'");
+    files.push_back({"preview/shaders/" + file, std::string(*text)});
+  }
+  return load_program(files, defines, std::move(name));
+}
+
+}  // namespace safegi::preview

@@ -1,0 +1,176 @@
+#include "scene_meshes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sampling.hpp"
+
+namespace safegi::preview {
+
+namespace {
+
+void add_mesh(SceneMeshes& meshes, const Shape& shape) {
+  for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+    PointObject a = shape.positions[shape.indices[i]];
+    PointObject b = shape.positions[shape.indices[i + 1]];
+    PointObject c = shape.positions[shape.indices[i + 2]];
+    auto facet = sg::to_normal(sg::normalize(sg::cross(b - a, c - a)));
+    for (PointObject p : {a, b, c}) {
+      meshes.positions.push_back(p);
+      meshes.normals.push_back(facet);
+    }
+  }
+}
+
+void add_sphere(SceneMeshes& meshes, const Shape& shape, int segments) {
+  const int rings = std::max(2, segments / 2);
+  auto direction_at = [&](int ring, int segment) {
+    float theta = kPi * static_cast<float>(ring) / static_cast<float>(rings);
+    float phi = 2 * kPi * static_cast<float>(segment) / static_cast<float>(segments);
+    return direction<Object>(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+  };
+  for (int ring = 0; ring < rings; ++ring)
+    for (int segment = 0; segment < segments; ++segment) {
+      direction<Object> d00 = direction_at(ring, segment), d01 = direction_at(ring, segment + 1);
+      direction<Object> d10 = direction_at(ring + 1, segment), d11 = direction_at(ring + 1, segment + 1);
+      for (direction<Object> d : {d00, d10, d11, d00, d11, d01}) {
+        meshes.positions.push_back(shape.center + d * shape.radius);
+        meshes.normals.push_back(sg::to_normal(d));
+      }
+    }
+}
+
+}  // namespace
+
+SceneMeshes tessellate(const Scene& scene, int sphere_segments) {
+  SceneMeshes meshes;
+  for (const Shape& shape : scene.shapes) {
+    int first = static_cast<int>(meshes.positions.size());
+    if (shape.type == Shape::Type::sphere)
+      add_sphere(meshes, shape, sphere_segments);
+    else
+      add_mesh(meshes, shape);
+    meshes.ranges.push_back({first, static_cast<int>(meshes.positions.size()) - first});
+  }
+  return meshes;
+}
+
+namespace {
+
+ObjectToWorld to_map(const Affine& affine) {
+  glm::mat4 forward(1.0f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) forward[c][r] = affine.m[r][c];
+  return sg::from_raw<ObjectToWorld>({forward, glm::inverse(forward)});
+}
+
+}  // namespace
+
+ScenePoses::ScenePoses(const Scene& scene) : scene_(scene) {
+  const Camera& camera = scene.camera;
+  bool shutter_open = camera.shutter_close > camera.shutter_open;
+  for (const Shape& shape : scene.shapes) {
+    if (shutter_open && shape.render_from_object_at_close) {
+      motions_.emplace_back(RigidMotion(Affine::from(shape.render_from_object),
+                                        Affine::from(*shape.render_from_object_at_close),
+                                        sg::raw(camera.shutter_open), sg::raw(camera.shutter_close)));
+      animated_ = true;
+    } else {
+      motions_.emplace_back();
+    }
+  }
+  // Bounds over the shutter: enough poses that a turning object's sweep is covered.
+  glm::vec3 lower(INFINITY), upper(-INFINITY);
+  constexpr int kPoses = 16;
+  for (size_t s = 0; s < scene.shapes.size(); ++s) {
+    const Shape& shape = scene.shapes[s];
+    for (int k = 0; k <= (motions_[s] ? kPoses : 0); ++k) {
+      Time t = camera.shutter_open + (camera.shutter_close - camera.shutter_open) * (static_cast<float>(k) / kPoses);
+      ObjectToWorld to_world = at(s, t);
+      auto extend = [&](PointWorld p) {
+        lower = glm::min(lower, sg::raw(p));
+        upper = glm::max(upper, sg::raw(p));
+      };
+      if (shape.type == Shape::Type::sphere) {
+        Length r = sg::length(to_world(vector<Object>(shape.radius, sg::zero, sg::zero)));
+        PointWorld c = to_world(shape.center);
+        extend(c + VectorWorld(r, r, r));
+        extend(c - VectorWorld(r, r, r));
+      } else {
+        for (PointObject p : shape.positions) extend(to_world(p));
+      }
+    }
+  }
+  for (const PointLight& light : scene.point_lights) {
+    lower = glm::min(lower, sg::raw(light.position));
+    upper = glm::max(upper, sg::raw(light.position));
+  }
+  if (!(lower.x <= upper.x)) lower = upper = glm::vec3(0.0f);
+  center_ = sg::from_raw<PointWorld>(0.5f * (lower + upper));
+  radius_ = sg::from_raw<Length>(std::max(0.5f * glm::length(upper - lower), 1e-6f));
+}
+
+ObjectToWorld ScenePoses::at(size_t shape, Time time) const {
+  if (!motions_[shape]) return scene_.shapes[shape].render_from_object;
+  return to_map(motions_[shape]->at(sg::raw(time)));
+}
+
+Emitter::Emitter(const Scene& scene, int shape_index)
+    : shape_(shape_index),
+      radiance_(*scene.shapes[shape_index].emission),
+      two_sided_(scene.shapes[shape_index].two_sided_emission) {
+  const Shape& shape = scene.shapes[shape_index];
+  const ObjectToWorld& render_from_object = shape.render_from_object;
+  if (shape.type == Shape::Type::sphere) {
+    sphere_ = true;
+    center_ = render_from_object(shape.center);
+    radius_ = sg::length(render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero)));
+    area_ = 4 * sg::pi * radius_ * radius_;
+    return;
+  }
+  for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+    PointWorld a = render_from_object(shape.positions[shape.indices[i]]);
+    PointWorld b = render_from_object(shape.positions[shape.indices[i + 1]]);
+    PointWorld c = render_from_object(shape.positions[shape.indices[i + 2]]);
+    area_ += 0.5f * sg::length(sg::cross(b - a, c - a));
+    triangles_.push_back({a, b - a, c - a, sg::raw(area_)});
+  }
+  for (Triangle& t : triangles_) t.area_cdf /= sg::raw(area_);
+}
+
+EmitterPoint Emitter::sample(float u1, float u2) const {
+  if (sphere_) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    return {center_ + outward * radius_, sg::to_normal(outward)};
+  }
+  // u1 picks the triangle by area, and what is left of it places the point.
+  auto found = std::upper_bound(triangles_.begin(), triangles_.end(), u1,
+                                [](float u, const Triangle& t) { return u < t.area_cdf; });
+  if (found == triangles_.end()) --found;
+  float low = found == triangles_.begin() ? 0.0f : (found - 1)->area_cdf;
+  float width = found->area_cdf - low;
+  float u = width > 0 ? std::clamp((u1 - low) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+  float root = std::sqrt(u);
+  float b1 = 1 - root, b2 = u2 * root;
+  return {found->p0 + found->e1 * b1 + found->e2 * b2,
+          sg::to_normal(sg::normalize(sg::cross(found->e1, found->e2)))};
+}
+
+std::vector<Emitter> emitters_of(const Scene& scene) {
+  std::vector<Emitter> emitters;
+  for (size_t s = 0; s < scene.shapes.size(); ++s) {
+    if (!scene.shapes[s].emission) continue;
+    Emitter emitter(scene, static_cast<int>(s));
+    if (emitter.area() > sg::zero) emitters.push_back(std::move(emitter));
+  }
+  return emitters;
+}
+
+void r2_point(uint32_t index, float& u, float& v) {
+  constexpr double a1 = 0.7548776662466927, a2 = 0.5698402909980532;  // 1/g, 1/g² for the plastic number g
+  double x = 0.5 + a1 * index, y = 0.5 + a2 * index;
+  u = static_cast<float>(x - std::floor(x));
+  v = static_cast<float>(y - std::floor(y));
+}
+
+}  // namespace safegi::preview

@@ -1,0 +1,89 @@
+// The scene as the rasteriser sees it: every shape as triangles in object
+// space (spheres tessellated), its pose at any shutter time, and the emitters
+// as sets of point-like light samples.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "geometry.hpp"  // the CPU renderer's RigidMotion: both renderers move objects alike
+#include "safegi/cpu_renderer/scene.hpp"
+
+namespace safegi::preview {
+
+using namespace safegi::render;
+
+struct DrawRange {
+  int first = 0;
+  int count = 0;
+};
+
+struct SceneMeshes {
+  std::vector<PointObject> positions;  // non-indexed triangles, every shape after the other
+  std::vector<normal<Object>> normals; // flat for meshes, smooth for spheres
+  std::vector<DrawRange> ranges;       // one per Scene::shapes entry
+};
+
+// Spheres become `segments` × segments/2 quads: at 64 the silhouette lies within
+// 0.12% of the radius of the true sphere the CPU renderer intersects.
+SceneMeshes tessellate(const Scene& scene, int sphere_segments = 64);
+
+// Where each shape is at a time within the shutter (the CPU renderer's
+// interpolation of rigid motion: translation lerp, rotation slerp).
+class ScenePoses {
+ public:
+  explicit ScenePoses(const Scene& scene);
+  bool animated() const { return animated_; }
+  ObjectToWorld at(size_t shape, Time time) const;
+  // A sphere around everything the scene holds over the whole shutter.
+  PointWorld bounds_center() const { return center_; }
+  Length bounds_radius() const { return radius_; }
+
+ private:
+  const Scene& scene_;
+  std::vector<std::optional<RigidMotion>> motions_;
+  bool animated_ = false;
+  PointWorld center_;
+  Length radius_ = sg::zero;
+};
+
+struct EmitterPoint {
+  PointWorld position;
+  NormalWorld normal;
+};
+
+// A diffuse emitter (mesh or sphere) at its shutter-open pose, as the CPU
+// renderer's Lights place it, sampled uniformly by area.
+class Emitter {
+ public:
+  Emitter(const Scene& scene, int shape);
+  int shape() const { return shape_; }
+  Radiance radiance() const { return radiance_; }
+  bool two_sided() const { return two_sided_; }
+  quantity<dim::area> area() const { return area_; }
+  EmitterPoint sample(float u1, float u2) const;
+
+ private:
+  struct Triangle {
+    PointWorld p0;
+    VectorWorld e1, e2;
+    float area_cdf;
+  };
+  int shape_;
+  Radiance radiance_;
+  bool two_sided_;
+  bool sphere_ = false;
+  PointWorld center_;
+  Length radius_ = sg::zero;
+  std::vector<Triangle> triangles_;
+  quantity<dim::area> area_ = sg::zero;
+};
+
+std::vector<Emitter> emitters_of(const Scene& scene);
+
+// The i-th point of the R2 low-discrepancy sequence in [0,1)²: consecutive
+// runs of any length cover the square evenly, so pass p can take points
+// p·N … p·N+N−1 and all passes together stay well spread.
+void r2_point(uint32_t index, float& u, float& v);
+
+}  // namespace safegi::preview
