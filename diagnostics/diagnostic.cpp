@@ -71,10 +71,9 @@ void DiagnosticEngine::report(Diagnostic diagnostic) {
   if (options_.error_limit != 0 && error_count_ >= options_.error_limit &&
       diagnostics_.back().severity == Severity::error) {
     limit_reached_ = true;
-    diagnostics_.push_back(Diagnostic::error(
+    diagnostics_.push_back(Diagnostic::note(
         SourceRange{}, "too many errors emitted, stopping now (error limit " +
                            std::to_string(options_.error_limit) + ")"));
-    ++error_count_;
   }
 }
 

@@ -40,7 +40,9 @@ TEST(DiagnosticEngine, ErrorLimitStopsWithAFinalError) {
   EXPECT_TRUE(engine.limit_reached());
   engine.error({}, "c");
   ASSERT_EQ(engine.diagnostics().size(), 4u);
+  EXPECT_EQ(engine.diagnostics()[3].severity, Severity::note);
   EXPECT_EQ(engine.diagnostics()[3].message, "too many errors emitted, stopping now (error limit 2)");
+  EXPECT_EQ(engine.error_count(), 2u);
 }
 
 TEST(Diagnostic, BuildersChain) {

@@ -162,7 +162,7 @@ NumericLiteralCheck check_numeric_literal(std::string_view text) {
 KeywordContext KeywordContext::everything() {
   KeywordContext context;
   context.version = 460;
-  context.extension_groups = ~0u;
+  context.extension_groups = ~0u & ~(1u << static_cast<unsigned>(ExtensionGroup::vulkan));
   return context;
 }
 

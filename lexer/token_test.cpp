@@ -31,8 +31,10 @@ KeywordContext context(int version, bool es = false) {
 
 TEST(Token, EveryKeywordIsAKeywordWhenEverythingIsEnabled) {
   ASSERT_GT(kKeywords.size(), 280u);
+  KeywordContext all = KeywordContext::everything();
+  all.enable(ExtensionGroup::vulkan);
   for (const KeywordRow& k : kKeywords) {
-    EXPECT_EQ(classify_word(k.spelling, KeywordContext::everything()), k.kind) << k.spelling;
+    EXPECT_EQ(classify_word(k.spelling, all), k.kind) << k.spelling;
     EXPECT_TRUE(is_keyword(k.kind)) << k.spelling;
     EXPECT_EQ(token_kind_spelling(k.kind), k.spelling);
     EXPECT_EQ(token_kind_description(k.kind), "'" + std::string(k.spelling) + "'");
@@ -47,6 +49,13 @@ TEST(Token, ReservedWordsAreFlagged) {
   EXPECT_EQ(classify_word("goto", context(300, true)), TokenKind::reserved_word);
   EXPECT_EQ(classify_word("resource", context(330)), TokenKind::identifier);
   EXPECT_EQ(classify_word("resource", context(420)), TokenKind::reserved_word);
+}
+
+TEST(Token, VulkanTypesNeedVulkan) {
+  EXPECT_EQ(classify_word("sampler", KeywordContext::everything()), TokenKind::identifier);
+  EXPECT_EQ(classify_word("texture2D", KeywordContext::everything()), TokenKind::identifier);
+  EXPECT_EQ(classify_word("image2D", KeywordContext::everything()), TokenKind::kw_image2D);
+  EXPECT_EQ(classify_word("int64_t", KeywordContext::everything()), TokenKind::kw_int64_t);
 }
 
 TEST(Token, TemplateIsAKeywordForGenericFunctions) {

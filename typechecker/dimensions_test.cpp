@@ -56,7 +56,7 @@ TEST(Dimensions, UnannotatedLocalsAreInferredFromTheirInitialiser) {
   ASSERT_EQ(bad->diagnostics.diagnostics().size(), 1u);
   EXPECT_EQ(bad->diagnostics.diagnostics()[0].message,
             "cannot assign 'a' of type float<area> with a value of type float<length>");
-  EXPECT_EQ(bad->diagnostics.diagnostics()[0].notes[0].message, "type of 'a' inferred as float<area> from its initializer");
+  EXPECT_EQ(bad->diagnostics.diagnostics()[0].notes[0].message, "type of 'a' inferred from its initializer as float<area>");
 }
 
 TEST(Dimensions, SqrtHalvesEvenExponentsAndRejectsOddOnes) {

@@ -18,7 +18,8 @@ namespace safegi::detail {
 // Where an operand's annotation came from, for the notes of a mismatch.
 struct Origin {
   SourceRange range;
-  std::string text;  // "'L' declared here", "type of 'c' inferred from this initializer"
+  std::string text;  // "'L' declared here", "type of 'c' inferred from its initializer"
+  bool inferred = false;  // the type is not written at `range`: notes print it
 };
 
 // The result of checking an expression.

@@ -198,6 +198,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
   for (const ast::Declarator& decl : d.declarators) {
     Type declared = base.is_error() ? base : with_array_dims(base, decl.array_dims);
     Variable v;
+    bool poisoned = false;
     v.name = decl.name;
     v.range = decl.name_range;
     v.read_only = is_const || (global && is_input);
@@ -222,17 +223,18 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
           Type inferred = init.type;
           inferred.scalar = declared.scalar;
           declared = inferred;
-          v.origin = {decl.initializer->range,
-                      "type of '" + decl.name + "' inferred as " + name_of(declared) + " from its initializer"};
+          v.origin = {decl.initializer->range, "type of '" + decl.name + "' inferred from its initializer", true};
+        } else {
+          poisoned = true;
         }
-      } else if (!declared.is_error()) {
-        check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize");
+      } else if (!declared.is_error() && !check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize")) {
+        poisoned = true;  // one mistake, one error: later uses of this variable stay silent
       }
       if (is_const && init.constant && declared.shape == Shape::scalar && declared.is_integer()) v.constant = init.constant;
     } else if (is_const && !global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
     }
-    v.type = declared;
+    v.type = poisoned ? Type::error() : declared;
     result_.declarators[&decl] = declared;
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
     declare_variable(std::move(v));

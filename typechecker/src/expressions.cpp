@@ -98,6 +98,9 @@ Value Checker::literal(const ast::LiteralExpr& e) {
       v.type = Type::scalar_of(Scalar::bool_);
       v.constant = e.spelling == "true" ? 1 : 0;
       return v;
+    default:  // strings (GL_EXT_debug_printf): no numeric type
+      v.literal = v.zero = false;
+      return v;
   }
   // Literal policy: zero fits any dimension, every other literal is dimensionless.
   v.type.dim = v.zero ? DimSlot::zero() : DimSlot::known(Dimension{});
@@ -203,7 +206,9 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   auto fail = [&](const std::string& what, const std::string& hint, const char* code) {
     Diagnostic d = Diagnostic::error(value.range, what).with_code(code);
     if (target_range.valid() && !(target_range == value.range)) d.with_highlight(target_range);
-    if (target_origin && target_origin->range.valid()) d.with_note(Diagnostic::note(target_origin->range, target_origin->text));
+    if (target_origin && target_origin->range.valid())
+      d.with_note(Diagnostic::note(target_origin->range,
+                                   target_origin->text + (target_origin->inferred ? " as " + name_of(target) : std::string())));
     add_origin_note(d, value);
     if (!hint.empty()) d.with_hint(hint);
     report(std::move(d));
@@ -213,26 +218,30 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
       std::string(action) == "return"
           ? "cannot return a value of type " + name_of(v) + " from '" + target_name + "', which returns " + name_of(target)
           : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(v);
+  std::string kind_hint;
+  if (target.geometry == Geometry::direction && v.geometry == Geometry::vector) kind_hint = "a vector becomes a direction only through normalize()";
+  else if (target.geometry == Geometry::vector && v.geometry == Geometry::direction) kind_hint = "scale it by a length to get a vector";
+  else if (target.geometry == Geometry::vector && v.geometry == Geometry::normal)
+    kind_hint = "a normal is not a vector: it transforms by the inverse transpose; convert explicitly with vector<S>(n) if you mean it";
+  else if (target.geometry == Geometry::normal && v.geometry == Geometry::vector)
+    kind_hint = "transform the normal itself (a map applied to a normal uses the inverse transpose), or convert explicitly with normal<S>(v)";
+  else if (target.geometry == Geometry::point && v.geometry == Geometry::hpoint) kind_hint = "divide by w first: homogenize(h)";
+  else if (target.geometry == Geometry::point && v.geometry == Geometry::vector) kind_hint = "add it to a point to get a point";
+  else if (target.geometry == Geometry::vector && v.geometry == Geometry::point) kind_hint = "subtract another point to get a vector";
+  else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction)
+    kind_hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
+  else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) kind_hint = "a projective map gives hpoints, not points";
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
   if (unsized) a.array[0] = b.array[0];
   const bool scalar_ok = implicitly_converts(b.scalar, a.scalar);
   b.scalar = a.scalar;
-  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, "", "E-TYPE-MISMATCH");
+  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, kind_hint, "E-TYPE-MISMATCH");
   if (target.shape == Shape::opaque || target.shape == Shape::structure) return true;
   // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
-  if (target.geometry != Geometry::none && v.geometry != Geometry::none && target.geometry != v.geometry) {
-    std::string hint;
-    if (target.geometry == Geometry::direction && v.geometry == Geometry::vector) hint = "a vector becomes a direction only through normalize()";
-    else if (target.geometry == Geometry::vector && (v.geometry == Geometry::direction || v.geometry == Geometry::normal))
-      hint = "scale it by a length to get a vector";
-    else if (target.geometry == Geometry::point && v.geometry == Geometry::vector) hint = "add it to a point to get a point";
-    else if (target.geometry == Geometry::vector && v.geometry == Geometry::point) hint = "subtract another point to get a vector";
-    else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction) hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
-    else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) hint = "a projective map gives hpoints, not points";
-    return fail(sentence, hint, "E-KIND-MISMATCH");
-  }
+  if (target.geometry != Geometry::none && v.geometry != Geometry::none && target.geometry != v.geometry)
+    return fail(sentence, kind_hint, "E-KIND-MISMATCH");
   if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
     const bool first = !consistent(target.from, v.from);
     return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), "E-SPACE-MISMATCH");

@@ -33,12 +33,24 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found)
   if (is({{"length", -2}, {"solid_angle", 1}}) || is({{"length", -2}, {"solid_angle", 1}, {"proj", 1}}) ||
       is({{"length", -2}, {"solid_angle", 1}, {"proj", -1}}))
     return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
+  if (is({{"solid_angle", -1}, {"proj", -1}}))
+    return "radiance where irradiance is expected: integrate over projected solid angle (× cos θ dω) to get irradiance";
+  if (is({{"solid_angle", 1}, {"proj", 1}}))
+    return "irradiance where radiance is expected: reflect it with a brdf (1/(solid_angle·proj)) to get radiance";
   if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";
   if (is({{"length", -2}})) return "the value lacks a factor of area: divided by the squared distance twice?";
   if (is({{"angle", -1}}))
     return "a plain number where an angle is expected: radians or degrees? Use radians(x) or write the unit, x * degree";
   if (is({{"angle", 1}})) return "an angle where a plain number is expected: did you mean its sine or cosine, or degrees(x)?";
-  return "the value differs from " + reg.format(expected.value) + " by a factor of " + reg.format(r);
+  if (found.value.is_dimensionless()) {
+    for (const Unit& unit : reg.units())
+      if (unit.dimension == expected.value)
+        return "a plain number where " + reg.format(expected.value) + " is expected: give it a unit, e.g. x * " + unit.name;
+    return "a plain number where " + reg.format(expected.value) + " is expected: convert it explicitly if it is one";
+  }
+  if (expected.value.is_dimensionless())
+    return "the value has dimension " + reg.format(found.value) + " where a plain number is expected";
+  return "the value differs from " + reg.format(expected.value) + " by a factor of " + reg.format_product(r);
 }
 
 std::string Checker::space_hint(const SpaceSlot& expected, const SpaceSlot& found) const {

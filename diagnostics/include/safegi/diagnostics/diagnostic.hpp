@@ -56,7 +56,7 @@ class DiagnosticEngine {
   explicit DiagnosticEngine(DiagnosticOptions options) : options_(options) {}
 
   // Records `diagnostic` after applying -Werror / -w; once the error limit is
-  // reached the engine records one final "too many errors" error and ignores
+  // reached the engine records one final "too many errors" note and ignores
   // everything after it.
   void report(Diagnostic diagnostic);
   void error(SourceRange range, std::string message);

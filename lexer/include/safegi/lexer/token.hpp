@@ -67,7 +67,8 @@ struct KeywordContext {
   bool enabled(ExtensionGroup group) const {
     return (extension_groups >> static_cast<unsigned>(group)) & 1u;
   }
-  // Every keyword of every version (no word is reserved-only or demoted).
+  // GLSL 4.60 with every extension group but Vulkan GLSL's (whose `sampler`
+  // and `texture2D` are common names and functions elsewhere).
   static KeywordContext everything();
 };
 
