@@ -16,15 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void bm_safegi_compile(benchmark::State& state, fs::path path) {
-  const std::string text = read(path);
+  const std::string text = safegi::testing::read_text_file(path);
   const std::string name = path.filename().string();
   for (auto _ : state) {
     safegi::CompileResult r = safegi::compile({{name, text}});
@@ -35,7 +28,7 @@ void bm_safegi_compile(benchmark::State& state, fs::path path) {
 }
 
 void bm_glslang_parse(benchmark::State& state, fs::path path) {
-  safegi::CompileResult r = safegi::compile({{path.filename().string(), read(path)}});
+  safegi::CompileResult r = safegi::compile({{path.filename().string(), safegi::testing::read_text_file(path)}});
   const std::string glsl = r.stages.at(0).glsl;
   const safegi::Stage stage = r.stages.at(0).stage;
   for (auto _ : state) {

@@ -17,13 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<fs::path> annotated_examples() {
   std::vector<fs::path> out;
   for (const auto& entry : fs::directory_iterator(SAFEGI_EXAMPLE_SHADERS))
@@ -47,13 +40,13 @@ TEST(Examples, AnnotatedAndPlainCompileToTheSameInstructionCount) {
     SCOPED_TRACE(p.filename().string());
     std::string twin = p.string();
     twin.replace(twin.find(".sgl."), 5, ".");
-    CompileResult r = compile({{p.filename().string(), read(p)}});
+    CompileResult r = compile({{p.filename().string(), safegi::testing::read_text_file(p)}});
     ASSERT_TRUE(r.success) << r.diagnostics_text();
     const Stage stage = r.stages[0].stage;
     std::string log;
     std::optional<int> annotated = testing::spirv_instruction_count(r.stages[0].glsl, stage, &log);
     ASSERT_TRUE(annotated) << log << r.stages[0].glsl;
-    std::optional<int> plain = testing::spirv_instruction_count(read(twin), stage, &log);
+    std::optional<int> plain = testing::spirv_instruction_count(safegi::testing::read_text_file(twin), stage, &log);
     ASSERT_TRUE(plain) << log;
     EXPECT_EQ(*annotated, *plain) << "emitted:\n" << r.stages[0].glsl;
     std::cout << p.filename().string() << ": " << *annotated << " SPIR-V instructions, plain twin " << *plain << "\n";

@@ -12,23 +12,16 @@
 namespace safegi {
 namespace {
 
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(SafegiAddShaders, WritesGlslADriverAcceptsAndOneProgramTable) {
   const std::string dir = SAFEGI_GENERATED_SHADERS;
   for (auto [name, stage] : {std::pair{"tint.vert.glsl", Stage::vertex}, std::pair{"tint.frag.glsl", Stage::fragment}}) {
-    const std::string glsl = read(dir + "/" + name);
+    const std::string glsl = safegi::testing::read_text_file(dir + "/" + name);
     ASSERT_FALSE(glsl.empty()) << name;
     EXPECT_EQ(glsl.find('<'), std::string::npos) << glsl;
     testing::GlslangVerdict verdict = testing::glslang_validate(glsl, stage);
     EXPECT_TRUE(verdict.accepted) << verdict.log << glsl;
   }
-  gl::SymbolTable table = gl::parse_symbol_table(read(dir + "/safegi_compiler_test.json"), "generated");
+  gl::SymbolTable table = gl::parse_symbol_table(safegi::testing::read_text_file(dir + "/safegi_compiler_test.json"), "generated");
   EXPECT_EQ(table.mode, gl::TableMode::program);
   ASSERT_EQ(table.stages.size(), 2u);
   ASSERT_NE(table.stage(gl::Stage::vertex), nullptr);

@@ -1,6 +1,8 @@
 #include "glslang_check.hpp"
 
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 #include <glslang/Public/ResourceLimits.h>
@@ -71,6 +73,13 @@ std::optional<int> spirv_instruction_count(const std::string& glsl, Stage stage,
     i += length == 0 ? 1 : length;
   }
   return count;
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace safegi::testing

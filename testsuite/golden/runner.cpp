@@ -38,13 +38,6 @@ struct Case {
   bool stdin_input = false, symbols = false, raw = false;
 };
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<std::string> split_words(const std::string& text) {
   std::istringstream in(text);
   std::vector<std::string> out;
@@ -61,7 +54,7 @@ bool is_case(const fs::path& p) {
 Case read_case(const fs::path& path) {
   Case c;
   c.path = path;
-  std::istringstream text(read(path));
+  std::istringstream text(safegi::testing::read_text_file(path));
   for (std::string line; std::getline(text, line) && line.rfind("//", 0) == 0;) {
     auto directive = [&](std::string_view name) {
       const std::string prefix = "// " + std::string(name);
@@ -98,7 +91,7 @@ std::string run_case(const Case& c, const fs::path& scratch, std::string& proble
     args.push_back("--symbols");
     args.push_back((scratch / "symbols.json").string());
   }
-  std::istringstream in(c.stdin_input ? read(c.path) : std::string());
+  std::istringstream in(c.stdin_input ? safegi::testing::read_text_file(c.path) : std::string());
   std::ostringstream out, err;
   safegi::CliStreams io{in, out, err, false};
   const int status = safegi::run_safeglslc(args, io);
@@ -108,14 +101,14 @@ std::string run_case(const Case& c, const fs::path& scratch, std::string& proble
   if (!out.str().empty()) actual += "--- stdout\n" + out.str();
   if (status == 0 && !c.raw) {
     for (std::size_t i = 0; i < outputs.size(); ++i) {
-      const std::string glsl = read(outputs[i]);
+      const std::string glsl = safegi::testing::read_text_file(outputs[i]);
       actual += "--- glsl " + inputs[i] + "\n" + glsl;
       if (std::optional<safegi::Stage> stage = stage_of(c, inputs[i])) {
         safegi::testing::GlslangVerdict verdict = safegi::testing::glslang_validate(glsl, *stage);
         if (!verdict.accepted) problem += "glslang rejects the GLSL emitted for " + inputs[i] + ":\n" + verdict.log;
       }
     }
-    if (c.symbols) actual += "--- symbols\n" + read(scratch / "symbols.json");
+    if (c.symbols) actual += "--- symbols\n" + safegi::testing::read_text_file(scratch / "symbols.json");
   }
   for (const std::string& o : outputs) fs::remove(o);
   fs::remove(scratch / "symbols.json");
@@ -173,14 +166,14 @@ int main(int argc, char** argv) {
     const std::string actual = run_case(c, scratch, problem);
     const fs::path expected_path = path.string() + ".expected";
     if (update) {
-      if (!fs::exists(expected_path) || read(expected_path) != actual) {
+      if (!fs::exists(expected_path) || safegi::testing::read_text_file(expected_path) != actual) {
         std::ofstream(expected_path, std::ios::binary) << actual;
         std::cout << "updated " << expected_path.generic_string() << "\n";
         ++updated;
       }
     } else if (!fs::exists(expected_path)) {
       problem += "no " + expected_path.generic_string() + " (run with --update, then review it)\n";
-    } else if (const std::string expected = read(expected_path); expected != actual) {
+    } else if (const std::string expected = safegi::testing::read_text_file(expected_path); expected != actual) {
       problem += "output differs from " + expected_path.generic_string() + ", " + first_difference(expected, actual) + "\n";
     }
     if (!problem.empty()) {
