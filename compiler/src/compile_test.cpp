@@ -56,6 +56,34 @@ TEST(Compile, OneShaderGivesGlslTheDriverAcceptsAndAShaderTable) {
   EXPECT_EQ(gl::to_json(back), r.symbols_json());
 }
 
+// The symbol table kinds of docs/symbol-table.md: an affine map, a rigid one
+// and a projective one are told apart, so runtime_gl binds each to its C++ type.
+TEST(Compile, MapsKeepTheirKindInTheSymbolTable) {
+  CompileResult r = compile({{"maps.sgl.vert", R"(#version 330 core
+#include <safegi/prelude.sgl>
+space object;
+space world;
+space clip;
+uniform map<object, world> worldFromObject;
+uniform rigidmap<object, world> rigidWorldFromObject;
+uniform projmap<world, clip> clipFromWorld;
+in point<object> p;
+void main() { gl_Position = clipFromWorld * (worldFromObject * p); }
+)"}});
+  ASSERT_TRUE(r.success) << r.diagnostics_text();
+  const gl::StageSymbols& stage = r.symbols.stages.at(0);
+  auto kind_of = [&](const char* name) {
+    const gl::Symbol* symbol = stage.find(gl::Storage::uniform, name);
+    EXPECT_NE(symbol, nullptr) << name;
+    return symbol ? symbol->type.kind : gl::Kind::plain;
+  };
+  EXPECT_EQ(kind_of("worldFromObject"), gl::Kind::map);
+  EXPECT_EQ(kind_of("rigidWorldFromObject"), gl::Kind::map);
+  EXPECT_EQ(kind_of("clipFromWorld"), gl::Kind::projective_map);
+  EXPECT_EQ(stage.find(gl::Storage::uniform, "clipFromWorld")->type.spaces,
+            (std::vector<std::string>{"world", "clip"}));
+}
+
 TEST(Compile, DiagnosticsAreValuesWithLocations) {
   CompileResult r = compile({{"bad.frag", "#version 330 core\n#include <safegi/prelude.sgl>\n"
                                           "void main() { float<length> d = 1.0 * meter; float<time> t = d; }\n"}});

@@ -44,8 +44,8 @@ class SymbolBuilder {
       case Geometry::normal: v.kind = gl::Kind::normal; break;
       case Geometry::hpoint: v.kind = gl::Kind::hpoint; break;
       case Geometry::map:
-      case Geometry::rigidmap:
-      case Geometry::projmap: v.kind = gl::Kind::map; break;
+      case Geometry::rigidmap: v.kind = gl::Kind::map; break;
+      case Geometry::projmap: v.kind = gl::Kind::projective_map; break;
       case Geometry::none:
         if (t.texel) v.kind = gl::Kind::sampler;
         else if (t.dim.is_known()) v.kind = gl::Kind::scalar;

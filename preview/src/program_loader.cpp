@@ -4,22 +4,6 @@
 
 namespace safegi::preview {
 
-namespace {
-
-// The compiler writes projmap<A, B> with kind "map" (docs/symbol-table.md: the
-// printed type keeps the word), while runtime_gl describes the typed library's
-// projective_map<A, B> with kind projective_map; without this the projection
-// uniforms could only be bound as affine maps. The printed type tells them apart.
-void mark_projective_maps(std::vector<gl::Symbol>& symbols) {
-  for (gl::Symbol& symbol : symbols) {
-    if (symbol.type.kind == gl::Kind::map && symbol.printed_type.starts_with("projmap<"))
-      symbol.type.kind = gl::Kind::projective_map;
-    mark_projective_maps(symbol.members);
-  }
-}
-
-}  // namespace
-
 gl::Program load_program(const std::vector<ShaderFile>& files,
                          const std::vector<std::pair<std::string, std::string>>& defines, std::string name) {
   std::vector<ShaderSource> sources;
@@ -28,7 +12,6 @@ gl::Program load_program(const std::vector<ShaderFile>& files,
   options.defines = defines;
   CompileResult result = compile(sources, options);
   if (!result.success) throw ShaderLoadError(result.diagnostics_text(false));
-  for (gl::StageSymbols& stage : result.symbols.stages) mark_projective_maps(stage.symbols);
   std::vector<gl::ProgramSource> stages;
   for (const StageOutput& stage : result.stages) {
     std::optional<gl::Stage> table_stage = to_table_stage(stage.stage);

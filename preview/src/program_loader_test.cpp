@@ -43,8 +43,8 @@ TEST(ProgramLoader, UnknownEmbeddedShaderIsNamed) {
   }
 }
 
-// The compiler writes projmap<A, B> with kind "map"; the seam marks it so the
-// typed library's projective_map binds and an affine map does not.
+// The compiler describes projmap<A, B> as kind projective_map, so the typed
+// library's projective_map binds and an affine map does not.
 TEST(ProgramLoader, ProjectionUniformsBindAsProjectiveMaps) {
   gl::Context context;
   gl::Program program = load_embedded_program({"scene.sgl.vert", "shade.sgl.frag"}, {{"POINT_LIGHT", "1"}}, "point");
