@@ -3,6 +3,9 @@
 # budget (default 60 s), seeded with the example and golden-test shaders.
 #
 #   scripts/fuzz-compiler.sh [seconds]
+#   SAFEGI_FUZZ_RUNS=N SAFEGI_FUZZ_SEED=S scripts/fuzz-compiler.sh
+#       a fixed number of inputs from a fixed seed instead of a time budget:
+#       the same inputs every time, as CI needs.
 #
 # Builds in build-fuzz/ (clang, its own build directory). A crash leaves its
 # input in build-fuzz/fuzz-artifacts/ and the script exits non-zero; turn every
@@ -30,5 +33,9 @@ find "$root/examples" "$root/testsuite/golden/cases" "$root/runtime_gl/testdata"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-exec "$build/bin/safegi_compile_fuzzer" -max_total_time="$seconds" -max_len=16384 -timeout=10 \
+budget=(-max_total_time="$seconds")
+if [[ -n "${SAFEGI_FUZZ_RUNS:-}" ]]; then
+  budget=(-runs="$SAFEGI_FUZZ_RUNS" -seed="${SAFEGI_FUZZ_SEED:-1}")
+fi
+exec "$build/bin/safegi_compile_fuzzer" "${budget[@]}" -max_len=16384 -timeout=10 \
   -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus"
