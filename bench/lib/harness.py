@@ -64,13 +64,17 @@ def interleaved(commands: dict[str, list[str]], repeats: int) -> dict[str, Timin
     return {name: Timing(samples) for name, samples in results.items()}
 
 
-def instructions(command: list[str]) -> int:
-    """Total instructions executed by `command` (all threads), by callgrind."""
+def instructions(command: list[str], inside: str | None = None) -> int:
+    """Instructions executed by `command`, by callgrind: all of them, or only
+    those executed while a function matching `inside` (callgrind's
+    --toggle-collect pattern) is on the stack, which leaves out process
+    start-up and file I/O that would otherwise swamp a small workload."""
     if shutil.which("valgrind") is None:
         raise SystemExit("bench: valgrind is needed for instruction counts (scripts/install-deps.sh)")
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "callgrind.out"
-        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *command],
+        toggle = [f"--toggle-collect={inside}"] if inside else []
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *toggle, *command],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         for line in out.read_text().splitlines():
             match = re.match(r"^(?:summary|totals):\s+(\d+)", line)
