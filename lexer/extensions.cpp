@@ -89,8 +89,9 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_draw_instanced", 0},
     ExtensionInfo{"GL_EXT_frag_depth", 0},
     ExtensionInfo{"GL_EXT_geometry_shader", 0},
-    // flat / noperspective varyings and samplerBuffer at GLSL 1.10 and 1.20.
-    ExtensionInfo{"GL_EXT_gpu_shader4", bit(G::interpolation) | bit(G::texture_buffer)},
+    // flat / noperspective varyings, unsigned integers and samplerBuffer at GLSL 1.10 and 1.20.
+    ExtensionInfo{"GL_EXT_gpu_shader4",
+                  bit(G::interpolation) | bit(G::unsigned_integers) | bit(G::texture_buffer)},
     ExtensionInfo{"GL_EXT_gpu_shader5", bit(G::gpu_shader5)},
     ExtensionInfo{"GL_EXT_primitive_bounding_box", 0},
     ExtensionInfo{"GL_EXT_scalar_block_layout", kLayout},
@@ -162,10 +163,13 @@ struct FeatureGate {
 constexpr std::array kFeatureGates = {
     FeatureGate{LanguageFeature::double_literals, "double-precision literals ('lf' suffix)", true, 400, 0,
                 {"GL_ARB_gpu_shader_fp64", "GL_NV_gpu_shader5", "GL_EXT_shader_explicit_arithmetic_types_float64"}},
-    FeatureGate{LanguageFeature::line_continuation, "line continuation ('\\' at the end of a line)", false, 420, 300,
-                {"GL_ARB_shading_language_420pack", "", ""}},
     FeatureGate{LanguageFeature::arrays_of_arrays, "arrays of arrays", true, 430, 310,
                 {"GL_ARB_arrays_of_arrays", "", ""}},
+    // `varying out` fragment outputs (gpu_shader4) and `varying in` geometry inputs.
+    FeatureGate{LanguageFeature::global_in_out, "'in' and 'out' on global variables", true, 130, 300,
+                {"GL_EXT_gpu_shader4", "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4"}},
+    FeatureGate{LanguageFeature::integer_operators, "the integer operators % << >> & | ^ ~", true, 130, 300,
+                {"GL_EXT_gpu_shader4", "", ""}},
 };
 
 const FeatureGate& gate(LanguageFeature feature) {

@@ -343,10 +343,31 @@ TEST_F(Directives, ExtensionsEnableKeywordsAtOlderVersions) {
   EXPECT_EQ(unit.tokens[3].kind, TokenKind::kw_layout);
   EXPECT_EQ(unit.language.version, 150);
   EXPECT_TRUE(unit.language.extension_enabled("GL_EXT_gpu_shader4"));
+  auto shader4 = run("#extension GL_EXT_gpu_shader4 : require\ncentroid varying unsigned int u; uvec2 v;\n");
+  EXPECT_EQ(spell(shader4), "centroid varying uint u ; uvec2 v ;");
+  EXPECT_EQ(shader4.tokens[0].kind, TokenKind::kw_centroid);
+  EXPECT_EQ(shader4.tokens[2].kind, TokenKind::kw_uint);
+  EXPECT_EQ(shader4.tokens[2].range, sources.range_of(shader4.tokens[2].range.begin.file, 57, 69));
+  EXPECT_EQ(shader4.tokens[5].kind, TokenKind::kw_uvec2);
   auto plain = run("#version 130\nsubroutine coherent layout\n");
   EXPECT_EQ(plain.tokens[0].kind, TokenKind::identifier);
   EXPECT_EQ(plain.tokens[1].kind, TokenKind::identifier);
   EXPECT_EQ(plain.tokens[2].kind, TokenKind::identifier);
+}
+
+TEST_F(Directives, DoubleLiteralsNeedVersion400OrFp64) {
+  output("#version 330\ndouble d = 1.0lf;\n#extension GL_ARB_gpu_shader_fp64 : enable\ndouble e = 2.0LF;\n");
+  output("#version 310 es\nx = 1.0lf;\n");
+  output("#version 400\ndouble d = 1.0lf;\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:12: error: double-precision literals ('lf' suffix) require #version 400 or "
+            "GL_ARB_gpu_shader_fp64 or GL_NV_gpu_shader5 or GL_EXT_shader_explicit_arithmetic_types_float64\n"
+            "double d = 1.0lf;\n"
+            "           ^~~~~\n"
+            "main.glsl:2:5: error: double-precision literals ('lf' suffix) are not available in GLSL ES (without "
+            "GL_ARB_gpu_shader_fp64 or GL_NV_gpu_shader5 or GL_EXT_shader_explicit_arithmetic_types_float64)\n"
+            "x = 1.0lf;\n"
+            "    ^~~~~\n");
 }
 
 TEST_F(Directives, PasteAtAnEndOfTheBodyWarnsAndErrsWhenUsed) {

@@ -29,16 +29,25 @@ struct WordInfo {
   std::uint16_t es_since;
   ExtensionGroup group;
   std::uint16_t es_reserved_from;
+  std::uint16_t desktop_reserved_from = 0;
 };
 
-const std::unordered_map<std::string_view, WordInfo>& word_table() {
-  static const std::unordered_map<std::string_view, WordInfo> table = {
+std::unordered_map<std::string_view, WordInfo> make_word_table() {
+  std::unordered_map<std::string_view, WordInfo> table = {
 #define SAFEGI_KEYWORD(name, spelling, category, desktop_since, es_since, group, es_reserved_from) \
   {spelling, {TokenKind::name, desktop_since, es_since, ExtensionGroup::group, es_reserved_from}},
 #define SAFEGI_RESERVED_WORD(spelling, desktop_since, es_since) \
   {spelling, {TokenKind::reserved_word, desktop_since, es_since, ExtensionGroup::none, 0}},
 #include <safegi/lexer/token_kinds.def>
   };
+#define SAFEGI_DESKTOP_RESERVED_BEFORE_KEYWORD(spelling, desktop_from) \
+  table.at(spelling).desktop_reserved_from = desktop_from;
+#include <safegi/lexer/token_kinds.def>
+  return table;
+}
+
+const std::unordered_map<std::string_view, WordInfo>& word_table() {
+  static const std::unordered_map<std::string_view, WordInfo> table = make_word_table();
   return table;
 }
 
@@ -174,6 +183,9 @@ TokenKind classify_word(std::string_view word, const KeywordContext& context) {
                    (w.group != ExtensionGroup::none && context.enabled(w.group));
   if (available) return w.kind;
   if (context.es && w.es_reserved_from != 0 && context.version >= w.es_reserved_from) {
+    return TokenKind::reserved_word;
+  }
+  if (!context.es && w.desktop_reserved_from != 0 && context.version >= w.desktop_reserved_from) {
     return TokenKind::reserved_word;
   }
   return TokenKind::identifier;

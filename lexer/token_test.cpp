@@ -127,11 +127,24 @@ TEST(Token, ExtensionsEnableKeywordsOfOlderVersions) {
   EXPECT_EQ(classify_word("readonly", c), TokenKind::kw_readonly);
   EXPECT_EQ(classify_word("buffer", c), TokenKind::kw_buffer);
   EXPECT_EQ(classify_word("layout", c), TokenKind::kw_layout);
-  EXPECT_EQ(classify_word("image2D", c), TokenKind::identifier);  // storage buffers bring no images
+  EXPECT_EQ(classify_word("image2D", c), TokenKind::reserved_word);  // storage buffers bring no images
   KeywordContext old = context(120);
   old.extension_groups |= extension_groups_enabled_by("GL_EXT_gpu_shader4");
   EXPECT_EQ(classify_word("flat", old), TokenKind::kw_flat);
   EXPECT_EQ(classify_word("noperspective", old), TokenKind::kw_noperspective);
+}
+
+TEST(Token, LaterKeywordsAreReservedInOlderDesktopVersions) {
+  EXPECT_EQ(classify_word("double", context(110)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("double", context(400)), TokenKind::kw_double);
+  EXPECT_EQ(classify_word("image2D", context(120)), TokenKind::identifier);
+  EXPECT_EQ(classify_word("image2D", context(130)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("samplerBuffer", context(130)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("samplerBuffer", context(140)), TokenKind::kw_samplerBuffer);
+  EXPECT_EQ(classify_word("image2D", context(300, true)), TokenKind::identifier);  // desktop lists only
+  KeywordContext fp64 = context(150);
+  fp64.extension_groups |= extension_groups_enabled_by("GL_ARB_gpu_shader_fp64");
+  EXPECT_EQ(classify_word("dvec3", fp64), TokenKind::kw_dvec3);
 }
 
 TEST(Token, FeatureGates) {
@@ -145,7 +158,7 @@ TEST(Token, FeatureGates) {
   LanguageLevel es{310, true, {}};
   EXPECT_TRUE(es.allows(LanguageFeature::arrays_of_arrays));
   EXPECT_FALSE(es.allows(LanguageFeature::double_literals));
-  EXPECT_TRUE(LanguageLevel::everything().allows(LanguageFeature::line_continuation));
+  EXPECT_TRUE(LanguageLevel::everything().allows(LanguageFeature::double_literals));
   EXPECT_EQ(feature_requirement(LanguageFeature::arrays_of_arrays, false),
             "arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays");
   EXPECT_EQ(feature_requirement(LanguageFeature::arrays_of_arrays, true),

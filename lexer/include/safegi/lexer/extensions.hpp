@@ -31,8 +31,9 @@ std::vector<std::string> default_extension_macros();
 
 enum class LanguageFeature : std::uint8_t {
   double_literals,    // 1.0lf
-  line_continuation,  // backslash-newline outside comments
   arrays_of_arrays,   // float a[2][3]
+  global_in_out,      // `in` / `out` on global variables (1.10 has attribute and varying)
+  integer_operators,  // % << >> & | ^ ~ and their assignments
 };
 
 // The language a shader is written in: its #version and the extensions its

@@ -55,7 +55,8 @@ enum class ExtensionGroup : std::uint8_t {
   arithmetic_types,   // GL_EXT_shader_explicit_arithmetic_types*, GL_ARB_gpu_shader_int64, ...
   subroutine,         // GL_ARB_shader_subroutine
   memory_qualifiers,  // coherent, volatile, restrict, readonly, writeonly: image load/store, storage buffers
-  interpolation,      // flat, smooth, noperspective: GL_EXT_gpu_shader4, GL_NV_shader_noperspective_interpolation
+  interpolation,      // flat, smooth, noperspective, centroid: GL_EXT_gpu_shader4, GL_NV_shader_noperspective_interpolation
+  unsigned_integers,  // uint, uvecN and `unsigned int`: GL_EXT_gpu_shader4
 };
 
 // Bit mask of ExtensionGroup values that `extension` (a #extension name)
