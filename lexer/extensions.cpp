@@ -157,19 +157,26 @@ struct FeatureGate {
   bool plural;
   int desktop_since;
   int es_since;                 // 0: never in ES
-  std::array<std::string_view, 3> extensions;  // any of these enables it (desktop and ES)
+  std::array<std::string_view, 6> extensions;  // any of these enables it (desktop and ES)
+  std::size_t named = 1;  // how many of them the message names (the main one first)
 };
 
 constexpr std::array kFeatureGates = {
     FeatureGate{LanguageFeature::double_literals, "double-precision literals ('lf' suffix)", true, 400, 0,
                 {"GL_ARB_gpu_shader_fp64", "GL_NV_gpu_shader5", "GL_EXT_shader_explicit_arithmetic_types_float64"}},
+    // Geometry-shader inputs of arrays (`varying in float v[][6]`) predate GL_ARB_arrays_of_arrays.
     FeatureGate{LanguageFeature::arrays_of_arrays, "arrays of arrays", true, 430, 310,
-                {"GL_ARB_arrays_of_arrays", "", ""}},
-    // `varying out` fragment outputs (gpu_shader4) and `varying in` geometry inputs.
+                {"GL_ARB_arrays_of_arrays", "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4"}},
+    // `varying out` fragment outputs (gpu_shader4), `varying in` geometry
+    // inputs, and the extensions whose layouts qualify `in` / `out` (piglit
+    // expects them to work in GLSL 1.10).
     FeatureGate{LanguageFeature::global_in_out, "'in' and 'out' on global variables", true, 130, 300,
-                {"GL_EXT_gpu_shader4", "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4"}},
+                {"GL_EXT_gpu_shader4", "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4",
+                 "GL_ARB_explicit_attrib_location", "GL_ARB_separate_shader_objects",
+                 "GL_ARB_fragment_coord_conventions"},
+                0},
     FeatureGate{LanguageFeature::integer_operators, "the integer operators % << >> & | ^ ~", true, 130, 300,
-                {"GL_EXT_gpu_shader4", "", ""}},
+                {"GL_EXT_gpu_shader4"}},
 };
 
 const FeatureGate& gate(LanguageFeature feature) {
@@ -231,8 +238,8 @@ std::string feature_requirement(LanguageFeature feature, bool es) {
   const FeatureGate& g = gate(feature);
   std::string verb = g.plural ? " require " : " requires ";
   std::string extensions;
-  for (std::string_view e : g.extensions) {
-    if (!e.empty()) extensions += (extensions.empty() ? "" : " or ") + std::string(e);
+  for (std::size_t i = 0; i < g.named && !g.extensions[i].empty(); ++i) {
+    extensions += (extensions.empty() ? "" : " or ") + std::string(g.extensions[i]);
   }
   if (es) {
     if (g.es_since == 0) {

@@ -361,11 +361,11 @@ TEST_F(Directives, DoubleLiteralsNeedVersion400OrFp64) {
   output("#version 400\ndouble d = 1.0lf;\n");
   EXPECT_EQ(errors(),
             "main.glsl:2:12: error: double-precision literals ('lf' suffix) require #version 400 or "
-            "GL_ARB_gpu_shader_fp64 or GL_NV_gpu_shader5 or GL_EXT_shader_explicit_arithmetic_types_float64\n"
+            "GL_ARB_gpu_shader_fp64\n"
             "double d = 1.0lf;\n"
             "           ^~~~~\n"
             "main.glsl:2:5: error: double-precision literals ('lf' suffix) are not available in GLSL ES (without "
-            "GL_ARB_gpu_shader_fp64 or GL_NV_gpu_shader5 or GL_EXT_shader_explicit_arithmetic_types_float64)\n"
+            "GL_ARB_gpu_shader_fp64)\n"
             "x = 1.0lf;\n"
             "    ^~~~~\n");
 }

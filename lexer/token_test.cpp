@@ -164,8 +164,9 @@ TEST(Token, FeatureGates) {
   EXPECT_EQ(feature_requirement(LanguageFeature::arrays_of_arrays, true),
             "arrays of arrays require #version 310 es or GL_ARB_arrays_of_arrays");
   EXPECT_EQ(feature_requirement(LanguageFeature::double_literals, true),
-            "double-precision literals ('lf' suffix) are not available in GLSL ES (without GL_ARB_gpu_shader_fp64 or "
-            "GL_NV_gpu_shader5 or GL_EXT_shader_explicit_arithmetic_types_float64)");
+            "double-precision literals ('lf' suffix) are not available in GLSL ES (without GL_ARB_gpu_shader_fp64)");
+  EXPECT_EQ(feature_requirement(LanguageFeature::global_in_out, false),
+            "'in' and 'out' on global variables require #version 130");
 }
 
 TEST(Token, KindNamesAndCategories) {

@@ -165,8 +165,7 @@ TEST(ParseDecl, GlobalInOutAndIntegerOperatorsNeedVersion130) {
   options.language = LanguageLevel{120, false, {}};
   auto parsed = parse_text("in vec4 v;\nvoid f(in int a, out int b) { b = a % 2; b <<= ~a; }\n", options);
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:1: error: 'in' and 'out' on global variables require #version 130 or GL_EXT_gpu_shader4 or "
-            "GL_ARB_geometry_shader4 or GL_EXT_geometry_shader4\n"
+            "test.glsl:1:1: error: 'in' and 'out' on global variables require #version 130\n"
             "in vec4 v;\n"
             "^~\n"
             "test.glsl:2:37: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
@@ -184,6 +183,8 @@ TEST(ParseDecl, GlobalInOutAndIntegerOperatorsNeedVersion130) {
   EXPECT_EQ(parse_text("out vec4 v;\nvoid f() { int a = 5 % 2; }\n", options)->errors(), "");
   options.language = LanguageLevel{110, false, {"GL_EXT_gpu_shader4"}};
   EXPECT_EQ(parse_text("varying out vec4 v;\nvoid f() { int a = 5 % 2; }\n", options)->errors(), "");
+  options.language = LanguageLevel{110, false, {"GL_ARB_explicit_attrib_location"}};
+  EXPECT_EQ(parse_text("layout(location = 0) in vec4 v;\n", options)->errors(), "");
 }
 
 }  // namespace
