@@ -79,9 +79,12 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
   macro->body.assign(line.begin() + static_cast<std::ptrdiff_t>(i), line.end());
   const auto& body = macro->body;
   if (!body.empty() && (body.front().kind == TokenKind::hash_hash || body.back().kind == TokenKind::hash_hash)) {
+    // C rejects the definition; glslang (and so shaders in the wild) only
+    // rejects a use, so this warns here and expand_macro() errs on a use.
     const Token& bad = body.front().kind == TokenKind::hash_hash ? body.front() : body.back();
-    error(bad.range, "'##' cannot appear at either end of a macro body");
-    return;
+    diagnostics_.report(Diagnostic::warning(bad.range, "'##' cannot appear at either end of a macro body")
+                            .with_hint("using this macro is an error"));
+    macro->paste_at_edge = bad.range;
   }
   for (const Token& t : body) {
     if (t.kind == TokenKind::hash) {
@@ -195,6 +198,8 @@ void Preprocessor::apply_version() {
   version_applied_ = true;
   unit_.keywords.version = unit_.version;
   unit_.keywords.es = unit_.es;
+  unit_.language.version = unit_.version;
+  unit_.language.es = unit_.es;
   define_predefined("__LINE__", "", Macro::Builtin::line);
   define_predefined("__FILE__", "", Macro::Builtin::file);
   define_predefined("__VERSION__", save(std::to_string(unit_.version)));
@@ -246,8 +251,15 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
   } else {
     unit_.keywords.extension_groups |= groups;
   }
+  std::vector<std::string>& enabled = unit_.language.extensions;
+  if (behavior == "disable") {
+    if (name == "all") enabled.clear();
+    std::erase(enabled, name);
+  } else if (name != "all" && !unit_.language.extension_enabled(name)) {
+    enabled.emplace_back(name);
+  }
   const auto& supported = options_.extension_macros;
-  if (!supported.empty() && name != "all" && behavior != "disable" &&
+  if (options_.reject_unsupported_extensions && name != "all" && behavior != "disable" &&
       std::find(supported.begin(), supported.end(), name) == supported.end()) {
     std::string message = "extension '" + std::string(name) + "' is not supported";
     if (behavior == "require") {
@@ -315,6 +327,12 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
   if (next_line < text.size() && text[next_line] == '\r') ++next_line;
   if (next_line < text.size() && text[next_line] == '\n') ++next_line;
   sources_.add_line_directive(f.file, next_line, next_line_number, result.file_name, result.source_string);
+  if (result.file_name) {
+    f.line_file_name = save(*result.file_name);
+  } else if (result.source_string) {
+    f.source_string = *result.source_string;
+    f.line_file_name = {};
+  }
   unit_.line_directives.push_back(std::move(result));
 }
 
@@ -334,6 +352,32 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
   record_directive(DirectiveKind::include, hash, last);
   SourceRange directive{hash.range.begin, last};
   bool angled = header.has_value();
+  if (!header && !line.empty() && line[0].kind == TokenKind::identifier) {
+    // `#include NAME` where NAME expands to "file" or <file> (C 6.10.2p4).
+    std::vector<PPToken> raw;
+    for (const Token& t : line) raw.push_back(PPToken{t});
+    std::vector<PPToken> expanded = expand_list(std::move(raw), kNoExpansion, 0);
+    if (expanded.empty()) {
+      error(line[0].range, "expected \"FILENAME\" or <FILENAME> after #include");
+      return;
+    }
+    line.clear();
+    for (const PPToken& t : expanded) line.push_back(t.token);
+    if (line.size() >= 2 && line.front().kind == TokenKind::less && line.back().kind == TokenKind::greater) {
+      std::string spelled = "<";
+      for (std::size_t i = 1; i + 1 < line.size(); ++i) {
+        if (i > 1 && line[i].leading_space) spelled += ' ';
+        spelled += line[i].text;
+      }
+      Token angled_name = line.front();
+      angled_name.kind = TokenKind::string_literal;
+      angled_name.text = save(spelled + ">");
+      angled_name.range.end = line.back().range.end;
+      header = angled_name;
+      angled = true;
+      line.clear();
+    }
+  }
   if (!header) {
     if (line.empty() || line[0].kind != TokenKind::string_literal || line[0].text.size() < 2 ||
         line[0].text.back() != '"') {

@@ -40,10 +40,21 @@ PPToken Preprocessor::next_unexpanded(Stream& s) {
 void Preprocessor::push_back(Stream& s, PPToken t) { s.buffers.push_back(Buffer{{std::move(t)}, 0, nullptr}); }
 
 PPToken Preprocessor::builtin_value(const Macro& m, const PPToken& name) {
-  PresumedLocation at = sources_.presumed(name.token.expansion == kNoExpansion ? name.token.range.begin : last_location_);
   PPToken value = name;
   value.token.kind = TokenKind::int_literal;
-  value.token.text = save(std::to_string(m.builtin == Macro::Builtin::line ? at.line : at.source_string.value_or(0)));
+  if (m.builtin == Macro::Builtin::line) {
+    PresumedLocation at =
+        sources_.presumed(name.token.expansion == kNoExpansion ? name.token.range.begin : last_location_);
+    value.token.text = save(std::to_string(at.line));
+    return value;
+  }
+  const FileState* file = files_.empty() ? nullptr : files_.back().get();
+  if (file && !file->line_file_name.empty()) {
+    value.token.kind = TokenKind::string_literal;
+    value.token.text = save("\"" + std::string(file->line_file_name) + "\"");
+    return value;
+  }
+  value.token.text = save(std::to_string(file ? file->source_string : 0));
   return value;
 }
 
@@ -106,6 +117,13 @@ bool Preprocessor::expand_macro(Stream& s, Macro& m, const PPToken& name, Expans
                 (args.size() == 1 ? " was" : " were") + " given");
       return true;  // the invocation is consumed; nothing replaces it
     }
+  }
+  if (m.paste_at_edge.valid()) {
+    diagnostics_.report(Diagnostic::error(SourceRange{name.token.range.begin, site.end},
+                                          "macro '" + std::string(m.name) + "' cannot be used: '##' at an end of its body")
+                            .with_note(Diagnostic::note(m.paste_at_edge, "'##' is here"))
+                            .with_expansion(name.token.expansion));
+    return true;  // the invocation is consumed; nothing replaces it
   }
   int live = 0;
   for (const Buffer& b : s.buffers) live += b.macro != nullptr;

@@ -356,6 +356,10 @@ void Preprocessor::emit(const PPToken& t) {
           range.end.column += check.error_end - check.error_begin;
         }
         diagnostics_.report(Diagnostic::error(range, std::move(check.error)).with_expansion(token.expansion));
+      } else if (check.kind == TokenKind::double_literal && !unit_.language.allows(LanguageFeature::double_literals)) {
+        diagnostics_.report(
+            Diagnostic::error(token.range, feature_requirement(LanguageFeature::double_literals, unit_.es))
+                .with_expansion(token.expansion));
       }
       break;
     case TokenKind::string_literal:
@@ -368,6 +372,17 @@ void Preprocessor::emit(const PPToken& t) {
   if (unit_.tokens.size() >= options_.max_output_tokens) {
     over_budget(options_.max_output_tokens + 1);
     return;
+  }
+  if (token.kind == TokenKind::kw_int && !unit_.tokens.empty() && unit_.keywords.enabled(ExtensionGroup::unsigned_integers)) {
+    Token& previous = unit_.tokens.back();
+    if (previous.kind == TokenKind::reserved_word && previous.text == "unsigned" &&
+        previous.range.begin.file == token.range.begin.file) {
+      // GL_EXT_gpu_shader4 spells uint `unsigned int`: one token, printed `uint`.
+      previous.kind = TokenKind::kw_uint;
+      previous.text = "uint";
+      previous.range.end = token.range.end;
+      return;
+    }
   }
   unit_.tokens.push_back(token);
 }

@@ -222,6 +222,16 @@ TEST_F(Directives, LineWithFileName) {
             "^\n");
 }
 
+TEST_F(Directives, FileFollowsTheLastLineDirective) {
+  // GL_GOOGLE_cpp_style_line_directive: a name replaces the source-string
+  // number until the next `#line N S`; a bare `#line N` keeps either.
+  EXPECT_EQ(output("#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : enable\n"
+                   "#extension GL_EXT_debug_printf : enable\n__FILE__\n#line 150 \"a.h\"\n__FILE__\n"
+                   "#line 24\n__FILE__\n#line 10 3\n__FILE__\n#line 48\n__FILE__\n"),
+            "0\n\"a.h\"\n\"a.h\"\n3\n3");
+  EXPECT_EQ(errors(), "");
+}
+
 TEST_F(Directives, LineErrors) {
   run("#line\n#line x\n#line 1 y\n");
   EXPECT_EQ(errors(),
@@ -295,6 +305,7 @@ TEST_F(Directives, StringsWithDebugPrintf) {
 
 TEST_F(Directives, ExtensionMacros) {
   options.extension_macros = {"GL_ARB_gpu_shader5"};
+  options.reject_unsupported_extensions = true;
   EXPECT_EQ(output("#ifdef GL_ARB_gpu_shader5\nyes GL_ARB_gpu_shader5\n#endif\n"), "yes 1");
   EXPECT_EQ(errors(), "");
   run("#extension GL_ARB_gpu_shader5 : require\n#extension GL_FOO_bar : require\n#extension GL_FOO_baz : enable\n"
@@ -306,6 +317,92 @@ TEST_F(Directives, ExtensionMacros) {
             "main.glsl:3:12: warning: extension 'GL_FOO_baz' is not supported\n"
             "#extension GL_FOO_baz : enable\n"
             "           ^~~~~~~~~~\n");
+}
+
+TEST_F(Directives, KnownExtensionsArePredefinedByDefault) {
+  EXPECT_EQ(output("#version 150\n#if GL_ARB_gpu_shader5 && defined(GL_ARB_fragment_coord_conventions)\nyes\n#endif\n"
+                   "#ifdef GL_NV_ray_tracing\nno\n#endif\n"),
+            "yes");
+  // Not strict by default: an extension the front end does not know is
+  // accepted without a macro (the type checker judges its built-ins).
+  run("#extension GL_FOO_bar : require\n#undef GL_ARB_gpu_shader5\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:8: error: cannot undefine predefined macro 'GL_ARB_gpu_shader5'\n"
+            "#undef GL_ARB_gpu_shader5\n"
+            "       ^~~~~~~~~~~~~~~~~~\n");
+}
+
+TEST_F(Directives, ExtensionsEnableKeywordsAtOlderVersions) {
+  auto unit = run("#version 150\n#extension GL_ARB_shader_subroutine : require\n"
+                  "#extension GL_ARB_shader_storage_buffer_object : enable\n#extension GL_EXT_gpu_shader4 : enable\n"
+                  "#extension GL_AMD_conservative_depth : enable\nsubroutine coherent flat layout\n");
+  ASSERT_GE(unit.tokens.size(), 4u);
+  EXPECT_EQ(unit.tokens[0].kind, TokenKind::kw_subroutine);
+  EXPECT_EQ(unit.tokens[1].kind, TokenKind::kw_coherent);
+  EXPECT_EQ(unit.tokens[2].kind, TokenKind::kw_flat);
+  EXPECT_EQ(unit.tokens[3].kind, TokenKind::kw_layout);
+  EXPECT_EQ(unit.language.version, 150);
+  EXPECT_TRUE(unit.language.extension_enabled("GL_EXT_gpu_shader4"));
+  auto shader4 = run("#extension GL_EXT_gpu_shader4 : require\ncentroid varying unsigned int u; uvec2 v;\n");
+  EXPECT_EQ(spell(shader4), "centroid varying uint u ; uvec2 v ;");
+  EXPECT_EQ(shader4.tokens[0].kind, TokenKind::kw_centroid);
+  EXPECT_EQ(shader4.tokens[2].kind, TokenKind::kw_uint);
+  EXPECT_EQ(shader4.tokens[2].range, sources.range_of(shader4.tokens[2].range.begin.file, 57, 69));
+  EXPECT_EQ(shader4.tokens[5].kind, TokenKind::kw_uvec2);
+  auto plain = run("#version 130\nsubroutine coherent layout\n");
+  EXPECT_EQ(plain.tokens[0].kind, TokenKind::identifier);
+  EXPECT_EQ(plain.tokens[1].kind, TokenKind::identifier);
+  EXPECT_EQ(plain.tokens[2].kind, TokenKind::identifier);
+}
+
+TEST_F(Directives, DoubleLiteralsNeedVersion400OrFp64) {
+  output("#version 330\ndouble d = 1.0lf;\n#extension GL_ARB_gpu_shader_fp64 : enable\ndouble e = 2.0LF;\n");
+  output("#version 310 es\nx = 1.0lf;\n");
+  output("#version 400\ndouble d = 1.0lf;\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:12: error: double-precision literals ('lf' suffix) require #version 400 or "
+            "GL_ARB_gpu_shader_fp64\n"
+            "double d = 1.0lf;\n"
+            "           ^~~~~\n"
+            "main.glsl:2:5: error: double-precision literals ('lf' suffix) are not available in GLSL ES (without "
+            "GL_ARB_gpu_shader_fp64)\n"
+            "x = 1.0lf;\n"
+            "    ^~~~~\n");
+}
+
+TEST_F(Directives, PasteAtAnEndOfTheBodyWarnsAndErrsWhenUsed) {
+  EXPECT_EQ(output("#define UNUSED(arg) x ##\nok\n"), "ok");
+  EXPECT_FALSE(diagnostics.has_errors());
+  output("#define P(a) a ##\nP(1)\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:1:23: warning: '##' cannot appear at either end of a macro body\n"
+            "#define UNUSED(arg) x ##\n"
+            "                      ^~\n"
+            "help: using this macro is an error\n"
+            "main.glsl:1:16: warning: '##' cannot appear at either end of a macro body\n"
+            "#define P(a) a ##\n"
+            "               ^~\n"
+            "help: using this macro is an error\n"
+            "main.glsl:2:1: error: macro 'P' cannot be used: '##' at an end of its body\n"
+            "P(1)\n"
+            "^~~~\n"
+            "main.glsl:1:16: note: '##' is here\n"
+            "#define P(a) a ##\n"
+            "               ^~\n");
+}
+
+TEST_F(Directives, PastingAKeywordFromAnExpandedArgument) {
+  // cppMerge.frag of glslang's tests: the argument is expanded before the
+  // inner macro pastes it, and the pasted word is classified as a keyword.
+  auto unit = run("#version 450\n#define PASTE(a, b) a##b\n#define MAKE(a, b) PASTE(a, b)\n#define PREFIX image\n"
+                  "#define SUFFIX 1D\nMAKE(PREFIX, SUFFIX) MAKE(imag, e1D)\n");
+  EXPECT_EQ(spell(unit), "image1D image1D");
+  EXPECT_EQ(unit.tokens[0].kind, TokenKind::kw_image1D);
+  EXPECT_EQ(unit.tokens[1].kind, TokenKind::kw_image1D);
+  // As in C, pasting joins two tokens only: `imag ## e1 D` is `image1 D`
+  // (glslang glues the D on too; docs/frontend-corpus.md).
+  EXPECT_EQ(output("#define PASTE(a, b) a##b\nPASTE(imag, e1 D)\n"), "image1 D");
+  EXPECT_EQ(errors(), "");
 }
 
 TEST_F(Directives, DirectiveLinesAndSkippedRangesAreRecorded) {

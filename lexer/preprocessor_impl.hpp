@@ -37,6 +37,10 @@ class Preprocessor {
     std::size_t conditional_base = 0;
     bool is_main = false;
     bool is_command_line = false;
+    // What __FILE__ gives: the last `#line N S` source-string number, or the
+    // last `#line N "name"` (GL_GOOGLE_cpp_style_line_directive) as a string.
+    std::uint32_t source_string = 0;
+    std::string_view line_file_name;
   };
   struct Conditional {
     SourceRange directive;

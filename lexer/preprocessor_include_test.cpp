@@ -27,6 +27,21 @@ TEST_F(Includes, AngledIncludesUseOnlySearchPaths) {
   EXPECT_EQ(errors(), "");
 }
 
+TEST_F(Includes, MacroNamesTheFile) {
+  files["defs.glsl"] = "defs\n";
+  files["lib/safegi/prelude.sgl"] = "prelude\n";
+  options.include_paths = {"lib"};
+  EXPECT_EQ(output("#define DEFS \"defs.glsl\"\n#define PRELUDE <safegi/prelude.sgl>\n"
+                   "#include DEFS\n#include PRELUDE\n"),
+            "defs\nprelude");
+  EXPECT_EQ(errors(), "");
+  output("#define NOTHING\n#include NOTHING\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:2:10: error: expected \"FILENAME\" or <FILENAME> after #include\n"
+            "#include NOTHING\n"
+            "         ^~~~~~~\n");
+}
+
 TEST_F(Includes, MacrosCrossIncludes) {
   files["defs.glsl"] = "#define SCALE 2.0\n#define TWICE(x) (x * SCALE)\n";
   EXPECT_EQ(output("#include \"defs.glsl\"\nTWICE(y)\n"), "( y * 2.0 )");

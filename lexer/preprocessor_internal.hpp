@@ -28,6 +28,7 @@ struct Macro {
   std::vector<std::string_view> params;
   std::vector<Token> body;
   SourceRange name_range;   // invalid for predefined macros
+  SourceRange paste_at_edge;  // a '##' that begins or ends the body: expanding is an error
 
   bool same_definition(const Macro& other) const;
   int param_index(std::string_view word) const;

@@ -29,22 +29,29 @@ struct WordInfo {
   std::uint16_t es_since;
   ExtensionGroup group;
   std::uint16_t es_reserved_from;
+  std::uint16_t desktop_reserved_from = 0;
 };
 
-const std::unordered_map<std::string_view, WordInfo>& word_table() {
-  static const std::unordered_map<std::string_view, WordInfo> table = {
+std::unordered_map<std::string_view, WordInfo> make_word_table() {
+  std::unordered_map<std::string_view, WordInfo> table = {
 #define SAFEGI_KEYWORD(name, spelling, category, desktop_since, es_since, group, es_reserved_from) \
   {spelling, {TokenKind::name, desktop_since, es_since, ExtensionGroup::group, es_reserved_from}},
 #define SAFEGI_RESERVED_WORD(spelling, desktop_since, es_since) \
   {spelling, {TokenKind::reserved_word, desktop_since, es_since, ExtensionGroup::none, 0}},
 #include <safegi/lexer/token_kinds.def>
   };
+#define SAFEGI_DESKTOP_RESERVED_BEFORE_KEYWORD(spelling, desktop_from) \
+  table.at(spelling).desktop_reserved_from = desktop_from;
+#include <safegi/lexer/token_kinds.def>
+  return table;
+}
+
+const std::unordered_map<std::string_view, WordInfo>& word_table() {
+  static const std::unordered_map<std::string_view, WordInfo> table = make_word_table();
   return table;
 }
 
 const KindInfo& info(TokenKind kind) { return kKindInfo[static_cast<std::size_t>(kind)]; }
-
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
 struct Suffix {
   std::string_view spelling;
@@ -166,44 +173,6 @@ KeywordContext KeywordContext::everything() {
   return context;
 }
 
-std::uint32_t extension_groups_enabled_by(std::string_view ext) {
-  auto bit = [](ExtensionGroup g) { return 1u << static_cast<unsigned>(g); };
-  if (ext == "GL_ARB_explicit_attrib_location" || ext == "GL_ARB_shading_language_420pack" ||
-      ext == "GL_ARB_explicit_uniform_location" || ext == "GL_ARB_separate_shader_objects" ||
-      ext == "GL_ARB_uniform_buffer_object")
-    return bit(ExtensionGroup::layout);
-  if (ext == "GL_ARB_tessellation_shader" || ext == "GL_EXT_tessellation_shader" ||
-      ext == "GL_OES_tessellation_shader")
-    return bit(ExtensionGroup::tessellation);
-  if (ext == "GL_ARB_gpu_shader5" || ext == "GL_EXT_gpu_shader5" || ext == "GL_OES_gpu_shader5" ||
-      ext == "GL_OES_shader_multisample_interpolation")
-    return bit(ExtensionGroup::gpu_shader5);
-  if (ext == "GL_NV_gpu_shader5") return bit(ExtensionGroup::gpu_shader5) | bit(ExtensionGroup::arithmetic_types);
-  if (ext == "GL_ARB_shader_image_load_store" || ext == "GL_EXT_shader_image_load_store")
-    return bit(ExtensionGroup::image_load_store);
-  if (ext == "GL_ARB_shader_storage_buffer_object") return bit(ExtensionGroup::storage_buffer);
-  if (ext == "GL_ARB_gpu_shader_fp64" || ext == "GL_ARB_vertex_attrib_64bit") return bit(ExtensionGroup::fp64);
-  if (ext == "GL_ARB_shader_atomic_counters") return bit(ExtensionGroup::atomic_counters);
-  if (ext == "GL_EXT_texture_array") return bit(ExtensionGroup::texture_array);
-  if (ext == "GL_ARB_texture_rectangle") return bit(ExtensionGroup::texture_rectangle);
-  if (ext == "GL_EXT_texture_buffer" || ext == "GL_OES_texture_buffer" || ext == "GL_ARB_texture_buffer_object" ||
-      ext == "GL_EXT_gpu_shader4")
-    return bit(ExtensionGroup::texture_buffer);
-  if (ext == "GL_ARB_texture_multisample" || ext == "GL_OES_texture_storage_multisample_2d_array")
-    return bit(ExtensionGroup::multisample);
-  if (ext == "GL_ARB_texture_cube_map_array" || ext == "GL_EXT_texture_cube_map_array" ||
-      ext == "GL_OES_texture_cube_map_array")
-    return bit(ExtensionGroup::cube_map_array);
-  if (ext == "GL_OES_EGL_image_external" || ext == "GL_OES_EGL_image_external_essl3")
-    return bit(ExtensionGroup::external_image);
-  if (ext == "GL_KHR_vulkan_glsl") return bit(ExtensionGroup::vulkan);
-  if (starts_with(ext, "GL_EXT_shader_explicit_arithmetic_types") || ext == "GL_ARB_gpu_shader_int64" ||
-      ext == "GL_AMD_gpu_shader_half_float" || ext == "GL_AMD_gpu_shader_int16" ||
-      ext == "GL_EXT_shader_16bit_storage" || ext == "GL_EXT_shader_8bit_storage")
-    return bit(ExtensionGroup::arithmetic_types);
-  return 0;
-}
-
 TokenKind classify_word(std::string_view word, const KeywordContext& context) {
   const auto& table = word_table();
   auto it = table.find(word);
@@ -214,6 +183,9 @@ TokenKind classify_word(std::string_view word, const KeywordContext& context) {
                    (w.group != ExtensionGroup::none && context.enabled(w.group));
   if (available) return w.kind;
   if (context.es && w.es_reserved_from != 0 && context.version >= w.es_reserved_from) {
+    return TokenKind::reserved_word;
+  }
+  if (!context.es && w.desktop_reserved_from != 0 && context.version >= w.desktop_reserved_from) {
     return TokenKind::reserved_word;
   }
   return TokenKind::identifier;

@@ -1,4 +1,5 @@
 #include <safegi/lexer/token.hpp>
+#include <safegi/lexer/extensions.hpp>
 
 #include <gtest/gtest.h>
 
@@ -100,6 +101,72 @@ TEST(Token, ExtensionsEnableKeywords) {
   c.extension_groups |= extension_groups_enabled_by("GL_KHR_vulkan_glsl");
   EXPECT_EQ(classify_word("subpassInput", c), TokenKind::kw_subpassInput);
   EXPECT_EQ(extension_groups_enabled_by("GL_EXT_unknown"), 0u);
+}
+
+TEST(Token, ExtensionTableIsSortedAndNamesTheDefaultMacros) {
+  auto known = known_extensions();
+  for (std::size_t i = 1; i < known.size(); ++i) EXPECT_LT(known[i - 1].name, known[i].name);
+  EXPECT_EQ(default_extension_macros().size(), known.size());
+  EXPECT_NE(find_extension("GL_ARB_shader_subroutine"), nullptr);
+  EXPECT_EQ(find_extension("GL_NV_ray_tracing"), nullptr);
+  // Vulkan GLSL enables its types but is no driver extension macro.
+  EXPECT_NE(extension_groups_enabled_by("GL_KHR_vulkan_glsl"), 0u);
+  for (const std::string& name : default_extension_macros()) EXPECT_NE(name, "GL_KHR_vulkan_glsl");
+}
+
+TEST(Token, ExtensionsEnableKeywordsOfOlderVersions) {
+  KeywordContext c = context(130);
+  for (std::string_view word : {"subroutine", "coherent", "readonly", "buffer", "layout"}) {
+    EXPECT_EQ(classify_word(word, c), TokenKind::identifier) << word;
+  }
+  c.extension_groups |= extension_groups_enabled_by("GL_ARB_shader_subroutine") |
+                        extension_groups_enabled_by("GL_ARB_shader_storage_buffer_object") |
+                        extension_groups_enabled_by("GL_ARB_fragment_coord_conventions");
+  EXPECT_EQ(classify_word("subroutine", c), TokenKind::kw_subroutine);
+  EXPECT_EQ(classify_word("coherent", c), TokenKind::kw_coherent);
+  EXPECT_EQ(classify_word("readonly", c), TokenKind::kw_readonly);
+  EXPECT_EQ(classify_word("buffer", c), TokenKind::kw_buffer);
+  EXPECT_EQ(classify_word("layout", c), TokenKind::kw_layout);
+  EXPECT_EQ(classify_word("image2D", c), TokenKind::reserved_word);  // storage buffers bring no images
+  KeywordContext old = context(120);
+  old.extension_groups |= extension_groups_enabled_by("GL_EXT_gpu_shader4");
+  EXPECT_EQ(classify_word("flat", old), TokenKind::kw_flat);
+  EXPECT_EQ(classify_word("noperspective", old), TokenKind::kw_noperspective);
+}
+
+TEST(Token, LaterKeywordsAreReservedInOlderDesktopVersions) {
+  EXPECT_EQ(classify_word("double", context(110)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("double", context(400)), TokenKind::kw_double);
+  EXPECT_EQ(classify_word("image2D", context(120)), TokenKind::identifier);
+  EXPECT_EQ(classify_word("image2D", context(130)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("samplerBuffer", context(130)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("samplerBuffer", context(140)), TokenKind::kw_samplerBuffer);
+  EXPECT_EQ(classify_word("image2D", context(300, true)), TokenKind::identifier);  // desktop lists only
+  KeywordContext fp64 = context(150);
+  fp64.extension_groups |= extension_groups_enabled_by("GL_ARB_gpu_shader_fp64");
+  EXPECT_EQ(classify_word("dvec3", fp64), TokenKind::kw_dvec3);
+}
+
+TEST(Token, FeatureGates) {
+  LanguageLevel level;
+  level.version = 330;
+  EXPECT_FALSE(level.allows(LanguageFeature::double_literals));
+  EXPECT_FALSE(level.allows(LanguageFeature::arrays_of_arrays));
+  level.extensions = {"GL_ARB_gpu_shader_fp64", "GL_ARB_arrays_of_arrays"};
+  EXPECT_TRUE(level.allows(LanguageFeature::double_literals));
+  EXPECT_TRUE(level.allows(LanguageFeature::arrays_of_arrays));
+  LanguageLevel es{310, true, {}};
+  EXPECT_TRUE(es.allows(LanguageFeature::arrays_of_arrays));
+  EXPECT_FALSE(es.allows(LanguageFeature::double_literals));
+  EXPECT_TRUE(LanguageLevel::everything().allows(LanguageFeature::double_literals));
+  EXPECT_EQ(feature_requirement(LanguageFeature::arrays_of_arrays, false),
+            "arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays");
+  EXPECT_EQ(feature_requirement(LanguageFeature::arrays_of_arrays, true),
+            "arrays of arrays require #version 310 es or GL_ARB_arrays_of_arrays");
+  EXPECT_EQ(feature_requirement(LanguageFeature::double_literals, true),
+            "double-precision literals ('lf' suffix) are not available in GLSL ES (without GL_ARB_gpu_shader_fp64)");
+  EXPECT_EQ(feature_requirement(LanguageFeature::global_in_out, false),
+            "'in' and 'out' on global variables require #version 130");
 }
 
 TEST(Token, KindNamesAndCategories) {

@@ -361,6 +361,11 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
     return parse_function_rest(std::move(qualifiers), type, name, begin, std::move(template_params),
                                template_range, global);
   }
+  if (global) {
+    for (const Qualifier& q : qualifiers.list) {
+      if (q.word == "in" || q.word == "out") require(LanguageFeature::global_in_out, q.range);
+    }
+  }
   return parse_init_declarators(std::move(qualifiers), type, begin);
 }
 
@@ -576,7 +581,7 @@ Qualifier Parser::parse_subroutine_qualifier() {
 
 // ------------------------------------------------------------------- types
 
-void Parser::parse_array_dims(std::vector<ArrayDim>& dims) {
+void Parser::parse_array_dims(std::vector<ArrayDim>& dims, std::size_t outer) {
   while (at(T::LBracket)) {
     ArrayDim dim;
     SourceLocation begin = here();
@@ -584,8 +589,14 @@ void Parser::parse_array_dims(std::vector<ArrayDim>& dims) {
     if (!at(T::RBracket)) dim.size = parse_conditional();
     expect(T::RBracket, "']'", "to close array size");
     dim.range = range_from(begin);
+    if (outer + dims.size() == 1) require(LanguageFeature::arrays_of_arrays, dim.range);
     dims.push_back(dim);
   }
+}
+
+void Parser::require(LanguageFeature feature, SourceRange where) {
+  if (!options_.language || options_.language->allows(feature)) return;
+  diagnostics_.report(Diagnostic::error(where, feature_requirement(feature, options_.language->es)));
 }
 
 TypeSpecifier* Parser::parse_type_specifier() {
@@ -660,7 +671,7 @@ std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
         const PToken& name = expect(T::Ident, "a member name", context);
         d.name = std::string(name.text);
         d.name_range = name.range;
-        parse_array_dims(d.array_dims);
+        parse_array_dims(d.array_dims, type->array_dims.size());
         d.range = range_from(d_begin);
         member->declarators.push_back(std::move(d));
       } while (accept(T::Comma));
@@ -727,7 +738,7 @@ ParamDecl* Parser::parse_parameter() {
   if (at(T::Ident)) {
     param->name = std::string(peek().text);
     param->name_range = advance().range;
-    parse_array_dims(param->array_dims);
+    parse_array_dims(param->array_dims, param->type->array_dims.size());
     declare(param->name, NameKind::Value);
   }
   param->range = range_from(begin);
@@ -744,7 +755,7 @@ VariableDecl* Parser::parse_init_declarators(TypeQualifiers qualifiers, TypeSpec
     const PToken& name = expect(T::Ident, "a variable name", "in declaration");
     d.name = std::string(name.text);
     d.name_range = name.range;
-    parse_array_dims(d.array_dims);
+    parse_array_dims(d.array_dims, type ? type->array_dims.size() : 0);
     if (accept(T::Assign)) d.initializer = parse_initializer();
     d.range = range_from(d_begin);
     declare(d.name, NameKind::Value);

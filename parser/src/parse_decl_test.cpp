@@ -134,5 +134,58 @@ TEST(ParseDecl, DeclarationRangesAndNameRanges) {
   EXPECT_EQ(decl->type->name_range.begin.column, 9u);
 }
 
+TEST(ParseDecl, ArraysOfArraysNeedVersion430OrTheirExtension) {
+  ParseOptions options;
+  options.language = LanguageLevel{330, false, {}};
+  auto parsed = parse_text("float a[2][3];\nfloat[2] b[3];\nstruct S { vec2 m[1][2]; };\nvoid f(int p[2][2]);\n"
+                           "float c[4];\nfloat[5] d;\n",
+                           options);
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "float a[2][3];\n"
+            "          ^~~\n"
+            "test.glsl:2:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "float[2] b[3];\n"
+            "          ^~~\n"
+            "test.glsl:3:21: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "struct S { vec2 m[1][2]; };\n"
+            "                    ^~~\n"
+            "test.glsl:4:16: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "void f(int p[2][2]);\n"
+            "               ^~~\n");
+  options.language->extensions = {"GL_ARB_arrays_of_arrays"};
+  EXPECT_EQ(parse_text("float a[2][3];\n", options)->errors(), "");
+  options.language = LanguageLevel{310, true, {}};
+  EXPECT_EQ(parse_text("float a[2][3];\n", options)->errors(), "");
+  EXPECT_EQ(parse_text("float a[2][3];\n")->errors(), "");  // no language given: everything allowed
+}
+
+TEST(ParseDecl, GlobalInOutAndIntegerOperatorsNeedVersion130) {
+  ParseOptions options;
+  options.language = LanguageLevel{120, false, {}};
+  auto parsed = parse_text("in vec4 v;\nvoid f(in int a, out int b) { b = a % 2; b <<= ~a; }\n", options);
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:1: error: 'in' and 'out' on global variables require #version 130\n"
+            "in vec4 v;\n"
+            "^~\n"
+            "test.glsl:2:37: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
+            "                                    ^\n"
+            "test.glsl:2:44: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
+            "                                           ^~~\n"
+            "test.glsl:2:48: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
+            "                                               ^\n");
+  options.language = LanguageLevel{100, true, {}};
+  EXPECT_NE(parse_text("out vec4 v;\n", options)->errors(), "");
+  options.language = LanguageLevel{300, true, {}};
+  EXPECT_EQ(parse_text("out vec4 v;\nvoid f() { int a = 5 % 2; }\n", options)->errors(), "");
+  options.language = LanguageLevel{110, false, {"GL_EXT_gpu_shader4"}};
+  EXPECT_EQ(parse_text("varying out vec4 v;\nvoid f() { int a = 5 % 2; }\n", options)->errors(), "");
+  options.language = LanguageLevel{110, false, {"GL_ARB_explicit_attrib_location"}};
+  EXPECT_EQ(parse_text("layout(location = 0) in vec4 v;\n", options)->errors(), "");
+}
+
 }  // namespace
 }  // namespace safegi::testing

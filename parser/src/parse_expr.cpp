@@ -12,6 +12,22 @@ using namespace ast;
 
 namespace {
 
+bool is_integer_operator(BinaryOp op) {
+  switch (op) {
+    case BinaryOp::Mod: case BinaryOp::Shl: case BinaryOp::Shr:
+    case BinaryOp::BitAnd: case BinaryOp::BitXor: case BinaryOp::BitOr: return true;
+    default: return false;
+  }
+}
+
+bool is_integer_operator(AssignOp op) {
+  switch (op) {
+    case AssignOp::Mod: case AssignOp::Shl: case AssignOp::Shr:
+    case AssignOp::And: case AssignOp::Xor: case AssignOp::Or: return true;
+    default: return false;
+  }
+}
+
 std::uint32_t height_of(std::initializer_list<const Expr*> children) {
   std::uint32_t h = 0;
   for (const Expr* c : children) {
@@ -156,6 +172,7 @@ Expr* Parser::parse_assignment() {
   SourceLocation op_begin = here();
   for (int i = 0; i < count; ++i) advance();
   assign->op_range = range_from(op_begin);
+  if (is_integer_operator(op)) require(LanguageFeature::integer_operators, assign->op_range);
   assign->lhs = lhs;
   assign->rhs = parse_assignment();
   assign->height = height_of({assign->lhs, assign->rhs});
@@ -195,6 +212,7 @@ Expr* Parser::parse_binary(int min_precedence) {
     SourceLocation op_begin = here();
     for (int i = 0; i < count; ++i) advance();
     binary->op_range = range_from(op_begin);
+    if (is_integer_operator(op)) require(LanguageFeature::integer_operators, binary->op_range);
     binary->lhs = lhs;
     binary->rhs = parse_binary(precedence + 1);
     binary->height = height_of({binary->lhs, binary->rhs});
@@ -219,6 +237,7 @@ Expr* Parser::parse_unary() {
   auto* unary = make<UnaryExpr>(begin);
   unary->op = op;
   unary->op_range = advance().range;
+  if (op == UnaryOp::BitNot) require(LanguageFeature::integer_operators, unary->op_range);
   unary->operand = parse_unary();
   unary->height = height_of({unary->operand});
   return finish_expr(unary, begin);

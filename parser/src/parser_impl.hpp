@@ -91,7 +91,11 @@ class Parser {
   ast::DimExpr* parse_dim_expr();
   ast::DimExpr* parse_dim_term();
   ast::DimExpr* parse_dim_primary();
-  void parse_array_dims(std::vector<ast::ArrayDim>& dims);
+  // `outer`: dimensions the declaration already has (from its type), for the
+  // arrays-of-arrays gate.
+  void parse_array_dims(std::vector<ast::ArrayDim>& dims, std::size_t outer = 0);
+  // Reports `feature` at `where` when ParseOptions::language does not allow it.
+  void require(LanguageFeature feature, SourceRange where);
   ast::FunctionDecl* parse_function_rest(ast::TypeQualifiers qualifiers, ast::TypeSpecifier* type,
                                          const PToken& name, SourceLocation begin,
                                          std::vector<ast::TemplateParam> template_params,

@@ -5,14 +5,22 @@
 //                                         end parses and round-trips
 //   safegi_corpus_check piglit FILE...    glslparsertest files: the share where
 //                                         our syntax verdict agrees with
-//                                         `expect_result`
+//                                         `expect_result`; with
+//                                         SAFEGI_CORPUS_VERBOSE set, also lists
+//                                         the expected failures it accepts
+//   safegi_corpus_check robustness FILE... every file through the front end:
+//                                         no crash, no hang (10 s watchdog)
 //
 // Round trip: preprocess + parse, print (with the #version and #extension
 // lines), preprocess + parse the print, compare tree dumps; glslang must
 // accept the print too.
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstring>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -48,17 +56,26 @@ std::optional<EShLanguage> stage_of(const std::filesystem::path& path) {
 int glslang_crashes = 0;
 
 enum class Verdict { accepted, rejected, syntax_error };
-Verdict glslang_verdict(const std::string& text, EShLanguage stage);
+// `first_error`, when given, receives glslang's first "ERROR:" line.
+Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string* first_error = nullptr);
 
 bool glslang_accepts(const std::string& text, EShLanguage stage) {
   return glslang_verdict(text, stage) == Verdict::accepted;
 }
 
+std::string first_error_line(const std::string& log) {
+  std::size_t at = log.find("ERROR:");
+  if (at == std::string::npos) return "";
+  return log.substr(at, log.find('\n', at) - at);
+}
+
 // Debian's glslang 12 crashes on a few newer test files of its own Test/
 // folder, so each verdict is taken in a child process; a crash counts as
 // "not accepted".
-Verdict glslang_verdict(const std::string& text, EShLanguage stage) {
+Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string* first_error) {
   std::fflush(stdout);
+  int message_pipe[2] = {-1, -1};
+  if (first_error && pipe(message_pipe) != 0) first_error = nullptr;
   pid_t child = fork();
   if (child == 0) {
     int null = open("/dev/null", O_WRONLY);  // glslang prints its own complaints
@@ -69,7 +86,19 @@ Verdict glslang_verdict(const std::string& text, EShLanguage stage) {
     shader.setStrings(&source, 1);
     // Without #version a shader is GLSL 1.10, as for our preprocessor.
     if (shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) _exit(0);
-    _exit(std::string(shader.getInfoLog()).find("syntax error") != std::string::npos ? 2 : 1);
+    std::string log = shader.getInfoLog();
+    if (first_error) {
+      std::string line = first_error_line(log).substr(0, 512);
+      if (write(message_pipe[1], line.data(), line.size()) < 0) _exit(1);
+    }
+    _exit(log.find("syntax error") != std::string::npos ? 2 : 1);
+  }
+  if (first_error) {
+    close(message_pipe[1]);
+    char buffer[600];
+    ssize_t n = child > 0 ? read(message_pipe[0], buffer, sizeof buffer) : 0;
+    *first_error = n > 0 ? std::string(buffer, static_cast<std::size_t>(n)) : "";
+    close(message_pipe[0]);
   }
   int status = 0;
   if (child < 0 || waitpid(child, &status, 0) != child) return Verdict::rejected;
@@ -99,7 +128,9 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
   safegi::PreprocessorOptions options;
   if (!include_dir.empty()) options.include_paths.push_back(include_dir);
   safegi::PreprocessedUnit unit = safegi::preprocess(sources, file, options, diagnostics);
-  safegi::ParseResult parsed = safegi::parse(unit.tokens, diagnostics);
+  safegi::ParseOptions parse_options;
+  parse_options.language = unit.language;
+  safegi::ParseResult parsed = safegi::parse(unit.tokens, diagnostics, parse_options);
   result.version = unit.version;
   result.es = unit.es;
   result.ok = !diagnostics.has_errors();
@@ -222,6 +253,8 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
   int syntax_fail = 0, syntax_fail_rejected = 0;  // expected to fail, and glslang says "syntax error"
   std::vector<std::string> syntax_missed;
   std::vector<std::string> ours_rejects_valid;
+  std::vector<std::string> accepted_failures;  // --verbose: expected to fail, accepted by the front end
+  bool verbose = std::getenv("SAFEGI_CORPUS_VERBOSE") != nullptr;
   Tally all, recent;  // round trips of the shaders glslang accepts, whatever piglit expects
   std::vector<std::string> round_trip_failures;
   for (const auto& path : files) {
@@ -233,7 +266,11 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
     ++total;
     bool expect_pass = *expectation == "pass";
     FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string());
-    Verdict verdict = glslang_verdict(text, *stage);
+    std::string glslang_error;
+    Verdict verdict = glslang_verdict(text, *stage, &glslang_error);
+    if (verbose && !expect_pass && ours.ok) {
+      accepted_failures.push_back(path.string() + " | glslang: " + (glslang_error.empty() ? "accepts" : glslang_error));
+    }
     bool glslang_ok = verdict == Verdict::accepted;
     if (glslang_ok) check_round_trip(path, text, *stage, all, recent, round_trip_failures);
     agree += ours.ok == expect_pass;
@@ -264,16 +301,62 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
   for (const std::string& f : syntax_missed) std::printf("  %s\n", f.c_str());
   std::printf("expected to pass but rejected by the front end (%zu):\n", ours_rejects_valid.size());
   for (const std::string& f : ours_rejects_valid) std::printf("  %s\n", f.c_str());
+  if (verbose) {
+    std::printf("expected to fail but accepted by the front end, with glslang's first error (%zu):\n",
+                accepted_failures.size());
+    for (const std::string& f : accepted_failures) std::printf("  %s\n", f.c_str());
+  }
   std::printf("piglit shaders glslang accepts, parsed and round-tripped:\n");
   print_round_trips(all, recent, round_trip_failures);
+  return 0;
+}
+
+// The file being checked, for the watchdog's message.
+char current_file[4096] = "";
+
+void on_timeout(int) {
+  const char prefix[] = "front end hangs (over 10 s) on ";
+  if (write(2, prefix, sizeof prefix - 1) < 0 || write(2, current_file, std::strlen(current_file)) < 0) _exit(3);
+  _exit(3);
+}
+
+// Every file through the front end and its printer, whatever glslang thinks
+// of it (Vulkan, HLSL, shaders meant to fail): no crash, no hang. A crash
+// ends the process (the caller sees it); a file over 10 s ends it with the
+// file's name.
+int run_robustness_mode(const std::vector<std::filesystem::path>& files) {
+  std::signal(SIGALRM, on_timeout);
+  int total = 0, accepted = 0;
+  double slowest = 0;
+  std::string slowest_file;
+  for (const auto& path : files) {
+    std::snprintf(current_file, sizeof current_file, "%s", path.string().c_str());
+    std::string text = read(path);
+    alarm(10);
+    auto start = std::chrono::steady_clock::now();
+    FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
+    if (first.ok) run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    alarm(0);
+    ++total;
+    accepted += first.ok;
+    if (seconds > slowest) {
+      slowest = seconds;
+      slowest_file = path.string();
+    }
+  }
+  std::printf("robustness: %d files through the front end, %d accepted, %d rejected with diagnostics; "
+              "no crash, no hang; slowest %.3f s (%s)\n",
+              total, accepted, total - accepted, slowest, slowest_file.c_str());
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3 || (std::string(argv[1]) != "glslang" && std::string(argv[1]) != "piglit")) {
-    std::fprintf(stderr, "usage: %s glslang|piglit FILE|DIR|@LIST...\n", argv[0]);
+  std::string mode = argc >= 2 ? argv[1] : "";
+  if (argc < 3 || (mode != "glslang" && mode != "piglit" && mode != "robustness")) {
+    std::fprintf(stderr, "usage: %s glslang|piglit|robustness FILE|DIR|@LIST...\n", argv[0]);
     return 2;
   }
   std::vector<std::filesystem::path> files;
@@ -297,7 +380,8 @@ int main(int argc, char** argv) {
   }
   std::sort(files.begin(), files.end());
   glslang::InitializeProcess();
-  int rc = std::string(argv[1]) == "glslang" ? run_glslang_mode(files) : run_piglit_mode(files);
+  int rc = mode == "glslang" ? run_glslang_mode(files) : mode == "piglit" ? run_piglit_mode(files)
+                                                                          : run_robustness_mode(files);
   glslang::FinalizeProcess();
   return rc;
 }

@@ -16,6 +16,7 @@
 
 #include <safegi/diagnostics/diagnostic.hpp>
 #include <safegi/diagnostics/source_manager.hpp>
+#include <safegi/lexer/extensions.hpp>
 #include <safegi/lexer/token.hpp>
 
 namespace safegi {
@@ -25,10 +26,14 @@ struct PreprocessorOptions {
   std::vector<std::pair<std::string, std::string>> defines;     // -D NAME=value (value may be empty)
   std::vector<std::string> undefines;                           // -U NAME
   // Extensions the target supports: each is predefined as a macro with value
-  // 1, as drivers do (`#ifdef GL_ARB_gpu_shader5`). When the list is not
-  // empty, `#extension X : require` of another extension is an error (enable
-  // and warn: a warning). Empty by default: every extension is accepted.
-  std::vector<std::string> extension_macros;
+  // 1, as drivers do (`#ifdef GL_ARB_gpu_shader5`). Default: the extensions
+  // whose syntax the front end parses (known_extensions(), docs/preprocessor.md).
+  std::vector<std::string> extension_macros = default_extension_macros();
+  // When set, `#extension X : require` of an extension not in
+  // extension_macros is an error (enable and warn: a warning), as a driver
+  // reports it. Off by default: the type checker, not the preprocessor,
+  // knows which built-ins an unknown extension would have added.
+  bool reject_unsupported_extensions = false;
   // Reads an include candidate; nullopt when it does not exist. Default: the
   // file system. Tests and embedders (an in-memory prelude) replace it.
   std::function<std::optional<std::string>(const std::string& path)> read_file;
@@ -86,6 +91,7 @@ struct PreprocessedUnit {
   bool version_given = false;
   SourceRange version_range;  // the #version line, if any
   KeywordContext keywords;    // the context the words were classified in (after all #extension)
+  LanguageLevel language;     // #version and enabled extensions, for the parser's feature gates
   std::vector<ExtensionDirective> extensions;
   std::vector<PragmaDirective> pragmas;
   std::vector<LineDirective> line_directives;

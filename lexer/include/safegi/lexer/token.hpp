@@ -53,9 +53,14 @@ enum class ExtensionGroup : std::uint8_t {
   external_image,     // GL_OES_EGL_image_external(_essl3)
   vulkan,             // Vulkan GLSL (GL_KHR_vulkan_glsl): texture*, sampler, subpassInput*
   arithmetic_types,   // GL_EXT_shader_explicit_arithmetic_types*, GL_ARB_gpu_shader_int64, ...
+  subroutine,         // GL_ARB_shader_subroutine
+  memory_qualifiers,  // coherent, volatile, restrict, readonly, writeonly: image load/store, storage buffers
+  interpolation,      // flat, smooth, noperspective, centroid: GL_EXT_gpu_shader4, GL_NV_shader_noperspective_interpolation
+  unsigned_integers,  // uint, uvecN and `unsigned int`: GL_EXT_gpu_shader4
 };
 
-// Bit mask of ExtensionGroup values that `extension` (a #extension name) enables.
+// Bit mask of ExtensionGroup values that `extension` (a #extension name)
+// enables; the table is in extensions.hpp (known_extensions()).
 std::uint32_t extension_groups_enabled_by(std::string_view extension);
 
 struct KeywordContext {

@@ -4,11 +4,13 @@
 // mistake); the tree then holds everything that could be parsed.
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 
 #include <safegi/diagnostics/diagnostic.hpp>
 #include <safegi/diagnostics/source_location.hpp>
+#include <safegi/lexer/extensions.hpp>
 #include <safegi/lexer/token.hpp>
 #include <safegi/parser/ast.hpp>
 
@@ -20,6 +22,10 @@ struct ParseOptions {
   unsigned max_nesting = 256;
   // Height of any expression tree (long left-associative chains included).
   unsigned max_expression_height = 2048;
+  // The shader's #version and extensions (PreprocessedUnit::language): syntax
+  // they do not allow is an error, e.g. "arrays of arrays require #version 430
+  // or GL_ARB_arrays_of_arrays". Unset: every feature is allowed.
+  std::optional<LanguageLevel> language;
 };
 
 struct ParseResult {

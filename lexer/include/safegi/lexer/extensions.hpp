@@ -1,0 +1,56 @@
+#pragma once
+// GLSL extensions and version-gated language features, as data.
+//
+// known_extensions(): every extension whose syntax the front end parses, with
+// the keyword groups it turns on (token_kinds.def); these are the extension
+// macros a shader sees by default (`#ifdef GL_ARB_gpu_shader5`).
+//
+// LanguageFeature: syntax that exists only from some #version on or with an
+// extension (`1.0lf`, arrays of arrays). LanguageLevel says what a shader's
+// #version and #extension lines allow, and feature_requirement() words the
+// diagnostic: "arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays".
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace safegi {
+
+struct ExtensionInfo {
+  std::string_view name;
+  std::uint32_t keyword_groups = 0;  // bits (1 << ExtensionGroup)
+};
+
+// Sorted by name.
+std::span<const ExtensionInfo> known_extensions();
+const ExtensionInfo* find_extension(std::string_view name);
+// The names of known_extensions(): PreprocessorOptions::extension_macros' default.
+std::vector<std::string> default_extension_macros();
+
+enum class LanguageFeature : std::uint8_t {
+  double_literals,    // 1.0lf
+  arrays_of_arrays,   // float a[2][3]
+  global_in_out,      // `in` / `out` on global variables (1.10 has attribute and varying)
+  integer_operators,  // % << >> & | ^ ~ and their assignments
+};
+
+// The language a shader is written in: its #version and the extensions its
+// #extension lines turned on (enable, require or warn; disable removes).
+struct LanguageLevel {
+  int version = 460;
+  bool es = false;
+  std::vector<std::string> extensions;
+
+  bool extension_enabled(std::string_view name) const;
+  bool allows(LanguageFeature feature) const;
+  // Everything allowed: for callers that know no #version (tests, tools).
+  static LanguageLevel everything();
+};
+
+// "arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays" (desktop)
+// or "... require #version 310 es" (ES); "... are not available in GLSL ES".
+std::string feature_requirement(LanguageFeature feature, bool es);
+
+}  // namespace safegi
