@@ -175,11 +175,15 @@ class SignatureReader {
         return;
       }
     }
-    if (w == "matF") return set(t, SizeClass::mat, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "matFT") return set(t, SizeClass::mat_transposed, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "matFsq") return set(t, SizeClass::mat_square, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "colF") return set(t, SizeClass::column, Type::vector_of(Scalar::float_, 2));
-    if (w == "rowF") return set(t, SizeClass::row, Type::vector_of(Scalar::float_, 2));
+    // Matrix words: float (F) and double (D) matrices and their columns/rows.
+    for (const auto& f : {kFamilies[0], kFamilies[1]}) {
+      const std::string x = f.prefix;
+      if (w == "mat" + x) return set(t, SizeClass::mat, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "mat" + x + "T") return set(t, SizeClass::mat_transposed, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "mat" + x + "sq") return set(t, SizeClass::mat_square, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "col" + x) return set(t, SizeClass::column, Type::vector_of(f.scalar, 2));
+      if (w == "row" + x) return set(t, SizeClass::row, Type::vector_of(f.scalar, 2));
+    }
     if (w == "void") return set(t, SizeClass::fixed, Type::void_type());
     if (w == "geo") {
       t.any_geometric = true;

@@ -15,6 +15,19 @@ const Type* CheckResult::type_of(const ast::Declarator* declarator) const {
   return it == declarators.end() ? nullptr : &it->second;
 }
 
+const char* stage_name(Stage stage) {
+  switch (stage) {
+    case Stage::vertex: return "vertex";
+    case Stage::tess_control: return "tessellation control";
+    case Stage::tess_evaluation: return "tessellation evaluation";
+    case Stage::geometry: return "geometry";
+    case Stage::fragment: return "fragment";
+    case Stage::compute: return "compute";
+    case Stage::unknown: break;
+  }
+  return "unknown";
+}
+
 CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics) {
   CheckResult result;
   detail::Checker checker(options, diagnostics, result);

@@ -49,7 +49,8 @@ struct Variable {
 struct Function {
   std::string name;
   std::vector<Type> params;
-  std::vector<bool> out_params;
+  std::vector<bool> out_params;    // out or inout: the argument must be writable
+  std::vector<bool> inout_params;  // inout: no implicit conversion either way
   Type result;
   std::vector<std::string> dim_params;
   std::vector<std::string> space_params;
@@ -90,6 +91,8 @@ class Checker {
   void push_scope() { scopes_.emplace_back(); }
   void pop_scope() { scopes_.pop_back(); }
   void declare_builtin_variables();
+  // The stages that have built-in `name` when the current stage does not ("vertex and geometry"), else empty.
+  std::string stages_owning_builtin(const std::string& name) const;
   void record_interface(const ast::TypeQualifiers& q, const std::string& name, const std::string& block, const Type& t,
                         SourceRange range, const ast::Node* decl);
 

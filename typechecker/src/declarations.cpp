@@ -34,6 +34,12 @@ char stage_letter(Stage s) {
   return '*';
 }
 
+const char* stage_words(char letter) {
+  for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
+    if (stage_letter(s) == letter) return stage_name(s);
+  return stage_name(Stage::unknown);
+}
+
 Type parse_simple_type(std::string_view text) {
   bool array = false;
   int size = -1;
@@ -124,6 +130,22 @@ void Checker::declare_builtin_variables() {
   }
 }
 
+std::string Checker::stages_owning_builtin(const std::string& name) const {
+  const char letter = stage_letter(options_.stage);
+  if (letter == '*') return {};
+  std::string owners;  // stage letters, in the table's order
+  for (const BuiltinVariableEntry& e : kBuiltinVariables) {
+    if (e.name != name) continue;
+    if (std::strchr(e.stages, letter)) return {};
+    for (const char* s = e.stages; *s; ++s)
+      if (owners.find(*s) == std::string::npos) owners += *s;
+  }
+  std::string words;
+  for (std::size_t i = 0; i < owners.size(); ++i)
+    words += std::string(i == 0 ? "" : i + 1 == owners.size() ? " and " : ", ") + stage_words(owners[i]);
+  return words;
+}
+
 const Variable* Checker::lookup(const std::string& name) const {
   for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
     auto found = it->find(name);
@@ -135,8 +157,12 @@ const Variable* Checker::lookup(const std::string& name) const {
 void Checker::declare_variable(Variable v) {
   auto& scope = scopes_.back();
   auto it = scope.find(v.name);
-  // Built-ins may be redeclared (`layout(origin_upper_left) in vec4 gl_FragCoord;`), even twice.
-  if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0) {
+  // Built-ins may be redeclared (`layout(origin_upper_left) in vec4 gl_FragCoord;`), even twice; so may an
+  // unsized array, with a size (GLSL 1.20 §4.1.9).
+  const auto sizes_unsized_array = [&](const Type& before) {
+    return before.is_array() && before.array[0] < 0 && v.type.is_array() && same_glsl_type(before.element(), v.type.element());
+  };
+  if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0 && !sizes_unsized_array(it->second.type)) {
     Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code("E-REDEFINITION");
     d.with_note(Diagnostic::note(it->second.range, "previous definition is here"));
     report(std::move(d));
@@ -285,6 +311,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     result_.types[p] = t;
     f.params.push_back(t);
     f.out_params.push_back(p->qualifiers.has("out") || p->qualifiers.has("inout"));
+    f.inout_params.push_back(p->qualifiers.has("inout"));
   }
   f.defined = d.body != nullptr;
 

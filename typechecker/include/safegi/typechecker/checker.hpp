@@ -26,6 +26,9 @@ namespace safegi {
 
 enum class Stage : std::uint8_t { vertex, tess_control, tess_evaluation, geometry, fragment, compute, unknown };
 
+// "vertex", "tessellation control", …, "fragment", "compute" ("unknown" for Stage::unknown).
+const char* stage_name(Stage stage);
+
 struct CheckOptions {
   Stage stage = Stage::unknown;  // selects the built-in variables (gl_Position, gl_FragCoord, …)
   bool strict = false;           // warn on unannotated interface variables and on `?` flowing into annotations
