@@ -195,6 +195,8 @@ CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOpt
     CheckOptions check_options;
     check_options.stage = w.stage;
     check_options.strict = options.strict;
+    check_options.tokens = &w.preprocessed.tokens;
+    check_options.sources = manager.get();
     w.checked = check(*w.parsed.unit, check_options, diags);
     w.ok = diags.error_count() == errors_before;
   }

@@ -1,6 +1,7 @@
 #include "builtins.hpp"
 
 #include <cctype>
+#include <mutex>
 #include <stdexcept>
 
 namespace safegi {
@@ -246,6 +247,29 @@ BuiltinLibrary::BuiltinLibrary(const DimensionRegistry& registry) {
     if (!sig.text.empty()) SignatureReader(sig.text, registry, sig).read();
     by_name_[sig.name].push_back(std::move(sig));
   }
+}
+
+std::shared_ptr<const BuiltinLibrary> BuiltinLibrary::for_registry(const DimensionRegistry& registry) {
+  // The signatures depend on the registry only through find_dimension(), i.e.
+  // through the base names (their ids) and the derived dimensions' values.
+  std::string key;
+  for (const std::string& base : registry.bases()) key += base + ';';
+  key += '|';
+  for (const DerivedDimension& d : registry.derived()) {
+    key += d.name + '=';
+    for (const Factor& f : d.value.factors()) key += std::to_string(f.base) + '^' + std::to_string(f.exponent) + ',';
+    key += ';';
+  }
+  static std::mutex mutex;
+  static std::unordered_map<std::string, std::shared_ptr<const BuiltinLibrary>> cache;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  auto library = std::make_shared<const BuiltinLibrary>(registry);  // outside the lock: other threads go on
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cache.size() >= 64) cache.clear();  // bounded: programs with ever new vocabularies
+  return cache.emplace(std::move(key), std::move(library)).first->second;
 }
 
 const std::vector<Signature>* BuiltinLibrary::find(std::string_view name) const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "builtins.hpp"
+#include "expansions.hpp"
 #include "safegi/typechecker/checker.hpp"
 
 namespace safegi::detail {
@@ -44,6 +45,7 @@ struct Variable {
   bool builtin = false;
   std::optional<long long> constant;
   Origin origin;
+  std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
 };
 
 struct Function {
@@ -149,7 +151,13 @@ class Checker {
     v.range = range;
     return v;
   }
-  void report(Diagnostic d) { diagnostics_.report(std::move(d)); }
+  void report(Diagnostic d) {
+    if (d.expansion == kNoExpansion)
+      d.expansion = expansions_.find(d.range, !written_statements_.empty() ? written_statements_.back()
+                                              : current_function_          ? current_function_->decl->range
+                                                                           : SourceRange{});
+    diagnostics_.report(std::move(d));
+  }
   // Names of extension built-ins and types this checker does not model
   // (subgroup*, *ARB/*EXT/*NV, int64_t, f16vec3, ...): left to the driver.
   static bool extension_name(const std::string& name);
@@ -161,7 +169,7 @@ class Checker {
   const CheckOptions& options_;
   DiagnosticEngine& diagnostics_;
   CheckResult& result_;
-  std::unique_ptr<BuiltinLibrary> builtins_;  // built after the program's dimension declarations
+  std::shared_ptr<const BuiltinLibrary> builtins_;  // built after the program's dimension declarations
   std::vector<std::unordered_map<std::string, Variable>> scopes_;
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
@@ -170,6 +178,8 @@ class Checker {
   const std::vector<std::string>* template_spaces_ = nullptr;
   const Function* current_function_ = nullptr;
   int loop_depth_ = 0;
+  ExpansionFinder expansions_;
+  std::vector<SourceRange> written_statements_;  // enclosing statements not produced by a macro, innermost last
 };
 
 }  // namespace safegi::detail

@@ -1,6 +1,8 @@
 // Constructors, casts (`float<solid_angle>(x)`) and the rule-typed built-in
 // families (texture*, image*, atomic counters).
 
+#include <cmath>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -114,6 +116,15 @@ Value Checker::constructor(const ast::CallExpr& e) {
     return out;
   }
 
+  // Scalar conversions of constants: int(2.5) is the constant 2, float(N) the number N.
+  if (single && t.shape == Shape::scalar && first.shape == Shape::scalar) {
+    const std::optional<double> n = args[0].constant ? std::optional<double>(static_cast<double>(*args[0].constant)) : args[0].number;
+    if (n && t.is_floating()) out.number = n;
+    if (n && t.is_integer() && std::fabs(*n) < 2147483648.0 && (t.scalar == Scalar::int_ || *n >= 0.0)) {
+      out.constant = static_cast<long long>(*n);
+      out.number = static_cast<double>(*out.constant);
+    }
+  }
   // A plain GLSL constructor: the components' common dimension, if they share one.
   if (t.shape == Shape::matrix) return out;  // matrices built from parts stay unannotated
   std::optional<DimSlot> common;

@@ -78,7 +78,9 @@ bool is_storage(const ast::TypeQualifiers& q, const char* word) { return q.has(w
 }  // namespace
 
 Checker::Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result)
-    : options_(options), diagnostics_(diagnostics), result_(result) {}
+    : options_(options), diagnostics_(diagnostics), result_(result) {
+  if (options.tokens && options.sources) expansions_ = ExpansionFinder(*options.tokens, *options.sources);
+}
 
 void Checker::run(const ast::TranslationUnit& unit) {
   // Annotation declarations first: the built-in signatures are resolved against them.
@@ -87,7 +89,7 @@ void Checker::run(const ast::TranslationUnit& unit) {
     else if (const auto* u = ast::dyn_cast<ast::UnitDecl>(d)) declare_unit(*u);
     else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
   }
-  builtins_ = std::make_unique<BuiltinLibrary>(result_.registry);
+  builtins_ = BuiltinLibrary::for_registry(result_.registry);
   push_scope();
   declare_builtin_variables();
   push_scope();  // the program's globals may shadow built-ins (redeclaring gl_* blocks)
@@ -258,6 +260,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
         poisoned = true;  // one mistake, one error: later uses of this variable stay silent
       }
       if (is_const && init.constant && declared.shape == Shape::scalar && declared.is_integer()) v.constant = init.constant;
+      if (is_const && init.number && declared.shape == Shape::scalar && declared.is_floating()) v.number = init.number;
     } else if (is_const && !global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
     }
@@ -362,6 +365,16 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
 
 void Checker::statement(const ast::Stmt* s) {
   if (!s || diagnostics_.limit_reached()) return;
+  // The innermost statement the user wrote (not one a macro produced) tells
+  // apart the expansions of a macro used several times (report()).
+  const bool written = !expansions_.from_macro(s->range);
+  if (written) written_statements_.push_back(s->range);
+  struct Pop {
+    std::vector<SourceRange>* stack;
+    ~Pop() {
+      if (stack) stack->pop_back();
+    }
+  } pop{written ? &written_statements_ : nullptr};
   switch (s->kind) {
     case ast::NodeKind::CompoundStmt:
       push_scope();

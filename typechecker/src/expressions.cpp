@@ -42,6 +42,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.lvalue = true;
     v.read_only = var->read_only;
     v.constant = var->constant;
+    v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
     if (var->range.valid()) v.origin = var->origin;
     return v;
