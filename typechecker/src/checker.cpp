@@ -31,6 +31,8 @@ const char* stage_name(Stage stage) {
 CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics) {
   CheckResult result;
   result.stage = options.stage;
+  // Roughly one typed node per token: growing the map by rehashing cost a quarter of a large check.
+  if (options.tokens) result.types.reserve(options.tokens->size());
   detail::Checker checker(options, diagnostics, result);
   checker.run(unit);
   return result;
