@@ -37,6 +37,13 @@ TEST(CrossStage, ByName) {
             Messages{});
 }
 
+TEST(CrossStage, AnUnannotatedSideIsADifferentType) {
+  // The consumer relies on the annotation; `?` does not stand in for it across stages.
+  EXPECT_EQ(match("out vec3 L; void main() {}", Stage::vertex, "in spectrum<radiance> L; void main() {}", Stage::fragment),
+            (Messages{"input 'L' has type spectrum<radiance> but the vertex stage's output 'L' has type vec3",
+                      "note: output 'L' declared here as vec3"}));
+}
+
 TEST(CrossStage, ByLocation) {
   EXPECT_EQ(match("layout(location = 1) out spectrum<radiance> radianceOut; void main() {}", Stage::vertex,
                   "layout(location = 1) in spectrum<irradiance> E; void main() {}", Stage::fragment),
