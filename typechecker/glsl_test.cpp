@@ -54,6 +54,11 @@ TEST(Glsl, StageBuiltins) {
   EXPECT_EQ(plain("void main() { gl_Position = gl_FragCoord; }", Stage::vertex),
             Messages{"error: 'gl_FragCoord' is not available in vertex shaders"});
   EXPECT_EQ(plain("void main() { vec4 c = gl_Color + vec4(gl_FogFragCoord + gl_FooEXT); }", Stage::fragment), Messages{});
+  EXPECT_EQ(plain("void main() { gl_Position = gl_in[0].gl_Position; }", Stage::vertex),
+            Messages{"error: 'gl_in' is not available in vertex shaders"});
+  EXPECT_EQ(plain("layout(vertices = 3) out; void main() { gl_out[gl_InvocationID].gl_Position = gl_in[0].gl_Position; }",
+                  Stage::tess_control),
+            Messages{});
   EXPECT_EQ(plain("layout(local_size_x = 8) in; void main() { uvec3 id = gl_GlobalInvocationID; }", Stage::compute), Messages{});
   EXPECT_EQ(plain("void main() { discard; }", Stage::vertex), Messages{"error: 'discard' is only allowed in fragment shaders"});
 }

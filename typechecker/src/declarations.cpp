@@ -136,12 +136,16 @@ std::string Checker::stages_owning_builtin(const std::string& name) const {
   const char letter = stage_letter(options_.stage);
   if (letter == '*') return {};
   std::string owners;  // stage letters, in the table's order
-  for (const BuiltinVariableEntry& e : kBuiltinVariables) {
-    if (e.name != name) continue;
-    if (std::strchr(e.stages, letter)) return {};
-    for (const char* s = e.stages; *s; ++s)
+  auto owned_by = [&](const char* stages) {
+    if (std::strchr(stages, letter)) return false;
+    for (const char* s = stages; *s; ++s)
       if (owners.find(*s) == std::string::npos) owners += *s;
-  }
+    return true;
+  };
+  for (const BuiltinVariableEntry& e : kBuiltinVariables)
+    if (e.name == name && !owned_by(e.stages)) return {};
+  // The gl_PerVertex arrays (declare_builtin_variables) are not in the table.
+  if ((name == "gl_in" && !owned_by("ceg")) || (name == "gl_out" && !owned_by("c"))) return {};
   std::string words;
   for (std::size_t i = 0; i < owners.size(); ++i)
     words += std::string(i == 0 ? "" : i + 1 == owners.size() ? " and " : ", ") + stage_words(owners[i]);
