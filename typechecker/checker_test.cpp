@@ -86,17 +86,6 @@ TEST(Checker, StrictModeWarnsOnUnannotatedInterfaceVariables) {
   EXPECT_EQ(lax->rendered(), "");
 }
 
-TEST(Checker, CrossStageMismatchNamesBothDeclarations) {
-  auto vs = check_source("space world; out point<world> P; out spectrum<radiance> L; void main() {}", {.stage = Stage::vertex});
-  auto fs = check_source("space world; space object; in point<object> P; in spectrum<radiance> L; void main() {}");
-  ASSERT_EQ(vs->errors() + fs->errors(), 0u);
-  DiagnosticEngine diags;
-  check_interface_match(vs->result, fs->result, diags);
-  ASSERT_EQ(diags.diagnostics().size(), 1u);
-  EXPECT_EQ(diags.diagnostics()[0].message, "input 'P' has type point<object> but the previous stage's output has type point<world>");
-  EXPECT_EQ(diags.diagnostics()[0].notes[0].message, "output 'P' declared here as point<world>");
-}
-
 TEST(Checker, RendersCaretsNotesAndHint) {
   auto c = check_source(R"(void main() {
   spectrum<radiance> Li = spectrum<radiance>(1.0);

@@ -47,11 +47,35 @@ TEST(Glsl, ReadOnly) {
 
 TEST(Glsl, StageBuiltins) {
   EXPECT_EQ(plain("void main() { gl_Position = vec4(float(gl_VertexID)); gl_PointSize = 1.0; }", Stage::vertex), Messages{});
-  // gl_* names a stage does not have are left to the driver (extensions and
-  // compatibility state are not modelled), so they are not reported here.
-  EXPECT_EQ(plain("void main() { gl_Position = vec4(1.0); }", Stage::fragment), Messages{});
+  // A built-in of another stage is rejected; gl_* names no stage has are left to the driver
+  // (extensions and compatibility state are not modelled).
+  EXPECT_EQ(plain("void main() { gl_Position = vec4(1.0); }", Stage::fragment),
+            Messages{"error: 'gl_Position' is not available in fragment shaders"});
+  EXPECT_EQ(plain("void main() { gl_Position = gl_FragCoord; }", Stage::vertex),
+            Messages{"error: 'gl_FragCoord' is not available in vertex shaders"});
+  EXPECT_EQ(plain("void main() { vec4 c = gl_Color + vec4(gl_FogFragCoord + gl_FooEXT); }", Stage::fragment), Messages{});
+  EXPECT_EQ(plain("void main() { gl_Position = gl_in[0].gl_Position; }", Stage::vertex),
+            Messages{"error: 'gl_in' is not available in vertex shaders"});
+  EXPECT_EQ(plain("layout(vertices = 3) out; void main() { gl_out[gl_InvocationID].gl_Position = gl_in[0].gl_Position; }",
+                  Stage::tess_control),
+            Messages{});
   EXPECT_EQ(plain("layout(local_size_x = 8) in; void main() { uvec3 id = gl_GlobalInvocationID; }", Stage::compute), Messages{});
   EXPECT_EQ(plain("void main() { discard; }", Stage::vertex), Messages{"error: 'discard' is only allowed in fragment shaders"});
+}
+
+TEST(Glsl, StageBuiltinRendering) {
+  auto c = check_source("out vec4 color;\nvoid main() {\n  gl_Position = vec4(1.0);\n}\n", {.stage = Stage::fragment, .prelude = false});
+  EXPECT_EQ(c->rendered(),
+            "test.frag:3:3: error: 'gl_Position' is not available in fragment shaders [E-STAGE-BUILTIN]\n"
+            "  gl_Position = vec4(1.0);\n"
+            "  ^~~~~~~~~~~\n"
+            "help: 'gl_Position' is a built-in of vertex, tessellation control, tessellation evaluation and geometry shaders\n");
+  auto v = check_source("void main() {\n  gl_Position = gl_FragCoord;\n}\n", {.stage = Stage::vertex, .prelude = false});
+  EXPECT_EQ(v->rendered(),
+            "test.frag:2:17: error: 'gl_FragCoord' is not available in vertex shaders [E-STAGE-BUILTIN]\n"
+            "  gl_Position = gl_FragCoord;\n"
+            "                ^~~~~~~~~~~~\n"
+            "help: 'gl_FragCoord' is a built-in of fragment shaders\n");
 }
 
 TEST(Glsl, ExtensionsAreLeftToTheDriver) {

@@ -6,7 +6,8 @@
 #     [DEFINES <NAME[=value]>...]    -D
 #     [OPTIONS <flag>...])           any other safeglslc flag (--strict, -Werror, …)
 #
-# Compiles annotated shaders with safeglslc at build time, before <target>.
+# Compiles annotated shaders with safeglslc at build time, before <target>;
+# safeglslc's depfile (-MD) makes an edit to an #include'd file recompile them.
 # A shader with errors fails the build; the messages are `file:line:col: error:`
 # with absolute paths, so IDEs make them clickable. Outputs, per shader
 # `<dir>/<name without .sgl>.glsl` (light.frag.glsl) and `<name>.json`; with
@@ -55,8 +56,9 @@ function(safegi_add_shaders target)
       set(json ${out_dir}/${name}.json)
       add_custom_command(OUTPUT ${glsl} ${json}
         COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
-        COMMAND ${compiler} ${flags} ${source} -o ${glsl} --symbols ${json}
+        COMMAND ${compiler} ${flags} ${source} -o ${glsl} --symbols ${json} -MD -MF ${glsl}.d
         DEPENDS ${source} ${compiler_dep}
+        DEPFILE ${glsl}.d
         COMMENT "safeglslc ${name}"
         VERBATIM)
       list(APPEND all_outputs ${glsl} ${json})
@@ -66,8 +68,9 @@ function(safegi_add_shaders target)
     set(json ${out_dir}/${target}.json)
     add_custom_command(OUTPUT ${all_outputs} ${json}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
-      COMMAND ${compiler} ${flags} ${program_sources} ${program_outputs} --symbols ${json}
+      COMMAND ${compiler} ${flags} ${program_sources} ${program_outputs} --symbols ${json} -MD -MF ${json}.d
       DEPENDS ${program_sources} ${compiler_dep}
+      DEPFILE ${json}.d
       COMMENT "safeglslc program ${target}"
       VERBATIM)
     list(APPEND all_outputs ${json})

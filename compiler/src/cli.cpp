@@ -15,11 +15,13 @@ namespace {
 constexpr int kExitDiagnostics = 1;
 constexpr int kExitUsage = 2;
 
-// glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N.
+// glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N, -MD, -MF.
 std::vector<std::string> normalise(const std::vector<std::string>& args) {
   std::vector<std::string> out;
   for (const std::string& a : args) {
     if (a == "-Werror") out.emplace_back("--Werror");
+    else if (a == "-MD") out.emplace_back("--MD");
+    else if (a == "-MF") out.emplace_back("--MF");
     else if (a.rfind("-ferror-limit=", 0) == 0) out.push_back("--error-limit=" + a.substr(14));
     else if (a == "-ferror-limit") out.emplace_back("--error-limit");
     else out.push_back(a);
@@ -48,6 +50,22 @@ bool write_output(const std::string& path, const std::string& text, CliStreams& 
   return true;
 }
 
+// A make-style depfile: `target: dep dep ...`, spaces in paths escaped.
+std::string depfile_text(const std::string& target, const std::vector<std::string>& dependencies) {
+  auto escape = [](const std::string& path) {
+    std::string out;
+    for (char c : path) {
+      if (c == ' ' || c == '#') out += '\\';
+      if (c == '$') out += '$';
+      out += c;
+    }
+    return out;
+  };
+  std::string text = escape(target) + ":";
+  for (const std::string& d : dependencies) text += " \\\n  " + escape(d);
+  return text + "\n";
+}
+
 }  // namespace
 
 int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
@@ -55,8 +73,8 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
                "JSON symbol table (docs/safeglslc.md)",
                "safeglslc"};
   std::vector<std::string> files, outputs, include_paths, defines, undefines;
-  std::string stage_name, symbols_path, diagnostics_format = "text", color = "auto";
-  bool werror = false, no_warnings = false, strict = false;
+  std::string stage_name, symbols_path, depfile_path, diagnostics_format = "text", color = "auto";
+  bool werror = false, no_warnings = false, strict = false, write_depfile = false;
   std::size_t error_limit = 0;
   app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
   app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
@@ -66,6 +84,9 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   app.add_option("-I", include_paths, "add an #include search directory")->allow_extra_args(false);
   app.add_option("-D", defines, "define a macro: NAME or NAME=value")->allow_extra_args(false);
   app.add_option("-U", undefines, "undefine a macro")->allow_extra_args(false);
+  app.add_flag("--MD", write_depfile, "write a make-style depfile of the inputs and every file they #include (also -MD)");
+  app.add_option("--MF", depfile_path, "the depfile's path, default: the first -o output (or --symbols) plus '.d' (also -MF)")
+      ->allow_extra_args(false);
   app.add_flag("--strict", strict, "warn about unannotated interface variables");
   app.add_flag("--Werror", werror, "treat warnings as errors (also -Werror)");
   app.add_flag("-w", no_warnings, "suppress warnings");
@@ -160,6 +181,16 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   bool written = true;
   for (std::size_t i = 0; i < outputs.size(); ++i) written = write_output(outputs[i], result.stages[i].glsl, io) && written;
   if (!symbols_path.empty()) written = write_output(symbols_path, result.symbols_json(), io) && written;
+  if (write_depfile) {
+    // The depfile's target is the first file written (what the build rule produces).
+    std::string target = !outputs.empty() && outputs.front() != "-" ? outputs.front() : symbols_path;
+    if (target.empty() || target == "-") {
+      io.err << "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target\n";
+      return kExitUsage;
+    }
+    const std::string path = depfile_path.empty() ? target + ".d" : depfile_path;
+    written = write_output(path, depfile_text(target, result.dependencies), io) && written;
+  }
   return written ? 0 : kExitUsage;
 }
 

@@ -56,6 +56,32 @@ TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Safeglslc, WritesAMakeStyleDepfile) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "safeglslc_depfile_test";
+  std::filesystem::create_directories(dir / "my lib");
+  const std::string shader = (dir / "a.sgl.frag").string(), header = (dir / "my lib" / "common.sgl").string();
+  std::ofstream(header) << "float<length> twice(float<length> x) { return 2.0 * x; }\n";
+  std::ofstream(shader) << "#version 330 core\n#include <safegi/prelude.sgl>\n#include \"my lib/common.sgl\"\n"
+                           "uniform float<length> d;\nout vec4 c;\nvoid main() { c = vec4(twice(d)); }\n";
+  const std::string glsl = (dir / "a.frag.glsl").string();
+  CliRun r = run({shader, "-o", glsl, "-MD"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(glsl + ".d");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string escaped_header = header;
+  escaped_header.replace(escaped_header.find("my lib"), 6, "my\\ lib");
+  EXPECT_EQ(text.str(), glsl + ": \\\n  " + shader + " \\\n  " + escaped_header + "\n");
+  // -MF names the file; without an output file there is no target to name.
+  r = run({shader, "-o", glsl, "-MD", "-MF", (dir / "deps.d").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "deps.d"));
+  r = run({shader, "-MD"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target\n");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Safeglslc, UnwritableOutputIsAnIoError) {
   CliRun r = run({"-", "-S", "frag", "-o", "/nonexistent-dir/x.glsl"}, "#version 330 core\nvoid main() {}\n");
   EXPECT_EQ(r.status, 2);

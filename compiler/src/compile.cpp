@@ -149,6 +149,16 @@ std::size_t CompileResult::warning_count() const {
                                                 [](const Diagnostic& d) { return d.severity == Severity::warning; }));
 }
 
+namespace {
+
+void add_dependency(CompileResult& result, const std::string& path) {
+  if (path.rfind(kBuiltinIncludeDir, 0) == 0 || path == "<stdin>") return;  // served from memory
+  if (std::find(result.dependencies.begin(), result.dependencies.end(), path) == result.dependencies.end())
+    result.dependencies.push_back(path);
+}
+
+}  // namespace
+
 CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
   auto manager = std::make_shared<SourceManager>();
   DiagnosticEngine diags(options.diagnostics);
@@ -190,11 +200,15 @@ CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOpt
     const std::size_t errors_before = diags.error_count();
     w.preprocessed = preprocess(*manager, w.file, pp, diags);
     w.parsed = parse(w.preprocessed.tokens, diags);
+    add_dependency(result, sources[i].path);
+    for (const IncludedFile& inc : w.preprocessed.includes) add_dependency(result, inc.path);
     // A tree with syntax errors is partial: checking it would only add cascades.
     if (diags.error_count() != errors_before || diags.limit_reached()) continue;
     CheckOptions check_options;
     check_options.stage = w.stage;
     check_options.strict = options.strict;
+    check_options.tokens = &w.preprocessed.tokens;
+    check_options.sources = manager.get();
     w.checked = check(*w.parsed.unit, check_options, diags);
     w.ok = diags.error_count() == errors_before;
   }

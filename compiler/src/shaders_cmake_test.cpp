@@ -26,6 +26,10 @@ TEST(SafegiAddShaders, WritesGlslADriverAcceptsAndOneProgramTable) {
   ASSERT_EQ(table.stages.size(), 2u);
   ASSERT_NE(table.stage(gl::Stage::vertex), nullptr);
   EXPECT_NE(table.stage(gl::Stage::vertex)->find(gl::Storage::uniform, "worldFromObject"), nullptr);
+  // The depfile (safeglslc -MD) that makes the build track #include'd files.
+  const std::string depfile = safegi::testing::read_text_file(dir + "/safegi_compiler_test.json.d");
+  EXPECT_EQ(depfile.rfind(dir + "/tint.vert.glsl:", 0), 0u) << depfile;  // the rule's first output
+  EXPECT_NE(depfile.find("tint.sgl.frag"), std::string::npos) << depfile;
 }
 
 }  // namespace

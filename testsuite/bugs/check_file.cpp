@@ -70,6 +70,8 @@ int main(int argc, char** argv) {
     safegi::CheckOptions options;
     options.stage = stage_of(shader);
     options.strict = strict;
+    options.tokens = &unit.tokens;
+    options.sources = &sources;
     safegi::check(*parsed.unit, options, diagnostics);
   }
   const std::string text = safegi::render_text(diagnostics.diagnostics(), sources);

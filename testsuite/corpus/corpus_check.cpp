@@ -14,6 +14,10 @@
 // Round trip: preprocess + parse, print (with the #version and #extension
 // lines), preprocess + parse the print, compare tree dumps; glslang must
 // accept the print too.
+//
+// Type checker (docs/typechecker.md, "zero false positives on plain GLSL"):
+// every glslang-accepted shader that parses is also type checked; any error
+// the checker reports there is a false positive and is listed.
 
 #include <algorithm>
 #include <chrono>
@@ -41,6 +45,7 @@
 #include <safegi/lexer/preprocessor.hpp>
 #include <safegi/parser/parser.hpp>
 #include <safegi/parser/printer.hpp>
+#include <safegi/typechecker/checker.hpp>
 
 namespace {
 
@@ -111,8 +116,22 @@ Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string*
   return code == 0 ? Verdict::accepted : code == 2 ? Verdict::syntax_error : Verdict::rejected;
 }
 
+safegi::Stage checker_stage(EShLanguage stage) {
+  switch (stage) {
+    case EShLangVertex: return safegi::Stage::vertex;
+    case EShLangFragment: return safegi::Stage::fragment;
+    case EShLangGeometry: return safegi::Stage::geometry;
+    case EShLangCompute: return safegi::Stage::compute;
+    case EShLangTessControl: return safegi::Stage::tess_control;
+    case EShLangTessEvaluation: return safegi::Stage::tess_evaluation;
+    default: return safegi::Stage::unknown;
+  }
+}
+
 struct FrontEnd {
   bool ok = false;
+  bool checked = false;     // the type checker reported no error (only when ok)
+  std::string first_check_error;
   std::string first_error;  // rendered, one line
   std::string dump;
   std::string printed;      // with #version / #extension preamble
@@ -120,7 +139,8 @@ struct FrontEnd {
   bool es = false;
 };
 
-FrontEnd run_front_end(const std::string& name, const std::string& text, const std::string& include_dir) {
+FrontEnd run_front_end(const std::string& name, const std::string& text, const std::string& include_dir,
+                       EShLanguage stage) {
   FrontEnd result;
   safegi::SourceManager sources;
   safegi::DiagnosticEngine diagnostics;
@@ -144,6 +164,15 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
     return result;
   }
   result.dump = safegi::dump_ast(*parsed.unit);
+  safegi::DiagnosticEngine check_diagnostics;
+  safegi::check(*parsed.unit, safegi::CheckOptions{.stage = checker_stage(stage)}, check_diagnostics);
+  result.checked = !check_diagnostics.has_errors();
+  for (const safegi::Diagnostic& d : check_diagnostics.diagnostics()) {
+    if (d.severity != safegi::Severity::error) continue;
+    std::string rendered = safegi::render_text(d, sources);
+    result.first_check_error = rendered.substr(0, rendered.find('\n'));
+    break;
+  }
   safegi::PrintOptions print;
   if (unit.version_given) {
     print.preamble = "#version " + std::to_string(unit.version);
@@ -182,19 +211,20 @@ std::optional<std::string> piglit_expectation(const std::string& text) {
 bool modern(const FrontEnd& f) { return f.es ? f.version >= 300 : f.version >= 330; }
 
 struct Tally {
-  int total = 0, parsed = 0, round_tripped = 0, printed_accepted = 0;
+  int total = 0, parsed = 0, round_tripped = 0, printed_accepted = 0, checked = 0;
   void print(const char* label) const {
     auto pct = [&](int n) { return total ? 100.0 * n / total : 0.0; };
-    std::printf("  %-28s %5d   parsed %5d (%6.2f%%)   round-tripped %5d (%6.2f%%)   print accepted by glslang %5d (%6.2f%%)\n",
+    std::printf("  %-28s %5d   parsed %5d (%6.2f%%)   round-tripped %5d (%6.2f%%)   print accepted by glslang %5d (%6.2f%%)"
+                "   type checked clean %5d (%6.2f%%)\n",
                 label, total, parsed, pct(parsed), round_tripped, pct(round_tripped), printed_accepted,
-                pct(printed_accepted));
+                pct(printed_accepted), checked, pct(checked));
   }
 };
 
 // Parse, print, re-parse one shader glslang accepts; tallies and notes failures.
 void check_round_trip(const std::filesystem::path& path, const std::string& text, EShLanguage stage, Tally& all,
-                      Tally& recent, std::vector<std::string>& failures) {
-  FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
+                      Tally& recent, std::vector<std::string>& failures, std::vector<std::string>& false_positives) {
+  FrontEnd first = run_front_end(path.string(), text, path.parent_path().string(), stage);
   bool is_modern = first.ok ? modern(first) : true;
   ++all.total;
   recent.total += is_modern;
@@ -202,7 +232,8 @@ void check_round_trip(const std::filesystem::path& path, const std::string& text
     failures.push_back(path.string() + ": parse: " + first.first_error);
     return;
   }
-  FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
+  if (!first.checked) false_positives.push_back(path.string() + ": " + first.first_check_error);
+  FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string(), stage);
   bool same = second.ok && second.dump == first.dump;
   bool accepted = glslang_accepts(first.printed, stage);
   for (Tally* t : {&all, is_modern ? &recent : nullptr}) {
@@ -210,6 +241,7 @@ void check_round_trip(const std::filesystem::path& path, const std::string& text
     ++t->parsed;
     t->round_tripped += same;
     t->printed_accepted += accepted;
+    t->checked += first.checked;
   }
   if (!same) {
     failures.push_back(path.string() + ": round trip: " +
@@ -219,17 +251,21 @@ void check_round_trip(const std::filesystem::path& path, const std::string& text
   }
 }
 
-void print_round_trips(const Tally& all, const Tally& recent, const std::vector<std::string>& failures) {
+void print_round_trips(const Tally& all, const Tally& recent, const std::vector<std::string>& failures,
+                       const std::vector<std::string>& false_positives) {
   all.print("accepted by glslang:");
   recent.print("of which #version>=330/300es:");
   std::printf("failures (%zu):\n", failures.size());
   for (const std::string& f : failures) std::printf("  %s\n", f.c_str());
+  std::printf("type checker: %d of %d glslang-accepted shaders that parse check clean\n", all.checked, all.parsed);
+  std::printf("type checker false positives (%zu):\n", false_positives.size());
+  for (const std::string& f : false_positives) std::printf("  %s\n", f.c_str());
 }
 
 int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
   Tally all, recent;
   int considered = 0, rejected_by_glslang = 0;
-  std::vector<std::string> failures;
+  std::vector<std::string> failures, false_positives;
   for (const auto& path : files) {
     auto stage = stage_of(path);
     if (!stage) continue;
@@ -239,11 +275,11 @@ int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
       ++rejected_by_glslang;
       continue;
     }
-    check_round_trip(path, text, *stage, all, recent, failures);
+    check_round_trip(path, text, *stage, all, recent, failures, false_positives);
   }
   std::printf("glslang corpus: %d shaders considered, %d rejected by glslang (not counted; %d of them crashed it), %d accepted\n",
               considered, rejected_by_glslang, glslang_crashes, all.total);
-  print_round_trips(all, recent, failures);
+  print_round_trips(all, recent, failures, false_positives);
   return 0;
 }
 
@@ -256,7 +292,8 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
   std::vector<std::string> accepted_failures;  // --verbose: expected to fail, accepted by the front end
   bool verbose = std::getenv("SAFEGI_CORPUS_VERBOSE") != nullptr;
   Tally all, recent;  // round trips of the shaders glslang accepts, whatever piglit expects
-  std::vector<std::string> round_trip_failures;
+  std::vector<std::string> round_trip_failures, false_positives, rejected_as_piglit_expects;
+  int checked_total = 0;
   for (const auto& path : files) {
     auto stage = stage_of(path);
     if (!stage) continue;
@@ -265,14 +302,23 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
     if (!expectation) continue;
     ++total;
     bool expect_pass = *expectation == "pass";
-    FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string());
+    FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string(), *stage);
     std::string glslang_error;
     Verdict verdict = glslang_verdict(text, *stage, &glslang_error);
     if (verbose && !expect_pass && ours.ok) {
       accepted_failures.push_back(path.string() + " | glslang: " + (glslang_error.empty() ? "accepts" : glslang_error));
     }
     bool glslang_ok = verdict == Verdict::accepted;
-    if (glslang_ok) check_round_trip(path, text, *stage, all, recent, round_trip_failures);
+    if (glslang_ok) {
+      const std::size_t before = false_positives.size();
+      check_round_trip(path, text, *stage, all, recent, round_trip_failures, false_positives);
+      ++checked_total;
+      // glslang accepts some shaders piglit says must fail; the checker rejecting those is right.
+      if (false_positives.size() > before && !expect_pass) {
+        rejected_as_piglit_expects.push_back(false_positives.back());
+        false_positives.pop_back();
+      }
+    }
     agree += ours.ok == expect_pass;
     glslang_agree += glslang_ok == expect_pass;
     if (expect_pass) {
@@ -307,7 +353,11 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
     for (const std::string& f : accepted_failures) std::printf("  %s\n", f.c_str());
   }
   std::printf("piglit shaders glslang accepts, parsed and round-tripped:\n");
-  print_round_trips(all, recent, round_trip_failures);
+  print_round_trips(all, recent, round_trip_failures, false_positives);
+  std::printf("type checker on piglit: %zu false positives among %d glslang-accepted shaders; %zu more rejected that glslang accepts "
+              "but piglit expects to fail:\n",
+              false_positives.size(), checked_total, rejected_as_piglit_expects.size());
+  for (const std::string& f : rejected_as_piglit_expects) std::printf("  %s\n", f.c_str());
   return 0;
 }
 
@@ -334,8 +384,10 @@ int run_robustness_mode(const std::vector<std::filesystem::path>& files) {
     std::string text = read(path);
     alarm(10);
     auto start = std::chrono::steady_clock::now();
-    FrontEnd first = run_front_end(path.string(), text, path.parent_path().string());
-    if (first.ok) run_front_end(path.string() + ".printed", first.printed, path.parent_path().string());
+    // Files of no known stage are still read (and checked) as vertex shaders: only a crash or hang counts here.
+    EShLanguage stage = stage_of(path).value_or(EShLangVertex);
+    FrontEnd first = run_front_end(path.string(), text, path.parent_path().string(), stage);
+    if (first.ok) run_front_end(path.string() + ".printed", first.printed, path.parent_path().string(), stage);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     alarm(0);
     ++total;

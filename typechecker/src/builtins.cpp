@@ -1,6 +1,7 @@
 #include "builtins.hpp"
 
 #include <cctype>
+#include <mutex>
 #include <stdexcept>
 
 namespace safegi {
@@ -175,11 +176,15 @@ class SignatureReader {
         return;
       }
     }
-    if (w == "matF") return set(t, SizeClass::mat, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "matFT") return set(t, SizeClass::mat_transposed, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "matFsq") return set(t, SizeClass::mat_square, Type::matrix_of(Scalar::float_, 2, 2));
-    if (w == "colF") return set(t, SizeClass::column, Type::vector_of(Scalar::float_, 2));
-    if (w == "rowF") return set(t, SizeClass::row, Type::vector_of(Scalar::float_, 2));
+    // Matrix words: float (F) and double (D) matrices and their columns/rows.
+    for (const auto& f : {kFamilies[0], kFamilies[1]}) {
+      const std::string x = f.prefix;
+      if (w == "mat" + x) return set(t, SizeClass::mat, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "mat" + x + "T") return set(t, SizeClass::mat_transposed, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "mat" + x + "sq") return set(t, SizeClass::mat_square, Type::matrix_of(f.scalar, 2, 2));
+      if (w == "col" + x) return set(t, SizeClass::column, Type::vector_of(f.scalar, 2));
+      if (w == "row" + x) return set(t, SizeClass::row, Type::vector_of(f.scalar, 2));
+    }
     if (w == "void") return set(t, SizeClass::fixed, Type::void_type());
     if (w == "geo") {
       t.any_geometric = true;
@@ -242,6 +247,29 @@ BuiltinLibrary::BuiltinLibrary(const DimensionRegistry& registry) {
     if (!sig.text.empty()) SignatureReader(sig.text, registry, sig).read();
     by_name_[sig.name].push_back(std::move(sig));
   }
+}
+
+std::shared_ptr<const BuiltinLibrary> BuiltinLibrary::for_registry(const DimensionRegistry& registry) {
+  // The signatures depend on the registry only through find_dimension(), i.e.
+  // through the base names (their ids) and the derived dimensions' values.
+  std::string key;
+  for (const std::string& base : registry.bases()) key += base + ';';
+  key += '|';
+  for (const DerivedDimension& d : registry.derived()) {
+    key += d.name + '=';
+    for (const Factor& f : d.value.factors()) key += std::to_string(f.base) + '^' + std::to_string(f.exponent) + ',';
+    key += ';';
+  }
+  static std::mutex mutex;
+  static std::unordered_map<std::string, std::shared_ptr<const BuiltinLibrary>> cache;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  auto library = std::make_shared<const BuiltinLibrary>(registry);  // outside the lock: other threads go on
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cache.size() >= 64) cache.clear();  // bounded: programs with ever new vocabularies
+  return cache.emplace(std::move(key), std::move(library)).first->second;
 }
 
 const std::vector<Signature>* BuiltinLibrary::find(std::string_view name) const {

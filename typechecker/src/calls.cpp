@@ -3,6 +3,8 @@
 // and casts, and the map operators routed through the table.
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
@@ -417,37 +419,91 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
   return result;
 }
 
+namespace {
+
+// How an argument reaches a parameter, for GLSL 4.00 §6.1 overload ranking.
+struct Conversion {
+  Scalar from, to;
+  bool exact() const { return from == to; }
+};
+
+// GLSL 4.00 §6.1, for one argument (so `from` is the same on both sides): an
+// exact match beats any conversion; int/uint→float beats int/uint→double.
+// (Its rule "float→double beats any other conversion" never decides between
+// two conversions of the same float argument.) Other pairs, e.g. int→uint
+// against int→float, are neither better nor worse.
+bool better_conversion(const Conversion& a, const Conversion& b) {
+  if (b.exact()) return false;
+  if (a.exact()) return true;
+  return a.to == Scalar::float_ && b.to == Scalar::double_;
+}
+
+// The conversions a call needs to reach `f`, or nothing when `f` does not accept the arguments.
+std::optional<std::vector<Conversion>> conversions_to(const Function& f, const std::vector<Value>& args) {
+  if (f.params.size() != args.size()) return std::nullopt;
+  std::vector<Conversion> out;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Type& p = f.params[i];
+    Type a = args[i].type;
+    if (a.scalar != p.scalar) {
+      // in: argument → parameter; out: parameter → argument (copied back); inout: both, so none.
+      const bool fits = f.inout_params[i]  ? false
+                        : f.out_params[i] ? implicitly_converts(p.scalar, a.scalar)
+                                          : implicitly_converts(a.scalar, p.scalar);
+      if (!fits) return std::nullopt;
+    }
+    out.push_back({a.scalar, p.scalar});
+    a.scalar = p.scalar;
+    if (!same_glsl_type(a, p) && !(p.is_array() && !a.array.empty() && p.array[0] < 0)) return std::nullopt;
+    if (p.geometry != Geometry::none && a.geometry != Geometry::none && p.geometry != a.geometry) return std::nullopt;
+  }
+  return out;
+}
+
+// `a` is a better match than `b`: no argument converts worse, at least one better.
+bool better_match(const std::vector<Conversion>& a, const std::vector<Conversion>& b) {
+  bool some_better = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (better_conversion(b[i], a[i])) return false;
+    some_better = some_better || better_conversion(a[i], b[i]);
+  }
+  return some_better;
+}
+
+std::string parameters_text(const Function& f, const DimensionRegistry& registry) {
+  std::string sig;
+  for (const Type& p : f.params) sig += (sig.empty() ? "" : ", ") + type_name(p, registry, &f.dim_params, &f.space_params);
+  return sig;
+}
+
+}  // namespace
+
 Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& overloads, std::vector<Value>& args) {
+  std::vector<std::pair<const Function*, std::vector<Conversion>>> viable;
+  for (const Function& f : overloads)
+    if (std::optional<std::vector<Conversion>> c = conversions_to(f, args)) viable.emplace_back(&f, std::move(*c));
   const Function* best = nullptr;
-  int best_cost = 1 << 30;
-  for (const Function& f : overloads) {
-    if (f.params.size() != args.size()) continue;
-    int cost = 0;
-    bool ok = true;
-    for (std::size_t i = 0; i < args.size() && ok; ++i) {
-      Type p = f.params[i], a = args[i].type;
-      if (a.scalar != p.scalar) {
-        if (f.out_params[i] || !implicitly_converts(a.scalar, p.scalar)) ok = false;
-        ++cost;
-        a.scalar = p.scalar;
-      }
-      if (!same_glsl_type(a, p) && !(p.is_array() && !a.array.empty() && p.array[0] < 0)) ok = false;
-      if (p.geometry != Geometry::none && a.geometry != Geometry::none && p.geometry != a.geometry) ok = false;
-    }
-    if (ok && cost < best_cost) {
-      best = &f;
-      best_cost = cost;
-    }
+  for (const auto& [f, conv] : viable) {
+    bool beats_all = true;
+    for (const auto& [g, other] : viable)
+      if (g != f && !better_match(conv, other)) beats_all = false;
+    if (beats_all) best = f;
+  }
+  if (!best && viable.size() > 1) {
+    Diagnostic d = Diagnostic::error(e.callee_range, "call to '" + e.callee + "(" + arguments_text(args, *this) + ")' is ambiguous")
+                       .with_code("E-AMBIGUOUS-CALL");
+    for (const auto& [f, conv] : viable)
+      d.with_note(Diagnostic::note(f->decl->name_range, "candidate: " + f->name + "(" + parameters_text(*f, result_.registry) + ")"));
+    d.with_hint("GLSL prefers an exact match, then float→double, then int→float over int→double");
+    report(std::move(d));
+    return error_value(e.range);
   }
   if (!best) {
     Diagnostic d = Diagnostic::error(e.callee_range, "no matching function for call to '" + e.callee + "(" +
                                                          arguments_text(args, *this) + ")'")
                        .with_code("E-NO-OVERLOAD");
-    for (const Function& f : overloads) {
-      std::string sig;
-      for (const Type& p : f.params) sig += (sig.empty() ? "" : ", ") + type_name(p, result_.registry, &f.dim_params, &f.space_params);
-      d.with_note(Diagnostic::note(f.decl->name_range, "candidate: " + f.name + "(" + sig + ")"));
-    }
+    for (const Function& f : overloads)
+      d.with_note(Diagnostic::note(f.decl->name_range, "candidate: " + f.name + "(" + parameters_text(f, result_.registry) + ")"));
     report(std::move(d));
     return error_value(e.range);
   }

@@ -15,8 +15,24 @@ const Type* CheckResult::type_of(const ast::Declarator* declarator) const {
   return it == declarators.end() ? nullptr : &it->second;
 }
 
+const char* stage_name(Stage stage) {
+  switch (stage) {
+    case Stage::vertex: return "vertex";
+    case Stage::tess_control: return "tessellation control";
+    case Stage::tess_evaluation: return "tessellation evaluation";
+    case Stage::geometry: return "geometry";
+    case Stage::fragment: return "fragment";
+    case Stage::compute: return "compute";
+    case Stage::unknown: break;
+  }
+  return "unknown";
+}
+
 CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics) {
   CheckResult result;
+  result.stage = options.stage;
+  // Roughly one typed node per token: growing the map by rehashing cost a quarter of a large check.
+  if (options.tokens) result.types.reserve(options.tokens->size());
   detail::Checker checker(options, diagnostics, result);
   checker.run(unit);
   return result;
@@ -38,17 +54,58 @@ std::string canonical(const Type& t, const DimensionRegistry& registry) {
 
 }  // namespace
 
+namespace {
+
+// Inputs of these stages (and outputs of tessellation control) carry one array
+// level per vertex: `in vec3 n[]` in a geometry shader matches `out vec3 n`.
+bool per_vertex_inputs(Stage s) { return s == Stage::geometry || s == Stage::tess_control || s == Stage::tess_evaluation; }
+
+Type without_vertex_level(const InterfaceVariable& v, bool per_vertex) {
+  if (!per_vertex || !v.block.empty() || !v.type.is_array()) return v.type;  // a block's array level is on its instance
+  return v.type.element();
+}
+
+std::string member_name(const InterfaceVariable& v) {
+  return v.block.empty() ? v.name : v.name.substr(v.name.rfind('.') + 1);
+}
+
+// The output an input reads, and how it was found ("" when there is none).
+std::pair<const InterfaceVariable*, std::string> matching_output(const CheckResult& producer, const InterfaceVariable& in) {
+  for (const InterfaceVariable& out : producer.interface) {
+    if (out.kind != InterfaceKind::output) continue;
+    if (!in.block.empty()) {
+      if (out.block == in.block && member_name(out) == member_name(in)) return {&out, "block " + in.block};
+    } else if (out.block.empty() && in.location >= 0) {
+      if (out.location == in.location) return {&out, "location " + std::to_string(in.location)};
+    }
+  }
+  if (!in.block.empty()) return {nullptr, ""};
+  for (const InterfaceVariable& out : producer.interface)
+    if (out.kind == InterfaceKind::output && out.block.empty() && out.name == in.name && (in.location < 0 || out.location < 0))
+      return {&out, "name"};
+  return {nullptr, ""};
+}
+
+}  // namespace
+
 void check_interface_match(const CheckResult& producer, const CheckResult& consumer, DiagnosticEngine& diagnostics) {
+  const bool consumer_per_vertex = per_vertex_inputs(consumer.stage);
+  const bool producer_per_vertex = producer.stage == Stage::tess_control;
   for (const InterfaceVariable& in : consumer.interface) {
     if (in.kind != InterfaceKind::input) continue;
-    for (const InterfaceVariable& out : producer.interface) {
-      if (out.kind != InterfaceKind::output || out.name != in.name) continue;
-      if (canonical(in.type, consumer.registry) == canonical(out.type, producer.registry)) continue;
-      diagnostics.report(Diagnostic::error(in.range, "input '" + in.name + "' has type " + in.type_text +
-                                                         " but the previous stage's output has type " + out.type_text)
-                             .with_code("E-STAGE-MISMATCH")
-                             .with_note(Diagnostic::note(out.range, "output '" + out.name + "' declared here as " + out.type_text)));
-    }
+    auto [out, how] = matching_output(producer, in);
+    if (!out) continue;
+    const Type in_type = without_vertex_level(in, consumer_per_vertex);
+    const Type out_type = without_vertex_level(*out, producer_per_vertex);
+    if (in_type.is_error() || out_type.is_error()) continue;
+    if (canonical(in_type, consumer.registry) == canonical(out_type, producer.registry)) continue;
+    const std::string in_text = type_name(in_type, consumer.registry), out_text = type_name(out_type, producer.registry);
+    const std::string producer_stage = producer.stage == Stage::unknown ? "previous" : stage_name(producer.stage);
+    const std::string matched = how == "name" ? "" : " (matched by " + how + ")";
+    diagnostics.report(Diagnostic::error(in.range, "input '" + in.name + "' has type " + in_text + " but the " + producer_stage +
+                                                       " stage's output '" + out->name + "'" + matched + " has type " + out_text)
+                           .with_code("E-STAGE-MISMATCH")
+                           .with_note(Diagnostic::note(out->range, "output '" + out->name + "' declared here as " + out_text)));
   }
 }
 

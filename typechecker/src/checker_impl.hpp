@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "builtins.hpp"
+#include "expansions.hpp"
 #include "safegi/typechecker/checker.hpp"
 
 namespace safegi::detail {
@@ -44,12 +45,14 @@ struct Variable {
   bool builtin = false;
   std::optional<long long> constant;
   Origin origin;
+  std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
 };
 
 struct Function {
   std::string name;
   std::vector<Type> params;
-  std::vector<bool> out_params;
+  std::vector<bool> out_params;    // out or inout: the argument must be writable
+  std::vector<bool> inout_params;  // inout: no implicit conversion either way
   Type result;
   std::vector<std::string> dim_params;
   std::vector<std::string> space_params;
@@ -90,6 +93,8 @@ class Checker {
   void push_scope() { scopes_.emplace_back(); }
   void pop_scope() { scopes_.pop_back(); }
   void declare_builtin_variables();
+  // The stages that have built-in `name` when the current stage does not ("vertex and geometry"), else empty.
+  std::string stages_owning_builtin(const std::string& name) const;
   void record_interface(const ast::TypeQualifiers& q, const std::string& name, const std::string& block, const Type& t,
                         SourceRange range, const ast::Node* decl);
 
@@ -146,7 +151,13 @@ class Checker {
     v.range = range;
     return v;
   }
-  void report(Diagnostic d) { diagnostics_.report(std::move(d)); }
+  void report(Diagnostic d) {
+    if (d.expansion == kNoExpansion)
+      d.expansion = expansions_.find(d.range, !written_statements_.empty() ? written_statements_.back()
+                                              : current_function_          ? current_function_->decl->range
+                                                                           : SourceRange{});
+    diagnostics_.report(std::move(d));
+  }
   // Names of extension built-ins and types this checker does not model
   // (subgroup*, *ARB/*EXT/*NV, int64_t, f16vec3, ...): left to the driver.
   static bool extension_name(const std::string& name);
@@ -158,7 +169,7 @@ class Checker {
   const CheckOptions& options_;
   DiagnosticEngine& diagnostics_;
   CheckResult& result_;
-  std::unique_ptr<BuiltinLibrary> builtins_;  // built after the program's dimension declarations
+  std::shared_ptr<const BuiltinLibrary> builtins_;  // built after the program's dimension declarations
   std::vector<std::unordered_map<std::string, Variable>> scopes_;
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
@@ -167,6 +178,8 @@ class Checker {
   const std::vector<std::string>* template_spaces_ = nullptr;
   const Function* current_function_ = nullptr;
   int loop_depth_ = 0;
+  ExpansionFinder expansions_;
+  std::vector<SourceRange> written_statements_;  // enclosing statements not produced by a macro, innermost last
 };
 
 }  // namespace safegi::detail

@@ -1,6 +1,8 @@
 // Constructors, casts (`float<solid_angle>(x)`) and the rule-typed built-in
 // families (texture*, image*, atomic counters).
 
+#include <cmath>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -57,6 +59,11 @@ Value Checker::constructor(const ast::CallExpr& e) {
         return error_value(e.range);
     return out;
   }
+  // GL_ARB_bindless_texture: uvec2(sampler or image) and back.
+  const auto is_handle = [](const Type& x) { return x.shape == Shape::vector && x.rows == 2 && x.scalar == Scalar::uint_ && !x.is_array(); };
+  if (args.size() == 1 && ((is_handle(t) && args[0].type.shape == Shape::opaque && !args[0].type.is_array()) ||
+                           (t.shape == Shape::opaque && is_handle(args[0].type))))
+    return out;
   if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
   if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
 
@@ -109,6 +116,15 @@ Value Checker::constructor(const ast::CallExpr& e) {
     return out;
   }
 
+  // Scalar conversions of constants: int(2.5) is the constant 2, float(N) the number N.
+  if (single && t.shape == Shape::scalar && first.shape == Shape::scalar) {
+    const std::optional<double> n = args[0].constant ? std::optional<double>(static_cast<double>(*args[0].constant)) : args[0].number;
+    if (n && t.is_floating()) out.number = n;
+    if (n && t.is_integer() && std::fabs(*n) < 2147483648.0 && (t.scalar == Scalar::int_ || *n >= 0.0)) {
+      out.constant = static_cast<long long>(*n);
+      out.number = static_cast<double>(*out.constant);
+    }
+  }
   // A plain GLSL constructor: the components' common dimension, if they share one.
   if (t.shape == Shape::matrix) return out;  // matrices built from parts stay unannotated
   std::optional<DimSlot> common;
@@ -151,14 +167,18 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
   const bool is_image = name.find("image") != std::string::npos;
   if ((sig.rule == BuiltinRule::image) != is_image && sig.rule != BuiltinRule::texture_size && sig.rule != BuiltinRule::texture_query)
     return no_match();
-  for (std::size_t i = 1; i < args.size(); ++i)
-    if (!(args[i].type.is_numeric() || args[i].type.scalar == Scalar::bool_) || args[i].type.is_array()) return no_match();
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const bool offsets = sig.name == "textureGatherOffsets" && args[i].type.scalar == Scalar::int_;  // ivec2 offsets[4]
+    if (!(args[i].type.is_numeric() || args[i].type.scalar == Scalar::bool_) || (args[i].type.is_array() && !offsets))
+      return no_match();
+  }
   const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
   switch (sig.rule) {
     case BuiltinRule::texture: {
       const bool shadow = name.find("Shadow") != std::string::npos;
       const bool gather = sig.name.rfind("textureGather", 0) == 0;
-      out.type = (shadow && !gather) ? Type::scalar_of(Scalar::float_) : Type::vector_of(texel_scalar, 4);
+      const bool legacy_shadow = sig.name.rfind("shadow", 0) == 0;  // shadow2D(...) and friends return vec4 (GLSL 1.10)
+      out.type = (shadow && !gather && !legacy_shadow) ? Type::scalar_of(Scalar::float_) : Type::vector_of(texel_scalar, 4);
       if (sampler.texel) out.type.dim = value_dimension(*sampler.texel, result_.registry);
       out.type.dim.spelling = sampler.texel ? sampler.texel->dim.spelling : std::string();
       return out;
@@ -176,7 +196,7 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
       return out;
     }
     case BuiltinRule::texture_query:
-      out.type = sig.name == "textureQueryLod" ? Type::vector_of(Scalar::float_, 2) : Type::scalar_of(Scalar::int_);
+      out.type = sig.name == "textureQueryLod" || sig.name == "textureQueryLOD" ? Type::vector_of(Scalar::float_, 2) : Type::scalar_of(Scalar::int_);
       return out;
     case BuiltinRule::image:
       if (sig.name == "imageStore") out.type = Type::void_type();

@@ -34,6 +34,12 @@ char stage_letter(Stage s) {
   return '*';
 }
 
+const char* stage_words(char letter) {
+  for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
+    if (stage_letter(s) == letter) return stage_name(s);
+  return stage_name(Stage::unknown);
+}
+
 Type parse_simple_type(std::string_view text) {
   bool array = false;
   int size = -1;
@@ -72,7 +78,9 @@ bool is_storage(const ast::TypeQualifiers& q, const char* word) { return q.has(w
 }  // namespace
 
 Checker::Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result)
-    : options_(options), diagnostics_(diagnostics), result_(result) {}
+    : options_(options), diagnostics_(diagnostics), result_(result) {
+  if (options.tokens && options.sources) expansions_ = ExpansionFinder(*options.tokens, *options.sources);
+}
 
 void Checker::run(const ast::TranslationUnit& unit) {
   // Annotation declarations first: the built-in signatures are resolved against them.
@@ -81,7 +89,7 @@ void Checker::run(const ast::TranslationUnit& unit) {
     else if (const auto* u = ast::dyn_cast<ast::UnitDecl>(d)) declare_unit(*u);
     else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
   }
-  builtins_ = std::make_unique<BuiltinLibrary>(result_.registry);
+  builtins_ = BuiltinLibrary::for_registry(result_.registry);
   push_scope();
   declare_builtin_variables();
   push_scope();  // the program's globals may shadow built-ins (redeclaring gl_* blocks)
@@ -124,6 +132,26 @@ void Checker::declare_builtin_variables() {
   }
 }
 
+std::string Checker::stages_owning_builtin(const std::string& name) const {
+  const char letter = stage_letter(options_.stage);
+  if (letter == '*') return {};
+  std::string owners;  // stage letters, in the table's order
+  auto owned_by = [&](const char* stages) {
+    if (std::strchr(stages, letter)) return false;
+    for (const char* s = stages; *s; ++s)
+      if (owners.find(*s) == std::string::npos) owners += *s;
+    return true;
+  };
+  for (const BuiltinVariableEntry& e : kBuiltinVariables)
+    if (e.name == name && !owned_by(e.stages)) return {};
+  // The gl_PerVertex arrays (declare_builtin_variables) are not in the table.
+  if ((name == "gl_in" && !owned_by("ceg")) || (name == "gl_out" && !owned_by("c"))) return {};
+  std::string words;
+  for (std::size_t i = 0; i < owners.size(); ++i)
+    words += std::string(i == 0 ? "" : i + 1 == owners.size() ? " and " : ", ") + stage_words(owners[i]);
+  return words;
+}
+
 const Variable* Checker::lookup(const std::string& name) const {
   for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
     auto found = it->find(name);
@@ -135,8 +163,12 @@ const Variable* Checker::lookup(const std::string& name) const {
 void Checker::declare_variable(Variable v) {
   auto& scope = scopes_.back();
   auto it = scope.find(v.name);
-  // Built-ins may be redeclared (`layout(origin_upper_left) in vec4 gl_FragCoord;`), even twice.
-  if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0) {
+  // Built-ins may be redeclared (`layout(origin_upper_left) in vec4 gl_FragCoord;`), even twice; so may an
+  // unsized array, with a size (GLSL 1.20 §4.1.9).
+  const auto sizes_unsized_array = [&](const Type& before) {
+    return before.is_array() && before.array[0] < 0 && v.type.is_array() && same_glsl_type(before.element(), v.type.element());
+  };
+  if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0 && !sizes_unsized_array(it->second.type)) {
     Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code("E-REDEFINITION");
     d.with_note(Diagnostic::note(it->second.range, "previous definition is here"));
     report(std::move(d));
@@ -232,6 +264,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
         poisoned = true;  // one mistake, one error: later uses of this variable stay silent
       }
       if (is_const && init.constant && declared.shape == Shape::scalar && declared.is_integer()) v.constant = init.constant;
+      if (is_const && init.number && declared.shape == Shape::scalar && declared.is_floating()) v.number = init.number;
     } else if (is_const && !global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
     }
@@ -285,6 +318,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     result_.types[p] = t;
     f.params.push_back(t);
     f.out_params.push_back(p->qualifiers.has("out") || p->qualifiers.has("inout"));
+    f.inout_params.push_back(p->qualifiers.has("inout"));
   }
   f.defined = d.body != nullptr;
 
@@ -335,6 +369,16 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
 
 void Checker::statement(const ast::Stmt* s) {
   if (!s || diagnostics_.limit_reached()) return;
+  // The innermost statement the user wrote (not one a macro produced) tells
+  // apart the expansions of a macro used several times (report()).
+  const bool written = !expansions_.from_macro(s->range);
+  if (written) written_statements_.push_back(s->range);
+  struct Pop {
+    std::vector<SourceRange>* stack;
+    ~Pop() {
+      if (stack) stack->pop_back();
+    }
+  } pop{written ? &written_statements_ : nullptr};
   switch (s->kind) {
     case ast::NodeKind::CompoundStmt:
       push_scope();

@@ -42,6 +42,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.lvalue = true;
     v.read_only = var->read_only;
     v.constant = var->constant;
+    v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
     if (var->range.valid()) v.origin = var->origin;
     return v;
@@ -57,6 +58,12 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     return v;
   }
   if (e.name.rfind("gl_", 0) == 0) {
+    if (const std::string owners = stages_owning_builtin(e.name); !owners.empty()) {
+      report(Diagnostic::error(e.range, "'" + e.name + "' is not available in " + stage_name(options_.stage) + " shaders")
+                 .with_code("E-STAGE-BUILTIN")
+                 .with_hint("'" + e.name + "' is a built-in of " + owners + " shaders"));
+      return error_value(e.range);
+    }
     // Built-in names this checker does not model (gl_Max* constants, compatibility
     // state, extensions) are left to the driver rather than reported wrongly.
     if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {

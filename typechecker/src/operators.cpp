@@ -204,6 +204,15 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0) out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
     if (out.constant && (*out.constant > 0xffffffffll || *out.constant < -0x80000000ll)) out.constant.reset();
   }
+  if (out.constant) out.number = static_cast<double>(*out.constant);
+  // Float constants fold too (pow's exponent `n + 1.0`, `int(N * 0.5)` array sizes).
+  if (lhs.number && rhs.number && out.type.shape == Shape::scalar && out.type.is_floating()) {
+    const double x = *lhs.number, y = *rhs.number;
+    if (op == ast::BinaryOp::Add) out.number = x + y;
+    if (op == ast::BinaryOp::Sub) out.number = x - y;
+    if (op == ast::BinaryOp::Mul) out.number = x * y;
+    if (op == ast::BinaryOp::Div && y != 0.0) out.number = x / y;
+  }
   return out;
 }
 

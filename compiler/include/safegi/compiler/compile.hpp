@@ -56,6 +56,10 @@ struct CompileResult {
   gl::SymbolTable symbols;            // one table: "shader" mode for one source, "program" for several
   std::vector<Diagnostic> diagnostics;
   std::shared_ptr<const SourceManager> sources;  // what the diagnostics' locations refer to
+  // Every file the compilation read: the sources' paths, then each file they
+  // `#include`d, in inclusion order, each once (the built-in prelude, served from
+  // memory, is not one). What a make-style depfile lists (safeglslc -MD).
+  std::vector<std::string> dependencies;
 
   std::string symbols_json() const { return gl::to_json(symbols); }
   std::string diagnostics_text(bool color = false) const;

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include <safegi/diagnostics/diagnostic.hpp>
+#include <safegi/diagnostics/source_manager.hpp>
+#include <safegi/lexer/token.hpp>
 #include <safegi/parser/ast.hpp>
 
 #include "safegi/dimension_algebra/registry.hpp"
@@ -26,9 +28,17 @@ namespace safegi {
 
 enum class Stage : std::uint8_t { vertex, tess_control, tess_evaluation, geometry, fragment, compute, unknown };
 
+// "vertex", "tessellation control", …, "fragment", "compute" ("unknown" for Stage::unknown).
+const char* stage_name(Stage stage);
+
 struct CheckOptions {
   Stage stage = Stage::unknown;  // selects the built-in variables (gl_Position, gl_FragCoord, …)
   bool strict = false;           // warn on unannotated interface variables and on `?` flowing into annotations
+  // The preprocessed tokens the tree was parsed from and their SourceManager
+  // (optional, both or neither): diagnostics inside macro expansions then get
+  // their "in expansion of macro X" notes.
+  const std::vector<Token>* tokens = nullptr;
+  const SourceManager* sources = nullptr;
 };
 
 enum class InterfaceKind : std::uint8_t { uniform, input, output, buffer, shared };
@@ -65,6 +75,7 @@ struct CallInfo {
 };
 
 struct CheckResult {
+  Stage stage = Stage::unknown;                                  // CheckOptions::stage
   DimensionRegistry registry;                                    // the program's declarations (and the prelude it included)
   std::unordered_map<const ast::Node*, Type> types;              // every expression and parameter
   std::unordered_map<const ast::Declarator*, Type> declarators;  // every declared variable (locals inferred from initialisers)
@@ -79,9 +90,14 @@ struct CheckResult {
 
 CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics);
 
-// Cross-stage matching: every input of `consumer` with an output of the same
-// name in `producer` must have the identical annotated type; a mismatch is one
-// error naming both declarations.
+// Cross-stage matching (GLSL 4.40 §4.4.1 interface matching): each input of
+// `consumer` is matched to an output of `producer` by location when it has a
+// `layout(location = N)` (else by name); members of interface blocks are
+// matched by block name and member name, whatever the instance names. Matched
+// pairs must have the identical annotated type (the per-vertex array level of
+// geometry and tessellation inputs, and of tessellation-control outputs, is
+// not part of the comparison); a mismatch is one error at the input with a
+// note at the output, both types in the program's words.
 void check_interface_match(const CheckResult& producer, const CheckResult& consumer, DiagnosticEngine& diagnostics);
 
 }  // namespace safegi
