@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "bsdf.hpp"
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 
