@@ -200,15 +200,11 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Obje
 }  // namespace
 
 Geometry::Geometry(const Scene& scene) {
-  bool shutter_open = scene.camera.shutter_close > scene.camera.shutter_open;
   float time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
-    if (shutter_open && shape.render_from_object_at_close) {
-      Instance instance{PrimitiveSet{},
-                        RigidMotion(Affine::from(shape.render_from_object),
-                                    Affine::from(*shape.render_from_object_at_close), time_open, time_close),
-                        Bounds3{}};
+    if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
+      Instance instance{PrimitiveSet{}, *motion, Bounds3{}};
       add_shape(instance.primitives, shape, i, nullptr);
       instance.primitives.build();
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below

@@ -26,7 +26,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
   for (int i = 0; i < light_samples_; ++i) {
     float u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
-    std::optional<LightSample> light = lights_.sample(hit.position, u_light, u_point.u, u_point.v);
+    std::optional<LightSample> light = lights_.sample(hit.position, time, u_light, u_point.u, u_point.v);
     if (!light) continue;
     DirectionShading wi = frame.to_local(light->wi);
     if (wi.z() <= 0) continue;
@@ -68,7 +68,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
         if (specular_bounce) {
           radiance += throughput * emitted;
         } else if (mis_) {
-          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit) * static_cast<float>(light_samples_);
+          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * static_cast<float>(light_samples_);
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
         }
       }

@@ -146,6 +146,62 @@ TEST(RenderPhysics, WhiteFurnace) {
   }
 }
 
+// Moving emitters: a closed box that turns, stretches and shifts while the
+// shutter is open, and a sphere that grows and shifts, each around the camera.
+// At every instant the enclosure is a white furnace, so L = Le / (1 - a); light
+// samples taken where the emitter was at shutter open would miss it.
+TEST(RenderPhysics, MovingEmittersAreSampledAtTheRayTime) {
+  const std::string box = R"json({"type": "triangles", "material": "grey", "emission": "0.5 W/(m2 sr)", "two_sided": true,
+      "positions": {"value": [[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]],
+                    "unit": "m"},
+      "indices": [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 3, 7, 6, 3, 6, 2, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5],
+      "transform_at_close": [{"scale": [1.5, 1.2, 1.3]}, {"rotate": {"axis": [0.3, 1, 0.2], "angle": "40 deg"}},
+                             {"translate": {"value": [0.2, 0.1, -0.1], "unit": "m"}}]})json";
+  const std::string sphere = R"json({"type": "sphere", "material": "grey", "center": {"value": [0.1, 0.2, 0], "unit": "m"},
+      "radius": "1 m", "emission": "0.5 W/(m2 sr)", "two_sided": true,
+      "transform_at_close": [{"scale": 1.6}, {"translate": {"value": [0.3, 0, -0.2], "unit": "m"}}]})json";
+  for (const std::string& shape : {box, sphere})
+  for (const char* mis : {"true", "false"}) {
+    std::string text = R"json({
+      "render": {"resolution": [16, 16], "integrator": "path", "max_depth": 400, "mis": MIS},
+      "camera": {"position": {"value": [0, 0, 0], "unit": "m"}, "look_at": {"value": [0, 0, -1], "unit": "m"},
+                 "up": [0, 1, 0], "fov": "120 deg", "shutter": {"open": "0 s", "close": "10 ms"}},
+      "materials": {"grey": {"type": "lambert", "reflectance": 0.5}},
+      "shapes": [SHAPE]})json";
+    text.replace(text.find("MIS"), 3, mis);
+    text.replace(text.find("SHAPE"), 5, shape);
+    Image image = render_text(text, 64);
+    const double expected = 0.5 / (1 - 0.5);
+    Estimate estimate = channel_estimate(image, 0);
+    EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-4 * expected)
+        << (shape == box ? "box" : "sphere") << ", mis " << mis;
+    EXPECT_LT(estimate.standard_error, 0.01 * expected);
+  }
+}
+
+// A sphere light of radius R rising from height d0 to d1 above a diffuse plane
+// while the shutter is open: below it E = π Le (R/d)², and d moves linearly in
+// time, so the time-averaged L = ρ Le R² / (d0 d1) — half what the shutter-open
+// pose alone would give.
+TEST(RenderPhysics, MovingSphereLightAbovePlane) {
+  std::string text = R"json({
+    "render": {"resolution": [16, 16], "integrator": "direct"},
+    "camera": {"position": {"value": [0, 0.5, 2], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 1, 0], "fov": "0.5 deg", "shutter": {"open": "0 s", "close": "20 ms"}},
+    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}},
+               {"type": "sphere", "center": {"value": [0, 1, 0], "unit": "m"}, "radius": "0.1 m", "emission": "10 W/(m2 sr)",
+                "transform_at_close": [{"translate": {"value": [0, 1, 0], "unit": "m"}}]}]})json";
+  const double expected = 0.5 * 10.0 * 0.1 * 0.1 / (1.0 * 2.0);
+  for (const Knobs& knobs : estimator_knobs()) {
+    Image image = render_text(text, 64, 2, std::nullopt, knobs.apply);
+    Estimate estimate = channel_estimate(image, 0);
+    EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 2e-3 * expected) << knobs.name;
+    EXPECT_LT(estimate.standard_error, 0.01 * expected) << knobs.name;
+  }
+}
+
 // Irradiance from a parallel rectangle to a point below a corner, as a
 // differential-area-to-rectangle form factor.
 double corner_form_factor(double width, double length, double height) {

@@ -122,4 +122,25 @@ Affine RigidMotion::at(float time) const {
   return result;
 }
 
+ObjectToWorld RigidMotion::render_from_object(Time time) const {
+  Affine affine = at(sg::raw(time));
+  glm::mat4 forward(1.0f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) forward[c][r] = affine.m[r][c];
+  return sg::from_raw<ObjectToWorld>({forward, glm::inverse(forward)});
+}
+
+std::optional<RigidMotion> motion_of(const Shape& shape, const Camera& camera) {
+  if (!(camera.shutter_close > camera.shutter_open) || !shape.render_from_object_at_close) return std::nullopt;
+  return RigidMotion(Affine::from(shape.render_from_object), Affine::from(*shape.render_from_object_at_close),
+                     sg::raw(camera.shutter_open), sg::raw(camera.shutter_close));
+}
+
+float area_scale(const Affine& m, Float3 normal_after) {
+  Float3 c0 = column(m, 0), c1 = column(m, 1), c2 = column(m, 2);
+  float determinant = kernel::dot(c0, kernel::cross(c1, c2));
+  Float3 transposed{kernel::dot(c0, normal_after), kernel::dot(c1, normal_after), kernel::dot(c2, normal_after)};
+  return std::fabs(determinant) / kernel::length(transposed);
+}
+
 }  // namespace safegi::render

@@ -427,8 +427,6 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (value.contains("transform")) shape.render_from_object = load_transform(value["transform"], path.field("transform"));
   if (value.contains("transform_at_close"))
     shape.render_from_object_at_close = load_transform(value["transform_at_close"], path.field("transform_at_close"));
-  if (shape.emission && shape.render_from_object_at_close)
-    fail(path.field("transform_at_close"), "emitters cannot move (make the shape static or remove its emission)");
   if (shape.type == Shape::Type::sphere) {
     for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
       if (!m) continue;

@@ -3,7 +3,10 @@
 // move objects alike.
 #pragma once
 
+#include <optional>
+
 #include "safegi/cpu_renderer/kernel_math.hpp"
+#include "safegi/cpu_renderer/scene.hpp"
 #include "safegi/cpu_renderer/types.hpp"
 
 namespace safegi::render {
@@ -70,6 +73,7 @@ class RigidMotion {
  public:
   RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close);
   Affine at(float time) const;
+  ObjectToWorld render_from_object(Time time) const;
 
  private:
   struct Pose {
@@ -81,5 +85,13 @@ class RigidMotion {
   Pose open_, close_;
   float time_open_, time_close_;
 };
+
+// How `shape` moves while the camera's shutter is open; nothing when it has no
+// pose at shutter close or the shutter interval is empty.
+std::optional<RigidMotion> motion_of(const Shape& shape, const Camera& camera);
+
+// Area of a surface element after `m` per area before, given its normal after
+// (|det L| / |Lᵀ n| for the linear part L).
+float area_scale(const Affine& m, Float3 normal_after);
 
 }  // namespace safegi::render
