@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 
@@ -44,6 +44,28 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     }
     if (!(area > sg::zero)) continue;
     light.pdf_area = 1.0f / area;
+    if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
+      // Power (for choosing lights) stays that of the shutter-open pose; points
+      // are sampled where the emitter is at the ray's time.
+      light.motion = static_cast<int32_t>(motions_.size());
+      motions_.push_back(*motion);
+      light.object_center = shape.center;
+      light.object_radius = shape.radius;
+      if (light.type == Light::Type::triangles) {
+        light.first_triangle = static_cast<uint32_t>(object_triangles_.size());
+        quantity<dim::area> object_area = sg::zero;
+        for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+          PointObject a = shape.positions[shape.indices[i]];
+          PointObject b = shape.positions[shape.indices[i + 1]];
+          PointObject c = shape.positions[shape.indices[i + 2]];
+          object_area += 0.5f * sg::length(sg::cross(b - a, c - a));
+          object_triangles_.push_back({a, b - a, c - a, sg::raw(object_area)});
+        }
+        for (uint32_t t = 0; t < light.triangle_count; ++t)
+          object_triangles_[light.first_triangle + t].area_cdf /= sg::raw(object_area);
+        light.pdf_area = 1.0f / object_area;
+      }
+    }
     light_of_shape_[s] = static_cast<int32_t>(lights_.size());
     lights_.push_back(light);
     // A diffuse emitter radiates π·A·L per side.
@@ -70,7 +92,73 @@ uint32_t Lights::choose(float u) const {
   return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
 }
 
-std::optional<LightSample> Lights::sample(PointWorld reference, float u_light, float u1, float u2) const {
+template <class Space>
+const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles,
+                                                              const Light& light, float u) const {
+  const EmitterTriangle<Space>* first = triangles.data() + light.first_triangle;
+  const EmitterTriangle<Space>* last = first + light.triangle_count;
+  const EmitterTriangle<Space>* tri =
+      std::upper_bound(first, last, u, [](float v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
+  return tri == last ? *(last - 1) : *tri;
+}
+
+Lights::SurfacePoint Lights::sample_static(const Light& light, float u_triangle, float u1, float u2) const {
+  SurfacePoint point;
+  point.pdf_area = light.pdf_area;
+  if (light.type == Light::Type::sphere) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    point.normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    point.position = light.position + offset;
+    point.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+    return point;
+  }
+  const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
+  float root = std::sqrt(u1);
+  float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+  VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+  point.position = tri.p0 + along_u + along_v;
+  point.position_error =
+      (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+      kernel::gamma(7);
+  point.normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
+  return point;
+}
+
+// The emitter at `time`: a sphere where its centre and radius have moved; a
+// mesh point drawn by object-space area, whose density per world area divides
+// by the area the motion's pose stretches it to.
+Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const {
+  const RigidMotion& motion = motions_[light.motion];
+  ObjectToWorld render_from_object = motion.render_from_object(time);
+  SurfacePoint point;
+  if (light.type == Light::Type::sphere) {
+    PointWorld center = render_from_object(light.object_center);
+    Length radius = sg::length(render_from_object(vector<Object>(light.object_radius, sg::zero, sg::zero)));
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    point.normal = sg::to_normal(outward);
+    VectorWorld offset = outward * radius;
+    point.position = center + offset;
+    point.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(center))) * kernel::gamma(8);
+    point.pdf_area = 1.0f / (4 * sg::pi * radius * radius);
+    return point;
+  }
+  const EmitterTriangle<Object>& tri = choose_triangle(object_triangles_, light, u_triangle);
+  float root = std::sqrt(u1);
+  float b1 = 1 - root, b2 = u2 * root;
+  VectorWorld e1 = render_from_object(tri.e1), e2 = render_from_object(tri.e2);
+  PointWorld p0 = render_from_object(tri.p0);
+  VectorWorld along_u = e1 * b1, along_v = e2 * b2;
+  point.position = p0 + along_u + along_v;
+  // The triangle's error plus the pose's (a 3x4 affine map: γ(3) of the terms).
+  point.position_error = (kernel::abs(to_kernel(p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+                         kernel::gamma(10);
+  point.normal = sg::to_normal(sg::normalize(sg::cross(e1, e2)));
+  point.pdf_area = light.pdf_area / area_scale(motion.at(sg::raw(time)), to_kernel(point.normal));
+  return point;
+}
+
+std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float u_light, float u1, float u2) const {
   if (lights_.empty()) return std::nullopt;
   uint32_t index = choose(u_light);
   const Light& light = lights_[index];
@@ -88,41 +176,23 @@ std::optional<LightSample> Lights::sample(PointWorld reference, float u_light, f
     sample.delta = true;
     return sample;
   }
-  NormalWorld normal;
-  if (light.type == Light::Type::sphere) {
-    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
-    normal = sg::to_normal(outward);
-    VectorWorld offset = outward * light.radius;
-    sample.position = light.position + offset;
-    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
-  } else {
-    // Reuse what is left of u_light to pick a triangle by area.
-    float low = index == 0 ? 0.0f : power_cdf_[index - 1];
-    float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
-    const EmitterTriangle* first = triangles_.data() + light.first_triangle;
-    const EmitterTriangle* last = first + light.triangle_count;
-    const EmitterTriangle* tri =
-        std::upper_bound(first, last, u_triangle, [](float u, const EmitterTriangle& t) { return u < t.area_cdf; });
-    if (tri == last) tri = last - 1;
-    float root = std::sqrt(u1);
-    float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-    VectorWorld along_u = tri->e1 * b1, along_v = tri->e2 * b2;
-    sample.position = tri->p0 + along_u + along_v;
-    sample.position_error =
-        (kernel::abs(to_kernel(tri->p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
-        kernel::gamma(7);
-    normal = sg::to_normal(sg::normalize(sg::cross(tri->e1, tri->e2)));
-  }
+  // Reuse what is left of u_light to pick a triangle by area.
+  float low = index == 0 ? 0.0f : power_cdf_[index - 1];
+  float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
+  SurfacePoint point = light.motion < 0 ? sample_static(light, u_triangle, u1, u2)
+                                        : sample_moving(light, time, u_triangle, u1, u2);
+  sample.position = point.position;
+  sample.position_error = point.position_error;
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
   sample.wi = sg::normalize(toward);
-  Proj cos_light = -sg::dot(normal, sample.wi);
+  Proj cos_light = -sg::dot(point.normal, sample.wi);
   if (light.two_sided) cos_light = sg::abs(cos_light);
   if (!(cos_light > sg::zero)) return std::nullopt;
-  sample.emitter_normal = to_kernel(normal);
+  sample.emitter_normal = to_kernel(point.normal);
   sample.radiance = light.radiance;
-  sample.pdf = probability * to_solid_angle_density(light.pdf_area, cos_light, sample.distance);
+  sample.pdf = probability * to_solid_angle_density(point.pdf_area, cos_light, sample.distance);
   return sample;
 }
 
@@ -134,7 +204,7 @@ Radiance Lights::emitted(const SurfaceHit& hit, DirectionWorld incoming) const {
   return light.radiance;
 }
 
-PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit) const {
+PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time) const {
   int32_t index = light_of_shape_[hit.shape];
   if (index < 0) return sg::zero;
   const Light& light = lights_[index];
@@ -142,7 +212,19 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit) const {
   Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
   if (!(cos_light > sg::zero)) return sg::zero;
   return selection_probability(static_cast<uint32_t>(index)) *
-         to_solid_angle_density(light.pdf_area, cos_light, sg::length(toward));
+         to_solid_angle_density(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time), cos_light,
+                                sg::length(toward));
+}
+
+// The density per world area at `time` with which sample_moving() draws `hit`.
+PdfArea Lights::moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const {
+  const RigidMotion& motion = motions_[light.motion];
+  if (light.type == Light::Type::sphere) {
+    Length radius =
+        sg::length(motion.render_from_object(time)(vector<Object>(light.object_radius, sg::zero, sg::zero)));
+    return 1.0f / (4 * sg::pi * radius * radius);
+  }
+  return light.pdf_area / area_scale(motion.at(sg::raw(time)), to_kernel(hit.normal));
 }
 
 }  // namespace safegi::render

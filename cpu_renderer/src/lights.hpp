@@ -36,14 +36,14 @@ class Lights {
   bool empty() const { return lights_.empty(); }
   bool has_area_lights() const { return has_area_lights_; }
 
-  // One light chosen by power, then a point on it.
-  std::optional<LightSample> sample(PointWorld reference, float u_light, float u1, float u2) const;
+  // One light chosen by power, then a point on it, where it is at `time`.
+  std::optional<LightSample> sample(PointWorld reference, Time time, float u_light, float u1, float u2) const;
 
   // Radiance an emissive surface sends back along `incoming` (towards -incoming).
   Radiance emitted(const SurfaceHit& hit, DirectionWorld incoming) const;
   // Solid-angle density with which sample() would have produced the emitter
-  // point `hit` as seen from `reference`.
-  PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit) const;
+  // point `hit` (found at `time`) as seen from `reference`.
+  PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit, Time time) const;
 
  private:
   struct Light {
@@ -52,21 +52,44 @@ class Lights {
     Intensity intensity;  // point light
     uint32_t first_triangle = 0, triangle_count = 0;
     Length radius = sg::zero;  // sphere
-    PdfArea pdf_area = sg::zero;  // 1 / surface area
+    PdfArea pdf_area = sg::zero;  // 1 / surface area (of a moving emitter: in object space)
     Radiance radiance;
     bool two_sided = false;
+    // A moving emitter: index into motions_; its triangles are in object space,
+    // its sphere is object_center and object_radius.
+    int32_t motion = -1;
+    PointObject object_center;
+    Length object_radius = sg::zero;
   };
+  template <class Space>
   struct EmitterTriangle {
-    PointWorld p0;
-    VectorWorld e1, e2;
+    point<Space> p0;
+    vector<Space> e1, e2;
     float area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
+  // A point on a light: position, its rounding-error box, unit normal, and the
+  // density per unit area.
+  struct SurfacePoint {
+    PointWorld position;
+    Float3 position_error;
+    NormalWorld normal;
+    PdfArea pdf_area = sg::zero;
+  };
+
+  template <class Space>
+  const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
+                                                float u) const;
+  SurfacePoint sample_static(const Light& light, float u_triangle, float u1, float u2) const;
+  SurfacePoint sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const;
+  PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 
   float selection_probability(uint32_t light) const;
   uint32_t choose(float u) const;
 
   std::vector<Light> lights_;
-  std::vector<EmitterTriangle> triangles_;
+  std::vector<EmitterTriangle<World>> triangles_;
+  std::vector<EmitterTriangle<Object>> object_triangles_;  // of moving emitters
+  std::vector<RigidMotion> motions_;
   std::vector<float> power_cdf_;
   std::vector<int32_t> light_of_shape_;
   bool has_area_lights_ = false;

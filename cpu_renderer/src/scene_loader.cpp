@@ -1,8 +1,12 @@
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -12,6 +16,7 @@
 #include <sstream>
 #include <tiny_obj_loader.h>
 
+#include "ply.hpp"
 #include "safegi/cpu_renderer/unit_expression.hpp"
 
 namespace safegi::render {
@@ -235,6 +240,8 @@ class Loader {
   Material load_material(const std::string& name, const Json& value, const JsonPath& path);
   Shape load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials);
   void load_mesh_file(const Json& value, const JsonPath& path, Shape& shape);
+  void load_ply_file(const std::filesystem::path& full, const std::string& file, float scale, const JsonPath& path,
+                     Shape& shape);
   void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
   ObjectToWorld load_transform(const Json& value, const JsonPath& path);
   PointLight load_point_light(const Json& value, const JsonPath& path);
@@ -277,7 +284,9 @@ Scene Loader::load(const Json& root) {
 }
 
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
-  object(value, path, {"resolution", "spp", "integrator", "max_depth"});
+  object(value, path,
+         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "russian_roulette",
+          "russian_roulette_depth"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -293,6 +302,14 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     else if (name == "path") settings.integrator = IntegratorType::path;
     else fail(path.field("integrator"), "expected \"direct\" or \"path\", got " + short_dump(value["integrator"]));
   }
+  if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
+  if (value.contains("light_samples"))
+    settings.light_samples = integer(value["light_samples"], path.field("light_samples"), 1, 1024);
+  if (value.contains("russian_roulette"))
+    settings.russian_roulette = boolean(value["russian_roulette"], path.field("russian_roulette"));
+  if (value.contains("russian_roulette_depth"))
+    settings.russian_roulette_depth =
+        integer(value["russian_roulette_depth"], path.field("russian_roulette_depth"), 0, 1024);
 }
 
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
@@ -417,8 +434,6 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (value.contains("transform")) shape.render_from_object = load_transform(value["transform"], path.field("transform"));
   if (value.contains("transform_at_close"))
     shape.render_from_object_at_close = load_transform(value["transform_at_close"], path.field("transform_at_close"));
-  if (shape.emission && shape.render_from_object_at_close)
-    fail(path.field("transform_at_close"), "emitters cannot move (make the shape static or remove its emission)");
   if (shape.type == Shape::Type::sphere) {
     for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
       if (!m) continue;
@@ -443,6 +458,13 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
                                  dimension_name(unit->dimension) + ")");
 
   std::filesystem::path full = base_directory_ / file;
+  float scale = static_cast<float>(unit->to_reference);
+  std::string extension = full.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".ply") {
+    load_ply_file(full, file, scale, path, shape);
+    return;
+  }
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -454,7 +476,6 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
     fail(path.field("file"), "cannot read mesh '" + file + "'" + (reason.empty() ? "" : ": " + reason));
   }
   const auto& vertices = reader.GetAttrib().vertices;
-  float scale = static_cast<float>(unit->to_reference);
   for (size_t i = 0; i + 2 < vertices.size(); i += 3) {
     glm::vec3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -470,6 +491,29 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
   }
   if (shape.indices.empty() || shape.indices.size() % 3 != 0)
     fail(path.field("file"), "mesh '" + file + "' has no triangles");
+}
+
+// PLY: positions and faces; vertex normals are read but not used (the renderer
+// shades with geometric normals).
+void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, float scale,
+                           const JsonPath& path, Shape& shape) {
+  std::ifstream in(full, std::ios::binary);
+  if (!std::filesystem::is_regular_file(full) || !in) fail(path.field("file"), "cannot read mesh '" + file + "'");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  PlyMesh mesh;
+  try {
+    mesh = parse_ply(bytes);
+  } catch (const PlyError& error) {
+    fail(path.field("file"), "cannot read mesh '" + file + "': " + error.what());
+  }
+  for (const std::array<float, 3>& p : mesh.positions) {
+    glm::vec3 scaled{p[0] * scale, p[1] * scale, p[2] * scale};
+    if (!std::isfinite(scaled.x) || !std::isfinite(scaled.y) || !std::isfinite(scaled.z))
+      fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
+    shape.positions.push_back(sg::from_raw<PointObject>(scaled));
+  }
+  shape.indices = std::move(mesh.indices);
+  if (shape.indices.empty()) fail(path.field("file"), "mesh '" + file + "' has no triangles");
 }
 
 void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shape) {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <unistd.h>
 
 namespace safegi::render {
 namespace {
@@ -80,6 +81,50 @@ TEST(SceneLoader, ConvertsUnitsOnceAtLoad) {
   ASSERT_EQ(scene.point_lights.size(), 1u);
   EXPECT_FLOAT_EQ(sg::raw(scene.point_lights[0].position).y, 2.0f);
   EXPECT_FLOAT_EQ(sg::raw(scene.point_lights[0].intensity).r, 4000.0f / (4 * 3.14159265f));
+}
+
+TEST(SceneLoader, EstimatorSettings) {
+  RenderSettings defaults = parse_scene(with_camera(""), "test.json", ".").settings;
+  EXPECT_TRUE(defaults.mis);
+  EXPECT_EQ(defaults.light_samples, 1);
+  EXPECT_TRUE(defaults.russian_roulette);
+  EXPECT_EQ(defaults.russian_roulette_depth, 3);
+  RenderSettings set = parse_scene(with_camera(R"("render": {"mis": false, "light_samples": 4, "russian_roulette": false,
+                                                             "russian_roulette_depth": 0})"),
+                                   "test.json", ".")
+                           .settings;
+  EXPECT_FALSE(set.mis);
+  EXPECT_EQ(set.light_samples, 4);
+  EXPECT_FALSE(set.russian_roulette);
+  EXPECT_EQ(set.russian_roulette_depth, 0);
+  EXPECT_EQ(load_error(with_camera(R"("render": {"mis": "off"})")),
+            "test.json: render.mis: expected true or false, got \"off\"");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"light_samples": 0})")),
+            "test.json: render.light_samples: expected an integer in [1, 1024], got 0");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"russian_roulette_depth": -1})")),
+            "test.json: render.russian_roulette_depth: expected an integer in [0, 1024], got -1");
+}
+
+TEST(SceneLoader, PlyMeshes) {
+  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "ply-mesh.json");
+  const Shape& torus = scene.shapes[1];
+  EXPECT_EQ(torus.positions.size(), 32u * 16u);
+  EXPECT_EQ(torus.indices.size(), 32u * 16u * 2u * 3u);  // quads become two triangles
+  // A damaged PLY file: the JSON path, the file and what is wrong with it.
+  std::filesystem::path directory = std::filesystem::temp_directory_path() / ("safegi-ply-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  {
+    std::ofstream out(directory / "bad.ply", std::ios::binary);
+    out << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n";
+  }
+  try {
+    parse_scene(with_camera(R"("shapes": [{"type": "mesh", "file": "bad.ply", "unit": "mm"}])"), "test.json", directory);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "test.json: shapes[0].file: cannot read mesh 'bad.ply': the vertex element needs a scalar property 'y'");
+  }
+  std::filesystem::remove_all(directory);
 }
 
 TEST(SceneLoader, BundledScenesLoad) {

@@ -14,22 +14,6 @@ using kernel::Float3;
 inline constexpr float kPi = std::numbers::pi_v<float>;
 inline constexpr float kInversePi = 1.0f / kPi;
 
-inline Float3 sample_cosine_hemisphere(float u1, float u2) {
-  // Concentric disk mapping (Shirley–Chiu), lifted to the hemisphere.
-  float a = 2 * u1 - 1, b = 2 * u2 - 1;
-  float r = 0, phi = 0;
-  if (a == 0 && b == 0) return {0, 0, 1};
-  if (a * a > b * b) {
-    r = a;
-    phi = (kPi / 4) * (b / a);
-  } else {
-    r = b;
-    phi = (kPi / 2) - (kPi / 4) * (a / b);
-  }
-  float x = r * std::cos(phi), y = r * std::sin(phi);
-  return {x, y, std::sqrt(std::fmax(0.0f, 1 - x * x - y * y))};
-}
-
 inline void sample_concentric_disk(float u1, float u2, float& x, float& y) {
   float a = 2 * u1 - 1, b = 2 * u2 - 1;
   if (a == 0 && b == 0) {
@@ -46,6 +30,13 @@ inline void sample_concentric_disk(float u1, float u2, float& x, float& y) {
   }
   x = r * std::cos(phi);
   y = r * std::sin(phi);
+}
+
+inline Float3 sample_cosine_hemisphere(float u1, float u2) {
+  // The concentric disk (Shirley–Chiu), lifted to the hemisphere (Malley).
+  float x, y;
+  sample_concentric_disk(u1, u2, x, y);
+  return {x, y, std::sqrt(std::fmax(0.0f, 1 - x * x - y * y))};
 }
 
 inline Float3 sample_uniform_sphere(float u1, float u2) {
