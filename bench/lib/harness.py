@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def build_dir() -> Path:
-    return Path(os.environ.get("SAFEGI_BUILD", ROOT / "build"))
+    return Path(os.environ.get("SAFEGI_BUILD", ROOT / "build")).resolve()
 
 
 def quick() -> bool:
@@ -53,6 +53,20 @@ def wall_time(command: list[str]) -> float:
     start = time.perf_counter()
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     return time.perf_counter() - start
+
+
+def wall_time_in(command: list[str], cwd: Path) -> float:
+    """Wall time of `command` run in `cwd`, whatever its exit status."""
+    start = time.perf_counter()
+    subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def run_with_input(command: list[str], source: str) -> tuple[subprocess.CompletedProcess, float]:
+    """Runs `command` with `source` on stdin: its result (any exit status) and wall time."""
+    start = time.perf_counter()
+    result = subprocess.run(command, input=source, capture_output=True, text=True)
+    return result, time.perf_counter() - start
 
 
 def interleaved(commands: dict[str, list[str]], repeats: int) -> dict[str, Timing]:
