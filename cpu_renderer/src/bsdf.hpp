@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "safegi/cpu_renderer/scene.hpp"
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 

@@ -8,7 +8,7 @@
 #include "geometry.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 #include "sampler.hpp"
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 

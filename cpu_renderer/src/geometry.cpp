@@ -5,40 +5,16 @@
 namespace safegi::render {
 
 using kernel::abs;
+using kernel::column;
 using kernel::Bounds3;
 using kernel::cross;
 using kernel::dot;
 using kernel::gamma;
+using kernel::inverse;
 
 namespace {
 
-Float3 column(const Affine& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
-
 using kernel::Ray;
-
-Affine inverse(const Affine& a) {
-  const auto& m = a.m;
-  float c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
-  float c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
-  float c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-  float det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-  float s = 1.0f / det;
-  Affine r;
-  r.m[0][0] = c00 * s;
-  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * s;
-  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * s;
-  r.m[1][0] = c01 * s;
-  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * s;
-  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * s;
-  r.m[2][0] = c02 * s;
-  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s;
-  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s;
-  Float3 t = r.apply_vector(column(a, 3));
-  r.m[0][3] = -t.x;
-  r.m[1][3] = -t.y;
-  r.m[2][3] = -t.z;
-  return r;
-}
 
 // Normals transform with the inverse transpose.
 Float3 apply_normal(const Affine& inverse_map, Float3 n) {
@@ -202,110 +178,6 @@ bool PrimitiveSet::occluded(const Ray& ray, float t_max) const {
 }
 
 // ---------------------------------------------------------------------------
-// RigidMotion
-
-RigidMotion::Pose RigidMotion::decompose(const Affine& m) {
-  Pose pose;
-  pose.translation = column(m, 3);
-  // Polar decomposition M = R S by averaging R with its inverse transpose.
-  Affine rotation = m;
-  for (int r = 0; r < 3; ++r) rotation.m[r][3] = 0;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    Affine inv = inverse(rotation);
-    Affine next;
-    float change = 0;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        next.m[r][c] = 0.5f * (rotation.m[r][c] + inv.m[c][r]);
-        change = std::fmax(change, std::fabs(next.m[r][c] - rotation.m[r][c]));
-      }
-    rotation = next;
-    if (change < 1e-7f) break;
-  }
-  Affine scale = inverse(rotation) * m;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) pose.scale[r][c] = scale.m[r][c];
-  // Rotation matrix to quaternion.
-  const auto& R = rotation.m;
-  float trace = R[0][0] + R[1][1] + R[2][2];
-  float* q = pose.rotation;
-  if (trace > 0) {
-    float s = std::sqrt(trace + 1.0f) * 2;
-    q[3] = 0.25f * s;
-    q[0] = (R[2][1] - R[1][2]) / s;
-    q[1] = (R[0][2] - R[2][0]) / s;
-    q[2] = (R[1][0] - R[0][1]) / s;
-  } else if (R[0][0] > R[1][1] && R[0][0] > R[2][2]) {
-    float s = std::sqrt(1.0f + R[0][0] - R[1][1] - R[2][2]) * 2;
-    q[3] = (R[2][1] - R[1][2]) / s;
-    q[0] = 0.25f * s;
-    q[1] = (R[0][1] + R[1][0]) / s;
-    q[2] = (R[0][2] + R[2][0]) / s;
-  } else if (R[1][1] > R[2][2]) {
-    float s = std::sqrt(1.0f + R[1][1] - R[0][0] - R[2][2]) * 2;
-    q[3] = (R[0][2] - R[2][0]) / s;
-    q[0] = (R[0][1] + R[1][0]) / s;
-    q[1] = 0.25f * s;
-    q[2] = (R[1][2] + R[2][1]) / s;
-  } else {
-    float s = std::sqrt(1.0f + R[2][2] - R[0][0] - R[1][1]) * 2;
-    q[3] = (R[1][0] - R[0][1]) / s;
-    q[0] = (R[0][2] + R[2][0]) / s;
-    q[1] = (R[1][2] + R[2][1]) / s;
-    q[2] = 0.25f * s;
-  }
-  return pose;
-}
-
-RigidMotion::RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close)
-    : open_(decompose(at_open)), close_(decompose(at_close)), time_open_(time_open), time_close_(time_close) {
-  // Take the shorter arc.
-  float d = 0;
-  for (int i = 0; i < 4; ++i) d += open_.rotation[i] * close_.rotation[i];
-  if (d < 0)
-    for (float& c : close_.rotation) c = -c;
-}
-
-Affine RigidMotion::at(float time) const {
-  float span = time_close_ - time_open_;
-  float s = span > 0 ? std::clamp((time - time_open_) / span, 0.0f, 1.0f) : 0.0f;
-  Float3 translation = open_.translation * (1 - s) + close_.translation * s;
-  // Slerp, falling back to a normalised lerp for nearly equal rotations.
-  float cos_theta = 0;
-  for (int i = 0; i < 4; ++i) cos_theta += open_.rotation[i] * close_.rotation[i];
-  float q[4];
-  if (cos_theta > 0.9995f) {
-    float norm = 0;
-    for (int i = 0; i < 4; ++i) {
-      q[i] = open_.rotation[i] * (1 - s) + close_.rotation[i] * s;
-      norm += q[i] * q[i];
-    }
-    for (float& c : q) c /= std::sqrt(norm);
-  } else {
-    float theta = std::acos(std::clamp(cos_theta, -1.0f, 1.0f));
-    float a = std::sin((1 - s) * theta) / std::sin(theta), b = std::sin(s * theta) / std::sin(theta);
-    for (int i = 0; i < 4; ++i) q[i] = open_.rotation[i] * a + close_.rotation[i] * b;
-  }
-  float x = q[0], y = q[1], z = q[2], w = q[3];
-  Affine rotation;
-  rotation.m[0][0] = 1 - 2 * (y * y + z * z);
-  rotation.m[0][1] = 2 * (x * y - z * w);
-  rotation.m[0][2] = 2 * (x * z + y * w);
-  rotation.m[1][0] = 2 * (x * y + z * w);
-  rotation.m[1][1] = 1 - 2 * (x * x + z * z);
-  rotation.m[1][2] = 2 * (y * z - x * w);
-  rotation.m[2][0] = 2 * (x * z - y * w);
-  rotation.m[2][1] = 2 * (y * z + x * w);
-  rotation.m[2][2] = 1 - 2 * (x * x + y * y);
-  Affine scale;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) scale.m[r][c] = open_.scale[r][c] * (1 - s) + close_.scale[r][c] * s;
-  Affine result = rotation * scale;
-  for (int r = 0; r < 3; ++r) result.m[r][3] = translation[r];
-  return result;
-}
-
-// ---------------------------------------------------------------------------
 // Geometry
 
 namespace {
@@ -326,14 +198,6 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Obje
 }
 
 }  // namespace
-
-Affine Affine::from(const ObjectToWorld& map) {
-  glm::mat4 forward = sg::raw(map).forward;  // column-major
-  Affine a;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) a.m[r][c] = forward[c][r];
-  return a;
-}
 
 Geometry::Geometry(const Scene& scene) {
   bool shutter_open = scene.camera.shutter_close > scene.camera.shutter_open;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bvh.hpp"
+#include "safegi/cpu_renderer/rigid_motion.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
 namespace safegi::render {
@@ -44,32 +45,7 @@ struct Hit {
   uint32_t shape = 0;
 };
 
-// An affine map on plain floats (row-major 3x4), for instancing and motion.
-struct Affine {
-  float m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
-
-  static Affine from(const ObjectToWorld& map);
-  Float3 apply_point(Float3 p) const {
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-  }
-  Float3 apply_vector(Float3 v) const {
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-  }
-  friend Affine operator*(const Affine& a, const Affine& b) {
-    Affine r;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 4; ++j)
-        r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j] + (j == 3 ? a.m[i][3] : 0.0f);
-    return r;
-  }
-};
-
 }  // namespace kernel
-
-using kernel::Affine;
 
 // Primitives of one space: triangles first, then spheres, under one BVH.
 class PrimitiveSet {
@@ -101,24 +77,6 @@ class PrimitiveSet {
   std::vector<Triangle> triangles_;
   std::vector<Sphere> spheres_;
   kernel::Bvh bvh_;
-};
-
-// Rigid motion between two poses, interpolated as translation, rotation
-// (quaternion slerp) and scale, like pbrt's AnimatedTransform.
-class RigidMotion {
- public:
-  RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close);
-  Affine at(float time) const;
-
- private:
-  struct Pose {
-    Float3 translation;
-    float rotation[4];  // quaternion x, y, z, w
-    float scale[3][3];
-  };
-  static Pose decompose(const Affine& m);
-  Pose open_, close_;
-  float time_open_, time_close_;
 };
 
 class Geometry {

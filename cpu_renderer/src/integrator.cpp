@@ -3,45 +3,52 @@
 #include <algorithm>
 
 #include "bsdf.hpp"
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 
 namespace {
 
-// Russian roulette starts after this many bounces (as in the pbrt-v3 reference).
-constexpr int kRouletteDepth = 3;
-
-// Both densities in one measure, so their ratio is a plain number.
+// Both densities in one measure, so their ratio is a plain number. With n light
+// samples against one BSDF sample, the light strategy's density counts n times
+// (Veach's power heuristic with sample counts).
 float mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
 
 }  // namespace
 
-// Next-event estimation: radiance reflected towards wo from one light sample.
+// Next-event estimation: radiance reflected towards wo, averaged over
+// light_samples_ light samples.
 template <bool area_lights>
 Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
                                    DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const {
-  float u_light = sampler.next_1d();
-  Sample2 u_point = sampler.next_2d();
-  std::optional<LightSample> light = lights_.sample(hit.position, u_light, u_point.u, u_point.v);
-  if (!light) return Radiance{};
-  DirectionShading wi = frame.to_local(light->wi);
-  if (wi.z() <= 0) return Radiance{};
-  Brdf f = bsdf.eval(wo, wi);
-  if (sg::is_black(f)) return Radiance{};
-  Length t_max = sg::zero;
-  TimedRay shadow = spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
-  ++counters.shadow;
-  if (geometry_.occluded(shadow, t_max)) return Radiance{};
-  if constexpr (area_lights) {
-    if (!light->delta) {
-      float weight = mis_weight(light->pdf, bsdf.pdf(wo, wi));
-      return f * light->radiance * sg::cos_theta(wi) * (weight / light->pdf);
+  Radiance sum;
+  const float count = static_cast<float>(light_samples_);
+  for (int i = 0; i < light_samples_; ++i) {
+    float u_light = sampler.next_1d();
+    Sample2 u_point = sampler.next_2d();
+    std::optional<LightSample> light = lights_.sample(hit.position, u_light, u_point.u, u_point.v);
+    if (!light) continue;
+    DirectionShading wi = frame.to_local(light->wi);
+    if (wi.z() <= 0) continue;
+    Brdf f = bsdf.eval(wo, wi);
+    if (sg::is_black(f)) continue;
+    Length t_max = sg::zero;
+    TimedRay shadow = spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
+    ++counters.shadow;
+    if (geometry_.occluded(shadow, t_max)) continue;
+    if constexpr (area_lights) {
+      if (!light->delta) {
+        PdfSolidAngle light_pdf = light->pdf * count;
+        float weight = mis_ ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
+        sum += f * light->radiance * sg::cos_theta(wi) * (weight / light_pdf);
+        continue;
+      }
     }
+    // A point light's irradiance: its intensity times the solid angle a unit of
+    // receiving area subtends from it (cos θ / r², the receiver's cosine).
+    sum += f * light->intensity * solid_angle_per_area(sg::cos_theta(wi), light->distance) / (light->probability * count);
   }
-  // A point light's irradiance: its intensity times the solid angle a unit of
-  // receiving area subtends from it (cos θ / r², the receiver's cosine).
-  return f * light->intensity * solid_angle_per_area(sg::cos_theta(wi), light->distance) / light->probability;
+  return sum;
 }
 
 template <bool area_lights>
@@ -58,8 +65,12 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if constexpr (area_lights) {
       Radiance emitted = lights_.emitted(*hit, ray.d);
       if (!sg::is_black(emitted)) {
-        float weight = specular_bounce ? 1.0f : mis_weight(previous_bsdf_pdf, lights_.pdf(previous_position, *hit));
-        radiance += throughput * emitted * weight;
+        if (specular_bounce) {
+          radiance += throughput * emitted;
+        } else if (mis_) {
+          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit) * static_cast<float>(light_samples_);
+          radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
+        }
       }
     }
     if (last_vertex || depth >= max_depth_) break;
@@ -81,7 +92,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     // Direct lighting follows mirrors but stops after one diffuse bounce, once
     // the BSDF-sampled ray has collected its (MIS-weighted) emission.
     if (direct_only_ && !scattered->specular) {
-      if constexpr (!area_lights) break;
+      if (!area_lights || !mis_) break;
       last_vertex = true;
     }
     throughput *= scattered->weight;
@@ -91,7 +102,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     previous_position = hit->position;
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
     ++counters.extension;
-    if (depth >= kRouletteDepth && !last_vertex) {
+    if (depth >= roulette_depth_ && !last_vertex) {
       float survival = std::min(0.95f, sg::max_component(throughput));
       if (sampler.next_1d() >= survival) break;
       throughput = throughput / survival;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "geometry.hpp"
 #include "lights.hpp"
@@ -19,9 +20,10 @@ struct RayCounters {
 
 class Integrator {
  public:
-  Integrator(const Scene& scene, const Geometry& geometry, const Lights& lights, IntegratorType type, int max_depth)
-      : scene_(scene), geometry_(geometry), lights_(lights), direct_only_(type == IntegratorType::direct),
-        max_depth_(max_depth) {}
+  Integrator(const Scene& scene, const Geometry& geometry, const Lights& lights, const RenderSettings& settings)
+      : scene_(scene), geometry_(geometry), lights_(lights), direct_only_(settings.integrator == IntegratorType::direct),
+        max_depth_(settings.max_depth), mis_(settings.mis), light_samples_(settings.light_samples),
+        roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()) {}
 
   // Radiance arriving at the camera along `camera_ray`.
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
@@ -43,6 +45,9 @@ class Integrator {
   const Lights& lights_;
   bool direct_only_;
   int max_depth_;
+  bool mis_;           // off: emission found by BSDF sampling after a non-specular bounce is dropped
+  int light_samples_;  // next-event samples per shading point
+  int roulette_depth_;
 };
 
 }  // namespace safegi::render

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 

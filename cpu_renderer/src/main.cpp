@@ -21,13 +21,23 @@ std::filesystem::path with_extension(std::filesystem::path output, const char* e
   return output;
 }
 
+double cpu_seconds(const rusage& usage) {
+  return usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec + usage.ru_stime.tv_usec * 1e-6;
+}
+
+rusage resource_usage() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace safegi::render;
   CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG"};
-  std::string scene_file, output = "render", resolution, crop, integrator;
-  int spp = 0, threads = 0, max_depth = 0;
+  std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette;
+  int spp = 0, threads = 0, max_depth = 0, light_samples = 0, roulette_depth = -1;
   uint32_t seed = 0;
   double time_budget = 0;
   bool quiet = false, stats_json = false, pfm = false;
@@ -42,6 +52,14 @@ int main(int argc, char** argv) {
   app.add_option("--integrator", integrator, "direct or path (default: the scene's)")
       ->check(CLI::IsMember({"direct", "path"}));
   app.add_option("--max-depth", max_depth, "longest path, in bounces (default: the scene's)")->check(CLI::Range(1, 1024));
+  app.add_option("--mis", mis, "on: light and BSDF sampling combined by MIS; off: area lights by light sampling only")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--light-samples", light_samples, "shadow rays per shading point for direct lighting (default: 1)")
+      ->check(CLI::Range(1, 1024));
+  app.add_option("--rr", russian_roulette, "Russian roulette on or off (off: paths end at --max-depth)")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--rr-depth", roulette_depth, "bounces before Russian roulette starts (default: 3)")
+      ->check(CLI::Range(0, 1024));
   app.add_flag("-q,--quiet", quiet, "no progress bar");
   app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, e.g. for test references)");
   app.add_flag("--stats", stats_json, "print render statistics as one JSON line on stdout");
@@ -55,6 +73,10 @@ int main(int argc, char** argv) {
     else if (time_budget > 0) options.settings.spp = 1 << 24;
     if (max_depth > 0) options.settings.max_depth = max_depth;
     if (!integrator.empty()) options.settings.integrator = integrator == "direct" ? IntegratorType::direct : IntegratorType::path;
+    if (!mis.empty()) options.settings.mis = mis == "on";
+    if (light_samples > 0) options.settings.light_samples = light_samples;
+    if (!russian_roulette.empty()) options.settings.russian_roulette = russian_roulette == "on";
+    if (roulette_depth >= 0) options.settings.russian_roulette_depth = roulette_depth;
     std::smatch match;
     if (!resolution.empty()) {
       if (!std::regex_match(resolution, match, std::regex(R"((\d{1,5})x(\d{1,5}))")))
@@ -79,18 +101,18 @@ int main(int argc, char** argv) {
     options.progress = !quiet;
 
     RenderStats stats;
+    rusage before_render = resource_usage();
     Image image = render(scene, options, &stats);
+    double render_cpu_seconds = cpu_seconds(resource_usage()) - cpu_seconds(before_render);
     write_exr(with_extension(output, ".exr"), image);
     write_png(with_extension(output, ".png"), image);
     if (pfm) write_pfm(with_extension(output, ".pfm"), image);
 
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
+    rusage usage = resource_usage();
     double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.total_rays()) / stats.seconds : 0.0;
-    // CPU time of the whole process: on a shared machine, rays per CPU-second is
-    // the per-core throughput even when wall-clock time is not.
-    double cpu_seconds = usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec +
-                         usage.ru_stime.tv_usec * 1e-6;
+    // CPU time: on a shared machine, rays per CPU-second of the render is the
+    // per-core throughput even when wall-clock time is not.
+    double process_cpu_seconds = cpu_seconds(usage);
     if (!quiet)
       std::fprintf(stderr, "%dx%d, %d spp in %.2f s: %.2f M rays (%.2f M rays/s), peak memory %.1f MiB\n",
                    image.width, image.height, stats.samples_per_pixel, stats.seconds, stats.total_rays() * 1e-6,
@@ -98,18 +120,26 @@ int main(int argc, char** argv) {
     if (stats.invalid_samples > 0)
       std::fprintf(stderr, "warning: %llu samples were NaN or infinite and were dropped\n",
                    static_cast<unsigned long long>(stats.invalid_samples));
-    if (stats_json)
+    if (stats_json) {
+      const RenderSettings& used = options.settings;
       std::printf(
-          "{\"width\": %d, \"height\": %d, \"spp\": %d, \"seconds\": %.4f, \"camera_rays\": %llu, "
-          "\"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays_per_second\": %.0f, "
-          "\"samples_per_second\": %.0f, \"cpu_seconds\": %.3f, \"rays_per_cpu_second\": %.0f, "
+          "{\"width\": %d, \"height\": %d, \"spp\": %d, \"samples\": %llu, \"threads\": %d, \"seed\": %u, "
+          "\"integrator\": \"%s\", \"max_depth\": %d, \"mis\": %s, \"light_samples\": %d, "
+          "\"russian_roulette\": %s, \"russian_roulette_depth\": %d, "
+          "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"cpu_seconds\": %.3f, "
+          "\"camera_rays\": %llu, \"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays\": %llu, "
+          "\"rays_per_second\": %.0f, \"samples_per_second\": %.0f, \"rays_per_cpu_second\": %.0f, "
           "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
-          image.width, image.height, stats.samples_per_pixel, stats.seconds,
+          image.width, image.height, stats.samples_per_pixel, static_cast<unsigned long long>(stats.camera_rays),
+          stats.threads, seed, used.integrator == IntegratorType::direct ? "direct" : "path", used.max_depth,
+          used.mis ? "true" : "false", used.light_samples, used.russian_roulette ? "true" : "false",
+          used.russian_roulette_depth, stats.seconds, render_cpu_seconds, process_cpu_seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
-          static_cast<unsigned long long>(stats.shadow_rays), rays_per_second,
-          stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0, cpu_seconds,
-          cpu_seconds > 0 ? static_cast<double>(stats.total_rays()) / cpu_seconds : 0.0, usage.ru_maxrss,
-          static_cast<unsigned long long>(stats.invalid_samples));
+          static_cast<unsigned long long>(stats.shadow_rays), static_cast<unsigned long long>(stats.total_rays()),
+          rays_per_second, stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0,
+          render_cpu_seconds > 0 ? static_cast<double>(stats.total_rays()) / render_cpu_seconds : 0.0,
+          usage.ru_maxrss, static_cast<unsigned long long>(stats.invalid_samples));
+    }
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 1;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
@@ -17,11 +18,29 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Image render_text(const std::string& json, int spp, int threads = 2, std::optional<CropWindow> crop = std::nullopt) {
+// Estimator knobs of the speed/accuracy study; each test below must hold under every one.
+struct Knobs {
+  const char* name;
+  std::function<void(RenderSettings&)> apply;
+};
+const std::vector<Knobs>& estimator_knobs() {
+  static const std::vector<Knobs> knobs = {
+      {"defaults", [](RenderSettings&) {}},
+      {"mis off", [](RenderSettings& s) { s.mis = false; }},
+      {"4 light samples", [](RenderSettings& s) { s.light_samples = 4; }},
+      {"mis off, 3 light samples", [](RenderSettings& s) { s.mis = false, s.light_samples = 3; }},
+      {"roulette from depth 0", [](RenderSettings& s) { s.russian_roulette_depth = 0; }},
+  };
+  return knobs;
+}
+
+Image render_text(const std::string& json, int spp, int threads = 2, std::optional<CropWindow> crop = std::nullopt,
+                  const std::function<void(RenderSettings&)>& adjust = {}) {
   Scene scene = parse_scene(json, "test.json", SAFEGI_SCENES_DIR);
   RenderOptions options;
   options.settings = scene.settings;
   options.settings.spp = spp;
+  if (adjust) adjust(options.settings);
   options.threads = threads;
   options.crop = crop;
   RenderStats stats;
@@ -70,10 +89,11 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
     "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
                 "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}],
     "lights": [{"type": "point", "position": {"value": [0, 2, 0], "unit": "m"}, "intensity": "10 W/sr"}]})json";
-  for (const char* integrator : {"direct", "path"}) {
+  for (const char* integrator : {"direct", "path"})
+  for (const Knobs& knobs : estimator_knobs()) {
     std::string text = scene;
     text.replace(text.find("direct"), 6, integrator);
-    Image image = render_text(text, 64);
+    Image image = render_text(text, 64, 2, std::nullopt, knobs.apply);
     const double half = std::tan(fov / 2 * kPi / 180);
     double worst = 0;
     for (int py = 0; py < size; ++py) {
@@ -95,13 +115,17 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
       }
     }
     // 64 stratified positions per pixel of a smooth function: well under 0.5%.
-    EXPECT_LT(worst, 5e-3) << integrator;
+    EXPECT_LT(worst, 5e-3) << integrator << ", " << knobs.name;
   }
 }
 
 // White furnace: inside a closed sphere of albedo a emitting Le everywhere,
 // L = Le / (1 - a) in every direction.
 TEST(RenderPhysics, WhiteFurnace) {
+  std::vector<Knobs> knobs = estimator_knobs();
+  // Without roulette the path is cut at max_depth: 0.8^101 of L is missing.
+  knobs.push_back({"roulette off", [](RenderSettings& s) { s.russian_roulette = false, s.max_depth = 100; }});
+  for (const Knobs& knob : knobs)
   for (double albedo : {0.5, 0.8}) {
     std::string text = R"json({
       "render": {"resolution": [16, 16], "integrator": "path", "max_depth": 400},
@@ -111,11 +135,12 @@ TEST(RenderPhysics, WhiteFurnace) {
       "shapes": [{"type": "sphere", "material": "grey", "center": {"value": [0.1, 0.2, 0], "unit": "m"}, "radius": "1 m",
                   "emission": "0.5 W/(m2 sr)", "two_sided": true}]})json";
     text.replace(text.find("ALBEDO"), 6, std::to_string(albedo));
-    Image image = render_text(text, 64);
+    Image image = render_text(text, 64, 2, std::nullopt, knob.apply);
     double expected = 0.5 / (1 - albedo);
     for (int c = 0; c < 3; ++c) {
       Estimate estimate = channel_estimate(image, c);
-      EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-4 * expected) << "albedo " << albedo;
+      EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-4 * expected)
+          << "albedo " << albedo << ", " << knob.name;
       EXPECT_LT(estimate.standard_error, 0.01 * expected);  // the test has the power to see a 5% error
     }
   }
@@ -141,12 +166,18 @@ TEST(RenderPhysics, AreaLightAbovePlaneMatchesFormFactor) {
                 "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}},
                {"type": "quad", "origin": {"value": [-0.1, 1, -0.1], "unit": "m"}, "edge_u": {"value": [0.2, 0, 0], "unit": "m"},
                 "edge_v": {"value": [0, 0, 0.2], "unit": "m"}, "emission": "10 W/(m2 sr)"}]})json";
-  Image image = render_text(text, 64);
   double form_factor = 4 * corner_form_factor(0.1, 0.1, 1.0);
   double expected = 0.5 * 10.0 * form_factor;
-  Estimate estimate = channel_estimate(image, 0);
-  EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-3 * expected);
-  EXPECT_LT(estimate.standard_error, 0.01 * expected);
+  for (const char* integrator : {"direct", "path"})
+  for (const Knobs& knobs : estimator_knobs()) {
+    std::string scene = text;
+    scene.replace(scene.find("direct"), 6, integrator);
+    Image image = render_text(scene, 64, 2, std::nullopt, knobs.apply);
+    Estimate estimate = channel_estimate(image, 0);
+    // Path tracing finds nothing more: the emitter reflects no light.
+    EXPECT_NEAR(estimate.mean, expected, 5 * estimate.standard_error + 1e-3 * expected) << integrator << ", " << knobs.name;
+    EXPECT_LT(estimate.standard_error, 0.01 * expected) << integrator << ", " << knobs.name;
+  }
 }
 
 // A mirror of reflectance r seen against a large emitter: L = r · Le exactly.

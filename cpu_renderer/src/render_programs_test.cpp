@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -40,6 +41,28 @@ TEST(RenderPrograms, CheckedAndUncheckedImagesAreBitIdentical) {
     ++scenes;
   }
   EXPECT_GE(scenes, 6);
+  fs::remove_all(directory);
+}
+
+// The estimator options reach the renderer, and --stats reports what a
+// measurement needs.
+TEST(RenderPrograms, EstimatorOptionsAndStats) {
+  fs::path directory = fs::temp_directory_path() / ("safegi-render-options-" + std::to_string(::getpid()));
+  fs::create_directories(directory);
+  fs::path scene = fs::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json";
+  std::string command = std::string(SAFEGI_RENDER_CHECKED) + " \"" + scene.string() +
+                        "\" --resolution 40x30 --spp 2 --threads 2 --mis off --light-samples 3 --rr off --rr-depth 5 "
+                        "--max-depth 7 -q --stats -o \"" + (directory / "out").string() + "\" > \"" +
+                        (directory / "stats.json").string() + "\"";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::ifstream in(directory / "stats.json");
+  std::string stats((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* expected :
+       {"\"spp\": 2,", "\"samples\": 2400,", "\"threads\": 2,", "\"integrator\": \"path\"", "\"max_depth\": 7,",
+        "\"mis\": false,", "\"light_samples\": 3,", "\"russian_roulette\": false,", "\"russian_roulette_depth\": 5,",
+        "\"seconds\": ", "\"render_cpu_seconds\": ", "\"cpu_seconds\": ", "\"camera_rays\": 2400,",
+        "\"extension_rays\": ", "\"shadow_rays\": ", "\"rays_per_cpu_second\": ", "\"peak_memory_kib\": "})
+    EXPECT_NE(stats.find(expected), std::string::npos) << expected << " in " << stats;
   fs::remove_all(directory);
 }
 

@@ -121,7 +121,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   Geometry geometry(scene);
   Lights lights(scene);
   PerspectiveCamera camera(scene.camera, settings.width, settings.height);
-  Integrator integrator(scene, geometry, lights, settings.integrator, settings.max_depth);
+  Integrator integrator(scene, geometry, lights, settings);
 
   std::vector<Tile> tiles;
   for (int y = 0; y < window.height; y += kTileSize)
@@ -211,6 +211,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
       stats->invalid_samples += invalid[i];
     }
     stats->samples_per_pixel = spp_done;
+    stats->threads = thread_count;
     stats->seconds = seconds_since(start);
   }
   return image;

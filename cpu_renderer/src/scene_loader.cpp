@@ -277,7 +277,9 @@ Scene Loader::load(const Json& root) {
 }
 
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
-  object(value, path, {"resolution", "spp", "integrator", "max_depth"});
+  object(value, path,
+         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "russian_roulette",
+          "russian_roulette_depth"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -293,6 +295,14 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     else if (name == "path") settings.integrator = IntegratorType::path;
     else fail(path.field("integrator"), "expected \"direct\" or \"path\", got " + short_dump(value["integrator"]));
   }
+  if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
+  if (value.contains("light_samples"))
+    settings.light_samples = integer(value["light_samples"], path.field("light_samples"), 1, 1024);
+  if (value.contains("russian_roulette"))
+    settings.russian_roulette = boolean(value["russian_roulette"], path.field("russian_roulette"));
+  if (value.contains("russian_roulette_depth"))
+    settings.russian_roulette_depth =
+        integer(value["russian_roulette_depth"], path.field("russian_roulette_depth"), 0, 1024);
 }
 
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {

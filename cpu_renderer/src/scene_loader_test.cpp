@@ -82,6 +82,28 @@ TEST(SceneLoader, ConvertsUnitsOnceAtLoad) {
   EXPECT_FLOAT_EQ(sg::raw(scene.point_lights[0].intensity).r, 4000.0f / (4 * 3.14159265f));
 }
 
+TEST(SceneLoader, EstimatorSettings) {
+  RenderSettings defaults = parse_scene(with_camera(""), "test.json", ".").settings;
+  EXPECT_TRUE(defaults.mis);
+  EXPECT_EQ(defaults.light_samples, 1);
+  EXPECT_TRUE(defaults.russian_roulette);
+  EXPECT_EQ(defaults.russian_roulette_depth, 3);
+  RenderSettings set = parse_scene(with_camera(R"("render": {"mis": false, "light_samples": 4, "russian_roulette": false,
+                                                             "russian_roulette_depth": 0})"),
+                                   "test.json", ".")
+                           .settings;
+  EXPECT_FALSE(set.mis);
+  EXPECT_EQ(set.light_samples, 4);
+  EXPECT_FALSE(set.russian_roulette);
+  EXPECT_EQ(set.russian_roulette_depth, 0);
+  EXPECT_EQ(load_error(with_camera(R"("render": {"mis": "off"})")),
+            "test.json: render.mis: expected true or false, got \"off\"");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"light_samples": 0})")),
+            "test.json: render.light_samples: expected an integer in [1, 1024], got 0");
+  EXPECT_EQ(load_error(with_camera(R"("render": {"russian_roulette_depth": -1})")),
+            "test.json: render.russian_roulette_depth: expected an integer in [0, 1024], got -1");
+}
+
 TEST(SceneLoader, BundledScenesLoad) {
   int count = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(SAFEGI_SCENES_DIR)) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sampling.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::preview {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry.hpp"  // the CPU renderer's RigidMotion: both renderers move objects alike
+#include "safegi/cpu_renderer/rigid_motion.hpp"  // both renderers move objects alike
 #include "safegi/cpu_renderer/scene.hpp"
 
 namespace safegi::preview {

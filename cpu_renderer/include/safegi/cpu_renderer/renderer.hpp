@@ -29,7 +29,8 @@ struct RenderStats {
   uint64_t shadow_rays = 0;
   uint64_t invalid_samples = 0;  // NaN or infinite radiance, dropped
   int samples_per_pixel = 0;
-  double seconds = 0;
+  int threads = 0;     // worker threads actually used
+  double seconds = 0;  // wall-clock time of the render
   uint64_t total_rays() const { return camera_rays + extension_rays + shadow_rays; }
 };
 

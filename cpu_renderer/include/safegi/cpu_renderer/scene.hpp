@@ -64,6 +64,11 @@ struct RenderSettings {
   int spp = 16;
   int max_depth = 65;
   IntegratorType integrator = IntegratorType::path;
+  // Knobs of the speed/accuracy study; every combination is unbiased.
+  bool mis = true;                 // off: area lights by light sampling only (BSDF rays ignore their emission)
+  int light_samples = 1;           // shadow rays per shading point for direct lighting
+  bool russian_roulette = true;    // off: paths end only at max_depth or when nothing is hit
+  int russian_roulette_depth = 3;  // bounces before Russian roulette starts
 };
 
 struct Scene {

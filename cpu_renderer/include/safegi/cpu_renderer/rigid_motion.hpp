@@ -1,0 +1,85 @@
+// Rigid motion of objects over the shutter interval, on plain floats: shared
+// by the CPU renderer (instances, moving emitters) and the GL preview, so both
+// move objects alike.
+#pragma once
+
+#include "safegi/cpu_renderer/kernel_math.hpp"
+#include "safegi/cpu_renderer/types.hpp"
+
+namespace safegi::render {
+
+namespace kernel {
+
+// An affine map on plain floats (row-major 3x4), for instancing and motion.
+struct Affine {
+  float m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+
+  static Affine from(const ObjectToWorld& map);
+  Float3 apply_point(Float3 p) const {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+  }
+  Float3 apply_vector(Float3 v) const {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+  }
+  friend Affine operator*(const Affine& a, const Affine& b) {
+    Affine r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j)
+        r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j] + (j == 3 ? a.m[i][3] : 0.0f);
+    return r;
+  }
+};
+
+inline Float3 column(const Affine& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
+
+inline Affine inverse(const Affine& a) {
+  const auto& m = a.m;
+  float c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+  float c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+  float c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+  float det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+  float s = 1.0f / det;
+  Affine r;
+  r.m[0][0] = c00 * s;
+  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * s;
+  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * s;
+  r.m[1][0] = c01 * s;
+  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * s;
+  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * s;
+  r.m[2][0] = c02 * s;
+  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s;
+  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s;
+  Float3 t = r.apply_vector(column(a, 3));
+  r.m[0][3] = -t.x;
+  r.m[1][3] = -t.y;
+  r.m[2][3] = -t.z;
+  return r;
+}
+
+}  // namespace kernel
+
+using kernel::Affine;
+using kernel::Float3;
+
+// Rigid motion between two poses, interpolated as translation, rotation
+// (quaternion slerp) and scale, like pbrt's AnimatedTransform.
+class RigidMotion {
+ public:
+  RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close);
+  Affine at(float time) const;
+
+ private:
+  struct Pose {
+    Float3 translation;
+    float rotation[4];  // quaternion x, y, z, w
+    float scale[3][3];
+  };
+  static Pose decompose(const Affine& m);
+  Pose open_, close_;
+  float time_open_, time_close_;
+};
+
+}  // namespace safegi::render

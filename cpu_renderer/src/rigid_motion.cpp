@@ -1,0 +1,125 @@
+#include "safegi/cpu_renderer/rigid_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace safegi::render {
+
+namespace kernel {
+
+Affine Affine::from(const ObjectToWorld& map) {
+  glm::mat4 forward = sg::raw(map).forward;  // column-major
+  Affine a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) a.m[r][c] = forward[c][r];
+  return a;
+}
+
+}  // namespace kernel
+
+using kernel::column;
+using kernel::Float3;
+using kernel::inverse;
+
+RigidMotion::Pose RigidMotion::decompose(const Affine& m) {
+  Pose pose;
+  pose.translation = column(m, 3);
+  // Polar decomposition M = R S by averaging R with its inverse transpose.
+  Affine rotation = m;
+  for (int r = 0; r < 3; ++r) rotation.m[r][3] = 0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    Affine inv = inverse(rotation);
+    Affine next;
+    float change = 0;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        next.m[r][c] = 0.5f * (rotation.m[r][c] + inv.m[c][r]);
+        change = std::fmax(change, std::fabs(next.m[r][c] - rotation.m[r][c]));
+      }
+    rotation = next;
+    if (change < 1e-7f) break;
+  }
+  Affine scale = inverse(rotation) * m;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) pose.scale[r][c] = scale.m[r][c];
+  // Rotation matrix to quaternion.
+  const auto& R = rotation.m;
+  float trace = R[0][0] + R[1][1] + R[2][2];
+  float* q = pose.rotation;
+  if (trace > 0) {
+    float s = std::sqrt(trace + 1.0f) * 2;
+    q[3] = 0.25f * s;
+    q[0] = (R[2][1] - R[1][2]) / s;
+    q[1] = (R[0][2] - R[2][0]) / s;
+    q[2] = (R[1][0] - R[0][1]) / s;
+  } else if (R[0][0] > R[1][1] && R[0][0] > R[2][2]) {
+    float s = std::sqrt(1.0f + R[0][0] - R[1][1] - R[2][2]) * 2;
+    q[3] = (R[2][1] - R[1][2]) / s;
+    q[0] = 0.25f * s;
+    q[1] = (R[0][1] + R[1][0]) / s;
+    q[2] = (R[0][2] + R[2][0]) / s;
+  } else if (R[1][1] > R[2][2]) {
+    float s = std::sqrt(1.0f + R[1][1] - R[0][0] - R[2][2]) * 2;
+    q[3] = (R[0][2] - R[2][0]) / s;
+    q[0] = (R[0][1] + R[1][0]) / s;
+    q[1] = 0.25f * s;
+    q[2] = (R[1][2] + R[2][1]) / s;
+  } else {
+    float s = std::sqrt(1.0f + R[2][2] - R[0][0] - R[1][1]) * 2;
+    q[3] = (R[1][0] - R[0][1]) / s;
+    q[0] = (R[0][2] + R[2][0]) / s;
+    q[1] = (R[1][2] + R[2][1]) / s;
+    q[2] = 0.25f * s;
+  }
+  return pose;
+}
+
+RigidMotion::RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close)
+    : open_(decompose(at_open)), close_(decompose(at_close)), time_open_(time_open), time_close_(time_close) {
+  // Take the shorter arc.
+  float d = 0;
+  for (int i = 0; i < 4; ++i) d += open_.rotation[i] * close_.rotation[i];
+  if (d < 0)
+    for (float& c : close_.rotation) c = -c;
+}
+
+Affine RigidMotion::at(float time) const {
+  float span = time_close_ - time_open_;
+  float s = span > 0 ? std::clamp((time - time_open_) / span, 0.0f, 1.0f) : 0.0f;
+  Float3 translation = open_.translation * (1 - s) + close_.translation * s;
+  // Slerp, falling back to a normalised lerp for nearly equal rotations.
+  float cos_theta = 0;
+  for (int i = 0; i < 4; ++i) cos_theta += open_.rotation[i] * close_.rotation[i];
+  float q[4];
+  if (cos_theta > 0.9995f) {
+    float norm = 0;
+    for (int i = 0; i < 4; ++i) {
+      q[i] = open_.rotation[i] * (1 - s) + close_.rotation[i] * s;
+      norm += q[i] * q[i];
+    }
+    for (float& c : q) c /= std::sqrt(norm);
+  } else {
+    float theta = std::acos(std::clamp(cos_theta, -1.0f, 1.0f));
+    float a = std::sin((1 - s) * theta) / std::sin(theta), b = std::sin(s * theta) / std::sin(theta);
+    for (int i = 0; i < 4; ++i) q[i] = open_.rotation[i] * a + close_.rotation[i] * b;
+  }
+  float x = q[0], y = q[1], z = q[2], w = q[3];
+  Affine rotation;
+  rotation.m[0][0] = 1 - 2 * (y * y + z * z);
+  rotation.m[0][1] = 2 * (x * y - z * w);
+  rotation.m[0][2] = 2 * (x * z + y * w);
+  rotation.m[1][0] = 2 * (x * y + z * w);
+  rotation.m[1][1] = 1 - 2 * (x * x + z * z);
+  rotation.m[1][2] = 2 * (y * z - x * w);
+  rotation.m[2][0] = 2 * (x * z - y * w);
+  rotation.m[2][1] = 2 * (y * z + x * w);
+  rotation.m[2][2] = 1 - 2 * (x * x + y * y);
+  Affine scale;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) scale.m[r][c] = open_.scale[r][c] * (1 - s) + close_.scale[r][c] * s;
+  Affine result = rotation * scale;
+  for (int r = 0; r < 3; ++r) result.m[r][3] = translation[r];
+  return result;
+}
+
+}  // namespace safegi::render
