@@ -16,7 +16,6 @@ Cornell box at 1, 10 and 60 seconds.
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 import os
@@ -80,11 +79,15 @@ def startup_cpu(tmp: Path) -> float:
     return statistics.median(render(CORNELL, (1, 1), 1, [], tmp / "startup")["cpu_seconds"] for _ in range(3))
 
 
-def cache_key() -> str:
-    commit = subprocess.run(["git", "-C", str(h.ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
+def cache_key(scene: str) -> str:
+    """The last commit that changed the renderer or the scene ('-dirty' when either
+    has uncommitted changes): a converged reference depends on nothing else."""
+    paths = ["cpu_renderer", str(Path("examples/scenes") / scene)]
+    git = ["git", "-C", str(h.ROOT)]
+    commit = subprocess.run([*git, "log", "-1", "--format=%h", "--", *paths], capture_output=True,
                             text=True).stdout.strip() or "unknown"
-    binary = hashlib.sha1(h.binary("safegi-render").read_bytes()).hexdigest()[:10]
-    return f"{commit}-{binary}"
+    dirty = subprocess.run([*git, "status", "--porcelain", "--", *paths], capture_output=True, text=True).stdout
+    return commit + ("-dirty" if dirty.strip() else "")
 
 
 @dataclass
@@ -100,7 +103,7 @@ class Reference:
 def reference(scene: str, size, integrator: str) -> Reference:
     directory = h.build_dir() / "bench-cache" / "accuracy"
     directory.mkdir(parents=True, exist_ok=True)
-    stem = f"{Path(scene).stem}-{integrator}-{size[0]}x{size[1]}-{REF_SPP}spp-{cache_key()}"
+    stem = f"{Path(scene).stem}-{integrator}-{size[0]}x{size[1]}-{REF_SPP}spp-{cache_key(scene)}"
     halves = [directory / f"{stem}-{half}" for half in ("a", "b")]
     for seed, half in enumerate(halves, start=1001):
         if not half.with_suffix(".pfm").exists():
@@ -111,33 +114,46 @@ def reference(scene: str, size, integrator: str) -> Reference:
     return Reference(image, images.half_difference_mse(a, b, image))
 
 
+def render_cpu(stats: dict, startup: float) -> float:
+    """CPU seconds of the render alone: `render_cpu_seconds` where --stats has it,
+    else the process's CPU minus the start-up measured in this run."""
+    if "render_cpu_seconds" in stats:
+        return max(stats["render_cpu_seconds"], 1e-3)
+    return max(stats["cpu_seconds"] - startup, 1e-3)
+
+
 def sweep(scene: str, size, extra: list[str], ref: Reference, startup: float, tmp: Path) -> list[Point]:
     points = []
     for spp in SPPS:
         stats = render(scene, size, spp, extra, tmp / "sweep")
         image = images.read_pfm(tmp / "sweep.pfm")
-        points.append(Point(spp, max(stats["cpu_seconds"] - startup, 1e-4), stats["seconds"],
+        points.append(Point(spp, render_cpu(stats, startup), stats["seconds"],
                             images.corrected_rmse(image, ref.image, ref.noise_mse)))
     return points
 
 
 def comparison_groups(help_text: str) -> tuple[dict[str, dict[str, list[str]]], list[str]]:
-    """Settings compared with each other, by group; and the knobs this build lacks."""
+    """Settings compared with each other, by group; and the knobs this build lacks.
+    Every group's default setting is the plain path tracer, rendered once."""
     path = ["--integrator", "path"]
     groups = {"direct vs path": {"path": path, "direct": ["--integrator", "direct"]}}
     missing = []
     if "--mis" in help_text:
-        groups["MIS"] = {"MIS on": [*path, "--mis", "on"], "MIS off": [*path, "--mis", "off"]}
+        groups["MIS"] = {"MIS on (default)": path, "MIS off": [*path, "--mis", "off"]}
     else:
         missing.append("`--mis on|off`")
     if "--light-samples" in help_text:
-        groups["light samples"] = {f"{n} light samples": [*path, "--light-samples", str(n)] for n in (1, 4, 16)}
+        groups["light samples"] = {"1 light sample (default)": path,
+                                   **{f"{n} light samples": [*path, "--light-samples", str(n)] for n in (4, 16)}}
     else:
         missing.append("`--light-samples N`")
     if "--rr-depth" in help_text:
-        groups["Russian roulette"] = {f"RR from bounce {d}": [*path, "--rr-depth", str(d)] for d in (1, 3, 10)}
+        groups["Russian roulette"] = {"RR off": [*path, "--rr", "off"],
+                                      "RR from bounce 1": [*path, "--rr-depth", "1"],
+                                      "RR from bounce 3 (default)": path,
+                                      "RR from bounce 8": [*path, "--rr-depth", "8"]}
     else:
-        missing.append("`--rr-depth N`")
+        missing.append("`--rr on|off`, `--rr-depth N`")
     return groups, missing
 
 
@@ -179,11 +195,11 @@ def winners(curves: dict[str, list[Point]]) -> str:
     if len(at_time) >= 2:
         best = min(at_time, key=at_time.get)
         rest = ", ".join(f"{k} {v:.4f}" for k, v in at_time.items() if k != best)
-        parts.append(f"equal time ({common_time:.2f} CPU s): **{best}** (error {at_time[best]:.4f}; {rest})")
+        parts.append(f"equal time ({common_time:.3g} CPU s): **{best}** (error {at_time[best]:.4f}; {rest})")
     if len(to_error) >= 2:
         best = min(to_error, key=to_error.get)
-        rest = ", ".join(f"{k} {v:.2f} s" for k, v in to_error.items() if k != best)
-        parts.append(f"equal error ({common_error:.4f}): **{best}** ({to_error[best]:.2f} CPU s; {rest})")
+        rest = ", ".join(f"{k} {v:.3g} s" for k, v in to_error.items() if k != best)
+        parts.append(f"equal error ({common_error:.4f}): **{best}** ({to_error[best]:.3g} CPU s; {rest})")
     return "; ".join(parts) or "—"
 
 
@@ -192,7 +208,8 @@ def image_dir() -> Path:
 
 
 def image_link(path: Path) -> str:
-    return os.path.relpath(path, h.ROOT / "docs")
+    """The image's link from the report: docs/benchmarks.md, or out/bench/benchmarks.md in quick mode."""
+    return f"img/{path.name}"
 
 
 def scene_section(label: str, scene: str, size, groups, startup: float, tmp: Path) -> str:
@@ -300,16 +317,20 @@ def budget_section(tmp: Path) -> str:
         difference = images.half_difference_mse(a, b, mean) * 4  # E[(a-b)^2 / ...] = err_a^2 + err_b^2
         spp_a, spp_b = sa["spp"], sb["spp"]
         error_a = math.sqrt(difference * (1 / spp_a) / (1 / spp_a + 1 / spp_b))
-        rows.append([f"{budget:g}", str(threads), f"{spp_a}, {spp_b}", f"{sa['seconds']:.2f}", f"{sa['cpu_seconds']:.2f}",
+        render_cpu_a = sa.get("render_cpu_seconds")
+        rows.append([f"{budget:g}", str(sa.get("threads", threads)), f"{spp_a}, {spp_b}", f"{sa['seconds']:.2f}",
+                     f"{render_cpu_a:.2f}" if render_cpu_a is not None else "—", f"{sa['cpu_seconds']:.2f}",
                      f"{error_a:.4f}"])
     return f"""### `--time-budget` on the Cornell box ({size[0]}×{size[1]}, path)
 
 `safegi-render cornell-box.json --time-budget T --threads {threads}`, run twice with different seeds; the
 error of the first run is estimated from the difference of the two (an unbiased estimator's error against
-the converged image; the bias check is the 64×64 sweep above). CPU seconds include start-up.
+the converged image; the bias check is the 64×64 sweep above). With two threads on a machine shared with
+other builds, the budget buys fewer samples than on an idle machine: the CPU seconds say how much of it the
+render got.
 
-""" + h.table(["budget (s)", "threads", "spp reached (run A, B)", "render wall s (A)", "process CPU s (A)",
-               "relative RMSE (A)"], rows)
+""" + h.table(["budget (s)", "threads", "spp reached (run A, B)", "render wall s (A)", "render CPU s (A)",
+               "process CPU s (A)", "relative RMSE (A)"], rows)
 
 
 def main() -> None:
@@ -337,8 +358,8 @@ def main() -> None:
 
 Measured by `bench/accuracy/run.py` ({mode}; {load}). Relative RMSE = sqrt(mean of (v − r)² / (r² + 0.01)) against a
 converged reference (cached in `build/bench-cache/accuracy/`), with the reference's own noise removed. Time:
-CPU seconds of the render from `--stats` (process CPU minus the {startup:.2f} s start-up measured in the same run),
-one thread; the machine is shared with other builds, so CPU time is the figure to compare, wall time is listed
+CPU seconds of the render from `--stats` (`render_cpu_seconds`; the process's start-up, {startup:.2f} CPU s in
+this run, is left out), one thread; the machine is shared with other builds, so CPU time is the figure to compare, wall time is listed
 beside it. Direct lighting is compared with the *path-traced* reference: its error levels off at its bias (the
 missing indirect light). Equal-time winner: the least error at the longest time all settings of a group reached;
 equal-error winner: the least time to the smallest error all settings reached (log–log interpolation).

@@ -97,6 +97,47 @@ def instructions(command: list[str], inside: str | None = None) -> int:
     raise RuntimeError(f"no instruction total in callgrind output of {command}")
 
 
+def instructions_in_object(command: list[str], inside: str, obj: Path, env: dict | None = None) -> int:
+    """Instructions executed in the code of one object file (e.g. the program's
+    own executable, leaving out the GL driver and libc) while a function matching
+    `inside` is on the stack: the self cost of every function of that object."""
+    if shutil.which("valgrind") is None:
+        raise SystemExit("bench: valgrind is needed for instruction counts (scripts/install-deps.sh)")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "callgrind.out"
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", f"--toggle-collect={inside}",
+                        *command], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                       env={**os.environ, **(env or {})})
+        return _self_cost_by_object(out).get(str(obj), 0)
+
+
+def _self_cost_by_object(callgrind_out: Path) -> dict[str, int]:
+    """Self cost per object (ob=) of a callgrind output file: cost lines, except
+    the one after each calls= line (that is the callee's inclusive cost)."""
+    objects: dict[str, str] = {}
+    costs: dict[str, int] = {}
+    current, after_call = "", False
+    for line in callgrind_out.read_text(errors="replace").splitlines():
+        match = re.match(r"^(c?ob)=\((\d+)\)(?: (.*))?$", line)
+        if match:
+            kind, ident, name = match.groups()
+            if name is not None:
+                objects[ident] = name
+            if kind == "ob":
+                current = objects[ident]
+            continue
+        if line.startswith("calls="):
+            after_call = True
+        elif line[:1].isdigit() or line[:1] in "+-*":
+            if after_call:
+                after_call = False
+                continue
+            fields = line.split()
+            if len(fields) >= 2:
+                costs[current] = costs.get(current, 0) + int(fields[1])
+    return costs
+
+
 def ratio(a: float, b: float) -> str:
     return f"{a / b:.4f}" if b else "n/a"
 

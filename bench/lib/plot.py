@@ -31,13 +31,15 @@ def loglog(output: Path, title: str, series: dict[str, list[tuple[float, float]]
         if not plots:
             return False
         script = "\n".join([
-            "set terminal pngcairo size 640,420 font ',9'",
+            "set terminal pngcairo enhanced size 640,420 font ',9'",
             f"set output '{output}'",
             f"set title '{title}'",
             "set logscale xy",
             f"set xlabel '{xlabel}'",
             f"set ylabel '{ylabel}'",
-            "set key top right",
+            "set key bottom left",
+            "set format x '10^{%L}'",
+            "set format y '10^{%L}'",
             "set grid",
             "plot " + ", ".join(plots),
         ])
