@@ -251,18 +251,20 @@ def preview_frame_cpu(stderr: str) -> float | None:
     return float(match.group(1)) / 1000 if match else None
 
 
-def preview_section(tmp: Path) -> str:
+def preview_section(tmp: Path, measured: str) -> str:
     try:
         preview = h.binary("safegi-preview")
     except SystemExit:
-        return "### GL preview\n\nNot measured: this build has no `safegi-preview` (configure with `-DSAFEGI_BUILD_GL=ON`).\n"
+        return "## GL preview against the CPU renderer\n\nNot measured: this build has no `safegi-preview` (configure with `-DSAFEGI_BUILD_GL=ON`).\n"
     size = quick_size((64, 64)) if h.quick() else (64, 64)
     ref = reference(CORNELL, size, "direct")
     rows, points = [], []
-    for samples in PREVIEW_SAMPLES:
+    # More passes at the end: they separate the anti-aliasing part of the bias from the shadow maps'.
+    runs = [(PREVIEW_PASSES, n) for n in PREVIEW_SAMPLES] + ([] if h.quick() else [(64, 16), (256, 4)])
+    for passes, samples in runs:
         out = tmp / "preview"
         command = [str(preview), str(SCENES / CORNELL), "--resolution", f"{size[0]}x{size[1]}",
-                   "--light-samples", str(samples), "--time-samples", str(PREVIEW_PASSES), "--pfm", "--stats",
+                   "--light-samples", str(samples), "--time-samples", str(passes), "--pfm", "--stats",
                    "-o", str(out) + ".exr"]
         start = time.perf_counter()
         before = os.times()
@@ -274,14 +276,16 @@ def preview_section(tmp: Path) -> str:
         image = images.read_pfm(out.with_suffix(".pfm"))
         error = images.corrected_rmse(image, ref.image, ref.noise_mse)
         ratio = images.mean_ratio(image, ref.image)
-        points.append((cpu, error))
-        rows.append([str(samples), str(samples * PREVIEW_PASSES), f"{error:.4f}", f"{ratio:.4f}", f"{cpu:.2f}",
+        if passes == PREVIEW_PASSES:
+            points.append((cpu, error))
+        rows.append([str(passes), str(samples), str(samples * passes), f"{error:.4f}", f"{ratio:.4f}", f"{cpu:.2f}",
                      f"{wall:.2f}", f"{frame_cpu:.3f}" if frame_cpu is not None else "—"])
     plot.loglog(image_dir() / "accuracy-preview.png", f"GL preview vs CPU direct, Cornell box {size[0]}x{size[1]}",
                 {"preview": points}, xlabel="process CPU seconds")
     floor = min(e for _, e in points)
-    text = f"""### GL preview against the CPU renderer (Cornell box, {size[0]}×{size[1]})
+    text = f"""## GL preview against the CPU renderer (Cornell box, {size[0]}×{size[1]})
 
+{measured}
 `safegi-preview --time-samples {PREVIEW_PASSES} --light-samples N` (OSMesa/llvmpipe) against the CPU
 renderer's converged `direct` image ({REF_SPP} spp, its own noise {ref.noise:.4f}): the preview computes
 direct lighting only. Time is the whole process's CPU time (GL start-up and shader compilation
@@ -290,14 +294,16 @@ included, llvmpipe's threads included).
 ![preview error against CPU time]({image_link(image_dir() / 'accuracy-preview.png')})
 
 """
-    text += h.table(["area samples per pass", "samples per pixel", "relative RMSE", "mean ratio preview/CPU",
+    text += h.table(["passes", "area samples per pass", "samples per pixel", "relative RMSE", "mean ratio preview/CPU",
                      "process CPU s", "wall s", "frame CPU s (--stats)"], rows)
-    text += (f"\nThe error stops falling at about {floor:.3f}: that is the preview's bias (shadow maps' "
-             f"resolution and bias, edge anti-aliasing from {PREVIEW_PASSES} passes — docs/preview.md), not noise.\n")
+    text += (f"\nWith {PREVIEW_PASSES} passes the error stops falling at about {floor:.3f}: that is the preview's "
+             f"bias, not noise — shadow maps' resolution and bias, and edge anti-aliasing from only {PREVIEW_PASSES} "
+             f"sub-pixel positions (docs/preview.md); the rows with more passes show how much of it is the "
+             f"anti-aliasing. The mean ratio says the overall brightness agrees.\n")
     return text
 
 
-def budget_section(tmp: Path) -> str:
+def budget_section(tmp: Path, measured: str) -> str:
     """Error reached by --time-budget on the Cornell box at its own size.
     Two independent runs per budget: for an unbiased estimator the error of
     run A against the converged image is estimated from A − B."""
@@ -321,8 +327,9 @@ def budget_section(tmp: Path) -> str:
         rows.append([f"{budget:g}", str(sa.get("threads", threads)), f"{spp_a}, {spp_b}", f"{sa['seconds']:.2f}",
                      f"{render_cpu_a:.2f}" if render_cpu_a is not None else "—", f"{sa['cpu_seconds']:.2f}",
                      f"{error_a:.4f}"])
-    return f"""### `--time-budget` on the Cornell box ({size[0]}×{size[1]}, path)
+    return f"""## `--time-budget` on the Cornell box ({size[0]}×{size[1]}, path)
 
+{measured}
 `safegi-render cornell-box.json --time-budget T --threads {threads}`, run twice with different seeds; the
 error of the first run is estimated from the difference of the two (an unbiased estimator's error against
 the converged image; the bias check is the 64×64 sweep above). With two threads on a machine shared with
@@ -334,37 +341,42 @@ render got.
 
 
 def main() -> None:
-    # Optional arguments pick parts (scene file stems, "preview", "budget"), for trying one out;
-    # the generated section is complete only without them.
+    # Optional arguments pick parts (scene file stems, "preview", "budget"); each part
+    # writes its own section (accuracy, accuracy_preview, accuracy_budget), so one part
+    # can be re-run alone and spliced into the report (bench/run-all.sh --only).
     only = set(sys.argv[1:])
     wanted = lambda name: not only or name in only  # noqa: E731
     groups, missing = comparison_groups(renderer_help())
+    mode = "quick mode" if h.quick() else "full mode"
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
         startup = startup_cpu(tmp)
         load = h.machine_line()
-        sections = [scene_section(label, scene, size, groups, startup, tmp) for label, scene, size in CASES
-                    if wanted(Path(scene).stem)]
+        scenes = [scene_section(label, scene, size, groups, startup, tmp) for label, scene, size in CASES
+                  if wanted(Path(scene).stem)]
+        measured = f"Measured by `bench/accuracy/run.py` ({mode}; {load})."
         if wanted("preview"):
-            sections.append(preview_section(tmp))
+            h.write_section("accuracy_preview", preview_section(tmp, measured))
         if wanted("budget"):
-            sections.append(budget_section(tmp))
-    mode = "quick mode" if h.quick() else "full mode"
+            h.write_section("accuracy_budget", budget_section(tmp, measured))
+    if not scenes:
+        return
     note = ""
     if missing:
         note = ("\nNot compared in this build: " + ", ".join(missing) +
                 " (renderer options not in this `safegi-render`).\n")
     text = f"""## The speed/accuracy trade
 
-Measured by `bench/accuracy/run.py` ({mode}; {load}). Relative RMSE = sqrt(mean of (v − r)² / (r² + 0.01)) against a
+{measured} Relative RMSE = sqrt(mean of (v − r)² / (r² + 0.01)) against a
 converged reference (cached in `build/bench-cache/accuracy/`), with the reference's own noise removed. Time:
 CPU seconds of the render from `--stats` (`render_cpu_seconds`; the process's start-up, {startup:.2f} CPU s in
-this run, is left out), one thread; the machine is shared with other builds, so CPU time is the figure to compare, wall time is listed
-beside it. Direct lighting is compared with the *path-traced* reference: its error levels off at its bias (the
-missing indirect light). Equal-time winner: the least error at the longest time all settings of a group reached;
-equal-error winner: the least time to the smallest error all settings reached (log–log interpolation).
+this run, is left out), one thread; the machine is shared with other builds, so CPU time is the figure to
+compare, wall time is listed beside it. Direct lighting is compared with the *path-traced* reference: its
+error levels off at its bias (the missing indirect light). Equal-time winner: the least error at the longest
+time all settings of a group reached; equal-error winner: the least time to the smallest error all settings
+reached (log–log interpolation). The GL preview and `--time-budget` follow in their own sections.
 {note}
-""" + "\n".join(sections)
+""" + "\n".join(scenes)
     h.write_section("accuracy", text)
 
 

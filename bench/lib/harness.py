@@ -158,7 +158,9 @@ def machine_line() -> str:
                 break
     except OSError:
         pass
-    return f"{os.cpu_count()} cores, {cpu}; load average at start {load:.2f}"
+    commit = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip() or "unknown"
+    return f"commit {commit}; {os.cpu_count()} cores, {cpu}; load average at start {load:.2f}"
 
 
 def write_section(name: str, text: str) -> None:
