@@ -16,6 +16,7 @@ row here (time and outcome).
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import tempfile
@@ -30,8 +31,9 @@ REPEATS = 3 if h.quick() else 7
 
 def first_diagnostic(stderr: str) -> str:
     for line in stderr.splitlines():
-        if ": error: " in line:
-            return "error: " + line.split(": error: ", 1)[1]
+        match = re.search(r": ((?:fatal )?error: .*)$", line)
+        if match:
+            return match.group(1)
     return "clean" if not stderr.strip() else stderr.strip().splitlines()[0]
 
 
@@ -133,7 +135,8 @@ def renderer_rows(tmp: Path) -> list[list[str]]:
     for suite in json.loads(report.read_text())["testsuites"]:
         for test in suite["testsuite"]:
             passed = "failures" not in test
-            rows.append([f"`{suite['name']}.{test['name']}`", test["time"], "pass" if passed else "**FAIL**"])
+            rows.append([f"`renderer.{suite['name']}.{test['name']}`", test["time"].rstrip("s"),
+                         "pass" if passed else "**FAIL**"])
     return rows
 
 
