@@ -145,6 +145,7 @@ def main() -> None:
     # bench.extremes_quick runs "compiler"); the section is complete only without them.
     only = set(sys.argv[1:])
     skipped = [["(not run)", "—", "—"]]
+    machine = h.machine_line()
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
         compiler = compiler_rows(tmp) if not only or "compiler" in only else [["(not run)", "—", "—", "—"]]
@@ -153,7 +154,7 @@ def main() -> None:
     mode = "quick mode" if h.quick() else "full mode"
     text = f"""## Extremes, timed (compiler, typed library, renderer)
 
-Measured by `bench/extremes/run.py` ({mode}; {h.machine_line()}). Each extreme is also a ctest test:
+Measured by `bench/extremes/run.py` ({mode}; {machine}). Each extreme is also a ctest test:
 `ctest -L extremes` (the compiler's, `testsuite/extremes/`, exact diagnostics),
 `ctest -R 'compile_fail.exponent_overflow'` (the typed library's),
 `ctest -R 'renderer.Extremes'` (the renderer's, docs/stability.md). Times are whole-process wall

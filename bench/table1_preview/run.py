@@ -80,12 +80,13 @@ seconds, median (min–max).
 
 
 def main() -> None:
+    machine = h.machine_line()
     with tempfile.TemporaryDirectory() as tmp_name:
         table = preview_table(Path(tmp_name))
     mode = "quick mode" if h.quick() else "full mode"
     text = f"""### Table 1, the GL preview host
 
-Measured by `bench/table1_preview/run.py` ({mode}; {h.machine_line()}).
+Measured by `bench/table1_preview/run.py` ({mode}; {machine}).
 """ + table
     h.write_section("table1_preview", text)
 
