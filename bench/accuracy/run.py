@@ -225,9 +225,15 @@ def scene_section(label: str, scene: str, size, groups, startup: float, tmp: Pat
                 runs[key] = sweep(scene, size, extra, ref, startup, tmp)
             curves[group][name] = runs[key]
     slug = Path(scene).stem
-    plotted = plot.loglog(image_dir() / f"accuracy-{slug}.png", f"{label}, {size[0]}x{size[1]}",
-                          {name: [(p.cpu, p.error) for p in points]
-                           for settings in curves.values() for name, points in settings.items()})
+    # One curve per distinct render: every group's default is the same plain path tracer.
+    series: dict[str, list[tuple[float, float]]] = {}
+    plotted_runs: set[int] = set()
+    for settings in curves.values():
+        for name, points in settings.items():
+            if id(points) not in plotted_runs:
+                plotted_runs.add(id(points))
+                series["path (defaults)" if name == "path" else name] = [(p.cpu, p.error) for p in points]
+    plotted = plot.loglog(image_dir() / f"accuracy-{slug}.png", f"{label}, {size[0]}x{size[1]}", series)
     rows = []
     for group, settings in curves.items():
         for name, points in settings.items():
