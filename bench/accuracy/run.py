@@ -195,12 +195,25 @@ def winners(curves: dict[str, list[Point]]) -> str:
     if len(at_time) >= 2:
         best = min(at_time, key=at_time.get)
         rest = ", ".join(f"{k} {v:.4f}" for k, v in at_time.items() if k != best)
-        parts.append(f"equal time ({common_time:.3g} CPU s): **{best}** (error {at_time[best]:.4f}; {rest})")
+        parts.append(f"equal time ({common_time:.3g} CPU s): {verdict(best, at_time)} (error {at_time[best]:.4f}; {rest})")
     if len(to_error) >= 2:
         best = min(to_error, key=to_error.get)
         rest = ", ".join(f"{k} {v:.3g} s" for k, v in to_error.items() if k != best)
-        parts.append(f"equal error ({common_error:.4f}): **{best}** ({to_error[best]:.3g} CPU s; {rest})")
+        parts.append(f"equal error ({common_error:.4f}): {verdict(best, to_error)} ({to_error[best]:.3g} CPU s; {rest})")
     return "; ".join(parts) or "—"
+
+
+# CPU times on the shared machine vary by several per cent from run to run, and
+# the error of one render by as much; a lead smaller than this is not a result.
+TIE = 1.10
+
+
+def verdict(best: str, values: dict[str, float]) -> str:
+    runner_up = min(v for k, v in values.items() if k != best)
+    if runner_up < TIE * values[best]:
+        close = [k for k, v in values.items() if v < TIE * values[best]]
+        return "tie (within 10 %): " + ", ".join(f"**{k}**" for k in close)
+    return f"**{best}**"
 
 
 def image_dir() -> Path:
@@ -380,7 +393,9 @@ this run, is left out), one thread; the machine is shared with other builds, so 
 compare, wall time is listed beside it. Direct lighting is compared with the *path-traced* reference: its
 error levels off at its bias (the missing indirect light). Equal-time winner: the least error at the longest
 time all settings of a group reached; equal-error winner: the least time to the smallest error all settings
-reached (log–log interpolation). The GL preview and `--time-budget` follow in their own sections.
+reached (log–log interpolation); a lead under 10 % is called a tie (CPU time on a shared machine and
+the error of one render both vary by a few per cent). The GL preview and `--time-budget` follow in their
+own sections.
 {note}
 """ + "\n".join(scenes)
     h.write_section("accuracy", text)
