@@ -15,6 +15,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind                           # instruction counts for the benchmarks
+  gnuplot-nox                        # the benchmarks' log-log plots (docs/img/)
 )
 
 missing=()

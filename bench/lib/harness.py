@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def build_dir() -> Path:
-    return Path(os.environ.get("SAFEGI_BUILD", ROOT / "build"))
+    return Path(os.environ.get("SAFEGI_BUILD", ROOT / "build")).resolve()
 
 
 def quick() -> bool:
@@ -55,6 +55,20 @@ def wall_time(command: list[str]) -> float:
     return time.perf_counter() - start
 
 
+def wall_time_in(command: list[str], cwd: Path) -> float:
+    """Wall time of `command` run in `cwd`, whatever its exit status."""
+    start = time.perf_counter()
+    subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def run_with_input(command: list[str], source: str) -> tuple[subprocess.CompletedProcess, float]:
+    """Runs `command` with `source` on stdin: its result (any exit status) and wall time."""
+    start = time.perf_counter()
+    result = subprocess.run(command, input=source, capture_output=True, text=True)
+    return result, time.perf_counter() - start
+
+
 def interleaved(commands: dict[str, list[str]], repeats: int) -> dict[str, Timing]:
     """Runs every command `repeats` times, alternating between them."""
     results: dict[str, list[float]] = {name: [] for name in commands}
@@ -83,6 +97,47 @@ def instructions(command: list[str], inside: str | None = None) -> int:
     raise RuntimeError(f"no instruction total in callgrind output of {command}")
 
 
+def instructions_in_object(command: list[str], inside: str, obj: Path, env: dict | None = None) -> int:
+    """Instructions executed in the code of one object file (e.g. the program's
+    own executable, leaving out the GL driver and libc) while a function matching
+    `inside` is on the stack: the self cost of every function of that object."""
+    if shutil.which("valgrind") is None:
+        raise SystemExit("bench: valgrind is needed for instruction counts (scripts/install-deps.sh)")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "callgrind.out"
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", f"--toggle-collect={inside}",
+                        *command], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                       env={**os.environ, **(env or {})})
+        return _self_cost_by_object(out).get(str(obj), 0)
+
+
+def _self_cost_by_object(callgrind_out: Path) -> dict[str, int]:
+    """Self cost per object (ob=) of a callgrind output file: cost lines, except
+    the one after each calls= line (that is the callee's inclusive cost)."""
+    objects: dict[str, str] = {}
+    costs: dict[str, int] = {}
+    current, after_call = "", False
+    for line in callgrind_out.read_text(errors="replace").splitlines():
+        match = re.match(r"^(c?ob)=\((\d+)\)(?: (.*))?$", line)
+        if match:
+            kind, ident, name = match.groups()
+            if name is not None:
+                objects[ident] = name
+            if kind == "ob":
+                current = objects[ident]
+            continue
+        if line.startswith("calls="):
+            after_call = True
+        elif line[:1].isdigit() or line[:1] in "+-*":
+            if after_call:
+                after_call = False
+                continue
+            fields = line.split()
+            if len(fields) >= 2:
+                costs[current] = costs.get(current, 0) + int(fields[1])
+    return costs
+
+
 def ratio(a: float, b: float) -> str:
     return f"{a / b:.4f}" if b else "n/a"
 
@@ -103,7 +158,9 @@ def machine_line() -> str:
                 break
     except OSError:
         pass
-    return f"{os.cpu_count()} cores, {cpu}; load average at start {load:.2f}"
+    commit = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip() or "unknown"
+    return f"commit {commit}; {os.cpu_count()} cores, {cpu}; load average at start {load:.2f}"
 
 
 def write_section(name: str, text: str) -> None:

@@ -99,6 +99,7 @@ struct merge_step<1, dimension<term<BL, EL>, L...>, dimension<term<BR, ER>, R...
 };
 template <class B, int EL, class... L, int ER, class... R>
 struct merge_step<0, dimension<term<B, EL>, L...>, dimension<term<B, ER>, R...>> {
+  static_assert(static_cast<int>(static_cast<long long>(EL) + ER) == static_cast<long long>(EL) + ER, "dimension exponent overflows int: a product or quotient of these dimensions has an exponent outside the int range");
   using rest = typename merge<dimension<L...>, dimension<R...>>::type;
   using type = std::conditional_t<EL + ER == 0, rest, typename prepend<term<B, EL + ER>, rest>::type>;
 };
