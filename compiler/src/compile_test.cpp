@@ -84,6 +84,33 @@ void main() { gl_Position = clipFromWorld * (worldFromObject * p); }
             (std::vector<std::string>{"world", "clip"}));
 }
 
+// Shader storage blocks are part of the interface a host sees; shared
+// variables are workgroup memory and are not.
+TEST(Compile, StorageBlocksAreListedAndSharedVariablesAreNot) {
+  CompileResult r = compile({{"photons.sgl.comp", R"(#version 430 core
+#include <safegi/prelude.sgl>
+layout(local_size_x = 64) in;
+layout(std430, binding = 2) buffer Photons { spectrum<power> flux[]; } photons;
+shared spectrum<power> partial[64];
+void main() { partial[gl_LocalInvocationIndex] = photons.flux[gl_GlobalInvocationID.x]; }
+)"}});
+  ASSERT_TRUE(r.success) << r.diagnostics_text();
+  const gl::StageSymbols& stage = r.symbols.stages.at(0);
+  ASSERT_EQ(stage.symbols.size(), 1u);
+  const gl::Symbol& block = stage.symbols[0];
+  EXPECT_EQ(block.name, "Photons");
+  EXPECT_EQ(block.storage, gl::Storage::buffer);
+  EXPECT_EQ(block.type.kind, gl::Kind::block);
+  EXPECT_EQ(block.instance_name, "photons");
+  EXPECT_EQ(block.binding, 2);
+  ASSERT_EQ(block.members.size(), 1u);
+  EXPECT_EQ(block.members[0].name, "flux");
+  EXPECT_EQ(block.members[0].type.kind, gl::Kind::spectrum);
+  EXPECT_EQ(block.members[0].printed_type, "spectrum<power>");
+  EXPECT_FALSE(block.members[0].array_size.has_value());
+  EXPECT_TRUE(block.members[0].unsized);
+}
+
 TEST(Compile, DiagnosticsAreValuesWithLocations) {
   CompileResult r = compile({{"bad.frag", "#version 330 core\n#include <safegi/prelude.sgl>\n"
                                           "void main() { float<length> d = 1.0 * meter; float<time> t = d; }\n"}});

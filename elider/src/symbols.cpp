@@ -69,6 +69,7 @@ class SymbolBuilder {
     s.printed_type = type_name(iv.type.element(), registry_);
     if (iv.type.texel) s.texel = value_type(*iv.type.texel);
     if (iv.type.is_array() && iv.type.array.front() > 0) s.array_size = iv.type.array.front();
+    s.unsized = iv.type.is_array() && !s.array_size;
     if (iv.location >= 0) s.location = iv.location;
     if (iv.binding >= 0) s.binding = iv.binding;
     s.declared_at = location_of(in_.sources, iv.range.begin);
@@ -89,7 +90,8 @@ class SymbolBuilder {
         case InterfaceKind::uniform: storage = gl::Storage::uniform; break;
         case InterfaceKind::input: storage = gl::Storage::input; break;
         case InterfaceKind::output: storage = gl::Storage::output; break;
-        default: break;  // buffers and shared variables are not in schema v1
+        case InterfaceKind::buffer: storage = gl::Storage::buffer; break;
+        case InterfaceKind::shared: break;  // workgroup memory: no host ever sees it
       }
       if (!storage) continue;
       auto found = block_of.find(iv.decl);

@@ -66,6 +66,10 @@ class Node {
     expect(value_.is_number_integer(), "an integer");
     return value_.get<int>();
   }
+  bool boolean() const {
+    expect(value_.is_boolean(), "a boolean");
+    return value_.get<bool>();
+  }
   double number() const {
     expect(value_.is_number(), "a number");
     return value_.get<double>();
@@ -137,7 +141,8 @@ Storage read_storage(const Node& node) {
   if (text == "uniform") return Storage::uniform;
   if (text == "in") return Storage::input;
   if (text == "out") return Storage::output;
-  node.fail("unknown storage \"" + text + "\" (expected uniform, in or out)");
+  if (text == "buffer") return Storage::buffer;
+  node.fail("unknown storage \"" + text + "\" (expected uniform, in, out or buffer)");
 }
 
 Symbol read_symbol(const Node& node, Storage storage) {
@@ -150,6 +155,8 @@ Symbol read_symbol(const Node& node, Storage storage) {
   if (symbol.type.kind == Kind::sampler && !symbol.texel) node.fail("a sampler needs a \"texel\" type");
   symbol.array_size = node.optional_integer("array_size");
   if (symbol.array_size && *symbol.array_size <= 0) node.at("array_size").fail("array size must be positive");
+  symbol.unsized = node.has("unsized") && node.at("unsized").boolean();
+  if (symbol.unsized && symbol.array_size) node.at("unsized").fail("an unsized array has no \"array_size\"");
   symbol.location = node.optional_integer("location");
   symbol.binding = node.optional_integer("binding");
   symbol.declared_at = read_location(node.at("declared_at"));
@@ -203,6 +210,7 @@ std::string_view to_string(Storage storage) {
     case Storage::uniform: return "uniform";
     case Storage::input: return "in";
     case Storage::output: return "out";
+    case Storage::buffer: return "buffer";
   }
   return "?";
 }
@@ -328,6 +336,7 @@ json write_symbol(const Symbol& symbol) {
   if (!symbol.printed_type.empty()) node["type"] = symbol.printed_type;
   if (symbol.texel) write_value_type(node["texel"], *symbol.texel);
   if (symbol.array_size) node["array_size"] = *symbol.array_size;
+  if (symbol.unsized) node["unsized"] = true;
   if (symbol.location) node["location"] = *symbol.location;
   if (symbol.binding) node["binding"] = *symbol.binding;
   if (!symbol.instance_name.empty()) node["instance_name"] = symbol.instance_name;

@@ -112,8 +112,32 @@ TEST(SymbolTable, NamesThePlaceOfEveryStructuralError) {
                    {"name":"s","storage":"uniform","kind":"sampler","glsl_type":"sampler2D",
                     "declared_at":{"file":"a","line":1}}]}]})"),
             "t.json: error: /stages/0/symbols/0: a sampler needs a \"texel\" type");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+                 {"stage":"compute","file":"a","glsl_version":{"number":430},"symbols":[
+                   {"name":"v","storage":"shared","kind":"plain","glsl_type":"float",
+                    "declared_at":{"file":"a","line":1}}]}]})"),
+            "t.json: error: /stages/0/symbols/0/storage: unknown storage \"shared\" (expected uniform, in, out or buffer)");
   EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[]})"),
             "t.json: error: /stages: a shader-mode table has exactly one stage, found 0");
+}
+
+TEST(SymbolTable, ReadsAndWritesShaderStorageBlocks) {
+  const std::string text = R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
+      {"stage":"compute","file":"c.comp","glsl_version":{"number":430,"profile":"core"},"symbols":[
+        {"name":"Photons","storage":"buffer","kind":"block","glsl_type":"Photons","binding":2,
+         "declared_at":{"file":"c.comp","line":3,"column":30},"members":[
+           {"name":"flux","storage":"buffer","kind":"spectrum","glsl_type":"vec3","block":"Photons",
+            "dimension":{"name":"power","exponents":{"energy":1,"time":-1}},"unsized":true,
+            "declared_at":{"file":"c.comp","line":3,"column":55}}]}]}]})";
+  SymbolTable table = parse_symbol_table(text, "c.json");
+  const Symbol* block = table.stages.at(0).find(Storage::buffer, "Photons");
+  ASSERT_NE(block, nullptr);
+  EXPECT_EQ(block->binding, 2);
+  ASSERT_EQ(block->members.size(), 1u);
+  EXPECT_EQ(block->members[0].storage, Storage::buffer);
+  EXPECT_TRUE(block->members[0].unsized);
+  EXPECT_EQ(table.stages.at(0).find(Storage::uniform, "Photons"), nullptr);
+  EXPECT_EQ(to_json(parse_symbol_table(to_json(table))), to_json(table));
 }
 
 }  // namespace

@@ -19,9 +19,11 @@ enum class Stage { vertex, tess_control, tess_evaluation, geometry, fragment, co
 std::string_view to_string(Stage stage);
 std::optional<Stage> stage_from_string(std::string_view text);
 
-enum class Storage { uniform, input, output };
+// `buffer`: shader storage blocks. The typed API binds none of them yet, but
+// the table lists them so a host tool sees the shader's whole interface.
+enum class Storage { uniform, input, output, buffer };
 
-std::string_view to_string(Storage storage);  // "uniform", "in", "out"
+std::string_view to_string(Storage storage);  // "uniform", "in", "out", "buffer"
 
 struct SourceLocation {
   std::string file;
@@ -39,6 +41,7 @@ struct Symbol {
   std::string printed_type;            // the compiler's own words for the type
   std::optional<ValueType> texel;      // samplers: the value one texel holds
   std::optional<int> array_size;       // arrays: the declared element count
+  bool unsized = false;                // arrays whose count the compiler does not know (`flux[]`)
   std::optional<int> location;         // explicit layout(location = N)
   std::optional<int> binding;          // explicit layout(binding = N)
   SourceLocation declared_at;
