@@ -40,20 +40,20 @@ TEST_F(ProgramTest, LinksTheExampleFromOneProgramModeTable) {
 
 TEST_F(ProgramTest, DriverCompileErrorsPointAtTheAnnotatedSource) {
   ProgramSource fragment = example_stage(Stage::fragment, "emission.frag.glsl", "emission.frag.json");
-  fragment.glsl = replace_line(fragment.glsl, 12, "  color = Lx;");
+  fragment.glsl = replace_line(fragment.glsl, 14, "  color = Lx;");
   try {
     Program({example_stage(Stage::vertex, "emission.vert.glsl", "emission.vert.json"), fragment}, "emission");
     FAIL() << "the driver accepted an undeclared identifier";
   } catch (const ShaderError& error) {
     std::cout << error.what() << '\n';
-    EXPECT_THAT(error.what(), StartsWith("emission.sgl.frag:12:"));
+    EXPECT_THAT(error.what(), StartsWith("emission.sgl.frag:14:"));
     EXPECT_THAT(error.what(), HasSubstr("Lx"));
   }
 }
 
 TEST_F(ProgramTest, LinkErrorsNameTheProgram) {
   ProgramSource vertex = example_stage(Stage::vertex, "emission.vert.glsl", "emission.vert.json");
-  vertex.glsl = replace_line(replace_line(vertex.glsl, 5, "out vec2 Lv;"), 7, "  Lv = vertexLe.xy;");
+  vertex.glsl = replace_line(replace_line(vertex.glsl, 7, "out vec2 Lv;"), 9, "  Lv = vertexLe.xy;");
   try {
     Program({vertex, example_stage(Stage::fragment, "emission.frag.glsl", "emission.frag.json")}, "emission");
     FAIL() << "the driver linked a vec2 output to a vec3 input";

@@ -37,7 +37,7 @@ TEST(SymbolTable, ParsesTheFragmentExample) {
   EXPECT_EQ(le->type.dimension.name, "radiance");
   EXPECT_EQ(le->type.dimension.exponents,
             (DimensionExponents{{"energy", 1}, {"length", -2}, {"proj", -1}, {"solid_angle", -1}, {"time", -1}}));
-  EXPECT_EQ(to_string(le->declared_at), "emission.sgl.frag:4:28");
+  EXPECT_EQ(to_string(le->declared_at), "emission.sgl.frag:6:28");
 
   const Symbol* tint = stage.find(Storage::uniform, "tint");
   ASSERT_NE(tint, nullptr);
@@ -72,8 +72,8 @@ TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheDeclarations) {
   ASSERT_NE(table.stage(Stage::fragment), nullptr);
   EXPECT_EQ(table.stage(Stage::geometry), nullptr);
   EXPECT_EQ(table.base_dimensions.size(), 6u);
-  EXPECT_EQ(table.units.at(1).name, "millimetre");
-  EXPECT_DOUBLE_EQ(table.units.at(1).scale, 0.001);
+  EXPECT_EQ(table.units.at(2).name, "millimeter");
+  EXPECT_DOUBLE_EQ(table.units.at(2).scale, 0.001);
   EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
 }
 

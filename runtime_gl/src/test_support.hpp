@@ -1,5 +1,6 @@
 #pragma once
-// Test helpers: the hand-written example shaders and symbol tables in testdata/.
+// Test helpers: the example program in testdata/ (annotated sources and what
+// safeglslc writes for them; the golden test golden.runtime_gl_fixture_is_compiler_output keeps them equal).
 #include <fstream>
 #include <sstream>
 #include <stdexcept>

@@ -44,19 +44,19 @@ TEST_F(TypedApiTest, AVariableTheDriverOptimizedAwayIsANoOpHandle) {
 
 TEST_F(TypedApiTest, AWrongDimensionNamesTheDeclarationAndBothTypes) {
   EXPECT_EQ(error_of([](const Program& p) { p.uniform<irradiance_rgb>("Le"); }),
-            "emission.sgl.frag:4:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
+            "emission.sgl.frag:6:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
             "uses spectrum<irradiance> (dimension differs)");
 }
 
 TEST_F(TypedApiTest, AWrongSpaceOrKindIsNamedToo) {
   EXPECT_EQ(error_of([](const Program& p) { p.attribute<world_point>("position"); }),
-            "emission.sgl.vert:3:15: error: vertex attribute 'position' is declared with type point<ndc> but the "
+            "emission.sgl.vert:5:15: error: vertex attribute 'position' is declared with type point<ndc> but the "
             "host uses point<world> (space differs)");
   EXPECT_EQ(error_of([](const Program& p) { p.uniform<glm::vec3>("Le"); }),
-            "emission.sgl.frag:4:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
+            "emission.sgl.frag:6:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
             "uses vec3 (kind and dimension differ)");
   EXPECT_EQ(error_of([](const Program& p) { p.uniform<glm::mat3>("cameraFromWorld"); }),
-            "emission.sgl.frag:8:28: error: uniform 'cameraFromWorld' is declared with type map<world, camera> but "
+            "emission.sgl.frag:10:28: error: uniform 'cameraFromWorld' is declared with type map<world, camera> but "
             "the host uses mat3 (kind, GLSL type and space differ)");
 }
 
@@ -71,16 +71,16 @@ TEST_F(TypedApiTest, AMissingNameListsWhereItWasLookedFor) {
 
 TEST_F(TypedApiTest, ArraysSamplersAndBlocksNeedTheirOwnLookups) {
   EXPECT_EQ(error_of([](const Program& p) { p.uniform<glm::vec3>("tint"); }),
-            "emission.sgl.frag:6:21: error: uniform 'tint' is an array of 2; look it up with uniform_array<T>");
+            "emission.sgl.frag:8:21: error: uniform 'tint' is an array of 2; look it up with uniform_array<T>");
   EXPECT_EQ(error_of([](const Program& p) { p.uniform_array<float>("exposure"); }),
-            "emission.sgl.frag:5:15: error: uniform array 'exposure' is not an array; look it up with uniform<T>");
+            "emission.sgl.frag:7:15: error: uniform array 'exposure' is not an array; look it up with uniform<T>");
   EXPECT_EQ(error_of([](const Program& p) { p.sampler<irradiance_rgb>("environment"); }),
-            "emission.sgl.frag:7:39: error: sampler 'environment' is declared with texels type spectrum<radiance> "
+            "emission.sgl.frag:9:39: error: sampler 'environment' is declared with texels type spectrum<radiance> "
             "but the host uses spectrum<irradiance> (dimension differs)");
   EXPECT_EQ(error_of([](const Program& p) { p.sampler<radiance_rgb>("Le"); }),
-            "emission.sgl.frag:4:28: error: sampler 'Le' is declared as spectrum<radiance>, not as a sampler");
+            "emission.sgl.frag:6:28: error: sampler 'Le' is declared as spectrum<radiance>, not as a sampler");
   EXPECT_EQ(error_of([](const Program& p) { p.uniform<float>("Camera.focalLength"); }),
-            "emission.sgl.frag:9:81: error: uniform 'Camera.focalLength' is a member of uniform block 'Camera'; "
+            "emission.sgl.frag:11:81: error: uniform 'Camera.focalLength' is a member of uniform block 'Camera'; "
             "set it through a uniform buffer");
 }
 

@@ -45,16 +45,16 @@ TEST_F(TypedBindingTest, MismatchesThrowInTheCheckedBuildOnly) {
       error_of([](const Program& p) { p.uniform<quantity<dim::length>>("exposure"); });
   if constexpr (build_mode::checks) {
     EXPECT_EQ(radiance_vs_irradiance,
-              "emission.sgl.frag:4:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
+              "emission.sgl.frag:6:28: error: uniform 'Le' is declared with type spectrum<radiance> but the host "
               "uses spectrum<irradiance> (dimension differs)");
     EXPECT_EQ(ndc_vs_world,
-              "emission.sgl.vert:3:15: error: vertex attribute 'position' is declared with type point<ndc> but the "
+              "emission.sgl.vert:5:15: error: vertex attribute 'position' is declared with type point<ndc> but the "
               "host uses point<world> (space differs)");
     EXPECT_EQ(map_spaces,
-              "emission.sgl.frag:8:28: error: uniform 'cameraFromWorld' is declared with type map<world, camera> "
+              "emission.sgl.frag:10:28: error: uniform 'cameraFromWorld' is declared with type map<world, camera> "
               "but the host uses map<camera, world> (space differs)");
     EXPECT_EQ(length_vs_plain,
-              "emission.sgl.frag:5:15: error: uniform 'exposure' is declared with type float but the host uses "
+              "emission.sgl.frag:7:15: error: uniform 'exposure' is declared with type float but the host uses "
               "float<length> (kind and dimension differ)");
   } else {
     for (const std::string& error : {radiance_vs_irradiance, ndc_vs_world, map_spaces, length_vs_plain})

@@ -1,4 +1,6 @@
 #version 330 core
+#include <safegi/prelude.sgl>
+space world; space camera; space ndc;
 // Interpolated and uniform emission plus an environment lookup, exposed and tinted.
 in spectrum<radiance> Lv;
 uniform spectrum<radiance> Le;

@@ -1,4 +1,6 @@
 #version 330 core
+#include <safegi/prelude.sgl>
+space world; space camera; space ndc;
 // A triangle in normalized device coordinates carrying emitted radiance.
 in point<ndc> position;
 in spectrum<radiance> vertexLe;
