@@ -145,6 +145,27 @@ TEST(Compile, ProgramModeChecksStagesAgainstEachOther) {
   EXPECT_EQ(ok.symbols.stages.size(), 2u);
 }
 
+TEST(Compile, ProgramModeMatchesByLocationAndByBlock) {
+  const char* vert = "#version 330 core\n#include <safegi/prelude.sgl>\nspace world;\n"
+                     "layout(location = 2) out float<length> depth;\n"
+                     "out Surface { point<world> P; } vs_out;\n"
+                     "void main() { depth = 0.0; vs_out.P = point<world>(0.0); gl_Position = vec4(0.0); }\n";
+  const char* frag = "#version 330 core\n#include <safegi/prelude.sgl>\nspace world;\n"
+                     "layout(location = 2) in float<time> t;\n"
+                     "in Surface { point<world> P; } fs_in;\n"
+                     "out vec4 c;\nvoid main() { c = vec4(fs_in.P, t / second); }\n";
+  CompileResult r = compile({{"p.sgl.vert", vert}, {"p.sgl.frag", frag}});
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.diagnostics_text(),
+            "p.sgl.frag:4:37: error: input 't' has type float<time> but the vertex stage's output 'depth' (matched by "
+            "location 2) has type float<length> [E-STAGE-MISMATCH]\n"
+            "layout(location = 2) in float<time> t;\n"
+            "                                    ^\n"
+            "p.sgl.vert:4:40: note: output 'depth' declared here as float<length>\n"
+            "layout(location = 2) out float<length> depth;\n"
+            "                                       ^~~~~\n");
+}
+
 TEST(Compile, TwoShadersOfOneStageAreRefused) {
   CompileResult r = compile({{"a.frag", kFrag}, {"b.frag", kFrag}});
   EXPECT_FALSE(r.success);
@@ -168,6 +189,7 @@ TEST(Compile, IncludesComeFromTheCallersReader) {
   EXPECT_TRUE(testing::glslang_validate(glsl, Stage::fragment).accepted) << glsl;
   ASSERT_EQ(r.symbols.stages[0].source_files.size(), 2u);
   EXPECT_EQ(r.symbols.stages[0].source_files[1], "inc/common.glsl");
+  EXPECT_EQ(r.dependencies, (std::vector<std::string>{"m.frag", "inc/common.glsl"}));  // what -MD writes
 }
 
 TEST(Compile, DefinesReachTheDriverToo) {
