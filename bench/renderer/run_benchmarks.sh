@@ -27,8 +27,8 @@ row() {  # program threads label extra-args...
   python3 - "$program" "$threads" "$label" "$json" <<'PY'
 import json, sys
 program, threads, label, stats = sys.argv[1], int(sys.argv[2]), sys.argv[3], json.loads(sys.argv[4])
-rays = stats["camera_rays"] + stats["extension_rays"] + stats["shadow_rays"]
-print(f"| {program:24} | {label:18} | {threads} | {stats['seconds']:7.2f} s | {stats['cpu_seconds']:7.2f} s | "
+rays = stats["rays"]
+print(f"| {program:24} | {label:18} | {threads} | {stats['seconds']:7.2f} s | {stats['render_cpu_seconds']:7.2f} s | "
       f"{rays/1e6:6.2f} M ({stats['camera_rays']/1e6:.2f} / {stats['extension_rays']/1e6:.2f} / "
       f"{stats['shadow_rays']/1e6:.2f}) | {stats['rays_per_second']/1e6:6.2f} M | "
       f"{stats['rays_per_cpu_second']/1e6:6.2f} M | {stats['samples_per_second']/1e6:5.2f} M | "
@@ -36,8 +36,8 @@ print(f"| {program:24} | {label:18} | {threads} | {stats['seconds']:7.2f} s | {s
 PY
 }
 
-# rays per CPU-second is the per-core throughput, also on a shared machine
-# where wall-clock time is not (it includes start-up and image output).
+# rays per CPU-second (CPU time of the render, all threads) is the per-core
+# throughput, also on a shared machine where wall-clock time is not.
 echo "| program | variant | threads | wall | CPU time | rays (camera / extension / shadow) | rays/s (wall) | rays per CPU-second | samples/s (wall) | peak memory |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for program in safegi-render safegi-render-unchecked; do

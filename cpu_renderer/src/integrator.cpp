@@ -18,12 +18,13 @@ float mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuri
 
 // Next-event estimation: radiance reflected towards wo, averaged over
 // light_samples_ light samples.
-template <bool area_lights>
+template <bool area_lights, bool one_light_sample>
 Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
                                    DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const {
   Radiance sum;
-  const float count = static_cast<float>(light_samples_);
-  for (int i = 0; i < light_samples_; ++i) {
+  const int samples = one_light_sample ? 1 : light_samples_;
+  const float count = static_cast<float>(samples);
+  for (int i = 0; i < samples; ++i) {
     float u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
     std::optional<LightSample> light = lights_.sample(hit.position, time, u_light, u_point.u, u_point.v);
@@ -51,7 +52,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
   return sum;
 }
 
-template <bool area_lights>
+template <bool area_lights, bool one_light_sample>
 Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
   Radiance radiance;
   Reflectance throughput(1.0f);
@@ -68,7 +69,8 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
         if (specular_bounce) {
           radiance += throughput * emitted;
         } else if (mis_) {
-          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * static_cast<float>(light_samples_);
+          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) *
+                                    static_cast<float>(one_light_sample ? 1 : light_samples_);
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
         }
       }
@@ -83,7 +85,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     DirectionShading wo = frame.to_local(-ray.d);
 
     if (!bsdf.is_specular() && !lights_.empty())
-      radiance += throughput * sample_direct<area_lights>(*hit, bsdf, frame, wo, sampler, ray.time, counters);
+      radiance += throughput * sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, counters);
 
     float u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
@@ -111,7 +113,9 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   return radiance;
 }
 
-template Radiance Integrator::trace<true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<false>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<true, true>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<true, false>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<false, true>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<false, false>(TimedRay, Sampler&, RayCounters&) const;
 
 }  // namespace safegi::render

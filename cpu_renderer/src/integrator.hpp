@@ -27,16 +27,19 @@ class Integrator {
 
   // Radiance arriving at the camera along `camera_ray`.
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    // MIS bookkeeping exists only in the instantiation for scenes with area lights.
-    return lights_.has_area_lights() ? trace<true>(camera_ray, sampler, counters)
-                                     : trace<false>(camera_ray, sampler, counters);
+    // MIS bookkeeping exists only in the instantiations for scenes with area
+    // lights; the light-sample loop only in those for several light samples.
+    bool one = light_samples_ == 1;
+    if (lights_.has_area_lights())
+      return one ? trace<true, true>(camera_ray, sampler, counters) : trace<true, false>(camera_ray, sampler, counters);
+    return one ? trace<false, true>(camera_ray, sampler, counters) : trace<false, false>(camera_ray, sampler, counters);
   }
 
  private:
-  template <bool area_lights>
+  template <bool area_lights, bool one_light_sample>
   Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
-  template <bool area_lights>
+  template <bool area_lights, bool one_light_sample>
   Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
                          DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const;
 

@@ -102,29 +102,6 @@ const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<
   return tri == last ? *(last - 1) : *tri;
 }
 
-Lights::SurfacePoint Lights::sample_static(const Light& light, float u_triangle, float u1, float u2) const {
-  SurfacePoint point;
-  point.pdf_area = light.pdf_area;
-  if (light.type == Light::Type::sphere) {
-    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
-    point.normal = sg::to_normal(outward);
-    VectorWorld offset = outward * light.radius;
-    point.position = light.position + offset;
-    point.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
-    return point;
-  }
-  const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-  float root = std::sqrt(u1);
-  float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-  VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
-  point.position = tri.p0 + along_u + along_v;
-  point.position_error =
-      (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
-      kernel::gamma(7);
-  point.normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
-  return point;
-}
-
 // The emitter at `time`: a sphere where its centre and radius have moved; a
 // mesh point drawn by object-space area, whose density per world area divides
 // by the area the motion's pose stretches it to.
@@ -179,20 +156,41 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
   // Reuse what is left of u_light to pick a triangle by area.
   float low = index == 0 ? 0.0f : power_cdf_[index - 1];
   float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
-  SurfacePoint point = light.motion < 0 ? sample_static(light, u_triangle, u1, u2)
-                                        : sample_moving(light, time, u_triangle, u1, u2);
-  sample.position = point.position;
-  sample.position_error = point.position_error;
+  NormalWorld normal;
+  PdfArea pdf_area = light.pdf_area;
+  if (light.motion >= 0) {
+    SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
+    sample.position = point.position;
+    sample.position_error = point.position_error;
+    normal = point.normal;
+    pdf_area = point.pdf_area;
+  } else if (light.type == Light::Type::sphere) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    sample.position = light.position + offset;
+    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+  } else {
+    const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
+    float root = std::sqrt(u1);
+    float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+    sample.position = tri.p0 + along_u + along_v;
+    sample.position_error =
+        (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+        kernel::gamma(7);
+    normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
+  }
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
   sample.wi = sg::normalize(toward);
-  Proj cos_light = -sg::dot(point.normal, sample.wi);
+  Proj cos_light = -sg::dot(normal, sample.wi);
   if (light.two_sided) cos_light = sg::abs(cos_light);
   if (!(cos_light > sg::zero)) return std::nullopt;
-  sample.emitter_normal = to_kernel(point.normal);
+  sample.emitter_normal = to_kernel(normal);
   sample.radiance = light.radiance;
-  sample.pdf = probability * to_solid_angle_density(point.pdf_area, cos_light, sample.distance);
+  sample.pdf = probability * to_solid_angle_density(pdf_area, cos_light, sample.distance);
   return sample;
 }
 

@@ -79,7 +79,6 @@ class Lights {
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
                                                 float u) const;
-  SurfacePoint sample_static(const Light& light, float u_triangle, float u1, float u2) const;
   SurfacePoint sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstring>
 #include <random>
+#include <utility>
 
 namespace safegi::render {
 namespace {
@@ -120,18 +121,17 @@ TEST(Ply, MalformedFilesNameTheProblem) {
   EXPECT_EQ(error_of(ascii + vertex3 + "element face 1\nproperty int vertex_indices\nend_header\n"),
             "the face element needs a list property 'vertex_indices'");
   EXPECT_EQ(error_of(ascii + vertex3 + "end_header\n0 0 0\n1 0 0\n0 1 0\n"), "no 'face' element");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
-            "face 0: vertex index 7 is out of range (3 vertices)");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n"),
-            "line 13: face 0: vertex index -1 is out of range");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"),
-            "line 13: face 0: a face needs at least 3 vertices, this one has 2");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n"),
-            "line 11: vertex 1: property 'y': expected a number, got 'zero'");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
-            "line 11: vertex 1: the position is not finite");
-  EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
-            "line 14: face 0: the file ends inside the element (truncated?)");
+  // Bodies of a one-triangle file, damaged.
+  const std::pair<const char*, const char*> bodies[] = {
+      {"0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "face 0: vertex index 7 is out of range (3 vertices)"},
+      {"0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n", "line 13: face 0: vertex index -1 is out of range"},
+      {"0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "line 13: face 0: a face needs at least 3 vertices, this one has 2"},
+      {"0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", "line 11: vertex 1: property 'y': expected a number, got 'zero'"},
+      {"0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "line 11: vertex 1: the position is not finite"},
+      {"0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "line 14: face 0: the file ends inside the element (truncated?)"},
+  };
+  for (const auto& [body, expected] : bodies)
+    EXPECT_EQ(error_of(ascii + vertex3 + face1 + "end_header\n" + body), expected);
   EXPECT_EQ(error_of(ascii + "element vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\n" + face1 +
                      "end_header\n0 0 0\n"),
             "element 'vertex' declares 4000000000 entries, more than the rest of the file can hold (truncated?)");

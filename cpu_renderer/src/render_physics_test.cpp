@@ -294,19 +294,24 @@ TEST(RenderPhysics, SameImageInMillimetresAndKilometres) {
 }
 
 TEST(RenderDeterminism, ThreadCountDoesNotChangeTheImage) {
-  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
-  RenderOptions options;
-  options.settings = scene.settings;
-  options.settings.width = options.settings.height = 24;
-  options.settings.spp = 8;
-  std::vector<Image> images;
-  for (int threads : {1, 2, 3}) {
-    options.threads = threads;
-    images.push_back(render(scene, options));
-  }
-  for (const Image& image : images) {
-    ASSERT_EQ(image.rgb.size(), images[0].rgb.size());
-    EXPECT_EQ(std::memcmp(image.rgb.data(), images[0].rgb.data(), image.rgb.size() * sizeof(float)), 0);
+  for (const char* file : {"cornell-box/cornell-box.json", "moving-light.json"})
+  for (const Knobs& knobs : estimator_knobs()) {
+    Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / file);
+    RenderOptions options;
+    options.settings = scene.settings;
+    options.settings.width = options.settings.height = 24;
+    options.settings.spp = 8;
+    knobs.apply(options.settings);
+    std::vector<Image> images;
+    for (int threads : {1, 2, 3}) {
+      options.threads = threads;
+      images.push_back(render(scene, options));
+    }
+    for (const Image& image : images) {
+      ASSERT_EQ(image.rgb.size(), images[0].rgb.size());
+      EXPECT_EQ(std::memcmp(image.rgb.data(), images[0].rgb.data(), image.rgb.size() * sizeof(float)), 0)
+          << file << ", " << knobs.name;
+    }
   }
 }
 

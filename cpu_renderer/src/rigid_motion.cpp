@@ -7,6 +7,30 @@ namespace safegi::render {
 
 namespace kernel {
 
+Affine inverse(const Affine& a) {
+  const auto& m = a.m;
+  float c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+  float c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+  float c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+  float det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+  float s = 1.0f / det;
+  Affine r;
+  r.m[0][0] = c00 * s;
+  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * s;
+  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * s;
+  r.m[1][0] = c01 * s;
+  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * s;
+  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * s;
+  r.m[2][0] = c02 * s;
+  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s;
+  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s;
+  Float3 t = r.apply_vector(column(a, 3));
+  r.m[0][3] = -t.x;
+  r.m[1][3] = -t.y;
+  r.m[2][3] = -t.z;
+  return r;
+}
+
 Affine Affine::from(const ObjectToWorld& map) {
   glm::mat4 forward = sg::raw(map).forward;  // column-major
   Affine a;
