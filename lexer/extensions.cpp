@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include <safegi/lexer/token.hpp>
 
@@ -179,6 +180,59 @@ constexpr std::array kFeatureGates = {
                 {"GL_EXT_gpu_shader4"}},
 };
 
+// Keyed by layout identifier; `feature` is unused. Versions and extensions
+// as in the GLSL 4.60 and ESSL 3.20 specifications and glslang.
+constexpr std::array kLayoutGates = {
+    std::pair{std::string_view("binding"),
+              FeatureGate{{}, "", false, 420, 310,
+                          {"GL_ARB_shading_language_420pack", "GL_ARB_shader_atomic_counters",
+                           "GL_ARB_shader_image_load_store", "GL_ARB_shader_storage_buffer_object",
+                           "GL_ARB_bindless_texture", "GL_ARB_uniform_buffer_object"}}},
+    std::pair{std::string_view("offset"),
+              FeatureGate{{}, "", false, 440, 310, {"GL_ARB_enhanced_layouts", "GL_ARB_shader_atomic_counters"}}},
+    std::pair{std::string_view("align"), FeatureGate{{}, "", false, 440, 0, {"GL_ARB_enhanced_layouts"}}},
+    std::pair{std::string_view("component"), FeatureGate{{}, "", false, 440, 0, {"GL_ARB_enhanced_layouts"}}},
+    std::pair{std::string_view("xfb_buffer"), FeatureGate{{}, "", false, 440, 0, {"GL_ARB_enhanced_layouts"}}},
+    std::pair{std::string_view("xfb_offset"), FeatureGate{{}, "", false, 440, 0, {"GL_ARB_enhanced_layouts"}}},
+    std::pair{std::string_view("xfb_stride"), FeatureGate{{}, "", false, 440, 0, {"GL_ARB_enhanced_layouts"}}},
+    std::pair{std::string_view("std430"),
+              FeatureGate{{}, "", false, 430, 310, {"GL_ARB_shader_storage_buffer_object"}}},
+    std::pair{std::string_view("invocations"),
+              FeatureGate{{}, "", false, 400, 320,
+                          {"GL_ARB_gpu_shader5", "GL_EXT_geometry_shader", "GL_OES_geometry_shader"}}},
+    // `index` is not gated: subroutines, blend_func_extended and explicit_attrib_location all use it.
+};
+
+constexpr FeatureGate kLayoutExpressions{
+    {}, "constant expressions in layout qualifiers", true, 440, 0, {"GL_ARB_enhanced_layouts"}};
+
+bool allowed(const FeatureGate& g, const LanguageLevel& level) {
+  int since = level.es ? g.es_since : g.desktop_since;
+  if (since != 0 && level.version >= since) return true;
+  for (std::string_view e : g.extensions) {
+    if (!e.empty() && level.extension_enabled(e)) return true;
+  }
+  return false;
+}
+
+std::string requirement(const FeatureGate& g, std::string_view what, bool es) {
+  std::string verb = g.plural ? " require " : " requires ";
+  std::string extensions;
+  for (std::size_t i = 0; i < g.named && !g.extensions[i].empty(); ++i) {
+    extensions += (extensions.empty() ? "" : " or ") + std::string(g.extensions[i]);
+  }
+  if (es) {
+    if (g.es_since == 0) {
+      std::string base = std::string(what) + (g.plural ? " are" : " is") + " not available in GLSL ES";
+      return extensions.empty() ? base : base + " (without " + extensions + ")";
+    }
+    return std::string(what) + verb + "#version " + std::to_string(g.es_since) + " es" +
+           (extensions.empty() ? "" : " or " + extensions);
+  }
+  return std::string(what) + verb + "#version " + std::to_string(g.desktop_since) +
+         (extensions.empty() ? "" : " or " + extensions);
+}
+
 const FeatureGate& gate(LanguageFeature feature) {
   for (const FeatureGate& g : kFeatureGates) {
     if (g.feature == feature) return g;
@@ -214,15 +268,7 @@ bool LanguageLevel::extension_enabled(std::string_view name) const {
   return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
 }
 
-bool LanguageLevel::allows(LanguageFeature feature) const {
-  const FeatureGate& g = gate(feature);
-  int since = es ? g.es_since : g.desktop_since;
-  if (since != 0 && version >= since) return true;
-  for (std::string_view e : g.extensions) {
-    if (!e.empty() && extension_enabled(e)) return true;
-  }
-  return false;
-}
+bool LanguageLevel::allows(LanguageFeature feature) const { return allowed(gate(feature), *this); }
 
 LanguageLevel LanguageLevel::everything() {
   LanguageLevel level;
@@ -236,21 +282,18 @@ LanguageLevel LanguageLevel::everything() {
 
 std::string feature_requirement(LanguageFeature feature, bool es) {
   const FeatureGate& g = gate(feature);
-  std::string verb = g.plural ? " require " : " requires ";
-  std::string extensions;
-  for (std::size_t i = 0; i < g.named && !g.extensions[i].empty(); ++i) {
-    extensions += (extensions.empty() ? "" : " or ") + std::string(g.extensions[i]);
+  return requirement(g, g.what, es);
+}
+
+std::string layout_id_requirement(std::string_view id, const LanguageLevel& level) {
+  for (const auto& [name, g] : kLayoutGates) {
+    if (name == id) return allowed(g, level) ? "" : requirement(g, "layout(" + std::string(id) + ")", level.es);
   }
-  if (es) {
-    if (g.es_since == 0) {
-      std::string base = std::string(g.what) + (g.plural ? " are" : " is") + " not available in GLSL ES";
-      return extensions.empty() ? base : base + " (without " + extensions + ")";
-    }
-    return std::string(g.what) + verb + "#version " + std::to_string(g.es_since) + " es" +
-           (extensions.empty() ? "" : " or " + extensions);
-  }
-  return std::string(g.what) + verb + "#version " + std::to_string(g.desktop_since) +
-         (extensions.empty() ? "" : " or " + extensions);
+  return "";
+}
+
+std::string layout_expression_requirement(const LanguageLevel& level) {
+  return allowed(kLayoutExpressions, level) ? "" : requirement(kLayoutExpressions, kLayoutExpressions.what, level.es);
 }
 
 }  // namespace safegi

@@ -553,6 +553,7 @@ Qualifier Parser::parse_layout_qualifier() {
     id.name = std::string(peek().text);
     id.name_range = advance().range;
     if (accept(T::Assign)) id.value = parse_conditional();
+    check_layout_id(id);
     q.layout_ids.push_back(std::move(id));
   } while (accept(T::Comma));
   expect(T::RParen, "')'", "to close 'layout('");
@@ -591,6 +592,18 @@ void Parser::parse_array_dims(std::vector<ArrayDim>& dims, std::size_t outer) {
     dim.range = range_from(begin);
     if (outer + dims.size() == 1) require(LanguageFeature::arrays_of_arrays, dim.range);
     dims.push_back(dim);
+  }
+}
+
+void Parser::check_layout_id(const LayoutId& id) {
+  if (!options_.language) return;
+  if (std::string message = layout_id_requirement(id.name, *options_.language); !message.empty()) {
+    diagnostics_.report(Diagnostic::error(id.name_range, std::move(message)));
+  }
+  if (id.value && id.value->kind != NodeKind::LiteralExpr) {
+    if (std::string message = layout_expression_requirement(*options_.language); !message.empty()) {
+      diagnostics_.report(Diagnostic::error(id.value->range, std::move(message)));
+    }
   }
 }
 

@@ -187,5 +187,31 @@ TEST(ParseDecl, GlobalInOutAndIntegerOperatorsNeedVersion130) {
   EXPECT_EQ(parse_text("layout(location = 0) in vec4 v;\n", options)->errors(), "");
 }
 
+TEST(ParseDecl, LayoutIdentifiersOfLaterVersionsAreGated) {
+  ParseOptions options;
+  options.language = LanguageLevel{330, false, {}};
+  auto parsed = parse_text("layout(binding = 1) uniform sampler2D s;\nlayout(std430) buffer B { float x[]; };\n"
+                           "layout(location = 1 + 1) out vec4 c;\nlayout(location = 0, index = 1) out vec4 d;\n",
+                           options);
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:8: error: layout(binding) requires #version 420 or GL_ARB_shading_language_420pack\n"
+            "layout(binding = 1) uniform sampler2D s;\n"
+            "       ^~~~~~~\n"
+            "test.glsl:2:8: error: layout(std430) requires #version 430 or GL_ARB_shader_storage_buffer_object\n"
+            "layout(std430) buffer B { float x[]; };\n"
+            "       ^~~~~~\n"
+            "test.glsl:3:19: error: constant expressions in layout qualifiers require #version 440 or "
+            "GL_ARB_enhanced_layouts\n"
+            "layout(location = 1 + 1) out vec4 c;\n"
+            "                  ^~~~~\n");
+  options.language->extensions = {"GL_ARB_shading_language_420pack", "GL_ARB_shader_storage_buffer_object",
+                                  "GL_ARB_enhanced_layouts"};
+  EXPECT_EQ(parse_text("layout(binding = 1) uniform sampler2D s;\nlayout(location = 1 + 1) out vec4 c;\n", options)
+                ->errors(),
+            "");
+  options.language = LanguageLevel{310, true, {}};
+  EXPECT_EQ(parse_text("layout(binding = 1) uniform sampler2D s;\n", options)->errors(), "");
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -96,6 +96,8 @@ class Parser {
   void parse_array_dims(std::vector<ast::ArrayDim>& dims, std::size_t outer = 0);
   // Reports `feature` at `where` when ParseOptions::language does not allow it.
   void require(LanguageFeature feature, SourceRange where);
+  // Layout identifiers of later versions and non-literal layout values.
+  void check_layout_id(const ast::LayoutId& id);
   ast::FunctionDecl* parse_function_rest(ast::TypeQualifiers qualifiers, ast::TypeSpecifier* type,
                                          const PToken& name, SourceLocation begin,
                                          std::vector<ast::TemplateParam> template_params,

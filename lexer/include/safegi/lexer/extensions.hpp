@@ -53,4 +53,12 @@ struct LanguageLevel {
 // or "... require #version 310 es" (ES); "... are not available in GLSL ES".
 std::string feature_requirement(LanguageFeature feature, bool es);
 
+// Layout identifiers of later versions (`binding`, `offset`, `std430`, ...)
+// and a layout value that is not a literal (constant expressions in layouts,
+// GLSL 4.40): the error when `level` does not allow them, e.g.
+// "layout(binding) requires #version 420 or GL_ARB_shading_language_420pack";
+// empty when allowed or unknown (unknown identifiers are the checker's).
+std::string layout_id_requirement(std::string_view id, const LanguageLevel& level);
+std::string layout_expression_requirement(const LanguageLevel& level);
+
 }  // namespace safegi
