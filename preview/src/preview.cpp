@@ -311,7 +311,10 @@ struct Preview::Impl {
       render_shadow_cube(*area_shadow, scene.camera.position, time, -1, [](int) { return false; });
       resume_lighting();
     }
-    for (const Emitter& emitter : emitters) {
+    for (const Emitter& still : emitters) {
+      // A moving emitter is sampled where it is at this shutter time, as the CPU renderer does.
+      const int shape = still.shape();
+      const Emitter emitter = poses.moves(shape) ? Emitter(scene, shape, poses.at(shape, time)) : still;
       area_pass.program.set(area_pass.le, emitter.radiance());
       area_pass.program.set(area_pass.sample_area, emitter.area() / static_cast<float>(n));
       area_pass.program.set(area_pass.two_sided, int32_t{emitter.two_sided()});

@@ -116,11 +116,13 @@ ObjectToWorld ScenePoses::at(size_t shape, Time time) const {
 }
 
 Emitter::Emitter(const Scene& scene, int shape_index)
+    : Emitter(scene, shape_index, scene.shapes[shape_index].render_from_object) {}
+
+Emitter::Emitter(const Scene& scene, int shape_index, const ObjectToWorld& render_from_object)
     : shape_(shape_index),
       radiance_(*scene.shapes[shape_index].emission),
       two_sided_(scene.shapes[shape_index].two_sided_emission) {
   const Shape& shape = scene.shapes[shape_index];
-  const ObjectToWorld& render_from_object = shape.render_from_object;
   if (shape.type == Shape::Type::sphere) {
     sphere_ = true;
     center_ = render_from_object(shape.center);

@@ -34,6 +34,7 @@ class ScenePoses {
  public:
   explicit ScenePoses(const Scene& scene);
   bool animated() const { return animated_; }
+  bool moves(size_t shape) const { return motions_[shape].has_value(); }
   ObjectToWorld at(size_t shape, Time time) const;
   // A sphere around everything the scene holds over the whole shutter.
   PointWorld bounds_center() const { return center_; }
@@ -56,7 +57,10 @@ struct EmitterPoint {
 // renderer's Lights place it, sampled uniformly by area.
 class Emitter {
  public:
+  // At the shape's own pose, or at `world_from_object` (a moving emitter at one
+  // shutter time: its area, and so each sample's share, follows its scale).
   Emitter(const Scene& scene, int shape);
+  Emitter(const Scene& scene, int shape, const ObjectToWorld& world_from_object);
   int shape() const { return shape_; }
   Radiance radiance() const { return radiance_; }
   bool two_sided() const { return two_sided_; }
