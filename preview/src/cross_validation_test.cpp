@@ -51,6 +51,16 @@ Image cpu_direct(Scene scene, int width, int height, int spp) {
   return render::render(scene, options);
 }
 
+// One comparison: the scene, the image size, the CPU renderer's samples per
+// pixel, the preview's sampling, and the relative-RMSE tolerance (channel
+// means must agree within 1 % in every case).
+struct Case {
+  std::string scene_file;
+  int width, height, cpu_spp;
+  int light_samples, passes;
+  double max_relative_rmse;
+};
+
 class CrossValidation : public ::testing::Test {
  protected:
   gl::Context context;
@@ -67,52 +77,37 @@ class CrossValidation : public ::testing::Test {
                 a.mean_ratio[2]);
     return a;
   }
+
+  void expect_agreement(const Case& c) {
+    PreviewOptions options;
+    options.light_samples = c.light_samples;
+    options.passes = c.passes;
+    Agreement a = check(render::load_scene(c.scene_file), c.width, c.height, c.cpu_spp, options);
+    EXPECT_LT(a.relative_rmse, c.max_relative_rmse);
+    for (double ratio : a.mean_ratio) EXPECT_NEAR(ratio, 1.0, 0.01);
+  }
 };
 
-void expect_means_within(const Agreement& a, double tolerance) {
-  for (double ratio : a.mean_ratio) EXPECT_NEAR(ratio, 1.0, tolerance);
-}
-
-Scene load(const char* file) { return render::load_scene(std::string(SAFEGI_SCENES_DIR) + "/" + file); }
+std::string bundled(const char* file) { return std::string(SAFEGI_SCENES_DIR) + "/" + file; }
 
 // The Cornell box lit by its area light: 1024 light samples per pixel (64 × 16 passes).
 TEST_F(CrossValidation, CornellBoxAreaLight) {
-  PreviewOptions options;
-  options.light_samples = 64;
-  options.passes = 16;
-  Agreement a = check(load("cornell-box/cornell-box.json"), 64, 64, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.04);
-  expect_means_within(a, 0.01);
+  expect_agreement({bundled("cornell-box/cornell-box.json"), 64, 64, 1024, 64, 16, 0.04});
 }
 
-// The box lit by a point light instead (preview/scenes/cornell-point-light.json): hard shadows from the cube map.
+// The box lit by a point light instead: hard shadows from the cube map.
 TEST_F(CrossValidation, CornellBoxPointLight) {
-  Scene scene = render::load_scene(SAFEGI_PREVIEW_SCENES_DIR "/cornell-point-light.json");
-  PreviewOptions options;
-  options.passes = 16;
-  Agreement a = check(scene, 64, 64, 256, options);
-  EXPECT_LT(a.relative_rmse, 0.02);
-  expect_means_within(a, 0.01);
+  expect_agreement({SAFEGI_PREVIEW_SCENES_DIR "/cornell-point-light.json", 64, 64, 256, 16, 16, 0.02});
 }
 
 // Phong spheres under a point light and an area light.
 TEST_F(CrossValidation, PhongPointAndAreaLight) {
-  PreviewOptions options;
-  options.light_samples = 64;
-  options.passes = 16;
-  Agreement a = check(load("phong.json"), 100, 40, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.045);
-  expect_means_within(a, 0.01);
+  expect_agreement({bundled("phong.json"), 100, 40, 1024, 64, 16, 0.045});
 }
 
-// Motion blur: 16 shutter times accumulated against the CPU renderer's random times.
+// Motion blur: 32 shutter times accumulated against the CPU renderer's random times.
 TEST_F(CrossValidation, MotionBlur) {
-  PreviewOptions options;
-  options.light_samples = 32;
-  options.passes = 32;
-  Agreement a = check(load("motion-blur.json"), 80, 60, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.025);
-  expect_means_within(a, 0.01);
+  expect_agreement({bundled("motion-blur.json"), 80, 60, 1024, 32, 32, 0.025});
 }
 
 // A moving emitter: each shutter time samples the sphere where it is then.
@@ -120,12 +115,7 @@ TEST_F(CrossValidation, MotionBlur) {
 // 0.40 and means 8 % low. What is left (0.087) is mostly the sphere's own
 // streak, drawn at 128 discrete times against the CPU's random ones.
 TEST_F(CrossValidation, MovingEmitter) {
-  PreviewOptions options;
-  options.light_samples = 8;
-  options.passes = 128;
-  Agreement a = check(load("moving-light.json"), 80, 60, 1024, options);
-  EXPECT_LT(a.relative_rmse, 0.17);
-  expect_means_within(a, 0.01);
+  expect_agreement({bundled("moving-light.json"), 80, 60, 1024, 8, 128, 0.17});
 }
 
 }  // namespace
