@@ -165,9 +165,9 @@ times on a shared machine, median (min–max) of {REPEATS} runs.
 The front end's limits: a literal exponent is at most 1000 (larger exponents come from powers and
 products of named dimensions); exponents are 32-bit and overflow is an error; 256 levels of nesting
 (statements, parentheses and operators — a parenthesis costs three, so 85 nested parentheses already
-stop it); 2048 levels of binary operators in one expression. The type checker recurses once per operator:
-the 2000-operator chain needs 2–4 MB of stack in Release and overflows 8 MB under ASan (docs/stability.md,
-"the operator limit is deeper than the checker's stack").
+stop it); 2048 binary or postfix operators in one chain. Any tree within these limits checks on any caller
+stack: the checker walks operator chains iteratively and compile() runs on a 512 MB stack (docs/stability.md,
+"the operator limit was deeper than the checker's stack", fixed).
 
 """ + h.table(["shader", "lines", "ms", "exit status: outcome"], compiler) + """
 ### The typed C++ library (g++ -fsyntax-only, seconds)

@@ -1,6 +1,9 @@
 #include "safegi/compiler/compile.hpp"
 
+#include <pthread.h>
+
 #include <algorithm>
+#include <exception>
 #include <fstream>
 #include <sstream>
 
@@ -157,9 +160,41 @@ void add_dependency(CompileResult& result, const std::string& path) {
     result.dependencies.push_back(path);
 }
 
-}  // namespace
+// The front end, the checker and the elider recurse over the syntax tree. The
+// parser bounds its depth (256 nesting levels, chains of at most 2048 binary
+// or postfix operators); this stack holds
+// the deepest tree it accepts even under AddressSanitizer, whatever stack the
+// caller's thread has (a library call may come from a small worker thread).
+// Only touched pages cost memory.
+constexpr std::size_t kCompileStackBytes = std::size_t{512} << 20;
 
-CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
+template <class Work>
+void run_with_large_stack(Work& work) {
+  struct Task {
+    Work* work;
+    std::exception_ptr error;
+  } task{&work, nullptr};
+  auto entry = [](void* argument) -> void* {
+    auto* t = static_cast<Task*>(argument);
+    try {
+      (*t->work)();
+    } catch (...) {
+      t->error = std::current_exception();
+    }
+    return nullptr;
+  };
+  pthread_attr_t attributes;
+  pthread_t thread;
+  bool started = pthread_attr_init(&attributes) == 0 &&
+                 pthread_attr_setstacksize(&attributes, kCompileStackBytes) == 0 &&
+                 pthread_create(&thread, &attributes, entry, &task) == 0;
+  pthread_attr_destroy(&attributes);
+  if (!started) return work();  // no thread to be had: the caller's own stack
+  pthread_join(thread, nullptr);
+  if (task.error) std::rethrow_exception(task.error);
+}
+
+CompileResult compile_here(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
   auto manager = std::make_shared<SourceManager>();
   DiagnosticEngine diags(options.diagnostics);
   CompileResult result;
@@ -252,6 +287,15 @@ CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOpt
   result.diagnostics = diags.diagnostics();
   for (Diagnostic& d : result.diagnostics) make_printable(d);
   result.sources = std::move(manager);
+  return result;
+}
+
+}  // namespace
+
+CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
+  CompileResult result;
+  auto work = [&] { result = compile_here(sources, options); };
+  run_with_large_stack(work);
   return result;
 }
 

@@ -4,6 +4,7 @@
 #                         the literal limit of 1000, reached through names
 #   generic_chain_N       N generic functions, each calling the previous one
 #   operator_chain_N      x * x / x ... with N operator pairs, one per line
+#   swizzle_chain_N       v.xyzw.xyzw ... with N swizzles, one per line
 #   nested_parens_N       N nested parentheses around x
 # Inputs: OUT_DIR, SIZES (a list of KIND=N, e.g. derived_chain=2000).
 set(_header "#version 330 core\n#include <safegi/prelude.sgl>\n")
@@ -56,6 +57,11 @@ function(operator_chain n)
   endforeach()
   string(APPEND body "        ;\n    fragColor = vec4(y / x);\n}\n")
   _write(operator_chain ${n} "${body}")
+endfunction()
+
+function(swizzle_chain n)
+  string(REPEAT "        .xyzw\n" ${n} swizzles)
+  _write(swizzle_chain ${n} "out vec4 fragColor;\nvoid main() {\n    vec4 v = vec4(1.0);\n    fragColor = v\n${swizzles}        ;\n}\n")
 endfunction()
 
 function(nested_parens n)
