@@ -316,7 +316,7 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       block->qualifiers = std::move(qualifiers);
       block->block_name = std::string(peek().text);
       block->block_name_range = advance().range;
-      block->members = parse_member_list("in block");
+      block->members = parse_member_list("in block", LayoutPlace::BlockMember);
       if (at(T::Ident)) {
         block->instance_name = std::string(peek().text);
         block->instance_name_range = advance().range;
@@ -366,6 +366,7 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       if (q.word == "in" || q.word == "out") require(LanguageFeature::global_in_out, q.range);
     }
   }
+  check_layout_place(qualifiers, LayoutPlace::Variable);
   return parse_init_declarators(std::move(qualifiers), type, begin);
 }
 
@@ -607,6 +608,24 @@ void Parser::check_layout_id(const LayoutId& id) {
   }
 }
 
+void Parser::check_layout_place(const TypeQualifiers& qualifiers, LayoutPlace place) {
+  for (const Qualifier& q : qualifiers.list) {
+    for (const LayoutId& id : q.layout_ids) {
+      bool packing = id.name == "std140" || id.name == "std430" || id.name == "shared" || id.name == "packed";
+      bool matrix = id.name == "row_major" || id.name == "column_major";
+      if (packing) {
+        diagnostics_.report(Diagnostic::error(
+            id.name_range, "layout(" + id.name + ") applies to uniform and buffer blocks, not to " +
+                               (place == LayoutPlace::Variable ? "variables" : "members")));
+      } else if (matrix && place != LayoutPlace::BlockMember) {
+        diagnostics_.report(Diagnostic::error(
+            id.name_range, "layout(" + id.name + ") applies to uniform and buffer blocks and their members, not to " +
+                               (place == LayoutPlace::Variable ? "variables" : "struct members")));
+      }
+    }
+  }
+}
+
 void Parser::require(LanguageFeature feature, SourceRange where) {
   if (!options_.language || options_.language->allows(feature)) return;
   diagnostics_.report(Diagnostic::error(where, feature_requirement(feature, options_.language->es)));
@@ -659,13 +678,13 @@ StructDecl* Parser::parse_struct_specifier() {
     decl->name = std::string(peek().text);
     decl->name_range = advance().range;
   }
-  decl->members = parse_member_list("in struct");
+  decl->members = parse_member_list("in struct", LayoutPlace::StructMember);
   declare(decl->name, NameKind::Type);
   decl->range = range_from(begin);
   return decl;
 }
 
-std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
+std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context, LayoutPlace place) {
   DepthGuard guard(*this);
   std::vector<VariableDecl*> members;
   expect(T::LBrace, "'{'", context);
@@ -674,6 +693,7 @@ std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
     try {
       SourceLocation begin = here();
       TypeQualifiers qualifiers = parse_qualifiers();
+      check_layout_place(qualifiers, place);
       TypeSpecifier* type = parse_type_specifier();
       auto* member = make<VariableDecl>(begin);
       member->qualifiers = std::move(qualifiers);
