@@ -317,6 +317,8 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       block->block_name = std::string(peek().text);
       block->block_name_range = advance().range;
       block->members = parse_member_list("in block", LayoutPlace::BlockMember);
+      bool in_out_block = block->qualifiers.has("in") || block->qualifiers.has("out");
+      for (const VariableDecl* member : block->members) check_sample(member->qualifiers, in_out_block);
       if (at(T::Ident)) {
         block->instance_name = std::string(peek().text);
         block->instance_name_range = advance().range;
@@ -367,6 +369,7 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
     }
   }
   check_layout_place(qualifiers, LayoutPlace::Variable);
+  check_sample(qualifiers, qualifiers.has("in") || qualifiers.has("out"));
   return parse_init_declarators(std::move(qualifiers), type, begin);
 }
 
@@ -626,6 +629,17 @@ void Parser::check_layout_place(const TypeQualifiers& qualifiers, LayoutPlace pl
   }
 }
 
+void Parser::check_sample(const TypeQualifiers& qualifiers, bool in_out) {
+  for (const Qualifier& q : qualifiers.list) {
+    if (q.word != "sample") continue;
+    if (!in_out) {
+      diagnostics_.report(Diagnostic::error(q.range, "'sample' applies only to 'in' and 'out' variables and blocks"));
+    } else if (qualifiers.has("centroid")) {
+      diagnostics_.report(Diagnostic::error(q.range, "'sample' and 'centroid' cannot qualify the same declaration"));
+    }
+  }
+}
+
 void Parser::require(LanguageFeature feature, SourceRange where) {
   if (!options_.language || options_.language->allows(feature)) return;
   diagnostics_.report(Diagnostic::error(where, feature_requirement(feature, options_.language->es)));
@@ -694,6 +708,7 @@ std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context, L
       SourceLocation begin = here();
       TypeQualifiers qualifiers = parse_qualifiers();
       check_layout_place(qualifiers, place);
+      if (place == LayoutPlace::StructMember) check_sample(qualifiers, false);
       TypeSpecifier* type = parse_type_specifier();
       auto* member = make<VariableDecl>(begin);
       member->qualifiers = std::move(qualifiers);

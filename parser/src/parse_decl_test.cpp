@@ -230,5 +230,27 @@ TEST(ParseDecl, BlockLayoutsOnlyOnBlocks) {
             "                   ^~~~~~\n");
 }
 
+TEST(ParseDecl, SampleQualifiesOnlyInputsAndOutputs) {
+  EXPECT_EQ(parse_text("sample in vec4 a;\nsample out vec4 b;\nin B { sample vec4 c; } blk;\n")->errors(), "");
+  auto parsed = parse_text("sample uniform vec4 a;\nsample centroid in vec4 b;\nstruct S { sample vec4 c; };\n"
+                           "uniform U { sample vec4 d; };\nvoid f() { sample vec4 e; }\n");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:1: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "sample uniform vec4 a;\n"
+            "^~~~~~\n"
+            "test.glsl:2:1: error: 'sample' and 'centroid' cannot qualify the same declaration\n"
+            "sample centroid in vec4 b;\n"
+            "^~~~~~\n"
+            "test.glsl:3:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "struct S { sample vec4 c; };\n"
+            "           ^~~~~~\n"
+            "test.glsl:4:13: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "uniform U { sample vec4 d; };\n"
+            "            ^~~~~~\n"
+            "test.glsl:5:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "void f() { sample vec4 e; }\n"
+            "           ^~~~~~\n");
+}
+
 }  // namespace
 }  // namespace safegi::testing

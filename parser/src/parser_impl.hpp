@@ -104,6 +104,9 @@ class Parser {
   // on a variable or any member, matrix order (row_major, column_major) on a
   // variable or a struct member.
   void check_layout_place(const ast::TypeQualifiers& qualifiers, LayoutPlace place);
+  // `sample` qualifies only shader inputs and outputs, never with `centroid`;
+  // `in_out` says whether this declaration is one.
+  void check_sample(const ast::TypeQualifiers& qualifiers, bool in_out);
   ast::FunctionDecl* parse_function_rest(ast::TypeQualifiers qualifiers, ast::TypeSpecifier* type,
                                          const PToken& name, SourceLocation begin,
                                          std::vector<ast::TemplateParam> template_params,
