@@ -316,7 +316,9 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       block->qualifiers = std::move(qualifiers);
       block->block_name = std::string(peek().text);
       block->block_name_range = advance().range;
-      block->members = parse_member_list("in block");
+      block->members = parse_member_list("in block", LayoutPlace::BlockMember);
+      bool in_out_block = block->qualifiers.has("in") || block->qualifiers.has("out");
+      for (const VariableDecl* member : block->members) check_sample(member->qualifiers, in_out_block);
       if (at(T::Ident)) {
         block->instance_name = std::string(peek().text);
         block->instance_name_range = advance().range;
@@ -366,6 +368,8 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       if (q.word == "in" || q.word == "out") require(LanguageFeature::global_in_out, q.range);
     }
   }
+  check_layout_place(qualifiers, LayoutPlace::Variable);
+  check_sample(qualifiers, qualifiers.has("in") || qualifiers.has("out"));
   return parse_init_declarators(std::move(qualifiers), type, begin);
 }
 
@@ -595,23 +599,6 @@ void Parser::parse_array_dims(std::vector<ArrayDim>& dims, std::size_t outer) {
   }
 }
 
-void Parser::check_layout_id(const LayoutId& id) {
-  if (!options_.language) return;
-  if (std::string message = layout_id_requirement(id.name, *options_.language); !message.empty()) {
-    diagnostics_.report(Diagnostic::error(id.name_range, std::move(message)));
-  }
-  if (id.value && id.value->kind != NodeKind::LiteralExpr) {
-    if (std::string message = layout_expression_requirement(*options_.language); !message.empty()) {
-      diagnostics_.report(Diagnostic::error(id.value->range, std::move(message)));
-    }
-  }
-}
-
-void Parser::require(LanguageFeature feature, SourceRange where) {
-  if (!options_.language || options_.language->allows(feature)) return;
-  diagnostics_.report(Diagnostic::error(where, feature_requirement(feature, options_.language->es)));
-}
-
 TypeSpecifier* Parser::parse_type_specifier() {
   SourceLocation begin = here();
   TypeSpecifier* type = parse_type_specifier_nonarray();
@@ -659,13 +646,13 @@ StructDecl* Parser::parse_struct_specifier() {
     decl->name = std::string(peek().text);
     decl->name_range = advance().range;
   }
-  decl->members = parse_member_list("in struct");
+  decl->members = parse_member_list("in struct", LayoutPlace::StructMember);
   declare(decl->name, NameKind::Type);
   decl->range = range_from(begin);
   return decl;
 }
 
-std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
+std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context, LayoutPlace place) {
   DepthGuard guard(*this);
   std::vector<VariableDecl*> members;
   expect(T::LBrace, "'{'", context);
@@ -674,6 +661,8 @@ std::vector<VariableDecl*> Parser::parse_member_list(std::string_view context) {
     try {
       SourceLocation begin = here();
       TypeQualifiers qualifiers = parse_qualifiers();
+      check_layout_place(qualifiers, place);
+      if (place == LayoutPlace::StructMember) check_sample(qualifiers, false);
       TypeSpecifier* type = parse_type_specifier();
       auto* member = make<VariableDecl>(begin);
       member->qualifiers = std::move(qualifiers);

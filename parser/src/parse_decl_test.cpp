@@ -9,8 +9,8 @@ namespace safegi::testing {
 namespace {
 
 TEST(ParseDecl, QualifiersInOrder) {
-  EXPECT_EQ(dump_first("layout(location = 2, std140, binding = 1 + 2) flat centroid in highp vec3 n;"),
-            "VariableDecl [layout(location = 2, std140, binding = 1 + 2)] [flat] [centroid] [in] [highp]\n"
+  EXPECT_EQ(dump_first("layout(location = 2, component = 1, binding = 1 + 2) flat centroid in highp vec3 n;"),
+            "VariableDecl [layout(location = 2, component = 1, binding = 1 + 2)] [flat] [centroid] [in] [highp]\n"
             "  TypeSpecifier builtin vec3\n  Declarator n\n");
   EXPECT_EQ(dump_first("invariant precise noperspective sample out float a;"),
             "VariableDecl [invariant] [precise] [noperspective] [sample] [out]\n"
@@ -211,6 +211,45 @@ TEST(ParseDecl, LayoutIdentifiersOfLaterVersionsAreGated) {
             "");
   options.language = LanguageLevel{310, true, {}};
   EXPECT_EQ(parse_text("layout(binding = 1) uniform sampler2D s;\n", options)->errors(), "");
+}
+
+TEST(ParseDecl, BlockLayoutsOnlyOnBlocks) {
+  auto parsed = parse_text("layout(std140) vec4 a;\nstruct S { layout(row_major) mat4 m; };\n"
+                           "uniform U { layout(shared) vec4 b; layout(row_major) mat4 c; };\n"
+                           "layout(std140, row_major) uniform;\nlayout(std430) buffer B { vec4 d[]; };\n");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:8: error: layout(std140) applies to uniform and buffer blocks, not to variables\n"
+            "layout(std140) vec4 a;\n"
+            "       ^~~~~~\n"
+            "test.glsl:2:19: error: layout(row_major) applies to uniform and buffer blocks and their members, not to "
+            "struct members\n"
+            "struct S { layout(row_major) mat4 m; };\n"
+            "                  ^~~~~~~~~\n"
+            "test.glsl:3:20: error: layout(shared) applies to uniform and buffer blocks, not to members\n"
+            "uniform U { layout(shared) vec4 b; layout(row_major) mat4 c; };\n"
+            "                   ^~~~~~\n");
+}
+
+TEST(ParseDecl, SampleQualifiesOnlyInputsAndOutputs) {
+  EXPECT_EQ(parse_text("sample in vec4 a;\nsample out vec4 b;\nin B { sample vec4 c; } blk;\n")->errors(), "");
+  auto parsed = parse_text("sample uniform vec4 a;\nsample centroid in vec4 b;\nstruct S { sample vec4 c; };\n"
+                           "uniform U { sample vec4 d; };\nvoid f() { sample vec4 e; }\n");
+  EXPECT_EQ(parsed->errors(),
+            "test.glsl:1:1: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "sample uniform vec4 a;\n"
+            "^~~~~~\n"
+            "test.glsl:2:1: error: 'sample' and 'centroid' cannot qualify the same declaration\n"
+            "sample centroid in vec4 b;\n"
+            "^~~~~~\n"
+            "test.glsl:3:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "struct S { sample vec4 c; };\n"
+            "           ^~~~~~\n"
+            "test.glsl:4:13: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "uniform U { sample vec4 d; };\n"
+            "            ^~~~~~\n"
+            "test.glsl:5:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "void f() { sample vec4 e; }\n"
+            "           ^~~~~~\n");
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ class Parser {
   ast::TranslationUnit* parse_translation_unit();
 
  private:
+  // Where a layout qualifier stands (check_layout_place).
+  enum class LayoutPlace : std::uint8_t { Variable, StructMember, BlockMember };
   // ------------------------------------------------------------ token access
   const PToken& peek(std::size_t ahead = 0) const {
     std::size_t i = pos_ + ahead;
@@ -85,7 +87,7 @@ class Parser {
   ast::TypeSpecifier* parse_type_specifier();
   ast::TypeSpecifier* parse_type_specifier_nonarray();
   ast::StructDecl* parse_struct_specifier();
-  std::vector<ast::VariableDecl*> parse_member_list(std::string_view context);
+  std::vector<ast::VariableDecl*> parse_member_list(std::string_view context, LayoutPlace place);
   ast::Annotation* parse_annotation();
   ast::Node* parse_annotation_arg();
   ast::DimExpr* parse_dim_expr();
@@ -98,6 +100,13 @@ class Parser {
   void require(LanguageFeature feature, SourceRange where);
   // Layout identifiers of later versions and non-literal layout values.
   void check_layout_id(const ast::LayoutId& id);
+  // Block layouts where no block is: packing (std140, std430, shared, packed)
+  // on a variable or any member, matrix order (row_major, column_major) on a
+  // variable or a struct member.
+  void check_layout_place(const ast::TypeQualifiers& qualifiers, LayoutPlace place);
+  // `sample` qualifies only shader inputs and outputs, never with `centroid`;
+  // `in_out` says whether this declaration is one.
+  void check_sample(const ast::TypeQualifiers& qualifiers, bool in_out);
   ast::FunctionDecl* parse_function_rest(ast::TypeQualifiers qualifiers, ast::TypeSpecifier* type,
                                          const PToken& name, SourceLocation begin,
                                          std::vector<ast::TemplateParam> template_params,
