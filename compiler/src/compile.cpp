@@ -234,7 +234,12 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     if (diags.limit_reached()) break;
     const std::size_t errors_before = diags.error_count();
     w.preprocessed = preprocess(*manager, w.file, pp, diags);
-    w.parsed = parse(w.preprocessed.tokens, diags);
+    // The syntax the #version and extensions allow; after a preprocessor error
+    // (a misplaced #version, say) the level is a guess, and its gates would
+    // only add cascades.
+    ParseOptions parse_options;
+    if (diags.error_count() == errors_before) parse_options.language = w.preprocessed.language;
+    w.parsed = parse(w.preprocessed.tokens, diags, parse_options);
     add_dependency(result, sources[i].path);
     for (const IncludedFile& inc : w.preprocessed.includes) add_dependency(result, inc.path);
     // A tree with syntax errors is partial: checking it would only add cascades.
