@@ -60,6 +60,10 @@ TEST(PlainGlsl, BindlessHandles) {  // piglit arb_bindless_texture/compiler/samp
             Messages{});
   EXPECT_EQ(plain("uniform sampler2D tex; void main() { ivec2 h = ivec2(tex); }"),
             Messages{"error: cannot use sampler2D to construct ivec2"});
+  // glslang's Test/GL_ARB_bindless_texture.frag: an ivec2 handle converts to uvec2 implicitly.
+  EXPECT_EQ(plain("uniform ivec2 h; void main() { vec4 c = texture(sampler2D(h), vec2(0.0)); }"), Messages{});
+  EXPECT_EQ(plain("uniform vec2 h; void main() { vec4 c = texture(sampler2D(h), vec2(0.0)); }"),
+            Messages{"error: cannot construct sampler2D"});
 }
 
 TEST(PlainGlsl, UnsizedArrayRedeclaredWithASize) {  // piglit glsl-1.20 array-redeclaration-01.vert (GLSL 1.20 §4.1.9)

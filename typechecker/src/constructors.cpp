@@ -59,10 +59,14 @@ Value Checker::constructor(const ast::CallExpr& e) {
         return error_value(e.range);
     return out;
   }
-  // GL_ARB_bindless_texture: uvec2(sampler or image) and back.
-  const auto is_handle = [](const Type& x) { return x.shape == Shape::vector && x.rows == 2 && x.scalar == Scalar::uint_ && !x.is_array(); };
-  if (args.size() == 1 && ((is_handle(t) && args[0].type.shape == Shape::opaque && !args[0].type.is_array()) ||
-                           (t.shape == Shape::opaque && is_handle(args[0].type))))
+  // GL_ARB_bindless_texture: uvec2(sampler or image) and back; an ivec2 handle
+  // converts implicitly to uvec2 (GLSL 4.00 int -> uint), as glslang accepts.
+  const auto is_handle = [](const Type& x, bool from_int) {
+    return x.shape == Shape::vector && x.rows == 2 && !x.is_array() &&
+           (x.scalar == Scalar::uint_ || (from_int && x.scalar == Scalar::int_));
+  };
+  if (args.size() == 1 && ((is_handle(t, false) && args[0].type.shape == Shape::opaque && !args[0].type.is_array()) ||
+                           (t.shape == Shape::opaque && is_handle(args[0].type, true))))
     return out;
   if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
   if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
