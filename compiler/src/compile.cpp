@@ -185,10 +185,12 @@ void run_with_large_stack(Work& work) {
   };
   pthread_attr_t attributes;
   pthread_t thread;
-  bool started = pthread_attr_init(&attributes) == 0 &&
-                 pthread_attr_setstacksize(&attributes, kCompileStackBytes) == 0 &&
-                 pthread_create(&thread, &attributes, entry, &task) == 0;
-  pthread_attr_destroy(&attributes);
+  bool started = false;
+  if (pthread_attr_init(&attributes) == 0) {  // only initialised attributes may be destroyed
+    started = pthread_attr_setstacksize(&attributes, kCompileStackBytes) == 0 &&
+              pthread_create(&thread, &attributes, entry, &task) == 0;
+    pthread_attr_destroy(&attributes);
+  }
   if (!started) return work();  // no thread to be had: the caller's own stack
   pthread_join(thread, nullptr);
   if (task.error) std::rethrow_exception(task.error);
