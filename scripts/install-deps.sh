@@ -11,7 +11,7 @@ packages=(
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   python3-glad                       # generates the GL loader at build time
   libglm-dev
-  libopenimageio-dev
+  libopenimageio-dev openimageio-tools # the tools: OpenImageIO's CMake config imports /usr/bin/iconvert etc.
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind                           # instruction counts for the benchmarks
