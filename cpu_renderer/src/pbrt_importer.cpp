@@ -444,21 +444,16 @@ PbrtScene load_pbrt_scene(const std::filesystem::path& file, const PbrtImportOpt
 }
 
 double parse_length_unit(const std::string& text) {
-  std::string error;
-  std::optional<Unit> unit = parse_unit(text, error);
-  double metres = 0;
-  if (unit && unit->dimension == runtime_dim::length) {
-    metres = unit->to_reference;
-  } else if (std::optional<Quantity> quantity = parse_quantity(text, error);
-             quantity && quantity->dimension == runtime_dim::length) {
-    metres = quantity->value;
-  } else {
-    throw SceneError("--length-unit: expected a length unit (m, cm, mm, in, ...), got '" + text + "'" +
-                     (error.empty() ? "" : ": " + error));
-  }
-  if (!(metres > 0) || !std::isfinite(metres))
+  const std::string expected = "--length-unit: expected a length unit (m, cm, mm, in, ...), got '" + text + "'";
+  std::string unit_error, quantity_error;
+  std::optional<Quantity> length;
+  if (std::optional<Unit> unit = parse_unit(text, unit_error)) length = Quantity{unit->to_reference, unit->dimension};
+  else if (std::optional<Quantity> quantity = parse_quantity(text, quantity_error)) length = quantity;  // "0.5 m"
+  if (!length) throw SceneError(expected + ": " + unit_error);
+  if (!(length->dimension == runtime_dim::length)) throw SceneError(expected + " (" + dimension_name(length->dimension) + ")");
+  if (!(length->value > 0) || !std::isfinite(length->value))
     throw SceneError("--length-unit: one pbrt unit must be a positive length, got '" + text + "'");
-  return metres;
+  return length->value;
 }
 
 }  // namespace safegi::render

@@ -181,7 +181,10 @@ void Parser::numbers(Directive& directive, int count, bool bracketed) {
   }
   for (int i = 0; i < count; ++i) {
     Token token = take();
-    if (token.kind != TokenKind::word)
+    std::string_view text = token.text;
+    bool numeric = token.kind == TokenKind::word && !text.empty() &&
+                   (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-' || text[0] == '+' || text[0] == '.');
+    if (!numeric)
       fail(token.range, "expected a number (" + directive.name + " takes " + std::to_string(count) + ", this is number " +
                             std::to_string(i + 1) + "), found " + describe(token));
     directive.numbers.push_back(number(token));
@@ -230,9 +233,11 @@ Param Parser::parameter(const Token& declaration) {
         last = token.range;
         break;
       }
-      if (token.kind == TokenKind::end || token.kind == TokenKind::open_bracket)
-        fail(token.range, "expected a value or ']' in the list of \"" + declaration.text + "\", found " + describe(token),
-             "the list opened here is not closed");
+      if (token.kind == TokenKind::end)
+        fail(first.range, "the list of \"" + declaration.text + "\" is not closed: the file ends before its ']'");
+      if (token.kind == TokenKind::open_bracket)
+        fail(token.range, "expected a value or ']' in the list of \"" + declaration.text + "\", found '['",
+             "lists do not nest");
       values.push_back(std::move(token));
     }
   } else if (first.kind == TokenKind::word || first.kind == TokenKind::string) {
@@ -280,7 +285,7 @@ void Parser::include(const Directive& directive) {
   if (!text)
     fail(directive.string_ranges[0], "cannot read included file '" + path.string() + "': " + error,
          "pbrt-v3 resolves Include paths against the directory of the main scene file");
-  FileId file = sources_.add_file(directive.strings[0], std::move(*text));
+  FileId file = sources_.add_file(path.lexically_normal().string(), std::move(*text));
   sources_.set_included_from(file, span(directive.range, directive.arguments));
   files_.push_back(std::make_unique<Tokenizer>(sources_, file));
 }
