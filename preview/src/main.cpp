@@ -109,11 +109,20 @@ int main(int argc, char** argv) {
       frame_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       if (f == 0) first_frame = seconds_since(start);
     }
+    // Curved mirrors are drawn black: said on stderr and in the image files.
+    std::string note;
+    if (!preview.curved_mirrors().empty()) {
+      std::string names;
+      for (const std::string& name : preview.curved_mirrors()) names += (names.empty() ? "" : ", ") + name;
+      note = "SafeGI preview: curved mirrors are not previewed and appear black (" + names +
+             "); planar mirrors show one-bounce reflections";
+      std::fprintf(stderr, "warning: %s\n", note.c_str());
+    }
     if (out.extension() == ".exr") {
-      safegi::render::write_exr(out, image);
-      safegi::render::write_png(std::filesystem::path(out).replace_extension(".png"), image);
+      safegi::render::write_exr(out, image, note);
+      safegi::render::write_png(std::filesystem::path(out).replace_extension(".png"), image, note);
     } else {
-      safegi::render::write_png(out, image);
+      safegi::render::write_png(out, image, note);
     }
     if (pfm) safegi::render::write_pfm(std::filesystem::path(out).replace_extension(".pfm"), image);
     if (stats) {
