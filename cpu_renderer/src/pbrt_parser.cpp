@@ -215,7 +215,7 @@ Param Parser::parameter(const Token& declaration) {
     std::string hint = "pbrt-v3 parameter types: " + type_list();
     for (const TypeName& t : kParamTypes)
       if (distance(type, t.name) <= 2) hint = "did you mean \"" + std::string(t.name) + " " + name + "\"?";
-    if (type == "point3" || type == "vector3" || type == "normal3") hint = "pbrt-v4 syntax; pbrt-v3 writes \"point\"";
+    if (type == "normal3") hint = "pbrt-v4 syntax; pbrt-v3 writes \"normal " + name + "\"";
     fail(declaration.range, "unknown parameter type '" + type + "' in " + describe(declaration), hint);
   }
   param.type = found->type;
