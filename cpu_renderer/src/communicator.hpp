@@ -6,9 +6,17 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 namespace safegi::render {
+
+// mpirun (Open MPI), the PMIx and PMI launchers (MPICH's hydra, Slurm) set these.
+inline bool started_by_mpi_launcher() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(variable)) return true;
+  return false;
+}
 
 class Communicator {
  public:

@@ -14,12 +14,6 @@ namespace safegi::render {
 
 namespace {
 
-bool started_by_mpi_launcher() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
-    if (std::getenv(variable)) return true;
-  return false;
-}
-
 // MPI counts are ints: large buffers travel in pieces of at most this many floats.
 constexpr size_t kPieceFloats = size_t{1} << 28;
 

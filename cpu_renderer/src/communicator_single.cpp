@@ -1,12 +1,18 @@
 // The communicator of a build without MPI: one process, rank 0 of 1, where
 // every collective returns its own argument.
+#include <cstdio>
 #include <cstdlib>
 
 #include "communicator.hpp"
 
 namespace safegi::render {
 
-Communicator::Communicator(int&, char**&) {}
+Communicator::Communicator(int&, char**&) {
+  if (started_by_mpi_launcher())
+    std::fprintf(stderr,
+                 "warning: this safegi-render was built without MPI (SAFEGI_WITH_MPI=OFF or MPI not found): "
+                 "under mpirun every process renders the whole image by itself\n");
+}
 Communicator::~Communicator() = default;
 
 int Communicator::min_over_ranks(int value) { return value; }
