@@ -34,6 +34,11 @@ class Communicator {
   int ranks_on_this_node() const { return local_size_; }
 
   // Collectives: every rank calls them in the same order.
+  // Returns once every rank has called it. A rank that arrives early sleeps
+  // (1 ms at a time) instead of spinning in MPI's progress loop, as blocking
+  // MPI calls do: on a node with more ranks than cores, spinning would take
+  // the CPU from the ranks still rendering.
+  void wait_for_every_rank();
   int min_over_ranks(int value);                  // on every rank
   int sum_over_ranks(int value);                  // on every rank
   void broadcast(std::string& text, int root);    // root's text on every rank

@@ -6,7 +6,9 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #include "communicator.hpp"
 
@@ -35,6 +37,17 @@ Communicator::Communicator(int& argc, char**& argv) {
 
 Communicator::~Communicator() {
   if (initialised_) MPI_Finalize();
+}
+
+void Communicator::wait_for_every_rank() {
+  if (!initialised_) return;
+  MPI_Request barrier;
+  MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
+  for (int done = 0;;) {
+    MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 int Communicator::min_over_ranks(int value) {

@@ -15,6 +15,7 @@ Communicator::Communicator(int&, char**&) {
 }
 Communicator::~Communicator() = default;
 
+void Communicator::wait_for_every_rank() {}
 int Communicator::min_over_ranks(int value) { return value; }
 int Communicator::sum_over_ranks(int value) { return value; }
 void Communicator::broadcast(std::string&, int) {}

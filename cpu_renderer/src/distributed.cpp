@@ -41,6 +41,7 @@ class DistributedSession::Partition final : public RenderPartition {
   int parts() const override { return session_.ranks(); }
   double slowest_pass_seconds(double seconds) override {
     session_.test_fault_point();
+    session_.communicator_.wait_for_every_rank();
     return session_.communicator_.max_to_first(seconds);
   }
   int next_pass_spp_of_first(int next_pass_spp) override {
@@ -69,6 +70,7 @@ void DistributedSession::agree_setup(const std::string* error) {
   if (message.empty() && fault_kind_ == "setup" && fault_rank_ == rank())
     message = "test fault: rank " + std::to_string(rank()) + "'s setup fails";
   const bool failed = !message.empty();
+  communicator_.wait_for_every_rank();  // some load the scene faster than others
   int first_failed = communicator_.min_over_ranks(failed ? rank() : ranks());
   if (first_failed == ranks()) return;
   int failures = communicator_.sum_over_ranks(failed ? 1 : 0);
@@ -122,6 +124,7 @@ Image DistributedSession::render(const Scene& scene, RenderOptions options, Rend
   RenderStats local;
   Image image = safegi::render::render(scene, options, &local);
   test_fault_point();
+  communicator_.wait_for_every_rank();
   Image whole = gather_on_first(image);
 
   uint64_t totals[] = {local.camera_rays, local.extension_rays, local.shadow_rays, local.invalid_samples,
