@@ -10,6 +10,7 @@
 #include <regex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace safegi::render {
@@ -125,7 +126,7 @@ Image DistributedSession::render(const Scene& scene, RenderOptions options, Rend
   Image image = safegi::render::render(scene, options, &local);
   test_fault_point();
   communicator_.wait_for_every_rank();
-  Image whole = gather_on_first(image);
+  Image whole = gather_on_first(std::move(image));
 
   uint64_t totals[] = {local.camera_rays, local.extension_rays, local.shadow_rays, local.invalid_samples,
                        static_cast<uint64_t>(local.threads)};
@@ -153,9 +154,10 @@ Image DistributedSession::render(const Scene& scene, RenderOptions options, Rend
 
 // Rank 0's image gets every other rank's tiles, copied: no pixel is added to
 // another, so the pixels are the bits their own rank computed.
-Image DistributedSession::gather_on_first(const Image& image) {
+Image DistributedSession::gather_on_first(Image image) {
   std::vector<PixelRect> tiles = render_tiles(image.width, image.height);
-  auto row_begin = [&](const PixelRect& tile, int y) { return 3 * (static_cast<size_t>(y) * image.width + tile.x0); };
+  const size_t width = image.width;
+  auto row_begin = [width](const PixelRect& tile, int y) { return 3 * (y * width + tile.x0); };
   if (!is_root()) {
     std::vector<float> mine;
     for_each_tile_of(tiles, rank(), ranks(), [&](const PixelRect& tile) {
@@ -167,7 +169,7 @@ Image DistributedSession::gather_on_first(const Image& image) {
     communicator_.send(mine.data(), mine.size(), 0);
     return Image{};
   }
-  Image whole = image;
+  Image whole = std::move(image);
   std::vector<float> theirs;
   for (int from = 1; from < ranks(); ++from) {
     size_t count = 0;

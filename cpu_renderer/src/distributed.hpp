@@ -30,8 +30,9 @@ class DistributedSession {
   // The other ranks get an empty image.
   Image render(const Scene& scene, RenderOptions options, RenderStats* stats);
 
-  // Collective: the sum over ranks, on rank 0 (elsewhere: value).
+  // Collectives: the sum or the largest over ranks, on rank 0 (elsewhere: value).
   double sum_over_ranks(double value) { return communicator_.sum_to_first(value); }
+  double max_over_ranks(double value) { return communicator_.max_to_first(value); }
 
   // What main() returns after catching `error`; prints it once for the job.
   // During setup it joins render()'s agreement, so that one error is printed
@@ -47,7 +48,7 @@ class DistributedSession {
 
   void agree_setup(const std::string* error);
   void test_fault_point();
-  Image gather_on_first(const Image& image);
+  Image gather_on_first(Image image);
   int default_threads() const;
 
   Communicator communicator_;

@@ -110,7 +110,9 @@ int main(int argc, char** argv) {
     RenderStats stats;
     rusage before_render = resource_usage();
     Image image = session.render(scene, options, &stats);
-    double render_cpu_seconds = session.sum_over_ranks(cpu_seconds(resource_usage()) - cpu_seconds(before_render));
+    double rank_render_cpu_seconds = cpu_seconds(resource_usage()) - cpu_seconds(before_render);
+    double render_cpu_seconds = session.sum_over_ranks(rank_render_cpu_seconds);
+    double busiest_rank_cpu_seconds = session.max_over_ranks(rank_render_cpu_seconds);
     // Rank 0 writes the image and reports for all; the others stop here.
     double other_ranks_cpu_seconds = session.sum_over_ranks(session.is_root() ? 0.0 : cpu_seconds(resource_usage()));
     if (!session.is_root()) return 0;
@@ -137,14 +139,15 @@ int main(int argc, char** argv) {
           "\"seed\": %u, "
           "\"integrator\": \"%s\", \"max_depth\": %d, \"mis\": %s, \"light_samples\": %d, "
           "\"russian_roulette\": %s, \"russian_roulette_depth\": %d, "
-          "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"cpu_seconds\": %.3f, "
+          "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"busiest_rank_render_cpu_seconds\": %.3f, "
+          "\"cpu_seconds\": %.3f, "
           "\"camera_rays\": %llu, \"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays\": %llu, "
           "\"rays_per_second\": %.0f, \"samples_per_second\": %.0f, \"rays_per_cpu_second\": %.0f, "
           "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
           image.width, image.height, stats.samples_per_pixel, static_cast<unsigned long long>(stats.camera_rays),
           session.ranks(), stats.threads, seed, used.integrator == IntegratorType::direct ? "direct" : "path", used.max_depth,
           used.mis ? "true" : "false", used.light_samples, used.russian_roulette ? "true" : "false",
-          used.russian_roulette_depth, stats.seconds, render_cpu_seconds, process_cpu_seconds,
+          used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
           static_cast<unsigned long long>(stats.shadow_rays), static_cast<unsigned long long>(stats.total_rays()),
           rays_per_second, stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0,
