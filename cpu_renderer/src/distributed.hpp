@@ -23,8 +23,8 @@ class DistributedSession {
   bool is_root() const { return rank() == 0; }
 
   // Collective. First agrees that every rank's setup (scene, options)
-  // succeeded, and throws on the others when one rank's failed (that rank's
-  // report_error() has the message printed once). Then this rank renders its
+  // succeeded; when one rank's failed, it throws on every rank (rank 0 has
+  // printed the message, and report_error() adds nothing). Then this rank renders its
   // share, and rank 0 gathers the image and the statistics (rays, samples and
   // threads summed over ranks; seconds: rank 0's, until the image is whole).
   // The other ranks get an empty image.
