@@ -74,6 +74,22 @@ Estimate channel_estimate(const Image& image, int channel) {
   return {mean, std::sqrt(variance / n)};
 }
 
+// The mean of radiance(x, z) over the footprint of pixel (px, py) on the plane
+// y = 0, seen straight down from `camera_height` with a square image of `size`
+// pixels whose half-width at unit distance is `half` (x = h·sx, z = -h·sy).
+template <class Radiance>
+double footprint_average(int px, int py, int size, double half, double camera_height, Radiance radiance) {
+  double sum = 0;
+  constexpr int kSub = 16;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i) {
+      double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
+      double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
+      sum += radiance(camera_height * sx, -camera_height * sy);
+    }
+  return sum / (kSub * kSub);
+}
+
 // Diffuse plane under a point light: L = ρ/π · I cos θ / r², averaged over
 // each pixel's footprint on the plane (the estimator has no noise apart from
 // where in the pixel the samples fall).
@@ -98,19 +114,11 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
     double worst = 0;
     for (int py = 0; py < size; ++py) {
       for (int px = 0; px < size; ++px) {
-        // Average the closed form over the pixel's footprint (x = h·sx, z = -h·sy).
-        double expected = 0;
-        constexpr int kSub = 16;
-        for (int j = 0; j < kSub; ++j)
-          for (int i = 0; i < kSub; ++i) {
-            double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
-            double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
-            double x = camera_height * sx, z = -camera_height * sy;
-            double r2 = x * x + z * z + light_height * light_height;
-            double cos_theta = light_height / std::sqrt(r2);
-            expected += rho / kPi * intensity * cos_theta / r2;
-          }
-        expected /= kSub * kSub;
+        double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
+          double r2 = x * x + z * z + light_height * light_height;
+          double cos_theta = light_height / std::sqrt(r2);
+          return rho / kPi * intensity * cos_theta / r2;
+        });
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] / expected - 1));
       }
     }
@@ -158,18 +166,11 @@ TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
     int dark = 0;
     for (int py = 0; py < size; ++py) {
       for (int px = 0; px < size; ++px) {
-        double expected = 0;
-        constexpr int kSub = 16;
-        for (int j = 0; j < kSub; ++j)
-          for (int i = 0; i < kSub; ++i) {
-            double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
-            double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
-            double x = camera_height * sx, z = -camera_height * sy;
-            double r2 = x * x + z * z + light_height * light_height;
-            double cos_theta = light_height / std::sqrt(r2);
-            expected += rho / kPi * intensity * falloff(cos_theta) * cos_theta / r2;
-          }
-        expected /= kSub * kSub;
+        double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
+          double r2 = x * x + z * z + light_height * light_height;
+          double cos_theta = light_height / std::sqrt(r2);
+          return rho / kPi * intensity * falloff(cos_theta) * cos_theta / r2;
+        });
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] - expected) / peak);
         // A pixel whose footprint lies beyond the cone's edge (radius h·tan 30°, plus the pixel's diagonal) gets nothing.
         double cx = camera_height * (2 * (px + 0.5) / size - 1) * half, cz = camera_height * (1 - 2 * (py + 0.5) / size) * half;
