@@ -66,6 +66,18 @@ DistributedSession::DistributedSession(int& argc, char**& argv) : communicator_(
   }
 }
 
+namespace {
+
+// A message ending in a newline is a whole diagnostic already ("scene.pbrt:3:7:
+// error: ..." with its source line: the pbrt importer's), printed as it is.
+bool is_diagnostic(const std::string& message) { return !message.empty() && message.back() == '\n'; }
+void print_error(const std::string& message) {
+  if (is_diagnostic(message)) std::fputs(message.c_str(), stderr);
+  else std::fprintf(stderr, "error: %s\n", message.c_str());
+}
+
+}  // namespace
+
 void DistributedSession::agree_setup(const std::string* error) {
   std::string message = error ? *error : fault_error_;
   if (message.empty() && fault_kind_ == "setup" && fault_rank_ == rank())
@@ -80,9 +92,10 @@ void DistributedSession::agree_setup(const std::string* error) {
     // When every rank fails (the same scene file everywhere), the message is
     // the single process's; otherwise it says which rank failed first.
     if (failures == ranks())
-      std::fprintf(stderr, "error: %s\n", message.c_str());
+      print_error(message);
     else
-      std::fprintf(stderr, "error: rank %d of %d: %s\n", first_failed, ranks(), message.c_str());
+      std::fprintf(stderr, "error: rank %d of %d: %s%s", first_failed, ranks(), message.c_str(),
+                   is_diagnostic(message) ? "" : "\n");
   }
   // Called from render(): no rank renders (report_error() returns quietly).
   if (!error) throw SetupFailedElsewhere();
@@ -206,7 +219,7 @@ int DistributedSession::report_error(const std::exception& error) {
       if (!is_root()) return 1;  // rank 0 reports for all
       break;
   }
-  std::fprintf(stderr, "error: %s\n", error.what());
+  print_error(error.what());
   return 1;
 }
 

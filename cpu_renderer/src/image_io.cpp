@@ -27,18 +27,20 @@ float linear_to_srgb(float linear) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-void write_exr(const std::filesystem::path& file, const Image& image) {
+void write_exr(const std::filesystem::path& file, const Image& image, std::string_view description) {
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
   spec.attribute("compression", "zip");
+  if (!description.empty()) spec.attribute("ImageDescription", std::string(description));
   write(file, spec, OIIO::TypeDesc::FLOAT, image.rgb.data());
 }
 
-void write_png(const std::filesystem::path& file, const Image& image) {
+void write_png(const std::filesystem::path& file, const Image& image, std::string_view description) {
   std::vector<uint8_t> bytes(image.rgb.size());
   for (size_t i = 0; i < bytes.size(); ++i)
     bytes[i] = static_cast<uint8_t>(std::lround(linear_to_srgb(image.rgb[i]) * 255.0f));
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
+  if (!description.empty()) spec.attribute("ImageDescription", std::string(description));
   write(file, spec, OIIO::TypeDesc::UINT8, bytes.data());
 }
 

@@ -16,6 +16,18 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     lights_.push_back(light);
     powers.push_back(sg::raw(sg::average(point.intensity) * (4 * sg::pi * units::steradian)));
   }
+  for (const SpotLight& spot : scene.spot_lights) {
+    Light light;
+    light.type = Light::Type::spot;
+    light.position = spot.position;
+    light.intensity = spot.intensity;
+    light.spot = spot;
+    lights_.push_back(light);
+    // pbrt-v3's SpotLight::Power: the full cone at I, the falloff band at half.
+    float cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
+    auto cone = (2 * sg::pi * (1 - 0.5f * (cos_start + cos_total))) * units::steradian;
+    powers.push_back(sg::raw(sg::average(spot.intensity) * cone));
+  }
   for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (!shape.emission) continue;
@@ -142,13 +154,18 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
   float probability = selection_probability(index);
   if (!(probability > 0)) return std::nullopt;
   LightSample sample;
-  if (light.type == Light::Type::point) {
+  if (light.type == Light::Type::point || light.type == Light::Type::spot) {
     VectorWorld toward = light.position - reference;
     sample.distance = sg::length(toward);
     if (!(sample.distance > sg::zero)) return std::nullopt;
     sample.wi = sg::normalize(toward);
     sample.position = light.position;
     sample.intensity = light.intensity;
+    if (light.type == Light::Type::spot) {
+      float falloff = spot_falloff(light.spot, -sg::dot(light.spot.direction, sample.wi));
+      if (!(falloff > 0)) return std::nullopt;
+      sample.intensity = light.intensity * falloff;
+    }
     sample.probability = probability;
     sample.delta = true;
     return sample;

@@ -1,4 +1,4 @@
-// Light sources: point lights (intensity) and diffuse area emitters on
+// Light sources: point and spot lights (intensity) and diffuse area emitters on
 // triangle meshes and spheres (radiance), chosen in proportion to power.
 #pragma once
 
@@ -18,8 +18,8 @@ struct LightSample {
   Float3 emitter_normal;   // unit normal of an area light; zero for point lights
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
-  bool delta = false;      // a point light: no density over directions
-  // Point lights: the intensity towards the shading point and the probability
+  bool delta = false;      // a point or spot light: no density over directions
+  // Point and spot lights: the intensity towards the shading point and the probability
   // of having chosen this light.
   Intensity intensity;
   float probability = 0;
@@ -47,9 +47,10 @@ class Lights {
 
  private:
   struct Light {
-    enum class Type { point, triangles, sphere } type = Type::point;
-    PointWorld position;  // point light, sphere centre
-    Intensity intensity;  // point light
+    enum class Type { point, spot, triangles, sphere } type = Type::point;
+    PointWorld position;  // point and spot light, sphere centre
+    Intensity intensity;  // point and spot light
+    SpotLight spot;       // spot light: axis and cone
     uint32_t first_triangle = 0, triangle_count = 0;
     Length radius = sg::zero;  // sphere
     PdfArea pdf_area = sg::zero;  // 1 / surface area (of a moving emitter: in object space)

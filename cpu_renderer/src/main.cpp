@@ -10,6 +10,7 @@
 
 #include "distributed.hpp"
 #include "safegi/cpu_renderer/image_io.hpp"
+#include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -39,12 +40,13 @@ int main(int argc, char** argv) {
   // Under mpirun, one rank of a distributed render (docs/cpu-renderer.md); else a single process.
   DistributedSession session(argc, argv);
   CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG"};
-  std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette;
+  std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette, length_unit;
   int spp = 0, threads = 0, max_depth = 0, light_samples = 0, roulette_depth = -1;
   uint32_t seed = 0;
   double time_budget = 0;
   bool quiet = false, stats_json = false, pfm = false;
-  app.add_option("scene", scene_file, "scene file (.json)")->required();
+  app.add_option("scene", scene_file, "scene file (.json, or a pbrt-v3 .pbrt)")->required();
+  app.add_option("--length-unit", length_unit, "what one pbrt length unit is (m, cm, mm, in, ...; .pbrt scenes only)");
   app.add_option("-o,--output", output, "output name; writes NAME.exr (linear) and NAME.png (sRGB)");
   app.add_option("--spp", spp, "samples per pixel (with --time-budget: the most to take)")->check(CLI::Range(1, 1 << 24));
   app.add_option("--threads", threads, "worker threads (per rank under mpirun; default: all cores)")->check(CLI::Range(1, 1024));
@@ -73,9 +75,23 @@ int main(int argc, char** argv) {
   }
 
   try {
-    Scene scene = load_scene(scene_file);
+    std::optional<CropWindow> scene_crop;
+    Scene scene;
+    if (std::filesystem::path(scene_file).extension() == ".pbrt") {
+      if (length_unit.empty())
+        throw PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
+                              "with --length-unit (m, cm, mm, in, ...)\n");
+      PbrtScene imported = load_pbrt_scene(scene_file, {parse_length_unit(length_unit), {}});
+      if (session.is_root()) std::cerr << imported.warnings;
+      scene = std::move(imported.scene);
+      scene_crop = imported.crop;
+    } else {
+      if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
+      scene = load_scene(scene_file);
+    }
     RenderOptions options;
     options.settings = scene.settings;
+    options.crop = scene_crop;
     if (spp > 0) options.settings.spp = spp;
     else if (time_budget > 0) options.settings.spp = 1 << 24;
     if (max_depth > 0) options.settings.max_depth = max_depth;
@@ -90,6 +106,7 @@ int main(int argc, char** argv) {
         throw std::runtime_error("--resolution: expected WIDTHxHEIGHT, got '" + resolution + "'");
       options.settings.width = std::stoi(match[1]);
       options.settings.height = std::stoi(match[2]);
+      options.crop.reset();  // a pbrt Film's crop window was in pixels of its own resolution
       if (options.settings.width < 1 || options.settings.height < 1)
         throw std::runtime_error("--resolution: width and height must be positive");
     }
@@ -154,7 +171,7 @@ int main(int argc, char** argv) {
           render_cpu_seconds > 0 ? static_cast<double>(stats.total_rays()) / render_cpu_seconds : 0.0,
           usage.ru_maxrss, static_cast<unsigned long long>(stats.invalid_samples));
     }
-  } catch (const std::exception& error) {
+  } catch (const std::exception& error) {  // a PbrtImportError's text is a whole diagnostic, printed as it is
     return session.report_error(error);
   }
   return 0;

@@ -74,6 +74,22 @@ Estimate channel_estimate(const Image& image, int channel) {
   return {mean, std::sqrt(variance / n)};
 }
 
+// The mean of radiance(x, z) over the footprint of pixel (px, py) on the plane
+// y = 0, seen straight down from `camera_height` with a square image of `size`
+// pixels whose half-width at unit distance is `half` (x = h·sx, z = -h·sy).
+template <class Radiance>
+double footprint_average(int px, int py, int size, double half, double camera_height, Radiance radiance) {
+  double sum = 0;
+  constexpr int kSub = 16;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i) {
+      double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
+      double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
+      sum += radiance(camera_height * sx, -camera_height * sy);
+    }
+  return sum / (kSub * kSub);
+}
+
 // Diffuse plane under a point light: L = ρ/π · I cos θ / r², averaged over
 // each pixel's footprint on the plane (the estimator has no noise apart from
 // where in the pixel the samples fall).
@@ -98,24 +114,77 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
     double worst = 0;
     for (int py = 0; py < size; ++py) {
       for (int px = 0; px < size; ++px) {
-        // Average the closed form over the pixel's footprint (x = h·sx, z = -h·sy).
-        double expected = 0;
-        constexpr int kSub = 16;
-        for (int j = 0; j < kSub; ++j)
-          for (int i = 0; i < kSub; ++i) {
-            double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
-            double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
-            double x = camera_height * sx, z = -camera_height * sy;
-            double r2 = x * x + z * z + light_height * light_height;
-            double cos_theta = light_height / std::sqrt(r2);
-            expected += rho / kPi * intensity * cos_theta / r2;
-          }
-        expected /= kSub * kSub;
+        double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
+          double r2 = x * x + z * z + light_height * light_height;
+          double cos_theta = light_height / std::sqrt(r2);
+          return rho / kPi * intensity * cos_theta / r2;
+        });
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] / expected - 1));
       }
     }
     // 64 stratified positions per pixel of a smooth function: well under 0.5%.
     EXPECT_LT(worst, 5e-3) << integrator << ", " << knobs.name;
+  }
+}
+
+// Diffuse plane under a spot light pointing straight down: L = ρ/π · I f(θ)
+// cos θ / r² with pbrt-v3's falloff f: 1 inside cone_angle − cone_delta,
+// δ⁴ across the band (δ the cosine's position within it), 0 beyond. Averaged
+// over each pixel's footprint; pixels wholly outside the cone are exactly 0.
+TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
+  const double rho = 0.5, intensity = 10.0, light_height = 2.0, camera_height = 5.0, fov = 60.0;
+  const double cone = 30.0, delta = 10.0;
+  const int size = 33;
+  const double cos_total = std::cos(cone * kPi / 180), cos_start = std::cos((cone - delta) * kPi / 180);
+  auto falloff = [&](double cos_theta) {
+    if (cos_theta < cos_total) return 0.0;
+    if (cos_theta >= cos_start) return 1.0;
+    double d = (cos_theta - cos_total) / (cos_start - cos_total);
+    return d * d * d * d;
+  };
+  std::string scene = R"json({
+    "render": {"resolution": [33, 33], "integrator": "direct"},
+    "camera": {"position": {"value": [0, 5, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 0, -1], "fov": "60 deg"},
+    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}],
+    "lights": [{"type": "spot", "position": {"value": [0, 2, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+                "intensity": "10 W/sr", "cone_angle": "30 deg", "cone_delta": "10 deg"}]})json";
+  // The same spot given by its power: I = P / (2π (1 − (cos start + cos total)/2)) sr.
+  double power = intensity * 2 * kPi * (1 - 0.5 * (cos_start + cos_total));
+  std::string by_power = scene;
+  by_power.replace(by_power.find("\"intensity\": \"10 W/sr\""), 22, "\"power\": \"" + std::to_string(power) + " W\"");
+  for (const std::string* text : {&scene, &by_power})
+  for (const char* integrator : {"direct", "path"}) {
+    std::string variant = *text;
+    variant.replace(variant.find("direct"), 6, integrator);
+    Image image = render_text(variant, 64);
+    const double half = std::tan(fov / 2 * kPi / 180);
+    const double peak = rho / kPi * intensity / (light_height * light_height);
+    double worst = 0;
+    int dark = 0;
+    for (int py = 0; py < size; ++py) {
+      for (int px = 0; px < size; ++px) {
+        double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
+          double r2 = x * x + z * z + light_height * light_height;
+          double cos_theta = light_height / std::sqrt(r2);
+          return rho / kPi * intensity * falloff(cos_theta) * cos_theta / r2;
+        });
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] - expected) / peak);
+        // A pixel whose footprint lies beyond the cone's edge (radius h·tan 30°, plus the pixel's diagonal) gets nothing.
+        double cx = camera_height * (2 * (px + 0.5) / size - 1) * half, cz = camera_height * (1 - 2 * (py + 0.5) / size) * half;
+        double pixel = 2 * camera_height * half / size;
+        if (std::hypot(cx, cz) > light_height * std::tan(cone * kPi / 180) + pixel) {
+          ++dark;
+          EXPECT_EQ(image.pixel(px, py)[0], 0.0f) << px << "," << py;
+        }
+      }
+    }
+    EXPECT_GT(dark, 100);
+    // 64 stratified positions per pixel of a function with a kink at the
+    // falloff's start: within 0.5% of the peak (a 1% brighter light fails).
+    EXPECT_LT(worst, 5e-3) << integrator << (text == &scene ? ", intensity" : ", power");
   }
 }
 

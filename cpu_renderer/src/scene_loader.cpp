@@ -244,7 +244,7 @@ class Loader {
                      Shape& shape);
   void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
   ObjectToWorld load_transform(const Json& value, const JsonPath& path);
-  PointLight load_point_light(const Json& value, const JsonPath& path);
+  void load_light(const Json& value, const JsonPath& path, Scene& scene);
 
   std::string display_name_;
   std::filesystem::path base_directory_;
@@ -278,7 +278,7 @@ Scene Loader::load(const Json& root) {
     const Json& lights = root["lights"];
     if (!lights.is_array()) fail(top.field("lights"), "expected an array, got " + short_dump(lights));
     for (size_t i = 0; i < lights.size(); ++i)
-      scene.point_lights.push_back(load_point_light(lights[i], top.field("lights").index(i)));
+      load_light(lights[i], top.field("lights").index(i), scene);
   }
   return scene;
 }
@@ -600,25 +600,53 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   return ObjectToWorld::from_matrix(result);
 }
 
-PointLight Loader::load_point_light(const Json& value, const JsonPath& path) {
+void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
-  if (type != "point") fail(path.field("type"), "expected \"point\", got " + short_dump(value["type"]));
-  object(value, path, {"type", "name", "position", "intensity", "power"});
-  PointLight light;
-  light.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
+  if (type != "point" && type != "spot")
+    fail(path.field("type"), "expected \"point\" or \"spot\", got " + short_dump(value["type"]));
+  if (type == "point")
+    object(value, path, {"type", "name", "position", "intensity", "power"});
+  else
+    object(value, path, {"type", "name", "position", "look_at", "intensity", "power", "cone_angle", "cone_delta"});
+  PointWorld position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
   if (value.contains("intensity") == value.contains("power"))
     fail(path, "expected exactly one of 'intensity' and 'power'");
-  if (value.contains("intensity")) {
-    light.intensity = typed_spectrum<dim::intensity>(value["intensity"], path.field("intensity"));
-  } else {
-    // An isotropic point source spreads its power over the whole sphere.
-    sg::spectrum<dim::power> power = typed_spectrum<dim::power>(value["power"], path.field("power"));
-    light.intensity = power / (4.0f * sg::pi * units::steradian);
+  // The solid angle the light's power spreads over: the sphere, or the spot's
+  // cone with its falloff band counted at half (pbrt-v3's SpotLight::Power).
+  SpotLight spot;
+  quantity<dim::solid_angle> spread = 4.0f * sg::pi * units::steradian;
+  if (type == "spot") {
+    spot.position = position;
+    PointWorld look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
+    if (!(sg::length(look_at - position) > sg::zero)) fail(path.field("look_at"), "must differ from position");
+    spot.direction = sg::normalize(look_at - position);
+    spot.cone_angle = typed_scalar<dim::angle>(required(value, path, "cone_angle"), path.field("cone_angle"));
+    if (!(spot.cone_angle > sg::zero && spot.cone_angle <= 180.0f * units::degree))
+      fail(path.field("cone_angle"), "expected an angle in (0 deg, 180 deg]");
+    if (value.contains("cone_delta")) {
+      spot.cone_delta = typed_scalar<dim::angle>(value["cone_delta"], path.field("cone_delta"));
+      if (!(spot.cone_delta >= sg::zero && spot.cone_delta <= spot.cone_angle))
+        fail(path.field("cone_delta"), "expected an angle in [0 deg, cone_angle]");
+    }
+    float cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
+    spread = (2 * sg::pi * (1 - 0.5f * (cos_start + cos_total))) * units::steradian;
   }
-  if (light.intensity.r() < sg::zero || light.intensity.g() < sg::zero || light.intensity.b() < sg::zero)
+  Intensity intensity;
+  if (value.contains("intensity")) {
+    intensity = typed_spectrum<dim::intensity>(value["intensity"], path.field("intensity"));
+  } else {
+    sg::spectrum<dim::power> power = typed_spectrum<dim::power>(value["power"], path.field("power"));
+    intensity = power / spread;
+  }
+  if (intensity.r() < sg::zero || intensity.g() < sg::zero || intensity.b() < sg::zero)
     fail(path, "light output must not be negative");
-  return light;
+  if (type == "point") {
+    scene.point_lights.push_back({position, intensity});
+  } else {
+    spot.intensity = intensity;
+    scene.spot_lights.push_back(spot);
+  }
 }
 
 std::string line_and_column(std::string_view text, size_t byte) {

@@ -1,10 +1,13 @@
 #version 330 core
 // Direct illumination, one light per pass, added into a float accumulation
-// buffer. Built three times (docs/preview.md):
+// buffer. Built four times (docs/preview.md):
 //   EMISSION      emitters seen directly (the pass that also lays down depth);
-//   POINT_LIGHT   a point light of intensity I: L = f · I · cos θx / r²;
+//   POINT_LIGHT   a point or spot light of intensity I (times the spot's
+//                 falloff): L = f · I · cos θx / r²;
 //   AREA_SAMPLE   one of N points y on an emitter of area A and radiance Le,
-//                 a point-like light of intensity Le · cos θy · A / N.
+//                 a point-like light of intensity Le · cos θy · A / N;
+//   MIRROR        a planar mirror, one bounce: Kr times the radiance its
+//                 reflection pass found at this pixel.
 // The BRDFs are the CPU renderer's (cpu_renderer/src/bsdf.hpp): Lambert ρ/π
 // and energy-conserving Phong ρs (n+2)/(2π) cosⁿα, two-sided.
 #include <safegi/prelude.sgl>
@@ -19,7 +22,15 @@ in normal<world> N;
 
 out spectrum<radiance> radiance;
 
-#ifdef EMISSION
+#if defined(MIRROR)
+uniform spectrum<1>                   Kr;
+uniform sampler2D<spectrum<radiance>> reflection;  // the scene through this mirror, same pixels
+
+void main() {
+    spectrum<radiance> seen = spectrum<radiance>(texelFetch(reflection, ivec2(gl_FragCoord.xy), 0).rgb);
+    radiance = Kr * seen;
+}
+#elif defined(EMISSION)
 uniform spectrum<radiance> Le;
 uniform int                emitterTwoSided;
 
@@ -44,6 +55,19 @@ uniform normal<world>      emitterNormal;
 uniform int                emitterTwoSided;
 #else
 uniform spectrum<intensity> lightIntensity;
+// A spot light's cone (pbrt-v3's): full intensity up to cos θ = spotCosStart,
+// then δ⁴ down to spotCosTotal, nothing beyond. A point light: both -2.
+uniform direction<world>    spotAxis;
+uniform float               spotCosTotal;
+uniform float               spotCosStart;
+
+float<1> spotFalloff(direction<world> fromLight) {
+    float<1> c = dot(spotAxis, fromLight);
+    if (c < spotCosTotal) return 0.0;
+    if (c >= spotCosStart) return 1.0;
+    float<1> d = (c - spotCosTotal) / (spotCosStart - spotCosTotal);
+    return (d * d) * (d * d);
+}
 #endif
 
 // Visibility from a cube shadow map laid out as 3 x 2 faces in one texture of
@@ -90,7 +114,7 @@ void main() {
     if (cosY <= 0.0) discard;
     spectrum<intensity> I = Le * cosY * sampleArea;
 #else
-    spectrum<intensity> I = lightIntensity;
+    spectrum<intensity> I = lightIntensity * spotFalloff(-wi);
 #endif
 
     float<1> cosAlpha = max(2.0 * float<1>(dot(n, wo)) * float<1>(cosX) - float<1>(dot(wo, wi)), 0.0);

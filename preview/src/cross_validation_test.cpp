@@ -7,6 +7,8 @@
 // spheres. They are not loosened to pass.
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <safegi/runtime_gl/context.hpp>
@@ -116,6 +118,29 @@ TEST_F(CrossValidation, MotionBlur) {
 // streak, drawn at 128 discrete times against the CPU's random ones.
 TEST_F(CrossValidation, MovingEmitter) {
   expect_agreement({bundled("moving-light.json"), 80, 60, 1024, 8, 128, 0.17});
+}
+
+// A planar mirror (one bounce: the scene rendered through its plane) and a
+// spot light, against the CPU renderer's direct lighting, which follows
+// mirrors. No mirror sees another here, so one bounce is the whole answer.
+TEST_F(CrossValidation, PlanarMirrorAndSpotLight) {
+  expect_agreement({SAFEGI_PREVIEW_SCENES_DIR "/mirror-planes.json", 96, 72, 1024, 8, 64, 0.03});
+}
+
+// Curved mirrors are not reflected: the preview names them (main() says so
+// on stderr and in the image files) and composites only the planar ones.
+TEST_F(CrossValidation, CurvedMirrorsAreNamedPlanarOnesReflect) {
+  Scene scene = render::load_scene(bundled("mirror.json"));
+  PreviewOptions options;
+  options.width = 32;
+  options.height = 32;
+  options.passes = 3;
+  options.light_samples = 2;
+  Preview preview(scene, options);
+  EXPECT_EQ(preview.curved_mirrors(), std::vector<std::string>{"mirror ball"});
+  FrameStats stats;
+  preview.render(&stats);
+  EXPECT_EQ(stats.mirror_views, 3);  // the mirror wall, once per pass
 }
 
 }  // namespace

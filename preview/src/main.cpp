@@ -13,6 +13,7 @@
 #include <safegi/runtime_gl/context.hpp>
 
 #include "safegi/cpu_renderer/image_io.hpp"
+#include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 #include "safegi/preview/preview.hpp"
 
@@ -40,11 +41,12 @@ double median(std::vector<double> values) {
 int main(int argc, char** argv) {
   const Clock::time_point start = Clock::now();
   CLI::App app{"SafeGI GL preview: direct illumination of a scene file (docs/preview.md) to EXR and PNG"};
-  std::string scene_file, output = "preview.exr", resolution, platform;
+  std::string scene_file, output = "preview.exr", resolution, platform, length_unit;
   safegi::preview::PreviewOptions options;
   int time_samples = 0, frames = 1;
   bool no_area_shadows = false, stats = false, pfm = false;
-  app.add_option("scene", scene_file, "scene file (.json, docs/scene-format.md)")->required();
+  app.add_option("scene", scene_file, "scene file (.json, docs/scene-format.md; or a pbrt-v3 .pbrt)")->required();
+  app.add_option("--length-unit", length_unit, "what one pbrt length unit is (m, cm, mm, in, ...; .pbrt scenes only)");
   app.add_option("-o,--output", output, "NAME.exr: writes NAME.exr (linear) and NAME.png (sRGB); NAME.png: PNG only");
   app.add_option("--light-samples", options.light_samples, "points per area light per pass (default 16)")
       ->check(CLI::Range(1, 1 << 16));
@@ -75,7 +77,19 @@ int main(int argc, char** argv) {
     std::filesystem::path out(output);
     if (out.extension() != ".exr" && out.extension() != ".png")
       throw std::runtime_error("-o: expected a name ending in .exr or .png, got '" + output + "'");
-    safegi::render::Scene scene = safegi::render::load_scene(scene_file);
+    safegi::render::Scene scene;
+    if (std::filesystem::path(scene_file).extension() == ".pbrt") {
+      if (length_unit.empty())
+        throw safegi::render::PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length "
+                                              "unit is with --length-unit (m, cm, mm, in, ...)\n");
+      safegi::render::PbrtScene imported =
+          safegi::render::load_pbrt_scene(scene_file, {safegi::render::parse_length_unit(length_unit), {}});
+      std::cerr << imported.warnings;
+      scene = std::move(imported.scene);
+    } else {
+      if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
+      scene = safegi::render::load_scene(scene_file);
+    }
     if (!resolution.empty()) {
       std::smatch match;
       if (!std::regex_match(resolution, match, std::regex(R"((\d{1,5})x(\d{1,5}))")))
@@ -109,11 +123,20 @@ int main(int argc, char** argv) {
       frame_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       if (f == 0) first_frame = seconds_since(start);
     }
+    // Curved mirrors are drawn black: said on stderr and in the image files.
+    std::string note;
+    if (!preview.curved_mirrors().empty()) {
+      std::string names;
+      for (const std::string& name : preview.curved_mirrors()) names += (names.empty() ? "" : ", ") + name;
+      note = "SafeGI preview: curved mirrors are not previewed and appear black (" + names +
+             "); planar mirrors show one-bounce reflections";
+      std::fprintf(stderr, "warning: %s\n", note.c_str());
+    }
     if (out.extension() == ".exr") {
-      safegi::render::write_exr(out, image);
-      safegi::render::write_png(std::filesystem::path(out).replace_extension(".png"), image);
+      safegi::render::write_exr(out, image, note);
+      safegi::render::write_png(std::filesystem::path(out).replace_extension(".png"), image, note);
     } else {
-      safegi::render::write_png(out, image);
+      safegi::render::write_png(out, image, note);
     }
     if (pfm) safegi::render::write_pfm(std::filesystem::path(out).replace_extension(".pfm"), image);
     if (stats) {
@@ -129,6 +152,9 @@ int main(int argc, char** argv) {
                    loaded, context_ready - loaded, programs_ready - context_ready, first_frame, frames,
                    wall * 1e3, 1.0 / wall, sorted.front() * 1e3, sorted.back() * 1e3, cpu * 1e3);
     }
+  } catch (const safegi::render::PbrtImportError& error) {
+    std::cerr << error.what();
+    return 1;
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 1;

@@ -32,10 +32,14 @@ struct CameraHandles {
   gl::uniform_id<ObjectToWorld> world_from_object;
   gl::uniform_id<ClipFromWorld> clip_from_world;
   gl::uniform_id<PointWorld> eye;
+  gl::uniform_id<NormalWorld> clip_normal;
+  gl::uniform_id<PointWorld> clip_point;
   explicit CameraHandles(const gl::Program& p)
       : world_from_object(p.uniform<ObjectToWorld>("worldFromObject")),
         clip_from_world(p.uniform<ClipFromWorld>("clipFromWorld")),
-        eye(p.uniform<PointWorld>("eye")) {}
+        eye(p.uniform<PointWorld>("eye")),
+        clip_normal(p.uniform<NormalWorld>("clipNormal")),
+        clip_point(p.uniform<PointWorld>("clipPoint")) {}
 };
 
 struct EmissionPass {
@@ -62,8 +66,20 @@ struct LightPass {
   gl::output_id<Radiance> radiance = program.output<Radiance>("radiance");
 };
 
+// Point and spot lights (a point light is a spot whose cone is everything).
 struct PointLightPass : LightPass {
   gl::uniform_id<Intensity> intensity = program.uniform<Intensity>("lightIntensity");
+  gl::uniform_id<DirectionWorld> spot_axis = program.uniform<DirectionWorld>("spotAxis");
+  gl::uniform_id<float> spot_cos_total = program.uniform<float>("spotCosTotal");
+  gl::uniform_id<float> spot_cos_start = program.uniform<float>("spotCosStart");
+};
+
+// A planar mirror's surface: Kr times what its reflection pass saw at each pixel.
+struct MirrorPass {
+  gl::Program program;
+  CameraHandles camera{program};
+  gl::uniform_id<Reflectance> kr = program.uniform<Reflectance>("Kr");
+  gl::sampler_id<Radiance> reflection = program.sampler<Radiance>("reflection");
 };
 
 struct AreaSamplePass : LightPass {
@@ -84,6 +100,45 @@ struct DepthPass {
 
 gl::Program camera_program(const char* define, const char* name) {
   return load_embedded_program({"scene.sgl.vert", "shade.sgl.frag"}, Defines{{define, "1"}}, name);
+}
+
+// Where a pass looks from: the camera, or the camera seen through a mirror's
+// plane (clip includes the reflection, eye is the reflected eye, and what lies
+// behind the plane is clipped away).
+struct View {
+  gl::framebuffer* target = nullptr;
+  ClipFromWorld clip;
+  PointWorld eye;
+  bool through_mirror = false;
+  // Towards the camera. Without a mirror zero, so that nothing is clipped even
+  // where a driver (llvmpipe) applies gl_ClipDistance with GL_CLIP_DISTANCE0 off.
+  NormalWorld plane_normal = sg::from_raw<NormalWorld>(glm::vec3(0.0f));
+  PointWorld plane_point;
+  int skip_shape = -1;       // the mirror itself
+};
+
+// One planar mirror: its plane in object space and the target its reflection
+// pass renders into, every pass anew.
+struct MirrorTarget {
+  int shape;
+  Plane plane;
+  gl::texture2d<Radiance> image;
+  gl::framebuffer target;
+  std::optional<View> view;  // this pass's; empty when the camera sees its plane edge-on
+  MirrorTarget(int s, Plane p, int width, int height, const gl::output_id<Radiance>& radiance)
+      : shape(s), plane(p), image(width, height), target(width, height) {
+    target.attach(radiance, image);
+    target.add_depth();
+  }
+};
+
+// The reflection across the plane through `point` with unit normal `n`: x − 2 n (n · (x − point)).
+glm::mat4 reflection_across(glm::vec3 point, glm::vec3 n) {
+  glm::mat4 m(1.0f);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) m[c][r] -= 2 * n[r] * n[c];
+  m[3] = glm::vec4(2 * glm::dot(n, point) * n, 1.0f);
+  return m;
 }
 
 // A cube shadow map: six faces of distances in one 3 x 2 texture.
@@ -139,6 +194,7 @@ struct Preview::Impl {
   EmissionPass emission{camera_program("EMISSION", "emission")};
   PointLightPass point_pass{{camera_program("POINT_LIGHT", "point_light")}};
   AreaSamplePass area_pass{{camera_program("AREA_SAMPLE", "area_sample")}};
+  MirrorPass mirror_pass{camera_program("MIRROR", "mirror")};
   DepthPass depth{load_embedded_program({"shadow_depth.sgl.vert", "shadow_depth.sgl.frag"}, {}, "shadow_depth")};
 
   gl::vertex_buffer<PointObject> positions{std::span<const PointObject>(meshes.positions)};
@@ -150,6 +206,8 @@ struct Preview::Impl {
   std::vector<ShadowCube> point_shadows;
   std::optional<ShadowCube> area_shadow;
   bool point_shadows_valid = false;
+  std::vector<MirrorTarget> mirrors;     // planar mirrors, reflected one bounce
+  std::vector<std::string> curved_mirrors;  // mirrors drawn black: not planar
   FrameStats stats;
 
   Impl(const Scene& s, PreviewOptions o)
@@ -165,13 +223,29 @@ struct Preview::Impl {
     light_geometry.bind(depth.program.attribute<PointObject>("position"), positions);
     frame.attach(emission.radiance, accumulation);
     frame.add_depth();
-    for (size_t i = 0; i < scene.point_lights.size(); ++i) point_shadows.emplace_back(options.shadow_resolution, depth);
+    for (size_t i = 0; i < scene.point_lights.size() + scene.spot_lights.size(); ++i)
+      point_shadows.emplace_back(options.shadow_resolution, depth);
     if (!emitters.empty() && options.area_shadows) area_shadow.emplace(options.area_shadow_resolution, depth);
+    for (size_t s = 0; s < scene.shapes.size(); ++s) {
+      const Shape& shape = scene.shapes[s];
+      if (shape.material < 0 || scene.materials[shape.material].type != Material::Type::mirror) continue;
+      if (std::optional<Plane> plane = plane_of(shape))
+        mirrors.emplace_back(static_cast<int>(s), *plane, width, height, emission.radiance);
+      else
+        curved_mirrors.push_back(shape.name.empty() ? "shapes[" + std::to_string(s) + "]" : shape.name);
+    }
+  }
+
+  // The point-like lights: point lights, then spot lights, with their cones.
+  size_t point_like_count() const { return scene.point_lights.size() + scene.spot_lights.size(); }
+  PointWorld point_like_position(size_t i) const {
+    return i < scene.point_lights.size() ? scene.point_lights[i].position
+                                         : scene.spot_lights[i - scene.point_lights.size()].position;
   }
 
   Length near_distance() const { return poses.bounds_radius() * 1e-4f; }
 
-  ClipFromWorld clip_from_world(glm::vec2 jitter) const {
+  ClipFromWorld clip_from_world(glm::vec2 jitter, const glm::mat4& reflection = glm::mat4(1.0f)) const {
     const Camera& camera = scene.camera;
     float tangent = std::tan(0.5f * sg::raw(camera.fov));
     float shorter = static_cast<float>(std::min(width, height));
@@ -183,7 +257,7 @@ struct Preview::Impl {
     // Moves the image by a fraction of a pixel: passes sample the pixel's area like the CPU renderer's box filter.
     glm::mat4 shift = glm::translate(glm::mat4(1.0f), glm::vec3((2 * jitter.x - 1) / static_cast<float>(width),
                                                                  (2 * jitter.y - 1) / static_cast<float>(height), 0));
-    return ClipFromWorld::from_matrix(shift * projection * view);
+    return ClipFromWorld::from_matrix(shift * projection * view * reflection);
   }
 
   void set_cube_faces(ShadowCube& cube, PointWorld light) const {
@@ -200,6 +274,7 @@ struct Preview::Impl {
   void render_shadow_cube(ShadowCube& cube, PointWorld light, Time time, int skip_shape, FaceFilter faces) {
     set_cube_faces(cube, light);
     cube.target.bind();
+    glDisable(GL_CLIP_DISTANCE0);  // the depth pass's vertex shader writes no clip distance
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -223,10 +298,12 @@ struct Preview::Impl {
     }
   }
 
-  // Starts a pass in the accumulation buffer: depth cleared, colour kept (but on the first pass).
-  void begin_camera_pass(bool first_pass) {
-    frame.bind();
-    if (first_pass) {
+  // Starts a pass in a view's target: depth cleared, colour kept (but on the
+  // first pass; a mirror's target starts empty every pass).
+  void begin_camera_pass(const View& view, bool clear_colour) {
+    view.target->bind();
+    set_clipping(view);
+    if (clear_colour) {
       const float zero[4] = {0, 0, 0, 0};
       glClearBufferfv(GL_COLOR, 0, zero);
     }
@@ -237,10 +314,16 @@ struct Preview::Impl {
     glBlendFunc(GL_ONE, GL_ONE);
   }
 
-  // Back to the accumulation buffer after a shadow map, keeping the pass's depth:
+  static void set_clipping(const View& view) {
+    if (view.through_mirror) glEnable(GL_CLIP_DISTANCE0);
+    else glDisable(GL_CLIP_DISTANCE0);
+  }
+
+  // Back to a view's target after a shadow map, keeping the pass's depth:
   // light passes add onto the surfaces the emission pass found nearest.
-  void resume_lighting() {
-    frame.bind();
+  void resume_lighting(const View& view) {
+    view.target->bind();
+    set_clipping(view);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
@@ -248,17 +331,20 @@ struct Preview::Impl {
     glBlendFunc(GL_ONE, GL_ONE);
   }
 
-  void set_camera(const CameraHandles& handles, const gl::Program& program, const ClipFromWorld& clip) const {
-    program.set(handles.clip_from_world, clip);
-    program.set(handles.eye, scene.camera.position);
+  void set_camera(const CameraHandles& handles, const gl::Program& program, const View& view) const {
+    program.set(handles.clip_from_world, view.clip);
+    program.set(handles.eye, view.eye);
+    program.set(handles.clip_normal, view.plane_normal);
+    program.set(handles.clip_point, view.plane_point);
   }
 
   // Emitters seen directly, and the depth every light pass then shades exactly.
-  void draw_emission(const ClipFromWorld& clip, Time time) {
+  void draw_emission(const View& view, Time time) {
     glDepthFunc(GL_LESS);
     emission.program.use();
-    set_camera(emission.camera, emission.program, clip);
+    set_camera(emission.camera, emission.program, view);
     for (size_t s = 0; s < scene.shapes.size(); ++s) {
+      if (static_cast<int>(s) == view.skip_shape) continue;
       const Shape& shape = scene.shapes[s];
       emission.program.set(emission.le, shape.emission ? *shape.emission : Radiance{});
       emission.program.set(emission.two_sided, int32_t{shape.two_sided_emission});
@@ -266,22 +352,29 @@ struct Preview::Impl {
       camera_geometry.draw_triangles(meshes.ranges[s].first, meshes.ranges[s].count);
       ++stats.draw_calls;
     }
-    resume_lighting();
+    resume_lighting(view);
   }
 
-  // Every lit surface once, shaded by the light the pass's uniforms hold.
-  void draw_lit_surfaces(const LightPass& pass, const ShadowCube& cube, const ClipFromWorld& clip, Time time) {
+  // Every lit surface once, shaded by the light the pass's uniforms hold, in
+  // every view (the camera's and each mirror's).
+  void draw_lit_surfaces(const LightPass& pass, const ShadowCube& cube, const std::vector<View>& views, Time time) {
+    for (const View& view : views) {
+      resume_lighting(view);
+      draw_lit_surfaces(pass, cube, view, time);
+    }
+  }
+  void draw_lit_surfaces(const LightPass& pass, const ShadowCube& cube, const View& view, Time time) {
     pass.program.use();
-    set_camera(pass.camera, pass.program, clip);
+    set_camera(pass.camera, pass.program, view);
     pass.program.bind(pass.shadow_map, cube.distances, 0);
     pass.program.set(pass.shadow_clip_from_world, cube.clip_from_world);
     pass.program.set(pass.face_texels, static_cast<float>(cube.face_texels));
     pass.program.set(pass.bias_texels, options.shadow_bias_texels);
     for (size_t s = 0; s < scene.shapes.size(); ++s) {
       const Shape& shape = scene.shapes[s];
-      if (shape.material < 0) continue;
+      if (shape.material < 0 || static_cast<int>(s) == view.skip_shape) continue;
       const Material& material = scene.materials[shape.material];
-      // Mirrors are beyond a direct-lighting preview (docs/preview.md): black.
+      // Mirrors get no direct light (a delta BRDF); planar ones reflect in draw_mirrors.
       if (material.type != Material::Type::lambert && material.type != Material::Type::phong) continue;
       bool phong = material.type == Material::Type::phong;
       pass.program.set(pass.kd, material.diffuse);
@@ -293,23 +386,33 @@ struct Preview::Impl {
     }
   }
 
-  void draw_point_lights(const ClipFromWorld& clip, Time time) {
-    for (size_t i = 0; i < scene.point_lights.size(); ++i) {
-      const PointLight& light = scene.point_lights[i];
-      point_pass.program.set(point_pass.light_position, light.position);
-      point_pass.program.set(point_pass.intensity, light.intensity);
-      draw_lit_surfaces(point_pass, point_shadows[i], clip, time);
+  void draw_point_lights(const std::vector<View>& views, Time time) {
+    for (size_t i = 0; i < point_like_count(); ++i) {
+      if (i < scene.point_lights.size()) {
+        const PointLight& light = scene.point_lights[i];
+        point_pass.program.set(point_pass.light_position, light.position);
+        point_pass.program.set(point_pass.intensity, light.intensity);
+        point_pass.program.set(point_pass.spot_cos_total, -2.0f);  // every direction inside the "cone"
+        point_pass.program.set(point_pass.spot_cos_start, -2.0f);
+      } else {
+        const SpotLight& light = scene.spot_lights[i - scene.point_lights.size()];
+        point_pass.program.set(point_pass.light_position, light.position);
+        point_pass.program.set(point_pass.intensity, light.intensity);
+        point_pass.program.set(point_pass.spot_axis, light.direction);
+        point_pass.program.set(point_pass.spot_cos_total, sg::cos(light.cone_angle));
+        point_pass.program.set(point_pass.spot_cos_start, sg::cos(light.cone_angle - light.cone_delta));
+      }
+      draw_lit_surfaces(point_pass, point_shadows[i], views, time);
     }
   }
 
-  void draw_area_lights(const ClipFromWorld& clip, Time time, int pass_index) {
+  void draw_area_lights(const std::vector<View>& views, Time time, int pass_index) {
     if (emitters.empty()) return;
     const int n = std::max(1, options.light_samples);
     // Without shadows, a map that holds only "far" lets every point see the light.
     if (!area_shadow) {
       area_shadow.emplace(1, depth);
       render_shadow_cube(*area_shadow, scene.camera.position, time, -1, [](int) { return false; });
-      resume_lighting();
     }
     for (const Emitter& still : emitters) {
       // A moving emitter is sampled where it is at this shutter time, as the CPU renderer does.
@@ -326,13 +429,53 @@ struct Preview::Impl {
           glm::vec3 front = sg::raw(y.normal);
           render_shadow_cube(*area_shadow, y.position, time, emitter.shape(),
                              [&](int f) { return emitter.two_sided() || face_sees_front(f, front); });
-          resume_lighting();
         }
         area_pass.program.set(area_pass.light_position, y.position);
         area_pass.program.set(area_pass.emitter_normal, y.normal);
-        draw_lit_surfaces(area_pass, *area_shadow, clip, time);
+        draw_lit_surfaces(area_pass, *area_shadow, views, time);
         ++stats.area_samples;
       }
+    }
+  }
+
+  // The camera seen through `mirror`'s plane at `time`; none when the camera
+  // lies in the plane.
+  std::optional<View> mirror_view(MirrorTarget& mirror, glm::vec2 jitter, Time time) const {
+    ObjectToWorld pose = poses.at(mirror.shape, time);
+    PointWorld point = pose(mirror.plane.point);
+    NormalWorld normal = pose(mirror.plane.unit_normal);  // renormalised by the map
+    Length height = sg::dot(normal, scene.camera.position - point);
+    if (height == sg::zero) return std::nullopt;
+    if (height < sg::zero) {
+      normal = -normal;  // mirrors are two-sided: the side the camera is on reflects
+      height = -height;
+    }
+    glm::vec3 n = sg::raw(normal);
+    View view;
+    view.target = &mirror.target;
+    view.clip = clip_from_world(jitter, reflection_across(sg::raw(point), n));
+    view.eye = sg::from_raw<PointWorld>(sg::raw(scene.camera.position) - 2 * sg::raw(height) * n);
+    view.through_mirror = true;
+    view.plane_normal = normal;
+    view.plane_point = point;
+    view.skip_shape = mirror.shape;
+    return view;
+  }
+
+  // Each planar mirror's surface, Kr times its reflection pass, added where the camera sees it.
+  void draw_mirrors(const View& camera_view, Time time) {
+    if (mirrors.empty()) return;
+    resume_lighting(camera_view);
+    mirror_pass.program.use();
+    set_camera(mirror_pass.camera, mirror_pass.program, camera_view);
+    for (const MirrorTarget& mirror : mirrors) {
+      if (!mirror.view) continue;
+      mirror_pass.program.bind(mirror_pass.reflection, mirror.image, 0);
+      mirror_pass.program.set(mirror_pass.kr, scene.materials[scene.shapes[mirror.shape].material].specular);
+      mirror_pass.program.set(mirror_pass.camera.world_from_object, poses.at(mirror.shape, time));
+      camera_geometry.draw_triangles(meshes.ranges[mirror.shape].first, meshes.ranges[mirror.shape].count);
+      ++stats.draw_calls;
+      ++stats.mirror_views;
     }
   }
 
@@ -344,16 +487,28 @@ struct Preview::Impl {
       float stratum = (static_cast<float>(p) + 0.5f) / static_cast<float>(passes);
       Time time = camera.shutter_open + (camera.shutter_close - camera.shutter_open) * stratum;
       glm::vec2 jitter = passes > 1 ? pixel_offset(p, passes) : glm::vec2(0.5f);
-      ClipFromWorld clip = clip_from_world(jitter);
       if (!point_shadows_valid || poses.animated() || options.refresh_shadows) {
-        for (size_t i = 0; i < scene.point_lights.size(); ++i)
-          render_shadow_cube(point_shadows[i], scene.point_lights[i].position, time, -1, [](int) { return true; });
+        for (size_t i = 0; i < point_like_count(); ++i)
+          render_shadow_cube(point_shadows[i], point_like_position(i), time, -1, [](int) { return true; });
         point_shadows_valid = true;
       }
-      begin_camera_pass(p == 0);
-      draw_emission(clip, time);
-      draw_point_lights(clip, time);
-      draw_area_lights(clip, time, p);
+      View camera_view;
+      camera_view.target = &frame;
+      camera_view.clip = clip_from_world(jitter);
+      camera_view.eye = camera.position;
+      std::vector<View> views{camera_view};
+      begin_camera_pass(camera_view, p == 0);
+      draw_emission(camera_view, time);
+      for (MirrorTarget& mirror : mirrors) {
+        mirror.view = mirror_view(mirror, jitter, time);
+        if (!mirror.view) continue;
+        begin_camera_pass(*mirror.view, true);
+        draw_emission(*mirror.view, time);
+        views.push_back(*mirror.view);
+      }
+      draw_point_lights(views, time);
+      draw_area_lights(views, time, p);
+      draw_mirrors(camera_view, time);
       ++stats.passes;
     }
     std::vector<Radiance> texels = accumulation.read_back();
@@ -380,6 +535,7 @@ render::Image Preview::render(FrameStats* stats) {
 }
 
 int Preview::width() const { return impl_->width; }
+const std::vector<std::string>& Preview::curved_mirrors() const { return impl_->curved_mirrors; }
 int Preview::height() const { return impl_->height; }
 
 }  // namespace safegi::preview

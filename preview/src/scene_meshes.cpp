@@ -105,6 +105,10 @@ ScenePoses::ScenePoses(const Scene& scene) : scene_(scene) {
     lower = glm::min(lower, sg::raw(light.position));
     upper = glm::max(upper, sg::raw(light.position));
   }
+  for (const SpotLight& light : scene.spot_lights) {
+    lower = glm::min(lower, sg::raw(light.position));
+    upper = glm::max(upper, sg::raw(light.position));
+  }
   if (!(lower.x <= upper.x)) lower = upper = glm::vec3(0.0f);
   center_ = sg::from_raw<PointWorld>(0.5f * (lower + upper));
   radius_ = sg::from_raw<Length>(std::max(0.5f * glm::length(upper - lower), 1e-6f));
@@ -166,6 +170,33 @@ std::vector<Emitter> emitters_of(const Scene& scene) {
     if (emitter.area() > sg::zero) emitters.push_back(std::move(emitter));
   }
   return emitters;
+}
+
+std::optional<Plane> plane_of(const Shape& shape) {
+  if (shape.type != Shape::Type::mesh || shape.indices.size() < 3) return std::nullopt;
+  // The normal of the largest triangle, the plane through its first vertex.
+  float largest = 0;
+  Plane plane;
+  glm::vec3 lower(INFINITY), upper(-INFINITY);
+  for (PointObject p : shape.positions) {
+    lower = glm::min(lower, sg::raw(p));
+    upper = glm::max(upper, sg::raw(p));
+  }
+  for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+    PointObject a = shape.positions[shape.indices[i]];
+    auto n = sg::cross(shape.positions[shape.indices[i + 1]] - a, shape.positions[shape.indices[i + 2]] - a);
+    float area = sg::raw(sg::length(n));
+    if (area > largest) {
+      largest = area;
+      plane.point = a;
+      plane.unit_normal = sg::to_normal(sg::normalize(n));
+    }
+  }
+  if (!(largest > 0)) return std::nullopt;
+  float size = glm::length(upper - lower);
+  for (uint32_t index : shape.indices)
+    if (std::fabs(sg::raw(sg::dot(plane.unit_normal, shape.positions[index] - plane.point))) > 1e-5f * size) return std::nullopt;
+  return plane;
 }
 
 void r2_point(uint32_t index, float& u, float& v) {

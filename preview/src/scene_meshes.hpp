@@ -85,6 +85,16 @@ class Emitter {
 
 std::vector<Emitter> emitters_of(const Scene& scene);
 
+// A flat shape's plane in object space: a point on it and its unit normal
+// (the winding's). nullopt for a sphere, a degenerate mesh, or a mesh whose
+// vertices leave the plane by more than 1e-5 of its size: a curved mirror,
+// which the preview cannot reflect with one planar reflection pass.
+struct Plane {
+  PointObject point;
+  normal<Object> unit_normal;
+};
+std::optional<Plane> plane_of(const Shape& shape);
+
 // The i-th point of the R2 low-discrepancy sequence in [0,1)²: consecutive
 // runs of any length cover the square evenly, so pass p can take points
 // p·N … p·N+N−1 and all passes together stay well spread.

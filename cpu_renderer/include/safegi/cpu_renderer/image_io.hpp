@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 #include "safegi/cpu_renderer/image.hpp"
 
@@ -14,8 +15,10 @@ class ImageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-void write_exr(const std::filesystem::path& file, const Image& image);
-void write_png(const std::filesystem::path& file, const Image& image);
+// `description`, when given, goes into the file's ImageDescription (EXR
+// header, PNG text chunk): what a viewer should know about the picture.
+void write_exr(const std::filesystem::path& file, const Image& image, std::string_view description = {});
+void write_png(const std::filesystem::path& file, const Image& image, std::string_view description = {});
 // Reads any RGB(A) image OpenImageIO understands as linear floats (first three channels).
 Image read_image(const std::filesystem::path& file);
 

@@ -45,6 +45,27 @@ struct PointLight {
   Intensity intensity;
 };
 
+// A spot light as pbrt-v3 defines it: intensity I (on its axis) times a
+// falloff of the angle θ to the axis — 1 up to cone_angle − cone_delta, then
+// δ⁴ with δ = (cos θ − cos cone_angle) / (cos(cone_angle − cone_delta) − cos cone_angle),
+// and 0 beyond cone_angle.
+struct SpotLight {
+  PointWorld position;
+  DirectionWorld direction;
+  Intensity intensity;
+  Angle cone_angle = sg::zero;
+  Angle cone_delta = sg::zero;
+};
+
+// The spot's falloff towards a direction at cos θ to its axis.
+inline float spot_falloff(const SpotLight& light, float cos_theta) {
+  float cos_total = sg::cos(light.cone_angle), cos_start = sg::cos(light.cone_angle - light.cone_delta);
+  if (cos_theta < cos_total) return 0;
+  if (cos_theta >= cos_start) return 1;
+  float delta = (cos_theta - cos_total) / (cos_start - cos_total);
+  return (delta * delta) * (delta * delta);
+}
+
 struct Camera {
   PointWorld position;
   PointWorld look_at;
@@ -77,6 +98,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<PointLight> point_lights;
+  std::vector<SpotLight> spot_lights;
 };
 
 }  // namespace safegi::render

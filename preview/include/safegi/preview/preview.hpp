@@ -1,11 +1,13 @@
 // The GL preview: direct illumination of a CPU-renderer scene with OpenGL —
-// point lights with cube shadow maps, area lights as many point-like samples
-// with their own shadow maps, Lambert and Phong, motion blur by accumulating
-// passes over the shutter. Built checked (SafeGI::preview) and unchecked
+// point and spot lights with cube shadow maps, area lights as many point-like
+// samples with their own shadow maps, Lambert and Phong, planar mirrors with
+// one-bounce reflections, motion blur by accumulating passes over the shutter. Built checked (SafeGI::preview) and unchecked
 // (SafeGI::preview_unchecked) from one source. See docs/preview.md.
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
@@ -28,6 +30,7 @@ struct FrameStats {
   int area_samples = 0;       // point-like samples drawn over all passes
   int shadow_faces = 0;       // cube faces rendered into shadow maps
   int draw_calls = 0;
+  int mirror_views = 0;       // planar-mirror reflections composited over all passes
 };
 
 // Needs a current runtime_gl Context for its whole life.
@@ -42,6 +45,9 @@ class Preview {
   render::Image render(FrameStats* stats = nullptr);
   int width() const;
   int height() const;
+  // The mirrors the preview does not reflect (curved: spheres, non-planar
+  // meshes), by shape name; they are drawn black.
+  const std::vector<std::string>& curved_mirrors() const;
 
  private:
   struct Impl;

@@ -1,0 +1,459 @@
+// The importer's state machine, transforms and options block (camera, film,
+// sampler, integrator, filter), and the public entry points. The world block's
+// materials, shapes and lights are in pbrt_world.cpp.
+#include "pbrt_importer.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <safegi/diagnostics/render.hpp>
+
+#include "safegi/cpu_renderer/unit_expression.hpp"
+
+namespace safegi::render {
+
+namespace pbrt {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+Matrix translate(glm::dvec3 d) {
+  Matrix m(1.0);
+  m[3] = glm::dvec4(d, 1.0);
+  return m;
+}
+
+Matrix scale(glm::dvec3 s) {
+  Matrix m(1.0);
+  m[0][0] = s.x, m[1][1] = s.y, m[2][2] = s.z;
+  return m;
+}
+
+// pbrt-v3's Rotate(theta, axis) (core/transform.cpp), angle in degrees.
+Matrix rotate(double degrees, glm::dvec3 axis) {
+  glm::dvec3 a = glm::normalize(axis);
+  double s = std::sin(degrees * kDegree), c = std::cos(degrees * kDegree);
+  double r[3][3] = {{a.x * a.x + (1 - a.x * a.x) * c, a.x * a.y * (1 - c) - a.z * s, a.x * a.z * (1 - c) + a.y * s},
+                    {a.x * a.y * (1 - c) + a.z * s, a.y * a.y + (1 - a.y * a.y) * c, a.y * a.z * (1 - c) - a.x * s},
+                    {a.x * a.z * (1 - c) - a.y * s, a.y * a.z * (1 - c) + a.x * s, a.z * a.z + (1 - a.z * a.z) * c}};
+  Matrix m(1.0);
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) m[col][row] = r[row][col];
+  return m;
+}
+
+// Transform [ ... ]: pbrt-v3 reads the 16 numbers column by column.
+Matrix from_numbers(const std::vector<double>& v) {
+  Matrix m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = v[4 * c + r];
+  return m;
+}
+
+bool finite(const Matrix& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+// pbrt-v3 uses transforms only through their inverses too: a singular one has none.
+bool invertible(const Matrix& m) {
+  double det = glm::determinant(m);
+  return std::isnormal(det) && finite(glm::inverse(m));
+}
+
+SourceRange span(const Directive& d) {
+  return d.arguments.begin.file == d.range.begin.file ? SourceRange{d.range.begin, d.arguments.end} : d.range;
+}
+
+// Shape of the directive table below: which block a directive belongs to.
+enum class Where { anywhere, options, world };
+struct DirectiveRule {
+  std::string_view name;
+  Where where;
+};
+constexpr DirectiveRule kRules[] = {
+    {"Identity", Where::anywhere},         {"Translate", Where::anywhere},        {"Scale", Where::anywhere},
+    {"Rotate", Where::anywhere},           {"LookAt", Where::anywhere},           {"Transform", Where::anywhere},
+    {"ConcatTransform", Where::anywhere},  {"CoordinateSystem", Where::anywhere}, {"CoordSysTransform", Where::anywhere},
+    {"ActiveTransform", Where::anywhere},  {"MediumInterface", Where::anywhere},  {"MakeNamedMedium", Where::anywhere},
+    {"TransformTimes", Where::options},    {"Camera", Where::options},            {"Film", Where::options},
+    {"Sampler", Where::options},           {"Integrator", Where::options},        {"PixelFilter", Where::options},
+    {"Accelerator", Where::options},       {"WorldBegin", Where::options},
+};
+
+}  // namespace
+
+Importer::Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory)
+    : sources_(sources), options_(options), search_directory_(std::move(search_directory)) {
+  auto matte = std::make_shared<MaterialInstance>();
+  matte->type = "matte";  // pbrt-v3's default material: matte, Kd 0.5
+  state_.material = matte;
+  state_.named_materials = std::make_shared<std::map<std::string, std::shared_ptr<const MaterialInstance>>>();
+  state_.spectrum_textures = std::make_shared<std::map<std::string, TextureEntry>>();
+  state_.float_textures = std::make_shared<std::map<std::string, TextureEntry>>();
+  // pbrt-v3's defaults when a scene leaves them out.
+  result_.scene.settings.width = 1280;
+  result_.scene.settings.height = 720;
+  result_.scene.settings.spp = 16;
+  result_.scene.settings.integrator = IntegratorType::path;
+  result_.scene.settings.max_depth = 5;
+}
+
+void Importer::warn(SourceRange at, std::string message, std::string hint) {
+  Diagnostic diagnostic = Diagnostic::warning(at, std::move(message));
+  diagnostic.hint = std::move(hint);
+  warnings_.push_back(std::move(diagnostic));
+}
+
+void Importer::report_unused(const ParamSet& params) {
+  for (const Param* param : params.unused())
+    warn(param->declaration,
+         "parameter \"" + param->type_name + " " + param->name + "\" of " + params.context() + " is not used",
+         "pbrt-v3 ignores it too (misspelt?)");
+}
+
+PbrtScene Importer::run(FileId main_file) {
+  Parser parser(sources_, main_file, search_directory_, options_.read_file);
+  SourceRange last{};
+  while (std::optional<Directive> d = parser.next()) {
+    last = d->range;
+    if (block_ == Block::ended)
+      fail(d->range, "directive after WorldEnd", "a scene file renders one image: one WorldBegin ... WorldEnd block");
+    directive(*d);
+  }
+  if (block_ != Block::ended) {
+    SourceLocation end = sources_.location_of(main_file, static_cast<uint32_t>(sources_.text(main_file).size()));
+    SourceRange at = last.valid() ? last : SourceRange{end, end};
+    fail(at, block_ == Block::options ? "the scene ends before WorldBegin" : "the scene ends before WorldEnd",
+         "a truncated file? pbrt-v3 renders at WorldEnd");
+  }
+  for (const Diagnostic& w : warnings_) result_.warnings += render_text(w, sources_);
+  return std::move(result_);
+}
+
+void Importer::directive(const Directive& d) {
+  for (const DirectiveRule& rule : kRules) {
+    if (rule.name != d.name) continue;
+    if (rule.where == Where::options && block_ != Block::options)
+      fail(d.range, d.name + " must come before WorldBegin", "pbrt-v3 sets render options only outside the world block");
+    if (d.name == "WorldBegin") return world_begin(d);
+    if (rule.where == Where::options) return options_directive(d);
+    return transform_directive(d);
+  }
+  if (block_ != Block::world)
+    fail(d.range, d.name + " must come between WorldBegin and WorldEnd", "pbrt-v3 describes the scene in the world block");
+  world_directive(d);
+}
+
+// ---------------------------------------------------------------------------
+// Transforms (pbrt-v3: the current transform is post-multiplied)
+
+void Importer::transform_directive(const Directive& d) {
+  const std::vector<double>& n = d.numbers;
+  Matrix next = state_.ctm;
+  if (d.name == "Identity") {
+    next = Matrix(1.0);
+  } else if (d.name == "Translate") {
+    next = state_.ctm * translate({n[0], n[1], n[2]});
+  } else if (d.name == "Scale") {
+    next = state_.ctm * scale({n[0], n[1], n[2]});
+  } else if (d.name == "Rotate") {
+    if (!(glm::length(glm::dvec3(n[1], n[2], n[3])) > 0)) fail(d.arguments, "Rotate about a zero axis");
+    next = state_.ctm * rotate(n[0], {n[1], n[2], n[3]});
+  } else if (d.name == "LookAt") {
+    glm::dvec3 eye(n[0], n[1], n[2]), look(n[3], n[4], n[5]), up(n[6], n[7], n[8]);
+    if (!(glm::length(look - eye) > 0)) fail(d.arguments, "LookAt: the eye and the point looked at coincide");
+    if (!(glm::length(up) > 0)) fail(d.arguments, "LookAt: the up vector is zero");
+    glm::dvec3 dir = glm::normalize(look - eye);
+    glm::dvec3 side = glm::cross(glm::normalize(up), dir);
+    if (!(glm::length(side) > 0))
+      fail(d.arguments, "LookAt: the up vector is parallel to the viewing direction",
+           "pbrt-v3 would fall back to the identity transform");
+    glm::dvec3 right = glm::normalize(side), new_up = glm::cross(dir, right);
+    Matrix camera_to_world(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
+    next = state_.ctm * glm::inverse(camera_to_world);
+  } else if (d.name == "Transform") {
+    next = from_numbers(n);
+  } else if (d.name == "ConcatTransform") {
+    next = state_.ctm * from_numbers(n);
+  } else if (d.name == "CoordinateSystem") {
+    coordinate_systems_[d.strings[0]] = state_.ctm;
+    return;
+  } else if (d.name == "CoordSysTransform") {
+    auto found = coordinate_systems_.find(d.strings[0]);
+    if (found == coordinate_systems_.end())
+      fail(d.string_ranges[0], "no coordinate system named \"" + d.strings[0] + "\"",
+           "CoordinateSystem names one; pbrt-v3 defines \"camera\" at Camera and \"world\" at WorldBegin");
+    next = found->second;
+  } else if (d.name == "ActiveTransform") {
+    if (d.strings[0] != "All")
+      fail(d.arguments, "animated transforms (ActiveTransform " + d.strings[0] + ") are not supported");
+    return;
+  } else if (d.name == "MediumInterface") {
+    for (size_t i = 0; i < d.strings.size(); ++i)
+      if (!d.strings[i].empty()) fail(d.string_ranges[i], "participating media are not supported");
+    return;
+  } else if (d.name == "MakeNamedMedium") {
+    fail(span(d), "participating media (MakeNamedMedium) are not supported");
+  }
+  if (!finite(next)) fail(span(d), d.name + " makes the transform non-finite");
+  state_.ctm = next;
+}
+
+// ---------------------------------------------------------------------------
+// Options block
+
+void Importer::options_directive(const Directive& d) {
+  if (d.name == "Camera") {
+    if (d.strings[0] != "perspective")
+      fail(d.string_ranges[0], "camera \"" + d.strings[0] + "\" is not supported", "supported: \"perspective\"");
+    camera_ = d;
+    camera_from_world_ = state_.ctm;
+    coordinate_systems_["camera"] = invertible(state_.ctm) ? glm::inverse(state_.ctm) : Matrix(1.0);
+  } else if (d.name == "Film") {
+    film(d);
+  } else if (d.name == "Sampler") {
+    sampler(d);
+  } else if (d.name == "Integrator") {
+    integrator(d);
+  } else if (d.name == "PixelFilter") {
+    pixel_filter(d);
+  } else if (d.name == "Accelerator") {
+    // Which acceleration structure pbrt-v3 builds changes its speed, not its image.
+    ParamSet params(d.params, "Accelerator \"" + d.strings[0] + "\"");
+    if (d.strings[0] != "bvh" && d.strings[0] != "kdtree")
+      fail(d.string_ranges[0], "unknown accelerator \"" + d.strings[0] + "\"", "pbrt-v3 has \"bvh\" and \"kdtree\"");
+  }
+  // TransformTimes: only animated transforms use them, and those are refused.
+}
+
+void Importer::film(const Directive& d) {
+  if (d.strings[0] != "image") fail(d.string_ranges[0], "film \"" + d.strings[0] + "\" is not supported", "supported: \"image\"");
+  ParamSet params(d.params, "Film \"image\"");
+  RenderSettings& settings = result_.scene.settings;
+  settings.width = params.one_int("xresolution", 1280, 1, 65536);
+  settings.height = params.one_int("yresolution", 720, 1, 65536);
+  result_.film_filename = params.one_string("filename", "pbrt.exr");
+  params.one_float("diagonal", 35);  // the realistic camera's sensor size
+  params.reject("scale", "our images are not scaled", 1.0);
+  params.reject("maxsampleluminance", "samples are not clamped");
+  result_.crop.reset();
+  if (const Param* crop = params.find("cropwindow", {ParamType::floating})) {
+    if (crop->numbers.size() != 4) fail(crop->values, "\"float cropwindow\" takes 4 values: x0 x1 y0 y1");
+    // pbrt-v3's Film: the window in [0, 1]², rounded up to whole pixels.
+    auto clamp01 = [](double v) { return std::min(1.0, std::max(0.0, v)); };
+    double x0 = clamp01(std::min(crop->numbers[0], crop->numbers[1])), x1 = clamp01(std::max(crop->numbers[0], crop->numbers[1]));
+    double y0 = clamp01(std::min(crop->numbers[2], crop->numbers[3])), y1 = clamp01(std::max(crop->numbers[2], crop->numbers[3]));
+    CropWindow window;
+    window.x = static_cast<int>(std::ceil(settings.width * x0));
+    window.y = static_cast<int>(std::ceil(settings.height * y0));
+    window.width = static_cast<int>(std::ceil(settings.width * x1)) - window.x;
+    window.height = static_cast<int>(std::ceil(settings.height * y1)) - window.y;
+    if (window.width < 1 || window.height < 1) fail(crop->values, "the crop window holds no pixel");
+    if (window.x != 0 || window.y != 0 || window.width != settings.width || window.height != settings.height)
+      result_.crop = window;
+  }
+  report_unused(params);
+  film_ = d;
+}
+
+void Importer::sampler(const Directive& d) {
+  const std::string& type = d.strings[0];
+  ParamSet params(d.params, "Sampler \"" + type + "\"");
+  // Which sequence pbrt-v3 draws changes only the noise: ours is always the
+  // Owen-scrambled Sobol sampler. The sample count is pbrt's, rounded as it rounds.
+  int spp = 0;
+  auto round_up_to_power_of_2 = [](int n) {
+    int p = 1;
+    while (p < n) p *= 2;
+    return p;
+  };
+  if (type == "halton" || type == "sobol" || type == "02sequence" || type == "lowdiscrepancy" || type == "maxmindist" ||
+      type == "random") {
+    spp = params.one_int("pixelsamples", type == "random" ? 4 : 16, 1, 1 << 24);
+    if (type == "sobol" || type == "02sequence" || type == "lowdiscrepancy" || type == "maxmindist")
+      spp = round_up_to_power_of_2(spp);
+    if (type == "halton" && params.one_bool("samplepixelcenter", false))
+      params.fail_at(*params.find("samplepixelcenter", {ParamType::boolean}),
+                     "\"bool samplepixelcenter\" is not supported: our samples cover each pixel");
+  } else if (type == "stratified") {
+    int x = params.one_int("xsamples", 4, 1, 4096), y = params.one_int("ysamples", 4, 1, 4096);
+    if (static_cast<long long>(x) * y > (1 << 24)) fail(d.range, "more than 2^24 samples per pixel");
+    spp = x * y;
+    params.one_bool("jitter", true);
+  } else {
+    fail(d.string_ranges[0], "unknown sampler \"" + type + "\"",
+         "pbrt-v3 has \"halton\", \"sobol\", \"random\", \"stratified\", \"02sequence\" and \"maxmindist\"");
+  }
+  params.one_int("dimensions", 4, 0, 1 << 20);
+  result_.scene.settings.spp = spp;
+  report_unused(params);
+}
+
+void Importer::integrator(const Directive& d) {
+  const std::string& type = d.strings[0];
+  ParamSet params(d.params, "Integrator \"" + type + "\"");
+  RenderSettings& settings = result_.scene.settings;
+  if (type == "path") {
+    settings.integrator = IntegratorType::path;
+    // Russian roulette: pbrt-v3's starts after 3 bounces below a throughput
+    // threshold, ours after 3 bounces; both are unbiased. A threshold of 0 turns it off.
+    settings.russian_roulette = params.one_float("rrthreshold", 1) > 0;
+    params.one_string("lightsamplestrategy", "spatial");  // the light-choice density: noise only
+  } else if (type == "directlighting" || type == "whitted") {
+    // Both are direct lighting plus perfectly specular chains up to maxdepth.
+    settings.integrator = IntegratorType::direct;
+    if (type == "directlighting") params.one_string("strategy", "all");  // noise only
+  } else {
+    fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
+         "supported: \"path\", \"directlighting\" (and \"whitted\", rendered as direct lighting)");
+  }
+  settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
+  params.reject("pixelbounds", "render the whole image, or crop with --crop");
+  report_unused(params);
+}
+
+void Importer::pixel_filter(const Directive& d) {
+  ParamSet params(d.params, "PixelFilter \"" + d.strings[0] + "\"");
+  double xwidth = params.one_float("xwidth", d.strings[0] == "box" ? 0.5 : 2);
+  double ywidth = params.one_float("ywidth", d.strings[0] == "box" ? 0.5 : 2);
+  if (d.strings[0] != "box" || xwidth != 0.5 || ywidth != 0.5)
+    warn(span(d), "pixels are reconstructed with a box filter one pixel wide, not this filter",
+         "edges are slightly sharper than pbrt-v3's; the radiance is the same");
+  else
+    report_unused(params);
+}
+
+// ---------------------------------------------------------------------------
+// WorldBegin: the camera and the mapping to our world
+
+void Importer::world_begin(const Directive& d) {
+  finish_camera(d.range);
+  block_ = Block::world;
+  state_.ctm = Matrix(1.0);
+  coordinate_systems_["world"] = state_.ctm;
+}
+
+// Without a Camera directive pbrt-v3 looks down +z from the origin, fov 90.
+void Importer::finish_camera(SourceRange world_begin) {
+  Camera& camera = result_.scene.camera;
+  SourceRange at = camera_ ? camera_->range : world_begin;
+  if (!invertible(camera_from_world_)) fail(at, "the camera transform is singular");
+  Matrix camera_to_world = glm::inverse(camera_from_world_);
+  glm::dmat3 frame(camera_to_world);
+  double sx = glm::length(frame[0]), sy = glm::length(frame[1]), sz = glm::length(frame[2]);
+  double tolerance = 1e-6 * sx;
+  if (std::fabs(sx - sy) > tolerance || std::fabs(sx - sz) > tolerance ||
+      std::fabs(glm::dot(frame[0], frame[1])) > tolerance * sx || std::fabs(glm::dot(frame[0], frame[2])) > tolerance * sx ||
+      std::fabs(glm::dot(frame[1], frame[2])) > tolerance * sx)
+    fail(at, "the camera transform scales unevenly or shears",
+         "only rotations, mirrorings and uniform scales place a camera here");
+  // Our image's right is forward × up: a right-handed camera frame (pbrt's
+  // LookAt) needs the world mirrored for the image to come out as pbrt's.
+  bool mirror = glm::determinant(frame) > 0;
+  double unit = options_.metres_per_unit;
+  world_from_pbrt_world_ = scale({mirror ? -unit : unit, unit, unit});
+  Matrix world_from_camera = world_from_pbrt_world_ * camera_to_world;
+  camera.position = to_world_point(world_from_camera, {0, 0, 0}, at);
+  glm::dvec3 forward = glm::normalize(glm::dvec3(world_from_camera[2]));
+  glm::dvec3 up = glm::normalize(glm::dvec3(world_from_camera[1]));
+  camera.look_at = to_world_point(Matrix(1.0), glm::dvec3(world_from_camera[3]) + forward, at);
+  camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(glm::vec3(up)));
+
+  static const std::vector<Param> kNoParams;
+  ParamSet params(camera_ ? camera_->params : kNoParams, "Camera \"perspective\"");
+  double fov = params.one_float("fov", 90);
+  double half_fov = params.one_float("halffov", -1);
+  if (half_fov > 0) fov = 2 * half_fov;
+  if (!(fov > 0 && fov < 180)) fail(at, "the field of view must lie in (0, 180) degrees");
+  camera.fov = static_cast<float>(fov) * units::degree;
+  double metres_per_camera_unit = sx * unit;
+  double lens_radius = params.one_float("lensradius", 0);
+  if (lens_radius < 0) fail(at, "\"float lensradius\" must not be negative");
+  camera.lens_radius = sg::from_raw<Length>(static_cast<float>(lens_radius * metres_per_camera_unit));
+  double focal_distance = params.one_float("focaldistance", 1e6);
+  if (!(focal_distance > 0)) fail(at, "\"float focaldistance\" must be positive");
+  camera.focus_distance = sg::from_raw<Length>(static_cast<float>(focal_distance * metres_per_camera_unit));
+  if (!std::isfinite(sg::raw(camera.focus_distance)) || !std::isfinite(sg::raw(camera.lens_radius)))
+    fail(at, "the lens is out of float range at this --length-unit");
+  // Shutter times matter only with motion, which is refused (ActiveTransform).
+  params.one_float("shutteropen", 0);
+  params.one_float("shutterclose", 1);
+  const RenderSettings& settings = result_.scene.settings;
+  double aspect = static_cast<double>(settings.width) / settings.height;
+  double frame_aspect = params.one_float("frameaspectratio", aspect);
+  if (std::fabs(frame_aspect - aspect) > 1e-6 * aspect)
+    fail(at, "a \"frameaspectratio\" other than the film's is not supported", "our pixels are square");
+  if (const Param* window = params.find("screenwindow", {ParamType::floating})) {
+    double fx = aspect > 1 ? aspect : 1, fy = aspect > 1 ? 1 : 1 / aspect;
+    const std::vector<double>& w = window->numbers;
+    if (w.size() != 4 || std::fabs(w[0] + fx) > 1e-6 * fx || std::fabs(w[1] - fx) > 1e-6 * fx ||
+        std::fabs(w[2] + fy) > 1e-6 * fy || std::fabs(w[3] - fy) > 1e-6 * fy)
+      fail(window->declaration, "a \"screenwindow\" other than the default is not supported");
+  }
+  report_unused(params);
+}
+
+PointWorld Importer::to_world_point(const Matrix& m, glm::dvec3 p, SourceRange at) const {
+  glm::dvec4 q = m * glm::dvec4(p, 1.0);
+  glm::vec3 f(q);
+  if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
+    fail(at, "a coordinate is out of float range at --length-unit of " + std::to_string(options_.metres_per_unit) + " m");
+  return sg::from_raw<PointWorld>(f);
+}
+
+}  // namespace pbrt
+
+// ---------------------------------------------------------------------------
+// Entry points
+
+namespace {
+
+std::filesystem::path directory_of(const std::filesystem::path& file) {
+  std::filesystem::path parent = file.parent_path();
+  return parent.empty() ? std::filesystem::path(".") : parent;
+}
+
+}  // namespace
+
+PbrtScene parse_pbrt_scene(std::string text, const std::string& display_name,
+                           const std::filesystem::path& search_directory, const PbrtImportOptions& options) {
+  if (!(options.metres_per_unit > 0) || !std::isfinite(options.metres_per_unit))
+    throw PbrtImportError(display_name + ": pbrt scenes carry no units: say what one pbrt length unit is "
+                          "(safegi-render --length-unit m|cm|mm|...)\n");
+  PbrtImportOptions resolved = options;
+  if (!resolved.read_file) resolved.read_file = pbrt::disk_reader();
+  SourceManager sources;
+  FileId main_file = sources.add_file(display_name, std::move(text));
+  try {
+    return pbrt::Importer(sources, resolved, search_directory).run(main_file);
+  } catch (const pbrt::PbrtError& error) {
+    throw PbrtImportError(render_text(error.diagnostic(), sources));
+  }
+}
+
+PbrtScene load_pbrt_scene(const std::filesystem::path& file, const PbrtImportOptions& options) {
+  PbrtFileReader read = options.read_file ? options.read_file : pbrt::disk_reader();
+  std::string error;
+  std::optional<std::string> text = read(file, error);
+  if (!text) throw PbrtImportError(file.string() + ": cannot open scene file: " + error + "\n");
+  return parse_pbrt_scene(std::move(*text), file.string(), directory_of(file), options);
+}
+
+double parse_length_unit(const std::string& text) {
+  const std::string expected = "--length-unit: expected a length unit (m, cm, mm, in, ...), got '" + text + "'";
+  std::string unit_error, quantity_error;
+  std::optional<Quantity> length;
+  if (std::optional<Unit> unit = parse_unit(text, unit_error)) length = Quantity{unit->to_reference, unit->dimension};
+  else if (std::optional<Quantity> quantity = parse_quantity(text, quantity_error)) length = quantity;  // "0.5 m"
+  if (!length) throw SceneError(expected + ": " + unit_error);
+  if (!(length->dimension == runtime_dim::length)) throw SceneError(expected + " (" + dimension_name(length->dimension) + ")");
+  if (!(length->value > 0) || !std::isfinite(length->value))
+    throw SceneError("--length-unit: one pbrt unit must be a positive length, got '" + text + "'");
+  return length->value;
+}
+
+}  // namespace safegi::render

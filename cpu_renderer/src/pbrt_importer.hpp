@@ -1,0 +1,138 @@
+// pbrt-v3 scene files, stage 3: directives → Scene. The graphics state
+// (transform, material, area light, named materials and textures, attribute
+// stack) follows pbrt-v3's core/api.cpp; what the renderer cannot represent is
+// an error at the directive or parameter that asks for it.
+//
+// Coordinates: pbrt-v3's camera space has x to the image's right, y up and z
+// forward, a left-handed frame when the camera transform is a rotation (as
+// LookAt makes it). Our camera's right is forward × up, so when the camera
+// frame is right-handed the whole scene is mirrored across x (camera
+// included): the image is pbrt's, the world coordinates are mirrored. Every
+// length is then scaled by the metres in one pbrt unit.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pbrt_params.hpp"
+#include "safegi/cpu_renderer/pbrt_import.hpp"
+
+namespace safegi::render::pbrt {
+
+using Matrix = glm::dmat4;  // column-major, as glm: m[column][row]
+
+struct MaterialInstance {
+  std::string type;              // "matte", "mirror", ...
+  std::vector<Param> params;
+  SourceRange at;                // the directive's type name
+  mutable int index = -2;        // its Scene material without overrides; -2: not made yet
+};
+
+struct TextureEntry {
+  std::string texture_class;  // "constant", ...
+  Rgb value{};                // a constant texture's value
+  SourceRange at;
+};
+
+struct AreaLight {
+  Rgb radiance{};
+  bool two_sided = false;
+  SourceRange at;
+};
+
+template <class T>
+using SharedMap = std::shared_ptr<std::map<std::string, T>>;
+
+struct GraphicsState {
+  Matrix ctm{1.0};  // object → pbrt world (in the options block: world → camera)
+  bool reverse_orientation = false;
+  std::shared_ptr<const MaterialInstance> material;
+  std::optional<AreaLight> area_light;
+  SharedMap<std::shared_ptr<const MaterialInstance>> named_materials;
+  SharedMap<TextureEntry> spectrum_textures, float_textures;
+};
+
+// A shape as pbrt-v3 made it: object-space data, its transform and
+// orientation; placed into the Scene once the world mapping is known (at
+// once, or at each ObjectInstance of its object).
+struct ShapeSource {
+  enum class Kind { mesh, sphere } kind = Kind::mesh;
+  std::vector<glm::vec3> positions;  // object space, pbrt units
+  std::vector<glm::vec3> normals;    // "N": only orient emitters
+  std::vector<uint32_t> indices;
+  double radius = 0;                 // sphere
+  Matrix object_to_pbrt_world{1.0};
+  bool reverse_orientation = false;
+  int material = -1;
+  std::optional<AreaLight> emission;
+  SourceRange at;
+};
+
+class Importer {
+ public:
+  Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory);
+  PbrtScene run(FileId main_file);
+
+ private:
+  enum class Block { options, world, ended };
+
+  void directive(const Directive& d);
+  void transform_directive(const Directive& d);
+  void options_directive(const Directive& d);
+  void world_begin(const Directive& d);
+  void world_directive(const Directive& d);
+
+  // Options block (pbrt_importer.cpp).
+  void film(const Directive& d);
+  void sampler(const Directive& d);
+  void integrator(const Directive& d);
+  void pixel_filter(const Directive& d);
+  void finish_camera(SourceRange world_begin);
+
+  // World block (pbrt_world.cpp).
+  void material(const Directive& d, bool named);
+  int material_index(const MaterialInstance& material, ParamSet& shape_params);
+  Material convert_material(const std::string& type, ParamSet& params);
+  Reflectance reflectance(ParamSet& params, const char* name, double fallback);
+  void texture(const Directive& d);
+  void light_source(const Directive& d);
+  void area_light_source(const Directive& d);
+  void shape(const Directive& d);
+  void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
+  void place(const ShapeSource& source, const Matrix& pbrt_world_to_world);
+  void object_instance(const Directive& d);
+
+  void warn(SourceRange at, std::string message, std::string hint = {});
+  void report_unused(const ParamSet& params);
+  PointWorld to_world_point(const Matrix& m, glm::dvec3 p, SourceRange at) const;
+
+  SourceManager& sources_;
+  PbrtImportOptions options_;
+  std::filesystem::path search_directory_;
+  Block block_ = Block::options;
+  PbrtScene result_;
+  std::vector<Diagnostic> warnings_;
+  int normals_warned_ = 0;
+
+  GraphicsState state_;
+  std::vector<GraphicsState> attribute_stack_;
+  std::vector<Matrix> transform_stack_;
+  std::map<std::string, Matrix> coordinate_systems_;
+
+  // Options kept until WorldBegin, where the camera can be placed.
+  std::optional<Directive> camera_;
+  Matrix camera_from_world_{1.0};
+  std::optional<Directive> film_;
+  Matrix world_from_pbrt_world_{1.0};  // mirror (if needed) and length unit
+
+  // Object instancing: definitions are flattened into copies.
+  std::map<std::string, std::vector<ShapeSource>> objects_;
+  std::vector<ShapeSource>* current_object_ = nullptr;
+  std::string current_object_name_;
+};
+
+}  // namespace safegi::render::pbrt

@@ -1,0 +1,158 @@
+#include "pbrt_params.hpp"
+
+#include <cmath>
+
+namespace safegi::render::pbrt {
+
+namespace {
+
+std::string type_names(std::initializer_list<ParamType> types) {
+  std::string list;
+  size_t i = 0;
+  for (ParamType type : types) {
+    if (i > 0) list += i + 1 == types.size() ? " or " : ", ";
+    list += "\"" + std::string(param_type_name(type)) + "\"";
+    ++i;
+  }
+  return list;
+}
+
+std::string declared(const Param& param) { return "\"" + param.type_name + " " + param.name + "\""; }
+
+}  // namespace
+
+ParamSet::ParamSet(const std::vector<Param>& params, std::string context, ParamSet* fallback)
+    : context_(std::move(context)), fallback_(fallback) {
+  for (const Param& param : params) params_.push_back(&param);
+  used_.assign(params_.size(), false);
+}
+
+void ParamSet::fail_at(const Param& param, const std::string& message, const std::string& hint) const {
+  fail(param.declaration, message, hint);
+}
+
+bool ParamSet::contains(std::string_view name) const {
+  for (const Param* param : params_)
+    if (param->name == name) return true;
+  return false;
+}
+
+const Param* ParamSet::find(std::string_view name, std::initializer_list<ParamType> types) {
+  // As in pbrt-v3, a later parameter of the same name replaces an earlier one.
+  for (size_t i = params_.size(); i-- > 0;) {
+    const Param& param = *params_[i];
+    if (param.name != name) continue;
+    for (size_t j = 0; j < params_.size(); ++j)
+      if (params_[j]->name == name) used_[j] = true;
+    bool allowed = false;
+    for (ParamType type : types) allowed = allowed || param.type == type;
+    if (!allowed)
+      fail_at(param, context_ + " reads \"" + std::string(name) + "\" as " + type_names(types) + ", found " +
+                         declared(param),
+              "pbrt-v3 would ignore this parameter and use its default; write the type it expects");
+    return &param;
+  }
+  return fallback_ ? fallback_->find(name, types) : nullptr;
+}
+
+const Param* ParamSet::single(std::string_view name, std::initializer_list<ParamType> types, size_t values) {
+  const Param* param = find(name, types);
+  if (!param) return nullptr;
+  size_t count = param->is_string ? param->strings.size() : param->numbers.size();
+  if (count != values)
+    fail(param->values, declared(*param) + " of " + context_ + " takes " + std::to_string(values) + " value" +
+                            (values == 1 ? "" : "s") + ", found " + std::to_string(count));
+  return param;
+}
+
+double ParamSet::one_float(std::string_view name, double fallback) {
+  const Param* param = single(name, {ParamType::floating}, 1);
+  return param ? param->numbers[0] : fallback;
+}
+
+int ParamSet::one_int(std::string_view name, int fallback, int minimum, int maximum) {
+  const Param* param = single(name, {ParamType::integer}, 1);
+  if (!param) return fallback;
+  double value = param->numbers[0];
+  if (value != std::floor(value) || value < minimum || value > maximum)
+    fail(param->values, declared(*param) + " of " + context_ + " must be an integer in [" + std::to_string(minimum) +
+                            ", " + std::to_string(maximum) + "]");
+  return static_cast<int>(value);
+}
+
+bool ParamSet::one_bool(std::string_view name, bool fallback) {
+  const Param* param = single(name, {ParamType::boolean}, 1);
+  return param ? param->strings[0] == "true" : fallback;
+}
+
+std::string ParamSet::one_string(std::string_view name, const std::string& fallback) {
+  const Param* param = single(name, {ParamType::string}, 1);
+  return param ? param->strings[0] : fallback;
+}
+
+std::optional<Triple> ParamSet::one_point(std::string_view name) {
+  const Param* param = single(name, {ParamType::point3}, 3);
+  if (!param) return std::nullopt;
+  return Triple{param->numbers[0], param->numbers[1], param->numbers[2]};
+}
+
+std::vector<double> ParamSet::floats(std::string_view name) {
+  const Param* param = find(name, {ParamType::floating});
+  return param ? param->numbers : std::vector<double>{};
+}
+
+std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allow_texture) {
+  const Param* param =
+      allow_texture ? find(name, {ParamType::rgb, ParamType::xyz, ParamType::blackbody, ParamType::spectrum,
+                                  ParamType::texture})
+                    : find(name, {ParamType::rgb, ParamType::xyz, ParamType::blackbody, ParamType::spectrum});
+  if (!param) return std::nullopt;
+  SpectrumValue value;
+  value.param = param;
+  if (param->type == ParamType::texture) {
+    if (param->strings.size() != 1)
+      fail(param->values, declared(*param) + " names one texture, found " + std::to_string(param->strings.size()));
+    value.texture = param->strings[0];
+    return value;
+  }
+  if (param->type == ParamType::blackbody || param->type == ParamType::spectrum)
+    fail_at(*param, declared(*param) + ": " + param->type_name + " spectra are not supported",
+            "give the colour as \"rgb " + param->name + "\" [r g b]");
+  if (param->numbers.size() != 3)
+    fail(param->values, declared(*param) + " takes 3 values, found " + std::to_string(param->numbers.size()));
+  const std::vector<double>& v = param->numbers;
+  if (param->type == ParamType::xyz) {
+    // pbrt-v3's XYZToRGB (sRGB primaries, D65), as its RGB build converts.
+    value.rgb = {3.240479 * v[0] - 1.537150 * v[1] - 0.498535 * v[2],
+                 -0.969256 * v[0] + 1.875991 * v[1] + 0.041556 * v[2],
+                 0.055648 * v[0] - 0.204043 * v[1] + 1.057311 * v[2]};
+  } else {
+    value.rgb = {v[0], v[1], v[2]};
+  }
+  return value;
+}
+
+void ParamSet::reject(std::string_view name, const std::string& why, std::optional<double> harmless) {
+  const Param* last = nullptr;
+  for (size_t i = 0; i < params_.size(); ++i) {
+    if (params_[i]->name != name) continue;
+    used_[i] = true;
+    last = params_[i];
+  }
+  if (!last) {
+    if (fallback_) fallback_->reject(name, why, harmless);
+    return;
+  }
+  if (harmless && last->type == ParamType::floating && last->numbers.size() == 1 && last->numbers[0] == *harmless)
+    return;
+  fail_at(*last, declared(*last) + " of " + context_ + " is not supported: " + why);
+}
+
+std::vector<const Param*> ParamSet::unused() const {
+  std::vector<const Param*> result;
+  for (size_t i = 0; i < params_.size(); ++i)
+    if (!used_[i]) result.push_back(params_[i]);
+  return result;
+}
+
+}  // namespace safegi::render::pbrt
