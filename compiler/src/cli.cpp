@@ -96,7 +96,18 @@ std::size_t count_errors(const std::string& log) {
 
 }  // namespace
 
-int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
+bool wants_spirv(const std::vector<std::string>& raw_args) {
+  static const std::string_view kSpirvOnly[] = {"--client", "--target-env", "--aml", "--auto-map-locations",
+                                                "--amb", "--auto-map-bindings", "-R", "-g"};
+  for (const std::string& a : normalise(raw_args)) {
+    const std::string_view flag = std::string_view(a).substr(0, a.find('='));
+    for (std::string_view name : kSpirvOnly)
+      if (flag == name) return true;
+  }
+  return false;
+}
+
+int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, SpirvBackend spirv_backend) {
   CLI::App app{"safeglslc: checks the dimensions and spaces of annotated GLSL and writes plain GLSL plus a "
                "JSON symbol table (docs/safeglslc.md)",
                "safeglslc"};
@@ -206,6 +217,11 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
     io.err << "safeglslc: error: --aml, --amb, -R and -g are for SPIR-V output; give -V or -G too\n";
     return kExitUsage;
   }
+  if (spirv && !spirv_backend) {
+    io.err << "safeglslc: error: this safeglslc cannot write SPIR-V (it is safeglslc-spirv's job, which was not found "
+              "beside it)\n";
+    return kExitUsage;
+  }
 
   if (!outputs.empty() && outputs.size() != files.size()) {
     io.err << "safeglslc: error: " << outputs.size() << " -o given for " << files.size()
@@ -272,7 +288,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   std::vector<std::string> texts;
   for (const StageOutput& stage : result.stages) texts.push_back(stage.glsl);
   if (spirv) {
-    SpirvResult modules = to_spirv(result, *spirv);
+    SpirvResult modules = spirv_backend(result, *spirv);
     io.err << modules.log;
     if (!modules.success) {
       const std::size_t errors = count_errors(modules.log);

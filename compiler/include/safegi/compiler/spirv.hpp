@@ -54,7 +54,8 @@ struct SpirvResult {
 };
 
 // Every stage of `compiled` (a successful compile) through glslang as one
-// program. Thread-safe.
+// program. Thread-safe. Target SafeGI::spirv (links glslang); the two
+// functions below are in SafeGI::compiler.
 SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options = {});
 
 // A module as the bytes of a .spv file (little-endian words).
