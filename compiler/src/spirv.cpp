@@ -11,19 +11,10 @@
 
 #include <safegi/runtime_gl/driver_log.hpp>
 
+#include "glslang_language.hpp"
+
 namespace safegi {
 namespace {
-
-EShLanguage language_of(Stage stage) {
-  switch (stage) {
-    case Stage::vertex: return EShLangVertex;
-    case Stage::tess_control: return EShLangTessControl;
-    case Stage::tess_evaluation: return EShLangTessEvaluation;
-    case Stage::geometry: return EShLangGeometry;
-    case Stage::compute: return EShLangCompute;
-    default: return EShLangFragment;
-  }
-}
 
 constexpr glslang::EShTargetClientVersion kVulkanVersions[] = {
     glslang::EShTargetVulkan_1_0, glslang::EShTargetVulkan_1_1, glslang::EShTargetVulkan_1_2,
@@ -160,7 +151,7 @@ SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options)
   std::vector<std::unique_ptr<glslang::TShader>> shaders;
   glslang::TProgram program;
   for (const StageOutput& stage : compiled.stages) {
-    const EShLanguage language = language_of(stage.stage);
+    const EShLanguage language = glslang_language(stage.stage);
     auto shader = std::make_unique<glslang::TShader>(language);
     // No string names: glslang then says "0:12", which map_driver_log turns
     // into the annotated file (or the #include'd one) and line.
@@ -211,7 +202,7 @@ SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options)
     spv_options.generateDebugInfo = options.debug_info;
     spv::SpvBuildLogger logger;
     std::vector<unsigned int> words;
-    glslang::GlslangToSpv(*program.getIntermediate(language_of(stage.stage)), words, &logger, &spv_options);
+    glslang::GlslangToSpv(*program.getIntermediate(glslang_language(stage.stage)), words, &logger, &spv_options);
     module.words.assign(words.begin(), words.end());
     const std::string messages_text = logger.getAllMessages();
     if (!messages_text.empty()) result.log += stage.path + ": " + messages_text;
