@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <mutex>
+#include <regex>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/MachineIndependent/iomapper.h>
@@ -60,13 +61,12 @@ std::string mapped_log(std::string log, const CompileResult& compiled, Stage sta
   return mapped;
 }
 
-bool is_builtin_glsl_type(std::string_view type) {
-  static constexpr std::string_view kPrefixes[] = {"float", "double", "int", "uint", "bool", "vec", "ivec", "uvec",
-                                                   "bvec", "dvec", "mat", "dmat", "sampler", "isampler", "usampler",
-                                                   "image", "iimage", "uimage", "atomic_uint"};
-  for (std::string_view prefix : kPrefixes)
-    if (type.rfind(prefix, 0) == 0) return true;
-  return false;
+// A GLSL type that takes one uniform location (an array one per element);
+// struct types, whose sizes the symbol table does not give, are not.
+bool is_builtin_glsl_type(const std::string& type) {
+  static const std::regex kBuiltin(
+      R"((float|double|u?int|bool|atomic_uint|[ibud]?vec[234]|d?mat[234](x[234])?|[iu]?(sampler|image)[0-9A-Z]\w*))");
+  return std::regex_match(type, kBuiltin);
 }
 
 // Locations for the default-block uniforms of the whole program. glslang's
@@ -133,6 +133,11 @@ SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options)
   SpirvResult result;
   if (!compiled.success) {
     result.log = "safeglslc: error: SPIR-V needs a shader that compiled without errors\n";
+    return result;
+  }
+  if (options.vulkan_minor < 0 || options.vulkan_minor > 3 || options.spirv_minor.value_or(0) < 0 ||
+      options.spirv_minor.value_or(0) > 6) {
+    result.log = "safeglslc: error: SPIR-V targets are vulkan1.0 … vulkan1.3 and spirv1.0 … spirv1.6\n";
     return result;
   }
   initialise_glslang();
