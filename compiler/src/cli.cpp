@@ -1,5 +1,6 @@
 #include "safegi/compiler/cli.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -16,8 +17,9 @@ namespace {
 constexpr int kExitDiagnostics = 1;
 constexpr int kExitUsage = 2;
 
+// A version number as glslangValidator takes them (-V100): digits, few enough for an int.
 bool all_digits(std::string_view text) {
-  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+  return !text.empty() && text.size() <= 6 && text.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
 // glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N, -MD, -MF,
@@ -195,6 +197,9 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
       return kExitUsage;
     }
   }
+  // The environments first, then the SPIR-V versions, whatever their order on the line.
+  std::stable_partition(target_envs.begin(), target_envs.end(),
+                        [](const std::string& env) { return env.rfind("spirv", 0) != 0; });
   for (const std::string& env : target_envs) {
     SpirvOptions candidate = spirv.value_or(SpirvOptions{});
     if (!apply_target_env(env, candidate)) {
