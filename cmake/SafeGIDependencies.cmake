@@ -5,9 +5,13 @@ find_package(glslang CONFIG REQUIRED)      # glslang::glslang, glslang::glslang-
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(glm REQUIRED)                 # the typed library wraps GLM
+# Debian's python3 (install-deps.sh), not one a version manager such as pyenv
+# put first in PATH: find_package(Python3) then takes this one.
+find_program(Python3_EXECUTABLE NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 
 if(SAFEGI_BUILD_TESTS)
   find_package(GTest REQUIRED)
+  find_program(SPIRV_VAL NAMES spirv-val REQUIRED)  # every SPIR-V module the tests make is validated
 endif()
 if(SAFEGI_BUILD_BENCH)
   find_package(benchmark REQUIRED)
@@ -17,11 +21,13 @@ if(SAFEGI_BUILD_RENDERER OR SAFEGI_BUILD_GL)
   find_package(OpenImageIO CONFIG REQUIRED)
   # Debian's OpenImageIO target lists /usr/include/opencv4, which does not exist
   # unless OpenCV's headers are installed; CMake refuses missing include dirs.
-  get_target_property(_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
-  if(_oiio_includes)
-    list(FILTER _oiio_includes EXCLUDE REGEX "opencv4")
-    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_includes}")
-  endif()
+  foreach(_property IN ITEMS INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+    get_target_property(_oiio_includes OpenImageIO::OpenImageIO ${_property})
+    if(_oiio_includes)
+      list(FILTER _oiio_includes EXCLUDE REGEX "opencv4")
+      set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${_property} "${_oiio_includes}")
+    endif()
+  endforeach()
   find_package(tinyobjloader CONFIG QUIET)
   # Distributed rendering (mpirun -np N safegi-render): Debian's Open MPI, C API.
   if(SAFEGI_WITH_MPI STREQUAL "ON")

@@ -170,9 +170,13 @@ void Preprocessor::directive_version(FileState& f, const Token& hash) {
     error(line[1].range, "profiles are only allowed from #version 150 on");
     return;
   }
-  unit_.version = version;
-  unit_.profile = profile;
-  unit_.es = es_version;
+  if (options_.override_version == 0) {
+    unit_.version = version;
+    unit_.profile = profile;
+    unit_.es = es_version;
+  } else if (!unit_.es && unit_.version >= 150 && profile != "es") {
+    unit_.profile = profile;  // an overriding desktop version keeps the line's core/compatibility
+  }
   unit_.version_given = true;
   unit_.version_range = directive;
   apply_version();

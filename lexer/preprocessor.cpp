@@ -388,6 +388,10 @@ void Preprocessor::emit(const PPToken& t) {
 }
 
 PreprocessedUnit Preprocessor::run(FileId main_file) {
+  const bool overridden = options_.override_version != 0;
+  unit_.version = overridden ? options_.override_version : options_.default_version;
+  unit_.es = overridden ? options_.override_es : options_.default_es;
+  unit_.profile = unit_.es && unit_.version != 100 ? "es" : "";
   std::string_view text = sources_.text(main_file);
   Token end;
   end.kind = TokenKind::eof;

@@ -2,12 +2,15 @@
 # Installs SafeGI's build and test dependencies from Debian 12 packages.
 # Idempotent and non-interactive; does nothing (and needs no network) when
 # everything is already installed. Must run as root (or with sudo available).
+#   scripts/install-deps.sh           install what is missing
+#   scripts/install-deps.sh --list    print the package names, one a line (scripts/check-deps.sh)
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git python3
   clang libclang-rt-14-dev           # libFuzzer target of the compiler
-  glslang-dev glslang-tools          # validates emitted GLSL; glslangValidator for benchmarks
+  glslang-dev glslang-tools          # validates emitted GLSL, safeglslc -V/-G; glslangValidator for tests and benchmarks
+  spirv-tools                        # spirv-val: the tests validate every SPIR-V module safeglslc writes
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   python3-glad                       # generates the GL loader at build time
   libglm-dev
@@ -18,6 +21,11 @@ packages=(
   gnuplot-nox                        # the benchmarks' log-log plots (docs/img/)
   libopenmpi-dev openmpi-bin         # distributed safegi-render (mpirun); optional at configure time
 )
+
+if [[ "${1:-}" == "--list" ]]; then
+  printf '%s\n' "${packages[@]}"
+  exit 0
+fi
 
 missing=()
 for p in "${packages[@]}"; do

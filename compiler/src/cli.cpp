@@ -1,5 +1,6 @@
 #include "safegi/compiler/cli.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "safegi/compiler/compile.hpp"
+#include "safegi/compiler/spirv.hpp"
 
 namespace safegi {
 namespace {
@@ -15,11 +17,19 @@ namespace {
 constexpr int kExitDiagnostics = 1;
 constexpr int kExitUsage = 2;
 
-// glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N, -MD, -MF.
+// A version number as glslangValidator takes them (-V100): digits, few enough for an int.
+bool all_digits(std::string_view text) {
+  return !text.empty() && text.size() <= 6 && text.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+// glslangValidator/clang spellings CLI11 cannot declare: -Werror, -ferror-limit=N, -MD, -MF,
+// -V[ver] and -G[ver] (--client vulkan<ver> / opengl<ver>).
 std::vector<std::string> normalise(const std::vector<std::string>& args) {
   std::vector<std::string> out;
   for (const std::string& a : args) {
-    if (a == "-Werror") out.emplace_back("--Werror");
+    if (a.size() >= 2 && (a[1] == 'V' || a[1] == 'G') && a[0] == '-' && (a.size() == 2 || all_digits(a.substr(2))))
+      out.push_back(std::string("--client=") + (a[1] == 'V' ? "vulkan" : "opengl") + (a.size() == 2 ? "100" : a.substr(2)));
+    else if (a == "-Werror") out.emplace_back("--Werror");
     else if (a == "-MD") out.emplace_back("--MD");
     else if (a == "-MF") out.emplace_back("--MF");
     else if (a.rfind("-ferror-limit=", 0) == 0) out.push_back("--error-limit=" + a.substr(14));
@@ -33,6 +43,19 @@ std::pair<std::string, std::string> split_define(const std::string& text) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) return {text, "1"};
   return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+// --client vulkan100 / opengl100 (glslangValidator's spelling of -V100 / -G100).
+bool apply_client(const std::string& text, SpirvOptions& options) {
+  for (const auto& [prefix, client] : {std::pair{"vulkan", SpirvClient::vulkan}, std::pair{"opengl", SpirvClient::opengl}}) {
+    const std::string_view name(prefix);
+    if (text.rfind(name, 0) == 0 && all_digits(std::string_view(text).substr(name.size()))) {
+      options.client = client;
+      options.client_version = std::stoi(text.substr(name.size()));
+      return true;
+    }
+  }
+  return false;
 }
 
 bool write_output(const std::string& path, const std::string& text, CliStreams& io) {
@@ -66,15 +89,36 @@ std::string depfile_text(const std::string& target, const std::vector<std::strin
   return text + "\n";
 }
 
+// The lines glslang's log marks as errors, once mapped ("file:12: error: ...").
+std::size_t count_errors(const std::string& log) {
+  std::size_t count = 0;
+  for (std::size_t at = log.find(": error: "); at != std::string::npos; at = log.find(": error: ", at + 1)) ++count;
+  return count;
+}
+
 }  // namespace
 
-int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
+bool wants_spirv(const std::vector<std::string>& raw_args) {
+  static const std::string_view kSpirvOnly[] = {"--client", "--target-env", "--aml", "--auto-map-locations",
+                                                "--amb", "--auto-map-bindings", "-R", "-g"};
+  for (const std::string& a : normalise(raw_args)) {
+    const std::string_view flag = std::string_view(a).substr(0, a.find('='));
+    for (std::string_view name : kSpirvOnly)
+      if (flag == name) return true;
+  }
+  return false;
+}
+
+int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, SpirvBackend spirv_backend) {
   CLI::App app{"safeglslc: checks the dimensions and spaces of annotated GLSL and writes plain GLSL plus a "
                "JSON symbol table (docs/safeglslc.md)",
                "safeglslc"};
   std::vector<std::string> files, outputs, include_paths, defines, undefines;
   std::string stage_name, symbols_path, depfile_path, diagnostics_format = "text", color = "auto";
-  bool werror = false, no_warnings = false, strict = false, write_depfile = false;
+  std::string glsl_version, client;
+  std::vector<std::string> target_envs;
+  bool werror = false, no_warnings = false, strict = false, write_depfile = false, desktop_default = false;
+  bool auto_map_locations = false, auto_map_bindings = false, relaxed = false, debug_info = false;
   std::size_t error_limit = 0;
   app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
   app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
@@ -87,6 +131,23 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   app.add_flag("--MD", write_depfile, "write a make-style depfile of the inputs and every file they #include (also -MD)");
   app.add_option("--MF", depfile_path, "the depfile's path, default: the first -o output (or --symbols) plus '.d' (also -MF)")
       ->allow_extra_args(false);
+  app.add_flag("-d", desktop_default, "a shader without #version is desktop GLSL 1.10 (default: ES 1.00, as glslangValidator)");
+  app.add_option("--glsl-version", glsl_version,
+                 "check as this version whatever #version says: 100 110 120 130 140 150 300es 310es 320es 330 400 "
+                 "410 420 430 440 450 460");
+  app.add_option("--client", client,
+                 "write SPIR-V: vulkan100 (same as -V) or opengl100 (same as -G); -o then names the .spv files "
+                 "(default <stage>.spv)");
+  app.add_option("--target-env", target_envs,
+                 "SPIR-V environment: vulkan1.0 vulkan1.1 vulkan1.2 vulkan1.3 (imply -V), opengl (implies -G), "
+                 "spirv1.0 ... spirv1.6")
+      ->allow_extra_args(false);
+  app.add_flag("--aml,--auto-map-locations", auto_map_locations,
+               "SPIR-V: give in/out and uniform variables without layout(location) one (default with -G)");
+  app.add_flag("--amb,--auto-map-bindings", auto_map_bindings,
+               "SPIR-V: give samplers and blocks without layout(binding) one (default with -G)");
+  app.add_flag("-R", relaxed, "SPIR-V for Vulkan: relaxed rules (default-block uniforms are gathered into a block)");
+  app.add_flag("-g", debug_info, "SPIR-V: debug information (OpLine)");
   app.add_flag("--strict", strict, "warn about unannotated interface variables");
   app.add_flag("--Werror", werror, "treat warnings as errors (also -Werror)");
   app.add_flag("-w", no_warnings, "suppress warnings");
@@ -118,6 +179,55 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
       return kExitUsage;
     }
   }
+  std::optional<GlslVersion> override_version;
+  if (!glsl_version.empty()) {
+    override_version = parse_glsl_version(glsl_version);
+    if (!override_version) {
+      io.err << "safeglslc: error: unknown --glsl-version '" << glsl_version
+             << "' (expected 100, 110, 120, 130, 140, 150, 300es, 310es, 320es, 330, 400, 410, 420, 430, 440, 450 "
+                "or 460)\n";
+      return kExitUsage;
+    }
+  }
+  std::optional<SpirvOptions> spirv;
+  if (!client.empty()) {
+    spirv.emplace();
+    if (!apply_client(client, *spirv)) {
+      io.err << "safeglslc: error: unknown --client '" << client << "' (expected vulkan100 or opengl100)\n";
+      return kExitUsage;
+    }
+  }
+  // The environments first, then the SPIR-V versions, whatever their order on the line.
+  std::stable_partition(target_envs.begin(), target_envs.end(),
+                        [](const std::string& env) { return env.rfind("spirv", 0) != 0; });
+  for (const std::string& env : target_envs) {
+    SpirvOptions candidate = spirv.value_or(SpirvOptions{});
+    if (!apply_target_env(env, candidate)) {
+      io.err << "safeglslc: error: unknown --target-env '" << env
+             << "' (expected vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3, opengl or spirv1.0 ... spirv1.6)\n";
+      return kExitUsage;
+    }
+    if (!spirv && env.rfind("spirv", 0) == 0) {
+      io.err << "safeglslc: error: --target-env " << env << " sets the SPIR-V version; give -V or -G too\n";
+      return kExitUsage;
+    }
+    spirv = candidate;
+  }
+  if (spirv) {
+    if (auto_map_locations) spirv->auto_map_locations = true;
+    if (auto_map_bindings) spirv->auto_map_bindings = true;
+    spirv->relaxed_vulkan_rules = relaxed;
+    spirv->debug_info = debug_info;
+  } else if (auto_map_locations || auto_map_bindings || relaxed || debug_info) {
+    io.err << "safeglslc: error: --aml, --amb, -R and -g are for SPIR-V output; give -V or -G too\n";
+    return kExitUsage;
+  }
+  if (spirv && !spirv_backend) {
+    io.err << "safeglslc: error: this safeglslc cannot write SPIR-V (it is safeglslc-spirv's job, which was not found "
+              "beside it)\n";
+    return kExitUsage;
+  }
+
   if (!outputs.empty() && outputs.size() != files.size()) {
     io.err << "safeglslc: error: " << outputs.size() << " -o given for " << files.size()
            << " inputs; give one per input, in order\n";
@@ -164,6 +274,8 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   options.diagnostics.warnings_as_errors = werror;
   options.diagnostics.suppress_warnings = no_warnings;
   options.diagnostics.error_limit = error_limit;
+  if (desktop_default) options.default_version = GlslVersion{110, false};
+  options.override_version = override_version;
   CompileResult result = compile(sources, options);
 
   if (diagnostics_format == "json") {
@@ -178,8 +290,25 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io) {
   }
   if (!result.success) return kExitDiagnostics;
 
+  std::vector<std::string> texts;
+  for (const StageOutput& stage : result.stages) texts.push_back(stage.glsl);
+  if (spirv) {
+    SpirvResult modules = spirv_backend(result, *spirv);
+    io.err << modules.log;
+    if (!modules.success) {
+      const std::size_t errors = count_errors(modules.log);
+      io.err << errors << (errors == 1 ? " error" : " errors") << " generated (glslang, on the emitted GLSL).\n";
+      return kExitDiagnostics;
+    }
+    texts.clear();
+    for (const SpirvModule& module : modules.modules) texts.push_back(spirv_bytes(module.words));
+    // glslangValidator's default names: vert.spv, frag.spv, ...
+    if (outputs.empty())
+      for (const StageOutput& stage : result.stages) outputs.push_back(std::string(stage_extension(stage.stage)) + ".spv");
+  }
+
   bool written = true;
-  for (std::size_t i = 0; i < outputs.size(); ++i) written = write_output(outputs[i], result.stages[i].glsl, io) && written;
+  for (std::size_t i = 0; i < outputs.size(); ++i) written = write_output(outputs[i], texts[i], io) && written;
   if (!symbols_path.empty()) written = write_output(symbols_path, result.symbols_json(), io) && written;
   if (write_depfile) {
     // The depfile's target is the first file written (what the build rule produces).

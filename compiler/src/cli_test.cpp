@@ -36,7 +36,8 @@ TEST(Safeglslc, NoInputIsAUsageError) {
 TEST(Safeglslc, HelpListsTheFlags) {
   CliRun r = run({"--help"});
   EXPECT_EQ(r.status, 0);
-  for (const char* flag : {"-S", "-o", "--symbols", "-I", "-D", "-U", "--Werror", "--error-limit", "--diagnostics-format", "--version"})
+  for (const char* flag : {"-S", "-o", "--symbols", "-I", "-D", "-U", "--Werror", "--error-limit", "--diagnostics-format", "--version",
+                           "-d", "--glsl-version", "--client", "--target-env", "--aml", "--amb", "-R", "-g"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
 }
 

@@ -97,7 +97,53 @@ void make_printable(Diagnostic& d) {
   for (Diagnostic& note : d.notes) make_printable(note);
 }
 
+// `#version 300 es`, `#version 450 core`, `#version 100`.
+std::string version_line(const PreprocessedUnit& unit) {
+  std::string line = "#version " + std::to_string(unit.version);
+  if (!unit.profile.empty()) line += " " + unit.profile;
+  return line;
+}
+
+// The emitted GLSL states the version it was checked as, so that a driver
+// or glslang reads it as the checker did: a shader without #version gets
+// the default's line (then `#line` restores the numbering: the next line is
+// N from 3.30 and ES on, N + 1 before), and --glsl-version rewrites the
+// line a shader has, in place.
+std::string with_checked_version(std::string glsl, const PreprocessedUnit& unit, bool overridden) {
+  if (!unit.version_given) {
+    const bool next_line_is_n = unit.es || unit.version == 100 || unit.version >= 330;
+    return version_line(unit) + "\n#line " + (next_line_is_n ? "1" : "0") + "\n" + glsl;
+  }
+  if (!overridden) return glsl;
+  // Erasure keeps lines and nothing can be inserted before #version, so the
+  // directive is on its own source line in the output.
+  std::size_t begin = 0;
+  for (std::uint32_t line = 1; line < unit.version_range.begin.line && begin != std::string::npos; ++line) {
+    begin = glsl.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  if (begin == std::string::npos) return glsl;
+  const std::size_t end = std::min(glsl.find('\n', begin), glsl.size());
+  return glsl.substr(0, begin) + version_line(unit) + glsl.substr(end);
+}
+
 }  // namespace
+
+std::optional<GlslVersion> parse_glsl_version(std::string_view text) {
+  static constexpr std::pair<std::string_view, GlslVersion> kVersions[] = {
+      {"100", {100, true}},   {"110", {110, false}},  {"120", {120, false}},  {"130", {130, false}},
+      {"140", {140, false}},  {"150", {150, false}},  {"300es", {300, true}}, {"310es", {310, true}},
+      {"320es", {320, true}}, {"330", {330, false}},  {"400", {400, false}},  {"410", {410, false}},
+      {"420", {420, false}},  {"430", {430, false}},  {"440", {440, false}},  {"450", {450, false}},
+      {"460", {460, false}}};
+  for (const auto& [name, version] : kVersions)
+    if (text == name) return version;
+  return std::nullopt;
+}
+
+std::string to_string(const GlslVersion& version) {
+  return std::to_string(version.number) + (version.es && version.number != 100 ? "es" : "");
+}
 
 std::optional<Stage> stage_from_name(std::string_view name) {
   for (const StageTable& s : kStages)
@@ -206,6 +252,12 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
   pp.include_paths.emplace_back(kBuiltinIncludeDir);
   pp.defines = options.defines;
   pp.undefines = options.undefines;
+  pp.default_version = options.default_version.number;
+  pp.default_es = options.default_version.es;
+  if (options.override_version) {
+    pp.override_version = options.override_version->number;
+    pp.override_es = options.override_version->es;
+  }
   const std::string prelude_path = std::string(kBuiltinIncludeDir) + "/safegi/prelude.sgl";
   pp.read_file = [&](const std::string& path) -> std::optional<std::string> {
     if (path == prelude_path) return std::string(prelude_text());
@@ -276,7 +328,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     if (w.ok && !diags.has_errors()) {
       ElideInput input{*manager, w.file, w.preprocessed, *w.parsed.unit, *w.checked, options.defines, options.undefines};
       ElideResult elided = elide(input, diags);
-      out.glsl = std::move(elided.glsl);
+      out.glsl = with_checked_version(std::move(elided.glsl), w.preprocessed, options.override_version.has_value());
       if (std::optional<gl::Stage> table_stage = to_table_stage(w.stage)) {
         table.stages.push_back(stage_symbols(input, *table_stage, w.source->path, elided.source_files));
         stage_hashes += table.stages.back().source_hash;

@@ -9,19 +9,10 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "../src/glslang_language.hpp"
+
 namespace safegi::testing {
 namespace {
-
-EShLanguage language_of(Stage stage) {
-  switch (stage) {
-    case Stage::vertex: return EShLangVertex;
-    case Stage::tess_control: return EShLangTessControl;
-    case Stage::tess_evaluation: return EShLangTessEvaluation;
-    case Stage::geometry: return EShLangGeometry;
-    case Stage::compute: return EShLangCompute;
-    default: return EShLangFragment;
-  }
-}
 
 void initialise() {
   static std::once_flag once;
@@ -32,7 +23,7 @@ void initialise() {
 
 GlslangVerdict glslang_validate(const std::string& glsl, Stage stage) {
   initialise();
-  glslang::TShader shader(language_of(stage));
+  glslang::TShader shader(glslang_language(stage));
   const char* text = glsl.c_str();
   shader.setStrings(&text, 1);
   GlslangVerdict verdict;
@@ -43,7 +34,7 @@ GlslangVerdict glslang_validate(const std::string& glsl, Stage stage) {
 
 std::optional<int> spirv_instruction_count(const std::string& glsl, Stage stage, std::string* log) {
   initialise();
-  const EShLanguage language = language_of(stage);
+  const EShLanguage language = glslang_language(stage);
   glslang::TShader shader(language);
   const char* text = glsl.c_str();
   shader.setStrings(&text, 1);

@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-bias", options.shadow_bias_texels, "shadow bias in texel footprints (1.5)")
       ->check(CLI::Range(0.0f, 100.0f));
   app.add_flag("--no-area-shadows", no_area_shadows, "area-light samples cast no shadows (faster)");
+  app.add_flag("--spirv", options.spirv_shaders,
+               "load the shaders as SPIR-V (glslang, OpenGL target) through GL_ARB_gl_spirv instead of GLSL");
   app.add_flag("--refresh-shadows", options.refresh_shadows,
                "redraw point-light shadow maps every frame even when nothing moves (timing)");
   app.add_option("--frames", frames, "render the frame this many times (timing; the last one is written)")

@@ -98,8 +98,12 @@ struct DepthPass {
   gl::output_id<Length> distance = program.output<Length>("lightDistance");
 };
 
-gl::Program camera_program(const char* define, const char* name) {
-  return load_embedded_program({"scene.sgl.vert", "shade.sgl.frag"}, Defines{{define, "1"}}, name);
+ShaderFormat format_of(const PreviewOptions& options) {
+  return options.spirv_shaders ? ShaderFormat::spirv : ShaderFormat::glsl;
+}
+
+gl::Program camera_program(const char* define, const char* name, const PreviewOptions& options) {
+  return load_embedded_program({"scene.sgl.vert", "shade.sgl.frag"}, Defines{{define, "1"}}, name, format_of(options));
 }
 
 // Where a pass looks from: the camera, or the camera seen through a mirror's
@@ -191,11 +195,12 @@ struct Preview::Impl {
   ScenePoses poses;
   std::vector<Emitter> emitters;
 
-  EmissionPass emission{camera_program("EMISSION", "emission")};
-  PointLightPass point_pass{{camera_program("POINT_LIGHT", "point_light")}};
-  AreaSamplePass area_pass{{camera_program("AREA_SAMPLE", "area_sample")}};
-  MirrorPass mirror_pass{camera_program("MIRROR", "mirror")};
-  DepthPass depth{load_embedded_program({"shadow_depth.sgl.vert", "shadow_depth.sgl.frag"}, {}, "shadow_depth")};
+  EmissionPass emission{camera_program("EMISSION", "emission", options)};
+  PointLightPass point_pass{{camera_program("POINT_LIGHT", "point_light", options)}};
+  AreaSamplePass area_pass{{camera_program("AREA_SAMPLE", "area_sample", options)}};
+  MirrorPass mirror_pass{camera_program("MIRROR", "mirror", options)};
+  DepthPass depth{load_embedded_program({"shadow_depth.sgl.vert", "shadow_depth.sgl.frag"}, {}, "shadow_depth",
+                                        format_of(options))};
 
   gl::vertex_buffer<PointObject> positions{std::span<const PointObject>(meshes.positions)};
   gl::vertex_buffer<normal<Object>> normals{std::span<const normal<Object>>(meshes.normals)};

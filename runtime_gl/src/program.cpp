@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
+
 #include "safegi/runtime_gl/driver_log.hpp"
 #include "safegi/runtime_gl/error.hpp"
 
@@ -65,7 +67,41 @@ StageSymbols stage_entry(const ProgramSource& source, const std::string& program
                     std::string(to_string(source.stage)) + " stage has no entry for it");
 }
 
+// Compiles one stage from its GLSL or, when it has one, its SPIR-V module
+// (entry point main, no specialization constants); false with `log` set on failure.
+bool compile_stage(GLuint shader, const ProgramSource& source, std::string& log) {
+  if (source.spirv.empty()) {
+    const char* text = source.glsl.c_str();
+    const auto length = static_cast<GLint>(source.glsl.size());
+    glShaderSource(shader, 1, &text, &length);
+    glCompileShader(shader);
+  } else {
+    glShaderBinary(1, &shader, GL_SHADER_BINARY_FORMAT_SPIR_V_ARB, source.spirv.data(),
+                   static_cast<GLsizei>(source.spirv.size() * sizeof(std::uint32_t)));
+    glSpecializeShaderARB(shader, "main", 0, nullptr, nullptr);
+  }
+  GLint compiled = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+  if (!compiled) log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
+  return compiled == GL_TRUE;
+}
+
+// Each stage's interface, merged: uniforms from every stage, inputs from the
+// vertex stage, outputs from the fragment stage (what stage_holds allows).
+SpirvInterface program_interface(const std::vector<ProgramSource>& sources, const std::string& name) {
+  SpirvInterface merged;
+  for (const ProgramSource& source : sources) {
+    SpirvInterface stage = read_spirv_interface(source.spirv, name + " (" + std::string(to_string(source.stage)) + ")");
+    merged.uniforms.merge(stage.uniforms);
+    if (source.stage == Stage::vertex) merged.inputs = std::move(stage.inputs);
+    if (source.stage == Stage::fragment) merged.outputs = std::move(stage.outputs);
+  }
+  return merged;
+}
+
 }  // namespace
+
+bool spirv_programs_supported() { return GLAD_GL_ARB_gl_spirv != 0; }
 
 Program::Program(std::vector<ProgramSource> sources, std::string name)
     : object_(detail::ObjectKind::program, glCreateProgram()), name_(std::move(name)) {
@@ -75,16 +111,22 @@ Program::Program(std::vector<ProgramSource> sources, std::string name)
     stages_.push_back(stage_entry(source, name_));
     for (const auto& derived : source.symbols.derived_dimensions) namer_.add(derived.name, derived.exponents);
   }
+  const auto spirv_stages = std::count_if(sources.begin(), sources.end(), [](const auto& s) { return !s.spirv.empty(); });
+  if (spirv_stages != 0) {
+    if (static_cast<std::size_t>(spirv_stages) != sources.size())
+      throw ShaderError(name_ + ": error: a program is either all SPIR-V or all GLSL (GL links no mix of the two)");
+    if (!spirv_programs_supported()) {
+      const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+      throw ShaderError(name_ + ": error: the driver (" + (renderer ? renderer : "unknown renderer") +
+                        ") does not offer GL_ARB_gl_spirv, so SPIR-V cannot be loaded; load the GLSL instead");
+    }
+    spirv_ = program_interface(sources, name_);
+  }
   for (std::size_t i = 0; i < sources.size(); ++i) {
     const ProgramSource& source = sources[i];
     GLuint shader = glCreateShader(shader_kind(source.stage));
-    const char* text = source.glsl.c_str();
-    const auto length = static_cast<GLint>(source.glsl.size());
-    glShaderSource(shader, 1, &text, &length);
-    glCompileShader(shader);
-    GLint compiled = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-    if (!compiled) errors += map_driver_log(info_log(shader, glGetShaderiv, glGetShaderInfoLog), stages_[i]);
+    std::string log;
+    if (!compile_stage(shader, source, log)) errors += map_driver_log(log, stages_[i]);
     glAttachShader(id(), shader);
     shaders.push_back(shader);
   }
@@ -160,6 +202,13 @@ void Program::check(Interface interface, std::string_view name, const ValueType&
 
 int Program::locate(Interface interface, std::string_view name, const ValueType* host) const {
   if (host) check(interface, name, *host);
+  if (spirv_) {
+    const auto& by_name = interface == Interface::attribute ? spirv_->inputs
+                        : interface == Interface::output    ? spirv_->outputs
+                                                            : spirv_->uniforms;
+    const auto found = by_name.find(name);
+    return found == by_name.end() ? -1 : found->second;
+  }
   const std::string name_z(name);
   switch (interface) {
     case Interface::attribute: return glGetAttribLocation(id(), name_z.c_str());

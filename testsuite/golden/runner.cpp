@@ -27,6 +27,7 @@
 #include "glslang_check.hpp"
 #include "safegi/compiler/cli.hpp"
 #include "safegi/compiler/compile.hpp"
+#include "safegi/compiler/spirv.hpp"
 
 namespace fs = std::filesystem;
 
@@ -94,7 +95,7 @@ std::string run_case(const Case& c, const fs::path& scratch, std::string& proble
   std::istringstream in(c.stdin_input ? safegi::testing::read_text_file(c.path) : std::string());
   std::ostringstream out, err;
   safegi::CliStreams io{in, out, err, false};
-  const int status = safegi::run_safeglslc(args, io);
+  const int status = safegi::run_safeglslc(args, io, &safegi::to_spirv);
 
   std::string actual = "exit: " + std::to_string(status) + "\n";
   actual += "--- stderr\n" + err.str();

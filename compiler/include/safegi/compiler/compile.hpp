@@ -33,12 +33,29 @@ struct ShaderSource {
   std::optional<Stage> stage = {};  // default: from the file extension (stage_from_path)
 };
 
+// A GLSL language version: 100 and 300/310/320 are ES ("300es"), the others desktop.
+struct GlslVersion {
+  int number = 100;
+  bool es = true;
+  friend bool operator==(const GlslVersion&, const GlslVersion&) = default;
+};
+// glslangValidator's --glsl-version spellings: 100 110 120 130 140 150 300es
+// 310es 320es 330 400 410 420 430 440 450 460.
+std::optional<GlslVersion> parse_glsl_version(std::string_view text);
+std::string to_string(const GlslVersion& version);  // "300es", "450"
+
 struct CompileOptions {
   std::vector<std::string> include_paths;                    // -I, searched in order, before the built-in prelude
   std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=value]
   std::vector<std::string> undefines;                        // -U NAME
   bool strict = false;                                       // --strict: warn on unannotated interface variables
   DiagnosticOptions diagnostics;                             // -Werror, -w, error limit
+  // The language of a shader without #version. glslangValidator's default, ES
+  // 1.00; `-d` makes it desktop 1.10 (what a desktop driver assumes).
+  GlslVersion default_version{100, true};
+  // --glsl-version: check every shader as this version whatever its #version
+  // says. Either way the emitted GLSL states the version it was checked as.
+  std::optional<GlslVersion> override_version;
   // Reads `#include`d files; default: the file system. The prelude is always
   // served from memory.
   std::function<std::optional<std::string>(const std::string& path)> read_file;

@@ -34,6 +34,14 @@ struct PreprocessorOptions {
   // reports it. Off by default: the type checker, not the preprocessor,
   // knows which built-ins an unknown extension would have added.
   bool reject_unsupported_extensions = false;
+  // The language of a shader without #version: 1.10 desktop by default (the
+  // GLSL rule); safeglslc passes glslangValidator's ES 1.00 unless given -d.
+  int default_version = 110;
+  bool default_es = false;
+  // When non-zero, the language whatever the #version line says (the line is
+  // still checked): safeglslc --glsl-version, glslangValidator's option.
+  int override_version = 0;
+  bool override_es = false;
   // Reads an include candidate; nullopt when it does not exist. Default: the
   // file system. Tests and embedders (an in-memory prelude) replace it.
   std::function<std::optional<std::string>(const std::string& path)> read_file;
@@ -85,7 +93,7 @@ struct IncludedFile {
 
 struct PreprocessedUnit {
   std::vector<Token> tokens;  // ends with an eof token
-  int version = 110;          // #version; 110 when absent (100 for "#version 100")
+  int version = 110;          // #version; PreprocessorOptions' default when absent, its override when set
   std::string profile;        // "", "core", "compatibility", "es"
   bool es = false;
   bool version_given = false;

@@ -23,6 +23,7 @@ struct PreviewOptions {
   float shadow_bias_texels = 1.5f;   // bias, in texel footprints (docs/preview.md)
   bool area_shadows = true;          // false: area-light samples see every point (no shadows)
   bool refresh_shadows = false;      // redraw point-light shadow maps every pass even in a static scene
+  bool spirv_shaders = false;        // load the shaders as SPIR-V through GL_ARB_gl_spirv (same image)
 };
 
 struct FrameStats {

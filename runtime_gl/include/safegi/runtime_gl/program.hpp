@@ -6,7 +6,9 @@
 // throws BindingError naming the declaration and both types in words; in the
 // unchecked build (SAFEGI_GL_UNCHECKED) it only asks the driver. Both builds
 // issue the same GL calls.
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,6 +17,7 @@
 
 #include "safegi/runtime_gl/handles.hpp"
 #include "safegi/runtime_gl/resources.hpp"
+#include "safegi/runtime_gl/spirv_interface.hpp"
 #include "safegi/runtime_gl/symbol_table.hpp"
 #include "safegi/runtime_gl/value_traits.hpp"
 
@@ -23,11 +26,17 @@ namespace safegi::gl {
 // One stage as the compiler hands it over: plain GLSL plus the symbol table
 // that describes it (a shader-mode table, or a program-mode table that has an
 // entry for this stage). safegi::compile() will produce these in-process.
+// With `spirv` (safegi::to_spirv of that GLSL, OpenGL target) the stage is
+// loaded as SPIR-V through GL_ARB_gl_spirv; the table is the same.
 struct ProgramSource {
   Stage stage;
   std::string glsl;
   SymbolTable symbols;
+  std::vector<std::uint32_t> spirv = {};
 };
+
+// Whether the current context loads SPIR-V stages (GL_ARB_gl_spirv or GL 4.6).
+bool spirv_programs_supported();
 
 // What a lookup is for; decides where the symbol lives and how GL finds it.
 enum class Interface { uniform, uniform_array, attribute, output, sampler };
@@ -118,6 +127,9 @@ class Program {
   std::string name_;
   std::vector<StageSymbols> stages_;
   DimensionNamer namer_;
+  // Locations by name, from the modules, when the program was loaded as
+  // SPIR-V (the driver need not know the names).
+  std::optional<SpirvInterface> spirv_;
 };
 
 }  // namespace safegi::gl

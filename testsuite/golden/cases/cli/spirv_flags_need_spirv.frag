@@ -1,0 +1,4 @@
+// RAW
+// ARGS: --aml
+#version 450
+void main() {}
