@@ -49,12 +49,39 @@ TEST(Spaces, MapsChangeSpaces) {
   EXPECT_EQ(messages_of("point<world> p = worldFromObject * pw;"),
             Messages{"error: cannot apply map<object, world> to point<world>: the map takes values in object"});
   EXPECT_EQ(messages_of("map<object, clip> m = worldFromObject * clipFromWorld;"),
-            Messages{"error: cannot compose map<object, world> with projmap<world, clip>"});
+            Messages{"error: cannot compose map<object, world> with projmap<world, clip>: the projective map gives homogeneous "
+                     "points, which a map does not take"});
   EXPECT_EQ(messages_of("map<object, object> m = worldFromObject * worldFromObject;"),
-            Messages{"error: cannot compose map<object, world> with map<object, world>: the right-hand map must end where "
-                     "the left-hand one starts"});
+            Messages{"error: cannot compose map<object, world> with map<object, world>: the right-hand map ends in world but "
+                     "the left-hand one starts in object"});
   EXPECT_EQ(messages_of("point<object> p = worldFromObject * po;"),
             Messages{"error: cannot initialize 'p' of type point<object> with a value of type point<world>"});
+}
+
+// The kind of a composition follows from its operands; a rigidmap is also a map.
+TEST(Spaces, CompositionKindFollowsTheOperands) {
+  const std::string globals = std::string(kGlobals) +
+                              "space view;\n"
+                              "uniform rigidmap<world, view> viewFromWorld;\n"
+                              "uniform projmap<view, clip> clipFromView;\n"
+                              "uniform projmap<clip, clip> jitter;\n";
+  auto e = check_source(globals +
+                        "void main() {\n"
+                        "  projmap<object, clip> mvp = clipFromView * viewFromWorld * worldFromObject;\n"
+                        "  map<object, view> mv = viewFromWorld * worldFromObject;\n"
+                        "  rigidmap<object, view> rv = viewFromWorld * rigidWorldFromObject;\n"
+                        "  projmap<object, clip> jittered = jitter * mvp;\n"
+                        "  map<object, world> widened = rigidWorldFromObject;\n"
+                        "  hpoint<clip> h = mvp * po;\n"
+                        "}\n");
+  ASSERT_EQ(e->messages(), Messages{});
+  EXPECT_EQ(declared_type(*e, "mvp"), "projmap<object, clip>");
+  EXPECT_EQ(declared_type(*e, "rv"), "rigidmap<object, view>");
+  EXPECT_EQ(check_source(globals + "void main() { rigidmap<object, view> rv = viewFromWorld * worldFromObject; }")->messages(),
+            Messages{"error: cannot initialize 'rv' of type rigidmap<object, view> with a value of type map<object, view>"});
+  EXPECT_EQ(check_source(globals + "void main() { projmap<world, clip> p = viewFromWorld * clipFromView; }")->messages(),
+            Messages{"error: cannot compose rigidmap<world, view> with projmap<view, clip>: the projective map gives "
+                     "homogeneous points, which a rigidmap does not take"});
 }
 
 TEST(Spaces, NormalsThroughNonRigidMapsUseTheInverseTranspose) {
@@ -86,6 +113,31 @@ TEST(Spaces, GenericSpaceFunctions) {
             Messages{});
   EXPECT_EQ(check_source(globals + "void main() { float<length> d = dist(pw, po); }")->messages(),
             Messages{"error: argument 2 of 'dist' has type point<object>, but the other arguments are in world"});
+}
+
+// Only a difference of points is a vector: a point given to a vector operation is an error.
+TEST(Spaces, PointsAreNotDirections) {
+  EXPECT_EQ(messages_of("direction<world> d = normalize(pw);"),
+            Messages{"error: cannot normalize point<world> 'pw': a point is a position, not a direction"});
+  EXPECT_EQ(messages_of("float<length> d = length(pw);"),
+            Messages{"error: cannot take the length of point<world> 'pw': a point is a position, and its length would "
+                     "depend on where world's origin is"});
+  EXPECT_EQ(messages_of("float x = dot(dw, pw);"),
+            Messages{"error: 'dot' needs vectors, directions or normals, not point<world> 'pw': a point is a position"});
+  EXPECT_EQ(messages_of("vec3 r = reflect(pw, dw);"),
+            Messages{"error: 'reflect' needs vectors, directions or normals, not point<world> 'pw': a point is a position"});
+  EXPECT_EQ(messages_of("vec3 r = cross(vw, pw);"),
+            Messages{"error: 'cross' needs vectors, directions or normals, not point<world> 'pw': a point is a position"});
+  // Differences of points, explicit position vectors and plain vec3 are fine.
+  EXPECT_EQ(messages_of("direction<world> d = normalize(pw - pw); float<length> a = length(vector<world>(pw));"
+                        "float<length> b = distance(pw, pw); vec3 n = normalize(vec3(1.0)); float c = dot(vec3(1.0), vec3(2.0));"),
+            Messages{});
+  // Component-wise built-ins keep a point's kind and space.
+  auto c = check_source(std::string(kGlobals) + "void main() { point<world> mid = mix(pw, pw, 0.5); point<world> lo = min(pw, pw); }");
+  ASSERT_EQ(c->messages(), Messages{});
+  EXPECT_EQ(declared_type(*c, "mid"), "point<world>");
+  EXPECT_EQ(messages_of("point<world> mid = mix(pw, po, 0.5);"),
+            Messages{"error: argument 2 of 'mix' has type point<object>, but the other arguments are in world"});
 }
 
 TEST(Spaces, PlainVec3IsConsistentWithEveryKind) {

@@ -132,6 +132,8 @@ class Checker {
   // Unifies the arguments' annotations with a resolved call shape; nothing after reporting an error.
   std::optional<Type> unify_call(const std::string& callee, const CallShape& shape, const std::vector<Value>& args,
                                  SourceRange call_range);
+  // A point passed to a vector operation (normalize, length, dot, ...): the one error, physics-aware.
+  void point_given_for_vector(const std::string& name, const Signature& sig, const std::vector<Value>& args);
   // Operators on maps and geometric values routed through the built-in table (transform, compose).
   std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                           const Value& rhs, SourceRange range);
@@ -139,6 +141,9 @@ class Checker {
   // mismatch.cpp
   std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
+  // Why `left * right` does not compose when their spaces do not meet: wrong order, an inverse, or the space needed.
+  std::string compose_hint(const Type& left, const Type& right) const;
+  std::string name_of_space(const SpaceSlot& s) const { return space_text(s, result_.registry, template_spaces_); }
   void add_origin_note(Diagnostic& d, const Value& v) const;
 
   // In the program's words; inside a generic function its parameters print by name.

@@ -2,6 +2,7 @@
 // say where an operand's annotation came from.
 
 #include "checker_impl.hpp"
+#include "dim_slot.hpp"
 
 namespace safegi::detail {
 
@@ -62,6 +63,16 @@ std::string Checker::space_hint(const SpaceSlot& expected, const SpaceSlot& foun
   std::optional<std::string> from = name(found), to = name(expected);
   if (!from || !to) return {};
   return "missing transform by map<" + *from + ", " + *to + ">?";
+}
+
+std::string Checker::compose_hint(const Type& left, const Type& right) const {
+  const std::string order = "maps compose right to left: in m2 * m1, m1 is applied first";
+  if (consistent(left.to, right.from) && left.to.state != SpaceSlot::State::unknown)
+    return "the operands are in the wrong order (" + order + ")";
+  if (right.from == left.from && right.from.state != SpaceSlot::State::unknown)
+    return "the right-hand map goes the other way: its inverse, a map<" + name_of_space(right.to) + ", " +
+           name_of_space(right.from) + ">, would meet the left-hand one";
+  return "the right-hand map must end in " + name_of_space(left.from) + " (" + order + ")";
 }
 
 void Checker::add_origin_note(Diagnostic& d, const Value& v) const {

@@ -25,6 +25,10 @@ bool has_space(Geometry g) {
 
 bool is_map(Geometry g) { return g == Geometry::map || g == Geometry::rigidmap || g == Geometry::projmap; }
 
+bool kind_fits(Geometry value, Geometry wanted) {
+  return value == wanted || (value == Geometry::rigidmap && wanted == Geometry::map);
+}
+
 Type Type::plain() const {
   Type t = *this;
   t.geometry = Geometry::none;
@@ -85,6 +89,8 @@ std::string array_suffix(const Type& t) {
   return out;
 }
 
+}  // namespace
+
 std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
                        const std::vector<std::string>* space_params) {
   switch (s.state) {
@@ -95,8 +101,6 @@ std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
   }
   return "?";
 }
-
-}  // namespace
 
 std::string glsl_name(const Type& t) {
   std::string base;

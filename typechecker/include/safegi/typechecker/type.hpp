@@ -36,6 +36,9 @@ enum class Geometry : std::uint8_t {
 const char* geometry_name(Geometry g);
 bool has_space(Geometry g);
 bool is_map(Geometry g);
+// A value of kind `value` may stand where kind `wanted` is expected: the same
+// kind, or a rigidmap where a map is expected (a rigid map is affine).
+bool kind_fits(Geometry value, Geometry wanted);
 
 struct DimSlot {
   enum class State : std::uint8_t { unknown, known, zero, generic };
@@ -125,6 +128,9 @@ std::string glsl_name(const Type& t);
 std::string type_name(const Type& t, const DimensionRegistry& registry,
                       const std::vector<std::string>* dim_params = nullptr,
                       const std::vector<std::string>* space_params = nullptr);
+// A space in the program's words: its name, a template parameter's name, or `?`.
+std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
+                       const std::vector<std::string>* space_params = nullptr);
 std::string dim_name(const DimSlot& d, const DimensionRegistry& registry,
                      const std::vector<std::string>* dim_params = nullptr);
 
