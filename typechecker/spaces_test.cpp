@@ -140,6 +140,34 @@ TEST(Spaces, PointsAreNotDirections) {
             Messages{"error: argument 2 of 'mix' has type point<object>, but the other arguments are in world"});
 }
 
+// Swizzles of an hpoint stay homogeneous until divided by a w of the same point.
+TEST(Spaces, HomogeneousCoordinatesNeedTheDivide) {
+  const std::string globals = std::string(kGlobals) + "uniform sampler2D<float<length>> depthMap;\n";
+  auto c = check_source(globals +
+                        "void main() {\n"
+                        "  hpoint<clip> h = clipFromWorld * pw;\n"
+                        "  vec2 raw = h.xy * 0.5 + 0.5;\n"
+                        "  vec2 uv = h.xy / h.w * 0.5 + 0.5;\n"
+                        "  float invW = 1.0 / h.w;\n"
+                        "  vec2 uv2 = h.xy * invW;\n"
+                        "  point<clip> ndc = h.xyz / h[3];\n"
+                        "  float<length> a = texture(depthMap, uv).r + texture(depthMap, uv2).r;\n"
+                        "  vec4 b = textureProj(depthMap, h);\n"
+                        "}\n");
+  ASSERT_EQ(c->messages(), Messages{});
+  EXPECT_EQ(declared_type(*c, "raw"), "vec2 of hpoint<clip>");
+  EXPECT_EQ(declared_type(*c, "invW"), "float carrying w^-1 of hpoint<clip>");
+  EXPECT_EQ(declared_type(*c, "uv"), "vec2");
+  EXPECT_EQ(declared_type(*c, "ndc"), "point<clip>");
+  EXPECT_EQ(check_source(globals + "void main() { hpoint<clip> h = clipFromWorld * pw;"
+                                   " float<length> d = texture(depthMap, h.xy * 0.5 + 0.5).r; }")
+                ->messages(),
+            Messages{"error: texture coordinates of type vec2 of hpoint<clip> are homogeneous: the perspective divide by w "
+                     "is missing"});
+  EXPECT_EQ(check_source(globals + "void main() { hpoint<clip> h = clipFromWorld * pw; point<clip> p = h.xyz; }")->messages(),
+            Messages{"error: cannot initialize 'p' of type point<clip> with a value of type vec3 of hpoint<clip>"});
+}
+
 TEST(Spaces, PlainVec3IsConsistentWithEveryKind) {
   EXPECT_EQ(check_source(std::string(kGlobals) + "in vec3 raw; void main() { point<world> p = pw + raw; vector<world> v = raw; p = raw; }")
                 ->messages(),

@@ -114,6 +114,8 @@ class Checker {
                    SourceRange range);
   Value geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
                              SourceRange range);
+  Value homogeneous_product(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
+                            SourceRange range);
   void operand_mismatch(const std::string& message, const Value& lhs, const Value& rhs, SourceRange op_range,
                         const std::string& hint, const char* code);
   void condition(const ast::Expr* e);

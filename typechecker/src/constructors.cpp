@@ -147,6 +147,13 @@ Value Checker::constructor(const ast::CallExpr& e) {
     out.type.dim = DimSlot::zero();
   }
   // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.
+  // Homogeneous components stay homogeneous: vec3(h.xy, h.z) still needs the divide by w.
+  if (t.shape == Shape::vector && t.is_floating())
+    for (const Value& a : args)
+      if (a.type.geometry == Geometry::hpoint) {
+        keep_homogeneous(out.type, a.type);
+        break;
+      }
   return out;
 }
 
@@ -175,6 +182,19 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     const bool offsets = sig.name == "textureGatherOffsets" && args[i].type.scalar == Scalar::int_;  // ivec2 offsets[4]
     if (!(args[i].type.is_numeric() || args[i].type.scalar == Scalar::bool_) || (args[i].type.is_array() && !offsets))
       return no_match();
+  }
+  // Texture coordinates are points of the texture: homogeneous ones need the
+  // divide by w first, except in the *Proj* lookups, which divide themselves.
+  if (sig.rule == BuiltinRule::texture && args.size() > 1 && args[1].type.geometry == Geometry::hpoint &&
+      sig.name.find("Proj") == std::string::npos) {
+    Diagnostic d = Diagnostic::error(args[1].range, "texture coordinates of type " + name_of(args[1].type) +
+                                                        " are homogeneous: the perspective divide by w is missing")
+                       .with_code("E-KIND-MISMATCH");
+    add_origin_note(d, args[1]);
+    d.with_hint("divide by w first (h.xy / h.w, or homogenize(h) for a point), or let " +
+                std::string(sig.name.rfind("texture", 0) == 0 ? "textureProj" : "the *Proj lookup") + " divide");
+    report(std::move(d));
+    return error_value(call_range);
   }
   const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
   switch (sig.rule) {

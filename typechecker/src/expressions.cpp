@@ -334,6 +334,7 @@ Value Checker::index(const ast::IndexExpr& e) {
     size = t.rows;
     out.type = Type::scalar_of(t.scalar);
     out.type.dim = value_dimension(t, result_.registry);
+    if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
   } else if (t.shape == Shape::matrix) {
     size = t.columns;
     out.type = Type::vector_of(t.scalar, t.rows);
@@ -399,6 +400,7 @@ Value Checker::member(const ast::MemberExpr& e) {
     if (!identity) {
       out.type = Type::vector_of(t.scalar, static_cast<int>(s.size()));
       out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
+      if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
     }
     out.lvalue = base.lvalue && !repeated;
     return out;

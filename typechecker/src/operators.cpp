@@ -1,6 +1,7 @@
 // Binary operators: GLSL's shape rules, then dimensions (Abelian group) and
 // the affine rules of points, vectors, directions and normals.
 
+#include <cstdint>
 #include <vector>
 
 #include "checker_impl.hpp"
@@ -274,6 +275,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     } else if (ga == Geometry::hpoint || gb == Geometry::hpoint) {
       out.type.geometry = Geometry::hpoint;
       out.type.dim = DimSlot::unknown();
+      out.type.weight = ga == Geometry::hpoint ? a.weight : b.weight;
     } else if (vectorish(ga) || vectorish(gb)) {
       out.type.geometry = Geometry::vector;  // a sum of directions is no longer unit length
     }
@@ -282,6 +284,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
 
   // * and /
   const bool a_scalar = a.shape == Shape::scalar, b_scalar = b.shape == Shape::scalar;
+  if (ga == Geometry::hpoint || gb == Geometry::hpoint) return homogeneous_product(op, lhs, rhs, shape, op_range, range);
   if (ga == Geometry::point || gb == Geometry::point)
     return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
                   "subtract another point to get a vector, which can be scaled", "E-POINT-ARITHMETIC");
@@ -314,6 +317,39 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
                   "E-SPACE-MISMATCH");
   return out;  // e.g. vector * vector component-wise: a plain vec3 of the product dimension
+}
+
+// Homogeneous coordinates carry a power of w (Type::weight): products add the
+// weights, quotients subtract them, and a value of weight 0 is dehomogenized:
+// h.xyz / h.w is a point<S>, h.xy / h.w (or h.xy * (1.0 / h.w)) plain coordinates.
+Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
+                                   SourceRange range) {
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  const bool ha = a.geometry == Geometry::hpoint, hb = b.geometry == Geometry::hpoint;
+  if (ha && hb && !consistent(a.from, b.from)) {
+    operand_mismatch(std::string("cannot ") + (op == ast::BinaryOp::Mul ? "multiply " : "divide ") + name_of(a) + " and " +
+                         name_of(b) + ": they are in different spaces",
+                     lhs, rhs, op_range, "the divide by w uses the w of the same homogeneous point", "E-SPACE-MISMATCH");
+    return error_value(range);
+  }
+  const int wa = ha ? a.weight : 0, wb = hb ? b.weight : 0;
+  const int weight = op == ast::BinaryOp::Mul ? wa + wb : wa - wb;
+  Value out;
+  out.range = range;
+  out.type = shape;
+  out.type.dim = DimSlot::unknown();
+  const SpaceSlot space = ha ? a.from : b.from;
+  if (weight != 0 && weight >= INT8_MIN && weight <= INT8_MAX) {
+    out.type.geometry = Geometry::hpoint;
+    out.type.from = space;
+    out.type.weight = static_cast<std::int8_t>(weight);
+  } else if (weight == 0 && out.type.shape == Shape::vector && out.type.rows == 3) {
+    out.type.geometry = Geometry::point;  // what homogenize(h) gives
+    out.type.from = space;
+    out.type.dim = value_dimension(out.type, result_.registry);
+  }
+  return out;
 }
 
 }  // namespace safegi::detail

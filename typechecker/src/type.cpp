@@ -150,6 +150,15 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
   const std::string suffix = array_suffix(t);
   Type bare = t;
   bare.array.clear();
+  if (t.geometry == Geometry::hpoint && (t.rows != 4 || t.weight != 1)) {
+    // Components of a homogeneous point, before the divide: "vec2 of hpoint<clip>".
+    Type whole = bare;
+    whole.rows = 4;
+    whole.shape = Shape::vector;
+    whole.weight = 1;
+    const std::string of = t.weight == 1 ? " of " : " carrying w^" + std::to_string(t.weight) + " of ";
+    return glsl_name(bare.plain()) + of + type_name(whole, registry, dim_params, space_params) + suffix;
+  }
   if (t.geometry != Geometry::none) {
     std::string out = geometry_name(t.geometry);
     out += "<";

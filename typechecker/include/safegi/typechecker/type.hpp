@@ -81,6 +81,10 @@ struct Type {
   SpaceSlot from;                 // the space (or a map's source space)
   SpaceSlot to;                   // a map's target space
   std::shared_ptr<const Type> texel;  // annotated sampler
+  // Geometry::hpoint: the power of w its components carry. An hpoint and its
+  // swizzles (h.xy, h.w) have 1, 1.0 / h.w has -1; a value of weight 0 is no
+  // longer homogeneous (h.xy / h.w), so it loses the kind.
+  std::int8_t weight = 1;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }
