@@ -99,6 +99,25 @@ Value Checker::constructor(const ast::CallExpr& e) {
     // A cast: one argument of the same representation takes the annotation, whatever it had.
     if (same_representation) {
       out.zero = args[0].zero;
+      // A cast keeps the number: it may rename a dimension, not change a unit.
+      const DimensionRegistry& reg = result_.registry;
+      const DimSlot to = value_dimension(t, reg), from = value_dimension(first, reg);
+      // A plain number (a literal, a ratio) takes the unit the cast gives it.
+      const bool quantity = from.is_known() && (reg.has_unit_factors(from.value) || !from.value.is_dimensionless());
+      if (!out.zero && !args[0].literal && quantity && to.is_known() &&
+          !DimensionRegistry::same_scale(reg.scale(to.value), reg.scale(from.value))) {
+        const double factor = reg.scale(from.value) / reg.scale(to.value);
+        Diagnostic d = Diagnostic::error(args[0].range, "a cast to " + what + " would read " + reg.format_units(from.value) +
+                                                            " as " + reg.format_units(to.value) + ": a cast keeps the number")
+                           .with_code("E-UNIT-CAST");
+        add_origin_note(d, args[0]);
+        d.with_hint(reg.reference(from.value) && reg.reference(to.value) && *reg.reference(from.value) == *reg.reference(to.value)
+                        ? "convert instead: x in " + conversion_target(to.value) + " (× " + format_number(factor) + ")"
+                        : "convert its parts to units of the same scale first: the cast would be off by × " +
+                              format_number(factor));
+        report(std::move(d));
+        return error_value(e.range);
+      }
       return out;
     }
     if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");

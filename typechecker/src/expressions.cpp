@@ -22,6 +22,7 @@ Value Checker::expr(const ast::Expr* e) {
     case ast::NodeKind::IndexExpr: return record(e, index(*static_cast<const ast::IndexExpr*>(e)));
     case ast::NodeKind::MemberExpr: return record(e, member(*static_cast<const ast::MemberExpr*>(e)));
     case ast::NodeKind::MethodCallExpr: return record(e, method_call(*static_cast<const ast::MethodCallExpr*>(e)));
+    case ast::NodeKind::ConvertExpr: return record(e, convert(*static_cast<const ast::ConvertExpr*>(e)));
     case ast::NodeKind::ParenExpr: {
       Value v = expr(static_cast<const ast::ParenExpr*>(e)->inner);
       v.range = e->range;

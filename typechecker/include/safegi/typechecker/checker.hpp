@@ -68,6 +68,13 @@ enum class GeometricOp : std::uint8_t {
   inverse,              // inverse(m)
 };
 
+// How a conversion `e in target` is emitted (the elider's business).
+struct ConversionInfo {
+  double factor = 1.0;            // a unit conversion: e * factor (1: nothing to emit)
+  std::vector<std::string> maps;  // a space conversion: the maps, as written (the last applied is leftmost)
+  GeometricOp op = GeometricOp::none;  // how the composed maps apply: transform_point/vector/normal, project
+};
+
 struct CallInfo {
   std::string builtin;          // built-in name when a built-in was called
   std::string signature;        // the chosen signature as text
@@ -80,6 +87,7 @@ struct CheckResult {
   std::unordered_map<const ast::Node*, Type> types;              // every expression and parameter
   std::unordered_map<const ast::Declarator*, Type> declarators;  // every declared variable (locals inferred from initialisers)
   std::unordered_map<const ast::Node*, CallInfo> calls;          // calls and operators that are geometric operations
+  std::unordered_map<const ast::ConvertExpr*, ConversionInfo> conversions;  // every `e in target` that checked
   std::vector<InterfaceVariable> interface;                      // uniforms (incl. block members), inputs, outputs, buffers
   std::vector<std::unique_ptr<StructInfo>> structs;              // owned: Type::structure points here
 
