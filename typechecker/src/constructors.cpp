@@ -215,6 +215,17 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     report(std::move(d));
     return error_value(call_range);
   }
+  // A cube map is looked up by direction: a position there is the environment-map bug.
+  if (sig.rule == BuiltinRule::texture && args.size() > 1 && args[1].type.geometry == Geometry::point &&
+      name.find("Cube") != std::string::npos) {
+    Diagnostic d = Diagnostic::error(args[1].range, "a cube map is looked up by direction, not by " + name_of(args[1].type) +
+                                                        ": a point is a position")
+                       .with_code("E-POINT-ARITHMETIC");
+    add_origin_note(d, args[1]);
+    d.with_hint("look up the direction towards what is seen, e.g. a reflected direction reflect(-wo, n), or normalize(q - p)");
+    report(std::move(d));
+    return error_value(call_range);
+  }
   const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
   switch (sig.rule) {
     case BuiltinRule::texture: {

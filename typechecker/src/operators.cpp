@@ -321,16 +321,16 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
 
 // Homogeneous coordinates carry a power of w (Type::weight): products add the
 // weights, quotients subtract them, and a value of weight 0 is dehomogenized:
-// h.xyz / h.w is a point<S>, h.xy / h.w (or h.xy * (1.0 / h.w)) plain coordinates.
+// h.xy / h.w, or h.xy * (1.0 / h.w), are plain coordinates.
 Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
                                    SourceRange range) {
   const Type& a = lhs.type;
   const Type& b = rhs.type;
   const bool ha = a.geometry == Geometry::hpoint, hb = b.geometry == Geometry::hpoint;
   if (ha && hb && !consistent(a.from, b.from)) {
-    operand_mismatch(std::string("cannot ") + (op == ast::BinaryOp::Mul ? "multiply " : "divide ") + name_of(a) + " and " +
-                         name_of(b) + ": they are in different spaces",
-                     lhs, rhs, op_range, "the divide by w uses the w of the same homogeneous point", "E-SPACE-MISMATCH");
+    operand_mismatch(std::string("cannot ") + (op == ast::BinaryOp::Mul ? "multiply " : "divide ") + name_of(a) +
+                         (op == ast::BinaryOp::Mul ? " and " : " by ") + name_of(b) + ": they are in different spaces",
+                     lhs, rhs, op_range, "divide by the w of the same homogeneous point", "E-SPACE-MISMATCH");
     return error_value(range);
   }
   const int wa = ha ? a.weight : 0, wb = hb ? b.weight : 0;
@@ -344,11 +344,9 @@ Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Val
     out.type.geometry = Geometry::hpoint;
     out.type.from = space;
     out.type.weight = static_cast<std::int8_t>(weight);
-  } else if (weight == 0 && out.type.shape == Shape::vector && out.type.rows == 3) {
-    out.type.geometry = Geometry::point;  // what homogenize(h) gives
-    out.type.from = space;
-    out.type.dim = value_dimension(out.type, result_.registry);
   }
+  // Weight 0: plain coordinates. Not a point<S>: after a projection they are
+  // NDC, not lengths (homogenize(h), or a declared point<S>, says otherwise).
   return out;
 }
 
