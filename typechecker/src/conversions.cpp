@@ -56,6 +56,13 @@ Value Checker::convert(const ast::ConvertExpr& e) {
       for (std::size_t i = 0; i < template_spaces_->size(); ++i)
         if ((*template_spaces_)[i] == name->name) return convert_space(e, v, SpaceSlot::generic(static_cast<std::uint32_t>(i)));
     if (std::optional<SpaceId> s = result_.registry.find_space(name->name)) return convert_space(e, v, SpaceSlot::known(*s));
+    if (!result_.registry.find_unit(name->name) && !result_.registry.find_dimension(name->name)) {
+      report(Diagnostic::error(e.target->range, "unknown space or unit '" + name->name + "'")
+                 .with_code("E-UNKNOWN-SPACE")
+                 .with_hint("'in' converts to a declared space ('space " + name->name + ";') or unit ('unit " + name->name +
+                            " : length = 0.3048;')"));
+      return error_value(e.range);
+    }
   }
   std::optional<Dimension> unit = resolve_unit(e.target);
   if (!unit) return error_value(e.range);
@@ -225,6 +232,14 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
       for (const auto& [n, r] : reached) projective_exit = projective_exit || (edge.kind == Geometry::projmap && edge.from == n.space);
     if (projective_exit && kind != Geometry::point && kind != Geometry::hpoint)
       hint += " (a projmap applies only to points)";
+    // A map that would finish the chain the other way round: 'in' does not invert maps.
+    for (const MapEdge& edge : edges) {
+      if (!(edge.from == target) || edge.kind == Geometry::projmap) continue;
+      if (!reached.count(Node{edge.to, false})) continue;
+      hint += "; '" + edge.variable->name + "' goes the other way (" + name_of_space(edge.from) + " → " + name_of_space(edge.to) +
+              ") and 'in' does not invert maps: declare its inverse, or write inverse(" + edge.variable->name + ") * …";
+      break;
+    }
     return fail("cannot convert " + subject + " to " + target_text + ": no chain of maps in scope leads from " +
                     name_of_space(t.from) + " to " + target_text,
                 hint);
