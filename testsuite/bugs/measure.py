@@ -4,6 +4,7 @@ correct shaders it accepts (docs/typechecker.md, "What the checker catches").
 
     testsuite/bugs/measure.py build/bin/safegi_check_file            # print the table
     testsuite/bugs/measure.py build/bin/safegi_check_file --write docs/typechecker.md
+    testsuite/bugs/measure.py build/bin/safegi_check_file --check docs/typechecker.md   # ctest: the page is current
 
 Per class of mutants.py: its mutants (one mistake each, the checker must
 reject them), its escapes (one mistake each that keeps the types right), and
@@ -92,18 +93,25 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("check_file", help="path to safegi_check_file")
     parser.add_argument("--write", help="replace the table between the markers in this file")
+    parser.add_argument("--check", help="fail unless the table between the markers in this file is current")
     args = parser.parse_args()
     check_file = str(pathlib.Path(args.check_file).resolve())
     table = measure(check_file)
-    if not args.write:
+    if not args.write and not args.check:
         sys.stdout.write(table)
         return 0
-    doc = pathlib.Path(args.write)
+    doc = pathlib.Path(args.write or args.check)
     text = doc.read_text()
     if BEGIN not in text or END not in text:
         sys.exit(f"{doc}: no {BEGIN} … {END} markers")
     head, rest = text.split(BEGIN, 1)
-    _, tail = rest.split(END, 1)
+    old, tail = rest.split(END, 1)
+    if args.check:
+        if old == "\n" + table:
+            return 0
+        sys.stdout.write(f"{doc}: the catalogue table is stale; run testsuite/bugs/measure.py <safegi_check_file> --write {doc}\n")
+        sys.stdout.write(table)
+        return 1
     doc.write_text(head + BEGIN + "\n" + table + END + tail)
     return 0
 
