@@ -168,10 +168,31 @@ TEST(Spaces, HomogeneousCoordinatesNeedTheDivide) {
             Messages{"error: cannot initialize 'p' of type point<clip> with a value of type vec3 of hpoint<clip>"});
 }
 
+// Found in Gator's microfacet benchmark: `t - dot(t, n)` meant `t - dot(t, n) * n`.
+TEST(Spaces, ANumberAddedToEveryCoordinateIsAKindError) {
+  EXPECT_EQ(messages_of("vector<world> t = vw - dot(vw, dw);"),
+            Messages{"error: cannot subtract vector<world> and float<length>: a number added to every coordinate of a "
+                     "vector depends on the axes of world"});
+  EXPECT_EQ(messages_of("point<world> p = pw + 1.0 * meter;"),
+            Messages{"error: cannot add point<world> and float<length>: a number added to every coordinate of a point "
+                     "depends on the axes of world"});
+  EXPECT_EQ(messages_of("vector<world> t = vw - dot(vw, dw) * dw; vec3 plain = vec3(1.0) + 0.5;"), Messages{});
+}
+
+TEST(Spaces, ReflectKeepsKindAndSpace) {
+  auto c = check_source(std::string(kGlobals) + "void main() { direction<world> r = reflect(dw, dw); vector<world> v = reflect(vw, dw); }");
+  ASSERT_EQ(c->messages(), Messages{});
+  EXPECT_EQ(messages_of("vec3 r = reflect(vw, no);"),
+            Messages{"error: argument 2 of 'reflect' has type normal<object>, but the other arguments are in world"});
+}
+
 TEST(Spaces, PlainVec3IsConsistentWithEveryKind) {
   EXPECT_EQ(check_source(std::string(kGlobals) + "in vec3 raw; void main() { point<world> p = pw + raw; vector<world> v = raw; p = raw; }")
                 ->messages(),
             Messages{});
+  // A kind-less vec3 may be a point: plain - point is a vector.
+  auto c = check_source(std::string(kGlobals) + "in vec3 raw; void main() { vector<world> v = raw - pw; }");
+  ASSERT_EQ(c->messages(), Messages{});
 }
 
 }  // namespace

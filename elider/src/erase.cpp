@@ -108,7 +108,8 @@ const OperationShape* shape_of(GeometricOp op) {
     case GeometricOp::transform_vector: return &vector;
     case GeometricOp::transform_normal: return &normal;
     case GeometricOp::project: return &project;
-    case GeometricOp::compose: return &compose;
+    case GeometricOp::compose:
+    case GeometricOp::transform_homogeneous: return &compose;
     default: return nullptr;
   }
 }
@@ -225,7 +226,7 @@ class Eraser {
     const ast::Expr* a = nullptr;
     const ast::Expr* b = nullptr;
     if (auto* bin = ast::dyn_cast<ast::BinaryExpr>(&node)) {
-      if (info.op == GeometricOp::compose) return;  // `m2 * m1` is already GLSL
+      if (info.op == GeometricOp::compose || info.op == GeometricOp::transform_homogeneous) return;  // already GLSL
       a = bin->lhs;
       b = bin->rhs;
     } else if (auto* call = ast::dyn_cast<ast::CallExpr>(&node)) {
@@ -278,12 +279,10 @@ class Eraser {
     }
     std::string maps;
     for (const std::string& m : info.maps) maps += (maps.empty() ? "" : " * ") + m;
-    const Type* operand = in_.checked.type_of(e.operand);
     switch (info.op) {
       case GeometricOp::transform_point: return around("(" + maps + " * vec4(", ", 1.0)).xyz");
-      case GeometricOp::project:
-        if (operand && operand->geometry == Geometry::hpoint) return around("(" + maps + " * ", ")");
-        return around("(" + maps + " * vec4(", ", 1.0))");
+      case GeometricOp::transform_homogeneous: return around("(" + maps + " * ", ")");
+      case GeometricOp::project: return around("(" + maps + " * vec4(", ", 1.0))");
       case GeometricOp::transform_normal: return around("(transpose(inverse(mat3(" + maps + "))) * ", ")");
       default: return around("(mat3(" + maps + ") * ", ")");
     }

@@ -222,7 +222,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     info.signature = sig.text;
     const Geometry first = sig.params.empty() ? Geometry::none : sig.params[0].type.geometry;
     const Geometry second = sig.params.size() > 1 ? sig.params[1].type.geometry : Geometry::none;
-    if (name == "transform" || name == "transform_normal") {
+    if (second == Geometry::hpoint && (name == "transform" || name == "project")) {
+      info.op = GeometricOp::transform_homogeneous;
+    } else if (name == "transform" || name == "transform_normal") {
       if (first == Geometry::projmap) info.op = GeometricOp::project;
       else if (second == Geometry::point) info.op = GeometricOp::transform_point;
       else if (sig.rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;
@@ -299,6 +301,7 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
     info.signature = m->signature->text;
     const Geometry g = m->signature->params[1].type.geometry;
     if (builtin == "compose") info.op = GeometricOp::compose;
+    else if (g == Geometry::hpoint) info.op = GeometricOp::transform_homogeneous;
     else if (m->signature->params[0].type.geometry == Geometry::projmap) info.op = GeometricOp::project;
     else if (g == Geometry::point) info.op = GeometricOp::transform_point;
     else if (m->signature->rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;

@@ -137,7 +137,7 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
     return fail("cannot convert " + name_of(t) + " to " + target_text + ": " +
                     (convertible ? "it has no space" : "only points, vectors, directions, normals and hpoints are in a space"),
                 t.shape == Shape::vector && t.rows == 3 && kind == Geometry::none
-                    ? "say which space it is in first, e.g. point<object>(v) in " + target_text
+                    ? "say which kind and space it is in first, e.g. vector<S>(v) in " + target_text
                     : "");
   Value out = v;
   out.range = e.range;
@@ -288,7 +288,7 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
         out.type.from = target;
       }
       break;
-    case Geometry::hpoint: info.op = GeometricOp::project; break;
+    case Geometry::hpoint: info.op = GeometricOp::transform_homogeneous; break;
     case Geometry::normal: info.op = rigid ? GeometricOp::transform_vector : GeometricOp::transform_normal; break;
     case Geometry::direction:
       info.op = GeometricOp::transform_vector;

@@ -252,7 +252,19 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     if (ga == Geometry::point && gb == Geometry::point && add)
       return reject("cannot add two points (" + both + ")", "subtract them to get a vector, or average them with mix(p, q, 0.5)",
                     "E-POINT-ARITHMETIC");
-    if (gb == Geometry::point && ga != Geometry::point && !add)
+    // A number added to every coordinate of a point or vector moves it along
+    // (1, 1, 1), which depends on the axes: `t - dot(t, n)` meant `t - dot(t, n) * n`.
+    const bool scalar_a = a.shape == Shape::scalar, scalar_b = b.shape == Shape::scalar;
+    auto spatial = [](Geometry g) { return g == Geometry::point || vectorish(g); };
+    if ((spatial(ga) && scalar_b) || (spatial(gb) && scalar_a)) {
+      const Type& geo = spatial(ga) ? a : b;
+      return reject(std::string("cannot ") + verb(op) + " " + both + ": a number added to every coordinate of a " +
+                        geometry_name(geo.geometry) + " depends on the axes of " + name_of_space(geo.from),
+                    "scale a direction by it instead (e.g. t - dot(t, n) * n), or build the vector it stands for",
+                    "E-KIND-MISMATCH");
+    }
+    // A kind-less vec3 may be a point (gradual typing): plain - point is a vector.
+    if (gb == Geometry::point && ga != Geometry::point && ga != Geometry::none && !add)
       return reject("cannot subtract a point from " + name_of(a), "only point - point and point - vector are defined",
                     "E-POINT-ARITHMETIC");
     if (!consistent(a.from, b.from))
@@ -264,7 +276,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
     out.type.dim.spelling.clear();
     out.type.from = space;
-    if (ga == Geometry::point && gb == Geometry::point) {
+    if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
       out.type.geometry = Geometry::vector;  // point - point
     } else if (ga == Geometry::point || gb == Geometry::point) {
       out.type.geometry = Geometry::point;   // point ± displacement

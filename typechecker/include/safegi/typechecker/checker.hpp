@@ -63,6 +63,7 @@ enum class GeometricOp : std::uint8_t {
   transform_vector,     // map * vector / direction: mat3(m) * v
   transform_normal,     // map * normal: transpose(inverse(mat3(m))) * n
   project,              // projmap * point: m * vec4(p, 1)
+  transform_homogeneous,  // map or projmap * hpoint: m * h
   homogenize,           // h.xyz / h.w
   compose,              // m2 * m1
   inverse,              // inverse(m)
