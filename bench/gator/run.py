@@ -115,6 +115,33 @@ def gator_output(gatorc: Path, gator: Path, bench: str, lgl: str, work: Path) ->
     return run.stdout if run.returncode == 0 and run.stdout.strip() else None
 
 
+# What porting found (the recipe fixes or spells out each; the counts above include those edits).
+FINDINGS = """What the checker found in Gator's plain shaders while porting them (the ports fix or spell out each):
+
+* phong, multilight, synthetic: `dot(camPos, reflectDir)` takes a camera-space direction and a world-space
+  one (E-SPACE-MISMATCH); Gator's typed versions convert `reflectDir` to camera space, and so do the ports
+  (`… in camera`).
+* microfacet: `normalize(geom_tangent - dot(geom_tangent, nhat))` subtracts a number from every coordinate
+  where `dot(…) * nhat` was meant (E-KIND-MISMATCH, a rule added for it); Gator's version keeps the line.
+  Its vertex shader transforms tangents with w = 1, as points; typed `vector<model>`, the port's
+  `aTangent in view` applies the linear part only.
+* fog: `BA = lightVec - worldPos` is a vector minus a point (E-POINT-ARITHMETIC); the port keeps the value
+  and says what it assumes, `lightVec - vector<world>(worldPos)`. spotlight negates a point,
+  `normalize(-uLight in world)`, which Gator accepts; the port writes `-vector<world>(uLight in world)`.
+* bump: `normalize(-vPosition)` with a world-space `vPosition` puts the eye at the world's origin; the
+  port's `-vector<world>(vPosition)` makes that assumption visible (it type-checks: the language cannot
+  know where the eye is).
+* shadow_map: `vShadowPos = (… * vec4(aPosition, 1.)).xyz` skips the divide by w, which is right only
+  because the light's projection is orthographic (`mat4.ortho` in its main.ts): the port types it
+  `map<light, light_clip>`; as a `projmap` the missing divide would be an error.
+
+Annotations that are not lines: the normal-through-rigid-map rule needs `rigidmap` for the model and view
+matrices (the benchmarks' hosts only rotate and translate; fog's model matrix scales, so its normal is a
+`vector`); `float<1>(dot(n, wi))` where a cosine is used as a plain number (Phong's reflection formula).
+Coordinates that are not lengths (`vShadowPos`, NDC) stay plain `vec3`: a point's coordinates are lengths.
+"""
+
+
 def not_measured(reason: str) -> None:
     h.write_section("gator", "## Gator's benchmarks: annotation overhead and emitted GLSL\n\n"
                     f"Not measured in this run: {reason}. Fetch the snapshot (`fetch github:cucapra/gator`, or "
@@ -228,6 +255,7 @@ def main() -> None:
                          f"({glsl_size(out) / max(our_sizes.get(key, 1), 1):.1f}× smaller)")
         text += ("\nWithout gatorc (`SAFEGI_GATORC`), Gator's output is known only from its compiled test "
                  "expectations: " + "; ".join(pairs) + ".\n")
+    text += "\n" + FINDINGS
     if failures:
         text += "\nFailures:\n\n" + "\n".join(f"* {f}" for f in failures) + "\n"
     h.write_section("gator", text)
