@@ -106,10 +106,21 @@ Value Checker::convert_unit(const ast::ConvertExpr& e, const Value& v, const Dim
                                                       : "annotate it first, e.g. float<" + reg.format(*reg.reference(target)) + ">(x)",
                 "E-DIMENSION-MISMATCH");
   Checked<Dimension> have = reg.reference(from.value), want = reg.reference(target);
-  if (!have || !want || !(*have == *want))
+  if (!have || !want || !(*have == *want)) {
+    std::string hint = want && have ? physics_hint(DimSlot::known(*want), DimSlot::known(*have)) : "";
+    // `r * r in (meter^2)` converts only the right-hand r: say so when the target is a power of the operand.
+    bool power_of_operand = false;
+    for (int k : {2, 3, -1, -2})
+      if (have && want && !have->is_dimensionless()) {
+        Checked<Dimension> p = power(*have, k);
+        power_of_operand = power_of_operand || (p && *p == *want);
+      }
+    if (power_of_operand)
+      hint = "'in' binds tighter than '*' and '/': (a * b) in " + conversion_target(target) + " converts a product";
     return fail("cannot convert " + name_of(t) + " to " + unit_text + ": " + unit_text + " measures " +
                     (want ? reg.format(*want) : std::string("?")),
-                want && have ? physics_hint(DimSlot::known(*want), DimSlot::known(*have)) : "", "E-DIMENSION-MISMATCH");
+                hint, "E-DIMENSION-MISMATCH");
+  }
   info.factor = reg.scale(from.value) / reg.scale(target);
   out.type.dim = DimSlot::known(target);
   if (out.number) out.number = *out.number * info.factor;
