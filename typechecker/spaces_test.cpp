@@ -176,7 +176,8 @@ TEST(Spaces, ANumberAddedToEveryCoordinateIsAKindError) {
   EXPECT_EQ(messages_of("point<world> p = pw + 1.0 * meter;"),
             Messages{"error: cannot add point<world> and float<length>: a number added to every coordinate of a point "
                      "depends on the axes of world"});
-  EXPECT_EQ(messages_of("vector<world> t = vw - dot(vw, dw) * dw; vec3 plain = vec3(1.0) + 0.5;"), Messages{});
+  EXPECT_EQ(messages_of("vector<world> t = vw - dot(vw, dw) * dw; vec3 plain = vec3(1.0) + 0.5; vector<world> z = vw + 0.0;"),
+            Messages{});
 }
 
 TEST(Spaces, ReflectKeepsKindAndSpace) {

@@ -256,7 +256,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     // (1, 1, 1), which depends on the axes: `t - dot(t, n)` meant `t - dot(t, n) * n`.
     const bool scalar_a = a.shape == Shape::scalar, scalar_b = b.shape == Shape::scalar;
     auto spatial = [](Geometry g) { return g == Geometry::point || vectorish(g); };
-    if ((spatial(ga) && scalar_b) || (spatial(gb) && scalar_a)) {
+    if ((spatial(ga) && scalar_b && !rhs.zero) || (spatial(gb) && scalar_a && !lhs.zero)) {
       const Type& geo = spatial(ga) ? a : b;
       return reject(std::string("cannot ") + verb(op) + " " + both + ": a number added to every coordinate of a " +
                         geometry_name(geo.geometry) + " depends on the axes of " + name_of_space(geo.from),
