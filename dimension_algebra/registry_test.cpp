@@ -104,6 +104,46 @@ TEST_F(Prelude, LongDerivedChains) {
   EXPECT_EQ(chain.format(Dimension::base(0, 41)), "x⁴¹");
 }
 
+// Units are factors of a dimension: centimeter¹ is a length measured in centimetres.
+TEST_F(Prelude, UnitFactors) {
+  const Dimension cm = r.measured_in(*r.find_unit("centimeter"));
+  const Dimension m = r.measured_in(*r.find_unit("meter"));
+  EXPECT_EQ(m, dim({{"length", 1}}));  // the reference unit is the dimension itself
+  EXPECT_TRUE(r.has_unit_factors(cm));
+  EXPECT_FALSE(r.has_unit_factors(m));
+  EXPECT_EQ(*r.reference(cm), dim({{"length", 1}}));
+  EXPECT_DOUBLE_EQ(r.scale(cm), 0.01);
+  const Dimension cm2 = *multiply(cm, cm);
+  EXPECT_DOUBLE_EQ(r.scale(cm2), 1e-4);
+  EXPECT_EQ(r.format(cm), "length in centimeter");
+  EXPECT_EQ(r.format(cm2), "area in centimeter²");
+  EXPECT_EQ(r.format(cm2, Notation::ascii), "area in centimeter^2");
+  const Dimension per_ms = *divide(cm, r.measured_in(*r.find_unit("millisecond")));
+  EXPECT_EQ(r.format(per_ms), "velocity in centimeter·millisecond⁻¹");
+  // Reference bases are spelled by their scale-1 unit.
+  EXPECT_EQ(r.format(*divide(cm, dim({{"time", 1}}))), "velocity in centimeter·second⁻¹");
+  EXPECT_EQ(r.format_units(dim({{"area", 1}})), "meter²");
+  EXPECT_EQ(r.format_units(dim({{"proj", -1}})), "proj⁻¹");  // no unit of proj: its base name
+  // cm / cm cancels; cm / m does not (a plain number times 0.01).
+  EXPECT_TRUE(divide(cm, cm)->is_dimensionless());
+  EXPECT_DOUBLE_EQ(r.scale(*divide(cm, m)), 0.01);
+  EXPECT_TRUE(r.reference(*divide(cm, m))->is_dimensionless());
+  // Units of the same dimension and scale share one factor.
+  DimensionRegistry q = DimensionRegistry::rendering_prelude();
+  ASSERT_TRUE(q.add_unit("centimetre", *q.find_dimension("length"), 0.01));
+  EXPECT_EQ(q.measured_in(*q.find_unit("centimetre")), q.measured_in(*q.find_unit("centimeter")));
+}
+
+TEST_F(Prelude, NumbersAsLiterals) {
+  EXPECT_EQ(DimensionRegistry::format_number(0.01), "0.01");
+  EXPECT_EQ(DimensionRegistry::format_number(100.0), "100.0");
+  EXPECT_EQ(DimensionRegistry::format_number(1e-4), "0.0001");
+  EXPECT_EQ(DimensionRegistry::format_number(0.017453292519943295), "0.017453292519943295");
+  EXPECT_EQ(DimensionRegistry::format_number(1e-9), "1e-09");
+  EXPECT_TRUE(DimensionRegistry::same_scale(12.0 * 0.0254, 0.3048));
+  EXPECT_FALSE(DimensionRegistry::same_scale(0.01, 0.0100001));
+}
+
 TEST_F(Prelude, DescribesErrors) {
   EXPECT_EQ(r.describe({DimensionErrorKind::not_a_root, 0, 3, 2}), "exponent 3 of 'length' is not divisible by 2");
   EXPECT_EQ(r.describe({DimensionErrorKind::exponent_overflow, 1, 1 << 30, 1 << 30}),

@@ -1,5 +1,8 @@
 #include "safegi/dimension_algebra/registry.hpp"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <numbers>
 
 namespace safegi {
@@ -102,7 +105,78 @@ std::optional<Dimension> DimensionRegistry::make(
   return result;
 }
 
+std::string DimensionRegistry::format_number(double value) {
+  char buffer[512];
+  const double magnitude = std::fabs(value);
+  const bool fixed = magnitude == 0.0 || (magnitude >= 1e-6 && magnitude < 1e9);
+  auto [end, ec] = fixed ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
+                         : std::to_chars(buffer, buffer + sizeof buffer, value);
+  std::string text(buffer, ec == std::errc() ? end : buffer);
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+bool DimensionRegistry::same_scale(double a, double b) {
+  return std::fabs(a - b) <= 1e-12 * std::max(std::fabs(a), std::fabs(b));
+}
+
+Dimension DimensionRegistry::measured_in(const Unit& unit) const {
+  if (same_scale(unit.scale, 1.0)) return unit.dimension;
+  for (std::size_t i = 0; i < units_.size(); ++i)
+    if (units_[i].dimension == unit.dimension && same_scale(units_[i].scale, unit.scale))
+      return Dimension::base(kUnitBase + static_cast<BaseId>(i));
+  return unit.dimension;  // not a unit of this registry
+}
+
+bool DimensionRegistry::has_unit_factors(const Dimension& d) const {
+  for (const Factor& f : d.factors())
+    if (f.base >= kUnitBase) return true;
+  return false;
+}
+
+Checked<Dimension> DimensionRegistry::reference(const Dimension& d) const {
+  Dimension out;
+  for (const Factor& f : d.factors()) {
+    Checked<Dimension> part = is_unit_factor(f.base) ? power(unit_of_factor(f.base).dimension, f.exponent)
+                                                     : Checked<Dimension>(Dimension::base(f.base, f.exponent));
+    if (!part) return part;
+    Checked<Dimension> m = multiply(out, *part);
+    if (!m) return m;
+    out = *m;
+  }
+  return out;
+}
+
+double DimensionRegistry::scale(const Dimension& d) const {
+  double s = 1.0;
+  for (const Factor& f : d.factors())
+    if (is_unit_factor(f.base)) s *= std::pow(unit_of_factor(f.base).scale, f.exponent);
+  return s;
+}
+
+std::string DimensionRegistry::factor_name(BaseId id) const {
+  if (id < bases_.size()) return bases_[id];
+  if (is_unit_factor(id)) return unit_of_factor(id).name;
+  return "?";
+}
+
+std::string DimensionRegistry::format_units(const Dimension& d, Notation notation) const {
+  std::vector<RationalFactor> factors;
+  for (const Factor& f : d.factors()) factors.push_back({f.base, f.exponent, 1});
+  auto name = [&](BaseId id) {
+    if (id < bases_.size())
+      for (const Unit& u : units_)
+        if (same_scale(u.scale, 1.0) && u.dimension == Dimension::base(id)) return u.name;
+    return factor_name(id);
+  };
+  return format_factors(factors, notation, name);
+}
+
 std::string DimensionRegistry::format(const Dimension& d, Notation notation) const {
+  if (has_unit_factors(d)) {
+    Checked<Dimension> measured = reference(d);
+    return (measured ? format(*measured, notation) : std::string("?")) + " in " + format_units(d, notation);
+  }
   for (const DerivedDimension& derived : derived_)
     if (derived.value == d) return derived.name;
   return format_product(d, notation);
@@ -116,11 +190,16 @@ std::string DimensionRegistry::format_product(const Dimension& d, Notation notat
 
 std::string DimensionRegistry::format_rational(const std::vector<RationalFactor>& factors,
                                                Notation notation) const {
+  return format_factors(factors, notation, [this](BaseId id) { return factor_name(id); });
+}
+
+std::string DimensionRegistry::format_factors(const std::vector<RationalFactor>& factors, Notation notation,
+                                              const std::function<std::string(BaseId)>& name_of) const {
   std::string out;
   const char* separator = notation == Notation::ascii ? "*" : "·";
   auto emit = [&](const RationalFactor& f) {
     if (!out.empty()) out += separator;
-    const std::string& name = f.base < bases_.size() ? bases_[f.base] : "?";
+    const std::string name = name_of(f.base);
     if (f.denominator == 1) {
       out += power_text(name, f.numerator, notation);
     } else {
@@ -135,7 +214,7 @@ std::string DimensionRegistry::format_rational(const std::vector<RationalFactor>
 }
 
 std::string DimensionRegistry::describe(const DimensionError& error) const {
-  const std::string name = error.base < bases_.size() ? bases_[error.base] : "?";
+  const std::string name = factor_name(error.base);
   switch (error.kind) {
     case DimensionErrorKind::exponent_overflow:
       return "exponent of '" + name + "' overflows (" + std::to_string(error.exponent) + " combined with " +

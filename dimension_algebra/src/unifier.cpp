@@ -176,7 +176,7 @@ std::string DimensionUnifier::explain(const UnifyResult& result, const Dimension
     }
     case UnifyStatus::no_solution:
       return "constraint " + std::to_string(result.conflicting_equation + 1) +
-             " contradicts the earlier ones (the exponents of '" + registry.base_name(result.conflicting_base) +
+             " contradicts the earlier ones (the exponents of '" + registry.factor_name(result.conflicting_base) +
              "' disagree)";
     case UnifyStatus::non_integer:
       return names_[result.variable] + " would be " +

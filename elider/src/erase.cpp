@@ -50,13 +50,7 @@ std::string blanked(std::string_view text) {
   return out;
 }
 
-std::string format_scale(double value) {
-  char buffer[64];
-  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  std::string text(buffer, ec == std::errc() ? end : buffer);
-  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
-  return text;
-}
+std::string format_scale(double value) { return DimensionRegistry::format_number(value); }
 
 // True when `text` holds no GLSL: a file of annotation declarations (the
 // prelude) erases to comments and blanks, and its #include line then goes.
@@ -114,7 +108,8 @@ const OperationShape* shape_of(GeometricOp op) {
     case GeometricOp::transform_vector: return &vector;
     case GeometricOp::transform_normal: return &normal;
     case GeometricOp::project: return &project;
-    case GeometricOp::compose: return &compose;
+    case GeometricOp::compose:
+    case GeometricOp::transform_homogeneous: return &compose;
     default: return nullptr;
   }
 }
@@ -129,6 +124,7 @@ class Eraser {
     collect_variable_names();
     walk(&in_.unit, [this](const ast::Node& n) { visit(n); });
     for (const auto& [node, info] : in_.checked.calls) geometric(*node, info);
+    for (const auto& [node, info] : in_.checked.conversions) conversion(*node, info);
     ElideResult result;
     result.source_files.push_back(in_.sources.path(in_.main_file));
     std::string text = render(in_.main_file, 0, result.source_files);
@@ -230,7 +226,7 @@ class Eraser {
     const ast::Expr* a = nullptr;
     const ast::Expr* b = nullptr;
     if (auto* bin = ast::dyn_cast<ast::BinaryExpr>(&node)) {
-      if (info.op == GeometricOp::compose) return;  // `m2 * m1` is already GLSL
+      if (info.op == GeometricOp::compose || info.op == GeometricOp::transform_homogeneous) return;  // already GLSL
       a = bin->lhs;
       b = bin->rhs;
     } else if (auto* call = ast::dyn_cast<ast::CallExpr>(&node)) {
@@ -260,6 +256,36 @@ class Eraser {
     gap(a->range.end.offset, b->range.begin.offset,
         std::string(pa ? ")" : "") + shape->middle + (pb ? "(" : ""), 0);
     gap(b->range.end.offset, w.end.offset, std::string(pb ? ")" : "") + shape->suffix, -(1LL << 40) + size);
+  }
+
+  // `e in target`: a unit conversion is `(e * factor)` (nothing when the factor
+  // is 1); a space conversion is the maps' product applied the way transform()
+  // applies one map, `(viewFromWorld * worldFromObject * vec4(p, 1.0)).xyz`.
+  void conversion(const ast::ConvertExpr& e, const ConversionInfo& info) {
+    const SourceRange& w = e.range;
+    const SourceRange& a = e.operand->range;
+    const FileId file = w.begin.file;
+    if (a.begin.file != file || a.end.file != file || w.end.file != file || a.begin.offset != w.begin.offset ||
+        a.end.offset > w.end.offset)
+      return cannot_rewrite(e);
+    const std::int64_t size = w.end.offset - w.begin.offset;
+    auto around = [&](const std::string& prefix, const std::string& suffix) {
+      if (!prefix.empty()) add(file, w.begin.offset, w.begin.offset, prefix, -size);
+      add(file, a.end.offset, w.end.offset, suffix + newlines_of(text_of(file, a.end.offset, w.end.offset)), -(1LL << 40) + size);
+    };
+    if (info.maps.empty()) {
+      if (DimensionRegistry::same_scale(info.factor, 1.0)) return around("", "");
+      return around("(", " * " + format_scale(info.factor) + ")");
+    }
+    std::string maps;
+    for (const std::string& m : info.maps) maps += (maps.empty() ? "" : " * ") + m;
+    switch (info.op) {
+      case GeometricOp::transform_point: return around("(" + maps + " * vec4(", ", 1.0)).xyz");
+      case GeometricOp::transform_homogeneous: return around("(" + maps + " * ", ")");
+      case GeometricOp::project: return around("(" + maps + " * vec4(", ", 1.0))");
+      case GeometricOp::transform_normal: return around("(transpose(inverse(mat3(" + maps + "))) * ", ")");
+      default: return around("(mat3(" + maps + ") * ", ")");
+    }
   }
 
   // `homogenize(h)`: `(h.xyz / h.w)` for a variable, else a helper call so

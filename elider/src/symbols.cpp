@@ -24,7 +24,9 @@ gl::SourceLocation location_of(const SourceManager& sources, SourceLocation loc)
 
 gl::DimensionExponents exponents_of(const Dimension& d, const DimensionRegistry& registry) {
   gl::DimensionExponents out;
-  for (const Factor& f : d.factors()) out[registry.base_name(f.base)] = f.exponent;
+  // A unit factor is written by its unit's name: a typed host value in reference
+  // units then does not match a `float<length in centimeter>` (fail closed).
+  for (const Factor& f : d.factors()) out[registry.factor_name(f.base)] = f.exponent;
   return out;
 }
 

@@ -83,6 +83,12 @@ void walk(const Node* node, const Visitor& visit) {
       return;
     }
     case NodeKind::ParenExpr: walk(static_cast<const ParenExpr*>(node)->inner, visit); return;
+    case NodeKind::ConvertExpr: {
+      auto* e = static_cast<const ConvertExpr*>(node);
+      walk(e->operand, visit);
+      walk(e->target, visit);
+      return;
+    }
     case NodeKind::InitializerList: walk_all(static_cast<const InitializerList*>(node)->elements, visit); return;
     case NodeKind::DimBinary: {
       auto* e = static_cast<const DimBinary*>(node);
@@ -92,6 +98,12 @@ void walk(const Node* node, const Visitor& visit) {
     }
     case NodeKind::DimPower: walk(static_cast<const DimPower*>(node)->base, visit); return;
     case NodeKind::DimParen: walk(static_cast<const DimParen*>(node)->inner, visit); return;
+    case NodeKind::DimUnit: {
+      auto* e = static_cast<const DimUnit*>(node);
+      walk(e->dimension, visit);
+      walk(e->unit, visit);
+      return;
+    }
     case NodeKind::TypeSpecifier: {
       auto* t = static_cast<const TypeSpecifier*>(node);
       walk(t->annotation, visit);

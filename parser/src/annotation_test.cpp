@@ -138,6 +138,43 @@ TEST(Annotation, RationalPowersAreRejected) {
             "language\ndimension d = length^0.5;\n                     ^~~\n");
 }
 
+// `e in target` converts a value to a space or a unit (docs/language.md, "Conversions").
+TEST(Annotation, Conversions) {
+  EXPECT_EQ(dump_expr("p in world"), "ConvertExpr in\n  IdentifierExpr p\n  DimName world\n");
+  // Tighter than `*`, looser than unary operators.
+  EXPECT_EQ(dump_expr("a * b in world"),
+            "BinaryExpr *\n  IdentifierExpr a\n  ConvertExpr in\n    IdentifierExpr b\n    DimName world\n");
+  EXPECT_EQ(dump_expr("-v in world"), "ConvertExpr in\n  UnaryExpr -\n    IdentifierExpr v\n  DimName world\n");
+  EXPECT_EQ(dump_expr("d in (kilometer / hour)"),
+            "ConvertExpr in\n  IdentifierExpr d\n  DimParen\n    DimBinary /\n      DimName kilometer\n"
+            "      DimName hour\n");
+  EXPECT_EQ(dump_expr("(p in view) in clip"),
+            "ConvertExpr in\n  ParenExpr\n    ConvertExpr in\n      IdentifierExpr p\n      DimName view\n"
+            "  DimName clip\n");
+  auto power = parse_text("void f() { float x = d in meter^2; }");
+  EXPECT_NE(power->errors().find("a power of a unit after 'in' needs parentheses, e.g. x in (meter^2)"), std::string::npos)
+      << power->errors();
+  // A missing `;` before an `in` declaration is still reported as one.
+  auto semicolon = parse_text("float x = 1.0\nin vec3 p;\n");
+  EXPECT_NE(semicolon->errors().find("expected ';'"), std::string::npos) << semicolon->errors();
+  auto glsl = parse_text("space world; space view; uniform map<world, view> v; void f(point<world> p) { point<view> q = 2.0 * p in view; }");
+  ASSERT_EQ(glsl->errors(), "");
+  EXPECT_NE(glsl->glsl().find("point<view> q = 2.0 * (p in view);"), std::string::npos) << glsl->glsl();
+}
+
+// `float<length in centimeter>`: a dimension measured in a unit.
+TEST(Annotation, DimensionsInUnits) {
+  EXPECT_EQ(dump_first("uniform float<length in centimeter> r;"),
+            "VariableDecl [uniform]\n  TypeSpecifier builtin float\n    Annotation\n      DimUnit in\n        DimName length\n"
+            "        DimName centimeter\n  Declarator r\n");
+  auto parsed = parse_text("uniform float<area in centimeter^2> a; uniform spectrum<power in kilowatt> p;"
+                           " uniform sampler2D<float<length in millimeter>> depth;"
+                           " void f() { float<velocity in kilometer / hour> v = float<velocity in kilometer / hour>(1.0); }");
+  ASSERT_EQ(parsed->errors(), "");
+  EXPECT_NE(parsed->glsl().find("uniform float<area in centimeter^2> a;"), std::string::npos) << parsed->glsl();
+  EXPECT_NE(parsed->glsl().find("float<velocity in kilometer / hour>(1.0)"), std::string::npos) << parsed->glsl();
+}
+
 TEST(Annotation, ThePreludeParses) {
   std::ifstream in(SAFEGI_PRELUDE_FILE);
   std::stringstream text;

@@ -7,8 +7,8 @@ namespace safegi::ast {
 std::string_view node_kind_name(NodeKind kind) {
   static constexpr std::string_view names[] = {
       "IdentifierExpr", "LiteralExpr",  "UnaryExpr",     "BinaryExpr",     "AssignExpr",    "TernaryExpr",
-      "CallExpr",       "IndexExpr",    "MemberExpr",    "MethodCallExpr", "ParenExpr",     "InitializerList",
-      "DimName",        "DimOne",       "DimBinary",     "DimPower",       "DimParen",      "TypeSpecifier",
+      "CallExpr",       "IndexExpr",    "MemberExpr",    "MethodCallExpr", "ParenExpr",     "ConvertExpr",   "InitializerList",
+      "DimName",        "DimOne",       "DimBinary",     "DimPower",       "DimParen",      "DimUnit",       "TypeSpecifier",
       "Annotation",     "VariableDecl", "QualifierDecl", "FunctionDecl",   "ParamDecl",     "StructDecl",
       "InterfaceBlockDecl", "PrecisionDecl", "DimensionDecl", "UnitDecl",  "SpaceDecl",     "EmptyDecl",
       "CompoundStmt",   "DeclStmt",     "ExprStmt",      "EmptyStmt",      "IfStmt",        "SwitchStmt",

@@ -87,6 +87,14 @@ class Dumper {
         close();
         node(static_cast<const ParenExpr*>(n)->inner, level + 1);
         return;
+      case NodeKind::ConvertExpr: {
+        const auto* c = static_cast<const ConvertExpr*>(n);
+        text("in");
+        close();
+        node(c->operand, level + 1);
+        node(c->target, level + 1);
+        return;
+      }
       case NodeKind::InitializerList: {
         const auto* l = static_cast<const InitializerList*>(n);
         close();
@@ -113,6 +121,14 @@ class Dumper {
         close();
         node(static_cast<const DimParen*>(n)->inner, level + 1);
         return;
+      case NodeKind::DimUnit: {
+        const auto* u = static_cast<const DimUnit*>(n);
+        text("in");
+        close();
+        node(u->dimension, level + 1);
+        node(u->unit, level + 1);
+        return;
+      }
       case NodeKind::TypeSpecifier: {
         const auto* t = static_cast<const TypeSpecifier*>(n);
         static constexpr std::string_view forms[] = {"builtin", "annotated", "named", "struct"};

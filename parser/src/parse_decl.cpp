@@ -172,6 +172,7 @@ std::size_t Parser::scan_annotation(std::size_t i, int nesting) const {
       }
     } else {
       i = scan_dim_expr(i, nesting + 1);
+      if (i != 0 && tokens_[i].kind == T::QualKw && tokens_[i].text == "in") i = scan_dim_expr(i + 1, nesting + 1);
       if (i == 0) return 0;
     }
     if (tokens_[i].kind == T::Gt) return i + 1;
@@ -450,7 +451,15 @@ Node* Parser::parse_annotation_arg() {
   if (at(T::TypeKw) || (is_annotated_type_word(peek()) && peek(1).kind == T::Lt)) {
     return parse_type_specifier_nonarray();
   }
-  return parse_dim_expr();
+  SourceLocation begin = here();
+  DimExpr* dimension = parse_dim_expr();
+  if (!at_in()) return dimension;
+  auto* measured = make<DimUnit>(begin);  // `length in centimeter`
+  measured->dimension = dimension;
+  measured->in_range = advance().range;
+  measured->unit = parse_dim_expr();
+  measured->range = range_from(begin);
+  return measured;
 }
 
 DimExpr* Parser::parse_dim_expr() {

@@ -200,7 +200,7 @@ Expr* Parser::parse_conditional() {
 
 Expr* Parser::parse_binary(int min_precedence) {
   SourceLocation begin = here();
-  Expr* lhs = parse_unary();
+  Expr* lhs = parse_conversion();
   for (;;) {
     BinaryOp op;
     int count;
@@ -219,6 +219,35 @@ Expr* Parser::parse_binary(int min_precedence) {
     lhs = finish_expr(binary, begin);
     check_height(lhs);
   }
+}
+
+bool Parser::at_in(std::size_t offset) const {
+  const PToken& t = peek(offset);
+  return t.kind == T::QualKw && t.text == "in";
+}
+
+// `in` never follows an expression in GLSL; `in T name` after a missing `;`
+// is a declaration, not a conversion.
+bool Parser::at_conversion() const {
+  if (!at_in()) return false;
+  if (peek(1).kind == T::LParen) return true;
+  return peek(1).kind == T::Ident && peek(2).kind != T::Ident;
+}
+
+Expr* Parser::parse_conversion() {
+  SourceLocation begin = here();
+  Expr* e = parse_unary();
+  while (at_conversion()) {
+    auto* convert = make<ConvertExpr>(begin);
+    convert->operand = e;
+    convert->in_range = advance().range;
+    convert->target = parse_dim_primary();  // a name, or a parenthesised unit expression
+    if (at(T::Caret)) fail(peek().range, "a power of a unit after 'in' needs parentheses, e.g. x in (meter^2)");
+    convert->height = height_of({e});
+    e = finish_expr(convert, begin);
+    check_height(e);
+  }
+  return e;
 }
 
 Expr* Parser::parse_unary() {

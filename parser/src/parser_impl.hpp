@@ -145,6 +145,10 @@ class Parser {
   ast::Expr* parse_conditional();
   ast::Expr* parse_binary(int min_precedence);
   ast::Expr* parse_unary();
+  // A unary expression followed by any number of `in target` conversions.
+  ast::Expr* parse_conversion();
+  bool at_conversion() const;
+  bool at_in(std::size_t offset = 0) const;
   ast::Expr* parse_postfix();
   ast::Expr* parse_primary();
   ast::Expr* parse_call_args(ast::CallExpr* call);

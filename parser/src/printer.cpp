@@ -62,6 +62,7 @@ int precedence_of(const Expr& e) {
   if (isa<TernaryExpr>(&e)) return 2;
   if (isa<AssignExpr>(&e)) return 2;
   if (isa<UnaryExpr>(&e)) return 14;
+  if (isa<ConvertExpr>(&e)) return 13;  // between unary (14) and `*` (13, left-associative, so its lhs is printed at 13)
   return 15;
 }
 
@@ -175,6 +176,13 @@ void GlslPrinter::expression(const Expr& e, int parent_precedence) {
       expression(*static_cast<const ParenExpr&>(e).inner);
       out_ += ')';
       break;
+    case NodeKind::ConvertExpr: {
+      const auto& c = static_cast<const ConvertExpr&>(e);
+      expression(*c.operand, 14);
+      out_ += " in ";
+      dim(*c.target);
+      break;
+    }
     case NodeKind::InitializerList: {
       const auto& list = static_cast<const InitializerList&>(e);
       out_ += '{';
@@ -222,6 +230,13 @@ void GlslPrinter::dim(const Node& n) {
       dim(*static_cast<const DimParen&>(n).inner);
       out_ += ')';
       break;
+    case NodeKind::DimUnit: {
+      const auto& u = static_cast<const DimUnit&>(n);
+      dim(*u.dimension);
+      out_ += " in ";
+      dim(*u.unit);
+      break;
+    }
     case NodeKind::TypeSpecifier: type(static_cast<const TypeSpecifier&>(n)); break;
     default: break;
   }

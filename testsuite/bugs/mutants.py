@@ -3,7 +3,9 @@
 
 Each class folder holds `correct.sgl.<stage>` (checks clean) and the mutants
 listed here: one textual change each, so a mutant differs from the correct
-shader by exactly one mistake. Run from this folder after editing a correct
+shader by exactly one mistake. The escapes are mistakes of the same kind the
+language cannot see (right types, wrong value): they check clean, and
+measure.py reports them. Run from this folder after editing a correct
 shader or this list, then regenerate the .expected files (see CMakeLists.txt)
 and review their diffs.
 """
@@ -78,6 +80,37 @@ MUTANTS = {
         ("length_unit_for_time", "float<time> shutter = 20.0 * millisecond;", "float<time> shutter = 20.0 * millimeter;"),
         ("unit_as_annotation", "float<length> near = 0.1 * meter;", "float<meter> near = 0.1 * meter;"),
     ],
+    "camera_transforms": [  # model-view-projection and shadow chains
+        ("mvp_in_wrong_order", "clipFromView * viewFromWorld * worldFromObject;", "worldFromObject * viewFromWorld * clipFromView;"),
+        ("view_matrix_skipped", "clipFromView * viewFromWorld * worldFromObject;", "clipFromView * worldFromObject;"),
+        ("shadow_chain_through_the_camera", "lightClipFromLightView * lightViewFromWorld * worldFromObject;",
+         "lightClipFromLightView * viewFromWorld * worldFromObject;"),
+    ],
+    "points_as_directions": [  # only a difference of points is a vector
+        ("light_position_as_direction", "direction<world> wi = normalize(toLight);", "direction<world> wi = normalize(lightPos);"),
+        ("length_of_a_position", "float<length> d = length(toLight);", "float<length> d = length(P);"),
+        ("half_vector_from_the_eye_position", "direction<world> h = normalize(wi + wo);", "direction<world> h = normalize(wi + normalize(eyePos));"),
+    ],
+    "unit_scales": [  # the right dimension in the wrong unit
+        ("centimetres_read_as_metres", "float<length> radius = lightRadiusCm in meter;", "float<length> radius = lightRadiusCm;"),
+        ("degrees_into_cosine", "cos(coneHalfAngleDeg in radian)", "cos(coneHalfAngleDeg)"),
+        ("azimuth_declared_in_degrees", "float<angle> phi = 2.0 * PI * xi.y * radian;", "float<angle in degree> phi = 2.0 * PI * xi.y * radian;"),
+    ],
+    "perspective_divide": [  # homogeneous coordinates are positions only after the divide by w
+        ("screen_uv_without_divide", "vec2 screenUv = hCam.xy / hCam.w * 0.5 + 0.5;", "vec2 screenUv = hCam.xy * 0.5 + 0.5;"),
+        ("shadow_ndc_without_divide", "vec3 ndc = hLight.xyz / hLight.w;", "vec3 ndc = hLight.xyz;"),
+        ("divided_by_the_other_w", "vec2 screenUv = hCam.xy / hCam.w * 0.5 + 0.5;", "vec2 screenUv = hCam.xy / hLight.w * 0.5 + 0.5;"),
+    ],
+    "space_conversions": [  # 'in' needs exactly one shortest chain of maps
+        ("ambiguous_object_to_world", "point<world> P = worldFromObject * position;", "point<world> P = position in world;"),
+        ("normal_through_the_projection", "viewNormal = normalize(n in view);", "viewNormal = normalize(n in clip);"),
+        ("light_map_the_other_way", "uniform rigidmap<light, world> worldFromLight;", "uniform rigidmap<world, light> lightFromWorld;"),
+    ],
+    "microfacet_environment": [  # GGX importance sampling of an environment map
+        ("environment_looked_up_by_position", "texture(environment, wi)", "texture(environment, P)"),
+        ("no_cosine_of_incidence", "spectrum<radiance> L = fr * Li * cosI / pdfWi;", "spectrum<radiance> L = fr * Li / pdfWi;"),
+        ("half_vector_in_tangent_space", "direction<world> wi = reflect(-wo, h);", "direction<world> wi = reflect(-wo, hT);"),
+    ],
     "glsl_rules": [
         ("undeclared_identifier", "fragColor = vec4(L, 1.0);", "fragColor = vec4(Lo, 1.0);"),
         ("wrong_argument_count", "float<proj> cosTheta = max(dot(n, wi), 0.0);", "float<proj> cosTheta = max(dot(n, wi));"),
@@ -86,17 +119,110 @@ MUTANTS = {
 }
 
 
+# Mistakes the language cannot see: the types stay right, the value is wrong.
+# Each is one textual change like a mutant, written as escape_<name>, and must
+# check clean (its .expected is empty); measure.py counts them as not caught.
+ESCAPES = {
+    "missing_cosine": [
+        ("light_cosine_sign", "float cosLight = max(dot(-wy, ny), 0.0);", "float cosLight = max(dot(wy, ny), 0.0);",
+         "the sign of a cosine: dot(wy, ny) and dot(-wy, ny) are both proj"),
+    ],
+    "light_sampling_normalisation": [
+        ("pdf_off_by_two", "float<pdf_area> pdfA = 1.0 / lightArea;", "float<pdf_area> pdfA = 2.0 / lightArea;",
+         "a constant factor of a pdf (2, π, 1/N): numbers are dimensionless"),
+    ],
+    "radiometric_quantities": [
+        ("extra_pi_in_the_brdf", "spectrum<radiance> L = Kd * E;", "spectrum<radiance> L = Kd * E / 3.14159265;",
+         "a factor of π in a BRDF (albedo vs albedo/π): π is dimensionless"),
+    ],
+    "angle_units": [
+        ("full_angle_as_half_angle", "float<angle> halfAngle = 0.5 * spotAngle;", "float<angle> halfAngle = spotAngle;",
+         "which angle of the right dimension (the cone's full or half angle)"),
+    ],
+    "space_mismatch": [
+        ("direction_away_from_the_light", "vector<world> toLight = lightPos - P;", "vector<world> toLight = P - lightPos;",
+         "the sign of a difference of points: p - q and q - p are both vector<S>"),
+    ],
+    "affine_points": [
+        ("midpoint_weight", "point<world> mid = P + 0.5 * (lightPos - P);", "point<world> mid = P + 0.25 * (lightPos - P);",
+         "the weights of an affine combination"),
+    ],
+    "direction_normalisation": [
+        ("half_vector_of_a_difference", "direction<world> h = normalize(wi + wo);", "direction<world> h = normalize(wi - wo);",
+         "which combination of directions is normalized (wi + wo vs wi - wo)"),
+    ],
+    "geometric_kinds": [
+        ("flipped_normal", "normal<world> n = worldFromObject * normalIn;", "normal<world> n = -(worldFromObject * normalIn);",
+         "the orientation of a normal, and whether a normal<S> has unit length"),
+    ],
+    "shadow_map": [
+        ("bias_sign", "bool lit = depthToLight - bias <= stored;", "bool lit = depthToLight + bias <= stored;",
+         "the sign and size of a bias: both are lengths"),
+    ],
+    "roots_and_powers": [
+        ("area_from_the_wrong_lengths", "float<area> r2 = pow(radius, 2);", "float<area> r2 = radius * radius0;",
+         "which quantities of the right dimension are combined (radius² vs radius·radius0)"),
+    ],
+    "generic_functions": [
+        ("lerp_endpoints_swapped", "float<length> d = lerp(near, far, t);", "float<length> d = lerp(far, near, t);",
+         "the order of arguments of the same type"),
+    ],
+    "units": [
+        ("wrong_unit_at_a_literal", "float<length> radius = 5.0 * centimeter;", "float<length> radius = 5.0 * millimeter;",
+         "the unit written at a number: 5.0 * millimeter is a correct length, just not the intended one"),
+    ],
+    "points_as_directions": [
+        ("view_direction_reversed", "direction<world> wo = normalize(eyePos - P);", "direction<world> wo = normalize(P - eyePos);",
+         "the sign of a direction built from two points"),
+    ],
+    "unit_scales": [
+        ("azimuth_in_degrees", "float<angle> phi = 2.0 * PI * xi.y * radian;", "float<angle> phi = 2.0 * PI * xi.y * degree;",
+         "the unit a plain number is given: 2π·ξ * degree is an angle, the checker trusts the unit written"),
+    ],
+    "perspective_divide": [
+        ("uv_without_the_bias", "vec2 shadowUv = ndc.xy * 0.5 + 0.5;", "vec2 shadowUv = ndc.xy * 0.5 - 0.5;",
+         "the mapping from NDC to texture coordinates (×0.5 + 0.5, a y flip)"),
+    ],
+    "space_conversions": [
+        ("motion_from_the_current_frame", "motion = P - prevWorldFromObject * position;", "motion = P - worldFromObject * position;",
+         "two maps of the same type (this frame's and last frame's model matrix) are interchangeable"),
+    ],
+    "microfacet_environment": [
+        ("pdf_of_the_half_vector", "float<pdf_solid_angle> pdfWi = pdfH / (4.0 * oDotH);", "float<pdf_solid_angle> pdfWi = pdfH;",
+         "a dimensionless Jacobian (dωh/dωi = 1/(4 wo·h)): the pdf of h passes for the pdf of wi"),
+    ],
+}
+
+# What each class cannot express beyond its escapes (docs/typechecker.md, "What the checker catches").
+LIMITS = {
+    "map_misuse": "the matrix itself: a wrong, transposed or stale matrix uploaded for a map<A, B> has the right type",
+    "camera_transforms": "projection parameters (field of view, aspect, near/far, handedness) and the value of a matrix",
+    "glsl_rules": "logic GLSL allows (a wrong loop bound, a swapped branch)",
+    "microfacet_environment": "projections onto the micro-normal h and onto n share the one proj dimension: the 1/(4 cos θi cos θo) normalisation is written with casts",
+}
+
+
+def write(root: pathlib.Path, folder: str, name: str, old: str, new: str) -> bool:
+    correct = next((root / folder).glob("correct.sgl.*"))
+    stage = correct.name.split(".")[-1]
+    text = correct.read_text()
+    if text.count(old) != 1:
+        print(f"{folder}/{name}: '{old}' must occur exactly once in {correct.name}", file=sys.stderr)
+        return False
+    (root / folder / f"{name}.sgl.{stage}").write_text(text.replace(old, new))
+    return True
+
+
 def main() -> int:
     root = pathlib.Path(__file__).parent
     for folder, mutants in MUTANTS.items():
-        correct = next((root / folder).glob("correct.sgl.*"))
-        stage = correct.name.split(".")[-1]
-        text = correct.read_text()
         for name, old, new in mutants:
-            if text.count(old) != 1:
-                print(f"{folder}/{name}: '{old}' must occur exactly once in {correct.name}", file=sys.stderr)
+            if not write(root, folder, name, old, new):
                 return 1
-            (root / folder / f"{name}.sgl.{stage}").write_text(text.replace(old, new))
+    for folder, escapes in ESCAPES.items():
+        for name, old, new, _ in escapes:
+            if not write(root, folder, "escape_" + name, old, new):
+                return 1
     return 0
 
 

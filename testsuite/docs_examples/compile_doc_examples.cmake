@@ -1,5 +1,6 @@
 # Extracts every ```glsl block of DOC that starts with #version and compiles it
-# with SAFEGLSLC as a fragment shader; fails on the first that does not compile.
+# with SAFEGLSLC as a fragment shader (a vertex shader when it writes
+# gl_Position); fails on the first that does not compile.
 file(READ ${DOC} text)
 # CMake lists split on ';', which GLSL is full of: hide it while matching.
 string(REPLACE ";" "<semicolon>" text "${text}")
@@ -16,9 +17,13 @@ foreach(block IN LISTS blocks)
   if(NOT stripped MATCHES "^#version")
     continue()
   endif()
-  set(file ${WORK_DIR}/example${index}.sgl.frag)
+  set(stage frag)
+  if(source MATCHES "gl_Position")
+    set(stage vert)
+  endif()
+  set(file ${WORK_DIR}/example${index}.sgl.${stage})
   file(WRITE ${file} "${source}")
-  execute_process(COMMAND ${SAFEGLSLC} ${file} -o ${WORK_DIR}/example${index}.frag
+  execute_process(COMMAND ${SAFEGLSLC} ${file} -o ${WORK_DIR}/example${index}.${stage}
                   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT result EQUAL 0)
     message(FATAL_ERROR "${DOC}: glsl block ${index} does not compile:\n${out}${err}")

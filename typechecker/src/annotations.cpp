@@ -1,6 +1,7 @@
 // Annotation declarations (dimension, unit, space) and the resolution of
 // annotated type specifiers into checker types.
 
+#include <cmath>
 #include <cstdlib>
 
 #include "checker_impl.hpp"
@@ -72,12 +73,62 @@ void Checker::declare_dimension(const ast::DimensionDecl& d) {
     report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
 }
 
+namespace {
+
+// A unit's scale: a constant expression of literals, `+ - * /`, parentheses
+// and earlier units (`unit foot : length = 12.0 * inch;`).
+std::optional<double> fold_scale(const ast::Expr* e, const DimensionRegistry& reg) {
+  if (const auto* lit = ast::dyn_cast<ast::LiteralExpr>(e)) {
+    if (lit->literal_kind != ast::LiteralKind::Float && lit->literal_kind != ast::LiteralKind::Double &&
+        lit->literal_kind != ast::LiteralKind::Int)
+      return std::nullopt;
+    return std::strtod(lit->spelling.c_str(), nullptr);
+  }
+  if (const auto* paren = ast::dyn_cast<ast::ParenExpr>(e)) return fold_scale(paren->inner, reg);
+  if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e)) {
+    if (const Unit* u = reg.find_unit(id->name)) return u->scale;
+    return std::nullopt;
+  }
+  if (const auto* u = ast::dyn_cast<ast::UnaryExpr>(e)) {
+    std::optional<double> v = fold_scale(u->operand, reg);
+    if (!v || (u->op != ast::UnaryOp::Minus && u->op != ast::UnaryOp::Plus)) return std::nullopt;
+    return u->op == ast::UnaryOp::Minus ? -*v : *v;
+  }
+  if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(e)) {
+    std::optional<double> x = fold_scale(b->lhs, reg), y = fold_scale(b->rhs, reg);
+    if (!x || !y) return std::nullopt;
+    switch (b->op) {
+      case ast::BinaryOp::Add: return *x + *y;
+      case ast::BinaryOp::Sub: return *x - *y;
+      case ast::BinaryOp::Mul: return *x * *y;
+      case ast::BinaryOp::Div: return *x / *y;
+      default: return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 void Checker::declare_unit(const ast::UnitDecl& d) {
   std::optional<DimSlot> dim = resolve_dimension(d.dimension);
   if (!dim || dim->state != DimSlot::State::known) return;
-  double scale = 1.0;
-  if (const auto* lit = ast::dyn_cast<ast::LiteralExpr>(d.scale)) scale = std::strtod(lit->spelling.c_str(), nullptr);
-  // Non-literal scale expressions are constant folded by the elider; the checker needs only the dimension.
+  if (result_.registry.has_unit_factors(dim->value)) {
+    report(Diagnostic::error(d.dimension->range, "a unit is declared by the dimension it measures, without a unit")
+               .with_code("E-UNIT-SCALE")
+               .with_hint("write the scale to the reference unit instead, e.g. unit foot : length = 12.0 * inch;"));
+    return;
+  }
+  const std::optional<double> folded = fold_scale(d.scale, result_.registry);
+  if (!folded || !std::isfinite(*folded) || *folded <= 0.0) {
+    report(Diagnostic::error(d.scale ? d.scale->range : d.name_range,
+                             folded ? "the scale of unit '" + d.name + "' must be a positive finite number"
+                                    : "the scale of unit '" + d.name + "' must be a constant of literals and earlier units")
+               .with_code("E-UNIT-SCALE")
+               .with_hint("it is how many reference units one " + d.name + " is, e.g. unit centimeter : length = 0.01;"));
+    return;
+  }
+  const double scale = *folded;
   DimensionRegistry& reg = result_.registry;
   if (const Unit* existing = reg.find_unit(d.name)) {
     if (existing->dimension == dim->value) return;
@@ -106,8 +157,11 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
     std::string message = "unknown dimension '" + name->name + "'";
     std::string hint;
     if (reg.find_space(name->name)) message = "'" + name->name + "' is a space, not a dimension";
-    else if (reg.find_unit(name->name)) hint = "'" + name->name + "' is a unit; annotations name dimensions, e.g. '" +
-                                               reg.format(reg.find_unit(name->name)->dimension) + "'";
+    else if (reg.find_unit(name->name)) {
+      const std::string measured = reg.format(reg.find_unit(name->name)->dimension);
+      hint = "'" + name->name + "' is a unit; annotations name dimensions, e.g. '" + measured + "', or a dimension in a unit, '" +
+             measured + " in " + name->name + "'";
+    }
     else if (reg.base_count() == 0) hint = "did you forget '#include <safegi/prelude.sgl>'?";
     Diagnostic d = Diagnostic::error(e->range, message).with_code("E-UNKNOWN-DIMENSION");
     if (!hint.empty()) d.with_hint(hint);
@@ -116,6 +170,25 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
   }
   if (ast::isa<ast::DimOne>(e)) return DimSlot::known(Dimension{});
   if (const auto* paren = ast::dyn_cast<ast::DimParen>(e)) return resolve_dimension(paren->inner);
+  if (const auto* measured = ast::dyn_cast<ast::DimUnit>(e)) {
+    // `length in centimeter`: the unit's dimension, checked against the one named.
+    std::optional<DimSlot> d = resolve_dimension(measured->dimension);
+    std::optional<Dimension> u = resolve_unit(measured->unit);
+    if (!d || !u) return std::nullopt;
+    if (d->state != DimSlot::State::known) {
+      report(Diagnostic::error(measured->in_range, "a generic dimension cannot carry a unit").with_code("E-UNIT-DIMENSION"));
+      return std::nullopt;
+    }
+    Checked<Dimension> ref = reg.reference(*u);
+    if (!ref || !(*ref == d->value)) {
+      report(Diagnostic::error(measured->unit->range, reg.format_units(*u) + " measures " + (ref ? reg.format(*ref) : "?") +
+                                                          ", not " + reg.format(d->value))
+                 .with_code("E-UNIT-DIMENSION")
+                 .with_highlight(measured->dimension->range));
+      return std::nullopt;
+    }
+    return DimSlot::known(*u);
+  }
   if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
     std::optional<DimSlot> l = resolve_dimension(bin->lhs);
     std::optional<DimSlot> r = resolve_dimension(bin->rhs);
@@ -133,6 +206,42 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
     if (out) out->spelling.clear();
     return out;
   }
+  return std::nullopt;
+}
+
+std::optional<Dimension> Checker::resolve_unit(const ast::DimExpr* e) {
+  const DimensionRegistry& reg = result_.registry;
+  if (const auto* name = ast::dyn_cast<ast::DimName>(e)) {
+    if (const Unit* u = reg.find_unit(name->name)) return reg.measured_in(*u);
+    if (std::optional<Dimension> d = reg.find_dimension(name->name)) return *d;  // its reference unit
+    Diagnostic d = Diagnostic::error(e->range, reg.find_space(name->name) ? "'" + name->name + "' is a space, not a unit"
+                                                                         : "unknown unit '" + name->name + "'")
+                       .with_code("E-UNKNOWN-UNIT");
+    if (!reg.find_space(name->name)) d.with_hint("declare it with its scale, e.g. 'unit " + name->name + " : length = 0.3048;'");
+    report(std::move(d));
+    return std::nullopt;
+  }
+  if (ast::isa<ast::DimOne>(e)) return Dimension{};
+  if (const auto* paren = ast::dyn_cast<ast::DimParen>(e)) return resolve_unit(paren->inner);
+  auto overflow = [&]() -> std::optional<Dimension> {
+    report(Diagnostic::error(e->range, "unit exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    return std::nullopt;
+  };
+  if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
+    std::optional<Dimension> l = resolve_unit(bin->lhs), r = resolve_unit(bin->rhs);
+    if (!l || !r) return std::nullopt;
+    Checked<Dimension> out = bin->is_division ? divide(*l, *r) : multiply(*l, *r);
+    if (!out) return overflow();
+    return *out;
+  }
+  if (const auto* pow = ast::dyn_cast<ast::DimPower>(e)) {
+    std::optional<Dimension> b = resolve_unit(pow->base);
+    if (!b) return std::nullopt;
+    Checked<Dimension> out = power(*b, pow->exponent);
+    if (!out) return overflow();
+    return *out;
+  }
+  report(Diagnostic::error(e->range, "expected a unit").with_code("E-UNKNOWN-UNIT"));
   return std::nullopt;
 }
 

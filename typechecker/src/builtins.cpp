@@ -316,7 +316,9 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
       if (a.geometry != Geometry::vector && a.geometry != Geometry::direction && a.geometry != Geometry::normal)
         return std::nullopt;
     } else if (a.geometry != p.geometry) {
-      // Plain vec3/mat4 is consistent with any geometric kind (gradual typing), at a cost.
+      // A rigidmap is a map (the exact rigid overload wins); plain vec3/mat4 is
+      // consistent with any geometric kind (gradual typing), at a higher cost.
+      if (kind_fits(a.geometry, p.geometry)) return cost + 1;
       if (a.geometry != Geometry::none || a.dim.is_known()) return std::nullopt;
       cost += 2;
     }
@@ -367,7 +369,7 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
 std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates, const std::vector<ArgInfo>& args) {
   std::optional<ShapeMatch> best;
   for (const Signature& sig : candidates) {
-    if (sig.rule != BuiltinRule::plain && sig.rule != BuiltinRule::pow && sig.rule != BuiltinRule::normal_transform) continue;
+    if (!has_signature(sig.rule)) continue;
     if (sig.params.size() != args.size()) continue;
     ShapeMatch m;
     m.signature = &sig;

@@ -20,6 +20,7 @@ enum class BuiltinRule : std::uint8_t {
   plain,             // the signature says everything
   pow,               // genF<1> ^ genF<1>, or float<D> ^ integer constant n -> float<D^n>
   normal_transform,  // a normal through a non-rigid map: the elider uses the inverse transpose
+  point_misuse,      // a point where the function needs a vector: matching this row is an error (E-POINT-ARITHMETIC)
   texture,           // texture*(sampler<T>, ...) -> the sampler's texel, as gvec4 (or float for shadow)
   texture_size,      // textureSize / imageSize -> int or ivecN by the sampler's dimensionality
   texture_query,     // textureQueryLod -> vec2; textureQueryLevels, textureSamples -> int
@@ -64,6 +65,11 @@ class BuiltinLibrary {
  private:
   std::unordered_map<std::string, std::vector<Signature>> by_name_;
 };
+
+// Rules typed by their signature text (the others are typed by code from an opaque argument).
+inline bool has_signature(BuiltinRule r) {
+  return r == BuiltinRule::plain || r == BuiltinRule::pow || r == BuiltinRule::normal_transform || r == BuiltinRule::point_misuse;
+}
 
 // One call argument as matching sees it.
 struct ArgInfo {

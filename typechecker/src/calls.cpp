@@ -134,9 +134,7 @@ Value Checker::method_call(const ast::MethodCallExpr& e) {
 
 Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                             std::vector<Value>& args, SourceRange callee_range, SourceRange call_range) {
-  if (sigs.front().rule != BuiltinRule::plain && sigs.front().rule != BuiltinRule::pow &&
-      sigs.front().rule != BuiltinRule::normal_transform)
-    return rule_call(node, sigs.front(), args, call_range);
+  if (!has_signature(sigs.front().rule)) return rule_call(node, sigs.front(), args, call_range);
   std::vector<ArgInfo> infos;
   for (const Value& a : args) infos.push_back({a.type, a.lvalue});
   std::optional<ShapeMatch> match = match_shapes(sigs, infos);
@@ -147,6 +145,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     std::string candidates;
     int shown = 0;
     for (const Signature& s : sigs) {
+      if (s.rule == BuiltinRule::point_misuse) continue;
       if (shown++ == 4) {
         candidates += ", …";
         break;
@@ -158,6 +157,10 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     return error_value(call_range);
   }
   const Signature& sig = *match->signature;
+  if (sig.rule == BuiltinRule::point_misuse) {
+    point_given_for_vector(name, sig, args);
+    return error_value(call_range);
+  }
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (sig.params[i].is_out && (!args[i].lvalue || args[i].read_only)) {
       report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + name +
@@ -219,7 +222,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     info.signature = sig.text;
     const Geometry first = sig.params.empty() ? Geometry::none : sig.params[0].type.geometry;
     const Geometry second = sig.params.size() > 1 ? sig.params[1].type.geometry : Geometry::none;
-    if (name == "transform" || name == "transform_normal") {
+    if (second == Geometry::hpoint && (name == "transform" || name == "project")) {
+      info.op = GeometricOp::transform_homogeneous;
+    } else if (name == "transform" || name == "transform_normal") {
       if (first == Geometry::projmap) info.op = GeometricOp::project;
       else if (second == Geometry::point) info.op = GeometricOp::transform_point;
       else if (sig.rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;
@@ -241,6 +246,32 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   return out;
 }
 
+void Checker::point_given_for_vector(const std::string& name, const Signature& sig, const std::vector<Value>& args) {
+  std::size_t i = 0;
+  while (i + 1 < args.size() && sig.params[i].type.geometry != Geometry::point) ++i;
+  const Value& p = args[i];
+  const std::string what = name_of(p.type) + (p.name.empty() ? std::string() : " '" + p.name + "'");
+  const std::string q = p.name.empty() ? "p" : p.name;
+  const std::string origin = "if it is measured from the origin of " + name_of_space(p.type.from) + ", say so: vector<" +
+                             name_of_space(p.type.from) + ">(" + q + ")";
+  std::string message, hint;
+  if (name == "normalize") {
+    message = "cannot normalize " + what + ": a point is a position, not a direction";
+    hint = "the direction from p towards " + q + " is normalize(" + q + " - p); " + origin;
+  } else if (name == "length") {
+    message = "cannot take the length of " + what + ": a point is a position, and its length would depend on where " +
+              name_of_space(p.type.from) + "'s origin is";
+    hint = "distance(" + q + ", p) or length(" + q + " - p) measure between two points; " + origin;
+  } else {
+    message = "'" + name + "' needs vectors, directions or normals, not " + what + ": a point is a position";
+    hint = "subtract the point it is measured from (" + q + " - p is a vector); " + origin;
+  }
+  Diagnostic d = Diagnostic::error(p.range, message).with_code("E-POINT-ARITHMETIC");
+  add_origin_note(d, p);
+  d.with_hint(hint);
+  report(std::move(d));
+}
+
 std::optional<Value> Checker::geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                                  const Value& rhs, SourceRange range) {
   std::vector<Value> args{lhs, rhs};
@@ -251,7 +282,11 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
     std::string hint = is_map(lhs.type.geometry) ? "a map applies to a point, vector, direction or normal of its source space" : "";
     if (is_map(lhs.type.geometry) && is_map(rhs.type.geometry)) {
       message = "cannot compose " + name_of(lhs.type) + " with " + name_of(rhs.type);
-      hint = rhs.type.geometry == Geometry::projmap ? "a projective map can only be applied last (leftmost)" : "";
+      if (rhs.type.geometry == Geometry::projmap) {
+        message += ": the projective map gives homogeneous points, which a " + std::string(geometry_name(lhs.type.geometry)) +
+                   " does not take";
+        hint = "apply the projective map last: it goes leftmost, projmap * map";
+      }
     }
     operand_mismatch(message, lhs, rhs, range, hint, "E-INVALID-OPERANDS");
     return std::nullopt;
@@ -266,6 +301,7 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
     info.signature = m->signature->text;
     const Geometry g = m->signature->params[1].type.geometry;
     if (builtin == "compose") info.op = GeometricOp::compose;
+    else if (g == Geometry::hpoint) info.op = GeometricOp::transform_homogeneous;
     else if (m->signature->params[0].type.geometry == Geometry::projmap) info.op = GeometricOp::project;
     else if (g == Geometry::point) info.op = GeometricOp::transform_point;
     else if (m->signature->rule == BuiltinRule::normal_transform) info.op = GeometricOp::transform_normal;
@@ -316,10 +352,14 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
         const bool applying = callee == "transform" || callee == "transform_normal" || callee == "project";
         if (applying && i == 1 && args.size() == 2)
           message = "cannot apply " + name_of(args[0].type) + " to " + name_of(a.type) + ": the map takes values in " + space_word;
-        if (callee == "compose" && args.size() == 2)
+        std::string hint = space_hint(expected, *aslots[k]);
+        if (callee == "compose" && args.size() == 2) {
           message = "cannot compose " + name_of(args[0].type) + " with " + name_of(args[1].type) +
-                    ": the right-hand map must end where the left-hand one starts";
-        arg_error(i, message, callee == "compose" ? "" : space_hint(expected, *aslots[k]), "E-SPACE-MISMATCH");
+                    ": the right-hand map ends in " + name_of_space(args[1].type.to) + " but the left-hand one starts in " +
+                    name_of_space(args[0].type.from);
+          hint = compose_hint(args[0].type, args[1].type);
+        }
+        arg_error(i, message, hint, "E-SPACE-MISMATCH");
         return std::nullopt;
       }
     }
@@ -455,7 +495,7 @@ std::optional<std::vector<Conversion>> conversions_to(const Function& f, const s
     out.push_back({a.scalar, p.scalar});
     a.scalar = p.scalar;
     if (!same_glsl_type(a, p) && !(p.is_array() && !a.array.empty() && p.array[0] < 0)) return std::nullopt;
-    if (p.geometry != Geometry::none && a.geometry != Geometry::none && p.geometry != a.geometry) return std::nullopt;
+    if (p.geometry != Geometry::none && a.geometry != Geometry::none && !kind_fits(a.geometry, p.geometry)) return std::nullopt;
   }
   return out;
 }

@@ -16,6 +16,9 @@
 
 namespace safegi::detail {
 
+// The shortest text that reads back as `value` ("0.01", "100.0").
+std::string format_number(double value);
+
 // Where an operand's annotation came from, for the notes of a mismatch.
 struct Origin {
   SourceRange range;
@@ -78,6 +81,9 @@ class Checker {
   void declare_unit(const ast::UnitDecl& d);
   void declare_space(const ast::SpaceDecl& d);
   std::optional<DimSlot> resolve_dimension(const ast::DimExpr* e);
+  // A unit expression (`centimeter`, `kilometer / hour`, `meter^2`; a dimension
+  // name stands for its reference unit) as a dimension with unit factors.
+  std::optional<Dimension> resolve_unit(const ast::DimExpr* e);
   Type resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast::ArrayDim>* declarator_dims = nullptr);
   Type with_array_dims(Type base, const std::vector<ast::ArrayDim>& outer);
   std::optional<long long> array_size(const ast::ArrayDim& dim);
@@ -109,11 +115,17 @@ class Checker {
   Value literal(const ast::LiteralExpr& e);
   Value identifier(const ast::IdentifierExpr& e);
   Value initializer_list(const ast::InitializerList& e, const Type& expected);
+  // conversions.cpp: `e in target`, to a unit or to a space.
+  Value convert(const ast::ConvertExpr& e);
+  Value convert_unit(const ast::ConvertExpr& e, const Value& v, const Dimension& target);
+  Value convert_space(const ast::ConvertExpr& e, const Value& v, const SpaceSlot& target);
   // operators.cpp: the type of `lhs op rhs` for arithmetic, comparison, logical and bit operators.
   Value arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range,
                    SourceRange range);
   Value geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
                              SourceRange range);
+  Value homogeneous_product(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
+                            SourceRange range);
   void operand_mismatch(const std::string& message, const Value& lhs, const Value& rhs, SourceRange op_range,
                         const std::string& hint, const char* code);
   void condition(const ast::Expr* e);
@@ -132,13 +144,22 @@ class Checker {
   // Unifies the arguments' annotations with a resolved call shape; nothing after reporting an error.
   std::optional<Type> unify_call(const std::string& callee, const CallShape& shape, const std::vector<Value>& args,
                                  SourceRange call_range);
+  // A point passed to a vector operation (normalize, length, dot, ...): the one error, physics-aware.
+  void point_given_for_vector(const std::string& name, const Signature& sig, const std::vector<Value>& args);
   // Operators on maps and geometric values routed through the built-in table (transform, compose).
   std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                           const Value& rhs, SourceRange range);
 
   // mismatch.cpp
   std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
+  // Two dimensions, at least one with units: the conversion when they measure the same, else the physics hint.
+  std::string unit_hint(const Dimension& expected, const Dimension& found) const;
+  // How `x in …` names the unit of `d`: `centimeter`, `(meter^2)`.
+  std::string conversion_target(const Dimension& d) const;
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
+  // Why `left * right` does not compose when their spaces do not meet: wrong order, an inverse, or the space needed.
+  std::string compose_hint(const Type& left, const Type& right) const;
+  std::string name_of_space(const SpaceSlot& s) const { return space_text(s, result_.registry, template_spaces_); }
   void add_origin_note(Diagnostic& d, const Value& v) const;
 
   // In the program's words; inside a generic function its parameters print by name.

@@ -99,6 +99,25 @@ Value Checker::constructor(const ast::CallExpr& e) {
     // A cast: one argument of the same representation takes the annotation, whatever it had.
     if (same_representation) {
       out.zero = args[0].zero;
+      // A cast keeps the number: it may rename a dimension, not change a unit.
+      const DimensionRegistry& reg = result_.registry;
+      const DimSlot to = value_dimension(t, reg), from = value_dimension(first, reg);
+      // A plain number (a literal, a ratio) takes the unit the cast gives it.
+      const bool quantity = from.is_known() && (reg.has_unit_factors(from.value) || !from.value.is_dimensionless());
+      if (!out.zero && !args[0].literal && quantity && to.is_known() &&
+          !DimensionRegistry::same_scale(reg.scale(to.value), reg.scale(from.value))) {
+        const double factor = reg.scale(from.value) / reg.scale(to.value);
+        Diagnostic d = Diagnostic::error(args[0].range, "a cast to " + what + " would read " + reg.format_units(from.value) +
+                                                            " as " + reg.format_units(to.value) + ": a cast keeps the number")
+                           .with_code("E-UNIT-CAST");
+        add_origin_note(d, args[0]);
+        d.with_hint(reg.reference(from.value) && reg.reference(to.value) && *reg.reference(from.value) == *reg.reference(to.value)
+                        ? "convert instead: x in " + conversion_target(to.value) + " (× " + format_number(factor) + ")"
+                        : "convert its parts to units of the same scale first: the cast would be off by × " +
+                              format_number(factor));
+        report(std::move(d));
+        return error_value(e.range);
+      }
       return out;
     }
     if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");
@@ -147,6 +166,13 @@ Value Checker::constructor(const ast::CallExpr& e) {
     out.type.dim = DimSlot::zero();
   }
   // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.
+  // Homogeneous components stay homogeneous: vec3(h.xy, h.z) still needs the divide by w.
+  if (t.shape == Shape::vector && t.is_floating())
+    for (const Value& a : args)
+      if (a.type.geometry == Geometry::hpoint) {
+        keep_homogeneous(out.type, a.type);
+        break;
+      }
   return out;
 }
 
@@ -175,6 +201,30 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     const bool offsets = sig.name == "textureGatherOffsets" && args[i].type.scalar == Scalar::int_;  // ivec2 offsets[4]
     if (!(args[i].type.is_numeric() || args[i].type.scalar == Scalar::bool_) || (args[i].type.is_array() && !offsets))
       return no_match();
+  }
+  // Texture coordinates are points of the texture: homogeneous ones need the
+  // divide by w first, except in the *Proj* lookups, which divide themselves.
+  if (sig.rule == BuiltinRule::texture && args.size() > 1 && args[1].type.geometry == Geometry::hpoint &&
+      sig.name.find("Proj") == std::string::npos) {
+    Diagnostic d = Diagnostic::error(args[1].range, "texture coordinates of type " + name_of(args[1].type) +
+                                                        " are homogeneous: the perspective divide by w is missing")
+                       .with_code("E-KIND-MISMATCH");
+    add_origin_note(d, args[1]);
+    d.with_hint("divide by w first (h.xy / h.w, or homogenize(h) for a point), or let " +
+                std::string(sig.name.rfind("texture", 0) == 0 ? "textureProj" : "the *Proj lookup") + " divide");
+    report(std::move(d));
+    return error_value(call_range);
+  }
+  // A cube map is looked up by direction: a position there is the environment-map bug.
+  if (sig.rule == BuiltinRule::texture && args.size() > 1 && args[1].type.geometry == Geometry::point &&
+      name.find("Cube") != std::string::npos) {
+    Diagnostic d = Diagnostic::error(args[1].range, "a cube map is looked up by direction, not by " + name_of(args[1].type) +
+                                                        ": a point is a position")
+                       .with_code("E-POINT-ARITHMETIC");
+    add_origin_note(d, args[1]);
+    d.with_hint("look up the direction towards what is seen, e.g. a reflected direction reflect(-wo, n), or normalize(q - p)");
+    report(std::move(d));
+    return error_value(call_range);
   }
   const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
   switch (sig.rule) {

@@ -78,6 +78,13 @@ bool consistent(const DimSlot& a, const DimSlot& b) {
   return same_dimension(a, b);
 }
 
+void keep_homogeneous(Type& part, const Type& whole) {
+  part.geometry = Geometry::hpoint;
+  part.from = whole.from;
+  part.weight = whole.weight;
+  part.dim = DimSlot::unknown();
+}
+
 bool consistent(const SpaceSlot& a, const SpaceSlot& b) {
   if (a.state == SpaceSlot::State::unknown || b.state == SpaceSlot::State::unknown) return true;
   return a == b;

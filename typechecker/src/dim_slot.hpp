@@ -14,5 +14,7 @@ bool same_dimension(const DimSlot& a, const DimSlot& b);
 // Gradual consistency: unknown or zero on either side, or the same dimension.
 bool consistent(const DimSlot& a, const DimSlot& b);
 bool consistent(const SpaceSlot& a, const SpaceSlot& b);
+// Components of an hpoint (a swizzle, an index) stay homogeneous: same space and weight, shape of `part`.
+void keep_homogeneous(Type& part, const Type& whole);
 
 }  // namespace safegi::detail

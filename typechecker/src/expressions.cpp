@@ -22,6 +22,7 @@ Value Checker::expr(const ast::Expr* e) {
     case ast::NodeKind::IndexExpr: return record(e, index(*static_cast<const ast::IndexExpr*>(e)));
     case ast::NodeKind::MemberExpr: return record(e, member(*static_cast<const ast::MemberExpr*>(e)));
     case ast::NodeKind::MethodCallExpr: return record(e, method_call(*static_cast<const ast::MethodCallExpr*>(e)));
+    case ast::NodeKind::ConvertExpr: return record(e, convert(*static_cast<const ast::ConvertExpr*>(e)));
     case ast::NodeKind::ParenExpr: {
       Value v = expr(static_cast<const ast::ParenExpr*>(e)->inner);
       v.range = e->range;
@@ -238,6 +239,8 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction)
     kind_hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
   else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) kind_hint = "a projective map gives hpoints, not points";
+  else if (target.geometry == Geometry::rigidmap && v.geometry == Geometry::map)
+    kind_hint = "a map composed with a non-rigid one is not rigid: declare it map<…> (normals then transform by the inverse transpose)";
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
@@ -247,7 +250,7 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, kind_hint, "E-TYPE-MISMATCH");
   if (target.shape == Shape::opaque || target.shape == Shape::structure) return true;
   // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
-  if (target.geometry != Geometry::none && v.geometry != Geometry::none && target.geometry != v.geometry)
+  if (target.geometry != Geometry::none && v.geometry != Geometry::none && !kind_fits(v.geometry, target.geometry))
     return fail(sentence, kind_hint, "E-KIND-MISMATCH");
   if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
     const bool first = !consistent(target.from, v.from);
@@ -277,7 +280,8 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
                                                   ta.array == tb.array && (implicitly_converts(ta.scalar, tb.scalar) ||
                                                                            implicitly_converts(tb.scalar, ta.scalar)));
   const DimSlot da = value_dimension(ta, result_.registry), db = value_dimension(tb, result_.registry);
-  const bool annotations_ok = (ta.geometry == tb.geometry || ta.geometry == Geometry::none || tb.geometry == Geometry::none) &&
+  const bool annotations_ok = (kind_fits(ta.geometry, tb.geometry) || kind_fits(tb.geometry, ta.geometry) ||
+                               ta.geometry == Geometry::none || tb.geometry == Geometry::none) &&
                               consistent(ta.from, tb.from) && consistent(ta.to, tb.to) && (a.zero || b.zero || consistent(da, db));
   if (!glsl_ok || !annotations_ok) {
     Diagnostic d = Diagnostic::error(e.range, "the branches of '?:' have different types, " + name_of(ta) + " and " + name_of(tb))
@@ -294,6 +298,7 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   Value out;
   out.range = e.range;
   out.type = a.zero ? tb : ta;
+  if (ta.geometry != tb.geometry && is_map(ta.geometry) && is_map(tb.geometry)) out.type.geometry = Geometry::map;  // rigid or affine
   if (implicitly_converts(ta.scalar, tb.scalar) && ta.scalar != tb.scalar) out.type.scalar = tb.scalar;
   if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
   out.zero = a.zero && b.zero;
@@ -330,6 +335,7 @@ Value Checker::index(const ast::IndexExpr& e) {
     size = t.rows;
     out.type = Type::scalar_of(t.scalar);
     out.type.dim = value_dimension(t, result_.registry);
+    if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
   } else if (t.shape == Shape::matrix) {
     size = t.columns;
     out.type = Type::vector_of(t.scalar, t.rows);
@@ -395,6 +401,7 @@ Value Checker::member(const ast::MemberExpr& e) {
     if (!identity) {
       out.type = Type::vector_of(t.scalar, static_cast<int>(s.size()));
       out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
+      if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
     }
     out.lvalue = base.lvalue && !repeated;
     return out;

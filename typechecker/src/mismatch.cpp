@@ -2,12 +2,32 @@
 // say where an operand's annotation came from.
 
 #include "checker_impl.hpp"
+#include "dim_slot.hpp"
 
 namespace safegi::detail {
+
+std::string format_number(double value) { return DimensionRegistry::format_number(value); }
+
+std::string Checker::conversion_target(const Dimension& d) const {
+  const std::string units = result_.registry.format_units(d, Notation::ascii);
+  if (units.find_first_of("*/^") == std::string::npos) return units;
+  return "(" + units + ")";
+}
+
+std::string Checker::unit_hint(const Dimension& expected, const Dimension& found) const {
+  const DimensionRegistry& reg = result_.registry;
+  Checked<Dimension> e = reg.reference(expected), f = reg.reference(found);
+  if (!e || !f) return {};
+  if (!(*e == *f)) return physics_hint(DimSlot::known(*e), DimSlot::known(*f));  // the dimensions differ too
+  const double factor = reg.scale(found) / reg.scale(expected);
+  return "the same " + reg.format(*e) + " in another unit, " + reg.format_units(found) + " where " + reg.format_units(expected) +
+         " is expected: convert it, x in " + conversion_target(expected) + " (× " + format_number(factor) + ")";
+}
 
 std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found) const {
   if (expected.state != DimSlot::State::known || found.state != DimSlot::State::known) return {};
   const DimensionRegistry& reg = result_.registry;
+  if (reg.has_unit_factors(expected.value) || reg.has_unit_factors(found.value)) return unit_hint(expected.value, found.value);
   Checked<Dimension> ratio = divide(found.value, expected.value);  // what the value has too much of
   if (!ratio) return {};
   const Dimension& r = *ratio;
@@ -62,6 +82,16 @@ std::string Checker::space_hint(const SpaceSlot& expected, const SpaceSlot& foun
   std::optional<std::string> from = name(found), to = name(expected);
   if (!from || !to) return {};
   return "missing transform by map<" + *from + ", " + *to + ">?";
+}
+
+std::string Checker::compose_hint(const Type& left, const Type& right) const {
+  const std::string order = "maps compose right to left: in m2 * m1, m1 is applied first";
+  if (consistent(left.to, right.from) && left.to.state != SpaceSlot::State::unknown)
+    return "the operands are in the wrong order (" + order + ")";
+  if (right.from == left.from && right.from.state != SpaceSlot::State::unknown)
+    return "the right-hand map goes the other way: its inverse, a map<" + name_of_space(right.to) + ", " +
+           name_of_space(right.from) + ">, would meet the left-hand one";
+  return "the right-hand map must end in " + name_of_space(left.from) + " (" + order + ")";
 }
 
 void Checker::add_origin_note(Diagnostic& d, const Value& v) const {

@@ -1,6 +1,7 @@
 // Binary operators: GLSL's shape rules, then dimensions (Abelian group) and
 // the affine rules of points, vectors, directions and normals.
 
+#include <cstdint>
 #include <vector>
 
 #include "checker_impl.hpp"
@@ -251,7 +252,19 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     if (ga == Geometry::point && gb == Geometry::point && add)
       return reject("cannot add two points (" + both + ")", "subtract them to get a vector, or average them with mix(p, q, 0.5)",
                     "E-POINT-ARITHMETIC");
-    if (gb == Geometry::point && ga != Geometry::point && !add)
+    // A number added to every coordinate of a point or vector moves it along
+    // (1, 1, 1), which depends on the axes: `t - dot(t, n)` meant `t - dot(t, n) * n`.
+    const bool scalar_a = a.shape == Shape::scalar, scalar_b = b.shape == Shape::scalar;
+    auto spatial = [](Geometry g) { return g == Geometry::point || vectorish(g); };
+    if ((spatial(ga) && scalar_b && !rhs.zero) || (spatial(gb) && scalar_a && !lhs.zero)) {
+      const Type& geo = spatial(ga) ? a : b;
+      return reject(std::string("cannot ") + verb(op) + " " + both + ": a number added to every coordinate of a " +
+                        geometry_name(geo.geometry) + " depends on the axes of " + name_of_space(geo.from),
+                    "scale a direction by it instead (e.g. t - dot(t, n) * n), or build the vector it stands for",
+                    "E-KIND-MISMATCH");
+    }
+    // A kind-less vec3 may be a point (gradual typing): plain - point is a vector.
+    if (gb == Geometry::point && ga != Geometry::point && ga != Geometry::none && !add)
       return reject("cannot subtract a point from " + name_of(a), "only point - point and point - vector are defined",
                     "E-POINT-ARITHMETIC");
     if (!consistent(a.from, b.from))
@@ -263,7 +276,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
     out.type.dim.spelling.clear();
     out.type.from = space;
-    if (ga == Geometry::point && gb == Geometry::point) {
+    if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
       out.type.geometry = Geometry::vector;  // point - point
     } else if (ga == Geometry::point || gb == Geometry::point) {
       out.type.geometry = Geometry::point;   // point ± displacement
@@ -274,6 +287,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     } else if (ga == Geometry::hpoint || gb == Geometry::hpoint) {
       out.type.geometry = Geometry::hpoint;
       out.type.dim = DimSlot::unknown();
+      out.type.weight = ga == Geometry::hpoint ? a.weight : b.weight;
     } else if (vectorish(ga) || vectorish(gb)) {
       out.type.geometry = Geometry::vector;  // a sum of directions is no longer unit length
     }
@@ -282,6 +296,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
 
   // * and /
   const bool a_scalar = a.shape == Shape::scalar, b_scalar = b.shape == Shape::scalar;
+  if (ga == Geometry::hpoint || gb == Geometry::hpoint) return homogeneous_product(op, lhs, rhs, shape, op_range, range);
   if (ga == Geometry::point || gb == Geometry::point)
     return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
                   "subtract another point to get a vector, which can be scaled", "E-POINT-ARITHMETIC");
@@ -314,6 +329,37 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
                   "E-SPACE-MISMATCH");
   return out;  // e.g. vector * vector component-wise: a plain vec3 of the product dimension
+}
+
+// Homogeneous coordinates carry a power of w (Type::weight): products add the
+// weights, quotients subtract them, and a value of weight 0 is dehomogenized:
+// h.xy / h.w, or h.xy * (1.0 / h.w), are plain coordinates.
+Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
+                                   SourceRange range) {
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  const bool ha = a.geometry == Geometry::hpoint, hb = b.geometry == Geometry::hpoint;
+  if (ha && hb && !consistent(a.from, b.from)) {
+    operand_mismatch(std::string("cannot ") + (op == ast::BinaryOp::Mul ? "multiply " : "divide ") + name_of(a) +
+                         (op == ast::BinaryOp::Mul ? " and " : " by ") + name_of(b) + ": they are in different spaces",
+                     lhs, rhs, op_range, "divide by the w of the same homogeneous point", "E-SPACE-MISMATCH");
+    return error_value(range);
+  }
+  const int wa = ha ? a.weight : 0, wb = hb ? b.weight : 0;
+  const int weight = op == ast::BinaryOp::Mul ? wa + wb : wa - wb;
+  Value out;
+  out.range = range;
+  out.type = shape;
+  out.type.dim = DimSlot::unknown();
+  const SpaceSlot space = ha ? a.from : b.from;
+  if (weight != 0 && weight >= INT8_MIN && weight <= INT8_MAX) {
+    out.type.geometry = Geometry::hpoint;
+    out.type.from = space;
+    out.type.weight = static_cast<std::int8_t>(weight);
+  }
+  // Weight 0: plain coordinates. Not a point<S>: after a projection they are
+  // NDC, not lengths (homogenize(h), or a declared point<S>, says otherwise).
+  return out;
 }
 
 }  // namespace safegi::detail

@@ -25,6 +25,10 @@ bool has_space(Geometry g) {
 
 bool is_map(Geometry g) { return g == Geometry::map || g == Geometry::rigidmap || g == Geometry::projmap; }
 
+bool kind_fits(Geometry value, Geometry wanted) {
+  return value == wanted || (value == Geometry::rigidmap && wanted == Geometry::map);
+}
+
 Type Type::plain() const {
   Type t = *this;
   t.geometry = Geometry::none;
@@ -85,6 +89,8 @@ std::string array_suffix(const Type& t) {
   return out;
 }
 
+}  // namespace
+
 std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
                        const std::vector<std::string>* space_params) {
   switch (s.state) {
@@ -95,8 +101,6 @@ std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
   }
   return "?";
 }
-
-}  // namespace
 
 std::string glsl_name(const Type& t) {
   std::string base;
@@ -146,6 +150,15 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
   const std::string suffix = array_suffix(t);
   Type bare = t;
   bare.array.clear();
+  if (t.geometry == Geometry::hpoint && (t.rows != 4 || t.weight != 1)) {
+    // Components of a homogeneous point, before the divide: "vec2 of hpoint<clip>".
+    Type whole = bare;
+    whole.rows = 4;
+    whole.shape = Shape::vector;
+    whole.weight = 1;
+    const std::string of = t.weight == 1 ? " of " : " carrying w^" + std::to_string(t.weight) + " of ";
+    return glsl_name(bare.plain()) + of + type_name(whole, registry, dim_params, space_params) + suffix;
+  }
   if (t.geometry != Geometry::none) {
     std::string out = geometry_name(t.geometry);
     out += "<";

@@ -4,6 +4,7 @@
 // It prints dimensions in the user's own words.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +65,35 @@ class DimensionRegistry {
 
   std::size_t base_count() const { return bases_.size(); }
   const std::string& base_name(BaseId id) const { return bases_.at(id); }
+
+  // Units as factors of a dimension (docs/language.md, "Units"). A value of
+  // `length in centimeter` has the dimension centimeter¹, where centimeter is a
+  // *unit factor* (id kUnitBase + the index of the first unit declared with the
+  // same dimension and scale), so the Abelian-group algebra, unification and
+  // equality carry units unchanged: centimeter·centimeter = centimeter², and
+  // centimeter ≠ length. A unit of scale 1 is the reference unit: its factor is
+  // its dimension (`length in meter` is `length`).
+  static constexpr BaseId kUnitBase = 1u << 20;
+  // The shortest decimal text that reads back as `value`, fixed-point where that
+  // is short ("0.01", "100.0", "0.017453292519943295"), else with an exponent:
+  // a valid GLSL float literal.
+  static std::string format_number(double value);
+  // Scales equal up to rounding (a relative 1e-12): `12.0 * inch` is `foot`.
+  static bool same_scale(double a, double b);
+  // The dimension of one `unit`: its unit factor, or its dimension when its scale is 1.
+  Dimension measured_in(const Unit& unit) const;
+  bool is_unit_factor(BaseId id) const { return id >= kUnitBase && id - kUnitBase < units_.size(); }
+  const Unit& unit_of_factor(BaseId id) const { return units_.at(id - kUnitBase); }
+  bool has_unit_factors(const Dimension& d) const;
+  // Unit factors replaced by their units' dimensions: what `d` measures.
+  Checked<Dimension> reference(const Dimension& d) const;
+  // How many reference units one unit of `d` is: the product of its unit factors' scales.
+  double scale(const Dimension& d) const;
+  // A base name, or the unit name of a unit factor ("?" for an unknown id).
+  std::string factor_name(BaseId id) const;
+  // `d` spelled in units: unit factors by name, reference bases by the name of
+  // their scale-1 unit when one exists (`centimeter·second⁻¹`), else by base name.
+  std::string format_units(const Dimension& d, Notation notation = Notation::unicode) const;
   const std::string& space_name(SpaceId id) const { return spaces_.at(id); }
   const std::vector<std::string>& bases() const { return bases_; }
   const std::vector<DerivedDimension>& derived() const { return derived_; }
@@ -78,6 +108,8 @@ class DimensionRegistry {
   // normalised product: positive exponents first, then negative, each group in
   // base declaration order (`energy·length⁻²`, ASCII `energy*length^-2`).
   // The dimensionless dimension prints as `1` unless a derived name (`dimensionless`) matches.
+  // A dimension with unit factors prints as what it measures and its units:
+  // `length in centimeter`, `area in centimeter²`.
   std::string format(const Dimension& d, Notation notation = Notation::unicode) const;
   // Always the normalised product of bases, never a derived name.
   std::string format_product(const Dimension& d, Notation notation = Notation::unicode) const;
@@ -86,6 +118,8 @@ class DimensionRegistry {
 
  private:
   enum class Kind { base, derived, unit, space };
+  std::string format_factors(const std::vector<RationalFactor>& factors, Notation notation,
+                             const std::function<std::string(BaseId)>& name_of) const;
   bool claim(const std::string& name, Kind kind);
 
   std::vector<std::string> bases_;

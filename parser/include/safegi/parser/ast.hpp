@@ -28,6 +28,7 @@ enum class NodeKind : std::uint8_t {
   MemberExpr,
   MethodCallExpr,
   ParenExpr,
+  ConvertExpr,
   InitializerList,
   // Dimension expressions (inside annotations and dimension/unit declarations)
   DimName,
@@ -35,6 +36,7 @@ enum class NodeKind : std::uint8_t {
   DimBinary,
   DimPower,
   DimParen,
+  DimUnit,
   // Types
   TypeSpecifier,
   Annotation,
@@ -222,6 +224,20 @@ struct ParenExpr : Expr {
   Expr* inner = nullptr;
 };
 
+struct DimExpr;
+
+// `p in world`, `d in centimeter`, `v in (kilometer / hour)` (docs/language.md,
+// "Conversions"): a value converted to another space, through the program's
+// maps, or to another unit, by a constant factor. Binds tighter than `*` and
+// looser than unary operators: `a * b in world` is `a * (b in world)`.
+struct ConvertExpr : Expr {
+  ConvertExpr() : Expr(NodeKind::ConvertExpr) {}
+  static bool classof(NodeKind k) { return k == NodeKind::ConvertExpr; }
+  Expr* operand = nullptr;
+  SourceRange in_range;       // the word `in`
+  DimExpr* target = nullptr;  // a DimName, or a DimParen around a unit expression
+};
+
 // `{a, b, {c, d}}` initialisers (GLSL 4.20).
 struct InitializerList : Expr {
   InitializerList() : Expr(NodeKind::InitializerList) {}
@@ -234,7 +250,7 @@ struct InitializerList : Expr {
 
 struct DimExpr : Node {
   using Node::Node;
-  static bool classof(NodeKind k) { return k >= NodeKind::DimName && k <= NodeKind::DimParen; }
+  static bool classof(NodeKind k) { return k >= NodeKind::DimName && k <= NodeKind::DimUnit; }
 };
 
 // A dimension name, or a space name when it stands alone in an annotation.
@@ -272,6 +288,16 @@ struct DimParen : DimExpr {
   DimParen() : DimExpr(NodeKind::DimParen) {}
   static bool classof(NodeKind k) { return k == NodeKind::DimParen; }
   DimExpr* inner = nullptr;
+};
+
+// `length in centimeter`, `area in centimeter^2` as an annotation argument: a
+// dimension measured in a unit (a product of powers of unit names).
+struct DimUnit : DimExpr {
+  DimUnit() : DimExpr(NodeKind::DimUnit) {}
+  static bool classof(NodeKind k) { return k == NodeKind::DimUnit; }
+  DimExpr* dimension = nullptr;
+  SourceRange in_range;  // the word `in`
+  DimExpr* unit = nullptr;
 };
 
 // ---------------------------------------------------------------------- types

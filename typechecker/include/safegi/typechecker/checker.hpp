@@ -63,9 +63,17 @@ enum class GeometricOp : std::uint8_t {
   transform_vector,     // map * vector / direction: mat3(m) * v
   transform_normal,     // map * normal: transpose(inverse(mat3(m))) * n
   project,              // projmap * point: m * vec4(p, 1)
+  transform_homogeneous,  // map or projmap * hpoint: m * h
   homogenize,           // h.xyz / h.w
   compose,              // m2 * m1
   inverse,              // inverse(m)
+};
+
+// How a conversion `e in target` is emitted (the elider's business).
+struct ConversionInfo {
+  double factor = 1.0;            // a unit conversion: e * factor (1: nothing to emit)
+  std::vector<std::string> maps;  // a space conversion: the maps, as written (the last applied is leftmost)
+  GeometricOp op = GeometricOp::none;  // how the composed maps apply: transform_point/vector/normal, project
 };
 
 struct CallInfo {
@@ -80,6 +88,7 @@ struct CheckResult {
   std::unordered_map<const ast::Node*, Type> types;              // every expression and parameter
   std::unordered_map<const ast::Declarator*, Type> declarators;  // every declared variable (locals inferred from initialisers)
   std::unordered_map<const ast::Node*, CallInfo> calls;          // calls and operators that are geometric operations
+  std::unordered_map<const ast::ConvertExpr*, ConversionInfo> conversions;  // every `e in target` that checked
   std::vector<InterfaceVariable> interface;                      // uniforms (incl. block members), inputs, outputs, buffers
   std::vector<std::unique_ptr<StructInfo>> structs;              // owned: Type::structure points here
 

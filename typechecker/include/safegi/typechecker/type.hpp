@@ -36,6 +36,9 @@ enum class Geometry : std::uint8_t {
 const char* geometry_name(Geometry g);
 bool has_space(Geometry g);
 bool is_map(Geometry g);
+// A value of kind `value` may stand where kind `wanted` is expected: the same
+// kind, or a rigidmap where a map is expected (a rigid map is affine).
+bool kind_fits(Geometry value, Geometry wanted);
 
 struct DimSlot {
   enum class State : std::uint8_t { unknown, known, zero, generic };
@@ -78,6 +81,10 @@ struct Type {
   SpaceSlot from;                 // the space (or a map's source space)
   SpaceSlot to;                   // a map's target space
   std::shared_ptr<const Type> texel;  // annotated sampler
+  // Geometry::hpoint: the power of w its components carry. An hpoint and its
+  // swizzles (h.xy, h.w) have 1, 1.0 / h.w has -1; a value of weight 0 is no
+  // longer homogeneous (h.xy / h.w), so it loses the kind.
+  std::int8_t weight = 1;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }
@@ -125,6 +132,9 @@ std::string glsl_name(const Type& t);
 std::string type_name(const Type& t, const DimensionRegistry& registry,
                       const std::vector<std::string>* dim_params = nullptr,
                       const std::vector<std::string>* space_params = nullptr);
+// A space in the program's words: its name, a template parameter's name, or `?`.
+std::string space_text(const SpaceSlot& s, const DimensionRegistry& registry,
+                       const std::vector<std::string>* space_params = nullptr);
 std::string dim_name(const DimSlot& d, const DimensionRegistry& registry,
                      const std::vector<std::string>* dim_params = nullptr);
 

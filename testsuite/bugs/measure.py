@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Measures the bug catalogue: which mistakes the checker catches, and which
+correct shaders it accepts (docs/typechecker.md, "What the checker catches").
+
+    testsuite/bugs/measure.py build/bin/safegi_check_file            # print the table
+    testsuite/bugs/measure.py build/bin/safegi_check_file --write docs/typechecker.md
+    testsuite/bugs/measure.py build/bin/safegi_check_file --check docs/typechecker.md   # ctest: the page is current
+
+Per class of mutants.py: its mutants (one mistake each, the checker must
+reject them), its escapes (one mistake each that keeps the types right), and
+what the class cannot express. Correct shaders are the catalogue's correct.*
+and paper/ shaders and every other annotated shader of the repository that is
+meant to check clean (examples, preview, compiler and runtime_gl test data).
+Nothing here is timed: the counts are exact.
+"""
+import argparse
+import pathlib
+import subprocess
+import sys
+
+import mutants
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+BEGIN, END = "<!-- catalogue-measure:begin -->", "<!-- catalogue-measure:end -->"
+# Annotated shaders outside the catalogue that are meant to check clean.
+OTHER_CORRECT = ["examples/shaders", "preview/shaders", "compiler/testdata", "runtime_gl/testdata"]
+STAGES = ("vert", "frag", "geom", "comp", "tesc", "tese")
+
+
+def rejected(check_file: str, shader: pathlib.Path) -> bool:
+    """True when the checker reports an error for `shader` (run from its catalogue folder's parent)."""
+    run = subprocess.run([check_file, str(shader)], cwd=shader.parent, capture_output=True, text=True)
+    if run.returncode not in (0, 1):
+        sys.exit(f"{shader}: safegi_check_file failed ({run.returncode}): {run.stderr}")
+    return ": error:" in run.stdout + run.stderr
+
+
+def shader_of(folder: pathlib.Path, name: str) -> pathlib.Path:
+    found = [p for p in folder.glob(f"{name}.sgl.*") if p.suffix[1:] in STAGES]
+    if len(found) != 1:
+        sys.exit(f"{folder / name}: expected one shader, found {len(found)} (run mutants.py first)")
+    return found[0]
+
+
+def measure(check_file: str) -> str:
+    rows = []
+    caught_total = mutant_total = escape_total = mutants_caught = mutants_total = 0
+    correct_ok = correct_total = 0
+    classes = list(dict.fromkeys(list(mutants.MUTANTS) + list(mutants.ESCAPES)))
+    for folder in classes:
+        path = HERE / folder
+        caught = sum(rejected(check_file, shader_of(path, name)) for name, _, _ in mutants.MUTANTS.get(folder, []))
+        escapes = mutants.ESCAPES.get(folder, [])
+        missed = [e for e in escapes if not rejected(check_file, shader_of(path, "escape_" + e[0]))]
+        correct = not rejected(check_file, shader_of(path, "correct"))
+        n = len(mutants.MUTANTS.get(folder, []))
+        mutants_caught += caught
+        mutants_total += n
+        caught_total += caught + (len(escapes) - len(missed))
+        mutant_total += n + len(escapes)
+        escape_total += len(missed)
+        correct_ok += correct
+        correct_total += 1
+        cannot = [e[3] for e in missed]
+        if folder in mutants.LIMITS:
+            cannot.append(mutants.LIMITS[folder])
+        rows.append(f"| {folder} | {caught + len(escapes) - len(missed)} of {n + len(escapes)} | "
+                    f"{'yes' if correct else '**no**'} | {'; '.join(cannot) or '—'} |")
+    others = sorted(p for p in (HERE / "paper").glob("*.sgl.*"))
+    for folder in OTHER_CORRECT:
+        others += sorted(p for p in (ROOT / folder).glob("*.sgl.*") if p.suffix[1:] in STAGES)
+    false_positives = [p for p in others if rejected(check_file, p)]
+    correct_ok += len(others) - len(false_positives)
+    correct_total += len(others)
+    lines = [
+        f"Mistakes rejected: **{caught_total} of {mutant_total}** ({100.0 * caught_total / mutant_total:.1f} %): "
+        f"{mutants_caught} of the {mutants_total} mutants (type errors by design) and "
+        f"{mutant_total - mutants_total - escape_total} of the {mutant_total - mutants_total} escapes (right types, wrong value).",
+        f"Correct shaders accepted: **{correct_ok} of {correct_total}** ({100.0 * correct_ok / correct_total:.1f} %): "
+        f"the {len(classes)} classes' correct shaders, the paper's {len(list((HERE / 'paper').glob('*.sgl.*')))} "
+        f"and the {len(others) - len(list((HERE / 'paper').glob('*.sgl.*')))} annotated shaders of "
+        + ", ".join(f"`{f}/`" for f in OTHER_CORRECT) + ".",
+    ]
+    if false_positives:
+        lines.append("Rejected although correct: " + ", ".join(str(p.relative_to(ROOT)) for p in false_positives) + ".")
+    lines += ["", "| class | mistakes rejected | correct accepted | what the language cannot express (right types, wrong value) |",
+              "|---|---|---|---|"] + rows
+    return "\n".join(lines) + "\n"
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("check_file", help="path to safegi_check_file")
+    parser.add_argument("--write", help="replace the table between the markers in this file")
+    parser.add_argument("--check", help="fail unless the table between the markers in this file is current")
+    args = parser.parse_args()
+    check_file = str(pathlib.Path(args.check_file).resolve())
+    table = measure(check_file)
+    if not args.write and not args.check:
+        sys.stdout.write(table)
+        return 0
+    doc = pathlib.Path(args.write or args.check)
+    text = doc.read_text()
+    if BEGIN not in text or END not in text:
+        sys.exit(f"{doc}: no {BEGIN} … {END} markers")
+    head, rest = text.split(BEGIN, 1)
+    old, tail = rest.split(END, 1)
+    if args.check:
+        if old == "\n" + table:
+            return 0
+        sys.stdout.write(f"{doc}: the catalogue table is stale; run testsuite/bugs/measure.py <safegi_check_file> --write {doc}\n")
+        sys.stdout.write(table)
+        return 1
+    doc.write_text(head + BEGIN + "\n" + table + END + tail)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
