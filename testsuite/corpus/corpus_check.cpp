@@ -268,7 +268,7 @@ std::ofstream* verdict_list() {
 }
 
 void list_verdict(bool accepted, const char* corpus, const std::filesystem::path& path) {
-  if (std::ofstream* out = verdict_list()) *out << (accepted ? "accept " : "reject ") << corpus << " " << path.string() << "\n";
+  if (std::ofstream* out = verdict_list()) *out << (accepted ? "accept " : "reject ") << corpus << " " << path.string() << std::endl;
 }
 
 // glslang's message without its location and the names it quotes, so that

@@ -139,6 +139,7 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
 std::optional<long long> Checker::array_size(const ast::ArrayDim& dim) {
   if (!dim.size) return std::nullopt;
   Value v = expr(dim.size);
+  validate_array_size(dim, v);
   if (v.constant) {
     if (*v.constant <= 0) {
       report(Diagnostic::error(dim.size->range, "array size must be greater than zero").with_code("E-ARRAY-SIZE"));
@@ -285,6 +286,10 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       if (it == structs_.end() && (extension_name(spec->name) || glsl_builtin_type(spec->name))) {
         if (std::optional<Type> opaque = glsl_builtin_type(spec->name)) return *opaque;  // rayQueryEXT, accelerationStructureEXT
         return Type::error();
+      }
+      if (std::optional<Type> subroutine = it == structs_.end() ? subroutine_type(spec->name) : std::nullopt) {
+        t = *subroutine;  // a subroutine uniform (subroutines.cpp)
+        break;
       }
       if (it == structs_.end()) {
         report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));

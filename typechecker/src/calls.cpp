@@ -85,6 +85,7 @@ Value Checker::call(const ast::CallExpr& e) {
     args.push_back(expr(a));
     bad = bad || args.back().type.is_error();
   }
+  if (std::optional<Value> v = subroutine_call(e, args)) return *v;
   if (auto it = functions_.find(e.callee); it != functions_.end()) {
     if (bad) return error_value(e.range);
     return user_call(e, it->second, args);

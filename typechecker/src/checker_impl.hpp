@@ -16,6 +16,8 @@
 
 namespace safegi::detail {
 
+struct VersionGate;  // validation.hpp
+
 // Where an operand's annotation came from, for the notes of a mismatch.
 struct Origin {
   SourceRange range;
@@ -46,6 +48,7 @@ struct Variable {
   std::optional<long long> constant;
   Origin origin;
   std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
+  bool constant_expression = false;  // const with a constant initializer (GLSL 4.60 §4.3.3)
 };
 
 struct Function {
@@ -136,6 +139,34 @@ class Checker {
   std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                           const Value& rhs, SourceRange range);
 
+  // validate_*.cpp: what GL drivers reject beyond the type rules (docs/typechecker.md, "Validation").
+  // Version-dependent rules run only when CheckOptions::language is set.
+  const LanguageLevel* language() const { return options_.language ? &*options_.language : nullptr; }
+  bool allows(const VersionGate& gate) const;  // true when the language is unknown
+  // The compatibility profile's built-ins exist: desktop GLSL before 1.40, `#version 150 compatibility`, or
+  // GL_ARB_compatibility (Mesa: 1.40 is core unless the extension is enabled). True when the language is unknown.
+  bool compatibility_profile() const;
+  void reject(SourceRange where, std::string message, const char* code, std::string hint = {});
+  // The part of `e` that makes it not a constant expression (a variable, a user call, an assignment), or nullptr.
+  const ast::Expr* non_constant_part(const ast::Expr* e) const;
+  void validate_array_size(const ast::ArrayDim& dim, const Value& size);
+  void validate_const_initializer(const ast::Declarator& decl, bool global);
+  void validate_variable(const ast::VariableDecl& d, const Type& base, bool global);
+  void validate_interface(const ast::VariableDecl& d, const Type& base);  // a global input or output
+  void validate_struct_members(const ast::StructDecl& s);
+  void validate_block(const ast::InterfaceBlockDecl& d);
+  void validate_qualifier_decl(const ast::QualifierDecl& d, bool global);
+  void validate_function(const ast::FunctionDecl& d, const Function& f);
+  void validate_precision(const ast::PrecisionDecl& d);
+  void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
+  void validate_case(const ast::CaseLabel& label, const Value& value);
+
+  // subroutines.cpp
+  bool subroutine_declaration(const ast::FunctionDecl& d, const Function& f);  // true: `d` declares a subroutine type
+  std::optional<Type> subroutine_type(const std::string& name) const;
+  // A call through a subroutine uniform (`f(x)`, `f[i](x)`), or nothing when `e` calls no subroutine uniform.
+  std::optional<Value> subroutine_call(const ast::CallExpr& e, std::vector<Value>& args);
+
   // mismatch.cpp
   std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
@@ -173,6 +204,7 @@ class Checker {
   std::vector<std::unordered_map<std::string, Variable>> scopes_;
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
+  std::unordered_map<std::string, Function> subroutine_types_;  // `subroutine void T(...);`
   // Template parameters of the function being declared (resolve_type maps their names to generic slots).
   const std::vector<std::string>* template_dims_ = nullptr;
   const std::vector<std::string>* template_spaces_ = nullptr;
@@ -180,6 +212,11 @@ class Checker {
   int loop_depth_ = 0;
   ExpansionFinder expansions_;
   std::vector<SourceRange> written_statements_;  // enclosing statements not produced by a macro, innermost last
+  struct SwitchContext {
+    Type selector;
+    std::vector<std::pair<long long, SourceRange>> cases;  // values seen so far
+  };
+  std::vector<SwitchContext> switches_;  // the switch statements being checked, innermost last
 };
 
 }  // namespace safegi::detail

@@ -1,0 +1,80 @@
+// Statement rules beyond types: the shape of a switch body and its case
+// labels (GLSL 4.60 §6.2; GLSL 1.30 and ESSL 3.00 say the same).
+
+#include <string>
+
+#include "checker_impl.hpp"
+#include "validation.hpp"
+
+namespace safegi::detail {
+namespace {
+
+// int case labels of a uint switch (and back) convert implicitly from GLSL 4.00 on.
+const VersionGate kImplicitIntToUint{400, 0, {"GL_ARB_gpu_shader5", "GL_MESA_shader_integer_functions"}};
+
+bool is_label(const ast::Stmt* s) {
+  return s && (s->kind == ast::NodeKind::CaseLabel || s->kind == ast::NodeKind::DefaultLabel);
+}
+
+}  // namespace
+
+void Checker::validate_switch(const ast::SwitchStmt& s, const Type& selector) {
+  switches_.push_back({selector, {}});
+  if (!s.body || s.body->statements.empty()) return;
+  const std::vector<ast::Stmt*>& body = s.body->statements;
+  if (!is_label(body.front())) {
+    reject(body.front()->range, "a switch body must begin with a 'case' or 'default' label", "E-SWITCH",
+           "statements before the first label could never run");
+    return;
+  }
+  if (is_label(body.back())) {
+    reject(body.back()->range, "the last label of a switch must be followed by a statement", "E-SWITCH",
+           "add 'break;' after it");
+    return;
+  }
+  const ast::Stmt* first_default = nullptr;
+  for (const ast::Stmt* st : body) {
+    if (!st || st->kind != ast::NodeKind::DefaultLabel) continue;
+    if (first_default) {
+      report(Diagnostic::error(st->range, "a switch has at most one 'default' label")
+                 .with_code("E-SWITCH")
+                 .with_note(Diagnostic::note(first_default->range, "the first 'default' is here")));
+      return;
+    }
+    first_default = st;
+  }
+}
+
+void Checker::validate_case(const ast::CaseLabel& label, const Value& value) {
+  if (switches_.empty() || value.type.is_error()) return;
+  SwitchContext& sw = switches_.back();
+  const SourceRange where = label.value->range;
+  if (!(value.type.shape == Shape::scalar && value.type.is_integer() && !value.type.is_array())) {
+    reject(where, "a case label must be a constant integer expression, not " + glsl_name(value.type), "E-SWITCH");
+    return;
+  }
+  if (const ast::Expr* part = non_constant_part(label.value)) {
+    report(Diagnostic::error(where, "a case label must be a constant integer expression")
+               .with_code("E-SWITCH")
+               .with_highlight(part->range));
+    return;
+  }
+  if (!value.constant) return;  // constant, but not folded here
+  if (!sw.selector.is_error() && sw.selector.shape == Shape::scalar && sw.selector.is_integer() &&
+      sw.selector.scalar != value.type.scalar && !allows(kImplicitIntToUint)) {
+    reject(where, "case label of type " + glsl_name(value.type) + " in a switch on " + glsl_name(sw.selector) +
+                      "; before #version 400 the types must be the same",
+           "E-SWITCH", value.type.scalar == Scalar::int_ ? "write the label as " + std::to_string(*value.constant) + "u" : "");
+    return;
+  }
+  for (const auto& [seen, range] : sw.cases) {
+    if (seen != *value.constant) continue;
+    report(Diagnostic::error(where, "duplicate case value " + std::to_string(*value.constant))
+               .with_code("E-SWITCH")
+               .with_note(Diagnostic::note(range, "the same value is here")));
+    return;
+  }
+  sw.cases.emplace_back(*value.constant, where);
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,54 @@
+#pragma once
+// Shared vocabulary of the validating rules (validate_*.cpp): what GL drivers
+// reject that the grammar allows — qualifiers out of place, layouts on the
+// wrong declaration, built-ins of another version or stage, stage gates,
+// l-values (docs/typechecker.md, "Validation").
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include <safegi/lexer/extensions.hpp>
+#include <safegi/parser/ast.hpp>
+
+#include "safegi/typechecker/checker.hpp"
+
+namespace safegi::detail {
+
+// Where a feature exists: desktop GLSL from `desktop` on, GLSL ES from `es`
+// on (0: never), or with any of `extensions` enabled.
+struct VersionGate {
+  int desktop = 0;
+  int es = 0;
+  std::initializer_list<const char*> extensions = {};
+};
+
+inline const VersionGate kBindlessGate{0, 0, {"GL_ARB_bindless_texture"}};
+
+bool gate_allows(const VersionGate& gate, const LanguageLevel& level);
+// "#version 150", "#version 300 es", "#version 400 or GL_ARB_gpu_shader5";
+// "GL_EXT_gpu_shader4" when only an extension gives it.
+std::string gate_requirement(const VersionGate& gate, bool es);
+
+// The classes of qualifier words (GLSL 4.60 §4.3-4.10).
+bool is_storage_word(std::string_view word);        // const in out inout attribute varying uniform buffer shared
+bool is_auxiliary_word(std::string_view word);      // centroid sample patch
+bool is_interpolation_word(std::string_view word);  // smooth flat noperspective (and the AMD/NV explicit ones)
+
+// The first qualifier spelled `word`, or nullptr.
+const ast::Qualifier* find_qualifier(const ast::TypeQualifiers& q, std::string_view word);
+// The first layout identifier `id` in any layout(...) of `q`, or nullptr.
+const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_view id);
+
+// Samplers, images and atomic counters, or a struct holding one (not
+// Vulkan's or ray tracing's opaque types, which have rules of their own).
+bool contains_opaque(const Type& t);
+bool contains_bool(const Type& t);
+
+// A built-in variable of some stage (builtin_variables.def), gl_in, gl_out.
+bool known_builtin_variable(std::string_view name);
+
+// A stage's inputs and outputs, the way the specification names them.
+const char* stage_adjective(Stage stage);  // "vertex", "fragment", ... ("" when unknown)
+
+}  // namespace safegi::detail

@@ -1,0 +1,220 @@
+// The validating rules (validate_*.cpp, docs/typechecker.md "Validation"):
+// what GL drivers reject beyond the type rules, one test per rule, exact
+// messages. Each case names the GLSL version it is checked at.
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+using Messages = std::vector<std::string>;
+
+struct At {
+  int version = 460;
+  bool es = false;
+  std::vector<std::string> extensions = {};
+  bool compatibility = false;
+};
+
+Messages errors(std::string_view source, Stage stage, At at = {}) {
+  LanguageLevel level{at.version, at.es, at.extensions, at.compatibility};
+  return check_source(source, {.stage = stage, .prelude = false, .language = level})->messages();
+}
+
+Messages frag(std::string_view source, At at = {}) { return errors(source, Stage::fragment, at); }
+Messages vert(std::string_view source, At at = {}) { return errors(source, Stage::vertex, at); }
+
+TEST(Validate, QualifierCounts) {
+  EXPECT_EQ(vert("in in float x; void main() {}"), Messages{"error: 'in' is given twice"});
+  EXPECT_EQ(vert("const in float x = 1.0; void main() {}"),
+            Messages{"error: a declaration takes at most one storage qualifier: 'const' and 'in'"});
+  EXPECT_EQ(vert("flat smooth out float x; void main() {}"),
+            Messages{"error: a declaration takes at most one interpolation qualifier (smooth, flat, noperspective): 'flat' and "
+                     "'smooth'"});
+  EXPECT_EQ(frag("centroid centroid in float x; void main() {}"), Messages{"error: 'centroid' is given twice"});
+  EXPECT_EQ(vert("void f(in in float x) {} void main() {}"), Messages{"error: 'in' is given twice"});
+  // The two pairs GLSL has: `varying out` (GL_EXT_gpu_shader4) and a parameter's `const in`.
+  EXPECT_EQ(frag("varying out vec4 c; void main() { c = vec4(1.0); }", {110, false, {"GL_EXT_gpu_shader4"}}), Messages{});
+  EXPECT_EQ(vert("float f(const in float x) { return x; } void main() {}"), Messages{});
+}
+
+TEST(Validate, QualifierOrderBefore420) {
+  EXPECT_EQ(vert("smooth invariant out float x; void main() {}", {130}),
+            Messages{"error: 'invariant' must come before 'smooth': before #version 420 (or GL_ARB_shading_language_420pack) "
+                     "the order is invariant, interpolation, storage, precision"});
+  EXPECT_EQ(vert("float f(highp in float x) { return x; } void main() {}", {130}),
+            Messages{"error: 'in' must come before 'highp': before #version 420 (or GL_ARB_shading_language_420pack) the "
+                     "order is invariant, interpolation, storage, precision"});
+  EXPECT_EQ(vert("smooth invariant out float x; void main() {}", {420}), Messages{});
+  EXPECT_EQ(vert("smooth invariant out float x; void main() {}", {130, false, {"GL_ARB_shading_language_420pack"}}), Messages{});
+  // Interpolation and auxiliary qualifiers in either order (GL_EXT_gpu_shader4's `centroid noperspective varying`).
+  EXPECT_EQ(frag("centroid noperspective in vec2 t; void main() {}", {130}), Messages{});
+}
+
+TEST(Validate, LocalsTakeOnlyConstAndPrecision) {
+  EXPECT_EQ(frag("void main() { in float x; }"),
+            Messages{"error: 'in' cannot qualify a local variable; locals take only 'const', 'precise' and a precision"});
+  EXPECT_EQ(frag("void main() { smooth float x; }"),
+            Messages{"error: 'smooth' cannot qualify a local variable; locals take only 'const', 'precise' and a precision"});
+  EXPECT_EQ(vert("void main() { invariant gl_Position; }"),
+            Messages{"error: 'invariant' can be applied to existing variables only at global scope"});
+  EXPECT_EQ(frag("void main() { const highp float x = 1.0; precise float y = x; }"), Messages{});
+  EXPECT_EQ(vert("inout float x; void main() {}"), Messages{"error: 'inout' qualifies only function parameters, not global variables"});
+}
+
+TEST(Validate, StructMembersTakeOnlyPrecision) {
+  EXPECT_EQ(frag("struct S { centroid float a; }; void main() {}"),
+            Messages{"error: 'centroid' cannot qualify a struct member; members take only a precision qualifier"});
+  EXPECT_EQ(frag("struct S { layout(location = 0) float a; }; void main() {}"),
+            Messages{"error: layout qualifiers cannot qualify a struct member; members take only a precision qualifier"});
+  EXPECT_EQ(frag("struct S { struct T { float b; } t; }; void main() {}"),
+            Messages{"error: a struct definition cannot be nested inside another struct"});
+  EXPECT_EQ(frag("struct S { mediump float a; }; void main() {}"), Messages{});
+}
+
+TEST(Validate, Parameters) {
+  EXPECT_EQ(frag("void f(const out float x) { } void main() {}"),
+            Messages{"error: a 'const' parameter cannot be 'out': it could not be written"});
+  EXPECT_EQ(frag("void f(centroid in float x) { } void main() {}"),
+            Messages{"error: 'centroid' cannot qualify a function parameter; parameters take const, in, out, inout, precise, "
+                     "memory and precision qualifiers"});
+  EXPECT_EQ(frag("uniform sampler2D s; void f(out sampler2D t) { } void main() {}"),
+            Messages{"error: an opaque type ('sampler2D') cannot be an 'out' parameter"});
+  EXPECT_EQ(frag("uniform sampler2D s; sampler2D f() { return s; } void main() {}"),
+            Messages{"error: a function cannot return an opaque type ('sampler2D')"});
+  EXPECT_EQ(frag("int main() { return 0; }"), Messages{"error: 'main' must return void"});
+  EXPECT_EQ(frag("void main(float x) { }"), Messages{"error: 'main' takes no parameters"});
+}
+
+TEST(Validate, OpaqueTypesAreUniformsOrParameters) {
+  EXPECT_EQ(frag("sampler2D s; void main() {}"),
+            Messages{"error: a variable of 'sampler2D' type must be 'uniform' (or a function parameter)"});
+  EXPECT_EQ(frag("struct S { float x; sampler2D t; } g; void main() {}"),
+            Messages{"error: a variable of a struct with an opaque member type must be 'uniform' (or a function parameter)"});
+  EXPECT_EQ(frag("struct S { float x; sampler2D t; }; uniform S u; void main() {}"), Messages{});
+  EXPECT_EQ(frag("uniform sampler2D u; void main() { sampler2D s = u; }", {450, false, {"GL_ARB_bindless_texture"}}),
+            Messages{});
+}
+
+TEST(Validate, PrecisionStatements) {
+  EXPECT_EQ(frag("precision mediump vec4; void main() {}"),
+            Messages{"error: a default precision applies to 'float', 'int' and opaque types, not 'vec4'"});
+  EXPECT_EQ(frag("precision mediump bool; void main() {}"),
+            Messages{"error: a default precision applies to 'float', 'int' and opaque types, not 'bool'"});
+  EXPECT_EQ(frag("precision mediump float; precision lowp sampler2D; void main() {}"), Messages{});
+}
+
+TEST(Validate, ReservedNames) {
+  EXPECT_EQ(vert("out float gl_Foo; void main() {}"),
+            Messages{"error: 'gl_Foo' is not a built-in variable here, and names beginning with 'gl_' are reserved"});
+  EXPECT_EQ(vert("struct gl_S { float a; }; void main() {}"),
+            Messages{"error: struct name 'gl_S' begins with 'gl_', which is reserved"});
+  EXPECT_EQ(vert("void gl_f() {} void main() {}"), Messages{"error: function name 'gl_f' begins with 'gl_', which is reserved"});
+  EXPECT_EQ(vert("out gl_B { float a; }; void main() {}"), Messages{"error: block name 'gl_B' begins with 'gl_', which is reserved"});
+  EXPECT_EQ(vert("out B { float gl_a; }; void main() {}"),
+            Messages{"error: member name 'gl_a' begins with 'gl_', which is reserved"});
+  // Redeclaring a built-in is no reservation problem.
+  EXPECT_EQ(frag("in vec4 gl_FragCoord; void main() {}"), Messages{});
+}
+
+Messages geom(std::string_view source, At at = {}) { return errors(source, Stage::geometry, at); }
+
+TEST(Validate, InterfaceTypes) {
+  EXPECT_EQ(vert("out bvec2 b; void main() {}"), Messages{"error: a shader output cannot be bool: 'b' is declared bvec2"});
+  EXPECT_EQ(frag("in bool b; void main() {}"), Messages{"error: a shader input cannot be bool: 'b' is declared bool"});
+  EXPECT_EQ(vert("smooth in vec4 p; void main() {}"),
+            Messages{"error: 'smooth' cannot qualify a vertex shader input (vertex inputs are not interpolated)"});
+  EXPECT_EQ(frag("centroid out vec4 c; void main() {}"),
+            Messages{"error: 'centroid' cannot qualify a fragment shader output (fragment outputs are not interpolated)"});
+  EXPECT_EQ(frag("out mat2 m; void main() {}"), Messages{"error: a fragment shader output cannot be a matrix: 'm' is declared mat2"});
+  EXPECT_EQ(vert("struct S { float a; }; in S s; void main() {}"),
+            Messages{"error: a vertex shader input cannot be a struct: 's' is declared S"});
+  EXPECT_EQ(frag("in int i; void main() {}", {130}),
+            Messages{"error: an integer or double fragment shader input must be 'flat': 'i' is declared int"});
+  EXPECT_EQ(frag("flat in int i; void main() {}", {130}), Messages{});
+}
+
+TEST(Validate, VaryingTypesByVersion) {
+  EXPECT_EQ(vert("varying int i; void main() {}", {120}),
+            Messages{"error: integer varyings require #version 130 or GL_EXT_gpu_shader4: 'i' is declared int"});
+  EXPECT_EQ(vert("attribute ivec2 a; void main() {}", {120}),
+            Messages{"error: integer vertex shader inputs require #version 130 or GL_EXT_gpu_shader4: 'a' is declared ivec2"});
+  EXPECT_EQ(vert("struct S { float a; }; out S s; void main() {}", {130}),
+            Messages{"error: struct varyings require #version 150: 's' is declared S"});
+  EXPECT_EQ(vert("out dvec2 d; void main() {}", {330}),
+            Messages{"error: double-precision varyings require #version 400 or GL_ARB_gpu_shader_fp64: 'd' is declared dvec2"});
+  EXPECT_EQ(vert("struct S { float a; }; out S s; flat out int i; void main() {}", {150}), Messages{});
+  EXPECT_EQ(vert("flat varying int i; void main() {}", {110, false, {"GL_EXT_gpu_shader4"}}), Messages{});
+}
+
+TEST(Validate, InterfaceBlocks) {
+  EXPECT_EQ(vert("in B { float a; }; void main() {}", {150}),
+            Messages{"error: a vertex shader has no input blocks: vertex inputs are single variables"});
+  EXPECT_EQ(frag("out B { vec4 a; }; void main() {}", {150}),
+            Messages{"error: a fragment shader has no output blocks: fragment outputs are single variables"});
+  EXPECT_EQ(vert("out B { float a; }; void main() {}", {140}), Messages{"error: 'out' blocks require #version 150 or GL_EXT_shader_io_blocks"});
+  EXPECT_EQ(frag("uniform B { float a; }; void main() {}", {130}),
+            Messages{"error: uniform blocks require #version 140 or GL_ARB_uniform_buffer_object"});
+  EXPECT_EQ(frag("uniform B { float a; }; void main() {}", {130, false, {"GL_ARB_uniform_buffer_object"}}), Messages{});
+  EXPECT_EQ(vert("uniform B { in float a; }; void main() {}", {150}),
+            Messages{"error: member storage 'in' contradicts the block's 'uniform'"});
+  EXPECT_EQ(vert("uniform B { sampler2D s; }; void main() {}", {150}),
+            Messages{"error: a block member cannot have an opaque type ('sampler2D')"});
+  EXPECT_EQ(vert("uniform B { struct S { float x; } s; }; void main() {}", {150}),
+            Messages{"error: a struct cannot be defined inside a block"});
+  EXPECT_EQ(geom("layout(points) in; in gl_PerVertex { vec4 gl_Position; } gl_in[]; void main() {}", {150}), Messages{});
+}
+
+TEST(Validate, ConstantExpressions) {
+  EXPECT_EQ(vert("uniform int n; float a[n]; void main() {}"),
+            Messages{"error: an array size must be a constant integer expression; 'n' is not constant"});
+  EXPECT_EQ(vert("float a[2.0]; void main() {}"), Messages{"error: an array size must be a constant integer expression, not float"});
+  EXPECT_EQ(vert("int f() { return 2; } float a[f()]; void main() {}"),
+            Messages{"error: an array size must be a constant integer expression; the call of 'f' is not constant"});
+  EXPECT_EQ(vert("float a[(5, 3)]; void main() {}", {120}),
+            Messages{"error: an array size must be a constant integer expression; the comma operator is not constant"});
+  EXPECT_EQ(vert("const int n = 2; const int m = n * 3; float a[m + int(abs(-1.0))]; void main() {}"), Messages{});
+  EXPECT_EQ(vert("uniform float u; const float c = u; void main() {}"),
+            Messages{"error: the initializer of const 'c' must be a constant expression; 'u' is not constant"});
+  EXPECT_EQ(vert("uniform float u; void main() { const float c = u; }", {130}),
+            Messages{"error: the initializer of const 'c' must be a constant expression; 'u' is not constant"});
+  EXPECT_EQ(vert("uniform float u; void main() { const float c = u; }", {420}), Messages{});
+  // GLSL ES 1.00 alone counts the comma operator as constant (Mesa).
+  EXPECT_EQ(vert("const float f = (1.0, 2.0); void main() {}", {100, true}), Messages{});
+}
+
+TEST(Validate, SwitchBodies) {
+  EXPECT_EQ(vert("void main() { int x = 1; switch (x) { x = 2; case 1: break; } }"),
+            Messages{"error: a switch body must begin with a 'case' or 'default' label"});
+  EXPECT_EQ(vert("void main() { switch (1) { case 0: } }"),
+            Messages{"error: the last label of a switch must be followed by a statement"});
+  EXPECT_EQ(vert("void main() { switch (1) { default: break; default: break; } }"),
+            Messages{"error: a switch has at most one 'default' label"});
+  EXPECT_EQ(vert("void main() { switch (1) { case 1: break; case 2 - 1: break; } }"), Messages{"error: duplicate case value 1"});
+  EXPECT_EQ(vert("uniform int u; void main() { switch (1) { case u: break; } }"),
+            Messages{"error: a case label must be a constant integer expression"});
+  EXPECT_EQ(vert("void main() { uint x = 1u; switch (x) { case 1: break; } }", {130}),
+            Messages{"error: case label of type int in a switch on uint; before #version 400 the types must be the same"});
+  EXPECT_EQ(vert("void main() { uint x = 1u; switch (x) { case 1: break; } }", {400}), Messages{});
+}
+
+TEST(Validate, Subroutines) {
+  const At at{150, false, {"GL_ARB_shader_subroutine"}};
+  EXPECT_EQ(vert("subroutine void T(float x); subroutine (T) void a(float x) {} subroutine uniform T u; subroutine uniform T v[2];"
+                 "void main() { u(1.0); v[1](2.0); a(3.0); }",
+                 at),
+            Messages{});
+  EXPECT_EQ(vert("subroutine void T(); subroutine uniform T u; void main() { u(1.0); }", at),
+            Messages{"error: no matching function for call to 'u(float<1>)'"});
+  EXPECT_EQ(vert("subroutine void T(); subroutine (T) int f() { return 1; } void main() {}", at),
+            Messages{"error: 'f' does not match subroutine type 'T': the return type and every parameter must be the same"});
+  EXPECT_EQ(vert("subroutine (bogus) void f() {} void main() {}", at), Messages{"error: 'bogus' is not a subroutine type"});
+  EXPECT_EQ(vert("subroutine void T(); subroutine (T) void f(); void main() {}", at),
+            Messages{"error: a function implementing a subroutine type must be defined here, not only declared"});
+  EXPECT_EQ(vert("subroutine void T(); void main() { T(); }", at), Messages{"error: cannot construct subroutine T"});
+}
+
+}  // namespace
+}  // namespace safegi::testing
