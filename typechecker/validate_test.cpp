@@ -216,5 +216,43 @@ TEST(Validate, Subroutines) {
   EXPECT_EQ(vert("subroutine void T(); void main() { T(); }", at), Messages{"error: cannot construct subroutine T"});
 }
 
+TEST(Validate, BuiltinFunctionsByVersionAndStage) {
+  EXPECT_EQ(frag("uniform sampler2D s; void main() { gl_FragColor = texture(s, vec2(0.0)); }", {120}),
+            Messages{"error: 'texture' requires #version 130; the shader is #version 120"});
+  EXPECT_EQ(frag("uniform sampler2D s; out vec4 c; void main() { c = texture2D(s, vec2(0.0)); }", {420}),
+            Messages{"error: 'texture2D' was removed in the core profile of #version 420"});
+  EXPECT_EQ(frag("uniform sampler2D s; void main() { gl_FragColor = texture2D(s, vec2(0.0)); }", {420, false, {}, true}), Messages{});
+  EXPECT_EQ(vert("void main() { gl_Position = vec4(dFdx(1.0)); }", {130}),
+            Messages{"error: 'dFdx' is not available in vertex shaders"});
+  EXPECT_EQ(frag("precision mediump float; void main() { gl_FragColor = vec4(dFdx(1.0)); }", {100, true}),
+            Messages{"error: 'dFdx' requires #version 300 es or GL_OES_standard_derivatives; the shader is #version 100 es"});
+  EXPECT_EQ(frag("precision mediump float; void main() { gl_FragColor = vec4(dFdx(1.0)); }",
+                 {100, true, {"GL_OES_standard_derivatives"}}),
+            Messages{});
+  EXPECT_EQ(vert("void main() { int b = bitCount(1); }", {330}),
+            Messages{"error: 'bitCount' requires #version 400 or GL_ARB_gpu_shader5; the shader is #version 330"});
+  EXPECT_EQ(errors("layout(local_size_x = 1) in; void main() { float d = dFdx(1.0); }", Stage::compute,
+                   {450, false, {"GL_NV_compute_shader_derivatives"}}),
+            Messages{});
+  EXPECT_EQ(vert("void main() { EmitVertex(); }", {150}), Messages{"error: 'EmitVertex' is not available in vertex shaders"});
+}
+
+TEST(Validate, BuiltinVariablesByVersionAndProfile) {
+  EXPECT_EQ(vert("void main() { gl_Position = gl_Vertex; }", {140}),
+            Messages{"error: 'gl_Vertex' belongs to the compatibility profile, which #version 140 does not have"});
+  EXPECT_EQ(vert("void main() { gl_Position = gl_Vertex; }", {140, false, {"GL_ARB_compatibility"}}), Messages{});
+  EXPECT_EQ(vert("void main() { gl_Position = gl_Vertex; }", {150, false, {}, true}), Messages{});
+  EXPECT_EQ(vert("void main() { gl_Position = gl_Vertex; }", {130}), Messages{});
+  EXPECT_EQ(frag("uniform gl_LightSourceParameters l; void main() {}", {150}),
+            Messages{"error: 'gl_LightSourceParameters' belongs to the compatibility profile, which #version 150 does not have"});
+  EXPECT_EQ(frag("void main() { gl_FragColor = vec4(1.0); }", {300, true}),
+            Messages{"error: 'gl_FragColor' was removed in #version 300 es"});
+  EXPECT_EQ(vert("void main() { gl_ClipDistance[0] = 1.0; }", {120}),
+            Messages{"error: 'gl_ClipDistance' requires #version 130; the shader is #version 120"});
+  EXPECT_EQ(vert("void main() { gl_Position = vec4(gl_InstanceIDARB); }", {120}),
+            Messages{"error: 'gl_InstanceIDARB' requires GL_ARB_draw_instanced; the shader is #version 120"});
+  EXPECT_EQ(vert("void main() { gl_Position = vec4(gl_InstanceIDARB); }", {120, false, {"GL_ARB_draw_instanced"}}), Messages{});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -282,7 +282,10 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     case ast::TypeSpecifier::Form::Named: {
       auto it = structs_.find(spec->name);
       // gl_* struct types are the compatibility profile's state (gl_LightSourceParameters, …): left to the driver.
-      if (it == structs_.end() && spec->name.rfind("gl_", 0) == 0) return Type::error();
+      if (it == structs_.end() && spec->name.rfind("gl_", 0) == 0) {
+        builtin_available(spec->name, spec->name_range, false);
+        return Type::error();
+      }
       if (it == structs_.end() && (extension_name(spec->name) || glsl_builtin_type(spec->name))) {
         if (std::optional<Type> opaque = glsl_builtin_type(spec->name)) return *opaque;  // rayQueryEXT, accelerationStructureEXT
         return Type::error();

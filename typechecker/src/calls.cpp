@@ -91,6 +91,7 @@ Value Checker::call(const ast::CallExpr& e) {
     return user_call(e, it->second, args);
   }
   if (const std::vector<Signature>* sigs = builtins_->find(e.callee)) {
+    if (!builtin_available(e.callee, e.callee_range, true)) return error_value(e.range);
     if (bad) return error_value(e.range);
     return builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
   }

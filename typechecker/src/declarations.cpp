@@ -4,6 +4,7 @@
 
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
+#include "validation.hpp"
 
 namespace safegi::detail {
 namespace {
@@ -20,25 +21,6 @@ constexpr BuiltinVariableEntry kBuiltinVariables[] = {
 #include "builtin_variables.def"
 #undef BUILTIN_VARIABLE
 };
-
-char stage_letter(Stage s) {
-  switch (s) {
-    case Stage::vertex: return 'v';
-    case Stage::tess_control: return 'c';
-    case Stage::tess_evaluation: return 'e';
-    case Stage::geometry: return 'g';
-    case Stage::fragment: return 'f';
-    case Stage::compute: return 'x';
-    case Stage::unknown: break;
-  }
-  return '*';
-}
-
-const char* stage_words(char letter) {
-  for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
-    if (stage_letter(s) == letter) return stage_name(s);
-  return stage_name(Stage::unknown);
-}
 
 Type parse_simple_type(std::string_view text) {
   bool array = false;
@@ -158,10 +140,7 @@ std::string Checker::stages_owning_builtin(const std::string& name) const {
     if (e.name == name && !owned_by(e.stages)) return {};
   // The gl_PerVertex arrays (declare_builtin_variables) are not in the table.
   if ((name == "gl_in" && !owned_by("ceg")) || (name == "gl_out" && !owned_by("c"))) return {};
-  std::string words;
-  for (std::size_t i = 0; i < owners.size(); ++i)
-    words += std::string(i == 0 ? "" : i + 1 == owners.size() ? " and " : ", ") + stage_words(owners[i]);
-  return words;
+  return stage_list(owners);
 }
 
 const Variable* Checker::lookup(const std::string& name) const {

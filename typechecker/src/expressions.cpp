@@ -36,6 +36,7 @@ Value Checker::expr(const ast::Expr* e) {
 
 Value Checker::identifier(const ast::IdentifierExpr& e) {
   if (const Variable* var = lookup(e.name)) {
+    if (var->builtin && !builtin_available(e.name, e.range, false)) return error_value(e.range);
     Value v;
     v.type = var->type;
     v.range = e.range;
@@ -64,6 +65,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
                  .with_hint("'" + e.name + "' is a built-in of " + owners + " shaders"));
       return error_value(e.range);
     }
+    if (!builtin_available(e.name, e.range, false)) return error_value(e.range);
     // Built-in names this checker does not model (gl_Max* constants, compatibility
     // state, extensions) are left to the driver rather than reported wrongly.
     if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {

@@ -67,7 +67,29 @@ const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_vi
   return nullptr;
 }
 
-const char* stage_adjective(Stage stage) { return stage == Stage::unknown ? "" : stage_name(stage); }
+char stage_letter(Stage s) {
+  switch (s) {
+    case Stage::vertex: return 'v';
+    case Stage::tess_control: return 'c';
+    case Stage::tess_evaluation: return 'e';
+    case Stage::geometry: return 'g';
+    case Stage::fragment: return 'f';
+    case Stage::compute: return 'x';
+    case Stage::unknown: break;
+  }
+  return '*';
+}
+
+std::string stage_list(std::string_view letters) {
+  std::string words;
+  for (std::size_t i = 0; i < letters.size(); ++i) {
+    Stage stage = Stage::unknown;
+    for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
+      if (stage_letter(s) == letters[i]) stage = s;
+    words += std::string(i == 0 ? "" : i + 1 == letters.size() ? " and " : ", ") + stage_name(stage);
+  }
+  return words;
+}
 
 // GLSL 4.60 §4.3.3: literals, const variables with constant initializers,
 // built-in constants, and operators, constructors and built-in functions

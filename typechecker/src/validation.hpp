@@ -48,7 +48,9 @@ bool contains_bool(const Type& t);
 // A built-in variable of some stage (builtin_variables.def), gl_in, gl_out.
 bool known_builtin_variable(std::string_view name);
 
-// A stage's inputs and outputs, the way the specification names them.
-const char* stage_adjective(Stage stage);  // "vertex", "fragment", ... ("" when unknown)
+// The letters of builtin_variables.def and builtin_availability.def: v c e g f x ('*' for unknown).
+char stage_letter(Stage stage);
+// "vertex", "vertex and geometry", "vertex, geometry and fragment" for a string of stage letters.
+std::string stage_list(std::string_view letters);
 
 }  // namespace safegi::detail
