@@ -254,5 +254,106 @@ TEST(Validate, BuiltinVariablesByVersionAndProfile) {
   EXPECT_EQ(vert("void main() { gl_Position = vec4(gl_InstanceIDARB); }", {120, false, {"GL_ARB_draw_instanced"}}), Messages{});
 }
 
+TEST(Validate, LayoutPlacement) {
+  EXPECT_EQ(vert("layout(points) in; void main() {}", {150}),
+            Messages{"error: layout 'points' belongs to geometry shaders, not to vertex shaders"});
+  EXPECT_EQ(geom("layout(points) in vec4 p[]; void main() {}", {150}),
+            Messages{"error: layout 'points' applies only to a declaration of its own: 'layout(points) in;'"});
+  EXPECT_EQ(geom("layout(max_vertices = 3) in; void main() {}", {150}),
+            Messages{"error: layout 'max_vertices' applies only to a declaration of its own: 'layout(max_vertices = N) out;'"});
+  EXPECT_EQ(vert("layout(location = 0) attribute vec4 p; void main() {}", {120, false, {"GL_ARB_explicit_attrib_location"}}),
+            Messages{"error: layout 'location' applies to 'in' and 'out' declarations, not to 'attribute'"});
+  EXPECT_EQ(vert("layout(location = 1) out vec4 v; void main() {}", {330}),
+            Messages{"error: layout 'location' on a shader input or output between stages requires #version 410 or "
+                     "GL_ARB_separate_shader_objects"});
+  EXPECT_EQ(vert("layout(location = 1) out vec4 v; void main() {}", {410}), Messages{});
+  EXPECT_EQ(frag("layout(origin_upper_left) in vec4 p; void main() {}", {150}),
+            Messages{"error: layout 'origin_upper_left' applies only to a redeclaration of gl_FragCoord"});
+  EXPECT_EQ(frag("layout(origin_upper_left) in vec4 gl_FragCoord; void main() {}", {150}), Messages{});
+  EXPECT_EQ(vert("layout(index = 1) out vec4 v; void main() {}", {330}),
+            Messages{"error: layout 'index' applies only to fragment shader outputs"});
+  EXPECT_EQ(frag("layout(binding = 1) uniform float f; void main() {}", {420}),
+            Messages{"error: layout 'binding' applies to uniform and buffer blocks, samplers, images and atomic counters"});
+  EXPECT_EQ(vert("layout(location = 0, location = 1) in vec4 p; void main() {}", {330}),
+            Messages{"error: 'location' is given twice in one layout(...); repeating an identifier requires #version 440 or "
+                     "GL_ARB_enhanced_layouts"});
+  EXPECT_EQ(vert("layout(location = 0) layout(component = 1) out float p; void main() {}", {410}),
+            Messages{"error: a second layout(...) on one declaration requires #version 420 or GL_ARB_shading_language_420pack"});
+}
+
+TEST(Validate, LayoutValues) {
+  EXPECT_EQ(vert("layout(location = 1.0) in vec4 p; void main() {}", {330}),
+            Messages{"error: the value of layout 'location' must be a constant integer, not float"});
+  EXPECT_EQ(vert("uniform int u; layout(location = u) in vec4 p; void main() {}", {440}),
+            Messages{"error: the value of layout 'location' must be a constant expression"});
+  EXPECT_EQ(vert("layout(location = -1) in vec4 p; void main() {}", {440}),
+            Messages{"error: layout 'location' must be non-negative, not -1"});
+  EXPECT_EQ(errors("layout(local_size_x = 0) in; void main() {}", Stage::compute, {430}),
+            Messages{"error: layout 'local_size_x' must be positive, not 0"});
+  EXPECT_EQ(vert("layout(location) in vec4 p; void main() {}", {330}), Messages{"error: layout 'location' needs a value: 'location = N'"});
+}
+
+TEST(Validate, StageWideLayoutsAgree) {
+  EXPECT_EQ(geom("layout(points) in; layout(line_strip, max_vertices = 2) out; layout(max_vertices = 3) out; void main() {}", {150}),
+            Messages{"error: the max_vertices was set differently before; every declaration of it must agree"});
+  EXPECT_EQ(geom("layout(points) in; layout(triangles) in; void main() {}", {150}),
+            Messages{"error: the input primitive was set differently before; every declaration of it must agree"});
+  // With GL_ARB_enhanced_layouts an identifier may repeat in one declaration: the last one counts.
+  EXPECT_EQ(geom("layout(points) in; layout(max_vertices = 2, max_vertices = 3) out; layout(max_vertices = 3) out; void main() {}",
+                 {150, false, {"GL_ARB_enhanced_layouts"}}),
+            Messages{});
+}
+
+TEST(Validate, BlockOffsetsAndAlignment) {
+  const At at{140, false, {"GL_ARB_enhanced_layouts"}};
+  EXPECT_EQ(vert("layout(std140) uniform B { layout(offset = 0) float a; layout(offset = 6) float b; }; void main() {}", at),
+            Messages{"error: layout 'offset' 6 of 'b' is not a multiple of its base alignment (4 bytes)"});
+  EXPECT_EQ(vert("layout(std140) uniform B { layout(offset = 0) vec4 a; layout(offset = 8) vec4 b; }; void main() {}", at),
+            Messages{"error: layout 'offset' 8 of 'b' is not a multiple of its base alignment (16 bytes)"});
+  EXPECT_EQ(vert("layout(std140) uniform B { layout(offset = 16) vec4 a; layout(offset = 16) vec4 b; }; void main() {}", at),
+            Messages{"error: layout 'offset' 16 of 'b' lies inside the member before it, which ends at byte 32"});
+  EXPECT_EQ(vert("layout(shared) uniform B { layout(align = 16) vec4 a; }; void main() {}", at),
+            Messages{"error: layout 'align' requires a std140 or std430 block, not a shared one"});
+  EXPECT_EQ(vert("layout(std140) uniform B { layout(align = 12) vec4 a; }; void main() {}", at),
+            Messages{"error: layout 'align' must be a power of two, not 12"});
+  EXPECT_EQ(vert("layout(std140, align = 16) uniform B { layout(offset = 8, align = 8) vec2 a; layout(offset = 16) float b; };"
+                 "void main() {}",
+                 at),
+            Messages{});
+}
+
+TEST(Validate, TransformFeedbackAndComponents) {
+  const At at{150, false, {"GL_ARB_enhanced_layouts"}};
+  EXPECT_EQ(vert("layout(xfb_offset = 2) out vec4 v; void main() {}", at),
+            Messages{"error: layout 'xfb_offset' must be a multiple of 4"});
+  EXPECT_EQ(vert("layout(xfb_offset = 16, xfb_stride = 20) out vec4 v; void main() {}", at),
+            Messages{"error: what layout 'xfb_offset' 16 captures (16 bytes) overflows the buffer's stride of 20 bytes"});
+  EXPECT_EQ(vert("layout(xfb_stride = 20) out vec4 a; layout(xfb_buffer = 0, xfb_stride = 32) out vec4 b; void main() {}", at),
+            Messages{"error: the xfb_stride of buffer 0 was set differently before; every declaration of it must agree"});
+  EXPECT_EQ(vert("layout(xfb_buffer = 4) out vec4 v; void main() {}", at),
+            Messages{"error: layout 'xfb_buffer' must be less than gl_MaxTransformFeedbackBuffers (4)"});
+  EXPECT_EQ(vert("layout(xfb_buffer = 1) out B { vec4 a; layout(xfb_buffer = 0) vec4 b; }; void main() {}", at),
+            Messages{"error: a block member's xfb_buffer 0 contradicts its block's (1)"});
+  const At sso{150, false, {"GL_ARB_enhanced_layouts", "GL_ARB_separate_shader_objects"}};
+  EXPECT_EQ(vert("layout(location = 0, component = 3) out vec2 v; void main() {}", sso),
+            Messages{"error: component 3 of vec2 overflows the four components of a location"});
+  EXPECT_EQ(vert("layout(component = 1) out float v; void main() {}", sso),
+            Messages{"error: layout 'component' needs a 'location' on the same declaration"});
+  EXPECT_EQ(vert("layout(location = 0, component = 1) out mat2 m; void main() {}", sso),
+            Messages{"error: layout 'component' does not apply to a matrix, a struct or a block"});
+}
+
+TEST(Validate, OverlappingLocations) {
+  const At sso{150, false, {"GL_ARB_separate_shader_objects"}};
+  EXPECT_EQ(vert("layout(location = 0) out vec4 a[2]; layout(location = 1) out vec4 b; void main() {}", sso),
+            Messages{"error: location 1 is already used by output 'a'"});
+  EXPECT_EQ(vert("layout(location = 0) out dvec4 a; layout(location = 1) out vec4 b; void main() {}",
+                 {150, false, {"GL_ARB_separate_shader_objects", "GL_ARB_gpu_shader_fp64"}}),
+            Messages{"error: location 1 is already used by output 'a'"});
+  EXPECT_EQ(frag("layout(location = 0) in vec4 a; layout(location = 1) in vec4 b; void main() {}", sso), Messages{});
+  // Fragment outputs are checked against each other when linking (Mesa).
+  EXPECT_EQ(frag("layout(location = 0) out vec4 a; layout(location = 0) out vec4 b; void main() {}", {330}), Messages{});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -13,10 +13,9 @@
 #include "builtins.hpp"
 #include "expansions.hpp"
 #include "safegi/typechecker/checker.hpp"
+#include "validation.hpp"
 
 namespace safegi::detail {
-
-struct VersionGate;  // validation.hpp
 
 // Where an operand's annotation came from, for the notes of a mismatch.
 struct Origin {
@@ -161,6 +160,13 @@ class Checker {
   void validate_function(const ast::FunctionDecl& d, const Function& f);
   void validate_precision(const ast::PrecisionDecl& d);
   void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
+  // validate_layouts.cpp: layout qualifiers by declaration, stage and version; values; block offsets; locations.
+  std::optional<long long> layout_value(const ast::LayoutId& id);  // evaluated and checked once
+  void validate_layouts(const ast::TypeQualifiers& q, const LayoutSite& site);
+  void validate_block_layout(const ast::InterfaceBlockDecl& d);   // std140/std430 offsets and alignments
+  void validate_global_layouts(const ast::VariableDecl& d);       // after its declarators are typed
+  void validate_block_layouts(const ast::InterfaceBlockDecl& d);  // the block, its members, their offsets
+  void validate_default_layouts(const ast::QualifierDecl& d);     // `layout(...) in;`
   void validate_case(const ast::CaseLabel& label, const Value& value);
 
   // subroutines.cpp
@@ -219,6 +225,7 @@ class Checker {
     std::vector<std::pair<long long, SourceRange>> cases;  // values seen so far
   };
   std::vector<SwitchContext> switches_;  // the switch statements being checked, innermost last
+  ValidationState validation_;
 };
 
 }  // namespace safegi::detail

@@ -49,8 +49,7 @@ std::optional<int> layout_int(const ast::TypeQualifiers& q, const char* id, Chec
   for (const ast::Qualifier& qual : q.list)
     for (const ast::LayoutId& l : qual.layout_ids)
       if (l.name == id && l.value) {
-        Value v = c.expr(l.value);
-        if (v.constant) return static_cast<int>(*v.constant);
+        if (std::optional<long long> v = c.layout_value(l)) return static_cast<int>(*v);
       }
   return std::nullopt;
 }
@@ -271,6 +270,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
     declare_variable(std::move(v));
   }
+  if (global) validate_global_layouts(d);
 }
 
 void Checker::block_decl(const ast::InterfaceBlockDecl& d) {

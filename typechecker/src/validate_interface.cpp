@@ -159,6 +159,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
       return;
     }
   }
+  validate_block_layouts(d);
 }
 
 }  // namespace safegi::detail

@@ -237,8 +237,11 @@ namespace safegi::detail {
 
 // `invariant gl_Position;`, `precise p;`, `layout(local_size_x = 8) in;`.
 void Checker::validate_qualifier_decl(const ast::QualifierDecl& d, bool global) {
-  check_qualifier_counts(*this, d.qualifiers, false);
-  if (global) return;
+  if (!check_qualifier_counts(*this, d.qualifiers, false)) return;
+  if (global) {
+    validate_default_layouts(d);
+    return;
+  }
   for (const ast::Qualifier& x : d.qualifiers.list) {
     if (x.kind == ast::QualifierKind::Precise) continue;
     const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("a layout qualifier") : "'" + x.word + "'";

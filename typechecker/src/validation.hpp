@@ -5,8 +5,12 @@
 // l-values (docs/typechecker.md, "Validation").
 
 #include <initializer_list>
+#include <map>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <vector>
 
 #include <safegi/lexer/extensions.hpp>
 #include <safegi/parser/ast.hpp>
@@ -52,5 +56,36 @@ bool known_builtin_variable(std::string_view name);
 char stage_letter(Stage stage);
 // "vertex", "vertex and geometry", "vertex, geometry and fragment" for a string of stage letters.
 std::string stage_list(std::string_view letters);
+
+// Where a layout qualifier stands, for the rules of validate_layouts.cpp.
+struct LayoutSite {
+  enum class Kind : std::uint8_t { variable, block, member, standalone };
+  Kind kind = Kind::variable;
+  std::string storage;                           // in out uniform buffer shared attribute varying, or ""
+  const Type* type = nullptr;                    // the declared type of a variable or member
+  std::string name;                              // the variable's name (gl_FragCoord, gl_FragDepth redeclarations)
+  const ast::InterfaceBlockDecl* block = nullptr;  // a member's block
+};
+
+// One input or output's locations (GLSL 4.60 §4.4.1): slots [first, last], components [first_component, last_component].
+struct LocationUse {
+  bool output = false;
+  long long first = 0, last = 0;
+  int first_component = 0, last_component = 3;
+  std::string name;
+  SourceRange range;
+};
+
+// What the validating rules remember across declarations.
+struct ValidationState {
+  std::unordered_map<const ast::LayoutId*, std::optional<long long>> layout_values;  // evaluated once
+  // Stage-wide layouts every declaration must agree on: max_vertices, vertices, invocations, local_size_x, ...,
+  // "input primitive", "output primitive", "xfb_stride of buffer N".
+  std::map<std::string, std::pair<long long, SourceRange>> stage_layouts;
+  std::vector<LocationUse> locations;
+  long long default_xfb_buffer = 0;           // from `layout(xfb_buffer = N) out;`
+  std::string uniform_packing = "shared";     // `layout(std140) uniform;`
+  std::string buffer_packing = "shared";
+};
 
 }  // namespace safegi::detail
