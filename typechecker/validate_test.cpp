@@ -355,5 +355,36 @@ TEST(Validate, OverlappingLocations) {
   EXPECT_EQ(frag("layout(location = 0) out vec4 a; layout(location = 0) out vec4 b; void main() {}", {330}), Messages{});
 }
 
+TEST(Validate, PerVertexInputsAreArrays) {
+  EXPECT_EQ(geom("layout(points) in; in vec4 c; void main() {}", {150}),
+            Messages{"error: a geometry shader input holds one value per vertex: declare 'c' as an array, e.g. 'c[]'"});
+  EXPECT_EQ(geom("layout(points) in; in B { vec4 c; } b; void main() {}", {150}),
+            Messages{"error: a geometry shader input block holds one value per vertex: give it an array instance, e.g. '} b[];'"});
+  EXPECT_EQ(errors("layout(vertices = 3) out; out vec4 c; patch out vec4 p; void main() {}", Stage::tess_control, {400}),
+            Messages{"error: a tessellation control shader output holds one value per vertex: declare 'c' as an array, e.g. 'c[]'"});
+  EXPECT_EQ(geom("layout(points) in; in vec4 c[]; in B { vec4 d; } b[]; void main() {}", {150}), Messages{});
+}
+
+TEST(Validate, BuiltinRedeclarations) {
+  EXPECT_EQ(vert("uniform float gl_ClipDistance[4]; void main() {}", {130}),
+            Messages{"error: 'gl_ClipDistance' can only be redeclared as an 'out' of a vertex shader"});
+  EXPECT_EQ(frag("out float gl_ClipDistance[4]; void main() {}", {130}),
+            Messages{"error: 'gl_ClipDistance' can only be redeclared as an 'in' of a fragment shader"});
+  EXPECT_EQ(vert("out vec2 gl_ClipDistance[4]; void main() {}", {130}),
+            Messages{"error: 'gl_ClipDistance' is redeclared as vec2[4]; it must stay an array of float"});
+  EXPECT_EQ(vert("out float gl_ClipDistance[gl_MaxClipDistances + 1]; void main() {}", {130}),
+            Messages{"error: 'gl_ClipDistance' is redeclared with 9 elements; it may have at most gl_MaxClipDistances (8)"});
+  EXPECT_EQ(vert("out float gl_ClipDistance[4]; varying vec4 gl_TexCoord[2]; void main() {}", {130}), Messages{});
+  EXPECT_EQ(frag("vec4 p = gl_FragCoord; layout(origin_upper_left) in vec4 gl_FragCoord; void main() {}", {150}),
+            Messages{"error: gl_FragCoord must be redeclared before it is used"});
+  EXPECT_EQ(frag("layout(origin_upper_left) in vec4 gl_FragCoord; in vec4 gl_FragCoord; void main() {}", {150}),
+            Messages{"error: gl_FragCoord is redeclared with no layout, but was with layout(origin_upper_left) before; every "
+                     "redeclaration must agree"});
+  EXPECT_EQ(frag("layout(origin_upper_left) in vec4 gl_FragCoord; vec4 p = gl_FragCoord; "
+                 "layout(origin_upper_left) in vec4 gl_FragCoord; void main() {}",
+                 {150}),
+            Messages{});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -155,6 +155,7 @@ class Checker {
   void validate_variable(const ast::VariableDecl& d, const Type& base, bool global);
   void validate_interface(const ast::VariableDecl& d, const Type& base);  // a global input or output
   void validate_struct_members(const ast::StructDecl& s);
+  void validate_builtin_redeclaration(const ast::VariableDecl& d, const ast::Declarator& decl, const Type& type);
   void validate_block(const ast::InterfaceBlockDecl& d);
   void validate_qualifier_decl(const ast::QualifierDecl& d, bool global);
   void validate_function(const ast::FunctionDecl& d, const Function& f);

@@ -267,6 +267,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     v.constant_expression = is_const && decl.initializer && !non_constant_part(decl.initializer);
     v.type = poisoned ? Type::error() : declared;
     result_.declarators[&decl] = declared;
+    if (global && decl.name.rfind("gl_", 0) == 0) validate_builtin_redeclaration(d, decl, declared);
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
     declare_variable(std::move(v));
   }

@@ -73,6 +73,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
       v.type = Type::scalar_of(Scalar::int_);
       v.range = e.range;
       v.read_only = true;
+      v.constant = builtin_constant(e.name);
       return v;
     }
     return error_value(e.range);

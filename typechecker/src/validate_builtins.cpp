@@ -64,6 +64,7 @@ std::string version_text(int version, bool es) { return "#version " + std::to_st
 }  // namespace
 
 bool Checker::builtin_available(const std::string& name, SourceRange where, bool function) {
+  if (!function) validation_.used_builtins.emplace(name, where);  // gl_FragCoord's redeclaration comes first
   const Availability* a = find_availability(name);
   if (!a) return true;
   const LanguageLevel* level = language();

@@ -25,12 +25,30 @@ Direction direction_of(const ast::TypeQualifiers& q, Stage stage) {
   return Direction::none;
 }
 
+// Inputs of geometry and tessellation shaders and outputs of tessellation
+// control shaders hold one element per vertex: they are arrays (GLSL 4.60
+// §4.3.4, §4.3.6), except `patch` ones.
+bool per_vertex(Stage stage, bool input, const ast::TypeQualifiers& q) {
+  if (q.has("patch")) return false;
+  if (input) return stage == Stage::geometry || stage == Stage::tess_control || stage == Stage::tess_evaluation;
+  return stage == Stage::tess_control;
+}
+
 }  // namespace
 
 // The type rules of one input or output declaration (not a block).
 static void check_interface_variable(Checker& c, const ast::VariableDecl& d, const Type& base, Stage stage) {
   const Direction dir = direction_of(d.qualifiers, stage);
   if (dir == Direction::none || base.is_error() || d.declarators.empty()) return;
+  if (per_vertex(stage, dir == Direction::input, d.qualifiers) && d.declarators.front().name.rfind("gl_", 0) != 0) {
+    for (const ast::Declarator& decl : d.declarators) {
+      if (!decl.array_dims.empty() || base.is_array()) continue;
+      c.reject(decl.name_range, std::string("a ") + stage_name(stage) + " shader " + (dir == Direction::input ? "input" : "output") +
+                                    " holds one value per vertex: declare '" + decl.name + "' as an array, e.g. '" + decl.name + "[]'",
+               "E-INTERFACE-TYPE");
+      return;
+    }
+  }
   const SourceRange where = d.declarators.front().name_range;
   const std::string name = d.declarators.front().name;
   const bool vertex_input = stage == Stage::vertex && dir == Direction::input;
@@ -123,6 +141,15 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
   if ((storage_word == "in" || storage_word == "out") && !allows(kInOutBlocks)) {
     reject(d.block_name_range, "'" + storage_word + "' blocks require " + gate_requirement(kInOutBlocks, language()->es),
            "E-VERSION");
+    return;
+  }
+  if ((storage_word == "in" || storage_word == "out") && per_vertex(options_.stage, storage_word == "in", q) &&
+      d.instance_array_dims.empty()) {
+    reject(d.instance_name.empty() ? d.block_name_range : d.instance_name_range,
+           std::string("a ") + stage_name(options_.stage) + " shader " + (storage_word == "in" ? "input" : "output") +
+               " block holds one value per vertex: give it an array instance, e.g. '} " +
+               (d.instance_name.empty() ? std::string("v") : d.instance_name) + "[];'",
+           "E-INTERFACE-BLOCK");
     return;
   }
   if (d.block_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {

@@ -49,6 +49,9 @@ const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_vi
 bool contains_opaque(const Type& t);
 bool contains_bool(const Type& t);
 
+// The value of a gl_Max constant the rules need (glslang's default resource limits), or nothing.
+std::optional<long long> builtin_constant(std::string_view name);
+
 // A built-in variable of some stage (builtin_variables.def), gl_in, gl_out.
 bool known_builtin_variable(std::string_view name);
 
@@ -84,6 +87,8 @@ struct ValidationState {
   std::map<std::string, std::pair<long long, SourceRange>> stage_layouts;
   std::vector<LocationUse> locations;
   long long default_xfb_buffer = 0;           // from `layout(xfb_buffer = N) out;`
+  std::unordered_map<std::string, SourceRange> used_builtins;  // built-in variables read or written so far
+  std::optional<std::pair<std::string, SourceRange>> frag_coord_layout;  // the first gl_FragCoord redeclaration
   std::string uniform_packing = "shared";     // `layout(std140) uniform;`
   std::string buffer_packing = "shared";
 };
