@@ -386,5 +386,29 @@ TEST(Validate, BuiltinRedeclarations) {
             Messages{});
 }
 
+TEST(Validate, Lvalues) {
+  EXPECT_EQ(vert("void main() { float a[2]; float b[2]; a = b; }", {110}),
+            Messages{"error: an array cannot be assigned as a whole in GLSL 1.10"});
+  EXPECT_EQ(vert("void main() { float a[2]; float b[2]; a = b; }", {120}), Messages{});
+  EXPECT_EQ(vert("buffer B { readonly float f; } b; void main() { b.f = 1.0; }", {430}),
+            Messages{"error: cannot assign to readonly member 'f'"});
+  EXPECT_EQ(vert("readonly buffer B { float f; } b; void main() { b.f = 1.0; }", {430}),
+            Messages{"error: cannot assign to read-only variable 'b'"});
+  EXPECT_EQ(frag("void main() { gl_ClipDistance[0] = 1.0; }", {130}),
+            Messages{"error: cannot assign to read-only variable 'gl_ClipDistance'"});
+  EXPECT_EQ(vert("void main() { gl_MultiTexCoord4 = vec4(1.0); }", {110}),
+            Messages{"error: cannot assign to read-only variable 'gl_MultiTexCoord4'"});
+  const char* tesc = "layout(vertices = 3) out; out vec4 x[]; uniform int n; void main() { x[%s] = vec4(1.0); }";
+  auto at = [&](const char* index) {
+    std::string s = tesc;
+    s.replace(s.find("%s"), 2, index);
+    return errors(s, Stage::tess_control, {400});
+  };
+  EXPECT_EQ(at("gl_InvocationID"), Messages{});
+  EXPECT_EQ(at("n"), Messages{"error: a tessellation control shader writes its per-vertex output 'x' only at [gl_InvocationID]"});
+  EXPECT_EQ(errors("layout(vertices = 3) out; void main() { gl_out[0].gl_Position = vec4(1.0); }", Stage::tess_control, {400}),
+            Messages{"error: a tessellation control shader writes its per-vertex output 'gl_out' only at [gl_InvocationID]"});
+}
+
 }  // namespace
 }  // namespace safegi::testing

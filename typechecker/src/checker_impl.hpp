@@ -161,6 +161,8 @@ class Checker {
   void validate_function(const ast::FunctionDecl& d, const Function& f);
   void validate_precision(const ast::PrecisionDecl& d);
   void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
+  // validate_lvalues.cpp: an assignable `target` that GLSL still forbids writing; false after reporting.
+  bool validate_assignment(const ast::Expr* target, const Value& value);
   // validate_layouts.cpp: layout qualifiers by declaration, stage and version; values; block offsets; locations.
   std::optional<long long> layout_value(const ast::LayoutId& id);  // evaluated and checked once
   void validate_layouts(const ast::TypeQualifiers& q, const LayoutSite& site);

@@ -277,7 +277,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
 void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
   auto info = std::make_unique<StructInfo>();
   info->name = d.block_name;
-  const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in");
+  const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("readonly");
   for (const ast::VariableDecl* member : d.members) {
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
@@ -286,7 +286,8 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
       const std::string full = d.instance_name.empty() ? decl.name : d.instance_name + "." + decl.name;
       record_interface(d.qualifiers, full, d.block_name, t, decl.name_range, member);
       if (d.instance_name.empty()) {
-        Variable v{decl.name, t, decl.name_range, read_only, false, std::nullopt, {decl.name_range, "'" + decl.name + "' declared here"}};
+        Variable v{decl.name, t, decl.name_range, read_only || member->qualifiers.has("readonly"), false, std::nullopt,
+                   {decl.name_range, "'" + decl.name + "' declared here"}};
         declare_variable(std::move(v));
       }
     }

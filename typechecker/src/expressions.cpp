@@ -183,6 +183,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
   Value lhs = expr(e.lhs);
   Value rhs = expr(e.rhs);
   if (lhs.type.is_error() || rhs.type.is_error()) return error_value(e.range);
+  if (lhs.lvalue && !lhs.read_only && !validate_assignment(e.lhs, lhs)) return error_value(e.range);
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
     if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";

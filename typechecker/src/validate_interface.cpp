@@ -42,6 +42,7 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
   if (dir == Direction::none || base.is_error() || d.declarators.empty()) return;
   if (per_vertex(stage, dir == Direction::input, d.qualifiers) && d.declarators.front().name.rfind("gl_", 0) != 0) {
     for (const ast::Declarator& decl : d.declarators) {
+      if (dir == Direction::output) c.validation_.per_vertex_outputs.emplace(decl.name, decl.name_range);
       if (!decl.array_dims.empty() || base.is_array()) continue;
       c.reject(decl.name_range, std::string("a ") + stage_name(stage) + " shader " + (dir == Direction::input ? "input" : "output") +
                                     " holds one value per vertex: declare '" + decl.name + "' as an array, e.g. '" + decl.name + "[]'",
@@ -143,6 +144,8 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
            "E-VERSION");
     return;
   }
+  if (storage_word == "out" && per_vertex(options_.stage, false, q) && !d.instance_name.empty())
+    validation_.per_vertex_outputs.emplace(d.instance_name, d.instance_name_range);
   if ((storage_word == "in" || storage_word == "out") && per_vertex(options_.stage, storage_word == "in", q) &&
       d.instance_array_dims.empty()) {
     reject(d.instance_name.empty() ? d.block_name_range : d.instance_name_range,
@@ -173,6 +176,8 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
       return;
     }
     for (const ast::Declarator& decl : member->declarators) {
+      if (!d.instance_name.empty() && member->qualifiers.has("readonly"))
+        validation_.readonly_members.emplace(d.instance_name + "." + decl.name, decl.name_range);
       if (decl.name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
         reject(decl.name_range, "member name '" + decl.name + "' begins with 'gl_', which is reserved", "E-RESERVED-NAME");
         return;

@@ -87,6 +87,8 @@ struct ValidationState {
   std::map<std::string, std::pair<long long, SourceRange>> stage_layouts;
   std::vector<LocationUse> locations;
   long long default_xfb_buffer = 0;           // from `layout(xfb_buffer = N) out;`
+  std::unordered_map<std::string, SourceRange> readonly_members;  // "instance.member" of named buffer blocks
+  std::unordered_map<std::string, SourceRange> per_vertex_outputs;  // a tessellation control shader's (not `patch`)
   std::unordered_map<std::string, SourceRange> used_builtins;  // built-in variables read or written so far
   std::optional<std::pair<std::string, SourceRange>> frag_coord_layout;  // the first gl_FragCoord redeclaration
   std::string uniform_packing = "shared";     // `layout(std140) uniform;`
