@@ -410,5 +410,15 @@ TEST(Validate, Lvalues) {
             Messages{"error: a tessellation control shader writes its per-vertex output 'gl_out' only at [gl_InvocationID]"});
 }
 
+TEST(Validate, ComputeShadersNeedTheirVersion) {
+  EXPECT_EQ(errors("layout(local_size_x = 1) in; void main() {}", Stage::compute, {330}),
+            Messages{"error: compute shaders require #version 430 or GL_ARB_compute_shader; the shader is #version 330"});
+  EXPECT_EQ(errors("layout(local_size_x = 1) in; void main() {}", Stage::compute, {330, false, {"GL_ARB_compute_shader"}}),
+            Messages{});
+  EXPECT_EQ(errors("layout(local_size_x = 1) in; void main() {}", Stage::compute, {310, true}), Messages{});
+  // Geometry shaders are not gated (piglit's glsl-1.50/compiler/uniforms.geom has no #version).
+  EXPECT_EQ(geom("void main() {}", {110}), Messages{});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -240,6 +240,7 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
   safegi::DiagnosticEngine check_diagnostics;
   safegi::CheckOptions check_options{.stage = checker_stage(stage)};
   if (preprocessed) check_options.language = unit.language;
+  check_options.version_range = unit.version_range;
   safegi::check(*parsed.unit, check_options, check_diagnostics);
   result.checked = !check_diagnostics.has_errors();
   result.first_check_error = first_error_of(check_diagnostics, sources);

@@ -160,6 +160,7 @@ class Checker {
   void validate_qualifier_decl(const ast::QualifierDecl& d, bool global);
   void validate_function(const ast::FunctionDecl& d, const Function& f);
   void validate_precision(const ast::PrecisionDecl& d);
+  void validate_stage(const ast::TranslationUnit& unit);  // compute shaders before 4.30
   void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
   // validate_lvalues.cpp: an assignable `target` that GLSL still forbids writing; false after reporting.
   bool validate_assignment(const ast::Expr* target, const Value& value);

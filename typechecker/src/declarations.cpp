@@ -77,6 +77,7 @@ void Checker::run(const ast::TranslationUnit& unit) {
     else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
   }
   builtins_ = BuiltinLibrary::for_registry(result_.registry);
+  validate_stage(unit);
   push_scope();
   declare_builtin_variables();
   push_scope();  // the program's globals may shadow built-ins (redeclaring gl_* blocks)

@@ -1,5 +1,6 @@
 // Statement rules beyond types: the shape of a switch body and its case
-// labels (GLSL 4.60 §6.2; GLSL 1.30 and ESSL 3.00 say the same).
+// labels (GLSL 4.60 §6.2; GLSL 1.30 and ESSL 3.00 say the same); compute
+// shaders before 4.30.
 
 #include <string>
 
@@ -16,7 +17,25 @@ bool is_label(const ast::Stmt* s) {
   return s && (s->kind == ast::NodeKind::CaseLabel || s->kind == ast::NodeKind::DefaultLabel);
 }
 
+const VersionGate kComputeShaders{430, 310, {"GL_ARB_compute_shader"}};
+
 }  // namespace
+
+// Compute shaders before GLSL 4.30 / ESSL 3.10 need GL_ARB_compute_shader.
+// Geometry and tessellation shaders are not gated by #version: piglit expects
+// a geometry shader without #version (glsl-1.50/compiler/uniforms.geom) and
+// tessellation shaders at #version 110 (nv_viewport_array2) to compile.
+void Checker::validate_stage(const ast::TranslationUnit& unit) {
+  const VersionGate* gate = options_.stage == Stage::compute ? &kComputeShaders : nullptr;
+  if (!gate || allows(*gate)) return;
+  const LanguageLevel& level = *language();
+  SourceRange where = options_.version_range;
+  if (!where.valid()) where = unit.decls.empty() ? unit.range : SourceRange{unit.decls.front()->range.begin, unit.decls.front()->range.begin};
+  reject(where, std::string(stage_name(options_.stage)) + " shaders require " +
+                                         gate_requirement(*gate, level.es) + "; the shader is #version " +
+                                         std::to_string(level.version) + (level.es ? " es" : ""),
+         "E-VERSION");
+}
 
 void Checker::validate_switch(const ast::SwitchStmt& s, const Type& selector) {
   switches_.push_back({selector, {}});

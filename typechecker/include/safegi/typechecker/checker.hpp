@@ -41,6 +41,7 @@ struct CheckOptions {
   // versions, qualifiers a version does not have; docs/typechecker.md) run
   // only when it is set. Unset: every version's rules are off.
   std::optional<LanguageLevel> language;
+  SourceRange version_range;  // the #version line (PreprocessedUnit::version_range), where stage gates point
   // The preprocessed tokens the tree was parsed from and their SourceManager
   // (optional, both or neither): diagnostics inside macro expansions then get
   // their "in expansion of macro X" notes.
