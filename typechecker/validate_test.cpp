@@ -295,9 +295,9 @@ TEST(Validate, LayoutValues) {
 
 TEST(Validate, StageWideLayoutsAgree) {
   EXPECT_EQ(geom("layout(points) in; layout(line_strip, max_vertices = 2) out; layout(max_vertices = 3) out; void main() {}", {150}),
-            Messages{"error: the max_vertices was set differently before; every declaration of it must agree"});
+            Messages{"error: the max_vertices is 3 here but 2 before; every declaration must agree"});
   EXPECT_EQ(geom("layout(points) in; layout(triangles) in; void main() {}", {150}),
-            Messages{"error: the input primitive was set differently before; every declaration of it must agree"});
+            Messages{"error: the input primitive is 'triangles' here but 'points' before; every declaration must agree"});
   // With GL_ARB_enhanced_layouts an identifier may repeat in one declaration: the last one counts.
   EXPECT_EQ(geom("layout(points) in; layout(max_vertices = 2, max_vertices = 3) out; layout(max_vertices = 3) out; void main() {}",
                  {150, false, {"GL_ARB_enhanced_layouts"}}),
@@ -329,7 +329,7 @@ TEST(Validate, TransformFeedbackAndComponents) {
   EXPECT_EQ(vert("layout(xfb_offset = 16, xfb_stride = 20) out vec4 v; void main() {}", at),
             Messages{"error: what layout 'xfb_offset' 16 captures (16 bytes) overflows the buffer's stride of 20 bytes"});
   EXPECT_EQ(vert("layout(xfb_stride = 20) out vec4 a; layout(xfb_buffer = 0, xfb_stride = 32) out vec4 b; void main() {}", at),
-            Messages{"error: the xfb_stride of buffer 0 was set differently before; every declaration of it must agree"});
+            Messages{"error: the xfb_stride of buffer 0 is 32 here but 20 before; every declaration must agree"});
   EXPECT_EQ(vert("layout(xfb_buffer = 4) out vec4 v; void main() {}", at),
             Messages{"error: layout 'xfb_buffer' must be less than gl_MaxTransformFeedbackBuffers (4)"});
   EXPECT_EQ(vert("layout(xfb_buffer = 1) out B { vec4 a; layout(xfb_buffer = 0) vec4 b; }; void main() {}", at),

@@ -93,7 +93,10 @@ bool Checker::builtin_available(const std::string& name, SourceRange where, bool
     if (!first.empty()) need += (need.empty() ? "" : " or ") + first;
     const std::string message = need.empty() ? "'" + name + "' is not available in " + std::string(level->es ? "GLSL ES" : "desktop GLSL")
                                               : "'" + name + "' requires " + need + "; the shader is " + here;
-    reject(where, message, "E-VERSION", enable);
+    // The GLSL 1.30 lookups have 1.10 names by sampler type.
+    const bool new_lookup = function && since == 130 && !level->es && name.rfind("texture", 0) == 0;
+    reject(where, message, "E-VERSION",
+           new_lookup ? "before #version 130 the lookups are named by sampler: texture2D, texture2DProj, textureCube, …" : enable);
     return false;
   }
   if (a->profile == Profile::any || compatibility_profile()) return true;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <string>
 
 #include "checker_impl.hpp"
@@ -61,6 +62,13 @@ const StageLayout* stage_layout(std::string_view id, std::string_view storage) {
   for (const StageLayout& s : kStageLayouts)
     if (id == s.id) return &s;
   return nullptr;
+}
+
+// The row of kStageLayouts named `id`.
+long long layout_row(std::string_view id) {
+  for (std::size_t i = 0; i < std::size(kStageLayouts); ++i)
+    if (id == kStageLayouts[i].id) return static_cast<long long>(i);
+  return 0;
 }
 
 bool takes_value(std::string_view id) {
@@ -254,10 +262,13 @@ class LayoutRules {
     c_.reject(where, std::move(message), code, std::move(hint));
     return false;
   }
-  bool disagree(const ast::LayoutId& id, const std::string& what, const std::pair<long long, SourceRange>& before) {
-    c_.report(Diagnostic::error(id.name_range, "the " + what + " was set differently before; every declaration of it must agree")
+  // `what` is "max_vertices" or "xfb_stride of buffer 0"; `now` and `before` as they are spelled.
+  bool disagree(const ast::LayoutId& id, const std::string& what, const std::string& now, const std::string& before,
+                SourceRange before_range) {
+    c_.report(Diagnostic::error(id.name_range, "the " + what + " is " + now + " here but " + before +
+                                                   " before; every declaration must agree")
                   .with_code("E-LAYOUT")
-                  .with_note(Diagnostic::note(before.second, "set here")));
+                  .with_note(Diagnostic::note(before_range, "first set here")));
     return false;
   }
 
@@ -290,11 +301,16 @@ class LayoutRules {
       return fail(id.name_range, "layout '" + name + "' applies only to a declaration of its own: 'layout(" + name +
                                      (takes_value(name) ? " = N" : "") + ") " + s.storage + ";'");
     if (!*s.agreement) return true;
-    // Primitives agree by name, the others by value.
-    const long long v = takes_value(name) ? value.value_or(-1) : static_cast<long long>(&s - kStageLayouts);
+    // Primitives agree by name (their row of kStageLayouts), the others by value.
+    const bool by_value = takes_value(name);
+    const long long v = by_value ? value.value_or(-1) : layout_row(s.id);
     auto [it, fresh] = c_.validation_.stage_layouts.emplace(s.agreement, std::pair{v, id.name_range});
-    if (!fresh && it->second.first != v && v >= 0 && it->second.first >= 0) return disagree(id, s.agreement, it->second);
-    return true;
+    if (fresh || it->second.first == v || v < 0 || it->second.first < 0) return true;
+    auto spelled = [&](long long x) {
+      if (by_value) return std::to_string(x);
+      return std::string("'") + kStageLayouts[x].id + "'";
+    };
+    return disagree(id, s.agreement, spelled(v), spelled(it->second.first), it->second.second);
   }
 
   bool location(const ast::LayoutId& id) {
@@ -403,7 +419,8 @@ class LayoutRules {
                                        " is more than gl_MaxTransformFeedbackInterleavedComponents * 4 (" +
                                        std::to_string(kMaxTransformFeedbackBytes) + ")");
     auto [it, fresh] = c_.validation_.stage_layouts.emplace(stride_key(), std::pair{v, id.name_range});
-    if (!fresh && it->second.first != v) return disagree(id, stride_key(), it->second);
+    if (!fresh && it->second.first != v)
+      return disagree(id, stride_key(), std::to_string(v), std::to_string(it->second.first), it->second.second);
     return true;
   }
 
