@@ -420,5 +420,27 @@ TEST(Validate, ComputeShadersNeedTheirVersion) {
   EXPECT_EQ(geom("void main() {}", {110}), Messages{});
 }
 
+TEST(Validate, BarrierAndInterlockPlacement) {
+  const At tess{400};
+  auto tesc = [&](std::string body) {
+    return errors("layout(vertices = 3) out; uniform bool u; void f() {} " + body, Stage::tess_control, tess);
+  };
+  EXPECT_EQ(tesc("void main() { barrier(); }"), Messages{});
+  EXPECT_EQ(tesc("void main() { if (u) barrier(); }"),
+            Messages{"error: 'barrier()' may be called only outside control flow (if, loops, switch)"});
+  EXPECT_EQ(tesc("void g() { barrier(); } void main() { g(); }"), Messages{"error: 'barrier()' may be called only in main()"});
+  EXPECT_EQ(tesc("void main() { if (u) return; barrier(); }"),
+            Messages{"error: 'barrier()' may be called only before a return from main()"});
+  EXPECT_EQ(tesc("void main() { return; barrier(); }"), Messages{"error: 'barrier()' may be called only before a return from main()"});
+  const At interlock{450, false, {"GL_ARB_fragment_shader_interlock"}};
+  EXPECT_EQ(frag("void main() { beginInvocationInterlockARB(); endInvocationInterlockARB(); }", interlock), Messages{});
+  EXPECT_EQ(frag("void main() { beginInvocationInterlockARB(); beginInvocationInterlockARB(); }", interlock),
+            Messages{"error: 'beginInvocationInterlockARB()' may be called only once"});
+  EXPECT_EQ(frag("void main() { endInvocationInterlockARB(); }", interlock),
+            Messages{"error: 'endInvocationInterlockARB()' must follow beginInvocationInterlockARB()"});
+  EXPECT_EQ(frag("void main() { for (int i = 0; i < 2; ++i) beginInvocationInterlockARB(); }", interlock),
+            Messages{"error: 'beginInvocationInterlockARB()' may be called only outside control flow (if, loops, switch)"});
+}
+
 }  // namespace
 }  // namespace safegi::testing

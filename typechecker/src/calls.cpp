@@ -86,6 +86,7 @@ Value Checker::call(const ast::CallExpr& e) {
     bad = bad || args.back().type.is_error();
   }
   if (std::optional<Value> v = subroutine_call(e, args)) return *v;
+  validate_call_placement(e);
   if (auto it = functions_.find(e.callee); it != functions_.end()) {
     if (bad) return error_value(e.range);
     return user_call(e, it->second, args);

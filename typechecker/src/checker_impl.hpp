@@ -161,6 +161,15 @@ class Checker {
   void validate_function(const ast::FunctionDecl& d, const Function& f);
   void validate_precision(const ast::PrecisionDecl& d);
   void validate_stage(const ast::TranslationUnit& unit);  // compute shaders before 4.30
+  // Where barrier() (tessellation control) and the fragment shader interlock may be called.
+  void validate_call_placement(const ast::CallExpr& e);
+  // Counts the control flow around statements (RAII, in statement()).
+  struct FlowScope {
+    Checker& checker;
+    bool counted;
+    FlowScope(Checker& c, const ast::Stmt* s);
+    ~FlowScope() { checker.validation_.flow_depth -= counted; }
+  };
   void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
   // validate_lvalues.cpp: an assignable `target` that GLSL still forbids writing; false after reporting.
   bool validate_assignment(const ast::Expr* target, const Value& value);

@@ -387,6 +387,7 @@ void Checker::statement(const ast::Stmt* s) {
       if (stack) stack->pop_back();
     }
   } pop{written ? &written_statements_ : nullptr};
+  const FlowScope flow(*this, s);
   switch (s->kind) {
     case ast::NodeKind::CompoundStmt:
       push_scope();

@@ -37,6 +37,46 @@ void Checker::validate_stage(const ast::TranslationUnit& unit) {
          "E-VERSION");
 }
 
+Checker::FlowScope::FlowScope(Checker& c, const ast::Stmt* s) : checker(c) {
+  const ast::NodeKind k = s->kind;
+  counted = k == ast::NodeKind::IfStmt || k == ast::NodeKind::WhileStmt || k == ast::NodeKind::DoStmt ||
+            k == ast::NodeKind::ForStmt || k == ast::NodeKind::SwitchStmt;
+  c.validation_.flow_depth += counted;
+  if (k == ast::NodeKind::ReturnStmt && c.current_function_) c.validation_.returned_from = c.current_function_;
+}
+
+// GLSL 4.60 §8.16 (barrier() in a tessellation control shader) and
+// GL_ARB_fragment_shader_interlock: only in main(), outside any control flow,
+// before any return; each interlock call once, begin before end.
+void Checker::validate_call_placement(const ast::CallExpr& e) {
+  const std::string& name = e.callee;
+  const bool interlock = name == "beginInvocationInterlockARB" || name == "endInvocationInterlockARB";
+  const bool tess_barrier = name == "barrier" && options_.stage == Stage::tess_control && !functions_.count(name);
+  if (!interlock && !tess_barrier) return;
+  const bool in_main = current_function_ && current_function_->name == "main";
+  std::string problem;
+  if (!in_main) problem = "only in main()";
+  else if (validation_.flow_depth > 0) problem = "only outside control flow (if, loops, switch)";
+  else if (validation_.returned_from == current_function_) problem = "only before a return from main()";
+  if (!problem.empty()) {
+    reject(e.callee_range, "'" + name + "()' may be called " + problem, "E-CALL-PLACEMENT",
+           tess_barrier ? "every invocation of the patch must reach the barrier" : "");
+    return;
+  }
+  if (!interlock) return;
+  if (auto it = validation_.called_once.find(name); it != validation_.called_once.end()) {
+    report(Diagnostic::error(e.callee_range, "'" + name + "()' may be called only once")
+               .with_code("E-CALL-PLACEMENT")
+               .with_note(Diagnostic::note(it->second, "the first call is here")));
+    return;
+  }
+  if (name == "endInvocationInterlockARB" && !validation_.called_once.count("beginInvocationInterlockARB")) {
+    reject(e.callee_range, "'endInvocationInterlockARB()' must follow beginInvocationInterlockARB()", "E-CALL-PLACEMENT");
+    return;
+  }
+  validation_.called_once.emplace(name, e.callee_range);
+}
+
 void Checker::validate_switch(const ast::SwitchStmt& s, const Type& selector) {
   switches_.push_back({selector, {}});
   if (!s.body || s.body->statements.empty()) return;

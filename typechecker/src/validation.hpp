@@ -91,6 +91,9 @@ struct ValidationState {
   std::unordered_map<std::string, SourceRange> per_vertex_outputs;  // a tessellation control shader's (not `patch`)
   std::unordered_map<std::string, SourceRange> used_builtins;  // built-in variables read or written so far
   std::optional<std::pair<std::string, SourceRange>> frag_coord_layout;  // the first gl_FragCoord redeclaration
+  int flow_depth = 0;                          // if / loop / switch statements around the statement being checked
+  const void* returned_from = nullptr;         // the function (`main`) a return statement was seen in
+  std::map<std::string, SourceRange> called_once;  // beginInvocationInterlockARB / endInvocationInterlockARB
   std::string uniform_packing = "shared";     // `layout(std140) uniform;`
   std::string buffer_packing = "shared";
 };
