@@ -183,6 +183,12 @@ TEST(Validate, ConstantExpressions) {
   EXPECT_EQ(vert("uniform float u; void main() { const float c = u; }", {420}), Messages{});
   // GLSL ES 1.00 alone counts the comma operator as constant (Mesa).
   EXPECT_EQ(vert("const float f = (1.0, 2.0); void main() {}", {100, true}), Messages{});
+  // GLSL ES initializes globals only with constants.
+  EXPECT_EQ(vert("uniform float u; float g = u; void main() {}", {300, true}),
+            Messages{"error: in GLSL ES the initializer of global 'g' must be a constant expression; 'u' is not constant"});
+  EXPECT_EQ(vert("uniform float u; float g = u; void main() {}", {300, true, {"GL_EXT_shader_non_constant_global_initializers"}}),
+            Messages{});
+  EXPECT_EQ(vert("uniform float u; float g = u; void main() {}", {330}), Messages{});
 }
 
 TEST(Validate, SwitchBodies) {

@@ -150,6 +150,7 @@ class Checker {
   const ast::Expr* non_constant_part(const ast::Expr* e) const;
   void validate_array_size(const ast::ArrayDim& dim, const Value& size);
   void validate_const_initializer(const ast::Declarator& decl, bool global);
+  void validate_global_initializer(const ast::Declarator& decl);  // GLSL ES: constant
   // The built-in `name` exists at this version, stage and profile (builtin_availability.def); else one error at `where`.
   bool builtin_available(const std::string& name, SourceRange where, bool function);
   void validate_variable(const ast::VariableDecl& d, const Type& base, bool global);

@@ -265,6 +265,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
     }
     if (is_const && decl.initializer) validate_const_initializer(decl, global);
+    else if (global && decl.initializer) validate_global_initializer(decl);
     v.constant_expression = is_const && decl.initializer && !non_constant_part(decl.initializer);
     v.type = poisoned ? Type::error() : declared;
     result_.declarators[&decl] = declared;

@@ -50,4 +50,18 @@ void Checker::validate_const_initializer(const ast::Declarator& decl, bool globa
   report(std::move(d));
 }
 
+// GLSL ES (1.00 §4.3, 3.00 §4.3): a global's initializer is a constant
+// expression, unless GL_EXT_shader_non_constant_global_initializers.
+void Checker::validate_global_initializer(const ast::Declarator& decl) {
+  const LanguageLevel* level = language();
+  if (!level || !level->es || level->extension_enabled("GL_EXT_shader_non_constant_global_initializers")) return;
+  const ast::Expr* part = non_constant_part(decl.initializer);
+  if (!part) return;
+  report(Diagnostic::error(decl.initializer->range, "in GLSL ES the initializer of global '" + decl.name +
+                                                        "' must be a constant expression; " + spelled(part) + " is not constant")
+             .with_code("E-CONST-INIT")
+             .with_highlight(part->range)
+             .with_hint("assign it in main(), or enable GL_EXT_shader_non_constant_global_initializers"));
+}
+
 }  // namespace safegi::detail
