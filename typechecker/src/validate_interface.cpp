@@ -56,7 +56,7 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
   const bool fragment_output = stage == Stage::fragment && dir == Direction::output;
   const std::string role = vertex_input ? "vertex shader input" : fragment_output ? "fragment shader output"
                            : dir == Direction::input ? "shader input" : "shader output";
-  if (contains_bool(base)) {
+  if (contains_scalar(base, Scalar::bool_)) {
     c.reject(where, "a " + role + " cannot be bool: '" + name + "' is declared " + glsl_name(base), "E-INTERFACE-TYPE");
     return;
   }

@@ -84,15 +84,6 @@ bool positive_value(std::string_view id) {
   return id == "max_vertices" ? false : id == "invocations" || id == "vertices" || id.rfind("local_size_", 0) == 0;
 }
 
-bool contains_double(const Type& t) {
-  if (t.shape == Shape::structure && t.structure) {
-    for (const StructField& f : t.structure->fields)
-      if (contains_double(f.type)) return true;
-    return false;
-  }
-  return t.scalar == Scalar::double_;
-}
-
 // Input/output locations a type takes (GLSL 4.60 §4.4.1): dvec3/dvec4 two, a matrix one per column, arrays and structs the sum.
 long long location_slots(const Type& t) {
   long long count = 1;
@@ -434,7 +425,8 @@ class LayoutRules {
     } else if (site_.type) {
       captured.push_back(site_.type);
     }
-    const bool doubles = std::any_of(captured.begin(), captured.end(), [](const Type* t) { return contains_double(*t); });
+    const bool doubles =
+        std::any_of(captured.begin(), captured.end(), [](const Type* t) { return contains_scalar(*t, Scalar::double_); });
     const long long multiple = doubles ? 8 : 4;
     if (v % multiple != 0)
       return fail(id.value->range, "layout 'xfb_offset' must be a multiple of " + std::to_string(multiple) +

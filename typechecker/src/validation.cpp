@@ -45,13 +45,13 @@ bool contains_opaque(const Type& t) {
   return false;
 }
 
-bool contains_bool(const Type& t) {
+bool contains_scalar(const Type& t, Scalar scalar) {
   if (t.shape == Shape::structure && t.structure) {
     for (const StructField& f : t.structure->fields)
-      if (contains_bool(f.type)) return true;
+      if (contains_scalar(f.type, scalar)) return true;
     return false;
   }
-  return t.scalar == Scalar::bool_;
+  return t.scalar == scalar;
 }
 
 const ast::Qualifier* find_qualifier(const ast::TypeQualifiers& q, std::string_view word) {

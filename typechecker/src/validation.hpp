@@ -47,7 +47,8 @@ const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_vi
 // Samplers, images and atomic counters, or a struct holding one (not
 // Vulkan's or ray tracing's opaque types, which have rules of their own).
 bool contains_opaque(const Type& t);
-bool contains_bool(const Type& t);
+// `t` is of scalar type `scalar` (bool, double, …) or a struct holding one.
+bool contains_scalar(const Type& t, Scalar scalar);
 
 // The value of a gl_Max constant the rules need (glslang's default resource limits), or nothing.
 std::optional<long long> builtin_constant(std::string_view name);
