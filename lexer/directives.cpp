@@ -204,6 +204,7 @@ void Preprocessor::apply_version() {
   unit_.keywords.es = unit_.es;
   unit_.language.version = unit_.version;
   unit_.language.es = unit_.es;
+  unit_.language.compatibility = unit_.profile == "compatibility";
   define_predefined("__LINE__", "", Macro::Builtin::line);
   define_predefined("__FILE__", "", Macro::Builtin::file);
   define_predefined("__VERSION__", save(std::to_string(unit_.version)));

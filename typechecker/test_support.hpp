@@ -3,6 +3,7 @@
 // parser, checker. Diagnostics are rendered as text for exact comparisons.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,7 @@ struct SourceOptions {
   Stage stage = Stage::fragment;
   bool prelude = true;
   bool strict = false;
+  std::optional<LanguageLevel> language = {};  // the version-dependent rules run only with one
 };
 
 std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptions options = {});

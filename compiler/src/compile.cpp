@@ -301,6 +301,8 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     CheckOptions check_options;
     check_options.stage = w.stage;
     check_options.strict = options.strict;
+    check_options.language = parse_options.language;  // unset after a preprocessor error, as for the parser
+    check_options.version_range = w.preprocessed.version_range;
     check_options.tokens = &w.preprocessed.tokens;
     check_options.sources = manager.get();
     w.checked = check(*w.parsed.unit, check_options, diags);

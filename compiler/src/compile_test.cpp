@@ -146,11 +146,11 @@ TEST(Compile, ProgramModeChecksStagesAgainstEachOther) {
 }
 
 TEST(Compile, ProgramModeMatchesByLocationAndByBlock) {
-  const char* vert = "#version 330 core\n#include <safegi/prelude.sgl>\nspace world;\n"
+  const char* vert = "#version 410 core\n#include <safegi/prelude.sgl>\nspace world;\n"
                      "layout(location = 2) out float<length> depth;\n"
                      "out Surface { point<world> P; } vs_out;\n"
                      "void main() { depth = 0.0; vs_out.P = point<world>(0.0); gl_Position = vec4(0.0); }\n";
-  const char* frag = "#version 330 core\n#include <safegi/prelude.sgl>\nspace world;\n"
+  const char* frag = "#version 410 core\n#include <safegi/prelude.sgl>\nspace world;\n"
                      "layout(location = 2) in float<time> t;\n"
                      "in Surface { point<world> P; } fs_in;\n"
                      "out vec4 c;\nvoid main() { c = vec4(fs_in.P, t / second); }\n";

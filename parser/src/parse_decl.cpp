@@ -79,16 +79,23 @@ void Parser::expect_semicolon(std::string_view context) {
   throw ParseError{};
 }
 
-Parser::DepthGuard::DepthGuard(Parser& p) : parser(p) {
-  if (++parser.depth_ > parser.options_.max_nesting) {
-    --parser.depth_;
-    if (!parser.depth_reported_) {
-      parser.depth_reported_ = true;
-      parser.fail(parser.peek().range, "nesting too deep: more than " + std::to_string(parser.options_.max_nesting) +
-                                           " levels of statements, parentheses or operators");
+void Parser::enter_level() {
+  if (++depth_ > options_.max_nesting) {
+    --depth_;
+    if (!depth_reported_) {
+      depth_reported_ = true;
+      fail(peek().range, "nesting too deep: more than " + std::to_string(options_.max_nesting) +
+                             " levels of blocks, parentheses, brackets or operators");
     }
     throw ParseError{};
   }
+}
+
+Parser::DepthGuard::DepthGuard(Parser& p) : parser(p) { parser.enter_level(); }
+
+void Parser::NestingLevels::add() {
+  parser.enter_level();
+  ++taken;
 }
 
 // ----------------------------------------------------------------- scopes

@@ -113,6 +113,44 @@ TEST(ParseErrors, DeepNestingIsADiagnosticNotACrash) {
   EXPECT_GE(parse_text(annotation)->diagnostics.error_count(), 1u);
 }
 
+// Each nested construct is one level (DepthGuard): N parentheses are N
+// levels, and the 257th is the one reported, with its caret.
+TEST(ParseErrors, NestingCountsEachLevelOnce) {
+  auto nested = [](int n, const char* open, const char* inner, const char* close) {
+    std::string text;
+    for (int i = 0; i < n; ++i) text += open;
+    text += inner;
+    for (int i = 0; i < n; ++i) text += close;
+    return text;
+  };
+  // The function body is a block: one level of the 256.
+  EXPECT_EQ(parse_text("float x = " + nested(256, "(", "1.0", ")") + ";")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { x = " + nested(255, "(", "1.0", ")") + "; }")->errors(), "");
+  const std::string parens = "void f() { x = " + nested(256, "(", "1.0", ")") + "; }";
+  EXPECT_EQ(parse_text(parens)->errors(),
+            "test.glsl:1:271: error: nesting too deep: more than 256 levels of blocks, parentheses, brackets or operators\n" +
+                parens + "\n" + std::string(270, ' ') + "^\n");
+  EXPECT_EQ(parse_text("void f() " + nested(256, "{", "", "}"))->errors(), "");
+  EXPECT_EQ(parse_text("void f() " + nested(257, "{", "", "}"))->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { x = " + nested(255, "g(", "1.0", ")") + "; }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { x = " + nested(256, "g(", "1.0", ")") + "; }")->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { x = " + nested(255, "a[", "0", "]") + "; }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { x = " + nested(256, "a[", "0", "]") + "; }")->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { x = " + nested(255, "vec4(", "1.0", ")") + "; }")->errors(), "");
+  // `if (a) {` is one level (the block), `if (a) if (b)` one per body.
+  EXPECT_EQ(parse_text("void f() " + nested(255, "{ if (a) ", "x();", "}"))->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { " + nested(255, "if (a) ", "x = 1;", "") + " }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { " + nested(256, "if (a) ", "x = 1;", "") + " }")->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { " + nested(128, "if (a) {", "x();", "}") + " }")->errors(), "");
+  // A chain of prefix operators or assignments nests too: each is one level.
+  EXPECT_EQ(parse_text("void f() { x = " + nested(256, "- ", "a", "") + "; }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { x = " + nested(257, "- ", "a", "") + "; }")->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { " + nested(256, "a = ", "b", "") + "; }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { " + nested(257, "a = ", "b", "") + "; }")->diagnostics.error_count(), 1u);
+  EXPECT_EQ(parse_text("void f() { x = " + nested(256, "a ? b : ", "c", "") + "; }")->errors(), "");
+  EXPECT_EQ(parse_text("void f() { x = " + nested(257, "a ? b : ", "c", "") + "; }")->diagnostics.error_count(), 1u);
+}
+
 TEST(ParseErrors, LongOperatorChainsAreLimitedByHeight) {
   std::string chain = "void f() { x = a";
   for (int i = 0; i < 5000; ++i) chain += " + a";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <initializer_list>
+#include <vector>
 
 #include "parser_impl.hpp"
 
@@ -119,6 +120,18 @@ bool Parser::binary_op_here(BinaryOp& op, int& token_count) const {
   }
 }
 
+bool Parser::prefix_op_here(UnaryOp& op) const {
+  switch (peek().kind) {
+    case T::Plus: op = UnaryOp::Plus; return true;
+    case T::Minus: op = UnaryOp::Minus; return true;
+    case T::Bang: op = UnaryOp::Not; return true;
+    case T::Tilde: op = UnaryOp::BitNot; return true;
+    case T::PlusPlus: op = UnaryOp::PreInc; return true;
+    case T::MinusMinus: op = UnaryOp::PreDec; return true;
+    default: return false;
+  }
+}
+
 bool Parser::assign_op_here(AssignOp& op, int& token_count) const {
   token_count = 1;
   switch (peek().kind) {
@@ -160,32 +173,55 @@ Expr* Parser::parse_expression() {
   return lhs;
 }
 
+// `a = b = c` is right-associative: the chain is read in a loop and built
+// from the right, so it costs no stack. Each assignment after the first is one
+// level of nesting (a lone `x = (((y)))` is as deep as its parentheses).
 Expr* Parser::parse_assignment() {
-  DepthGuard guard(*this);
-  SourceLocation begin = here();
-  Expr* lhs = parse_conditional();
-  AssignOp op;
-  int count;
-  if (!assign_op_here(op, count)) return lhs;
-  auto* assign = make<AssignExpr>(begin);
-  assign->op = op;
-  SourceLocation op_begin = here();
-  for (int i = 0; i < count; ++i) advance();
-  assign->op_range = range_from(op_begin);
-  if (is_integer_operator(op)) require(LanguageFeature::integer_operators, assign->op_range);
-  assign->lhs = lhs;
-  assign->rhs = parse_assignment();
-  assign->height = height_of({assign->lhs, assign->rhs});
-  finish_expr(assign, begin);
-  check_height(assign);
-  return assign;
+  std::vector<AssignExpr*> chain;  // outermost first, each waiting for its right side
+  NestingLevels levels(*this);
+  Expr* rhs = nullptr;
+  for (;;) {
+    SourceLocation begin = here();
+    Expr* lhs = parse_conditional();
+    AssignOp op;
+    int count;
+    if (!assign_op_here(op, count)) {
+      rhs = lhs;
+      break;
+    }
+    if (!chain.empty()) levels.add();
+    auto* assign = make<AssignExpr>(begin);
+    assign->op = op;
+    SourceLocation op_begin = here();
+    for (int i = 0; i < count; ++i) advance();
+    assign->op_range = range_from(op_begin);
+    if (is_integer_operator(op)) require(LanguageFeature::integer_operators, assign->op_range);
+    assign->lhs = lhs;
+    chain.push_back(assign);
+  }
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    AssignExpr* assign = *it;
+    assign->rhs = rhs;
+    assign->height = height_of({assign->lhs, assign->rhs});
+    finish_expr(assign, assign->range.begin);
+    check_height(assign);
+    rhs = assign;
+  }
+  return rhs;
 }
 
+// A conditional inside an arm of another is one level; the outermost is not.
 Expr* Parser::parse_conditional() {
   SourceLocation begin = here();
   Expr* condition = parse_binary(binary_op_precedence(BinaryOp::LogOr));
   if (!at(T::Question)) return condition;
-  DepthGuard guard(*this);
+  NestingLevels levels(*this);
+  if (conditional_depth_ > 0) levels.add();
+  struct Arms {
+    unsigned& depth;
+    explicit Arms(unsigned& d) : depth(++d) {}
+    ~Arms() { --depth; }
+  } arms(conditional_depth_);
   auto* ternary = make<TernaryExpr>(begin);
   advance();
   ternary->condition = condition;
@@ -250,26 +286,31 @@ Expr* Parser::parse_conversion() {
   return e;
 }
 
+// Prefix operators are read in a loop and applied from the inside out: no
+// stack per operator. Each operator after the first is one level of nesting.
 Expr* Parser::parse_unary() {
-  DepthGuard guard(*this);
-  SourceLocation begin = here();
-  UnaryOp op;
-  switch (peek().kind) {
-    case T::Plus: op = UnaryOp::Plus; break;
-    case T::Minus: op = UnaryOp::Minus; break;
-    case T::Bang: op = UnaryOp::Not; break;
-    case T::Tilde: op = UnaryOp::BitNot; break;
-    case T::PlusPlus: op = UnaryOp::PreInc; break;
-    case T::MinusMinus: op = UnaryOp::PreDec; break;
-    default: return parse_postfix();
+  struct Prefix {
+    UnaryOp op;
+    SourceRange range;
+  };
+  std::vector<Prefix> prefixes;
+  NestingLevels levels(*this);
+  for (UnaryOp op; prefix_op_here(op);) {
+    if (!prefixes.empty()) levels.add();
+    prefixes.push_back({op, advance().range});
+    if (op == UnaryOp::BitNot) require(LanguageFeature::integer_operators, prefixes.back().range);
   }
-  auto* unary = make<UnaryExpr>(begin);
-  unary->op = op;
-  unary->op_range = advance().range;
-  if (op == UnaryOp::BitNot) require(LanguageFeature::integer_operators, unary->op_range);
-  unary->operand = parse_unary();
-  unary->height = height_of({unary->operand});
-  return finish_expr(unary, begin);
+  Expr* e = parse_postfix();
+  for (auto it = prefixes.rbegin(); it != prefixes.rend(); ++it) {
+    auto* unary = make<UnaryExpr>(it->range.begin);
+    unary->op = it->op;
+    unary->op_range = it->range;
+    unary->operand = e;
+    unary->height = height_of({e});
+    e = finish_expr(unary, it->range.begin);
+    check_height(e);
+  }
+  return e;
 }
 
 Expr* Parser::parse_postfix() {
@@ -280,7 +321,10 @@ Expr* Parser::parse_postfix() {
       auto* index = make<IndexExpr>(begin);
       advance();
       index->base = e;
-      index->index = parse_expression();
+      {
+        DepthGuard guard(*this);  // the brackets are one level
+        index->index = parse_expression();
+      }
       expect(T::RBracket, "']'", "after index");
       index->height = height_of({index->base, index->index});
       e = finish_expr(index, begin);
@@ -330,6 +374,7 @@ Expr* Parser::parse_postfix() {
 }
 
 std::vector<Expr*> Parser::parse_method_args() {
+  DepthGuard guard(*this);  // the argument list's parentheses are one level
   std::vector<Expr*> args;
   expect(T::LParen, "'('", "");
   if (!at(T::RParen)) {
@@ -342,6 +387,7 @@ std::vector<Expr*> Parser::parse_method_args() {
 }
 
 Expr* Parser::parse_call_args(CallExpr* call) {
+  DepthGuard guard(*this);  // the argument list's parentheses are one level
   SourceLocation begin = call->range.begin;
   expect(T::LParen, "'('", "");
   if (at(T::TypeKw) && peek().text == "void" && peek(1).kind == T::RParen) {

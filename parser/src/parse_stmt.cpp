@@ -73,8 +73,15 @@ CompoundStmt* Parser::parse_compound(bool new_scope) {
   return block;
 }
 
-Stmt* Parser::parse_statement() {
+// The body of if, else, while, do and for. A block is one level of nesting
+// (parse_compound); so is a body without braces (`if (a) if (b) ...`).
+Stmt* Parser::parse_substatement() {
+  if (at(T::LBrace)) return parse_statement();
   DepthGuard guard(*this);
+  return parse_statement();
+}
+
+Stmt* Parser::parse_statement() {
   SourceLocation begin = here();
   switch (peek().kind) {
     case T::LBrace:
@@ -152,11 +159,11 @@ Stmt* Parser::parse_if() {
   stmt->condition = parse_expression();
   expect(T::RParen, "')'", "after if condition");
   push_scope();
-  stmt->then_stmt = parse_statement();
+  stmt->then_stmt = parse_substatement();
   pop_scope();
   if (accept(T::Else)) {
     push_scope();
-    stmt->else_stmt = parse_statement();
+    stmt->else_stmt = parse_substatement();
     pop_scope();
   }
   stmt->range = range_from(begin);
@@ -208,7 +215,7 @@ Stmt* Parser::parse_while() {
   expect(T::LParen, "'('", "after 'while'");
   stmt->condition = parse_condition();
   expect(T::RParen, "')'", "after loop condition");
-  stmt->body = parse_statement();
+  stmt->body = parse_substatement();
   pop_scope();
   stmt->range = range_from(begin);
   return stmt;
@@ -219,7 +226,7 @@ Stmt* Parser::parse_do() {
   auto* stmt = make<DoStmt>(begin);
   advance();
   push_scope();
-  stmt->body = parse_statement();
+  stmt->body = parse_substatement();
   pop_scope();
   expect(T::While, "'while'", "after do-loop body");
   expect(T::LParen, "'('", "after 'while'");
@@ -248,7 +255,7 @@ Stmt* Parser::parse_for() {
   expect_semicolon("after for-loop condition");
   if (!at(T::RParen)) stmt->increment = parse_expression();
   expect(T::RParen, "')'", "to close for-loop header");
-  stmt->body = parse_statement();
+  stmt->body = parse_substatement();
   pop_scope();
   stmt->range = range_from(begin);
   return stmt;

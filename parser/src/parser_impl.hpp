@@ -65,11 +65,27 @@ class Parser {
   bool is_annotated_type_word(const PToken& token) const;  // a SafeGI type word not shadowed
 
   // ------------------------------------------------------------ recursion limit
+  // One level of nesting (ParseOptions::max_nesting): taken exactly where the
+  // parser recurses into a nested construct — a block, an unbraced statement
+  // body, parentheses (grouping, calls, constructors), index brackets, an
+  // initializer-list brace, a struct or block member list, an annotation, an
+  // operand of a prefix operator, the right side of an assignment, the arms of
+  // `?:`. So N nested parentheses are N levels.
   struct DepthGuard {
     Parser& parser;
     explicit DepthGuard(Parser& p);
     ~DepthGuard() { --parser.depth_; }
   };
+  // Several levels taken one by one in a loop (a chain of prefix operators or
+  // assignments), all released at the end of the scope.
+  struct NestingLevels {
+    Parser& parser;
+    unsigned taken = 0;
+    explicit NestingLevels(Parser& p) : parser(p) {}
+    void add();
+    ~NestingLevels() { parser.depth_ -= taken; }
+  };
+  void enter_level();  // one more level, or the "nesting too deep" error
 
   // ---------------------------------------------------- declarations (parse_decl.cpp)
   void parse_external_declaration(std::vector<ast::Decl*>& out);
@@ -126,6 +142,7 @@ class Parser {
 
   // ------------------------------------------------------- statements (parse_stmt.cpp)
   ast::Stmt* parse_statement();
+  ast::Stmt* parse_substatement();  // the body of a control statement
   ast::Stmt* parse_statement_or_recover();
   ast::CompoundStmt* parse_compound(bool new_scope);
   ast::Stmt* parse_simple_statement();
@@ -156,6 +173,7 @@ class Parser {
   ast::Expr* finish_expr(ast::Expr* e, SourceLocation begin);
   bool binary_op_here(ast::BinaryOp& op, int& token_count) const;
   bool assign_op_here(ast::AssignOp& op, int& token_count) const;
+  bool prefix_op_here(ast::UnaryOp& op) const;
   void check_height(ast::Expr* e);
   ast::LiteralExpr* make_literal(const PToken& token);
 
@@ -174,6 +192,7 @@ class Parser {
   ast::AstContext& context_;
   std::vector<std::unordered_map<std::string, NameKind>> scopes_;
   unsigned depth_ = 0;
+  unsigned conditional_depth_ = 0;  // `?:` arms being parsed (parse_conditional)
   bool depth_reported_ = false;
   bool eof_reported_ = false;
 };

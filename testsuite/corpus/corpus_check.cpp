@@ -20,6 +20,7 @@
 // the checker reports there is a false positive and is listed.
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -27,6 +28,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -60,6 +62,43 @@ std::optional<EShLanguage> stage_of(const std::filesystem::path& path) {
 
 int glslang_crashes = 0;
 
+// glslang's verdicts never change for a given text and stage, and taking one
+// costs a process: SAFEGI_CORPUS_GLSLANG_CACHE=FILE keeps them between runs
+// (one line per shader: key, verdict code, first error).
+struct CachedVerdict {
+  int code = 0;  // glslang_verdict's child exit code: 0 accepted, 1 rejected, 2 syntax error, 3 crashed
+  std::string first_error;
+};
+std::map<std::string, CachedVerdict> verdict_cache;
+bool verdict_cache_dirty = false;
+
+std::string cache_key(const std::string& text, EShLanguage stage) {
+  return std::to_string(std::hash<std::string>{}(text)) + "-" + std::to_string(text.size()) + "-" +
+         std::to_string(static_cast<int>(stage));
+}
+
+void load_verdict_cache() {
+  const char* path = std::getenv("SAFEGI_CORPUS_GLSLANG_CACHE");
+  if (!path) return;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string key;
+    CachedVerdict v;
+    if (!(fields >> key >> v.code)) continue;
+    std::getline(fields, v.first_error);
+    if (!v.first_error.empty() && v.first_error[0] == ' ') v.first_error.erase(0, 1);
+    verdict_cache[key] = v;
+  }
+}
+
+void save_verdict_cache() {
+  const char* path = std::getenv("SAFEGI_CORPUS_GLSLANG_CACHE");
+  if (!path || !verdict_cache_dirty) return;
+  std::ofstream out(path);
+  for (const auto& [key, v] : verdict_cache) out << key << " " << v.code << " " << v.first_error << "\n";
+}
+
 enum class Verdict { accepted, rejected, syntax_error };
 // `first_error`, when given, receives glslang's first "ERROR:" line.
 Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string* first_error = nullptr);
@@ -77,7 +116,33 @@ std::string first_error_line(const std::string& log) {
 // Debian's glslang 12 crashes on a few newer test files of its own Test/
 // folder, so each verdict is taken in a child process; a crash counts as
 // "not accepted".
+Verdict verdict_of_code(int code) {
+  return code == 0 ? Verdict::accepted : code == 2 ? Verdict::syntax_error : Verdict::rejected;
+}
+
+Verdict glslang_verdict_uncached(const std::string& text, EShLanguage stage, std::string* first_error);
+
 Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string* first_error) {
+  const std::string key = cache_key(text, stage);
+  if (auto it = verdict_cache.find(key); it != verdict_cache.end()) {
+    if (it->second.code == 3) ++glslang_crashes;
+    if (first_error) *first_error = it->second.first_error;
+    return verdict_of_code(it->second.code);
+  }
+  std::string error;
+  const int crashes = glslang_crashes;
+  Verdict v = glslang_verdict_uncached(text, stage, &error);
+  if (first_error) *first_error = error;
+  CachedVerdict cached{v == Verdict::accepted ? 0 : v == Verdict::syntax_error ? 2 : 1, error};
+  if (glslang_crashes != crashes) cached.code = 3;
+  for (char& c : cached.first_error)
+    if (c == '\n' || c == '\r') c = ' ';
+  verdict_cache[key] = cached;
+  verdict_cache_dirty = true;
+  return v;
+}
+
+Verdict glslang_verdict_uncached(const std::string& text, EShLanguage stage, std::string* first_error) {
   std::fflush(stdout);
   int message_pipe[2] = {-1, -1};
   if (first_error && pipe(message_pipe) != 0) first_error = nullptr;
@@ -112,8 +177,7 @@ Verdict glslang_verdict(const std::string& text, EShLanguage stage, std::string*
     return Verdict::rejected;
   }
   if (!WIFEXITED(status)) return Verdict::rejected;
-  int code = WEXITSTATUS(status);
-  return code == 0 ? Verdict::accepted : code == 2 ? Verdict::syntax_error : Verdict::rejected;
+  return verdict_of_code(WEXITSTATUS(status));
 }
 
 safegi::Stage checker_stage(EShLanguage stage) {
@@ -129,8 +193,9 @@ safegi::Stage checker_stage(EShLanguage stage) {
 }
 
 struct FrontEnd {
-  bool ok = false;
+  bool ok = false;          // preprocess + parse succeeded (the syntax verdict)
   bool checked = false;     // the type checker reported no error (only when ok)
+  bool valid() const { return ok && checked; }  // the validating front end's verdict
   std::string first_check_error;
   std::string first_error;  // rendered, one line
   std::string dump;
@@ -139,6 +204,18 @@ struct FrontEnd {
   bool es = false;
 };
 
+std::string first_error_of(const safegi::DiagnosticEngine& diagnostics, const safegi::SourceManager& sources) {
+  for (const safegi::Diagnostic& d : diagnostics.diagnostics()) {
+    if (d.severity != safegi::Severity::error) continue;
+    std::string text = safegi::render_text(d, sources);
+    return text.substr(0, text.find('\n'));
+  }
+  return "";
+}
+
+// As safeglslc runs it (compiler/src/compile.cpp): the #version and
+// extensions reach the parser's and the checker's gates unless the
+// preprocessor reported an error (the level is a guess then).
 FrontEnd run_front_end(const std::string& name, const std::string& text, const std::string& include_dir,
                        EShLanguage stage) {
   FrontEnd result;
@@ -148,6 +225,7 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
   safegi::PreprocessorOptions options;
   if (!include_dir.empty()) options.include_paths.push_back(include_dir);
   safegi::PreprocessedUnit unit = safegi::preprocess(sources, file, options, diagnostics);
+  const bool preprocessed = !diagnostics.has_errors();
   safegi::ParseOptions parse_options;
   parse_options.language = unit.language;
   safegi::ParseResult parsed = safegi::parse(unit.tokens, diagnostics, parse_options);
@@ -155,24 +233,17 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
   result.es = unit.es;
   result.ok = !diagnostics.has_errors();
   if (!result.ok) {
-    for (const safegi::Diagnostic& d : diagnostics.diagnostics()) {
-      if (d.severity != safegi::Severity::error) continue;
-      std::string text = safegi::render_text(d, sources);
-      result.first_error = text.substr(0, text.find('\n'));
-      break;
-    }
+    result.first_error = first_error_of(diagnostics, sources);
     return result;
   }
   result.dump = safegi::dump_ast(*parsed.unit);
   safegi::DiagnosticEngine check_diagnostics;
-  safegi::check(*parsed.unit, safegi::CheckOptions{.stage = checker_stage(stage)}, check_diagnostics);
+  safegi::CheckOptions check_options{.stage = checker_stage(stage)};
+  if (preprocessed) check_options.language = unit.language;
+  check_options.version_range = unit.version_range;
+  safegi::check(*parsed.unit, check_options, check_diagnostics);
   result.checked = !check_diagnostics.has_errors();
-  for (const safegi::Diagnostic& d : check_diagnostics.diagnostics()) {
-    if (d.severity != safegi::Severity::error) continue;
-    std::string rendered = safegi::render_text(d, sources);
-    result.first_check_error = rendered.substr(0, rendered.find('\n'));
-    break;
-  }
+  result.first_check_error = first_error_of(check_diagnostics, sources);
   safegi::PrintOptions print;
   if (unit.version_given) {
     print.preamble = "#version " + std::to_string(unit.version);
@@ -184,6 +255,50 @@ FrontEnd run_front_end(const std::string& name, const std::string& text, const s
   }
   result.printed = safegi::print_glsl(*parsed.unit, print);
   return result;
+}
+
+// SAFEGI_CORPUS_VERDICTS=FILE: one line per shader, "accept|reject CORPUS PATH"
+// (CORPUS: glslang, or piglit-pass / piglit-fail by expect_result), to diff
+// two runs for new false positives.
+std::ofstream* verdict_list() {
+  static std::ofstream* out = [] {
+    const char* path = std::getenv("SAFEGI_CORPUS_VERDICTS");
+    return path ? new std::ofstream(path, std::ios::app) : nullptr;
+  }();
+  return out;
+}
+
+void list_verdict(bool accepted, const char* corpus, const std::filesystem::path& path) {
+  if (std::ofstream* out = verdict_list()) *out << (accepted ? "accept " : "reject ") << corpus << " " << path.string() << std::endl;
+}
+
+// glslang's message without its location and the names it quotes, so that
+// messages of one kind group together: "'=' :  l-value required "buf"" -> "'_' : l-value required _".
+std::string error_class(const std::string& error) {
+  std::string text = error;
+  if (text.rfind("ERROR: ", 0) == 0) text = text.substr(7);
+  // "0:12: " (string:line:)
+  std::size_t colon = text.find(": ");
+  if (colon != std::string::npos && colon < 12 && std::isdigit(static_cast<unsigned char>(text[0]))) text = text.substr(colon + 2);
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\'' || c == '"') {
+      std::size_t end = text.find(c, i + 1);
+      if (end == std::string::npos) break;
+      out += c;
+      out += '_';
+      out += c;
+      i = end;
+    } else if (std::isdigit(static_cast<unsigned char>(c))) {
+      if (out.empty() || out.back() != '#') out += '#';
+    } else if (c == ' ' && !out.empty() && out.back() == ' ') {
+      continue;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 std::string read(const std::filesystem::path& path) {
@@ -221,8 +336,9 @@ struct Tally {
   }
 };
 
-// Parse, print, re-parse one shader glslang accepts; tallies and notes failures.
-void check_round_trip(const std::filesystem::path& path, const std::string& text, EShLanguage stage, Tally& all,
+// Parse, print, re-parse one shader glslang accepts; tallies and notes
+// failures. Returns the validating front end's verdict on it.
+bool check_round_trip(const std::filesystem::path& path, const std::string& text, EShLanguage stage, Tally& all,
                       Tally& recent, std::vector<std::string>& failures, std::vector<std::string>& false_positives) {
   FrontEnd first = run_front_end(path.string(), text, path.parent_path().string(), stage);
   bool is_modern = first.ok ? modern(first) : true;
@@ -230,7 +346,7 @@ void check_round_trip(const std::filesystem::path& path, const std::string& text
   recent.total += is_modern;
   if (!first.ok) {
     failures.push_back(path.string() + ": parse: " + first.first_error);
-    return;
+    return false;
   }
   if (!first.checked) false_positives.push_back(path.string() + ": " + first.first_check_error);
   FrontEnd second = run_front_end(path.string() + ".printed", first.printed, path.parent_path().string(), stage);
@@ -249,6 +365,7 @@ void check_round_trip(const std::filesystem::path& path, const std::string& text
   } else if (!accepted) {
     failures.push_back(path.string() + ": printed GLSL rejected by glslang");
   }
+  return first.valid();
 }
 
 void print_round_trips(const Tally& all, const Tally& recent, const std::vector<std::string>& failures,
@@ -275,7 +392,7 @@ int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
       ++rejected_by_glslang;
       continue;
     }
-    check_round_trip(path, text, *stage, all, recent, failures, false_positives);
+    list_verdict(check_round_trip(path, text, *stage, all, recent, failures, false_positives), "glslang", path);
   }
   std::printf("glslang corpus: %d shaders considered, %d rejected by glslang (not counted; %d of them crashed it), %d accepted\n",
               considered, rejected_by_glslang, glslang_crashes, all.total);
@@ -283,13 +400,26 @@ int run_glslang_mode(const std::vector<std::filesystem::path>& files) {
   return 0;
 }
 
+struct PiglitTally {
+  int agree = 0, pass_pass = 0, pass_fail = 0, fail_fail = 0, fail_pass = 0, syntax_fail_rejected = 0;
+  void add(bool accepted, bool expect_pass, bool glslang_syntax_error) {
+    agree += accepted == expect_pass;
+    if (expect_pass) {
+      accepted ? ++pass_pass : ++pass_fail;
+    } else {
+      accepted ? ++fail_pass : ++fail_fail;
+      syntax_fail_rejected += glslang_syntax_error && !accepted;
+    }
+  }
+};
+
 int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
-  int total = 0, agree = 0, glslang_agree = 0;
-  int pass_pass = 0, pass_fail = 0, fail_fail = 0, fail_pass = 0;
-  int syntax_fail = 0, syntax_fail_rejected = 0;  // expected to fail, and glslang says "syntax error"
+  int total = 0, glslang_agree = 0, syntax_fail = 0;
+  PiglitTally validated, syntax;  // preprocess + parse + check, and preprocess + parse only
   std::vector<std::string> syntax_missed;
   std::vector<std::string> ours_rejects_valid;
-  std::vector<std::string> accepted_failures;  // --verbose: expected to fail, accepted by the front end
+  // Expected to fail and accepted, by the class of glslang's first error: count and the shaders.
+  std::map<std::string, std::vector<std::string>> accepted_failures;
   bool verbose = std::getenv("SAFEGI_CORPUS_VERBOSE") != nullptr;
   Tally all, recent;  // round trips of the shaders glslang accepts, whatever piglit expects
   std::vector<std::string> round_trip_failures, false_positives, rejected_as_piglit_expects;
@@ -305,9 +435,11 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
     FrontEnd ours = run_front_end(path.string(), text, path.parent_path().string(), *stage);
     std::string glslang_error;
     Verdict verdict = glslang_verdict(text, *stage, &glslang_error);
-    if (verbose && !expect_pass && ours.ok) {
-      accepted_failures.push_back(path.string() + " | glslang: " + (glslang_error.empty() ? "accepts" : glslang_error));
+    if (!expect_pass && ours.valid()) {
+      accepted_failures[glslang_error.empty() ? "(glslang accepts it too)" : error_class(glslang_error)].push_back(
+          path.string() + (glslang_error.empty() ? "" : " | " + glslang_error));
     }
+    list_verdict(ours.valid(), expect_pass ? "piglit-pass" : "piglit-fail", path);
     bool glslang_ok = verdict == Verdict::accepted;
     if (glslang_ok) {
       const std::size_t before = false_positives.size();
@@ -319,38 +451,41 @@ int run_piglit_mode(const std::vector<std::filesystem::path>& files) {
         false_positives.pop_back();
       }
     }
-    agree += ours.ok == expect_pass;
     glslang_agree += glslang_ok == expect_pass;
-    if (expect_pass) {
-      ours.ok ? ++pass_pass : ++pass_fail;
-      if (!ours.ok) ours_rejects_valid.push_back(path.string() + ": " + ours.first_error);
-    } else {
-      ours.ok ? ++fail_pass : ++fail_fail;
-      if (verdict == Verdict::syntax_error) {
-        ++syntax_fail;
-        syntax_fail_rejected += !ours.ok;
-        if (ours.ok) syntax_missed.push_back(path.string());
-      }
-    }
+    const bool glslang_syntax = !expect_pass && verdict == Verdict::syntax_error;
+    syntax_fail += glslang_syntax;
+    validated.add(ours.valid(), expect_pass, glslang_syntax);
+    syntax.add(ours.ok, expect_pass, glslang_syntax);
+    if (expect_pass && !ours.valid())
+      ours_rejects_valid.push_back(path.string() + ": " + (ours.ok ? ours.first_check_error : ours.first_error));
+    if (glslang_syntax && ours.ok) syntax_missed.push_back(path.string());
   }
   auto pct = [&](int n) { return total ? 100.0 * n / total : 0.0; };
   std::printf("piglit glslparsertest: %d shaders with expect_result\n", total);
-  std::printf("  syntax verdict agrees with expect_result: %d (%.2f%%)   [glslang, a full compiler: %d (%.2f%%)]\n",
-              agree, pct(agree), glslang_agree, pct(glslang_agree));
-  std::printf("  expect pass: we accept %d, we reject %d\n", pass_pass, pass_fail);
-  std::printf("  expect fail: we reject %d, we accept %d (errors beyond syntax: types, versions, semantics)\n",
-              fail_fail, fail_pass);
-  std::printf("  expect fail with a glslang *syntax error*: %d, of which we reject %d (%.2f%%)\n", syntax_fail,
-              syntax_fail_rejected, syntax_fail ? 100.0 * syntax_fail_rejected / syntax_fail : 0.0);
-  std::printf("expected to fail with a glslang syntax error but accepted by the front end (%zu):\n",
-              syntax_missed.size());
+  std::printf("  validating front end (preprocess + parse + check) agrees with expect_result: %d (%.2f%%)   "
+              "[glslang, a full compiler: %d (%.2f%%)]\n",
+              validated.agree, pct(validated.agree), glslang_agree, pct(glslang_agree));
+  std::printf("    expect pass: we accept %d, we reject %d\n", validated.pass_pass, validated.pass_fail);
+  std::printf("    expect fail: we reject %d, we accept %d\n", validated.fail_fail, validated.fail_pass);
+  std::printf("  syntax only (preprocess + parse) agrees with expect_result: %d (%.2f%%)\n", syntax.agree, pct(syntax.agree));
+  std::printf("    expect pass: we accept %d, we reject %d\n", syntax.pass_pass, syntax.pass_fail);
+  std::printf("    expect fail: we reject %d, we accept %d\n", syntax.fail_fail, syntax.fail_pass);
+  std::printf("  expect fail with a glslang *syntax error*: %d, of which the parser rejects %d (%.2f%%)\n", syntax_fail,
+              syntax.syntax_fail_rejected, syntax_fail ? 100.0 * syntax.syntax_fail_rejected / syntax_fail : 0.0);
+  std::printf("expected to fail with a glslang syntax error but accepted by the parser (%zu):\n", syntax_missed.size());
   for (const std::string& f : syntax_missed) std::printf("  %s\n", f.c_str());
-  std::printf("expected to pass but rejected by the front end (%zu):\n", ours_rejects_valid.size());
+  std::printf("expected to pass but rejected by the validating front end (%zu):\n", ours_rejects_valid.size());
   for (const std::string& f : ours_rejects_valid) std::printf("  %s\n", f.c_str());
-  if (verbose) {
-    std::printf("expected to fail but accepted by the front end, with glslang's first error (%zu):\n",
-                accepted_failures.size());
-    for (const std::string& f : accepted_failures) std::printf("  %s\n", f.c_str());
+  // Largest classes first.
+  std::vector<std::pair<std::string, const std::vector<std::string>*>> classes;
+  for (const auto& [name, list] : accepted_failures) classes.emplace_back(name, &list);
+  std::stable_sort(classes.begin(), classes.end(),
+                   [](const auto& a, const auto& b) { return a.second->size() > b.second->size(); });
+  std::printf("expected to fail but accepted by the validating front end (%d), by glslang's first error%s:\n",
+              validated.fail_pass, verbose ? "" : " (SAFEGI_CORPUS_VERBOSE=1 lists every shader)");
+  for (const auto& [name, list] : classes) {
+    std::printf("  %4zu  %s\n", list->size(), name.c_str());
+    for (std::size_t i = 0; i < list->size() && (verbose || i < 1); ++i) std::printf("          %s\n", (*list)[i].c_str());
   }
   std::printf("piglit shaders glslang accepts, parsed and round-tripped:\n");
   print_round_trips(all, recent, round_trip_failures, false_positives);
@@ -432,8 +567,10 @@ int main(int argc, char** argv) {
   }
   std::sort(files.begin(), files.end());
   glslang::InitializeProcess();
+  load_verdict_cache();
   int rc = mode == "glslang" ? run_glslang_mode(files) : mode == "piglit" ? run_piglit_mode(files)
                                                                           : run_robustness_mode(files);
+  save_verdict_cache();
   glslang::FinalizeProcess();
   return rc;
 }

@@ -248,6 +248,7 @@ std::optional<Dimension> Checker::resolve_unit(const ast::DimExpr* e) {
 std::optional<long long> Checker::array_size(const ast::ArrayDim& dim) {
   if (!dim.size) return std::nullopt;
   Value v = expr(dim.size);
+  validate_array_size(dim, v);
   if (v.constant) {
     if (*v.constant <= 0) {
       report(Diagnostic::error(dim.size->range, "array size must be greater than zero").with_code("E-ARRAY-SIZE"));
@@ -390,10 +391,17 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     case ast::TypeSpecifier::Form::Named: {
       auto it = structs_.find(spec->name);
       // gl_* struct types are the compatibility profile's state (gl_LightSourceParameters, …): left to the driver.
-      if (it == structs_.end() && spec->name.rfind("gl_", 0) == 0) return Type::error();
+      if (it == structs_.end() && spec->name.rfind("gl_", 0) == 0) {
+        builtin_available(spec->name, spec->name_range, false);
+        return Type::error();
+      }
       if (it == structs_.end() && (extension_name(spec->name) || glsl_builtin_type(spec->name))) {
         if (std::optional<Type> opaque = glsl_builtin_type(spec->name)) return *opaque;  // rayQueryEXT, accelerationStructureEXT
         return Type::error();
+      }
+      if (std::optional<Type> subroutine = it == structs_.end() ? subroutine_type(spec->name) : std::nullopt) {
+        t = *subroutine;  // a subroutine uniform (subroutines.cpp)
+        break;
       }
       if (it == structs_.end()) {
         report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));

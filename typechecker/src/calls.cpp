@@ -85,11 +85,14 @@ Value Checker::call(const ast::CallExpr& e) {
     args.push_back(expr(a));
     bad = bad || args.back().type.is_error();
   }
+  if (std::optional<Value> v = subroutine_call(e, args)) return *v;
+  validate_call_placement(e);
   if (auto it = functions_.find(e.callee); it != functions_.end()) {
     if (bad) return error_value(e.range);
     return user_call(e, it->second, args);
   }
   if (const std::vector<Signature>* sigs = builtins_->find(e.callee)) {
+    if (!builtin_available(e.callee, e.callee_range, true)) return error_value(e.range);
     if (bad) return error_value(e.range);
     return builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
   }

@@ -13,6 +13,7 @@
 #include "builtins.hpp"
 #include "expansions.hpp"
 #include "safegi/typechecker/checker.hpp"
+#include "validation.hpp"
 
 namespace safegi::detail {
 
@@ -49,6 +50,7 @@ struct Variable {
   std::optional<long long> constant;
   Origin origin;
   std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
+  bool constant_expression = false;  // const with a constant initializer (GLSL 4.60 §4.3.3)
 };
 
 struct Function {
@@ -150,6 +152,57 @@ class Checker {
   std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                           const Value& rhs, SourceRange range);
 
+  // validate_*.cpp: what GL drivers reject beyond the type rules (docs/typechecker.md, "Validation").
+  // Version-dependent rules run only when CheckOptions::language is set.
+  const LanguageLevel* language() const { return options_.language ? &*options_.language : nullptr; }
+  bool allows(const VersionGate& gate) const;  // true when the language is unknown
+  // The compatibility profile's built-ins exist: desktop GLSL before 1.40, `#version 150 compatibility`, or
+  // GL_ARB_compatibility (Mesa: 1.40 is core unless the extension is enabled). True when the language is unknown.
+  bool compatibility_profile() const;
+  void reject(SourceRange where, std::string message, const char* code, std::string hint = {});
+  // The part of `e` that makes it not a constant expression (a variable, a user call, an assignment), or nullptr.
+  const ast::Expr* non_constant_part(const ast::Expr* e) const;
+  void validate_array_size(const ast::ArrayDim& dim, const Value& size);
+  void validate_const_initializer(const ast::Declarator& decl, bool global);
+  void validate_global_initializer(const ast::Declarator& decl);  // GLSL ES: constant
+  // The built-in `name` exists at this version, stage and profile (builtin_availability.def); else one error at `where`.
+  bool builtin_available(const std::string& name, SourceRange where, bool function);
+  void validate_variable(const ast::VariableDecl& d, const Type& base, bool global);
+  void validate_interface(const ast::VariableDecl& d, const Type& base);  // a global input or output
+  void validate_struct_members(const ast::StructDecl& s);
+  void validate_builtin_redeclaration(const ast::VariableDecl& d, const ast::Declarator& decl, const Type& type);
+  void validate_block(const ast::InterfaceBlockDecl& d);
+  void validate_qualifier_decl(const ast::QualifierDecl& d, bool global);
+  void validate_function(const ast::FunctionDecl& d, const Function& f);
+  void validate_precision(const ast::PrecisionDecl& d);
+  void validate_stage(const ast::TranslationUnit& unit);  // compute shaders before 4.30
+  // Where barrier() (tessellation control) and the fragment shader interlock may be called.
+  void validate_call_placement(const ast::CallExpr& e);
+  // Counts the control flow around statements (RAII, in statement()).
+  struct FlowScope {
+    Checker& checker;
+    bool counted;
+    FlowScope(Checker& c, const ast::Stmt* s);
+    ~FlowScope() { checker.validation_.flow_depth -= counted; }
+  };
+  void validate_switch(const ast::SwitchStmt& s, const Type& selector);  // pushes switches_
+  // validate_lvalues.cpp: an assignable `target` that GLSL still forbids writing; false after reporting.
+  bool validate_assignment(const ast::Expr* target, const Value& value);
+  // validate_layouts.cpp: layout qualifiers by declaration, stage and version; values; block offsets; locations.
+  std::optional<long long> layout_value(const ast::LayoutId& id);  // evaluated and checked once
+  void validate_layouts(const ast::TypeQualifiers& q, const LayoutSite& site);
+  void validate_block_layout(const ast::InterfaceBlockDecl& d);   // std140/std430 offsets and alignments
+  void validate_global_layouts(const ast::VariableDecl& d);       // after its declarators are typed
+  void validate_block_layouts(const ast::InterfaceBlockDecl& d);  // the block, its members, their offsets
+  void validate_default_layouts(const ast::QualifierDecl& d);     // `layout(...) in;`
+  void validate_case(const ast::CaseLabel& label, const Value& value);
+
+  // subroutines.cpp
+  bool subroutine_declaration(const ast::FunctionDecl& d, const Function& f);  // true: `d` declares a subroutine type
+  std::optional<Type> subroutine_type(const std::string& name) const;
+  // A call through a subroutine uniform (`f(x)`, `f[i](x)`), or nothing when `e` calls no subroutine uniform.
+  std::optional<Value> subroutine_call(const ast::CallExpr& e, std::vector<Value>& args);
+
   // mismatch.cpp
   std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
   // Two dimensions, at least one with units: the conversion when they measure the same, else the physics hint.
@@ -194,6 +247,7 @@ class Checker {
   std::vector<std::unordered_map<std::string, Variable>> scopes_;
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
+  std::unordered_map<std::string, Function> subroutine_types_;  // `subroutine void T(...);`
   // Template parameters of the function being declared (resolve_type maps their names to generic slots).
   const std::vector<std::string>* template_dims_ = nullptr;
   const std::vector<std::string>* template_spaces_ = nullptr;
@@ -201,6 +255,12 @@ class Checker {
   int loop_depth_ = 0;
   ExpansionFinder expansions_;
   std::vector<SourceRange> written_statements_;  // enclosing statements not produced by a macro, innermost last
+  struct SwitchContext {
+    Type selector;
+    std::vector<std::pair<long long, SourceRange>> cases;  // values seen so far
+  };
+  std::vector<SwitchContext> switches_;  // the switch statements being checked, innermost last
+  ValidationState validation_;
 };
 
 }  // namespace safegi::detail

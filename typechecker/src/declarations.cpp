@@ -4,6 +4,7 @@
 
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
+#include "validation.hpp"
 
 namespace safegi::detail {
 namespace {
@@ -20,25 +21,6 @@ constexpr BuiltinVariableEntry kBuiltinVariables[] = {
 #include "builtin_variables.def"
 #undef BUILTIN_VARIABLE
 };
-
-char stage_letter(Stage s) {
-  switch (s) {
-    case Stage::vertex: return 'v';
-    case Stage::tess_control: return 'c';
-    case Stage::tess_evaluation: return 'e';
-    case Stage::geometry: return 'g';
-    case Stage::fragment: return 'f';
-    case Stage::compute: return 'x';
-    case Stage::unknown: break;
-  }
-  return '*';
-}
-
-const char* stage_words(char letter) {
-  for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
-    if (stage_letter(s) == letter) return stage_name(s);
-  return stage_name(Stage::unknown);
-}
 
 Type parse_simple_type(std::string_view text) {
   bool array = false;
@@ -67,8 +49,7 @@ std::optional<int> layout_int(const ast::TypeQualifiers& q, const char* id, Chec
   for (const ast::Qualifier& qual : q.list)
     for (const ast::LayoutId& l : qual.layout_ids)
       if (l.name == id && l.value) {
-        Value v = c.expr(l.value);
-        if (v.constant) return static_cast<int>(*v.constant);
+        if (std::optional<long long> v = c.layout_value(l)) return static_cast<int>(*v);
       }
   return std::nullopt;
 }
@@ -76,6 +57,12 @@ std::optional<int> layout_int(const ast::TypeQualifiers& q, const char* id, Chec
 bool is_storage(const ast::TypeQualifiers& q, const char* word) { return q.has(word); }
 
 }  // namespace
+
+bool known_builtin_variable(std::string_view name) {
+  for (const BuiltinVariableEntry& e : kBuiltinVariables)
+    if (e.name == name) return true;
+  return name == "gl_in" || name == "gl_out" || name == "gl_PerVertex";
+}
 
 Checker::Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result)
     : options_(options), diagnostics_(diagnostics), result_(result) {
@@ -90,6 +77,7 @@ void Checker::run(const ast::TranslationUnit& unit) {
     else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
   }
   builtins_ = BuiltinLibrary::for_registry(result_.registry);
+  validate_stage(unit);
   push_scope();
   declare_builtin_variables();
   push_scope();  // the program's globals may shadow built-ins (redeclaring gl_* blocks)
@@ -118,6 +106,12 @@ void Checker::declare_builtin_variables() {
                         {"gl_PointSize", Type::scalar_of(Scalar::float_)},
                         {"gl_ClipDistance", parse_simple_type("float[]")},
                         {"gl_CullDistance", parse_simple_type("float[]")}};
+  if (compatibility_profile()) {  // GLSL 1.50 compatibility §7.1: the fixed-function varyings
+    for (const char* name : {"gl_FrontColor", "gl_BackColor", "gl_FrontSecondaryColor", "gl_BackSecondaryColor", "gl_ClipVertex"})
+      per_vertex->fields.push_back({name, Type::vector_of(Scalar::float_, 4)});
+    per_vertex->fields.push_back({"gl_TexCoord", parse_simple_type("vec4[]")});
+    per_vertex->fields.push_back({"gl_FogFragCoord", Type::scalar_of(Scalar::float_)});
+  }
   Type array;
   array.shape = Shape::structure;
   array.structure = per_vertex.get();
@@ -146,10 +140,7 @@ std::string Checker::stages_owning_builtin(const std::string& name) const {
     if (e.name == name && !owned_by(e.stages)) return {};
   // The gl_PerVertex arrays (declare_builtin_variables) are not in the table.
   if ((name == "gl_in" && !owned_by("ceg")) || (name == "gl_out" && !owned_by("c"))) return {};
-  std::string words;
-  for (std::size_t i = 0; i < owners.size(); ++i)
-    words += std::string(i == 0 ? "" : i + 1 == owners.size() ? " and " : ", ") + stage_words(owners[i]);
-  return words;
+  return stage_list(owners);
 }
 
 const Variable* Checker::lookup(const std::string& name) const {
@@ -212,7 +203,10 @@ void Checker::global_decl(const ast::Decl* d) {
     case ast::NodeKind::VariableDecl: variable_decl(*static_cast<const ast::VariableDecl*>(d), true); break;
     case ast::NodeKind::InterfaceBlockDecl: block_decl(*static_cast<const ast::InterfaceBlockDecl*>(d)); break;
     case ast::NodeKind::FunctionDecl: function_decl(*static_cast<const ast::FunctionDecl*>(d)); break;
+    case ast::NodeKind::QualifierDecl: validate_qualifier_decl(*static_cast<const ast::QualifierDecl*>(d), true); break;
+    case ast::NodeKind::PrecisionDecl: validate_precision(*static_cast<const ast::PrecisionDecl*>(d)); break;
     case ast::NodeKind::StructDecl: {
+      validate_struct_members(*static_cast<const ast::StructDecl*>(d));
       ast::TypeSpecifier spec;
       spec.form = ast::TypeSpecifier::Form::Struct;
       spec.struct_decl = const_cast<ast::StructDecl*>(static_cast<const ast::StructDecl*>(d));
@@ -226,8 +220,10 @@ void Checker::global_decl(const ast::Decl* d) {
 void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
   const bool is_const = d.qualifiers.has("const");
   const bool is_input = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("attribute") ||
-                        (d.qualifiers.has("varying") && options_.stage != Stage::vertex);
+                        (d.qualifiers.has("varying") && options_.stage != Stage::vertex && !d.qualifiers.has("out"));
   const Type base = resolve_type(d.type);  // once: an inline struct is declared once
+  validate_variable(d, base, global);
+  if (global) validate_interface(d, base);
   for (const ast::Declarator& decl : d.declarators) {
     Type declared = base.is_error() ? base : with_array_dims(base, decl.array_dims);
     Variable v;
@@ -268,17 +264,22 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     } else if (is_const && !global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
     }
+    if (is_const && decl.initializer) validate_const_initializer(decl, global);
+    else if (global && decl.initializer) validate_global_initializer(decl);
+    v.constant_expression = is_const && decl.initializer && !non_constant_part(decl.initializer);
     v.type = poisoned ? Type::error() : declared;
     result_.declarators[&decl] = declared;
+    if (global && decl.name.rfind("gl_", 0) == 0) validate_builtin_redeclaration(d, decl, declared);
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
     declare_variable(std::move(v));
   }
+  if (global) validate_global_layouts(d);
 }
 
 void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
   auto info = std::make_unique<StructInfo>();
   info->name = d.block_name;
-  const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in");
+  const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("readonly");
   for (const ast::VariableDecl* member : d.members) {
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
@@ -287,7 +288,8 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
       const std::string full = d.instance_name.empty() ? decl.name : d.instance_name + "." + decl.name;
       record_interface(d.qualifiers, full, d.block_name, t, decl.name_range, member);
       if (d.instance_name.empty()) {
-        Variable v{decl.name, t, decl.name_range, read_only, false, std::nullopt, {decl.name_range, "'" + decl.name + "' declared here"}};
+        Variable v{decl.name, t, decl.name_range, read_only || member->qualifiers.has("readonly"), false, std::nullopt,
+                   {decl.name_range, "'" + decl.name + "' declared here"}};
         declare_variable(std::move(v));
       }
     }
@@ -302,6 +304,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
     declare_variable(std::move(v));
   }
   result_.structs.push_back(std::move(info));
+  validate_block(d);
 }
 
 void Checker::function_decl(const ast::FunctionDecl& d) {
@@ -321,6 +324,12 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     f.inout_params.push_back(p->qualifiers.has("inout"));
   }
   f.defined = d.body != nullptr;
+  validate_function(d, f);
+  if (subroutine_declaration(d, f)) {
+    template_dims_ = nullptr;
+    template_spaces_ = nullptr;
+    return;  // a subroutine type, not a function
+  }
 
   // Overloads are told apart by GLSL parameter types; a second definition is an error.
   std::vector<Function>& overloads = functions_[d.name];
@@ -379,6 +388,7 @@ void Checker::statement(const ast::Stmt* s) {
       if (stack) stack->pop_back();
     }
   } pop{written ? &written_statements_ : nullptr};
+  const FlowScope flow(*this, s);
   switch (s->kind) {
     case ast::NodeKind::CompoundStmt:
       push_scope();
@@ -390,6 +400,8 @@ void Checker::statement(const ast::Stmt* s) {
       if (const auto* v = ast::dyn_cast<ast::VariableDecl>(d)) variable_decl(*v, false);
       else if (const auto* f = ast::dyn_cast<ast::FunctionDecl>(d)) function_decl(*f);
       else if (const auto* st = ast::dyn_cast<ast::StructDecl>(d)) global_decl(st);
+      else if (const auto* qd = ast::dyn_cast<ast::QualifierDecl>(d)) validate_qualifier_decl(*qd, false);
+      else if (const auto* pd = ast::dyn_cast<ast::PrecisionDecl>(d)) validate_precision(*pd);
       break;
     }
     case ast::NodeKind::ExprStmt:
@@ -411,13 +423,15 @@ void Checker::statement(const ast::Stmt* s) {
       Value sel = expr(sw->selector);
       if (!sel.type.is_error() && !(sel.type.shape == Shape::scalar && sel.type.is_integer() && !sel.type.is_array()))
         report(Diagnostic::error(sel.range, "switch selector must be int or uint, found " + name_of(sel.type)).with_code("E-SWITCH-TYPE"));
+      validate_switch(*sw, sel.type);  // opens the switch its case labels are checked against
       ++loop_depth_;  // `break` is valid inside a switch
       statement(sw->body);
       --loop_depth_;
+      switches_.pop_back();
       break;
     }
     case ast::NodeKind::CaseLabel:
-      if (const ast::Expr* e = static_cast<const ast::CaseLabel*>(s)->value) expr(e);
+      if (const ast::Expr* e = static_cast<const ast::CaseLabel*>(s)->value) validate_case(*static_cast<const ast::CaseLabel*>(s), expr(e));
       break;
     case ast::NodeKind::WhileStmt: {
       const auto* w = static_cast<const ast::WhileStmt*>(s);

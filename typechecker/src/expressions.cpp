@@ -37,6 +37,7 @@ Value Checker::expr(const ast::Expr* e) {
 
 Value Checker::identifier(const ast::IdentifierExpr& e) {
   if (const Variable* var = lookup(e.name)) {
+    if (var->builtin && !builtin_available(e.name, e.range, false)) return error_value(e.range);
     Value v;
     v.type = var->type;
     v.range = e.range;
@@ -65,6 +66,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
                  .with_hint("'" + e.name + "' is a built-in of " + owners + " shaders"));
       return error_value(e.range);
     }
+    if (!builtin_available(e.name, e.range, false)) return error_value(e.range);
     // Built-in names this checker does not model (gl_Max* constants, compatibility
     // state, extensions) are left to the driver rather than reported wrongly.
     if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {
@@ -72,6 +74,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
       v.type = Type::scalar_of(Scalar::int_);
       v.range = e.range;
       v.read_only = true;
+      v.constant = builtin_constant(e.name);
       return v;
     }
     return error_value(e.range);
@@ -181,6 +184,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
   Value lhs = expr(e.lhs);
   Value rhs = expr(e.rhs);
   if (lhs.type.is_error() || rhs.type.is_error()) return error_value(e.range);
+  if (lhs.lvalue && !lhs.read_only && !validate_assignment(e.lhs, lhs)) return error_value(e.range);
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
     if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";

@@ -42,6 +42,7 @@ struct LanguageLevel {
   int version = 460;
   bool es = false;
   std::vector<std::string> extensions;
+  bool compatibility = false;  // `#version 150 compatibility` (and later): the compatibility profile's built-ins
 
   bool extension_enabled(std::string_view name) const;
   bool allows(LanguageFeature feature) const;

@@ -1,5 +1,5 @@
 // WITH: typechecker/inputs/stage_located.vert
-#version 330 core
+#version 410 core
 #include <safegi/prelude.sgl>
 space world;
 space object;

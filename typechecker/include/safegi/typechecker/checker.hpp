@@ -12,12 +12,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include <safegi/diagnostics/diagnostic.hpp>
 #include <safegi/diagnostics/source_manager.hpp>
+#include <safegi/lexer/extensions.hpp>
 #include <safegi/lexer/token.hpp>
 #include <safegi/parser/ast.hpp>
 
@@ -34,6 +36,12 @@ const char* stage_name(Stage stage);
 struct CheckOptions {
   Stage stage = Stage::unknown;  // selects the built-in variables (gl_Position, gl_FragCoord, …)
   bool strict = false;           // warn on unannotated interface variables and on `?` flowing into annotations
+  // The shader's #version and extensions (PreprocessedUnit::language): the
+  // validating rules that depend on them (stage gates, built-ins of later
+  // versions, qualifiers a version does not have; docs/typechecker.md) run
+  // only when it is set. Unset: every version's rules are off.
+  std::optional<LanguageLevel> language;
+  SourceRange version_range;  // the #version line (PreprocessedUnit::version_range), where stage gates point
   // The preprocessed tokens the tree was parsed from and their SourceManager
   // (optional, both or neither): diagnostics inside macro expansions then get
   // their "in expansion of macro X" notes.

@@ -1,4 +1,4 @@
-#version 330 core
+#version 410 core
 #include <safegi/prelude.sgl>
 space world;
 layout(location = 1) out spectrum<radiance> radianceOut;
