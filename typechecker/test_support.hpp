@@ -34,6 +34,7 @@ struct SourceOptions {
   Stage stage = Stage::fragment;
   bool prelude = true;
   bool strict = false;
+  bool symbols = false;  // CheckOptions::record_symbols
 };
 
 std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptions options = {});

@@ -12,6 +12,7 @@
 
 #include "builtins.hpp"
 #include "expansions.hpp"
+#include "symbols.hpp"
 #include "safegi/typechecker/checker.hpp"
 
 namespace safegi::detail {
@@ -180,6 +181,7 @@ class Checker {
   int loop_depth_ = 0;
   ExpansionFinder expansions_;
   std::vector<SourceRange> written_statements_;  // enclosing statements not produced by a macro, innermost last
+  SymbolRecorder symbols_;                       // CheckOptions::record_symbols
 };
 
 }  // namespace safegi::detail
