@@ -251,6 +251,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     check_options.strict = options.strict;
     check_options.tokens = &w.preprocessed.tokens;
     check_options.sources = manager.get();
+    check_options.record_symbols = options.keep_analysis;
     w.checked = check(*w.parsed.unit, check_options, diags);
     w.ok = diags.error_count() == errors_before;
   }
@@ -282,6 +283,14 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
         stage_hashes += table.stages.back().source_hash;
       }
       add_declarations(table, input);
+    }
+    if (options.keep_analysis && w.checked) {
+      auto analysis = std::make_shared<StageAnalysis>();
+      analysis->file = w.file;
+      analysis->preprocessed = std::move(w.preprocessed);
+      analysis->parsed = std::move(w.parsed);
+      analysis->checked = std::move(*w.checked);
+      out.analysis = std::move(analysis);
     }
     result.stages.push_back(std::move(out));
   }
