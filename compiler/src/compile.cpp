@@ -201,17 +201,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
   DiagnosticEngine diags(options.diagnostics);
   CompileResult result;
 
-  PreprocessorOptions pp;
-  pp.include_paths = options.include_paths;
-  pp.include_paths.emplace_back(kBuiltinIncludeDir);
-  pp.defines = options.defines;
-  pp.undefines = options.undefines;
-  const std::string prelude_path = std::string(kBuiltinIncludeDir) + "/safegi/prelude.sgl";
-  pp.read_file = [&](const std::string& path) -> std::optional<std::string> {
-    if (path == prelude_path) return std::string(prelude_text());
-    if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
-    return options.read_file ? options.read_file(path) : read_from_disk(path);
-  };
+  const PreprocessorOptions pp = preprocessor_options(options);
 
   std::vector<StageWork> work(sources.size());
   for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -307,6 +297,20 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
 }
 
 }  // namespace
+
+PreprocessorOptions preprocessor_options(const CompileOptions& options) {
+  PreprocessorOptions pp;
+  pp.include_paths = options.include_paths;
+  pp.include_paths.emplace_back(kBuiltinIncludeDir);
+  pp.defines = options.defines;
+  pp.undefines = options.undefines;
+  pp.read_file = [read = options.read_file](const std::string& path) -> std::optional<std::string> {
+    if (path == kBuiltinPreludePath) return std::string(prelude_text());
+    if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
+    return read ? read(path) : read_from_disk(path);
+  };
+  return pp;
+}
 
 CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
   CompileResult result;

@@ -101,5 +101,11 @@ std::optional<gl::Stage> to_table_stage(Stage stage);
 // The built-in prelude's text and the virtual include directory that serves it.
 std::string_view prelude_text();
 inline constexpr std::string_view kBuiltinIncludeDir = "<builtin>";
+inline constexpr std::string_view kBuiltinPreludePath = "<builtin>/safegi/prelude.sgl";  // its path in diagnostics
+
+// The preprocessor options compile() runs with: `options`' include paths,
+// then the built-in directory serving the prelude; its reader, else the disk.
+// For tools that preprocess on their own (lsp/ completion).
+PreprocessorOptions preprocessor_options(const CompileOptions& options);
 
 }  // namespace safegi
