@@ -170,6 +170,15 @@ void SymbolRecorder::use_function(const std::string& name, SourceRange range, co
       it == signatures_.end() ? text_of(result) : it->second);
 }
 
+void SymbolRecorder::call_result(const Type& result) {
+  if (!out_) return;
+  for (auto it = out_->rbegin(); it != out_->rend(); ++it)
+    if (it->kind == SymbolKind::function && !it->is_declaration) {
+      it->type = result;
+      return;
+    }
+}
+
 void SymbolRecorder::use_builtin_function(const std::string& name, SourceRange range, const std::string& signature,
                                           const Type& result) {
   if (!out_) return;

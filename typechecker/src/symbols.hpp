@@ -37,6 +37,8 @@ class SymbolRecorder {
   // `params`: the resolved parameter types, in order.
   void declare_function(const ast::FunctionDecl& f, const Type& result, const std::vector<Type>& params);
   void use_function(const std::string& name, SourceRange range, const ast::FunctionDecl* declaration, const Type& result);
+  // The result of the call whose function was recorded last, once unification knows it.
+  void call_result(const Type& result);
   void use_builtin_function(const std::string& name, SourceRange range, const std::string& signature, const Type& result);
   void declare_structure(const StructInfo* info, const ast::StructDecl& decl);
   void use_structure(const StructInfo* info, SourceRange range);
