@@ -43,7 +43,7 @@ std::string physical_words(const Type& type, const std::string& type_text, const
   std::string units;
   switch (type.dim.state) {
     case DimSlot::State::known: units = registry.format_units(type.dim.value); break;
-    case DimSlot::State::generic: units = "dimension " + dim_name(type.dim, registry); break;
+    case DimSlot::State::generic: units = "any dimension (a template parameter)"; break;
     case DimSlot::State::zero: units = "0 (fits any dimension)"; break;
     case DimSlot::State::unknown: break;
   }

@@ -1,65 +1,16 @@
 // The protocol engine in-process: lifecycle and JSON-RPC errors, diagnostics
 // (ranges, severities, codes, related information, include chains),
 // document sync (full and incremental) and position encodings.
-#include "safegi/lsp/server.hpp"
-
 #include <gtest/gtest.h>
 
-#include <map>
-
-#include <nlohmann/json.hpp>
+#include "in_process.hpp"
 
 namespace safegi::lsp {
 namespace {
 
-using json = nlohmann::json;
-
-class InProcess {
- public:
-  explicit InProcess(ServerOptions options = {}) : server_(std::move(options)) {}
-  std::vector<json> raw(const std::string& body) {
-    std::vector<json> out;
-    for (const std::string& m : server_.handle(body)) out.push_back(json::parse(m));
-    return out;
-  }
-  std::vector<json> send(const json& message) { return raw(message.dump()); }
-  json request(const std::string& method, json params = json::object()) {
-    const std::vector<json> replies = send({{"jsonrpc", "2.0"}, {"id", ++id_}, {"method", method}, {"params", params}});
-    EXPECT_EQ(replies.size(), 1u) << method;
-    return replies.empty() ? json() : replies.back();
-  }
-  std::vector<json> notify(const std::string& method, json params = json::object()) {
-    return send({{"jsonrpc", "2.0"}, {"method", method}, {"params", params}});
-  }
-  json initialize(json capabilities = json::object(), json options = nullptr) {
-    json params{{"capabilities", capabilities}, {"rootUri", "file:///tmp"}};
-    if (!options.is_null()) params["initializationOptions"] = options;
-    json r = request("initialize", params);
-    notify("initialized");
-    return r;
-  }
-  // didOpen; the diagnostics published for it.
-  json open(const std::string& uri, const std::string& text) {
-    const std::vector<json> out =
-        notify("textDocument/didOpen", {{"textDocument", {{"uri", uri}, {"languageId", "glsl"}, {"version", 1}, {"text", text}}}});
-    return out.empty() ? json() : out.front()["params"];
-  }
-  Server& server() { return server_; }
-
- private:
-  Server server_;
-  int id_ = 0;
-};
-
-ServerOptions in_memory(std::map<std::string, std::string> files) {
-  ServerOptions o;
-  o.read_file = [files](const std::string& path) -> std::optional<std::string> {
-    auto it = files.find(path);
-    if (it == files.end()) return std::nullopt;
-    return it->second;
-  };
-  return o;
-}
+using testing::InProcess;
+using testing::json;
+using testing::in_memory;
 
 const char* kShader = R"(#version 330 core
 #include <safegi/prelude.sgl>
