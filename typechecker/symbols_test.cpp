@@ -100,6 +100,9 @@ void main() {
       "built-in variable gl_FragDepth @7:3 : float",
   };
   EXPECT_EQ(occurrences(*c), expected);
+  // The call's occurrence has the result unification gave it, not the generic one.
+  for (const SymbolOccurrence& o : c->result.symbols)
+    if (o.kind == SymbolKind::function && !o.is_declaration) EXPECT_EQ(c->result.describe(o.type), "spectrum<intensity>");
 }
 
 TEST(Symbols, ACallWithATypeErrorStillNamesItsFunction) {

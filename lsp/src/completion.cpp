@@ -66,8 +66,11 @@ CompletionContext completion_context(std::string_view text, std::size_t offset) 
     if (c == '=' || c == ':') {
       // `dimension area = len…`, `unit inch : len…`: a dimension expression.
       const std::string_view first = statement_word(text, i - 1);
-      if ((c == '=' && first == "dimension") || (c == ':' && first == "unit")) context.expected = Expected::dimension;
-      return context;
+      if ((c == '=' && first == "dimension") || (c == ':' && first == "unit")) {
+        context.expected = Expected::dimension;
+        return context;
+      }
+      break;
     }
     if (c == '>') ++angles;
     else if (c == ')') ++parens;

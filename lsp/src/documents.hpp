@@ -18,6 +18,9 @@ struct Document {
   std::int64_t version = 0;
   std::string text;
   std::shared_ptr<const Analysis> analysis;  // of `text`; diagnostics, hover and definition read it
+  // The last analysis that got as far as the checker: its vocabulary names
+  // completions while the text being typed does not parse.
+  std::shared_ptr<const Analysis> last_checked;
 };
 
 // One TextDocumentContentChangeEvent: with a range, an incremental edit (its

@@ -119,7 +119,8 @@ struct Server::Impl {
     if (!message["method"].is_string())
       return send(error_response(valid_id ? id : json(), error_code::invalid_request, "\"method\" must be a string"));
     const std::string method = message["method"].get<std::string>();
-    const json params = message.contains("params") ? message["params"] : json::object();
+    // `"params": null` is not JSON-RPC, but clients send it with exit and shutdown: as if absent.
+    const json params = message.contains("params") && !message["params"].is_null() ? message["params"] : json::object();
     if (!params.is_object() && !params.is_array())
       return has_id ? send(error_response(valid_id ? id : json(), error_code::invalid_request, "\"params\" must be an object or an array"))
                     : log(1, method + ": \"params\" must be an object or an array");
@@ -242,6 +243,7 @@ struct Server::Impl {
 
   void analyze_and_publish(Document& doc) {
     doc.analysis = analyze(doc, compile_options());
+    if (doc.analysis->stage()) doc.last_checked = doc.analysis;
     json diagnostics = json::array();
     if (doc.analysis->result.sources) {
       const Locator locator(doc, *doc.analysis->result.sources, encoding, options.prelude_file);
@@ -323,7 +325,7 @@ struct Server::Impl {
 
   json completion_request(const json& params) {
     Query q = query(params);
-    const StageAnalysis* stage = q.doc->analysis ? q.doc->analysis->stage() : nullptr;
+    const StageAnalysis* stage = q.doc->last_checked ? q.doc->last_checked->stage() : nullptr;
     return completion(q.doc->path, q.doc->text, q.offset, compile_options(), stage ? &stage->checked.registry : nullptr);
   }
 };
