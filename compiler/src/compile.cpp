@@ -31,15 +31,6 @@ constexpr StageTable kStages[] = {
     {Stage::compute, "comp", "compute", gl::Stage::compute},
 };
 
-std::optional<std::string> read_from_disk(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
-
 // Pipeline order, for the cross-stage check between neighbours.
 int pipeline_index(Stage s) {
   for (std::size_t i = 0; i < std::size(kStages); ++i)
@@ -298,6 +289,15 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
 
 }  // namespace
 
+std::optional<std::string> read_file_from_disk(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
 PreprocessorOptions preprocessor_options(const CompileOptions& options) {
   PreprocessorOptions pp;
   pp.include_paths = options.include_paths;
@@ -307,7 +307,7 @@ PreprocessorOptions preprocessor_options(const CompileOptions& options) {
   pp.read_file = [read = options.read_file](const std::string& path) -> std::optional<std::string> {
     if (path == kBuiltinPreludePath) return std::string(prelude_text());
     if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
-    return read ? read(path) : read_from_disk(path);
+    return read ? read(path) : read_file_from_disk(path);
   };
   return pp;
 }

@@ -56,8 +56,6 @@ std::optional<json> Locator::location(SourceRange range) const {
   return json{{"uri", *file}, {"range", this->range(range)}};
 }
 
-std::size_t Locator::offset_of(Position position) const { return LineIndex(document_.text).offset_of(position, encoding_); }
-
 SourceRange Locator::in_document_range(SourceRange range) const {
   if (!range.valid() || !sources_.valid(range.begin.file) || in_document(range.begin.file)) return range;
   const std::vector<SourceRange> chain = sources_.include_chain(range.begin.file);

@@ -44,8 +44,6 @@ class Locator {
   std::optional<std::string> uri(FileId file) const;  // nothing for the built-in prelude without a copy on disk
   json range(SourceRange range) const;                // in its own file
   std::optional<json> location(SourceRange range) const;
-  // The document's byte offset of an LSP position.
-  std::size_t offset_of(Position position) const;
   // `range` if it is in the document, else the #include line that leads to it.
   SourceRange in_document_range(SourceRange range) const;
 

@@ -1,9 +1,7 @@
 #include "safegi/lsp/server.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include <safegi/compiler/compile.hpp>
 
@@ -16,15 +14,6 @@
 
 namespace safegi::lsp {
 namespace {
-
-std::optional<std::string> read_from_disk(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
 
 // A string array member of an optional object; nothing when absent.
 std::vector<std::string> strings_of(const json& object, const char* name) {
@@ -229,7 +218,7 @@ struct Server::Impl {
     c.read_file = [this](const std::string& path) -> std::optional<std::string> {
       for (const auto& [uri, doc] : documents)
         if (doc.path == path) return doc.text;
-      return options.read_file ? options.read_file(path) : read_from_disk(path);
+      return options.read_file ? options.read_file(path) : read_file_from_disk(path);
     };
     return c;
   }
@@ -360,7 +349,7 @@ std::string find_prelude_file(const std::string& executable) {
   candidates.emplace_back(SAFEGI_SOURCE_PRELUDE);  // the build tree's: the source file it was compiled from
 #endif
   for (const fs::path& candidate : candidates) {
-    std::optional<std::string> text = read_from_disk(candidate.string());
+    std::optional<std::string> text = read_file_from_disk(candidate.string());
     if (text && *text == prelude_text()) return candidate.string();
   }
   return {};

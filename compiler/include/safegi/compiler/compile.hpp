@@ -103,6 +103,9 @@ std::string_view prelude_text();
 inline constexpr std::string_view kBuiltinIncludeDir = "<builtin>";
 inline constexpr std::string_view kBuiltinPreludePath = "<builtin>/safegi/prelude.sgl";  // its path in diagnostics
 
+// compile()'s default reader: the file's bytes, or nothing when it cannot be read.
+std::optional<std::string> read_file_from_disk(const std::string& path);
+
 // The preprocessor options compile() runs with: `options`' include paths,
 // then the built-in directory serving the prelude; its reader, else the disk.
 // For tools that preprocess on their own (lsp/ completion).
