@@ -28,13 +28,17 @@ std::vector<std::string> strings_of(const json& object, const char* name) {
   return out;
 }
 
-// `capabilities.textDocument.hover.contentFormat` and the like: the value at a path of members, or null.
+// `capabilities.textDocument.hover.contentFormat` and the like: the value at a
+// path of members, or null. A reference: the client's JSON is never copied
+// (copying is recursive, and a message may nest a million levels deep).
 const json& at_path(const json& root, std::initializer_list<const char*> path) {
   static const json null;
   const json* here = &root;
   for (const char* name : path) {
-    if (!here->is_object() || !here->contains(name)) return null;
-    here = &(*here)[name];
+    if (!here->is_object()) return null;
+    auto it = here->find(name);
+    if (it == here->end()) return null;
+    here = &*it;
   }
   return *here;
 }
@@ -97,21 +101,24 @@ struct Server::Impl {
     if (!message.is_object())
       return send(error_response(nullptr, error_code::invalid_request, "a message must be a JSON object (batches are not part of LSP)"));
     const bool has_id = message.contains("id");
-    const json id = has_id ? message["id"] : json();
-    const bool valid_id = id.is_string() || id.is_number_integer();
-    if (message.value("jsonrpc", json()) != "2.0")
-      return send(error_response(valid_id ? id : json(), error_code::invalid_request, "\"jsonrpc\" must be \"2.0\""));
+    const json& raw_id = at_path(message, {"id"});
+    const bool valid_id = raw_id.is_string() || raw_id.is_number_integer();
+    const json id = valid_id ? raw_id : json();  // a copy only of a string or a number
+    if (at_path(message, {"jsonrpc"}) != "2.0")
+      return send(error_response(id, error_code::invalid_request, "\"jsonrpc\" must be \"2.0\""));
     if (!message.contains("method")) {
       if (has_id && (message.contains("result") || message.contains("error"))) return;  // a reply; this server asks nothing
-      return send(error_response(valid_id ? id : json(), error_code::invalid_request, "a request needs a \"method\""));
+      return send(error_response(id, error_code::invalid_request, "a request needs a \"method\""));
     }
     if (!message["method"].is_string())
-      return send(error_response(valid_id ? id : json(), error_code::invalid_request, "\"method\" must be a string"));
+      return send(error_response(id, error_code::invalid_request, "\"method\" must be a string"));
     const std::string method = message["method"].get<std::string>();
     // `"params": null` is not JSON-RPC, but clients send it with exit and shutdown: as if absent.
-    const json params = message.contains("params") && !message["params"].is_null() ? message["params"] : json::object();
+    static const json no_params = json::object();
+    const json& given = at_path(message, {"params"});
+    const json& params = given.is_null() ? no_params : given;
     if (!params.is_object() && !params.is_array())
-      return has_id ? send(error_response(valid_id ? id : json(), error_code::invalid_request, "\"params\" must be an object or an array"))
+      return has_id ? send(error_response(id, error_code::invalid_request, "\"params\" must be an object or an array"))
                     : log(1, method + ": \"params\" must be an object or an array");
     if (!has_id) return dispatch_notification(method, params);
     if (!valid_id) return send(error_response(nullptr, error_code::invalid_request, "\"id\" must be an integer or a string"));
@@ -156,7 +163,7 @@ struct Server::Impl {
   json initialize(const json& params) {
     if (phase != Phase::uninitialized) throw RequestError{error_code::invalid_request, "initialize may be sent only once"};
     if (!params.is_object()) throw RequestError{error_code::invalid_params, "expected an object"};
-    const json& capabilities = params.contains("capabilities") ? params["capabilities"] : json::object();
+    const json& capabilities = at_path(params, {"capabilities"});
     // utf-8 when the client offers it: positions are then the compiler's own byte columns.
     const std::vector<std::string> encodings = strings_of(at_path(capabilities, {"general"}), "positionEncodings");
     for (const std::string& e : encodings)
@@ -179,7 +186,7 @@ struct Server::Impl {
   // initializationOptions: {"includePaths": [...], "defines": ["NAME=value", ...], "strict": bool};
   // relative include paths are taken from the workspace root.
   void read_initialization_options(const json& params) {
-    const json& init = params.contains("initializationOptions") ? params["initializationOptions"] : json();
+    const json& init = at_path(params, {"initializationOptions"});
     if (init.is_null()) return;
     if (!init.is_object()) throw RequestError{error_code::invalid_params, "initializationOptions must be an object"};
     std::filesystem::path root;

@@ -116,6 +116,26 @@ TEST(Server, MalformedMessagesGetJsonRpcErrors) {
   EXPECT_FALSE(s.server().exited());
 }
 
+TEST(Server, DeeplyNestedJsonIsNeverCopied) {
+  // json::parse is iterative and its destructor too, but copying a value
+  // recurses: 300 000 levels of nesting anywhere in a message must not
+  // reach a copy (the server's first version crashed on this).
+  const std::string deep = std::string(300000, '[') + std::string(300000, ']');
+  InProcess s;
+  EXPECT_EQ(s.raw(R"({"jsonrpc":"2.0","id":1,"method":"initialize","params":{"capabilities":)" + deep + "}}")[0]["result"]
+                ["capabilities"]["positionEncoding"],
+            "utf-16");
+  for (const std::string& body : {R"({"jsonrpc":"2.0","id":)" + deep + R"(,"method":"x"})",
+                                  R"({"jsonrpc":)" + deep + R"(,"id":2,"method":"x"})",
+                                  R"({"jsonrpc":"2.0","id":3,"method":)" + deep + "}",
+                                  R"({"jsonrpc":"2.0","id":4,"method":"x","params":)" + deep + "}",
+                                  R"({"jsonrpc":"2.0","method":"textDocument/didOpen","params":{"textDocument":)" + deep + "}}"})
+    EXPECT_LE(s.raw(body).size(), 1u);
+  EXPECT_EQ(s.raw(R"({"jsonrpc":"2.0","id":5,"method":"textDocument/hover","params":{"textDocument":{"uri":)" + deep +
+                  R"(},"position":{"line":0,"character":0}}})")[0]["error"]["code"],
+            -32602);
+}
+
 TEST(Server, NotificationsAreNeverAnswered) {
   InProcess s;
   s.initialize();
