@@ -183,7 +183,8 @@ struct Server::Impl {
             {"serverInfo", {{"name", kServerName}, {"version", kCompilerVersion}}}};
   }
 
-  // initializationOptions: {"includePaths": [...], "defines": ["NAME=value", ...], "strict": bool};
+  // initializationOptions: {"includePaths": [...], "defines": ["NAME=value", ...], "strict": bool,
+  // "notesInMessage": bool};
   // relative include paths are taken from the workspace root.
   void read_initialization_options(const json& params) {
     const json& init = at_path(params, {"initializationOptions"});
@@ -200,10 +201,16 @@ struct Server::Impl {
       const std::size_t eq = d.find('=');
       options.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
     }
-    if (init.contains("strict")) {
-      if (!init["strict"].is_boolean()) throw RequestError{error_code::invalid_params, "'strict' must be a boolean"};
-      options.strict = init["strict"].get<bool>();
-    }
+    auto flag = [&](const char* name, bool& into) {
+      if (!init.contains(name)) return;
+      if (!init[name].is_boolean()) throw RequestError{error_code::invalid_params, "'" + std::string(name) + "' must be a boolean"};
+      into = init[name].get<bool>();
+    };
+    flag("strict", options.strict);
+    // For clients that take related information but show only the message.
+    bool notes_in_message = false;
+    flag("notesInMessage", notes_in_message);
+    if (notes_in_message) diagnostic_style.related_information = false;
   }
 
   json shutdown(const json&) {

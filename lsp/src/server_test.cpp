@@ -154,7 +154,16 @@ TEST(Server, BadInitializationOptionsAreInvalidParams) {
   InProcess s;
   EXPECT_EQ(s.request("initialize", {{"initializationOptions", {{"includePaths", "inc"}}}})["error"]["code"], -32602);
   EXPECT_EQ(s.request("initialize", {{"initializationOptions", {{"strict", 1}}}})["error"]["code"], -32602);
+  EXPECT_EQ(s.request("initialize", {{"initializationOptions", {{"notesInMessage", "yes"}}}})["error"]["code"], -32602);
   EXPECT_TRUE(s.request("initialize", {{"initializationOptions", {{"strict", true}}}}).contains("result"));
+}
+
+TEST(Server, NotesInMessageWhenAskedEvenIfTheClientTakesRelatedInformation) {
+  InProcess s;
+  s.initialize({{"textDocument", {{"publishDiagnostics", {{"relatedInformation", true}}}}}}, {{"notesInMessage", true}});
+  const json d = s.open("file:///tmp/a.sgl.frag", kShader)["diagnostics"][0];
+  EXPECT_FALSE(d.contains("relatedInformation"));
+  EXPECT_NE(d["message"].get<std::string>().find("\n/tmp/a.sgl.frag:9:42: note: 'E' declared here\nhelp: "), std::string::npos);
 }
 
 // ------------------------------------------------------------ diagnostics
@@ -212,6 +221,15 @@ TEST(Server, ADiagnosticInAnIncludedFileIsReportedAtTheIncludeLine) {
   EXPECT_EQ(d["relatedInformation"][0], json::parse(R"j({"location": {"uri": "file:///tmp/inc/common.glsl",
       "range": {"start": {"line": 1, "character": 6}, "end": {"line": 1, "character": 12}}},
       "message": "unknown dimension 'lenght'"})j"));
+}
+
+TEST(Server, IncludePathsFromTheWorkspaceRootAndDefinesFromInitializationOptions) {
+  InProcess s(in_memory({{"/tmp/shaders/include/units.glsl", "#define LIGHT_DIM intensity\n"}}));
+  s.initialize(json::object(), {{"includePaths", {"shaders/include"}}, {"defines", {"USE_UNITS", "SCALE=2.0"}}});  // rootUri file:///tmp
+  const json published = s.open("file:///tmp/elsewhere/a.sgl.frag",
+      "#include <safegi/prelude.sgl>\n#ifdef USE_UNITS\n#include <units.glsl>\n#endif\n"
+      "uniform spectrum<LIGHT_DIM> I;\nvoid main() { float<1> k = SCALE; }\n");
+  EXPECT_EQ(published["diagnostics"], json::array()) << published.dump(1);
 }
 
 TEST(Server, AnOpenHeaderIsReadAsTheEditorHasItAndItsIncludersFollowItsEdits) {
