@@ -102,7 +102,9 @@ void main() {
   EXPECT_EQ(occurrences(*c), expected);
   // The call's occurrence has the result unification gave it, not the generic one.
   for (const SymbolOccurrence& o : c->result.symbols)
-    if (o.kind == SymbolKind::function && !o.is_declaration) EXPECT_EQ(c->result.describe(o.type), "spectrum<intensity>");
+    if (o.kind == SymbolKind::function && !o.is_declaration) {
+      EXPECT_EQ(c->result.describe(o.type), "spectrum<intensity>");
+    }
 }
 
 TEST(Symbols, ACallWithATypeErrorStillNamesItsFunction) {

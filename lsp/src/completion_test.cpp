@@ -87,7 +87,9 @@ TEST_F(Completion, DimensionsFromThePreludeAndTheDocument) {
   EXPECT_EQ(got.size(), 24u);         // the prelude's 22 and the document's 2
   for (const json& item : list["items"]) {
     EXPECT_EQ(item["kind"], 7);
-    if (item["label"] == "radiance") EXPECT_EQ(item["detail"], "dimension");  // never checked yet: no units
+    if (item["label"] == "radiance") {
+      EXPECT_EQ(item["detail"], "dimension");  // never checked yet: no units
+    }
   }
 }
 
