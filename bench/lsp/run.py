@@ -10,11 +10,19 @@ server's CPU time (utime + stime from /proc) over the N changes gives the CPU
 per change, which load on a shared machine does not inflate. Baseline in the
 same run: one `safeglslc` process on the same text (what an editor without a
 server would run on save), interleaved with the changes.
+
+Instruction counts (callgrind, which load does not change) give the same
+comparison without the noise: a session of K changes minus a session of none,
+per change, for the whole server (JSON, framing, diagnostics) and for the
+compile inside it (`compile_here`, with the analysis kept and the checker's
+symbols recorded), against the compile inside one `safeglslc` run.
 """
 from __future__ import annotations
 
 import json
 import os
+import re
+import tempfile
 import statistics
 import subprocess
 import sys
@@ -87,6 +95,40 @@ def broken(text: str, path: Path, safeglslc: str) -> str:
     raise SystemExit(f"bench: no annotation mistake found for {path.name}")
 
 
+def framed(messages: list[dict]) -> bytes:
+    out = b""
+    for m in messages:
+        body = json.dumps(m).encode()
+        out += b"Content-Length: %d\r\n\r\n" % len(body) + body
+    return out
+
+
+def session(uri: str, texts: list[str], changes: int) -> bytes:
+    """initialize, didOpen of texts[1], `changes` full-text changes alternating texts, shutdown, exit."""
+    messages = [{"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}},
+                {"jsonrpc": "2.0", "method": "textDocument/didOpen",
+                 "params": {"textDocument": {"uri": uri, "languageId": "glsl", "version": 1, "text": texts[1]}}}]
+    for i in range(changes):
+        messages.append({"jsonrpc": "2.0", "method": "textDocument/didChange",
+                         "params": {"textDocument": {"uri": uri, "version": i + 2}, "contentChanges": [{"text": texts[i % 2]}]}})
+    messages += [{"jsonrpc": "2.0", "id": 2, "method": "shutdown"}, {"jsonrpc": "2.0", "method": "exit"}]
+    return framed(messages)
+
+
+def callgrind(command: list[str], stdin: bytes = b"", inside: str | None = None) -> int:
+    """Instructions of `command` fed `stdin` (all, or only under a function matching `inside`)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "callgrind.out"
+        toggle = [f"--toggle-collect={inside}"] if inside else []
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *toggle, *command], input=stdin,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        for line in out.read_text().splitlines():
+            match = re.match(r"^(?:summary|totals):\s+(\d+)", line)
+            if match:
+                return int(match.group(1))
+    raise RuntimeError(f"no instruction total for {command}")
+
+
 def main() -> None:
     changes = 20 if h.quick() else 200
     lsp = str(h.binary("safegi-lsp"))
@@ -132,6 +174,23 @@ def main() -> None:
         rows.append([name, f"{text.count(chr(10))}", f"{lat:.2f} ({min(latencies) * 1e3:.2f}–{max(latencies) * 1e3:.2f})",
                      f"{cpu * 1e3:.2f}", f"{statistics.median(hovers) * 1e3:.3f}", f"{base:.2f}", f"{lat / base:.2f}"])
     server.close()
+    # Instruction counts: K changes minus none, per change.
+    k = 10
+    counts = []
+    for name in SHADERS:
+        path = h.ROOT / "examples" / "shaders" / name
+        text = path.read_text()
+        texts = [broken(text, path, safeglslc), text]
+        uri = path.resolve().as_uri()
+        # The first compile of a process also builds the built-in signature
+        # library for the vocabulary (then cached): safeglslc's one compile and
+        # the server's didOpen are both such cold compiles, the changes warm ones.
+        plain = callgrind([safeglslc, str(path)], inside="*compile_here*")
+        opened = callgrind([lsp], session(uri, texts, 0), "*compile_here*")
+        compile_part = (callgrind([lsp], session(uri, texts, k), "*compile_here*") - opened) / k
+        whole = (callgrind([lsp], session(uri, texts, k)) - callgrind([lsp], session(uri, texts, 0))) / k
+        counts.append([name, f"{plain / 1e6:.2f}", f"{opened / 1e6:.2f}", h.ratio(opened, plain),
+                       f"{compile_part / 1e6:.2f}", f"{whole / 1e6:.2f}"])
     out = "## safegi-lsp: diagnostics on didChange, hover\n\n"
     out += (f"{changes} full-text `didChange` notifications per shader, alternating a one-word annotation mistake and "
             "the original text, each timed until its `publishDiagnostics` arrives (median, min–max); the server's "
@@ -140,6 +199,13 @@ def main() -> None:
             "measure the others: the CPU column is the one that does not move with load.\n\n")
     out += h.table(["shader", "lines", "didChange → diagnostics, ms", "server CPU per change, ms", "hover, ms",
                     "safeglslc process, ms", "ratio to safeglslc"], rows)
+    out += ("\nInstructions (callgrind; load does not change them), in millions. Cold compiles (the first of a "
+            "process, which also builds the built-in signature library once): the one inside a `safeglslc` run "
+            "against the server's `didOpen`, which keeps the analysis and records the checker's symbols. Warm: "
+            f"per change, from a session of {k} changes minus one of none, the compile alone and the whole "
+            "server (JSON, framing, diagnostics; half the changes have one to render):\n\n")
+    out += h.table(["shader", "safeglslc compile (cold)", "server didOpen compile (cold)", "ratio",
+                    "server compile per change (warm)", "whole server per change"], counts)
     h.write_section("lsp", out)
 
 
