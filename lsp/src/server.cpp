@@ -60,7 +60,9 @@ struct Server::Impl {
   explicit Impl(ServerOptions o) : options(std::move(o)) {}
 
   void send(const json& message) { outgoing.push_back(serialize(message)); }
+  // window/logMessage; not before initialize, when the protocol lets a server send nothing.
   void log(int type, const std::string& message) {
+    if (phase == Phase::uninitialized) return;
     send(notification("window/logMessage", {{"type", type}, {"message", std::string(kServerName) + ": " + message}}));
   }
 

@@ -33,6 +33,7 @@ TEST(Server, RequestsBeforeInitializeAreRefusedNotificationsIgnored) {
   EXPECT_EQ(r["error"]["code"], -32002);
   EXPECT_EQ(r["id"], 1);
   EXPECT_TRUE(s.notify("textDocument/didOpen", {{"textDocument", {{"uri", "file:///a.frag"}, {"text", ""}}}}).empty());
+  EXPECT_TRUE(s.raw(R"({"jsonrpc":"2.0","method":"textDocument/didOpen","params":7})").empty());  // not even a log message
   EXPECT_FALSE(s.server().exited());
 }
 
