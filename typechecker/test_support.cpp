@@ -35,6 +35,7 @@ std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptio
   check_options.stage = options.stage;
   check_options.strict = options.strict;
   check_options.language = options.language;
+  check_options.record_symbols = options.symbols;
   c->result = check(*c->parsed.unit, check_options, c->diagnostics);
   return c;
 }

@@ -36,6 +36,7 @@ struct SourceOptions {
   bool prelude = true;
   bool strict = false;
   std::optional<LanguageLevel> language = {};  // the version-dependent rules run only with one
+  bool symbols = false;  // CheckOptions::record_symbols
 };
 
 std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptions options = {});

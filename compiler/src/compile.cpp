@@ -31,15 +31,6 @@ constexpr StageTable kStages[] = {
     {Stage::compute, "comp", "compute", gl::Stage::compute},
 };
 
-std::optional<std::string> read_from_disk(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
-
 // Pipeline order, for the cross-stage check between neighbours.
 int pipeline_index(Stage s) {
   for (std::size_t i = 0; i < std::size(kStages); ++i)
@@ -247,23 +238,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
   DiagnosticEngine diags(options.diagnostics);
   CompileResult result;
 
-  PreprocessorOptions pp;
-  pp.include_paths = options.include_paths;
-  pp.include_paths.emplace_back(kBuiltinIncludeDir);
-  pp.defines = options.defines;
-  pp.undefines = options.undefines;
-  pp.default_version = options.default_version.number;
-  pp.default_es = options.default_version.es;
-  if (options.override_version) {
-    pp.override_version = options.override_version->number;
-    pp.override_es = options.override_version->es;
-  }
-  const std::string prelude_path = std::string(kBuiltinIncludeDir) + "/safegi/prelude.sgl";
-  pp.read_file = [&](const std::string& path) -> std::optional<std::string> {
-    if (path == prelude_path) return std::string(prelude_text());
-    if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
-    return options.read_file ? options.read_file(path) : read_from_disk(path);
-  };
+  const PreprocessorOptions pp = preprocessor_options(options);
 
   std::vector<StageWork> work(sources.size());
   for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -305,6 +280,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     check_options.version_range = w.preprocessed.version_range;
     check_options.tokens = &w.preprocessed.tokens;
     check_options.sources = manager.get();
+    check_options.record_symbols = options.keep_analysis;
     w.checked = check(*w.parsed.unit, check_options, diags);
     w.ok = diags.error_count() == errors_before;
   }
@@ -337,6 +313,14 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
       }
       add_declarations(table, input);
     }
+    if (options.keep_analysis && w.checked) {
+      auto analysis = std::make_shared<StageAnalysis>();
+      analysis->file = w.file;
+      analysis->preprocessed = std::move(w.preprocessed);
+      analysis->parsed = std::move(w.parsed);
+      analysis->checked = std::move(*w.checked);
+      out.analysis = std::move(analysis);
+    }
     result.stages.push_back(std::move(out));
   }
   table.source_hash = source_hash(stage_hashes);
@@ -352,6 +336,35 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
 }
 
 }  // namespace
+
+std::optional<std::string> read_file_from_disk(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
+PreprocessorOptions preprocessor_options(const CompileOptions& options) {
+  PreprocessorOptions pp;
+  pp.include_paths = options.include_paths;
+  pp.include_paths.emplace_back(kBuiltinIncludeDir);
+  pp.defines = options.defines;
+  pp.undefines = options.undefines;
+  pp.default_version = options.default_version.number;
+  pp.default_es = options.default_version.es;
+  if (options.override_version) {
+    pp.override_version = options.override_version->number;
+    pp.override_es = options.override_version->es;
+  }
+  pp.read_file = [read = options.read_file](const std::string& path) -> std::optional<std::string> {
+    if (path == kBuiltinPreludePath) return std::string(prelude_text());
+    if (path.rfind(kBuiltinIncludeDir, 0) == 0) return std::nullopt;
+    return read ? read(path) : read_file_from_disk(path);
+  };
+  return pp;
+}
 
 CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options) {
   CompileResult result;

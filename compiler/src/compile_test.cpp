@@ -37,6 +37,29 @@ TEST(StageFromPath, ExtensionsWithAndWithoutTheAnnotatedSuffix) {
   EXPECT_EQ(stage_from_name("pixel"), std::nullopt);
 }
 
+TEST(Compile, KeepsTheAnalysisOnlyWhenAskedEvenWithTypeErrors) {
+  EXPECT_EQ(compile({{"light.sgl.frag", kFrag}}).stages.at(0).analysis, nullptr);
+  CompileOptions options;
+  options.keep_analysis = true;
+  std::string wrong = kFrag;
+  wrong.replace(wrong.find("Le * gain"), 9, "gain");  // a type error: the stage is still checked
+  CompileResult r = compile({{"light.sgl.frag", wrong}}, options);
+  ASSERT_FALSE(r.success);
+  const StageAnalysis* a = r.stages.at(0).analysis.get();
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(r.sources->path(a->file), "light.sgl.frag");
+  bool found = false;
+  for (const SymbolOccurrence& o : a->checked.symbols)
+    if (o.name == "gain" && !o.is_declaration) {
+      found = true;
+      EXPECT_EQ(o.type_text, "float<dimensionless>");
+      EXPECT_EQ(o.declaration.begin.line, 4u);
+    }
+  EXPECT_TRUE(found);
+  // A syntax error: nothing was checked, so there is nothing to keep.
+  EXPECT_EQ(compile({{"light.sgl.frag", "void main( {}"}}, options).stages.at(0).analysis, nullptr);
+}
+
 TEST(Compile, OneShaderGivesGlslTheDriverAcceptsAndAShaderTable) {
   CompileResult r = compile({{"light.sgl.frag", kFrag}});
   ASSERT_TRUE(r.success) << r.diagnostics_text();

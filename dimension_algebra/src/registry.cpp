@@ -188,6 +188,42 @@ std::string DimensionRegistry::format_product(const Dimension& d, Notation notat
   return format_rational(factors, notation);
 }
 
+std::string DimensionRegistry::format_units(const Dimension& d, Notation notation) const {
+  // SI symbols of the prelude's bases, in the order units are usually written.
+  static const struct {
+    const char* base;
+    const char* symbol;
+  } kSymbols[] = {{"energy", "J"}, {"length", "m"}, {"time", "s"}, {"angle", "rad"}, {"solid_angle", "sr"}};
+  std::vector<std::pair<std::string, std::int64_t>> terms;  // symbol, exponent; in print order
+  const std::int64_t energy = find_base("energy") ? d.exponent(*find_base("energy")) : 0;
+  const std::int64_t time = find_base("time") ? d.exponent(*find_base("time")) : 0;
+  // W = J·s⁻¹: as many watts as energy and inverse time have in common.
+  std::int64_t watts = 0;
+  if (energy > 0 && time < 0) watts = std::min(energy, -time);
+  if (energy < 0 && time > 0) watts = -std::min(-energy, time);
+  terms.emplace_back("W", watts);
+  for (const auto& s : kSymbols) {
+    const std::optional<BaseId> base = find_base(s.base);
+    if (!base) continue;
+    std::int64_t e = d.exponent(*base);
+    if (*base == find_base("energy")) e -= watts;
+    if (*base == find_base("time")) e += watts;
+    terms.emplace_back(s.symbol, e);
+  }
+  for (const Factor& f : d.factors()) {
+    const std::string& name = f.base < bases_.size() ? bases_[f.base] : "?";
+    const bool named = name == "proj" || std::any_of(std::begin(kSymbols), std::end(kSymbols),
+                                                     [&](const auto& s) { return name == s.base; });
+    if (!named) terms.emplace_back(name, f.exponent);
+  }
+  std::string out;
+  const char* separator = notation == Notation::ascii ? "*" : "·";
+  for (const bool positive : {true, false})
+    for (const auto& [symbol, e] : terms)
+      if (e != 0 && (e > 0) == positive) out += (out.empty() ? "" : separator) + power_text(symbol, e, notation);
+  return out.empty() ? "1" : out;
+}
+
 std::string DimensionRegistry::format_rational(const std::vector<RationalFactor>& factors,
                                                Notation notation) const {
   return format_factors(factors, notation, [this](BaseId id) { return factor_name(id); });

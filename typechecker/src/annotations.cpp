@@ -151,9 +151,15 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
   if (const auto* name = ast::dyn_cast<ast::DimName>(e)) {
     if (template_dims_) {
       for (std::size_t i = 0; i < template_dims_->size(); ++i)
-        if ((*template_dims_)[i] == name->name) return DimSlot::generic(DimTerm::variable(static_cast<DimVarId>(i)));
+        if ((*template_dims_)[i] == name->name) {
+          symbols_.use_dimension_parameter(name->name, name->range);
+          return DimSlot::generic(DimTerm::variable(static_cast<DimVarId>(i)));
+        }
     }
-    if (std::optional<Dimension> d = reg.find_dimension(name->name)) return DimSlot::known(*d, name->name);
+    if (std::optional<Dimension> d = reg.find_dimension(name->name)) {
+      symbols_.use_dimension(name->name, name->range, *d);
+      return DimSlot::known(*d, name->name);
+    }
     std::string message = "unknown dimension '" + name->name + "'";
     std::string hint;
     if (reg.find_space(name->name)) message = "'" + name->name + "' is a space, not a dimension";
@@ -272,11 +278,13 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     if (template_spaces_) {
       for (std::size_t i = 0; i < template_spaces_->size(); ++i)
         if ((*template_spaces_)[i] == name->name) {
+          symbols_.use_space_parameter(name->name, name->range);
           slot = SpaceSlot::generic(static_cast<std::uint32_t>(i));
           return true;
         }
     }
     if (std::optional<SpaceId> s = reg.find_space(name->name)) {
+      symbols_.use_space(name->name, name->range);
       slot = SpaceSlot::known(*s);
       return true;
     }
@@ -409,6 +417,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       }
       t.shape = Shape::structure;
       t.structure = it->second;
+      symbols_.use_structure(it->second, spec->name_range);
       break;
     }
     case ast::TypeSpecifier::Form::Struct: {
@@ -425,6 +434,10 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       }
       t.shape = Shape::structure;
       t.structure = info.get();
+      if (spec->struct_decl) {
+        symbols_.declare_structure(info.get(), *spec->struct_decl);
+        symbols_.declare_fields(info.get(), spec->struct_decl->members);
+      }
       if (spec->struct_decl && !spec->struct_decl->name.empty()) structs_[spec->struct_decl->name] = info.get();
       result_.structs.push_back(std::move(info));
       break;

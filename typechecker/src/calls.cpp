@@ -88,13 +88,19 @@ Value Checker::call(const ast::CallExpr& e) {
   if (std::optional<Value> v = subroutine_call(e, args)) return *v;
   validate_call_placement(e);
   if (auto it = functions_.find(e.callee); it != functions_.end()) {
-    if (bad) return error_value(e.range);
+    if (bad) {
+      symbols_.use_function(e.callee, e.callee_range, it->second.front().decl, it->second.front().result);
+      return error_value(e.range);
+    }
     return user_call(e, it->second, args);
   }
   if (const std::vector<Signature>* sigs = builtins_->find(e.callee)) {
     if (!builtin_available(e.callee, e.callee_range, true)) return error_value(e.range);
     if (bad) return error_value(e.range);
-    return builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
+    Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
+    const auto info = result_.calls.find(&e);
+    symbols_.use_builtin_function(e.callee, e.callee_range, info == result_.calls.end() ? "" : info->second.signature, v.type);
+    return v;
   }
   if (auto s = structs_.find(e.callee); s != structs_.end()) {
     // A struct constructor the parser could not tell from a call.
@@ -532,6 +538,9 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
       if (g != f && !better_match(conv, other)) beats_all = false;
     if (beats_all) best = f;
   }
+  // Go to definition: the overload chosen, else one that could have been meant.
+  const Function& named = best ? *best : viable.empty() ? overloads.front() : *viable.front().first;
+  symbols_.use_function(e.callee, e.callee_range, named.decl, named.result);
   if (!best && viable.size() > 1) {
     Diagnostic d = Diagnostic::error(e.callee_range, "call to '" + e.callee + "(" + arguments_text(args, *this) + ")' is ambiguous")
                        .with_code("E-AMBIGUOUS-CALL");
@@ -562,6 +571,7 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};
   std::optional<Type> result = unify_call(e.callee, shape, args, e.range);
   if (!result) return error_value(e.range);
+  symbols_.call_result(*result);
   Value out;
   out.range = e.range;
   out.type = *result;

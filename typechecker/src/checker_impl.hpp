@@ -12,6 +12,7 @@
 
 #include "builtins.hpp"
 #include "expansions.hpp"
+#include "symbols.hpp"
 #include "safegi/typechecker/checker.hpp"
 #include "validation.hpp"
 
@@ -261,6 +262,7 @@ class Checker {
   };
   std::vector<SwitchContext> switches_;  // the switch statements being checked, innermost last
   ValidationState validation_;
+  SymbolRecorder symbols_;                       // CheckOptions::record_symbols
 };
 
 }  // namespace safegi::detail

@@ -65,7 +65,8 @@ bool known_builtin_variable(std::string_view name) {
 }
 
 Checker::Checker(const CheckOptions& options, DiagnosticEngine& diagnostics, CheckResult& result)
-    : options_(options), diagnostics_(diagnostics), result_(result) {
+    : options_(options), diagnostics_(diagnostics), result_(result),
+      symbols_(options.record_symbols ? &result.symbols : nullptr, result.registry) {
   if (options.tokens && options.sources) expansions_ = ExpansionFinder(*options.tokens, *options.sources);
 }
 
@@ -76,6 +77,7 @@ void Checker::run(const ast::TranslationUnit& unit) {
     else if (const auto* u = ast::dyn_cast<ast::UnitDecl>(d)) declare_unit(*u);
     else if (const auto* s = ast::dyn_cast<ast::SpaceDecl>(d)) declare_space(*s);
   }
+  symbols_.annotation_declarations(unit);
   builtins_ = BuiltinLibrary::for_registry(result_.registry);
   validate_stage(unit);
   push_scope();
@@ -270,6 +272,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     v.type = poisoned ? Type::error() : declared;
     result_.declarators[&decl] = declared;
     if (global && decl.name.rfind("gl_", 0) == 0) validate_builtin_redeclaration(d, decl, declared);
+    symbols_.declare_variable(decl.name, decl.name_range, declared);
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
     declare_variable(std::move(v));
   }
@@ -288,6 +291,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
       const std::string full = d.instance_name.empty() ? decl.name : d.instance_name + "." + decl.name;
       record_interface(d.qualifiers, full, d.block_name, t, decl.name_range, member);
       if (d.instance_name.empty()) {
+        symbols_.declare_variable(decl.name, decl.name_range, t);
         Variable v{decl.name, t, decl.name_range, read_only || member->qualifiers.has("readonly"), false, std::nullopt,
                    {decl.name_range, "'" + decl.name + "' declared here"}};
         declare_variable(std::move(v));
@@ -295,12 +299,14 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
     }
   }
   if (!d.instance_name.empty()) {
+    symbols_.declare_fields(info.get(), d.members);
     Type t;
     t.shape = Shape::structure;
     t.structure = info.get();
     for (const ast::ArrayDim& dim : d.instance_array_dims) t.array.push_back(static_cast<int>(array_size(dim).value_or(-1)));
     Variable v{d.instance_name, t, d.instance_name_range, read_only, false, std::nullopt,
                {d.instance_name_range, "'" + d.instance_name + "' declared here"}};
+    symbols_.declare_variable(d.instance_name, d.instance_name_range, t);
     declare_variable(std::move(v));
   }
   result_.structs.push_back(std::move(info));
@@ -315,6 +321,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     (p.kind == ast::TemplateParamKind::Dimension ? f.dim_params : f.space_params).push_back(p.name);
   template_dims_ = &f.dim_params;
   template_spaces_ = &f.space_params;
+  symbols_.enter_function(&d);
   f.result = resolve_type(d.return_type);
   for (const ast::ParamDecl* p : d.params) {
     Type t = resolve_type(p->type, &p->array_dims);
@@ -324,6 +331,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     f.inout_params.push_back(p->qualifiers.has("inout"));
   }
   f.defined = d.body != nullptr;
+  symbols_.declare_function(d, f.result, f.params);
   validate_function(d, f);
   if (subroutine_declaration(d, f)) {
     template_dims_ = nullptr;
@@ -365,6 +373,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
       const ast::ParamDecl* p = d.params[i];
       if (p->name.empty()) continue;
       const bool in_only = !p->qualifiers.has("out") && !p->qualifiers.has("inout");
+      symbols_.declare_variable(p->name, p->name_range, f.params[i]);
       declare_variable({p->name, f.params[i], p->name_range, p->qualifiers.has("const") && in_only, false, std::nullopt,
                         {p->name_range, "'" + p->name + "' declared here"}});
     }
@@ -374,6 +383,7 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
   }
   template_dims_ = nullptr;
   template_spaces_ = nullptr;
+  symbols_.enter_function(nullptr);
 }
 
 void Checker::statement(const ast::Stmt* s) {

@@ -38,6 +38,7 @@ Value Checker::expr(const ast::Expr* e) {
 Value Checker::identifier(const ast::IdentifierExpr& e) {
   if (const Variable* var = lookup(e.name)) {
     if (var->builtin && !builtin_available(e.name, e.range, false)) return error_value(e.range);
+    symbols_.use_variable(e.name, e.range, var->range, var->type, var->builtin);
     Value v;
     v.type = var->type;
     v.range = e.range;
@@ -51,6 +52,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
   }
   if (const Unit* unit = result_.registry.find_unit(e.name)) {
     // A unit in an expression is a constant of its dimension (docs/language.md).
+    symbols_.use_unit(e.name, e.range, unit->dimension);
     Value v;
     v.type = Type::scalar_of(Scalar::float_);
     v.type.dim = DimSlot::known(unit->dimension);
@@ -369,6 +371,7 @@ Value Checker::member(const ast::MemberExpr& e) {
   if (t.shape == Shape::structure && !t.is_array()) {
     for (const StructField& f : t.structure->fields) {
       if (f.name == e.member) {
+        symbols_.use_field(t.structure, f.name, e.member_range, f.type);
         out.type = f.type;
         return out;
       }

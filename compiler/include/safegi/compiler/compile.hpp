@@ -19,6 +19,8 @@
 
 #include <safegi/diagnostics/diagnostic.hpp>
 #include <safegi/diagnostics/source_manager.hpp>
+#include <safegi/lexer/preprocessor.hpp>
+#include <safegi/parser/parser.hpp>
 #include <safegi/runtime_gl/symbol_table.hpp>
 #include <safegi/typechecker/checker.hpp>
 
@@ -59,12 +61,28 @@ struct CompileOptions {
   // Reads `#include`d files; default: the file system. The prelude is always
   // served from memory.
   std::function<std::optional<std::string>(const std::string& path)> read_file;
+  // Keep each checked stage's tokens, syntax tree and checker result, with
+  // the checker's symbols recorded (StageOutput::analysis): what an editor
+  // asks about (lsp/). Off by default.
+  bool keep_analysis = false;
+};
+
+// One stage's front-end products, kept when CompileOptions::keep_analysis is
+// set. Locations refer to CompileResult::sources.
+struct StageAnalysis {
+  FileId file = kNoFile;        // the stage's main file
+  PreprocessedUnit preprocessed;
+  ParseResult parsed;
+  CheckResult checked;          // with CheckResult::symbols
 };
 
 struct StageOutput {
   Stage stage = Stage::unknown;
   std::string path;
   std::string glsl;  // empty when the stage had errors
+  // With CompileOptions::keep_analysis, for a stage that parsed (and so was
+  // checked); null otherwise.
+  std::shared_ptr<const StageAnalysis> analysis;
 };
 
 struct CompileResult {
@@ -100,5 +118,14 @@ std::optional<gl::Stage> to_table_stage(Stage stage);
 // The built-in prelude's text and the virtual include directory that serves it.
 std::string_view prelude_text();
 inline constexpr std::string_view kBuiltinIncludeDir = "<builtin>";
+inline constexpr std::string_view kBuiltinPreludePath = "<builtin>/safegi/prelude.sgl";  // its path in diagnostics
+
+// compile()'s default reader: the file's bytes, or nothing when it cannot be read.
+std::optional<std::string> read_file_from_disk(const std::string& path);
+
+// The preprocessor options compile() runs with: `options`' include paths,
+// then the built-in directory serving the prelude; its reader, else the disk.
+// For tools that preprocess on their own (lsp/ completion).
+PreprocessorOptions preprocessor_options(const CompileOptions& options);
 
 }  // namespace safegi

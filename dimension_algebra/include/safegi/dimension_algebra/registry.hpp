@@ -113,6 +113,15 @@ class DimensionRegistry {
   std::string format(const Dimension& d, Notation notation = Notation::unicode) const;
   // Always the normalised product of bases, never a derived name.
   std::string format_product(const Dimension& d, Notation notation = Notation::unicode) const;
+  // In SI units, for people: the prelude's bases as m, s, J, rad and sr,
+  // J·s⁻¹ combined into W, positive exponents first (`W·m⁻²·sr⁻¹` for
+  // radiance, ASCII `W*m^-2*sr^-1`); a base without an SI symbol (a program's
+  // own `pixel`) keeps its name; nothing left prints as `1`. `proj` is left
+  // out: the projected-cosine factor is a ratio of lengths, a pure number in
+  // SI, and radiometry writes radiance per projected solid angle as
+  // W·m⁻²·sr⁻¹. The checker keeps proj (format_product shows it); these
+  // words are what a reader compares with a textbook.
+  std::string format_units(const Dimension& d, Notation notation = Notation::unicode) const;
   std::string format_rational(const std::vector<RationalFactor>& factors, Notation notation = Notation::unicode) const;
   std::string describe(const DimensionError& error) const;
 

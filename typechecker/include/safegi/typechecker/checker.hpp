@@ -47,6 +47,9 @@ struct CheckOptions {
   // their "in expansion of macro X" notes.
   const std::vector<Token>* tokens = nullptr;
   const SourceManager* sources = nullptr;
+  // Record CheckResult::symbols (editors: hover, go to definition). Off by
+  // default: a compilation for a driver does not pay for it.
+  bool record_symbols = false;
 };
 
 enum class InterfaceKind : std::uint8_t { uniform, input, output, buffer, shared };
@@ -90,6 +93,37 @@ struct CallInfo {
   GeometricOp op = GeometricOp::none;
 };
 
+// What a name written in the program stands for (CheckOptions::record_symbols).
+enum class SymbolKind : std::uint8_t {
+  variable,             // globals, locals, parameters, interface variables, members of blocks without instance name
+  field,                // a struct or block member, where declared and where reached through '.'
+  function,             // a user function
+  structure,            // a struct name
+  builtin_variable,     // gl_Position, ...
+  builtin_function,     // dot, transform, ... (the table's signature in type_text)
+  dimension,            // base or derived dimension
+  unit,
+  space,
+  dimension_parameter,  // template<dimension D>
+  space_parameter,      // template<space S>
+};
+const char* symbol_kind_name(SymbolKind kind);  // "variable", "field", ..., "space parameter"
+
+// One occurrence of a name: each declaration and each use.
+struct SymbolOccurrence {
+  SymbolKind kind = SymbolKind::variable;
+  std::string name;
+  SourceRange range;          // the name as written here (for a token from a macro: in the #define)
+  SourceRange declaration;    // the name in its (first) declaration; invalid for built-ins
+  bool is_declaration = false;
+  // Variables and fields: their type; functions: the result at this call (the
+  // declared one at the declaration); units and dimensions: float<D>.
+  Type type;
+  // In the program's words (template parameters by name); for functions the
+  // whole declaration, `template<dimension D> float<D> f(float<D> x)`.
+  std::string type_text;
+};
+
 struct CheckResult {
   Stage stage = Stage::unknown;                                  // CheckOptions::stage
   DimensionRegistry registry;                                    // the program's declarations (and the prelude it included)
@@ -99,6 +133,7 @@ struct CheckResult {
   std::unordered_map<const ast::ConvertExpr*, ConversionInfo> conversions;  // every `e in target` that checked
   std::vector<InterfaceVariable> interface;                      // uniforms (incl. block members), inputs, outputs, buffers
   std::vector<std::unique_ptr<StructInfo>> structs;              // owned: Type::structure points here
+  std::vector<SymbolOccurrence> symbols;                         // only with CheckOptions::record_symbols, in checking order
 
   const Type* type_of(const ast::Node* node) const;
   const Type* type_of(const ast::Declarator* declarator) const;

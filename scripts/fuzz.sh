@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Runs one of SafeGI's libFuzzer targets with ASan + UBSan for a fixed budget
+# (default 60 s):
+#
+#   scripts/fuzz.sh compiler [seconds]   the whole safeglslc pipeline, seeded with
+#                                        the example and golden-test shaders
+#   scripts/fuzz.sh lsp [seconds]        safegi-lsp's engine (framing, JSON-RPC,
+#                                        documents, requests), seeded with the
+#                                        sessions in lsp/fuzz/seeds/
+#   SAFEGI_FUZZ_RUNS=N SAFEGI_FUZZ_SEED=S scripts/fuzz.sh <target>
+#       a fixed number of inputs from a fixed seed instead of a time budget:
+#       the same inputs every time, as CI needs.
+#
+# Builds in build-fuzz/ (clang, its own build directory, shared by the
+# targets). A crash leaves its input in build-fuzz/fuzz-artifacts/<target>/
+# and the script exits non-zero; turn every such input into a regression test
+# (compiler: a golden case under testsuite/golden/cases/fuzz/; lsp: a case in
+# lsp/src/server_test.cpp).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+target=${1:?usage: scripts/fuzz.sh compiler|lsp [seconds]}
+seconds=${2:-60}
+build=${SAFEGI_FUZZ_BUILD_DIR:-$root/build-fuzz}
+jobs=${JOBS:-2}
+
+case "$target" in
+  compiler) executable=safegi_compile_fuzzer ;;
+  lsp) executable=safegi_lsp_fuzzer ;;
+  *) echo "fuzz.sh: unknown target '$target' (compiler or lsp)" >&2; exit 2 ;;
+esac
+
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
+  -DSAFEGI_SANITIZE=ON -DSAFEGI_FUZZ=ON \
+  -DSAFEGI_BUILD_TESTS=OFF -DSAFEGI_BUILD_BENCH=OFF -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_RENDERER=OFF >/dev/null
+cmake --build "$build" -j"$jobs" --target "$executable"
+
+corpus="$build/fuzz-corpus/$target"
+artifacts="$build/fuzz-artifacts/$target"
+mkdir -p "$corpus" "$artifacts"
+# Seeds are copied, so libFuzzer may add to the corpus directory.
+if [[ "$target" == compiler ]]; then
+  find "$root/examples" "$root/testsuite/golden/cases" "$root/runtime_gl/testdata" "$root/compiler/testdata" \
+    -type f \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' -o -name '*.tesc' \
+    -o -name '*.tese' -o -name '*.sgl' -o -name '*.glsl' \) -exec cp -t "$corpus" {} + 2>/dev/null || true
+else
+  cp -t "$corpus" "$root"/lsp/fuzz/seeds/*
+fi
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+budget=(-max_total_time="$seconds")
+if [[ -n "${SAFEGI_FUZZ_RUNS:-}" ]]; then
+  budget=(-runs="$SAFEGI_FUZZ_RUNS" -seed="${SAFEGI_FUZZ_SEED:-1}")
+fi
+exec "$build/bin/$executable" "${budget[@]}" -max_len=16384 -timeout=10 \
+  -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus"
