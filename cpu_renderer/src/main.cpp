@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    Scene scene = load_scene(scene_file);
+    Scene scene = load_scene(scene_file, SceneLoadOptions{read_image});
     RenderOptions options;
     options.settings = scene.settings;
     if (spp > 0) options.settings.spp = spp;

@@ -17,6 +17,7 @@
 #include <tiny_obj_loader.h>
 
 #include "ply.hpp"
+#include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/unit_expression.hpp"
 
 namespace safegi::render {
@@ -76,8 +77,8 @@ std::string short_dump(const Json& value) {
 
 class Loader {
  public:
-  Loader(std::string_view display_name, std::filesystem::path base_directory)
-      : display_name_(display_name), base_directory_(std::move(base_directory)) {}
+  Loader(std::string_view display_name, std::filesystem::path base_directory, const SceneLoadOptions& options)
+      : display_name_(display_name), base_directory_(std::move(base_directory)), options_(options) {}
 
   Scene load(const Json& root);
 
@@ -235,9 +236,32 @@ class Loader {
     return sg::from_raw<P>(to_vec3(triple(value, path, runtime_dim::length)));
   }
 
+  // A number without unit, in [minimum, maximum].
+  float number(const Json& value, const JsonPath& path, double minimum, double maximum) {
+    double v = scalar(value, path, runtime_dim::none);
+    if (!(v >= minimum && v <= maximum))
+      fail(path, "expected a number in [" + short_number(minimum) + ", " + short_number(maximum) + "], got " +
+                     short_dump(value));
+    return static_cast<float>(v);
+  }
+  static std::string short_number(double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  }
+
   void load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings);
   void load_camera(const Json& value, const JsonPath& path, Camera& camera);
+  Image read_image_file(const Json& file_value, const JsonPath& path, std::string& file);
+  ImageTexture load_texture(const std::string& name, const Json& value, const JsonPath& path);
+  // A reflectance that may be textured: a number, RGB triple or {"texture": name}.
+  Reflectance textured_reflectance(const Json& value, const JsonPath& path, int& texture);
   Material load_material(const std::string& name, const Json& value, const JsonPath& path);
+  // The diffuse reflectance's largest value in each channel, texture included.
+  Reflectance largest_diffuse(const Material& material) const {
+    return material.diffuse_texture < 0 ? material.diffuse
+                                        : material.diffuse * textures_[material.diffuse_texture]->maximum();
+  }
   Shape load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials);
   void load_mesh_file(const Json& value, const JsonPath& path, Shape& shape);
   void load_ply_file(const std::filesystem::path& full, const std::string& file, float scale, const JsonPath& path,
@@ -245,20 +269,33 @@ class Loader {
   void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
   ObjectToWorld load_transform(const Json& value, const JsonPath& path);
   PointLight load_point_light(const Json& value, const JsonPath& path);
+  EnvironmentLight load_environment(const Json& value, const JsonPath& path);
 
   std::string display_name_;
   std::filesystem::path base_directory_;
+  const SceneLoadOptions& options_;
+  std::map<std::string, int> texture_index_;
+  std::vector<const MipMap*> textures_;  // by index, for checks
 };
 
 Scene Loader::load(const Json& root) {
   JsonPath top;
-  object(root, top, {"format", "description", "render", "camera", "materials", "shapes", "lights"});
+  object(root, top, {"format", "description", "render", "camera", "textures", "materials", "shapes", "lights"});
   if (root.contains("format") && root["format"] != "safegi-scene/1")
     fail(top.field("format"), "expected \"safegi-scene/1\", got " + short_dump(root["format"]));
   Scene scene;
   if (root.contains("render")) load_render_settings(root["render"], top.field("render"), scene.settings);
   load_camera(required(root, top, "camera"), top.field("camera"), scene.camera);
 
+  if (root.contains("textures")) {
+    const Json& textures = root["textures"];
+    if (!textures.is_object()) fail(top.field("textures"), "expected an object of named textures");
+    for (const auto& [name, value] : textures.items()) {
+      texture_index_[name] = static_cast<int>(scene.textures.size());
+      scene.textures.push_back(load_texture(name, value, top.field("textures").field(name)));
+      textures_.push_back(scene.textures.back().mipmap.get());
+    }
+  }
   std::map<std::string, int> material_index;
   if (root.contains("materials")) {
     const Json& materials = root["materials"];
@@ -277,8 +314,15 @@ Scene Loader::load(const Json& root) {
   if (root.contains("lights")) {
     const Json& lights = root["lights"];
     if (!lights.is_array()) fail(top.field("lights"), "expected an array, got " + short_dump(lights));
-    for (size_t i = 0; i < lights.size(); ++i)
-      scene.point_lights.push_back(load_point_light(lights[i], top.field("lights").index(i)));
+    for (size_t i = 0; i < lights.size(); ++i) {
+      JsonPath light_path = top.field("lights").index(i);
+      if (lights[i].is_object() && lights[i].contains("type") && lights[i]["type"] == "environment") {
+        if (scene.environment) fail(light_path, "a scene has at most one environment light");
+        scene.environment = load_environment(lights[i], light_path);
+      } else {
+        scene.point_lights.push_back(load_point_light(lights[i], light_path));
+      }
+    }
   }
   return scene;
 }
@@ -286,7 +330,7 @@ Scene Loader::load(const Json& root) {
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
          {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "russian_roulette",
-          "russian_roulette_depth"});
+          "russian_roulette_depth", "photons", "photon_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -300,7 +344,8 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     std::string name = string(value["integrator"], path.field("integrator"));
     if (name == "direct") settings.integrator = IntegratorType::direct;
     else if (name == "path") settings.integrator = IntegratorType::path;
-    else fail(path.field("integrator"), "expected \"direct\" or \"path\", got " + short_dump(value["integrator"]));
+    else if (name == "photon") settings.integrator = IntegratorType::photon;
+    else fail(path.field("integrator"), "expected \"direct\", \"path\" or \"photon\", got " + short_dump(value["integrator"]));
   }
   if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
   if (value.contains("light_samples"))
@@ -310,6 +355,11 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   if (value.contains("russian_roulette_depth"))
     settings.russian_roulette_depth =
         integer(value["russian_roulette_depth"], path.field("russian_roulette_depth"), 0, 1024);
+  if (value.contains("photons")) settings.photons = integer(value["photons"], path.field("photons"), 1, 1 << 28);
+  if (value.contains("photon_radius")) {
+    settings.photon_radius = typed_scalar<dim::length>(value["photon_radius"], path.field("photon_radius"));
+    if (!(settings.photon_radius > sg::zero)) fail(path.field("photon_radius"), "must be positive");
+  }
 }
 
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
@@ -345,6 +395,98 @@ void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera
   }
 }
 
+Image Loader::read_image_file(const Json& file_value, const JsonPath& path, std::string& file) {
+  file = string(file_value, path);
+  std::filesystem::path full = base_directory_ / file;
+  if (!std::filesystem::is_regular_file(full)) fail(path, "cannot read image '" + file + "': no such file");
+  Image image;
+  try {
+    if (options_.read_image) {
+      image = options_.read_image(full);
+    } else {
+      std::string extension = full.extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (extension != ".pfm")
+        fail(path, "cannot read image '" + file + "': this program reads PFM images only (no OpenImageIO)");
+      image = read_pfm(full);
+    }
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& error) {
+    fail(path, "cannot read image '" + file + "': " + error.what());
+  }
+  if (image.width < 1 || image.height < 1 ||
+      image.rgb.size() != 3 * static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
+    fail(path, "cannot read image '" + file + "': it has no pixels");
+  for (float v : image.rgb)
+    if (!std::isfinite(v) || v < 0) fail(path, "image '" + file + "' has a negative or non-finite value");
+  return image;
+}
+
+ImageTexture Loader::load_texture(const std::string& name, const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  if (type != "image") fail(path.field("type"), "expected \"image\", got " + short_dump(value["type"]));
+  object(value, path, {"type", "file", "colour_space", "filter", "wrap", "scale", "uv_scale", "uv_offset"});
+  ImageTexture texture;
+  texture.name = name;
+  Image image = read_image_file(required(value, path, "file"), path.field("file"), texture.file);
+  // 8-bit images are painted in sRGB; floating-point formats hold linear values.
+  std::string extension = std::filesystem::path(texture.file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  bool linear_format = extension == ".exr" || extension == ".hdr" || extension == ".pfm";
+  texture.colour_space = linear_format ? ColourSpace::linear : ColourSpace::srgb;
+  if (value.contains("colour_space")) {
+    std::string space = string(value["colour_space"], path.field("colour_space"));
+    if (space == "srgb") texture.colour_space = ColourSpace::srgb;
+    else if (space == "linear") texture.colour_space = ColourSpace::linear;
+    else fail(path.field("colour_space"), "expected \"srgb\" or \"linear\", got " + short_dump(value["colour_space"]));
+  }
+  if (value.contains("filter")) {
+    std::string filter = string(value["filter"], path.field("filter"));
+    if (filter == "bilinear") texture.filter = TextureFilter::bilinear;
+    else if (filter == "trilinear") texture.filter = TextureFilter::trilinear;
+    else fail(path.field("filter"), "expected \"bilinear\" or \"trilinear\", got " + short_dump(value["filter"]));
+  }
+  TextureWrap wrap = TextureWrap::repeat;
+  if (value.contains("wrap")) {
+    std::string mode = string(value["wrap"], path.field("wrap"));
+    if (mode == "repeat") wrap = TextureWrap::repeat;
+    else if (mode == "clamp") wrap = TextureWrap::clamp;
+    else if (mode == "black") wrap = TextureWrap::black;
+    else fail(path.field("wrap"), "expected \"repeat\", \"clamp\" or \"black\", got " + short_dump(value["wrap"]));
+  }
+  if (value.contains("scale")) texture.scale = number(value["scale"], path.field("scale"), 0, 1e6);
+  auto pair = [&](const char* field, float& a, float& b) {
+    if (!value.contains(field)) return;
+    const Json& v = value[field];
+    if (!v.is_array() || v.size() != 2) fail(path.field(field), "expected [u, v], got " + short_dump(v));
+    a = number(v[0], path.field(field).index(0), -1e6, 1e6);
+    b = number(v[1], path.field(field).index(1), -1e6, 1e6);
+  };
+  pair("uv_scale", texture.u_scale, texture.v_scale);
+  pair("uv_offset", texture.u_offset, texture.v_offset);
+  texture.mipmap = std::make_shared<MipMap>(to_linear_texels(std::move(image), texture.colour_space, texture.scale, true),
+                                            wrap);
+  return texture;
+}
+
+Reflectance Loader::textured_reflectance(const Json& value, const JsonPath& path, int& texture) {
+  if (value.is_object() && value.contains("texture")) {
+    object(value, path, {"texture"});
+    std::string name = string(value["texture"], path.field("texture"));
+    auto found = texture_index_.find(name);
+    if (found == texture_index_.end()) fail(path.field("texture"), "no texture named " + short_dump(value["texture"]));
+    texture = found->second;
+    if (sg::max_component(textures_[texture]->maximum()) > 1.0f)
+      fail(path.field("texture"), "texture " + short_dump(value["texture"]) +
+                                      " has values above 1 and cannot be a reflectance (check its scale)");
+    return Reflectance(1.0f);
+  }
+  texture = -1;
+  return reflectance(value, path);
+}
+
 Material Loader::load_material(const std::string& name, const Json& value, const JsonPath& path) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
@@ -353,23 +495,45 @@ Material Loader::load_material(const std::string& name, const Json& value, const
   if (type == "lambert") {
     object(value, path, {"type", "reflectance"});
     material.type = Material::Type::lambert;
-    material.diffuse = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+    material.diffuse =
+        textured_reflectance(required(value, path, "reflectance"), path.field("reflectance"), material.diffuse_texture);
   } else if (type == "phong") {
     object(value, path, {"type", "diffuse", "specular", "exponent"});
     material.type = Material::Type::phong;
-    material.diffuse = reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    material.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"), material.diffuse_texture);
     material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
     double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
     if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
     material.exponent = static_cast<float>(exponent);
-    if (sg::max_component(material.diffuse + material.specular) > 1.0f)
+    if (sg::max_component(largest_diffuse(material) + material.specular) > 1.0f)
       fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else if (type == "mirror") {
     object(value, path, {"type", "reflectance"});
     material.type = Material::Type::mirror;
     material.specular = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+  } else if (type == "glass") {
+    object(value, path, {"type", "ior", "reflectance", "transmittance"});
+    material.type = Material::Type::glass;
+    material.ior = number(required(value, path, "ior"), path.field("ior"), 1.0 / 16, 16);
+    material.specular = value.contains("reflectance") ? reflectance(value["reflectance"], path.field("reflectance"))
+                                                      : Reflectance(1.0f);
+    material.transmission = value.contains("transmittance")
+                                ? reflectance(value["transmittance"], path.field("transmittance"))
+                                : Reflectance(1.0f);
+  } else if (type == "plastic") {
+    object(value, path, {"type", "diffuse", "specular", "alpha", "ior", "pbrt_v3_fresnel"});
+    material.type = Material::Type::plastic;
+    material.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"), material.diffuse_texture);
+    material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    material.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    if (value.contains("ior")) material.ior = number(value["ior"], path.field("ior"), 1, 16);
+    if (value.contains("pbrt_v3_fresnel"))
+      material.pbrt_v3_plastic_fresnel = boolean(value["pbrt_v3_fresnel"], path.field("pbrt_v3_fresnel"));
+    if (sg::max_component(largest_diffuse(material) + material.specular) > 1.0f)
+      fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else {
-    fail(path.field("type"), "expected \"lambert\", \"phong\" or \"mirror\", got " + short_dump(value["type"]));
+    fail(path.field("type"), "expected \"lambert\", \"phong\", \"mirror\", \"glass\" or \"plastic\", got " +
+                                 short_dump(value["type"]));
   }
   return material;
 }
@@ -401,6 +565,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     if (!(sg::length(sg::cross(u, v)) > sg::zero)) fail(path, "edge_u and edge_v must span a parallelogram");
     shape.positions = {origin, origin + u, origin + u + v, origin + v};
     shape.indices = {0, 1, 2, 0, 2, 3};
+    shape.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   } else if (type == "sphere") {
     allow({"center", "radius"});
     shape.type = Shape::Type::sphere;
@@ -411,7 +576,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     allow({"file", "unit"});
     load_mesh_file(value, path, shape);
   } else if (type == "triangles") {
-    allow({"positions", "indices"});
+    allow({"positions", "indices", "uvs"});
     load_triangles(value, path, shape);
   } else {
     fail(path.field("type"),
@@ -482,11 +647,32 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
+  // Texture coordinates have their own indices in OBJ: with them, each distinct
+  // (position, texcoord) pair becomes one vertex.
+  const auto& texcoords = reader.GetAttrib().texcoords;
+  bool textured = !texcoords.empty();
+  for (const tinyobj::shape_t& obj_shape : reader.GetShapes())
+    for (const tinyobj::index_t& index : obj_shape.mesh.indices)
+      textured = textured && index.texcoord_index >= 0 && 2 * static_cast<size_t>(index.texcoord_index) + 1 < texcoords.size();
+  std::vector<PointObject> obj_positions;
+  if (textured) obj_positions.swap(shape.positions);
+  std::map<std::pair<int, int>, uint32_t> vertex_of;
   for (const tinyobj::shape_t& obj_shape : reader.GetShapes()) {
     for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
-      if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= shape.positions.size())
+      size_t count = textured ? obj_positions.size() : shape.positions.size();
+      if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= count)
         fail(path.field("file"), "mesh '" + file + "' has a face with a vertex index out of range");
-      shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
+      if (!textured) {
+        shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
+        continue;
+      }
+      auto [found, inserted] = vertex_of.try_emplace({index.vertex_index, index.texcoord_index},
+                                                     static_cast<uint32_t>(shape.positions.size()));
+      if (inserted) {
+        shape.positions.push_back(obj_positions[index.vertex_index]);
+        shape.uvs.push_back({texcoords[2 * index.texcoord_index], texcoords[2 * index.texcoord_index + 1]});
+      }
+      shape.indices.push_back(found->second);
     }
   }
   if (shape.indices.empty() || shape.indices.size() % 3 != 0)
@@ -511,6 +697,10 @@ void Loader::load_ply_file(const std::filesystem::path& full, const std::string&
     if (!std::isfinite(scaled.x) || !std::isfinite(scaled.y) || !std::isfinite(scaled.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(scaled));
+  }
+  for (const std::array<float, 2>& uv : mesh.uvs) {
+    if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) fail(path.field("file"), "mesh '" + file + "' has a non-finite texture coordinate");
+    shape.uvs.push_back({uv[0], uv[1]});
   }
   shape.indices = std::move(mesh.indices);
   if (shape.indices.empty()) fail(path.field("file"), "mesh '" + file + "' has no triangles");
@@ -546,6 +736,17 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
   if (last < 0) fail(positions_path.field("value"), "expected at least 3 points");
   for (size_t i = 0; i < indices.size(); ++i)
     shape.indices.push_back(static_cast<uint32_t>(integer(indices[i], path.field("indices").index(i), 0, last)));
+  if (value.contains("uvs")) {
+    const Json& uvs = value["uvs"];
+    JsonPath uvs_path = path.field("uvs");
+    if (!uvs.is_array() || uvs.size() != shape.positions.size())
+      fail(uvs_path, "expected one [u, v] per position (" + std::to_string(shape.positions.size()) + ")");
+    for (size_t i = 0; i < uvs.size(); ++i) {
+      if (!uvs[i].is_array() || uvs[i].size() != 2) fail(uvs_path.index(i), "expected [u, v], got " + short_dump(uvs[i]));
+      shape.uvs.push_back({number(uvs[i][0], uvs_path.index(i).index(0), -1e6, 1e6),
+                           number(uvs[i][1], uvs_path.index(i).index(1), -1e6, 1e6)});
+    }
+  }
 }
 
 ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
@@ -621,6 +822,30 @@ PointLight Loader::load_point_light(const Json& value, const JsonPath& path) {
   return light;
 }
 
+EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& path) {
+  object(value, path, {"type", "name", "radiance", "file", "transform"});
+  EnvironmentLight light;
+  light.radiance = value.contains("radiance") ? typed_spectrum<dim::radiance>(value["radiance"], path.field("radiance"))
+                                              : Radiance(1.0f * units::radiance_unit);
+  if (!value.contains("radiance") && !value.contains("file"))
+    fail(path, "expected 'radiance', 'file' or both");
+  if (light.radiance.r() < sg::zero || light.radiance.g() < sg::zero || light.radiance.b() < sg::zero)
+    fail(path.field("radiance"), "radiance must not be negative");
+  if (value.contains("file")) {
+    Image image = read_image_file(value["file"], path.field("file"), light.file);
+    light.map = std::make_shared<MipMap>(std::move(image), TextureWrap::longitude_latitude);
+  }
+  if (value.contains("transform")) {
+    const Json& steps = value["transform"];
+    if (steps.is_array())
+      for (size_t i = 0; i < steps.size(); ++i)
+        if (!steps[i].is_object() || !steps[i].contains("rotate"))
+          fail(path.field("transform").index(i), "an environment light can only be rotated");
+    light.render_from_light = sg::from_raw<LightToWorld>(sg::raw(load_transform(steps, path.field("transform"))));
+  }
+  return light;
+}
+
 std::string line_and_column(std::string_view text, size_t byte) {
   size_t line = 1, column = 1;
   for (size_t i = 0; i < byte && i < text.size(); ++i) {
@@ -657,7 +882,7 @@ std::string without_exception_id(const std::string& message) {
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
-                  const std::filesystem::path& base_directory) {
+                  const std::filesystem::path& base_directory, const SceneLoadOptions& options) {
   Json root;
   try {
     root = Json::parse(json_text.begin(), json_text.end());
@@ -672,18 +897,18 @@ Scene parse_scene(std::string_view json_text, std::string_view display_name,
     throw SceneError(std::string(display_name) + ": invalid JSON: " + printable(without_exception_id(error.what())));
   }
   try {
-    return Loader(display_name, base_directory).load(root);
+    return Loader(display_name, base_directory, options).load(root);
   } catch (const Json::exception& error) {  // a value of a type the loader did not expect
     throw SceneError(std::string(display_name) + ": " + printable(without_exception_id(error.what())));
   }
 }
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
   std::ifstream stream(file, std::ios::binary);
   if (!stream || std::filesystem::is_directory(file)) throw SceneError(file.string() + ": cannot open scene file");
   std::ostringstream text;
   text << stream.rdbuf();
-  return parse_scene(text.str(), file.string(), file.parent_path());
+  return parse_scene(text.str(), file.string(), file.parent_path(), options);
 }
 
 }  // namespace safegi::render

@@ -51,7 +51,7 @@ TEST(SceneLoader, MalformedInput) {
   EXPECT_EQ(load_error("[]"), "test.json: expected an object, got []");
   EXPECT_EQ(load_error("{}"), "test.json: missing field 'camera'");
   EXPECT_EQ(load_error(with_camera(R"("colour": 1)")),
-            "test.json: colour: unknown field (expected one of: format, description, render, camera, materials, shapes, lights)");
+            "test.json: colour: unknown field (expected one of: format, description, render, camera, textures, materials, shapes, lights)");
   EXPECT_EQ(load_error(with_camera(R"("lights": [{"type": "point", "position": {"value": [0, 1, 0], "unit": "m"}, "power": "3 parsec"}])")),
             "test.json: lights[0].power: cannot read \"3 parsec\": unknown unit 'parsec'");
   EXPECT_EQ(load_error(with_camera(R"("shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "m"}, "radius": "1 m", "material": "gold"}])")),

@@ -16,6 +16,7 @@ namespace units = ::safegi::units;
 using World = spaces::world;
 using Object = spaces::object;
 using Shading = spaces::shading;
+using LightSpace = spaces::light;
 
 using Length = quantity<dim::length>;
 using Time = quantity<dim::time>;
@@ -39,6 +40,7 @@ using DirectionWorld = direction<World>;
 using NormalWorld = normal<World>;
 using DirectionShading = direction<Shading>;
 using ObjectToWorld = map<Object, World>;
+using LightToWorld = map<LightSpace, World>;
 using ShadingFrame = frame<World, Shading>;
 
 // Solid angle subtended per unit of area at distance r whose normal makes
