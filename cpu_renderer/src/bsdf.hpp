@@ -24,7 +24,7 @@ class Bsdf {
  public:
   explicit Bsdf(const Material& material) : material_(material) {
     if (material.type == Material::Type::phong) {
-      float d = sg::average(material.diffuse), s = sg::average(material.specular);
+      Real d = sg::average(material.diffuse), s = sg::average(material.specular);
       specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
     }
   }
@@ -60,7 +60,7 @@ class Bsdf {
     }
   }
 
-  std::optional<BsdfSample> sample(DirectionShading wo, float u_lobe, float u1, float u2) const {
+  std::optional<BsdfSample> sample(DirectionShading wo, Real u_lobe, Real u1, Real u2) const {
     if (wo.z() <= 0) return std::nullopt;
     switch (material_.type) {
       case Material::Type::mirror:
@@ -95,13 +95,13 @@ class Bsdf {
   }
 
   // cos^n of the angle between wi and the mirror direction of wo.
-  float lobe_cosine_power(DirectionShading wo, DirectionShading wi) const {
-    float cos_alpha = sg::dot(reflect(wo), wi);
+  Real lobe_cosine_power(DirectionShading wo, DirectionShading wi) const {
+    Real cos_alpha = sg::dot(reflect(wo), wi);
     return cos_alpha > 0 ? std::pow(cos_alpha, material_.exponent) : 0.0f;
   }
 
   const Material& material_;
-  float specular_probability_ = 0;
+  Real specular_probability_ = 0;
 };
 
 }  // namespace safegi::render

@@ -9,21 +9,21 @@
 namespace safegi::render {
 namespace {
 
-using kernel::Float3;
+using kernel::Real3;
 
 // Every BVH answer must equal a brute-force loop over the same primitives.
 TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
   std::mt19937 rng(7);
-  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f), small(-0.1f, 0.1f);
+  std::uniform_real_distribution<Real> coordinate(-1.0f, 1.0f), small(-0.1f, 0.1f);
   struct Tri {
-    Float3 a, b, c;
+    Real3 a, b, c;
   };
   std::vector<Tri> triangles;
   PrimitiveSet set;
   for (uint32_t i = 0; i < 500; ++i) {
-    Float3 center{coordinate(rng), coordinate(rng), coordinate(rng)};
-    Tri t{center + Float3{small(rng), small(rng), small(rng)}, center + Float3{small(rng), small(rng), small(rng)},
-          center + Float3{small(rng), small(rng), small(rng)}};
+    Real3 center{coordinate(rng), coordinate(rng), coordinate(rng)};
+    Tri t{center + Real3{small(rng), small(rng), small(rng)}, center + Real3{small(rng), small(rng), small(rng)},
+          center + Real3{small(rng), small(rng), small(rng)}};
     triangles.push_back(t);
     set.add_triangle(t.a, t.b, t.c, i);
   }
@@ -36,10 +36,10 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
   }
   int hits = 0;
   for (int r = 0; r < 2000; ++r) {
-    Float3 origin{coordinate(rng) * 2, coordinate(rng) * 2, coordinate(rng) * 2};
-    Float3 direction = kernel::normalize(Float3{coordinate(rng), coordinate(rng), coordinate(rng)});
+    Real3 origin{coordinate(rng) * 2, coordinate(rng) * 2, coordinate(rng) * 2};
+    Real3 direction = kernel::normalize(Real3{coordinate(rng), coordinate(rng), coordinate(rng)});
     kernel::Ray ray{origin, direction, 0.0f};
-    float best = kernel::kInfinity;
+    Real best = kernel::kInfinity;
     for (const PrimitiveSet& single : singles)
       if (auto hit = single.intersect(ray, best)) best = hit->distance;
     std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);

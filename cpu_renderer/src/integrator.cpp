@@ -12,7 +12,7 @@ namespace {
 // Both densities in one measure, so their ratio is a plain number. With n light
 // samples against one BSDF sample, the light strategy's density counts n times
 // (Veach's power heuristic with sample counts).
-float mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
+Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
 
 }  // namespace
 
@@ -23,9 +23,9 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
                                    DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const {
   Radiance sum;
   const int samples = one_light_sample ? 1 : light_samples_;
-  const float count = static_cast<float>(samples);
+  const Real count = static_cast<Real>(samples);
   for (int i = 0; i < samples; ++i) {
-    float u_light = sampler.next_1d();
+    Real u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
     std::optional<LightSample> light = lights_.sample(hit.position, time, u_light, u_point.u, u_point.v);
     if (!light) continue;
@@ -40,7 +40,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if constexpr (area_lights) {
       if (!light->delta) {
         PdfSolidAngle light_pdf = light->pdf * count;
-        float weight = mis_ ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
+        Real weight = mis_ ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
         sum += f * light->radiance * sg::cos_theta(wi) * (weight / light_pdf);
         continue;
       }
@@ -70,7 +70,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
           radiance += throughput * emitted;
         } else if (mis_) {
           PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) *
-                                    static_cast<float>(one_light_sample ? 1 : light_samples_);
+                                    static_cast<Real>(one_light_sample ? 1 : light_samples_);
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
         }
       }
@@ -87,7 +87,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (!bsdf.is_specular() && !lights_.empty())
       radiance += throughput * sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, counters);
 
-    float u_lobe = sampler.next_1d();
+    Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
     std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     if (!scattered) break;
@@ -105,7 +105,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
     ++counters.extension;
     if (depth >= roulette_depth_ && !last_vertex) {
-      float survival = std::min(0.95f, sg::max_component(throughput));
+      Real survival = std::min(Real(0.95), sg::max_component(throughput));
       if (sampler.next_1d() >= survival) break;
       throughput = throughput / survival;
     }

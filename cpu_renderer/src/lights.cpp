@@ -78,34 +78,34 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
   double running = 0;
   for (double p : powers) {
     running += total > 0 ? p / total : 1.0 / static_cast<double>(powers.size());
-    power_cdf_.push_back(static_cast<float>(running));
+    power_cdf_.push_back(static_cast<Real>(running));
   }
   if (!power_cdf_.empty()) power_cdf_.back() = 1.0f;
 }
 
-float Lights::selection_probability(uint32_t light) const {
+Real Lights::selection_probability(uint32_t light) const {
   return power_cdf_[light] - (light == 0 ? 0.0f : power_cdf_[light - 1]);
 }
 
-uint32_t Lights::choose(float u) const {
+uint32_t Lights::choose(Real u) const {
   auto found = std::upper_bound(power_cdf_.begin(), power_cdf_.end(), u);
   return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
 }
 
 template <class Space>
 const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles,
-                                                              const Light& light, float u) const {
+                                                              const Light& light, Real u) const {
   const EmitterTriangle<Space>* first = triangles.data() + light.first_triangle;
   const EmitterTriangle<Space>* last = first + light.triangle_count;
   const EmitterTriangle<Space>* tri =
-      std::upper_bound(first, last, u, [](float v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
+      std::upper_bound(first, last, u, [](Real v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
   return tri == last ? *(last - 1) : *tri;
 }
 
 // The emitter at `time`: a sphere where its centre and radius have moved; a
 // mesh point drawn by object-space area, whose density per world area divides
 // by the area the motion's pose stretches it to.
-Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const {
+Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const {
   const RigidMotion& motion = motions_[light.motion];
   ObjectToWorld render_from_object = motion.render_from_object(time);
   SurfacePoint point;
@@ -121,8 +121,8 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float 
     return point;
   }
   const EmitterTriangle<Object>& tri = choose_triangle(object_triangles_, light, u_triangle);
-  float root = std::sqrt(u1);
-  float b1 = 1 - root, b2 = u2 * root;
+  Real root = std::sqrt(u1);
+  Real b1 = 1 - root, b2 = u2 * root;
   VectorWorld e1 = render_from_object(tri.e1), e2 = render_from_object(tri.e2);
   PointWorld p0 = render_from_object(tri.p0);
   VectorWorld along_u = e1 * b1, along_v = e2 * b2;
@@ -135,11 +135,11 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float 
   return point;
 }
 
-std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float u_light, float u1, float u2) const {
+std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const {
   if (lights_.empty()) return std::nullopt;
   uint32_t index = choose(u_light);
   const Light& light = lights_[index];
-  float probability = selection_probability(index);
+  Real probability = selection_probability(index);
   if (!(probability > 0)) return std::nullopt;
   LightSample sample;
   if (light.type == Light::Type::point) {
@@ -154,8 +154,8 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
     return sample;
   }
   // Reuse what is left of u_light to pick a triangle by area.
-  float low = index == 0 ? 0.0f : power_cdf_[index - 1];
-  float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
+  Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
+  Real u_triangle = std::min((u_light - low) / probability, Real(0x1.fffffep-1f));
   NormalWorld normal;
   PdfArea pdf_area = light.pdf_area;
   if (light.motion >= 0) {
@@ -172,8 +172,8 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
     sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
   } else {
     const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-    float root = std::sqrt(u1);
-    float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+    Real root = std::sqrt(u1);
+    Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
     VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
     sample.position = tri.p0 + along_u + along_v;
     sample.position_error =

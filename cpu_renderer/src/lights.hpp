@@ -14,15 +14,15 @@ namespace safegi::render {
 // A point on a light as seen from a shading point.
 struct LightSample {
   PointWorld position;
-  Float3 position_error;   // metres
-  Float3 emitter_normal;   // unit normal of an area light; zero for point lights
+  Real3 position_error;   // metres
+  Real3 emitter_normal;   // unit normal of an area light; zero for point lights
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
   bool delta = false;      // a point light: no density over directions
   // Point lights: the intensity towards the shading point and the probability
   // of having chosen this light.
   Intensity intensity;
-  float probability = 0;
+  Real probability = 0;
   // Area lights: the emitted radiance and the density of this direction,
   // light choice included.
   Radiance radiance;
@@ -37,7 +37,7 @@ class Lights {
   bool has_area_lights() const { return has_area_lights_; }
 
   // One light chosen by power, then a point on it, where it is at `time`.
-  std::optional<LightSample> sample(PointWorld reference, Time time, float u_light, float u1, float u2) const;
+  std::optional<LightSample> sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const;
 
   // Radiance an emissive surface sends back along `incoming` (towards -incoming).
   Radiance emitted(const SurfaceHit& hit, DirectionWorld incoming) const;
@@ -65,31 +65,31 @@ class Lights {
   struct EmitterTriangle {
     point<Space> p0;
     vector<Space> e1, e2;
-    float area_cdf;  // cumulative area within its light, 1 at its last triangle
+    Real area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.
   struct SurfacePoint {
     PointWorld position;
-    Float3 position_error;
+    Real3 position_error;
     NormalWorld normal;
     PdfArea pdf_area = sg::zero;
   };
 
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
-                                                float u) const;
-  SurfacePoint sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const;
+                                                Real u) const;
+  SurfacePoint sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 
-  float selection_probability(uint32_t light) const;
-  uint32_t choose(float u) const;
+  Real selection_probability(uint32_t light) const;
+  uint32_t choose(Real u) const;
 
   std::vector<Light> lights_;
   std::vector<EmitterTriangle<World>> triangles_;
   std::vector<EmitterTriangle<Object>> object_triangles_;  // of moving emitters
   std::vector<RigidMotion> motions_;
-  std::vector<float> power_cdf_;
+  std::vector<Real> power_cdf_;
   std::vector<int32_t> light_of_shape_;
   bool has_area_lights_ = false;
 };

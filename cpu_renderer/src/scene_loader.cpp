@@ -50,8 +50,8 @@ RuntimeDimension runtime_dimension_of() {
   return runtime_dimension(D{});
 }
 
-glm::vec3 to_vec3(const Triple& t) {
-  return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+sg::vec3_rep to_vec3(const Triple& t) {
+  return {static_cast<Real>(t[0]), static_cast<Real>(t[1]), static_cast<Real>(t[2])};
 }
 
 // Where a value sits in the document, spelled as in error messages: shapes[2].radius.
@@ -108,13 +108,16 @@ class Loader {
     return *found;
   }
 
-  // Every value ends up in a float: one that would become infinite, or 0 from a
-  // non-zero value, is an error rather than a silently broken scene.
+  // Every value ends up in a Real (float, or double in the double build): one
+  // that would become infinite, or 0 from a non-zero value, is an error rather
+  // than a silently broken scene.
   void require_float_range(const JsonPath& path, double value) const {
     if (!std::isfinite(value)) fail(path, "value is not finite");
-    float stored = static_cast<float>(value);
+    Real stored = static_cast<Real>(value);
     if (std::isinf(stored) || (stored == 0 && value != 0))
-      fail(path, "value is out of float range (in SI units its magnitude must be 0 or lie in 1.4e-45 .. 3.4e38)");
+      fail(path, sizeof(Real) == 4
+                     ? "value is out of float range (in SI units its magnitude must be 0 or lie in 1.4e-45 .. 3.4e38)"
+                     : "value is out of double range (in SI units its magnitude must be 0 or lie in 4.9e-324 .. 1.8e308)");
   }
 
   // A dimensioned scalar: "5 mm", {"value": 5, "unit": "mm"}, or a bare number
@@ -185,16 +188,16 @@ class Loader {
 
   // An RGB spectrum: a triple, or one scalar for grey.
   struct Rgb {
-    float r, g, b;
+    Real r, g, b;
   };
   Rgb rgb_field(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
     bool is_triple = value.is_array() || (value.is_object() && value.contains("value") && value["value"].is_array());
     if (!is_triple) {
-      float grey = static_cast<float>(scalar(value, path, expected));
+      Real grey = static_cast<Real>(scalar(value, path, expected));
       return {grey, grey, grey};
     }
     Triple t = triple(value, path, expected);
-    return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+    return {static_cast<Real>(t[0]), static_cast<Real>(t[1]), static_cast<Real>(t[2])};
   }
 
   Reflectance reflectance(const Json& value, const JsonPath& path) {
@@ -224,12 +227,12 @@ class Loader {
   // Typed fields: the expected dimension comes from the type the value is stored in.
   template <class D>
   quantity<D> typed_scalar(const Json& value, const JsonPath& path) {
-    return sg::from_raw<quantity<D>>(static_cast<float>(scalar(value, path, runtime_dimension_of<D>())));
+    return sg::from_raw<quantity<D>>(static_cast<Real>(scalar(value, path, runtime_dimension_of<D>())));
   }
   template <class D>
   sg::spectrum<D> typed_spectrum(const Json& value, const JsonPath& path) {
     Rgb rgb = rgb_field(value, path, runtime_dimension_of<D>());
-    return sg::from_raw<sg::spectrum<D>>(glm::vec3(rgb.r, rgb.g, rgb.b));
+    return sg::from_raw<sg::spectrum<D>>(sg::vec3_rep(rgb.r, rgb.g, rgb.b));
   }
   template <class P>
   P typed_point(const Json& value, const JsonPath& path) {
@@ -237,12 +240,12 @@ class Loader {
   }
 
   // A number without unit, in [minimum, maximum].
-  float number(const Json& value, const JsonPath& path, double minimum, double maximum) {
+  Real number(const Json& value, const JsonPath& path, double minimum, double maximum) {
     double v = scalar(value, path, runtime_dim::none);
     if (!(v >= minimum && v <= maximum))
       fail(path, "expected a number in [" + short_number(minimum) + ", " + short_number(maximum) + "], got " +
                      short_dump(value));
-    return static_cast<float>(v);
+    return static_cast<Real>(v);
   }
   static std::string short_number(double v) {
     std::ostringstream text;
@@ -264,7 +267,7 @@ class Loader {
   }
   Shape load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials);
   void load_mesh_file(const Json& value, const JsonPath& path, Shape& shape);
-  void load_ply_file(const std::filesystem::path& full, const std::string& file, float scale, const JsonPath& path,
+  void load_ply_file(const std::filesystem::path& full, const std::string& file, Real scale, const JsonPath& path,
                      Shape& shape);
   void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
   ObjectToWorld load_transform(const Json& value, const JsonPath& path);
@@ -368,12 +371,12 @@ void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera
   camera.look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
   Triple up = triple(required(value, path, "up"), path.field("up"), runtime_dim::none);
   Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
-  if (!(fov > 0.0f * units::degree && fov < 180.0f * units::degree))
+  if (!(fov > Real(0) * units::degree && fov < Real(180) * units::degree))
     fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
   camera.fov = fov;
   VectorWorld forward = camera.look_at - camera.position;
   if (!(sg::length(forward) > sg::zero)) fail(path.field("look_at"), "must differ from position");
-  glm::vec3 up_raw = to_vec3(up);
+  sg::vec3_rep up_raw = to_vec3(up);
   if (!(glm::length(glm::cross(sg::raw(forward), up_raw)) > 0))
     fail(path.field("up"), "must not be parallel to the viewing direction");
   camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(up_raw));
@@ -457,7 +460,7 @@ ImageTexture Loader::load_texture(const std::string& name, const Json& value, co
     else fail(path.field("wrap"), "expected \"repeat\", \"clamp\" or \"black\", got " + short_dump(value["wrap"]));
   }
   if (value.contains("scale")) texture.scale = number(value["scale"], path.field("scale"), 0, 1e6);
-  auto pair = [&](const char* field, float& a, float& b) {
+  auto pair = [&](const char* field, Real& a, Real& b) {
     if (!value.contains(field)) return;
     const Json& v = value[field];
     if (!v.is_array() || v.size() != 2) fail(path.field(field), "expected [u, v], got " + short_dump(v));
@@ -466,8 +469,9 @@ ImageTexture Loader::load_texture(const std::string& name, const Json& value, co
   };
   pair("uv_scale", texture.u_scale, texture.v_scale);
   pair("uv_offset", texture.u_offset, texture.v_offset);
-  texture.mipmap = std::make_shared<MipMap>(to_linear_texels(std::move(image), texture.colour_space, texture.scale, true),
-                                            wrap);
+  // Texels are stored as float in every build (8 to 32 bits of data per channel).
+  texture.mipmap = std::make_shared<MipMap>(
+      to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(texture.scale), true), wrap);
   return texture;
 }
 
@@ -504,7 +508,7 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
     double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
     if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
-    material.exponent = static_cast<float>(exponent);
+    material.exponent = static_cast<Real>(exponent);
     if (sg::max_component(largest_diffuse(material) + material.specular) > 1.0f)
       fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else if (type == "mirror") {
@@ -602,8 +606,8 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (shape.type == Shape::Type::sphere) {
     for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
       if (!m) continue;
-      glm::mat4 forward = sg::raw(*m).forward;
-      float sx = glm::length(glm::vec3(forward[0])), sy = glm::length(glm::vec3(forward[1])), sz = glm::length(glm::vec3(forward[2]));
+      sg::mat4_rep forward = sg::raw(*m).forward;
+      Real sx = glm::length(sg::vec3_rep(forward[0])), sy = glm::length(sg::vec3_rep(forward[1])), sz = glm::length(sg::vec3_rep(forward[2]));
       if (std::fabs(sx - sy) > 1e-4f * sx || std::fabs(sx - sz) > 1e-4f * sx)
         fail(path.field("transform"), "a sphere's transform must scale uniformly");
     }
@@ -623,7 +627,7 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
                                  dimension_name(unit->dimension) + ")");
 
   std::filesystem::path full = base_directory_ / file;
-  float scale = static_cast<float>(unit->to_reference);
+  Real scale = static_cast<Real>(unit->to_reference);
   std::string extension = full.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".ply") {
@@ -642,7 +646,7 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
   }
   const auto& vertices = reader.GetAttrib().vertices;
   for (size_t i = 0; i + 2 < vertices.size(); i += 3) {
-    glm::vec3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
+    sg::vec3_rep p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(p));
@@ -681,7 +685,7 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
 
 // PLY: positions and faces; vertex normals are read but not used (the renderer
 // shades with geometric normals).
-void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, float scale,
+void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, Real scale,
                            const JsonPath& path, Shape& shape) {
   std::ifstream in(full, std::ios::binary);
   if (!std::filesystem::is_regular_file(full) || !in) fail(path.field("file"), "cannot read mesh '" + file + "'");
@@ -693,7 +697,7 @@ void Loader::load_ply_file(const std::filesystem::path& full, const std::string&
     fail(path.field("file"), "cannot read mesh '" + file + "': " + error.what());
   }
   for (const std::array<float, 3>& p : mesh.positions) {
-    glm::vec3 scaled{p[0] * scale, p[1] * scale, p[2] * scale};
+    sg::vec3_rep scaled{p[0] * scale, p[1] * scale, p[2] * scale};
     if (!std::isfinite(scaled.x) || !std::isfinite(scaled.y) || !std::isfinite(scaled.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(scaled));
@@ -720,12 +724,12 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
   for (size_t i = 0; i < points.size(); ++i) {
     JsonPath point_path = positions_path.field("value").index(i);
     if (!points[i].is_array() || points[i].size() != 3) fail(point_path, "expected [x, y, z], got " + short_dump(points[i]));
-    glm::vec3 p;
+    sg::vec3_rep p;
     for (int axis = 0; axis < 3; ++axis) {
       if (!points[i][axis].is_number()) fail(point_path.index(axis), "expected a number");
       double coordinate = points[i][axis].get<double>() * unit.to_reference;
       require_float_range(point_path.index(axis), coordinate);
-      p[axis] = static_cast<float>(coordinate);
+      p[axis] = static_cast<Real>(coordinate);
     }
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
@@ -752,16 +756,16 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
 ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   if (!value.is_array()) fail(path, "expected an array of transform steps, got " + short_dump(value));
   // The steps compose into one map<object, world>; the spaces between steps are anonymous.
-  glm::mat4 result(1.0f);
+  sg::mat4_rep result(1.0f);
   for (size_t i = 0; i < value.size(); ++i) {
     JsonPath step_path = path.index(i);
     const Json& step = value[i];
     if (!step.is_object() || step.size() != 1)
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
-    glm::mat4 m(1.0f);
+    sg::mat4_rep m(1.0f);
     if (step.contains("translate")) {
       Triple t = triple(step["translate"], step_path.field("translate"), runtime_dim::length);
-      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<float>(t[r]);
+      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<Real>(t[r]);
     } else if (step.contains("rotate")) {
       JsonPath rotate_path = step_path.field("rotate");
       const Json& rotate = object(step["rotate"], rotate_path, {"axis", "angle"});
@@ -775,7 +779,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
                         {t * x * y + s * z, t * y * y + c, t * y * z - s * x},
                         {t * x * z - s * y, t * y * z + s * x, t * z * z + c}};
       for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<float>(r[row][col]);
+        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<Real>(r[row][col]);
     } else if (step.contains("scale")) {
       const Json& scale = step["scale"];
       Triple s = scale.is_array() ? triple(scale, step_path.field("scale"), runtime_dim::none)
@@ -783,7 +787,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
       if (!scale.is_array()) s.fill(scalar(scale, step_path.field("scale"), runtime_dim::none));
       for (int r = 0; r < 3; ++r) {
         if (!(std::fabs(s[r]) > 0)) fail(step_path.field("scale"), "must not be zero");
-        m[r][r] = static_cast<float>(s[r]);
+        m[r][r] = static_cast<Real>(s[r]);
       }
     } else {
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
@@ -792,12 +796,14 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   }
   // Each step is non-singular, but float products can still underflow or
   // overflow (two 1e-30 scales): the inverse must exist in float.
-  glm::mat4 inverse = glm::inverse(result);
-  float determinant = glm::determinant(glm::mat3(result));
+  sg::mat4_rep inverse = glm::inverse(result);
+  Real determinant = glm::determinant(sg::mat3_rep(result));
   bool finite = std::isnormal(determinant);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(result[c][r]) && std::isfinite(inverse[c][r]);
-  if (!finite) fail(path, "is singular in float precision (its scales multiply to 0 or infinity)");
+  if (!finite)
+    fail(path, sizeof(Real) == 4 ? "is singular in float precision (its scales multiply to 0 or infinity)"
+                                 : "is singular in double precision (its scales multiply to 0 or infinity)");
   return ObjectToWorld::from_matrix(result);
 }
 
@@ -826,7 +832,7 @@ EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& pat
   object(value, path, {"type", "name", "radiance", "file", "transform"});
   EnvironmentLight light;
   light.radiance = value.contains("radiance") ? typed_spectrum<dim::radiance>(value["radiance"], path.field("radiance"))
-                                              : Radiance(1.0f * units::radiance_unit);
+                                              : Radiance(Real(1) * units::radiance_unit);
   if (!value.contains("radiance") && !value.contains("file"))
     fail(path, "expected 'radiance', 'file' or both");
   if (light.radiance.r() < sg::zero || light.radiance.g() < sg::zero || light.radiance.b() < sg::zero)

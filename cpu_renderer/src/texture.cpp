@@ -69,25 +69,25 @@ Texel MipMap::texel(int level, int x, int y) const {
   return Texel(v[0], v[1], v[2]);
 }
 
-Texel MipMap::bilinear(int level, float s, float t) const {
+Texel MipMap::bilinear(int level, Real s, Real t) const {
   level = std::clamp(level, 0, levels() - 1);
   const Level& l = levels_[level];
   // Texel centres sit at half-integers: (s·w − ½) is measured between them.
-  float x = s * static_cast<float>(l.width) - 0.5f, y = t * static_cast<float>(l.height) - 0.5f;
-  float x0 = std::floor(x), y0 = std::floor(y);
-  float dx = x - x0, dy = y - y0;
+  Real x = s * static_cast<Real>(l.width) - Real(0.5), y = t * static_cast<Real>(l.height) - Real(0.5);
+  Real x0 = std::floor(x), y0 = std::floor(y);
+  Real dx = x - x0, dy = y - y0;
   int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
   return (1 - dx) * (1 - dy) * texel(level, ix, iy) + dx * (1 - dy) * texel(level, ix + 1, iy) +
          (1 - dx) * dy * texel(level, ix, iy + 1) + dx * dy * texel(level, ix + 1, iy + 1);
 }
 
-Texel MipMap::trilinear(float s, float t, float width) const {
-  const float texels = width * static_cast<float>(std::max(levels_[0].width, levels_[0].height));
-  const float level = std::log2(std::max(texels, 1e-8f));
+Texel MipMap::trilinear(Real s, Real t, Real width) const {
+  const Real texels = width * static_cast<Real>(std::max(levels_[0].width, levels_[0].height));
+  const Real level = std::log2(std::max(texels, Real(1e-8)));
   if (!(level > 0)) return bilinear(0, s, t);
-  if (level >= static_cast<float>(levels() - 1)) return texel(levels() - 1, 0, 0);
+  if (level >= static_cast<Real>(levels() - 1)) return texel(levels() - 1, 0, 0);
   const int fine = static_cast<int>(std::floor(level));
-  const float blend = level - static_cast<float>(fine);
+  const Real blend = level - static_cast<Real>(fine);
   return (1 - blend) * bilinear(fine, s, t) + blend * bilinear(fine + 1, s, t);
 }
 
@@ -97,7 +97,7 @@ Texel MipMap::average() const {
   for (size_t i = 0; i < l.rgb.size(); i += 3)
     for (int c = 0; c < 3; ++c) sum[c] += l.rgb[i + c];
   const double n = static_cast<double>(l.width) * l.height;
-  return Texel(static_cast<float>(sum[0] / n), static_cast<float>(sum[1] / n), static_cast<float>(sum[2] / n));
+  return Texel(static_cast<Real>(sum[0] / n), static_cast<Real>(sum[1] / n), static_cast<Real>(sum[2] / n));
 }
 
 Texel MipMap::maximum() const {

@@ -21,9 +21,9 @@ struct ImageTexture {
   std::string file;                              // as written in the scene (for messages)
   ColourSpace colour_space = ColourSpace::srgb;  // how the file encoded its values (decoded at load)
   TextureFilter filter = TextureFilter::trilinear;
-  float scale = 1.0f;  // multiplies every texel (pbrt's "scale")
+  Real scale = 1.0f;  // multiplies every texel (pbrt's "scale")
   // (u, v) -> (u * u_scale + u_offset, v * v_scale + v_offset) before the lookup (pbrt's uv mapping)
-  float u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
   std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included
 };
 
@@ -33,9 +33,9 @@ struct Material {
   Reflectance diffuse{};       // Lambert albedo; Phong and plastic diffuse part (times diffuse_texture)
   Reflectance specular{};      // Phong specular part; mirror tint; plastic Ks; glass reflection tint (Kr)
   Reflectance transmission{};  // glass transmission tint (Kt)
-  float exponent = 1.0f;       // Phong lobe exponent (dimensionless)
-  float ior = 1.5f;            // glass, plastic: index of refraction inside over outside
-  float alpha = 0.0f;          // plastic: Trowbridge–Reitz (GGX) roughness alpha; 0 = smooth
+  Real exponent = 1.0f;       // Phong lobe exponent (dimensionless)
+  Real ior = 1.5f;            // glass, plastic: index of refraction inside over outside
+  Real alpha = 0.0f;          // plastic: Trowbridge–Reitz (GGX) roughness alpha; 0 = smooth
   // pbrt-v3's plastic evaluates its Fresnel term as FrDielectric(cos, 1.5, 1), the
   // indices swapped (mmp/pbrt-v3#210, left unfixed there); true reproduces that.
   bool pbrt_v3_plastic_fresnel = false;
@@ -45,7 +45,7 @@ struct Material {
 
 // Surface parameters of a mesh vertex (dimensionless), for texture lookups.
 struct TexCoord {
-  float u = 0.0f, v = 0.0f;
+  Real u = 0.0f, v = 0.0f;
 };
 
 struct Shape {

@@ -52,12 +52,12 @@ class MipMap {
   // Texel (x, y) of `level`, with the wrap mode applied to x and y.
   Texel texel(int level, int x, int y) const;
   // Bilinear interpolation between the four texels around (s, t) on `level`.
-  Texel bilinear(int level, float s, float t) const;
+  Texel bilinear(int level, Real s, Real t) const;
   // Trilinear: the footprint `width` is the lookup's extent in (s, t) units;
   // the level is log2(width × max(width(0), height(0))), i.e. the footprint
   // measured in texels of level 0, blended linearly between the two levels
   // around it; below level 0 bilinear on level 0, beyond the last the 1×1 texel.
-  Texel trilinear(float s, float t, float width) const;
+  Texel trilinear(Real s, Real t, Real width) const;
   // The mean and the per-channel maximum of level 0.
   Texel average() const;
   Texel maximum() const;
@@ -65,7 +65,7 @@ class MipMap {
  private:
   struct Level {
     int width = 0, height = 0;
-    std::vector<float> rgb;
+    std::vector<float> rgb;  // texels stay float in every build
   };
   std::vector<Level> levels_;
   TextureWrap wrap_;

@@ -57,13 +57,13 @@ inline PdfSolidAngle to_solid_angle_density(PdfArea pdf, Proj cos_at_area, Lengt
 
 // Plain components for the acceleration kernel (reference units: metres).
 template <class T>
-inline kernel::Float3 to_kernel(const T& value) {
-  glm::vec3 v = sg::raw(value);
+inline kernel::Real3 to_kernel(const T& value) {
+  sg::vec3_rep v = sg::raw(value);
   return {v.x, v.y, v.z};
 }
 template <class T>
-inline T from_kernel(kernel::Float3 v) {
-  return sg::from_raw<T>(glm::vec3(v.x, v.y, v.z));
+inline T from_kernel(kernel::Real3 v) {
+  return sg::from_raw<T>(sg::vec3_rep(v.x, v.y, v.z));
 }
 
 }  // namespace safegi::render
