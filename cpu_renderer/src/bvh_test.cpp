@@ -25,13 +25,13 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
     Tri t{center + Real3{small(rng), small(rng), small(rng)}, center + Real3{small(rng), small(rng), small(rng)},
           center + Real3{small(rng), small(rng), small(rng)}};
     triangles.push_back(t);
-    set.add_triangle(t.a, t.b, t.c, i);
+    set.add_triangle(t.a, t.b, t.c, i, i);
   }
   set.build();
   // One single-triangle set per triangle: the same Möller–Trumbore test, no hierarchy.
   std::vector<PrimitiveSet> singles(triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i) {
-    singles[i].add_triangle(triangles[i].a, triangles[i].b, triangles[i].c, 0);
+    singles[i].add_triangle(triangles[i].a, triangles[i].b, triangles[i].c, 0, 0);
     singles[i].build();
   }
   int hits = 0;
@@ -56,7 +56,7 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
 TEST(Bvh, DegenerateInputStaysShallow) {
   // Thousands of identical triangles: no SAH split exists; the build must still finish.
   PrimitiveSet set;
-  for (uint32_t i = 0; i < 70000; ++i) set.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, i);
+  for (uint32_t i = 0; i < 70000; ++i) set.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, i, i);
   set.build();
   kernel::Ray ray{{0.2f, 0.2f, 1.0f}, {0, 0, -1}, 0.0f};
   std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);

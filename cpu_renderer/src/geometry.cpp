@@ -159,6 +159,9 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) c
     }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
+    hit.face = faces_[primitive];
+    hit.b1 = b1;
+    hit.b2 = b2;
   } else {
     const Sphere& sphere = spheres_[primitive - triangles_.size()];
     Real3 relative = ray.origin + ray.direction * t_max - sphere.center;
@@ -194,7 +197,7 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Obje
   }
   for (size_t i = 0; i + 2 < shape.indices.size(); i += 3)
     set.add_triangle(place(shape.positions[shape.indices[i]]), place(shape.positions[shape.indices[i + 1]]),
-                     place(shape.positions[shape.indices[i + 2]]), index);
+                     place(shape.positions[shape.indices[i + 2]]), index, static_cast<uint32_t>(i / 3));
 }
 
 }  // namespace
@@ -252,7 +255,7 @@ std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
   }
   if (!hit) return std::nullopt;
   return SurfaceHit{from_kernel<PointWorld>(hit->position), hit->position_error, from_kernel<NormalWorld>(hit->normal),
-                    sg::from_raw<Length>(hit->distance), hit->shape};
+                    sg::from_raw<Length>(hit->distance), hit->shape, hit->face, hit->b1, hit->b2};
 }
 
 bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {

@@ -26,6 +26,10 @@ struct SurfaceHit {
   NormalWorld normal;     // geometric normal, on the side given by the winding
   Length distance = sg::zero;  // along the ray
   uint32_t shape = 0;     // index into Scene::shapes
+  // Where on the shape: the triangle (index / 3 into Shape::indices) and the
+  // barycentric weights of its second and third vertex; unused for spheres.
+  uint32_t face = 0;
+  Real b1 = 0, b2 = 0;
 };
 
 namespace kernel {
@@ -43,6 +47,8 @@ struct Hit {
   Real3 normal;
   Real distance = 0.0f;
   uint32_t shape = 0;
+  uint32_t face = 0;
+  Real b1 = 0, b2 = 0;
 };
 
 }  // namespace kernel
@@ -60,7 +66,10 @@ class PrimitiveSet {
     uint32_t shape;
   };
 
-  void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape) { triangles_.push_back({a, b - a, c - a, shape}); }
+  void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape, uint32_t face) {
+    triangles_.push_back({a, b - a, c - a, shape});
+    faces_.push_back(face);
+  }
   void add_sphere(Real3 center, Real radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
   void build();
 
@@ -75,6 +84,7 @@ class PrimitiveSet {
   bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
 
   std::vector<Triangle> triangles_;
+  std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits)
   std::vector<Sphere> spheres_;
   kernel::Bvh bvh_;
 };

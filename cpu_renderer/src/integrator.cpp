@@ -33,8 +33,10 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if (wi.z() <= 0) continue;
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) continue;
-    Length t_max = sg::zero;
-    TimedRay shadow = spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
+    Length t_max = sg::from_raw<Length>(kernel::kInfinity);
+    TimedRay shadow = light->infinite
+                          ? spawn_ray(hit, light->wi, time)
+                          : spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
     ++counters.shadow;
     if (geometry_.occluded(shadow, t_max)) continue;
     if constexpr (area_lights) {
@@ -60,17 +62,31 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   PdfSolidAngle previous_bsdf_pdf = sg::zero;
   PointWorld previous_position;
   bool last_vertex = false;
+  // The camera ray cone's length so far (textures' footprint), while every bounce was specular.
+  Length travelled = sg::zero;
+  bool sharp_cone = true;
+  const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   for (int depth = 0;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
-    if (!hit) break;
+    if (!hit) {
+      if constexpr (area_lights) {
+        if (lights_.has_environment()) {
+          Radiance sky = lights_.environment_radiance(ray.d);
+          if (specular_bounce)
+            radiance += throughput * sky;
+          else if (mis_)
+            radiance += throughput * sky * mis_weight(previous_bsdf_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
+        }
+      }
+      break;
+    }
     if constexpr (area_lights) {
       Radiance emitted = lights_.emitted(*hit, ray.d);
       if (!sg::is_black(emitted)) {
         if (specular_bounce) {
           radiance += throughput * emitted;
         } else if (mis_) {
-          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) *
-                                    static_cast<Real>(one_light_sample ? 1 : light_samples_);
+          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * light_sample_count;
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
         }
       }
@@ -78,7 +94,19 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (last_vertex || depth >= max_depth_) break;
     const Shape& shape = scene_.shapes[hit->shape];
     if (shape.material < 0) break;
-    Bsdf bsdf(scene_.materials[shape.material]);
+    const Material& material = scene_.materials[shape.material];
+    travelled += hit->distance;
+    Reflectance diffuse = material.diffuse;
+    if (material.diffuse_texture >= 0) {
+      // The cone's width across the surface, stretched by its tilt (a plain ratio).
+      Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
+      Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
+      diffuse = textures_.diffuse(material, *hit, width, ray.time);
+    }
+    // Glass tells its sides apart: eta is the far side's index over the near side's.
+    Real eta = material.ior;
+    if (material.type == Material::Type::glass && sg::dot(hit->normal, ray.d) > sg::zero) eta = 1 / eta;
+    Bsdf bsdf(material, diffuse, eta);
     // Shade on the side the ray arrives from: materials are two-sided.
     hit->normal = sg::face_forward(hit->normal, -ray.d);
     ShadingFrame frame = ShadingFrame::from_normal(hit->normal);
@@ -100,6 +128,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     throughput *= scattered->weight;
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
+    sharp_cone = sharp_cone && scattered->specular;
     previous_bsdf_pdf = scattered->pdf;
     previous_position = hit->position;
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);

@@ -2,6 +2,7 @@
 // next-event estimation and BSDF sampling combined by MIS (power heuristic).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -9,6 +10,7 @@
 #include "lights.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 #include "sampler.hpp"
+#include "surface_texture.hpp"
 
 namespace safegi::render {
 
@@ -23,7 +25,11 @@ class Integrator {
   Integrator(const Scene& scene, const Geometry& geometry, const Lights& lights, const RenderSettings& settings)
       : scene_(scene), geometry_(geometry), lights_(lights), direct_only_(settings.integrator == IntegratorType::direct),
         max_depth_(settings.max_depth), mis_(settings.mis), light_samples_(settings.light_samples),
-        roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()) {}
+        roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()),
+        textures_(scene),
+        // The angle one pixel subtends at the image centre: the camera ray cone's spread.
+        pixel_spread_(2 * sg::tan(0.5f * scene.camera.fov) / static_cast<Real>(std::min(settings.width, settings.height)) *
+                      units::radian) {}
 
   // Radiance arriving at the camera along `camera_ray`.
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
@@ -51,6 +57,8 @@ class Integrator {
   bool mis_;           // off: emission found by BSDF sampling after a non-specular bounce is dropped
   int light_samples_;  // next-event samples per shading point
   int roulette_depth_;
+  SurfaceTextures textures_;
+  Angle pixel_spread_;
 };
 
 }  // namespace safegi::render

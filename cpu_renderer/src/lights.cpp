@@ -1,10 +1,32 @@
 #include "lights.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
+
+namespace {
+
+// The radius of a sphere around every static shape (at the shutter-open pose).
+Length scene_radius(const Scene& scene) {
+  kernel::Bounds3 bounds;
+  for (const Shape& shape : scene.shapes) {
+    if (shape.type == Shape::Type::sphere) {
+      Real3 center = to_kernel(shape.render_from_object(shape.center));
+      Real r = sg::raw(sg::length(shape.render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero))));
+      bounds.extend(center - Real3{r, r, r});
+      bounds.extend(center + Real3{r, r, r});
+    } else {
+      for (const PointObject& p : shape.positions) bounds.extend(to_kernel(shape.render_from_object(p)));
+    }
+  }
+  if (bounds.empty()) return sg::from_raw<Length>(Real(1));
+  return sg::from_raw<Length>(std::max(Real(0.5) * kernel::length(bounds.extent()), std::numeric_limits<Real>::min()));
+}
+
+}  // namespace
 
 Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
   std::vector<double> powers;  // watts, averaged over the channels
@@ -71,6 +93,20 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     // A diffuse emitter radiates π·A·L per side.
     auto power = sg::average(light.radiance) * area * (sg::pi * units::steradian * units::proj);
     powers.push_back((light.two_sided ? 2 : 1) * sg::raw(power));
+    has_area_lights_ = true;
+  }
+  if (scene.environment) {
+    // Choose the environment by the flux it sends into the scene's bounding
+    // sphere, π · L̄ · 4πr² (any positive weight would be unbiased).
+    environment_.emplace(*scene.environment);
+    Light light;
+    light.type = Light::Type::environment;
+    environment_index_ = static_cast<uint32_t>(lights_.size());
+    lights_.push_back(light);
+    Length radius = scene_radius(scene);
+    auto flux = sg::average(environment_->average_radiance()) * (4 * sg::pi * radius * radius) *
+                (sg::pi * units::steradian * units::proj);
+    powers.push_back(sg::raw(flux));
     has_area_lights_ = true;
   }
   double total = 0;
@@ -142,6 +178,17 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
   Real probability = selection_probability(index);
   if (!(probability > 0)) return std::nullopt;
   LightSample sample;
+  if (light.type == Light::Type::environment) {
+    std::optional<Environment::Sample> direction = environment_->sample(u1, u2);
+    if (!direction) return std::nullopt;
+    sample.wi = direction->wi;
+    sample.radiance = direction->radiance;
+    sample.pdf = probability * direction->pdf;
+    sample.distance = sg::from_raw<Length>(kernel::kInfinity);
+    sample.position = reference;
+    sample.infinite = true;
+    return sample;
+  }
   if (light.type == Light::Type::point) {
     VectorWorld toward = light.position - reference;
     sample.distance = sg::length(toward);
@@ -212,6 +259,10 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   return selection_probability(static_cast<uint32_t>(index)) *
          to_solid_angle_density(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time), cos_light,
                                 sg::length(toward));
+}
+
+PdfSolidAngle Lights::environment_pdf(DirectionWorld direction) const {
+  return selection_probability(environment_index_) * environment_->pdf(direction);
 }
 
 // The density per world area at `time` with which sample_moving() draws `hit`.

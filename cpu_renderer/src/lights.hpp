@@ -1,11 +1,13 @@
-// Light sources: point lights (intensity) and diffuse area emitters on
-// triangle meshes and spheres (radiance), chosen in proportion to power.
+// Light sources: point lights (intensity), diffuse area emitters on triangle
+// meshes and spheres (radiance) and the environment (radiance from every
+// direction), chosen in proportion to power.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "environment.hpp"
 #include "geometry.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
@@ -15,16 +17,17 @@ namespace safegi::render {
 struct LightSample {
   PointWorld position;
   Real3 position_error;   // metres
-  Real3 emitter_normal;   // unit normal of an area light; zero for point lights
+  Real3 emitter_normal;   // unit normal of an area light; zero for point lights and the environment
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
   bool delta = false;      // a point light: no density over directions
+  bool infinite = false;   // the environment: no position; the shadow ray runs to infinity
   // Point lights: the intensity towards the shading point and the probability
   // of having chosen this light.
   Intensity intensity;
   Real probability = 0;
-  // Area lights: the emitted radiance and the density of this direction,
-  // light choice included.
+  // Area lights and the environment: the emitted radiance and the density of
+  // this direction, light choice included.
   Radiance radiance;
   PdfSolidAngle pdf = sg::zero;
 };
@@ -45,9 +48,15 @@ class Lights {
   // point `hit` (found at `time`) as seen from `reference`.
   PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit, Time time) const;
 
+  // The environment, seen by a ray that escapes along `direction`, and the
+  // density with which sample() picks that direction (light choice included).
+  bool has_environment() const { return environment_.has_value(); }
+  Radiance environment_radiance(DirectionWorld direction) const { return environment_->radiance(direction); }
+  PdfSolidAngle environment_pdf(DirectionWorld direction) const;
+
  private:
   struct Light {
-    enum class Type { point, triangles, sphere } type = Type::point;
+    enum class Type { point, triangles, sphere, environment } type = Type::point;
     PointWorld position;  // point light, sphere centre
     Intensity intensity;  // point light
     uint32_t first_triangle = 0, triangle_count = 0;
@@ -91,7 +100,9 @@ class Lights {
   std::vector<RigidMotion> motions_;
   std::vector<Real> power_cdf_;
   std::vector<int32_t> light_of_shape_;
-  bool has_area_lights_ = false;
+  std::optional<Environment> environment_;
+  uint32_t environment_index_ = 0;
+  bool has_area_lights_ = false;  // area lights or the environment: the lights with a density
 };
 
 }  // namespace safegi::render

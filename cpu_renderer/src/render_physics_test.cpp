@@ -10,69 +10,12 @@
 #include <numbers>
 #include <sstream>
 
-#include "safegi/cpu_renderer/renderer.hpp"
-#include "safegi/cpu_renderer/scene_loader.hpp"
+#include "render_test_support.hpp"
 
 namespace safegi::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-// Estimator knobs of the speed/accuracy study; each test below must hold under every one.
-struct Knobs {
-  const char* name;
-  std::function<void(RenderSettings&)> apply;
-};
-const std::vector<Knobs>& estimator_knobs() {
-  static const std::vector<Knobs> knobs = {
-      {"defaults", [](RenderSettings&) {}},
-      {"mis off", [](RenderSettings& s) { s.mis = false; }},
-      {"4 light samples", [](RenderSettings& s) { s.light_samples = 4; }},
-      {"mis off, 3 light samples", [](RenderSettings& s) { s.mis = false, s.light_samples = 3; }},
-      {"roulette from depth 0", [](RenderSettings& s) { s.russian_roulette_depth = 0; }},
-  };
-  return knobs;
-}
-
-Image render_text(const std::string& json, int spp, int threads = 2, std::optional<CropWindow> crop = std::nullopt,
-                  const std::function<void(RenderSettings&)>& adjust = {}) {
-  Scene scene = parse_scene(json, "test.json", SAFEGI_SCENES_DIR);
-  RenderOptions options;
-  options.settings = scene.settings;
-  options.settings.spp = spp;
-  if (adjust) adjust(options.settings);
-  options.threads = threads;
-  options.crop = crop;
-  RenderStats stats;
-  Image image = render(scene, options, &stats);
-  EXPECT_EQ(stats.invalid_samples, 0u);
-  for (float v : image.rgb) EXPECT_TRUE(std::isfinite(v));
-  return image;
-}
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Mean and standard error of the mean of one channel over all pixels.
-struct Estimate {
-  double mean, standard_error;
-};
-Estimate channel_estimate(const Image& image, int channel) {
-  double sum = 0, sum2 = 0;
-  size_t n = static_cast<size_t>(image.width) * image.height;
-  for (size_t i = 0; i < n; ++i) {
-    double v = image.rgb[3 * i + channel];
-    sum += v;
-    sum2 += v * v;
-  }
-  double mean = sum / n;
-  double variance = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
-  return {mean, std::sqrt(variance / n)};
-}
+using namespace test_support;
 
 // Diffuse plane under a point light: L = ρ/π · I cos θ / r², averaged over
 // each pixel's footprint on the plane (the estimator has no noise apart from
@@ -94,7 +37,7 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
     std::string text = scene;
     text.replace(text.find("direct"), 6, integrator);
     Image image = render_text(text, 64, 2, std::nullopt, knobs.apply);
-    const double half = std::tan(fov / 2 * kPi / 180);
+    const double half = std::tan(fov / 2 * kPiD / 180);
     double worst = 0;
     for (int py = 0; py < size; ++py) {
       for (int px = 0; px < size; ++px) {
@@ -108,7 +51,7 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
             double x = camera_height * sx, z = -camera_height * sy;
             double r2 = x * x + z * z + light_height * light_height;
             double cos_theta = light_height / std::sqrt(r2);
-            expected += rho / kPi * intensity * cos_theta / r2;
+            expected += rho / kPiD * intensity * cos_theta / r2;
           }
         expected /= kSub * kSub;
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] / expected - 1));
@@ -207,7 +150,7 @@ TEST(RenderPhysics, MovingSphereLightAbovePlane) {
 double corner_form_factor(double width, double length, double height) {
   double a = width / height, b = length / height;
   double sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
-  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPi);
+  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPiD);
 }
 
 // A small square emitter above a diffuse plane: L = ρ · Le · F, with F the form
