@@ -20,7 +20,8 @@ Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuris
 // light_samples_ light samples.
 template <bool area_lights, bool one_light_sample>
 Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
-                                   DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const {
+                                   DirectionShading wo, Sampler& sampler, Time time, bool mis,
+                                   RayCounters& counters) const {
   Radiance sum;
   const int samples = one_light_sample ? 1 : light_samples_;
   const Real count = static_cast<Real>(samples);
@@ -42,7 +43,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if constexpr (area_lights) {
       if (!light->delta) {
         PdfSolidAngle light_pdf = light->pdf * count;
-        Real weight = mis_ ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
+        Real weight = mis ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
         sum += f * light->radiance * sg::cos_theta(wi) * (weight / light_pdf);
         continue;
       }
@@ -54,7 +55,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
   return sum;
 }
 
-template <bool area_lights, bool one_light_sample>
+template <bool area_lights, bool one_light_sample, bool gather>
 Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
   Radiance radiance;
   Reflectance throughput(1.0f);
@@ -65,6 +66,9 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   // The camera ray cone's length so far (textures' footprint), while every bounce was specular.
   Length travelled = sg::zero;
   bool sharp_cone = true;
+  // Photon integrator: once a non-specular vertex has occurred, emission found
+  // through specular bounces only (a caustic path, L S+ D …) is the photon map's.
+  bool after_diffuse = false;
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   for (int depth = 0;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
@@ -72,8 +76,9 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       if constexpr (area_lights) {
         if (lights_.has_environment()) {
           Radiance sky = lights_.environment_radiance(ray.d);
-          if (specular_bounce)
-            radiance += throughput * sky;
+          if (specular_bounce) {
+            if (!(gather && after_diffuse)) radiance += throughput * sky;
+          }
           else if (mis_)
             radiance += throughput * sky * mis_weight(previous_bsdf_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
         }
@@ -84,7 +89,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       Radiance emitted = lights_.emitted(*hit, ray.d);
       if (!sg::is_black(emitted)) {
         if (specular_bounce) {
-          radiance += throughput * emitted;
+          if (!(gather && after_diffuse)) radiance += throughput * emitted;
         } else if (mis_) {
           PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * light_sample_count;
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
@@ -112,8 +117,12 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     ShadingFrame frame = ShadingFrame::from_normal(hit->normal);
     DirectionShading wo = frame.to_local(-ray.d);
 
+    // Photon integrator: the caustics arriving at every non-specular vertex.
+    if constexpr (gather)
+      if (!bsdf.is_specular()) radiance += throughput * photons_->estimate(*hit, frame, bsdf, wo);
     if (!bsdf.is_specular() && !lights_.empty())
-      radiance += throughput * sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, counters);
+      radiance += throughput *
+                  sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, mis_, counters);
 
     Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
@@ -129,6 +138,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
     sharp_cone = sharp_cone && scattered->specular;
+    if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
     previous_bsdf_pdf = scattered->pdf;
     previous_position = hit->position;
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
@@ -146,5 +156,7 @@ template Radiance Integrator::trace<true, true>(TimedRay, Sampler&, RayCounters&
 template Radiance Integrator::trace<true, false>(TimedRay, Sampler&, RayCounters&) const;
 template Radiance Integrator::trace<false, true>(TimedRay, Sampler&, RayCounters&) const;
 template Radiance Integrator::trace<false, false>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<true, true, true>(TimedRay, Sampler&, RayCounters&) const;
+template Radiance Integrator::trace<true, false, true>(TimedRay, Sampler&, RayCounters&) const;
 
 }  // namespace safegi::render

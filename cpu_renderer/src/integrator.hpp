@@ -1,13 +1,18 @@
 // Light transport estimators: direct lighting and path tracing, both with
-// next-event estimation and BSDF sampling combined by MIS (power heuristic).
+// next-event estimation and BSDF sampling combined by MIS (power heuristic),
+// and photon mapping (camera paths through specular bounces to the first
+// other surface: direct light by next-event estimation, the rest from the
+// photon map).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 #include "geometry.hpp"
 #include "lights.hpp"
+#include "photon_map.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 #include "sampler.hpp"
 #include "surface_texture.hpp"
@@ -29,25 +34,37 @@ class Integrator {
         textures_(scene),
         // The angle one pixel subtends at the image centre: the camera ray cone's spread.
         pixel_spread_(2 * sg::tan(0.5f * scene.camera.fov) / static_cast<Real>(std::min(settings.width, settings.height)) *
-                      units::radian) {}
+                      units::radian) {
+    // The photons are traced once, before any pixel, from a fixed seed.
+    if (settings.integrator == IntegratorType::photon)
+      photons_ = std::make_unique<PhotonMap>(scene, geometry, lights, textures_, settings, 0);
+  }
+
+  // The photon map of the photon integrator; null for the others.
+  const PhotonMap* photon_map() const { return photons_.get(); }
 
   // Radiance arriving at the camera along `camera_ray`.
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
     // MIS bookkeeping exists only in the instantiations for scenes with area
     // lights; the light-sample loop only in those for several light samples.
     bool one = light_samples_ == 1;
+    if (photons_)
+      return one ? trace<true, true, true>(camera_ray, sampler, counters)
+                 : trace<true, false, true>(camera_ray, sampler, counters);
     if (lights_.has_area_lights())
       return one ? trace<true, true>(camera_ray, sampler, counters) : trace<true, false>(camera_ray, sampler, counters);
     return one ? trace<false, true>(camera_ray, sampler, counters) : trace<false, false>(camera_ray, sampler, counters);
   }
 
  private:
-  template <bool area_lights, bool one_light_sample>
+  // gather: the photon integrator's camera pass (see PhotonMap).
+  template <bool area_lights, bool one_light_sample, bool gather = false>
   Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
+  // `mis`: weigh area lights against BSDF sampling (false: light sampling is the only strategy).
   template <bool area_lights, bool one_light_sample>
   Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
-                         DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const;
+                         DirectionShading wo, Sampler& sampler, Time time, bool mis, RayCounters& counters) const;
 
   const Scene& scene_;
   const Geometry& geometry_;
@@ -59,6 +76,7 @@ class Integrator {
   int roulette_depth_;
   SurfaceTextures textures_;
   Angle pixel_spread_;
+  std::unique_ptr<PhotonMap> photons_;
 };
 
 }  // namespace safegi::render

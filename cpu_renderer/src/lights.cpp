@@ -9,8 +9,8 @@ namespace safegi::render {
 
 namespace {
 
-// The radius of a sphere around every static shape (at the shutter-open pose).
-Length scene_radius(const Scene& scene) {
+// A sphere around every static shape (at the shutter-open pose).
+void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radius) {
   kernel::Bounds3 bounds;
   for (const Shape& shape : scene.shapes) {
     if (shape.type == Shape::Type::sphere) {
@@ -22,8 +22,9 @@ Length scene_radius(const Scene& scene) {
       for (const PointObject& p : shape.positions) bounds.extend(to_kernel(shape.render_from_object(p)));
     }
   }
-  if (bounds.empty()) return sg::from_raw<Length>(Real(1));
-  return sg::from_raw<Length>(std::max(Real(0.5) * kernel::length(bounds.extent()), std::numeric_limits<Real>::min()));
+  if (bounds.empty()) bounds.extend(Real3{0, 0, 0});
+  center = from_kernel<PointWorld>(bounds.centroid());
+  radius = sg::from_raw<Length>(std::max(Real(0.5) * kernel::length(bounds.extent()), std::numeric_limits<Real>::min()));
 }
 
 }  // namespace
@@ -103,7 +104,8 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     light.type = Light::Type::environment;
     environment_index_ = static_cast<uint32_t>(lights_.size());
     lights_.push_back(light);
-    Length radius = scene_radius(scene);
+    scene_bounding_sphere(scene, scene_center_, scene_radius_);
+    Length radius = scene_radius_;
     auto flux = sg::average(environment_->average_radiance()) * (4 * sg::pi * radius * radius) *
                 (sg::pi * units::steradian * units::proj);
     powers.push_back(sg::raw(flux));
@@ -171,6 +173,34 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
   return point;
 }
 
+// A point on area light `index` (chosen with u_light, whose rest picks the triangle by area).
+Lights::SurfacePoint Lights::sample_surface(uint32_t index, Time time, Real u_light, Real u1, Real u2) const {
+  const Light& light = lights_[index];
+  Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
+  Real u_triangle = std::min((u_light - low) / selection_probability(index), Real(0x1.fffffep-1f));
+  if (light.motion >= 0) return sample_moving(light, time, u_triangle, u1, u2);
+  SurfacePoint point;
+  point.pdf_area = light.pdf_area;
+  if (light.type == Light::Type::sphere) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    point.normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    point.position = light.position + offset;
+    point.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+    return point;
+  }
+  const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
+  Real root = std::sqrt(u1);
+  Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+  VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+  point.position = tri.p0 + along_u + along_v;
+  point.position_error =
+      (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+      kernel::gamma(7);
+  point.normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
+  return point;
+}
+
 std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const {
   if (lights_.empty()) return std::nullopt;
   uint32_t index = choose(u_light);
@@ -200,34 +230,11 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.delta = true;
     return sample;
   }
-  // Reuse what is left of u_light to pick a triangle by area.
-  Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
-  Real u_triangle = std::min((u_light - low) / probability, Real(0x1.fffffep-1f));
-  NormalWorld normal;
-  PdfArea pdf_area = light.pdf_area;
-  if (light.motion >= 0) {
-    SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
-    sample.position = point.position;
-    sample.position_error = point.position_error;
-    normal = point.normal;
-    pdf_area = point.pdf_area;
-  } else if (light.type == Light::Type::sphere) {
-    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
-    normal = sg::to_normal(outward);
-    VectorWorld offset = outward * light.radius;
-    sample.position = light.position + offset;
-    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
-  } else {
-    const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-    Real root = std::sqrt(u1);
-    Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
-    sample.position = tri.p0 + along_u + along_v;
-    sample.position_error =
-        (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
-        kernel::gamma(7);
-    normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
-  }
+  SurfacePoint point = sample_surface(index, time, u_light, u1, u2);
+  sample.position = point.position;
+  sample.position_error = point.position_error;
+  NormalWorld normal = point.normal;
+  PdfArea pdf_area = point.pdf_area;
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
@@ -259,6 +266,65 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   return selection_probability(static_cast<uint32_t>(index)) *
          to_solid_angle_density(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time), cos_light,
                                 sg::length(toward));
+}
+
+std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3,
+                                                      Real u4) const {
+  if (lights_.empty()) return std::nullopt;
+  uint32_t index = choose(u_light);
+  const Light& light = lights_[index];
+  Real probability = selection_probability(index);
+  if (!(probability > 0)) return std::nullopt;
+  PhotonEmission photon;
+  if (light.type == Light::Type::point) {
+    photon.origin = light.position;
+    photon.origin_error = kernel::abs(to_kernel(light.position)) * kernel::gamma(1);
+    photon.direction = from_kernel<DirectionWorld>(sample_uniform_sphere(u3, u4));
+    PdfSolidAngle pdf = 1 / (4 * kPi * units::steradian);
+    photon.flux = light.intensity / (pdf * probability);
+    return photon;
+  }
+  if (light.type == Light::Type::environment) {
+    // Towards the scene along -ω, from a disc of the bounding sphere's radius
+    // perpendicular to ω: the flux through it is L · πR² (head on, cos = 1) per
+    // unit of solid angle.
+    std::optional<Environment::Sample> sky = environment_->sample(u1, u2);
+    if (!sky) return std::nullopt;
+    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(sky->wi));
+    Real x, y;
+    sample_concentric_disk(u3, u4, x, y);
+    vector<Shading> across(x * scene_radius_, y * scene_radius_, scene_radius_);
+    photon.origin = scene_center_ + disc.from_local(across);
+    photon.origin_error = kernel::abs(to_kernel(photon.origin)) * kernel::gamma(4);
+    photon.direction = -sky->wi;
+    quantity<dim::area> disc_area = kPi * scene_radius_ * scene_radius_;
+    Proj head_on = Real(1) * units::proj;
+    photon.flux = sky->radiance * head_on * disc_area / (sky->pdf * probability);
+    return photon;
+  }
+  SurfacePoint point = sample_surface(index, time, u_light, u1, u2);
+  NormalWorld normal = point.normal;
+  Real sides = 1;
+  if (light.two_sided) {  // either side, evenly
+    sides = 2;
+    if (u3 < Real(0.5)) {
+      normal = -normal;
+      u3 = 2 * u3;
+    } else {
+      u3 = 2 * u3 - 1;
+    }
+  }
+  ShadingFrame frame = ShadingFrame::from_normal(normal);
+  DirectionShading local = from_kernel<DirectionShading>(sample_cosine_hemisphere(std::min(u3, Real(0x1.fffffep-1f)), u4));
+  Proj cos_emitted = sg::cos_theta(local);
+  if (!(cos_emitted > sg::zero)) return std::nullopt;
+  PdfSolidAngle pdf_direction = cos_emitted / (kPi * units::steradian * units::proj);
+  photon.origin = point.position;
+  photon.origin_error = point.position_error;
+  photon.surface_normal = to_kernel(normal);
+  photon.direction = frame.from_local(local);
+  photon.flux = light.radiance * cos_emitted * sides / (pdf_direction * point.pdf_area * probability);
+  return photon;
 }
 
 PdfSolidAngle Lights::environment_pdf(DirectionWorld direction) const {

@@ -32,6 +32,17 @@ struct LightSample {
   PdfSolidAngle pdf = sg::zero;
 };
 
+// A photon leaving a light: where, which way, and the flux it carries, with
+// the light's choice and the densities of its position and direction divided
+// out (divide by the number of photons traced for each photon's share).
+struct PhotonEmission {
+  PointWorld origin;
+  Real3 origin_error;    // metres
+  Real3 surface_normal;  // the emitter's, oriented along the photon; zero for point lights and the environment
+  DirectionWorld direction;
+  spectrum<dim::power> flux;
+};
+
 class Lights {
  public:
   explicit Lights(const Scene& scene);
@@ -47,6 +58,13 @@ class Lights {
   // Solid-angle density with which sample() would have produced the emitter
   // point `hit` (found at `time`) as seen from `reference`.
   PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit, Time time) const;
+
+  // A photon from a light chosen by power, at `time`: a point light's in a
+  // uniform direction, an area light's from a uniform point (a side chosen
+  // evenly for two-sided ones) in a cosine-distributed direction, the
+  // environment's from a disc across the scene's bounding sphere, facing the
+  // sampled direction.
+  std::optional<PhotonEmission> sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3, Real u4) const;
 
   // The environment, seen by a ray that escapes along `direction`, and the
   // density with which sample() picks that direction (light choice included).
@@ -88,6 +106,7 @@ class Lights {
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
                                                 Real u) const;
+  SurfacePoint sample_surface(uint32_t index, Time time, Real u_light, Real u1, Real u2) const;
   SurfacePoint sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 
@@ -102,6 +121,8 @@ class Lights {
   std::vector<int32_t> light_of_shape_;
   std::optional<Environment> environment_;
   uint32_t environment_index_ = 0;
+  PointWorld scene_center_;  // the bounding sphere of the scene (with an environment)
+  Length scene_radius_ = sg::zero;
   bool has_area_lights_ = false;  // area lights or the environment: the lights with a density
 };
 
