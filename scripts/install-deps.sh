@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind                           # instruction counts for the benchmarks
   gnuplot-nox                        # the benchmarks' log-log plots (docs/img/)
+  libopenmpi-dev openmpi-bin         # distributed safegi-render (mpirun); optional at configure time
 )
 
 missing=()

@@ -25,6 +25,10 @@ struct BsdfSample {
   Reflectance weight;            // f · cos θ / pdf: what the path throughput is multiplied by
   PdfSolidAngle pdf = sg::zero;  // zero for the deltas (mirror, glass)
   bool specular = false;
+  // The 1/η² of radiance refracted into a denser medium, which `weight`
+  // includes; Russian roulette divides it out again (pbrt's etaScale), or it
+  // would end paths inside glass for a change of medium, not of energy.
+  Real compression = 1;
 };
 
 class Bsdf {
@@ -33,8 +37,8 @@ class Bsdf {
   // texture already applied); `eta` the index of refraction of the side away
   // from the shading normal over that of the normal's side (glass; the
   // caller knows which side the ray arrived from).
-  Bsdf(const Material& material, Reflectance diffuse, Real eta)
-      : material_(material), diffuse_(diffuse), eta_(eta), microfacets_(material.alpha) {
+  // (`diffuse` is referenced, not copied: it must outlive the Bsdf.)
+  Bsdf(const Material& material, const Reflectance& diffuse, Real eta) : material_(material), diffuse_(diffuse), eta_(eta) {
     if (material.type == Material::Type::phong || material.type == Material::Type::plastic) {
       Real d = sg::average(diffuse), s = sg::average(material.specular);
       specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
@@ -87,13 +91,20 @@ class Bsdf {
         return BsdfSample{reflect(wo), material_.specular, sg::zero, true};
       case Material::Type::glass:
         return sample_glass(wo, u_lobe, transport);
-      case Material::Type::lambert:
+      case Material::Type::lambert: {
+        // The general case below, with eval() and pdf() resolved for Lambert (the same arithmetic).
+        DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+        if (wi.z() <= 0) return std::nullopt;
+        PdfSolidAngle density = cosine_pdf(wi);
+        if (!(density > sg::zero)) return std::nullopt;
+        return BsdfSample{wi, lambert(diffuse_) * sg::cos_theta(wi) / density, density, false};
+      }
       case Material::Type::phong:
       case Material::Type::plastic: {
         DirectionShading wi;
         if (u_lobe < specular_probability_) {
           if (material_.type == Material::Type::plastic) {
-            DirectionShading h = microfacets_.sample_normal(u1, u2);
+            DirectionShading h = TrowbridgeReitz(material_.alpha).sample_normal(u1, u2);
             wi = sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
           } else {
             auto lobe_frame = frame<Shading, PhongLobe>::from_normal(sg::to_normal(reflect(wo)));
@@ -137,7 +148,7 @@ class Bsdf {
     std::optional<DirectionShading> wt = refract(wo, eta_);
     if (!wt) return BsdfSample{reflect(wo), material_.specular, sg::zero, true};  // rounding at the critical angle
     const Real compression = transport == Transport::radiance ? 1 / (eta_ * eta_) : Real(1);
-    return BsdfSample{*wt, material_.transmission * compression, sg::zero, true};
+    return BsdfSample{*wt, material_.transmission * compression, sg::zero, true, compression};
   }
 
   // The coating's Fresnel factor at the microfacet: from outside (η = ior), or
@@ -151,20 +162,20 @@ class Bsdf {
   // measure is D's, so the result is a BRDF per projected solid angle.
   Brdf microfacet_reflection(DirectionShading wo, DirectionShading wi) const {
     DirectionShading h = half_vector(wo, wi);
-    Real ratio = coating_fresnel(sg::dot(wi, h)) * microfacets_.masking_shadowing(wo, wi) / (4 * wo.z() * wi.z());
-    return material_.specular * ratio * microfacets_.density(h);
+    TrowbridgeReitz microfacets(material_.alpha);
+    Real ratio = coating_fresnel(sg::dot(wi, h)) * microfacets.masking_shadowing(wo, wi) / (4 * wo.z() * wi.z());
+    return material_.specular * ratio * microfacets.density(h);
   }
 
   // Normals drawn by D(h) cos θh, reflected: the density per solid angle of wi.
   PdfSolidAngle microfacet_pdf(DirectionShading wo, DirectionShading wi) const {
     DirectionShading h = half_vector(wo, wi);
-    return microfacets_.normal_pdf(h) * reflection_jacobian(wo, h);
+    return TrowbridgeReitz(material_.alpha).normal_pdf(h) * reflection_jacobian(wo, h);
   }
 
   const Material& material_;
-  Reflectance diffuse_;
+  const Reflectance& diffuse_;
   Real eta_;
-  TrowbridgeReitz microfacets_;
   Real specular_probability_ = 0;
 };
 

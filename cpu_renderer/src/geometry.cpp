@@ -159,9 +159,11 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) c
     }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
-    hit.face = faces_[primitive];
-    hit.b1 = b1;
-    hit.b2 = b2;
+    if (record_faces_) {
+      hit.face = faces_[primitive];
+      hit.b1 = b1;
+      hit.b2 = b2;
+    }
   } else {
     const Sphere& sphere = spheres_[primitive - triangles_.size()];
     Real3 relative = ray.origin + ray.direction * t_max - sphere.center;
@@ -204,10 +206,13 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Obje
 
 Geometry::Geometry(const Scene& scene) {
   Real time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
+  const bool textured = !scene.textures.empty();
+  if (textured) static_primitives_.record_faces();
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
     if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
       Instance instance{PrimitiveSet{}, *motion, Bounds3{}};
+      if (textured) instance.primitives.record_faces();
       add_shape(instance.primitives, shape, i, nullptr);
       instance.primitives.build();
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below

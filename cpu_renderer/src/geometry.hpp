@@ -66,9 +66,11 @@ class PrimitiveSet {
     uint32_t shape;
   };
 
+  // Hits then carry their triangle and barycentrics (for texture lookups).
+  void record_faces() { record_faces_ = true; }
   void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape, uint32_t face) {
     triangles_.push_back({a, b - a, c - a, shape});
-    faces_.push_back(face);
+    if (record_faces_) faces_.push_back(face);
   }
   void add_sphere(Real3 center, Real radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
   void build();
@@ -84,7 +86,8 @@ class PrimitiveSet {
   bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
 
   std::vector<Triangle> triangles_;
-  std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits)
+  std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits), if recorded
+  bool record_faces_ = false;
   std::vector<Sphere> spheres_;
   kernel::Bvh bvh_;
 };

@@ -69,6 +69,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   // Photon integrator: once a non-specular vertex has occurred, emission found
   // through specular bounces only (a caustic path, L S+ D …) is the photon map's.
   bool after_diffuse = false;
+  Real compression = 1;  // the radiance compression by refraction so far (for Russian roulette)
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   for (int depth = 0;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
@@ -101,13 +102,14 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (shape.material < 0) break;
     const Material& material = scene_.materials[shape.material];
     travelled += hit->distance;
-    Reflectance diffuse = material.diffuse;
+    std::optional<Reflectance> textured;
     if (material.diffuse_texture >= 0) {
       // The cone's width across the surface, stretched by its tilt (a plain ratio).
       Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
       Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
-      diffuse = textures_.diffuse(material, *hit, width, ray.time);
+      textured = textures_.diffuse(material, *hit, width, ray.time);
     }
+    const Reflectance& diffuse = textured ? *textured : material.diffuse;
     // Glass tells its sides apart: eta is the far side's index over the near side's.
     Real eta = material.ior;
     if (material.type == Material::Type::glass && sg::dot(hit->normal, ray.d) > sg::zero) eta = 1 / eta;
@@ -135,6 +137,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       last_vertex = true;
     }
     throughput *= scattered->weight;
+    compression *= scattered->compression;
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
     sharp_cone = sharp_cone && scattered->specular;
@@ -144,7 +147,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
     ++counters.extension;
     if (depth >= roulette_depth_ && !last_vertex) {
-      Real survival = std::min(Real(0.95), sg::max_component(throughput));
+      Real survival = std::min(Real(0.95), sg::max_component(throughput) / compression);
       if (sampler.next_1d() >= survival) break;
       throughput = throughput / survival;
     }

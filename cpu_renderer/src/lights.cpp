@@ -173,32 +173,40 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
   return point;
 }
 
-// A point on area light `index` (chosen with u_light, whose rest picks the triangle by area).
-Lights::SurfacePoint Lights::sample_surface(uint32_t index, Time time, Real u_light, Real u1, Real u2) const {
+// A point on area light `index`, chosen with probability `probability` by
+// u_light, whose rest picks the triangle by area: its position, rounding-error
+// box, unit normal and density per area. (Inlined into both callers, writing
+// straight into theirs: next-event estimation runs it once per shadow ray.)
+[[gnu::always_inline]] inline void Lights::sample_surface(uint32_t index, Real probability, Time time, Real u_light,
+                                                          Real u1, Real u2, PointWorld& position, Real3& position_error,
+                                                          NormalWorld& normal, PdfArea& pdf_area) const {
   const Light& light = lights_[index];
   Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
-  Real u_triangle = std::min((u_light - low) / selection_probability(index), Real(0x1.fffffep-1f));
-  if (light.motion >= 0) return sample_moving(light, time, u_triangle, u1, u2);
-  SurfacePoint point;
-  point.pdf_area = light.pdf_area;
-  if (light.type == Light::Type::sphere) {
+  Real u_triangle = std::min((u_light - low) / probability, Real(0x1.fffffep-1f));
+  pdf_area = light.pdf_area;
+  if (light.motion >= 0) {
+    SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
+    position = point.position;
+    position_error = point.position_error;
+    normal = point.normal;
+    pdf_area = point.pdf_area;
+  } else if (light.type == Light::Type::sphere) {
     DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
-    point.normal = sg::to_normal(outward);
+    normal = sg::to_normal(outward);
     VectorWorld offset = outward * light.radius;
-    point.position = light.position + offset;
-    point.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
-    return point;
+    position = light.position + offset;
+    position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+  } else {
+    const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
+    Real root = std::sqrt(u1);
+    Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+    position = tri.p0 + along_u + along_v;
+    position_error =
+        (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+        kernel::gamma(7);
+    normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
   }
-  const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-  Real root = std::sqrt(u1);
-  Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-  VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
-  point.position = tri.p0 + along_u + along_v;
-  point.position_error =
-      (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
-      kernel::gamma(7);
-  point.normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
-  return point;
 }
 
 std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const {
@@ -230,11 +238,9 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.delta = true;
     return sample;
   }
-  SurfacePoint point = sample_surface(index, time, u_light, u1, u2);
-  sample.position = point.position;
-  sample.position_error = point.position_error;
-  NormalWorld normal = point.normal;
-  PdfArea pdf_area = point.pdf_area;
+  NormalWorld normal;
+  PdfArea pdf_area = sg::zero;
+  sample_surface(index, probability, time, u_light, u1, u2, sample.position, sample.position_error, normal, pdf_area);
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
@@ -302,7 +308,9 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
     photon.flux = sky->radiance * head_on * disc_area / (sky->pdf * probability);
     return photon;
   }
-  SurfacePoint point = sample_surface(index, time, u_light, u1, u2);
+  SurfacePoint point;
+  sample_surface(index, probability, time, u_light, u1, u2, point.position, point.position_error, point.normal,
+                 point.pdf_area);
   NormalWorld normal = point.normal;
   Real sides = 1;
   if (light.two_sided) {  // either side, evenly

@@ -106,7 +106,8 @@ class Lights {
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
                                                 Real u) const;
-  SurfacePoint sample_surface(uint32_t index, Time time, Real u_light, Real u1, Real u2) const;
+  void sample_surface(uint32_t index, Real probability, Time time, Real u_light, Real u1, Real u2, PointWorld& position,
+                      Real3& position_error, NormalWorld& normal, PdfArea& pdf_area) const;
   SurfacePoint sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 

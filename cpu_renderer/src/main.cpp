@@ -8,6 +8,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "distributed.hpp"
 #include "safegi/cpu_renderer/image_io.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
@@ -35,6 +36,8 @@ rusage resource_usage() {
 
 int main(int argc, char** argv) {
   using namespace safegi::render;
+  // Under mpirun, one rank of a distributed render (docs/cpu-renderer.md); else a single process.
+  DistributedSession session(argc, argv);
   CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG"};
   std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette;
   int spp = 0, threads = 0, max_depth = 0, light_samples = 0, roulette_depth = -1;
@@ -44,7 +47,7 @@ int main(int argc, char** argv) {
   app.add_option("scene", scene_file, "scene file (.json)")->required();
   app.add_option("-o,--output", output, "output name; writes NAME.exr (linear) and NAME.png (sRGB)");
   app.add_option("--spp", spp, "samples per pixel (with --time-budget: the most to take)")->check(CLI::Range(1, 1 << 24));
-  app.add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", threads, "worker threads (per rank under mpirun; default: all cores)")->check(CLI::Range(1, 1024));
   app.add_option("--seed", seed, "seed of the per-pixel sample sequences");
   app.add_option("--resolution", resolution, "image size WIDTHxHEIGHT (default: the scene's)");
   app.add_option("--crop", crop, "render only the window X,Y,WIDTH,HEIGHT (pixels)");
@@ -69,7 +72,11 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "no progress bar");
   app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, e.g. for test references)");
   app.add_flag("--stats", stats_json, "print render statistics as one JSON line on stdout");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return session.is_root() ? app.exit(error) : error.get_exit_code();  // every rank parses alike; one prints
+  }
 
   try {
     Scene scene = load_scene(scene_file, SceneLoadOptions{read_image});
@@ -113,8 +120,13 @@ int main(int argc, char** argv) {
 
     RenderStats stats;
     rusage before_render = resource_usage();
-    Image image = render(scene, options, &stats);
-    double render_cpu_seconds = cpu_seconds(resource_usage()) - cpu_seconds(before_render);
+    Image image = session.render(scene, options, &stats);
+    double rank_render_cpu_seconds = cpu_seconds(resource_usage()) - cpu_seconds(before_render);
+    double render_cpu_seconds = session.sum_over_ranks(rank_render_cpu_seconds);
+    double busiest_rank_cpu_seconds = session.max_over_ranks(rank_render_cpu_seconds);
+    // Rank 0 writes the image and reports for all; the others stop here.
+    double other_ranks_cpu_seconds = session.sum_over_ranks(session.is_root() ? 0.0 : cpu_seconds(resource_usage()));
+    if (!session.is_root()) return 0;
     write_exr(with_extension(output, ".exr"), image);
     write_png(with_extension(output, ".png"), image);
     if (pfm) write_pfm(with_extension(output, ".pfm"), image);
@@ -123,7 +135,7 @@ int main(int argc, char** argv) {
     double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.total_rays()) / stats.seconds : 0.0;
     // CPU time: on a shared machine, rays per CPU-second of the render is the
     // per-core throughput even when wall-clock time is not.
-    double process_cpu_seconds = cpu_seconds(usage);
+    double process_cpu_seconds = cpu_seconds(usage) + other_ranks_cpu_seconds;
     if (!quiet)
       std::fprintf(stderr, "%dx%d, %d spp in %.2f s: %.2f M rays (%.2f M rays/s), peak memory %.1f MiB\n",
                    image.width, image.height, stats.samples_per_pixel, stats.seconds, stats.total_rays() * 1e-6,
@@ -134,19 +146,21 @@ int main(int argc, char** argv) {
     if (stats_json) {
       const RenderSettings& used = options.settings;
       std::printf(
-          "{\"width\": %d, \"height\": %d, \"spp\": %d, \"samples\": %llu, \"threads\": %d, \"seed\": %u, "
+          "{\"width\": %d, \"height\": %d, \"spp\": %d, \"samples\": %llu, \"ranks\": %d, \"threads\": %d, "
+          "\"seed\": %u, "
           "\"integrator\": \"%s\", \"max_depth\": %d, \"mis\": %s, \"light_samples\": %d, "
           "\"russian_roulette\": %s, \"russian_roulette_depth\": %d, "
-          "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"cpu_seconds\": %.3f, "
+          "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"busiest_rank_render_cpu_seconds\": %.3f, "
+          "\"cpu_seconds\": %.3f, "
           "\"camera_rays\": %llu, \"extension_rays\": %llu, \"shadow_rays\": %llu, \"rays\": %llu, "
           "\"rays_per_second\": %.0f, \"samples_per_second\": %.0f, \"rays_per_cpu_second\": %.0f, "
           "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
           image.width, image.height, stats.samples_per_pixel, static_cast<unsigned long long>(stats.camera_rays),
-          stats.threads, seed,
+          session.ranks(), stats.threads, seed,
           used.integrator == IntegratorType::direct ? "direct" : used.integrator == IntegratorType::path ? "path" : "photon",
           used.max_depth,
           used.mis ? "true" : "false", used.light_samples, used.russian_roulette ? "true" : "false",
-          used.russian_roulette_depth, stats.seconds, render_cpu_seconds, process_cpu_seconds,
+          used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
           static_cast<unsigned long long>(stats.shadow_rays), static_cast<unsigned long long>(stats.total_rays()),
           rays_per_second, stats.seconds > 0 ? static_cast<double>(stats.camera_rays) / stats.seconds : 0.0,
@@ -154,8 +168,7 @@ int main(int argc, char** argv) {
           usage.ru_maxrss, static_cast<unsigned long long>(stats.invalid_samples));
     }
   } catch (const std::exception& error) {
-    std::cerr << "error: " << error.what() << "\n";
-    return 1;
+    return session.report_error(error);
   }
   return 0;
 }

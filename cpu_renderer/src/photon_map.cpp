@@ -78,7 +78,8 @@ void PhotonMap::trace(const Scene& scene, const Geometry& geometry, const Lights
       const Material& material = scene.materials[shape.material];
       Real eta = material.ior;
       if (material.type == Material::Type::glass && sg::dot(hit->normal, segment.d) > sg::zero) eta = 1 / eta;
-      Bsdf bsdf(material, textures.diffuse(material, *hit, sg::zero, time), eta);
+      const Reflectance diffuse = textures.diffuse(material, *hit, sg::zero, time);
+      Bsdf bsdf(material, diffuse, eta);
       NormalWorld facing = sg::face_forward(hit->normal, -segment.d);
       ShadingFrame frame = ShadingFrame::from_normal(facing);
       DirectionShading wo = frame.to_local(-segment.d);

@@ -103,11 +103,15 @@ class Progress {
   bool finished_ = false;
 };
 
-struct Tile {
-  int x0, y0, x1, y1;
-};
-
 }  // namespace
+
+std::vector<PixelRect> render_tiles(int width, int height) {
+  std::vector<PixelRect> tiles;
+  for (int y = 0; y < height; y += kTileSize)
+    for (int x = 0; x < width; x += kTileSize)
+      tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
+  return tiles;
+}
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
   Clock::time_point start = Clock::now();
@@ -123,11 +127,18 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   PerspectiveCamera camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
 
-  std::vector<Tile> tiles;
-  for (int y = 0; y < window.height; y += kTileSize)
-    for (int x = 0; x < window.width; x += kTileSize)
-      tiles.push_back({window.x + x, window.y + y, window.x + std::min(x + kTileSize, window.width),
-                       window.y + std::min(y + kTileSize, window.height)});
+  // This process's tiles, in image coordinates; with a partition, every
+  // parts()-th of them.
+  RenderPartition* partition = options.partition;
+  std::vector<PixelRect> tiles;
+  uint64_t pixel_count = 0;
+  std::vector<PixelRect> window_tiles = render_tiles(window.width, window.height);
+  for (size_t t = 0; t < window_tiles.size(); ++t) {
+    if (partition && static_cast<int>(t % partition->parts()) != partition->part()) continue;
+    const PixelRect& r = window_tiles[t];
+    tiles.push_back({window.x + r.x0, window.y + r.y0, window.x + r.x1, window.y + r.y1});
+    pixel_count += static_cast<uint64_t>(r.x1 - r.x0) * (r.y1 - r.y0);
+  }
 
   // Per-pixel sums in double; every pixel's samples are added in sample order,
   // so the result does not depend on which thread rendered which tile.
@@ -139,7 +150,6 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int spp_cap = settings.spp;
   // With a time budget, samples are added in passes; without, one pass renders all.
   int pass_spp = budgeted ? 1 : spp_cap;
-  uint64_t pixel_count = static_cast<uint64_t>(window.width) * window.height;
   Progress progress(options.progress, pixel_count * static_cast<uint64_t>(spp_cap));
 
   std::vector<RayCounters> counters(thread_count);
@@ -153,7 +163,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     auto worker = [&](int thread_index) {
       RayCounters& counter = counters[thread_index];
       for (size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
-        const Tile& tile = tiles[t];
+        const PixelRect& tile = tiles[t];
         for (int y = tile.y0; y < tile.y1; ++y) {
           for (int x = tile.x0; x < tile.x1; ++x) {
             double* sum = &sums[3 * (static_cast<size_t>(y - window.y) * window.width + (x - window.x))];
@@ -182,13 +192,19 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     spp_done = pass_end;
 
     if (budgeted) {
-      double elapsed = seconds_since(start);
       double pass_seconds = std::max(1e-6, seconds_since(pass_start));
+      if (partition) pass_seconds = partition->slowest_pass_seconds(pass_seconds);
+      double elapsed = seconds_since(start);
       double per_sample = pass_seconds / (pass_end - pass_begin);
       double remaining = options.time_budget_seconds - elapsed;
-      if (remaining < per_sample) break;
-      // Grow passes so the budget is met with few synchronisation points.
-      pass_spp = std::max(1, std::min(static_cast<int>(remaining / per_sample / 2), 2 * (pass_end - pass_begin)));
+      // Grow passes so the budget is met with few synchronisation points; 0 stops.
+      int next_pass_spp =
+          remaining < per_sample
+              ? 0
+              : std::max(1, std::min(static_cast<int>(remaining / per_sample / 2), 2 * (pass_end - pass_begin)));
+      if (partition) next_pass_spp = partition->next_pass_spp_of_first(next_pass_spp);
+      if (next_pass_spp == 0) break;
+      pass_spp = next_pass_spp;
       double projected = (spp_done + std::min(spp_cap - spp_done, static_cast<int>(remaining / per_sample))) ;
       progress.set_total(static_cast<uint64_t>(projected) * pixel_count);
     }

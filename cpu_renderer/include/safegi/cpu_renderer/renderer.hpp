@@ -14,6 +14,33 @@ struct CropWindow {
   int x = 0, y = 0, width = 0, height = 0;  // in pixels of the full image
 };
 
+struct PixelRect {
+  int x0, y0, x1, y1;  // the pixels [x0, x1) × [y0, y1)
+};
+
+// The 16×16 tiles of a width × height window, row by row, relative to its
+// corner: the units of work the renderer hands to its threads (and a
+// distributed render to its processes).
+std::vector<PixelRect> render_tiles(int width, int height);
+
+// One process's share of a render split over several processes
+// (cpu_renderer/src/distributed.hpp). The process renders the tiles t with
+// t % parts() == part(), each pixel with all its samples, so every pixel's sum
+// adds the same samples in the same order as a single process would; a
+// time-budgeted render's pass decisions are taken by process 0 for all.
+class RenderPartition {
+ public:
+  virtual ~RenderPartition() = default;
+  virtual int part() const = 0;
+  virtual int parts() const = 0;
+  // Collective, after each time-budgeted pass: this process's seconds for the
+  // pass in, the slowest process's out (on process 0; elsewhere unspecified).
+  virtual double slowest_pass_seconds(double seconds) = 0;
+  // Collective: process 0's decision on every process (samples per pixel of
+  // the next pass; 0: stop here).
+  virtual int next_pass_spp_of_first(int next_pass_spp) = 0;
+};
+
 struct RenderOptions {
   RenderSettings settings;          // resolution, spp, integrator, max depth
   int threads = 0;                  // 0: every hardware thread
@@ -21,6 +48,7 @@ struct RenderOptions {
   std::optional<CropWindow> crop;   // render (and return) only this window
   double time_budget_seconds = 0;   // > 0: add samples until this much time is spent (spp is then a cap)
   bool progress = false;            // progress bar and ETA on stderr
+  RenderPartition* partition = nullptr;  // null: this process renders every tile
 };
 
 struct RenderStats {
