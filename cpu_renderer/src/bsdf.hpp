@@ -34,17 +34,17 @@ struct BsdfSample {
 class Bsdf {
  public:
   // `diffuse` is the material's diffuse reflectance at the shading point (its
-  // texture already applied); `eta` the index of refraction of the side away
-  // from the shading normal over that of the normal's side (glass; the
-  // caller knows which side the ray arrived from).
-  // (`diffuse` is referenced, not copied: it must outlive the Bsdf.)
-  Bsdf(const Material& material, const Reflectance& diffuse, Real eta) : material_(material), diffuse_(diffuse), eta_(eta) {
+  // texture already applied; referenced, not copied: it must outlive the
+  // Bsdf); `from_inside`: the light leaves towards the side the geometric
+  // normal points away from (glass: the inside, so η is 1/ior there).
+  Bsdf(const Material& material, const Reflectance& diffuse, bool from_inside)
+      : material_(material), diffuse_(diffuse), from_inside_(from_inside) {
     if (material.type == Material::Type::phong || material.type == Material::Type::plastic) {
       Real d = sg::average(diffuse), s = sg::average(material.specular);
       specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
     }
   }
-  explicit Bsdf(const Material& material) : Bsdf(material, material.diffuse, material.ior) {}
+  explicit Bsdf(const Material& material) : Bsdf(material, material.diffuse, false) {}
 
   bool is_specular() const {
     return material_.type == Material::Type::mirror || material_.type == Material::Type::glass;
@@ -52,9 +52,8 @@ class Bsdf {
 
   Brdf eval(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() <= 0) return Brdf{};
+    if (material_.type == Material::Type::lambert) return lambert(diffuse_);  // the common case, before the switch
     switch (material_.type) {
-      case Material::Type::lambert:
-        return lambert(diffuse_);
       case Material::Type::phong:
         // Lafortune & Willems' normalisation keeps the lobe's albedo <= specular.
         return lambert(diffuse_) +
@@ -69,9 +68,8 @@ class Bsdf {
 
   PdfSolidAngle pdf(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() <= 0) return sg::zero;
+    if (material_.type == Material::Type::lambert) return cosine_pdf(wi);
     switch (material_.type) {
-      case Material::Type::lambert:
-        return cosine_pdf(wi);
       case Material::Type::phong: {
         PdfSolidAngle lobe = (material_.exponent + 1) * 0.5f * kInversePi * lobe_cosine_power(wo, wi) / units::steradian;
         return (1 - specular_probability_) * cosine_pdf(wi) + specular_probability_ * lobe;
@@ -143,11 +141,13 @@ class Bsdf {
   // the Fresnel probability, so that the weight is the tint alone (and 1/η²
   // for radiance crossing into a denser medium).
   std::optional<BsdfSample> sample_glass(DirectionShading wo, Real u, Transport transport) const {
-    const Real reflected = fresnel_dielectric(wo.z(), eta_);
+    // The far side's index over the near side's.
+    const Real eta = from_inside_ ? 1 / material_.ior : material_.ior;
+    const Real reflected = fresnel_dielectric(wo.z(), eta);
     if (u < reflected) return BsdfSample{reflect(wo), material_.specular, sg::zero, true};
-    std::optional<DirectionShading> wt = refract(wo, eta_);
+    std::optional<DirectionShading> wt = refract(wo, eta);
     if (!wt) return BsdfSample{reflect(wo), material_.specular, sg::zero, true};  // rounding at the critical angle
-    const Real compression = transport == Transport::radiance ? 1 / (eta_ * eta_) : Real(1);
+    const Real compression = transport == Transport::radiance ? 1 / (eta * eta) : Real(1);
     return BsdfSample{*wt, material_.transmission * compression, sg::zero, true, compression};
   }
 
@@ -175,7 +175,7 @@ class Bsdf {
 
   const Material& material_;
   const Reflectance& diffuse_;
-  Real eta_;
+  bool from_inside_;
   Real specular_probability_ = 0;
 };
 

@@ -204,8 +204,9 @@ TEST(Bsdf, GlassChoosesByFresnelAndCompressesRadiance) {
   glass.specular = Reflectance(1.0f);
   glass.transmission = Reflectance(1.0f);
   glass.ior = 1.5f;
-  for (Real eta : {1.5f, 1 / 1.5f}) {
-    Bsdf bsdf(glass, glass.diffuse, eta);
+  for (bool from_inside : {false, true}) {
+    const Real eta = from_inside ? 1 / glass.ior : glass.ior;
+    Bsdf bsdf(glass, glass.diffuse, from_inside);
     EXPECT_TRUE(bsdf.is_specular());
     for (double theta : {0.0, 0.6, 1.2}) {
       DirectionShading wo = spherical(theta, 0.3);

@@ -159,11 +159,7 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) c
     }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
-    if (record_faces_) {
-      hit.face = faces_[primitive];
-      hit.b1 = b1;
-      hit.b2 = b2;
-    }
+    if (record_faces_) hit.face = faces_[primitive];
   } else {
     const Sphere& sphere = spheres_[primitive - triangles_.size()];
     Real3 relative = ray.origin + ray.direction * t_max - sphere.center;
@@ -260,7 +256,7 @@ std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
   }
   if (!hit) return std::nullopt;
   return SurfaceHit{from_kernel<PointWorld>(hit->position), hit->position_error, from_kernel<NormalWorld>(hit->normal),
-                    sg::from_raw<Length>(hit->distance), hit->shape, hit->face, hit->b1, hit->b2};
+                    sg::from_raw<Length>(hit->distance), hit->shape, hit->face};
 }
 
 bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {

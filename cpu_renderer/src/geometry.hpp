@@ -26,10 +26,9 @@ struct SurfaceHit {
   NormalWorld normal;     // geometric normal, on the side given by the winding
   Length distance = sg::zero;  // along the ray
   uint32_t shape = 0;     // index into Scene::shapes
-  // Where on the shape: the triangle (index / 3 into Shape::indices) and the
-  // barycentric weights of its second and third vertex; unused for spheres.
+  // The triangle hit (its first index is 3·face into Shape::indices), in scenes
+  // with textures; unused for spheres.
   uint32_t face = 0;
-  Real b1 = 0, b2 = 0;
 };
 
 namespace kernel {
@@ -48,7 +47,6 @@ struct Hit {
   Real distance = 0.0f;
   uint32_t shape = 0;
   uint32_t face = 0;
-  Real b1 = 0, b2 = 0;
 };
 
 }  // namespace kernel
@@ -66,7 +64,7 @@ class PrimitiveSet {
     uint32_t shape;
   };
 
-  // Hits then carry their triangle and barycentrics (for texture lookups).
+  // Hits then carry their triangle (for texture lookups).
   void record_faces() { record_faces_ = true; }
   void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape, uint32_t face) {
     triangles_.push_back({a, b - a, c - a, shape});

@@ -34,10 +34,8 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if (wi.z() <= 0) continue;
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) continue;
-    Length t_max = sg::from_raw<Length>(kernel::kInfinity);
-    TimedRay shadow = light->infinite
-                          ? spawn_ray(hit, light->wi, time)
-                          : spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
+    Length t_max = sg::zero;
+    TimedRay shadow = spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
     ++counters.shadow;
     if (geometry_.occluded(shadow, t_max)) continue;
     if constexpr (area_lights) {
@@ -55,7 +53,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
   return sum;
 }
 
-template <bool area_lights, bool one_light_sample, bool gather>
+template <bool area_lights, bool one_light_sample, bool gather, bool textured>
 Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
   Radiance radiance;
   Reflectance throughput(1.0f);
@@ -101,21 +99,23 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     const Shape& shape = scene_.shapes[hit->shape];
     if (shape.material < 0) break;
     const Material& material = scene_.materials[shape.material];
-    travelled += hit->distance;
-    std::optional<Reflectance> textured;
-    if (material.diffuse_texture >= 0) {
-      // The cone's width across the surface, stretched by its tilt (a plain ratio).
-      Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
-      Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
-      textured = textures_.diffuse(material, *hit, width, ray.time);
+    Reflectance texel;  // the textured diffuse reflectance, when there is one
+    const Reflectance* diffuse = &material.diffuse;
+    if constexpr (textured) {
+      travelled += hit->distance;
+      if (material.diffuse_texture >= 0) {
+        // The cone's width across the surface, stretched by its tilt (a plain ratio).
+        Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
+        Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
+        texel = textures_.diffuse(material, *hit, width, ray.time);
+        diffuse = &texel;
+      }
     }
-    const Reflectance& diffuse = textured ? *textured : material.diffuse;
-    // Glass tells its sides apart: eta is the far side's index over the near side's.
-    Real eta = material.ior;
-    if (material.type == Material::Type::glass && sg::dot(hit->normal, ray.d) > sg::zero) eta = 1 / eta;
-    Bsdf bsdf(material, diffuse, eta);
-    // Shade on the side the ray arrives from: materials are two-sided.
-    hit->normal = sg::face_forward(hit->normal, -ray.d);
+    // Shade on the side the ray arrives from: materials are two-sided (glass
+    // tells the sides apart by the geometric normal, which points out).
+    const bool from_inside = sg::dot(hit->normal, ray.d) > sg::zero;
+    hit->normal = from_inside ? -hit->normal : hit->normal;
+    Bsdf bsdf(material, *diffuse, from_inside);
     ShadingFrame frame = ShadingFrame::from_normal(hit->normal);
     DirectionShading wo = frame.to_local(-ray.d);
 
@@ -140,7 +140,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     compression *= scattered->compression;
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
-    sharp_cone = sharp_cone && scattered->specular;
+    if constexpr (textured) sharp_cone = sharp_cone && scattered->specular;
     if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
     previous_bsdf_pdf = scattered->pdf;
     previous_position = hit->position;
@@ -155,11 +155,17 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   return radiance;
 }
 
-template Radiance Integrator::trace<true, true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<true, false>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<false, true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<false, false>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<true, true, true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<true, false, true>(TimedRay, Sampler&, RayCounters&) const;
+#define SAFEGI_TRACE(area_lights, one_light_sample, gather)                                                  \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false>(TimedRay, Sampler&, RayCounters&) \
+      const;                                                                                                    \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true>(TimedRay, Sampler&, RayCounters&) \
+      const
+SAFEGI_TRACE(true, true, false);
+SAFEGI_TRACE(true, false, false);
+SAFEGI_TRACE(false, true, false);
+SAFEGI_TRACE(false, false, false);
+SAFEGI_TRACE(true, true, true);
+SAFEGI_TRACE(true, false, true);
+#undef SAFEGI_TRACE
 
 }  // namespace safegi::render

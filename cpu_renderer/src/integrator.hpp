@@ -47,18 +47,27 @@ class Integrator {
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
     // MIS bookkeeping exists only in the instantiations for scenes with area
     // lights; the light-sample loop only in those for several light samples.
+    // The texture footprint's bookkeeping exists only in those for scenes with textures.
     bool one = light_samples_ == 1;
     if (photons_)
-      return one ? trace<true, true, true>(camera_ray, sampler, counters)
-                 : trace<true, false, true>(camera_ray, sampler, counters);
+      return one ? with_textures<true, true, true>(camera_ray, sampler, counters)
+                 : with_textures<true, false, true>(camera_ray, sampler, counters);
     if (lights_.has_area_lights())
-      return one ? trace<true, true>(camera_ray, sampler, counters) : trace<true, false>(camera_ray, sampler, counters);
-    return one ? trace<false, true>(camera_ray, sampler, counters) : trace<false, false>(camera_ray, sampler, counters);
+      return one ? with_textures<true, true, false>(camera_ray, sampler, counters)
+                 : with_textures<true, false, false>(camera_ray, sampler, counters);
+    return one ? with_textures<false, true, false>(camera_ray, sampler, counters)
+               : with_textures<false, false, false>(camera_ray, sampler, counters);
   }
 
  private:
-  // gather: the photon integrator's camera pass (see PhotonMap).
-  template <bool area_lights, bool one_light_sample, bool gather = false>
+  template <bool area_lights, bool one_light_sample, bool gather>
+  Radiance with_textures(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
+    return textures_.any() ? trace<area_lights, one_light_sample, gather, true>(camera_ray, sampler, counters)
+                           : trace<area_lights, one_light_sample, gather, false>(camera_ray, sampler, counters);
+  }
+
+  // gather: the photon integrator's camera pass (see PhotonMap); textured: the scene has textures.
+  template <bool area_lights, bool one_light_sample, bool gather, bool textured>
   Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
   // `mis`: weigh area lights against BSDF sampling (false: light sampling is the only strategy).

@@ -219,12 +219,13 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
   if (light.type == Light::Type::environment) {
     std::optional<Environment::Sample> direction = environment_->sample(u1, u2);
     if (!direction) return std::nullopt;
+    // The shadow ray runs to a point beyond the scene's bounding sphere (as pbrt's).
     sample.wi = direction->wi;
     sample.radiance = direction->radiance;
     sample.pdf = probability * direction->pdf;
-    sample.distance = sg::from_raw<Length>(kernel::kInfinity);
-    sample.position = reference;
-    sample.infinite = true;
+    sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
+    sample.position = reference + sample.wi * sample.distance;
+    sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
     return sample;
   }
   if (light.type == Light::Type::point) {

@@ -21,7 +21,6 @@ struct LightSample {
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
   bool delta = false;      // a point light: no density over directions
-  bool infinite = false;   // the environment: no position; the shadow ray runs to infinity
   // Point lights: the intensity towards the shading point and the probability
   // of having chosen this light.
   Intensity intensity;

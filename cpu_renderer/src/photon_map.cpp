@@ -76,11 +76,10 @@ void PhotonMap::trace(const Scene& scene, const Geometry& geometry, const Lights
       const Shape& shape = scene.shapes[hit->shape];
       if (shape.material < 0) break;
       const Material& material = scene.materials[shape.material];
-      Real eta = material.ior;
-      if (material.type == Material::Type::glass && sg::dot(hit->normal, segment.d) > sg::zero) eta = 1 / eta;
+      const bool from_inside = sg::dot(hit->normal, segment.d) > sg::zero;
       const Reflectance diffuse = textures.diffuse(material, *hit, sg::zero, time);
-      Bsdf bsdf(material, diffuse, eta);
-      NormalWorld facing = sg::face_forward(hit->normal, -segment.d);
+      Bsdf bsdf(material, diffuse, from_inside);
+      NormalWorld facing = from_inside ? -hit->normal : hit->normal;
       ShadingFrame frame = ShadingFrame::from_normal(facing);
       DirectionShading wo = frame.to_local(-segment.d);
       // A caustic photon is one that reaches a non-specular surface through

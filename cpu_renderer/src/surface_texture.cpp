@@ -57,10 +57,20 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
     if (phi < 0) phi += 2 * kPi;
     return {phi / (2 * kPi), 1 - std::acos(std::clamp(d.z(), Real(-1), Real(1))) / kPi};
   }
+  // The hit's barycentric weights on its triangle, where the triangle is at `time`.
   const size_t first = 3 * static_cast<size_t>(hit.face);
+  ObjectToWorld to_world = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
+  PointWorld a = to_world(shape.positions[shape.indices[first]]), b = to_world(shape.positions[shape.indices[first + 1]]),
+             c = to_world(shape.positions[shape.indices[first + 2]]);
+  VectorWorld e1 = b - a, e2 = c - a, d = hit.position - a;
+  quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
+  quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
+  auto determinant = d11 * d22 - d12 * d12;
+  if (!(determinant > sg::zero)) return vertex_uv(shape, first);
+  const Real b1 = (d22 * d1 - d12 * d2) / determinant, b2 = (d11 * d2 - d12 * d1) / determinant;
+  const Real b0 = 1 - b1 - b2;
   TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
-  const Real b0 = 1 - hit.b1 - hit.b2;
-  return {b0 * t0.u + hit.b1 * t1.u + hit.b2 * t2.u, b0 * t0.v + hit.b1 * t1.v + hit.b2 * t2.v};
+  return {b0 * t0.u + b1 * t1.u + b2 * t2.u, b0 * t0.v + b1 * t1.v + b2 * t2.v};
 }
 
 Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {

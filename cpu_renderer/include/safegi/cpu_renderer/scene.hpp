@@ -28,7 +28,7 @@ struct ImageTexture {
 };
 
 struct Material {
-  enum class Type { lambert, phong, mirror, black, glass, plastic };
+  enum class Type { lambert, phong, plastic, mirror, glass, black };  // the lobed ones, then the deltas: adjacent values
   Type type = Type::black;
   Reflectance diffuse{};       // Lambert albedo; Phong and plastic diffuse part (times diffuse_texture)
   Reflectance specular{};      // Phong specular part; mirror tint; plastic Ks; glass reflection tint (Kr)
