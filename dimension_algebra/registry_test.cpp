@@ -57,22 +57,22 @@ TEST_F(Prelude, PrintsSiUnitsForPeople) {
       {"pdf_area", "m⁻²"},         {"pdf_length", "m⁻¹"},    {"inv_area", "m⁻²"},
       {"angle", "rad"},            {"solid_angle", "sr"},    {"proj", "1"},
   };
-  for (const auto& [name, units] : expected) EXPECT_EQ(r.format_units(*r.find_dimension(name)), units) << name;
-  EXPECT_EQ(r.format_units(*r.find_dimension("radiance"), Notation::ascii), "W*m^-2*sr^-1");
+  for (const auto& [name, units] : expected) EXPECT_EQ(r.format_si(*r.find_dimension(name)), units) << name;
+  EXPECT_EQ(r.format_si(*r.find_dimension("radiance"), Notation::ascii), "W*m^-2*sr^-1");
   // Watts take what energy and inverse time share; the rest stays J or s.
-  EXPECT_EQ(r.format_units(dim({{"energy", 2}, {"time", -1}})), "W·J");
-  EXPECT_EQ(r.format_units(dim({{"energy", 1}, {"time", -2}})), "W·s⁻¹");
-  EXPECT_EQ(r.format_units(dim({{"energy", 1}, {"time", 1}})), "J·s");
-  EXPECT_EQ(r.format_units(dim({{"power", -1}})), "W⁻¹");
-  EXPECT_EQ(r.format_units(dim({{"angle", 1}, {"time", -1}})), "rad·s⁻¹");
+  EXPECT_EQ(r.format_si(dim({{"energy", 2}, {"time", -1}})), "W·J");
+  EXPECT_EQ(r.format_si(dim({{"energy", 1}, {"time", -2}})), "W·s⁻¹");
+  EXPECT_EQ(r.format_si(dim({{"energy", 1}, {"time", 1}})), "J·s");
+  EXPECT_EQ(r.format_si(dim({{"power", -1}})), "W⁻¹");
+  EXPECT_EQ(r.format_si(dim({{"angle", 1}, {"time", -1}})), "rad·s⁻¹");
   // A program's own base keeps its name, after the SI symbols.
   DimensionRegistry own = DimensionRegistry::rendering_prelude();
   const BaseId pixel = *own.add_base("pixel");
-  EXPECT_EQ(own.format_units(*multiply(Dimension::base(pixel, -2), *own.find_dimension("length"))), "m·pixel⁻²");
+  EXPECT_EQ(own.format_si(*multiply(Dimension::base(pixel, -2), *own.find_dimension("length"))), "m·pixel⁻²");
   // Without the prelude every base is the program's own.
   DimensionRegistry bare;
   const BaseId mass = *bare.add_base("mass");
-  EXPECT_EQ(bare.format_units(Dimension::base(mass, 3)), "mass³");
+  EXPECT_EQ(bare.format_si(Dimension::base(mass, 3)), "mass³");
 }
 
 TEST_F(Prelude, PrintsANormalisedProductOtherwise) {

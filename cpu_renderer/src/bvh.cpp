@@ -12,7 +12,7 @@ constexpr int kBinCount = 16;
 // stack (128 entries) can never overflow on degenerate input.
 constexpr int kMaxSahDepth = 48;
 // Relative cost of one traversal step against one primitive test.
-constexpr float kTraversalCost = 0.5f;
+constexpr Real kTraversalCost = 0.5f;
 
 struct Bin {
   Bounds3 bounds;
@@ -22,25 +22,25 @@ struct Bin {
 struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin] go left
-  float cost = std::numeric_limits<float>::infinity();
+  Real cost = std::numeric_limits<Real>::infinity();
 };
 
-Split find_sah_split(std::span<const Bounds3> bounds, const std::vector<Float3>& centroids,
+Split find_sah_split(std::span<const Bounds3> bounds, const std::vector<Real3>& centroids,
                      std::span<const uint32_t> primitives, const Bounds3& centroid_bounds) {
   Split best;
   for (int axis = 0; axis < 3; ++axis) {
-    float lo = centroid_bounds.lower[axis];
-    float extent = centroid_bounds.upper[axis] - lo;
+    Real lo = centroid_bounds.lower[axis];
+    Real extent = centroid_bounds.upper[axis] - lo;
     if (!(extent > 0)) continue;
     Bin bins[kBinCount];
-    float scale = kBinCount / extent;
+    Real scale = kBinCount / extent;
     for (uint32_t primitive : primitives) {
       int b = std::min(kBinCount - 1, static_cast<int>((centroids[primitive][axis] - lo) * scale));
       bins[b].count++;
       bins[b].bounds.extend(bounds[primitive]);
     }
     // Sweep from the right to get the cost of every right side, then from the left.
-    float right_area[kBinCount];
+    Real right_area[kBinCount];
     uint32_t right_count[kBinCount];
     Bounds3 right;
     uint32_t count = 0;
@@ -56,7 +56,7 @@ Split find_sah_split(std::span<const Bounds3> bounds, const std::vector<Float3>&
       left.extend(bins[b].bounds);
       count += bins[b].count;
       if (count == 0 || right_count[b + 1] == 0) continue;
-      float cost = left.surface_area() * count + right_area[b + 1] * right_count[b + 1];
+      Real cost = left.surface_area() * count + right_area[b + 1] * right_count[b + 1];
       if (cost < best.cost) best = Split{axis, b, cost};
     }
   }
@@ -69,14 +69,14 @@ Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size) {
   if (bounds.empty()) return;
   primitive_order_.resize(bounds.size());
   std::iota(primitive_order_.begin(), primitive_order_.end(), 0u);
-  std::vector<Float3> centroids(bounds.size());
+  std::vector<Real3> centroids(bounds.size());
   for (size_t i = 0; i < bounds.size(); ++i) centroids[i] = bounds[i].centroid();
   nodes_.reserve(2 * bounds.size());
   depth_ = 0;
   build_recursive(bounds, centroids, 0, static_cast<uint32_t>(bounds.size()), max_leaf_size);
 }
 
-uint32_t Bvh::build_recursive(std::span<const Bounds3> bounds, std::vector<Float3>& centroids,
+uint32_t Bvh::build_recursive(std::span<const Bounds3> bounds, std::vector<Real3>& centroids,
                               uint32_t begin, uint32_t end, int max_leaf_size) {
   uint32_t index = static_cast<uint32_t>(nodes_.size());
   nodes_.emplace_back();
@@ -99,13 +99,13 @@ uint32_t Bvh::build_recursive(std::span<const Bounds3> bounds, std::vector<Float
   int axis = centroid_bounds.widest_axis();
   if (depth_ < kMaxSahDepth) {
     Split split = find_sah_split(bounds, centroids, primitives, centroid_bounds);
-    float leaf_cost = static_cast<float>(count);
-    float split_cost = split.axis < 0 ? leaf_cost
+    Real leaf_cost = static_cast<Real>(count);
+    Real split_cost = split.axis < 0 ? leaf_cost
                                       : kTraversalCost + split.cost / node_bounds.surface_area();
     if (split.axis >= 0 && (split_cost < leaf_cost || count > 0xFFFFu)) {
       axis = split.axis;
-      float lo = centroid_bounds.lower[axis];
-      float scale = kBinCount / (centroid_bounds.upper[axis] - lo);
+      Real lo = centroid_bounds.lower[axis];
+      Real scale = kBinCount / (centroid_bounds.upper[axis] - lo);
       auto goes_left = [&](uint32_t primitive) {
         int b = std::min(kBinCount - 1, static_cast<int>((centroids[primitive][axis] - lo) * scale));
         return b <= split.bin;

@@ -24,12 +24,12 @@ struct BvhNode {
 
 // A ray prepared for slab tests.
 struct TraversalRay {
-  Float3 origin;
-  Float3 direction;
-  Float3 inverse_direction;
+  Real3 origin;
+  Real3 direction;
+  Real3 inverse_direction;
   int direction_is_negative[3];
 
-  TraversalRay(Float3 o, Float3 d) : origin(o), direction(d) {
+  TraversalRay(Real3 o, Real3 d) : origin(o), direction(d) {
     inverse_direction = {1.0f / d.x, 1.0f / d.y, 1.0f / d.z};
     direction_is_negative[0] = inverse_direction.x < 0;
     direction_is_negative[1] = inverse_direction.y < 0;
@@ -52,10 +52,10 @@ class Bvh {
   // reaches before `t_max`; `test` returns true on a hit and lowers t_max.
   // With `any_hit`, returns at the first hit (shadow rays).
   template <bool any_hit, class PrimitiveTest>
-  bool traverse(const TraversalRay& ray, float& t_max, PrimitiveTest&& test) const;
+  bool traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const;
 
  private:
-  uint32_t build_recursive(std::span<const Bounds3> bounds, std::vector<Float3>& centroids,
+  uint32_t build_recursive(std::span<const Bounds3> bounds, std::vector<Real3>& centroids,
                            uint32_t begin, uint32_t end, int max_leaf_size);
 
   std::vector<BvhNode> nodes_;
@@ -64,24 +64,24 @@ class Bvh {
 };
 
 // Slab test; robust against NaN from 0 * inf (pbrt-v3 §3.9.2 widening of t_far).
-inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, float t_max) {
-  const Float3& lo = b.lower;
-  const Float3& hi = b.upper;
+inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, Real t_max) {
+  const Real3& lo = b.lower;
+  const Real3& hi = b.upper;
   const int* neg = ray.direction_is_negative;
-  float tx0 = ((neg[0] ? hi.x : lo.x) - ray.origin.x) * ray.inverse_direction.x;
-  float tx1 = ((neg[0] ? lo.x : hi.x) - ray.origin.x) * ray.inverse_direction.x;
-  float ty0 = ((neg[1] ? hi.y : lo.y) - ray.origin.y) * ray.inverse_direction.y;
-  float ty1 = ((neg[1] ? lo.y : hi.y) - ray.origin.y) * ray.inverse_direction.y;
-  float tz0 = ((neg[2] ? hi.z : lo.z) - ray.origin.z) * ray.inverse_direction.z;
-  float tz1 = ((neg[2] ? lo.z : hi.z) - ray.origin.z) * ray.inverse_direction.z;
-  constexpr float widen = 1 + 2 * gamma(3);
-  float t_near = std::max(std::max(tx0, ty0), std::max(tz0, 0.0f));
-  float t_far = std::min(std::min(tx1 * widen, ty1 * widen), std::min(tz1 * widen, t_max));
+  Real tx0 = ((neg[0] ? hi.x : lo.x) - ray.origin.x) * ray.inverse_direction.x;
+  Real tx1 = ((neg[0] ? lo.x : hi.x) - ray.origin.x) * ray.inverse_direction.x;
+  Real ty0 = ((neg[1] ? hi.y : lo.y) - ray.origin.y) * ray.inverse_direction.y;
+  Real ty1 = ((neg[1] ? lo.y : hi.y) - ray.origin.y) * ray.inverse_direction.y;
+  Real tz0 = ((neg[2] ? hi.z : lo.z) - ray.origin.z) * ray.inverse_direction.z;
+  Real tz1 = ((neg[2] ? lo.z : hi.z) - ray.origin.z) * ray.inverse_direction.z;
+  constexpr Real widen = 1 + 2 * gamma(3);
+  Real t_near = std::max(std::max(tx0, ty0), std::max(tz0, Real(0)));
+  Real t_far = std::min(std::min(tx1 * widen, ty1 * widen), std::min(tz1 * widen, t_max));
   return t_near <= t_far;
 }
 
 template <bool any_hit, class PrimitiveTest>
-bool Bvh::traverse(const TraversalRay& ray, float& t_max, PrimitiveTest&& test) const {
+bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const {
   if (nodes_.empty()) return false;
   bool hit = false;
   uint32_t stack[128];

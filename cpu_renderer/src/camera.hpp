@@ -23,13 +23,13 @@ class PerspectiveCamera {
     forward_ = sg::normalize(camera.look_at - camera.position);
     right_ = sg::normalize(sg::cross(forward_, camera.up));
     up_ = sg::normalize(sg::cross(right_, forward_));
-    float tangent = sg::tan(0.5f * camera.fov);
-    float shorter = static_cast<float>(std::min(width, height));
+    Real tangent = sg::tan(0.5f * camera.fov);
+    Real shorter = static_cast<Real>(std::min(width, height));
     // Half-extents of the image plane at unit distance; the shorter axis spans the fov.
-    half_width_ = tangent * static_cast<float>(width) / shorter;
-    half_height_ = tangent * static_cast<float>(height) / shorter;
-    inverse_width_ = 1.0f / static_cast<float>(width);
-    inverse_height_ = 1.0f / static_cast<float>(height);
+    half_width_ = tangent * static_cast<Real>(width) / shorter;
+    half_height_ = tangent * static_cast<Real>(height) / shorter;
+    inverse_width_ = 1.0f / static_cast<Real>(width);
+    inverse_height_ = 1.0f / static_cast<Real>(height);
   }
 
   bool has_lens() const { return lens_radius_ > sg::zero; }
@@ -37,13 +37,13 @@ class PerspectiveCamera {
 
   TimedRay generate(int pixel_x, int pixel_y, Sampler& sampler) const {
     Sample2 film = sampler.next_2d();
-    float sx = (2 * (static_cast<float>(pixel_x) + film.u) * inverse_width_ - 1) * half_width_;
-    float sy = (1 - 2 * (static_cast<float>(pixel_y) + film.v) * inverse_height_) * half_height_;
+    Real sx = (2 * (static_cast<Real>(pixel_x) + film.u) * inverse_width_ - 1) * half_width_;
+    Real sy = (1 - 2 * (static_cast<Real>(pixel_y) + film.v) * inverse_height_) * half_height_;
     DirectionWorld direction = sg::normalize(forward_ * 1.0f + right_ * sx + up_ * sy);
     TimedRay ray{{position_, direction}, shutter_open_};
     if (has_lens()) {
       Sample2 lens = sampler.next_2d();
-      float lx, ly;
+      Real lx, ly;
       sample_concentric_disk(lens.u, lens.v, lx, ly);
       PointWorld focus_point = position_ + direction * (focus_distance_ / sg::dot(direction, forward_));
       ray.o = position_ + right_ * (lx * lens_radius_) + up_ * (ly * lens_radius_);
@@ -58,7 +58,7 @@ class PerspectiveCamera {
   DirectionWorld forward_, right_, up_;
   Length lens_radius_, focus_distance_;
   Time shutter_open_, shutter_span_;
-  float half_width_, half_height_, inverse_width_, inverse_height_;
+  Real half_width_, half_height_, inverse_width_, inverse_height_;
 };
 
 }  // namespace safegi::render

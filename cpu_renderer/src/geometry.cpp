@@ -17,14 +17,14 @@ namespace {
 using kernel::Ray;
 
 // Normals transform with the inverse transpose.
-Float3 apply_normal(const Affine& inverse_map, Float3 n) {
+Real3 apply_normal(const Affine& inverse_map, Real3 n) {
   const auto& m = inverse_map.m;
   return kernel::normalize({m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
                             m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z});
 }
 
-Float3 abs_apply_vector(const Affine& a, Float3 v) {
-  Float3 r;
+Real3 abs_apply_vector(const Affine& a, Real3 v) {
+  Real3 r;
   for (int i = 0; i < 3; ++i) r[i] = std::fabs(a.m[i][0]) * v.x + std::fabs(a.m[i][1]) * v.y + std::fabs(a.m[i][2]) * v.z;
   return r;
 }
@@ -42,7 +42,7 @@ struct Double3 {
   double x, y, z;
   friend Double3 operator-(Double3 a, Double3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 };
-Double3 to_double(Float3 v) { return {v.x, v.y, v.z}; }
+Double3 to_double(Real3 v) { return {v.x, v.y, v.z}; }
 double dot(Double3 a, Double3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
@@ -63,18 +63,18 @@ void PrimitiveSet::build() {
   }
   for (const Sphere& s : spheres_) {
     Bounds3 b;
-    b.extend(s.center - Float3{s.radius, s.radius, s.radius});
-    b.extend(s.center + Float3{s.radius, s.radius, s.radius});
+    b.extend(s.center - Real3{s.radius, s.radius, s.radius});
+    b.extend(s.center + Real3{s.radius, s.radius, s.radius});
     bounds.push_back(b);
   }
   bvh_ = kernel::Bvh(bounds);
 }
 
 template <bool any_hit>
-bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, float& b1, float& b2) const {
+bool PrimitiveSet::trace(const Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const {
   kernel::TraversalRay traversal(ray.origin, ray.direction);
   const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
-  return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t index, float& t_limit) {
+  return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t index, Real& t_limit) {
     if (index < triangle_count) {
       // Möller–Trumbore in double: in float its u, v and t carry an absolute
       // error that grows with |origin - p0| and the edge lengths, which opens
@@ -92,29 +92,29 @@ bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, floa
       Double3 q = cross(s, e1);
       double v = dot(d, q) * inverse_det;
       if (v < 0.0 || u + v > 1.0) return false;
-      float t = static_cast<float>(dot(e2, q) * inverse_det);
+      Real t = static_cast<Real>(dot(e2, q) * inverse_det);
       if (!(t > 0.0f && t < t_limit)) return false;
       t_limit = t;
       primitive = index;
-      b1 = static_cast<float>(u);
-      b2 = static_cast<float>(v);
+      b1 = static_cast<Real>(u);
+      b2 = static_cast<Real>(v);
       return true;
     }
     // Sphere, with the discriminant computed from the perpendicular offset for
     // precision far from the sphere (Ray Tracing Gems, ch. 7).
     const Sphere& sphere = spheres_[index - triangle_count];
-    Float3 oc = ray.origin - sphere.center;
-    float b = dot(oc, ray.direction);
-    Float3 perpendicular = oc - ray.direction * b;
-    float r2 = sphere.radius * sphere.radius;
-    float discriminant = r2 - dot(perpendicular, perpendicular);
+    Real3 oc = ray.origin - sphere.center;
+    Real b = dot(oc, ray.direction);
+    Real3 perpendicular = oc - ray.direction * b;
+    Real r2 = sphere.radius * sphere.radius;
+    Real discriminant = r2 - dot(perpendicular, perpendicular);
     if (discriminant < 0.0f) return false;
-    float c = dot(oc, oc) - r2;
-    float q = -b - std::copysign(std::sqrt(discriminant), b);
-    float t_near = c / q, t_far = q;
+    Real c = dot(oc, oc) - r2;
+    Real q = -b - std::copysign(std::sqrt(discriminant), b);
+    Real t_near = c / q, t_far = q;
     if (t_near > t_far) std::swap(t_near, t_far);
     // Outside (c > 0) only the near root is a first hit; inside only the far one.
-    float t = c > 0.0f ? t_near : t_far;
+    Real t = c > 0.0f ? t_near : t_far;
     if (!(t > 0.0f && t < t_limit)) return false;
     t_limit = t;
     primitive = index;
@@ -122,9 +122,9 @@ bool PrimitiveSet::trace(const Ray& ray, float& t_max, uint32_t& primitive, floa
   });
 }
 
-std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) const {
+std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) const {
   uint32_t primitive = 0;
-  float b1 = 0, b2 = 0;
+  Real b1 = 0, b2 = 0;
   if (!trace<false>(ray, t_max, primitive, b1, b2)) return std::nullopt;
   kernel::Hit hit;
   hit.distance = t_max;
@@ -139,29 +139,30 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) 
     const Double3 n = cross(to_double(tri.e1), to_double(tri.e2));
     double t = dot(p0 - o, n) / dot(d, n);
     if (std::isfinite(t) && t > 0) {
-      hit.position = {static_cast<float>(o.x + t * d.x), static_cast<float>(o.y + t * d.y),
-                      static_cast<float>(o.z + t * d.z)};
+      hit.position = {static_cast<Real>(o.x + t * d.x), static_cast<Real>(o.y + t * d.y),
+                      static_cast<Real>(o.z + t * d.z)};
       // Rounding to float, plus the double computation's own error (its t is
       // off by ~1e-16 |p0 - o| / |cos|, which moves the point along the ray:
       // off the plane by ~1e-16 (|o| + |p0| + |t d|)). The next ray's triangle
       // test is double too, so this box alone keeps it off this triangle; the
       // old barycentric box pushed rays metres off tilted 1e7 m triangles.
       constexpr double kDoubleError = 16 * 0x1p-53;
-      Float3 computation_error = {
-          static_cast<float>(kDoubleError * (std::fabs(o.x) + std::fabs(p0.x) + std::fabs(t * d.x))),
-          static_cast<float>(kDoubleError * (std::fabs(o.y) + std::fabs(p0.y) + std::fabs(t * d.y))),
-          static_cast<float>(kDoubleError * (std::fabs(o.z) + std::fabs(p0.z) + std::fabs(t * d.z)))};
+      Real3 computation_error = {
+          static_cast<Real>(kDoubleError * (std::fabs(o.x) + std::fabs(p0.x) + std::fabs(t * d.x))),
+          static_cast<Real>(kDoubleError * (std::fabs(o.y) + std::fabs(p0.y) + std::fabs(t * d.y))),
+          static_cast<Real>(kDoubleError * (std::fabs(o.z) + std::fabs(p0.z) + std::fabs(t * d.z)))};
       hit.position_error = abs(hit.position) * gamma(2) + computation_error;
     } else {  // Möller–Trumbore accepted a hit the plane test cannot place: keep its own point
-      Float3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+      Real3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
       hit.position = tri.p0 + along_u + along_v;
       hit.position_error = (abs(tri.p0) + abs(along_u) + abs(along_v)) * gamma(7);
     }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
+    if (record_faces_) hit.face = faces_[primitive];
   } else {
     const Sphere& sphere = spheres_[primitive - triangles_.size()];
-    Float3 relative = ray.origin + ray.direction * t_max - sphere.center;
+    Real3 relative = ray.origin + ray.direction * t_max - sphere.center;
     relative = relative * (sphere.radius / kernel::length(relative));  // reproject onto the surface
     hit.position = sphere.center + relative;
     hit.position_error = (abs(relative) + abs(sphere.center)) * gamma(6);
@@ -171,9 +172,9 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, float t_max) 
   return hit;
 }
 
-bool PrimitiveSet::occluded(const Ray& ray, float t_max) const {
+bool PrimitiveSet::occluded(const Ray& ray, Real t_max) const {
   uint32_t primitive = 0;
-  float b1 = 0, b2 = 0;
+  Real b1 = 0, b2 = 0;
   return trace<true>(ray, t_max, primitive, b1, b2);
 }
 
@@ -182,37 +183,40 @@ bool PrimitiveSet::occluded(const Ray& ray, float t_max) const {
 
 namespace {
 
-float uniform_scale(const Affine& m) { return kernel::length(column(m, 0)); }
+Real uniform_scale(const Affine& m) { return kernel::length(column(m, 0)); }
 
 // Adds a shape in world space (`to_world` given) or in its own object space.
 void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const ObjectToWorld* to_world) {
   auto place = [&](PointObject p) { return to_world ? to_kernel((*to_world)(p)) : to_kernel(p); };
   if (shape.type == Shape::Type::sphere) {
-    float scale = to_world ? uniform_scale(Affine::from(*to_world)) : 1.0f;
+    Real scale = to_world ? uniform_scale(Affine::from(*to_world)) : 1.0f;
     set.add_sphere(place(shape.center), sg::raw(shape.radius) * scale, index);
     return;
   }
   for (size_t i = 0; i + 2 < shape.indices.size(); i += 3)
     set.add_triangle(place(shape.positions[shape.indices[i]]), place(shape.positions[shape.indices[i + 1]]),
-                     place(shape.positions[shape.indices[i + 2]]), index);
+                     place(shape.positions[shape.indices[i + 2]]), index, static_cast<uint32_t>(i / 3));
 }
 
 }  // namespace
 
 Geometry::Geometry(const Scene& scene) {
-  float time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
+  Real time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
+  const bool textured = !scene.textures.empty();
+  if (textured) static_primitives_.record_faces();
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
     if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
       Instance instance{PrimitiveSet{}, *motion, Bounds3{}};
+      if (textured) instance.primitives.record_faces();
       add_shape(instance.primitives, shape, i, nullptr);
       instance.primitives.build();
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below
       for (int s = 0; s <= kPoseSamples; ++s) {
-        float time = time_open + (time_close - time_open) * static_cast<float>(s) / kPoseSamples;
+        Real time = time_open + (time_close - time_open) * static_cast<Real>(s) / kPoseSamples;
         instance.swept_bounds.extend(transform_bounds(instance.motion.at(time), instance.primitives.bounds()));
       }
-      Float3 pad = instance.swept_bounds.extent() * 0.01f;
+      Real3 pad = instance.swept_bounds.extent() * 0.01f;
       instance.swept_bounds.lower = instance.swept_bounds.lower - pad;
       instance.swept_bounds.upper = instance.swept_bounds.upper + pad;
       bounds_.extend(instance.swept_bounds);
@@ -227,7 +231,7 @@ Geometry::Geometry(const Scene& scene) {
 
 std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
   Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
-  float t_max = kernel::kInfinity;
+  Real t_max = kernel::kInfinity;
   std::optional<kernel::Hit> hit = static_primitives_.intersect(ray, t_max);
   if (hit) t_max = hit->distance;
   for (const Instance& instance : instances_) {
@@ -235,8 +239,8 @@ std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
       continue;
     Affine render_from_object = instance.motion.at(ray.time);
     Affine object_from_render = inverse(render_from_object);
-    Float3 direction = object_from_render.apply_vector(ray.direction);
-    float stretch = kernel::length(direction);
+    Real3 direction = object_from_render.apply_vector(ray.direction);
+    Real stretch = kernel::length(direction);
     Ray local{object_from_render.apply_point(ray.origin), direction * (1.0f / stretch), ray.time};
     std::optional<kernel::Hit> local_hit = instance.primitives.intersect(local, t_max * stretch);
     if (!local_hit) continue;
@@ -252,19 +256,19 @@ std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
   }
   if (!hit) return std::nullopt;
   return SurfaceHit{from_kernel<PointWorld>(hit->position), hit->position_error, from_kernel<NormalWorld>(hit->normal),
-                    sg::from_raw<Length>(hit->distance), hit->shape};
+                    sg::from_raw<Length>(hit->distance), hit->shape, hit->face};
 }
 
 bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {
   Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
-  float t_max = sg::raw(typed_t_max);
+  Real t_max = sg::raw(typed_t_max);
   if (static_primitives_.occluded(ray, t_max)) return true;
   for (const Instance& instance : instances_) {
     if (!kernel::intersect_bounds(instance.swept_bounds, kernel::TraversalRay(ray.origin, ray.direction), t_max))
       continue;
     Affine object_from_render = inverse(instance.motion.at(ray.time));
-    Float3 direction = object_from_render.apply_vector(ray.direction);
-    float stretch = kernel::length(direction);
+    Real3 direction = object_from_render.apply_vector(ray.direction);
+    Real stretch = kernel::length(direction);
     Ray local{object_from_render.apply_point(ray.origin), direction * (1.0f / stretch), ray.time};
     if (instance.primitives.occluded(local, t_max * stretch)) return true;
   }
@@ -275,19 +279,19 @@ bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {
 // Ray spawning
 
 TimedRay spawn_ray(const SurfaceHit& hit, DirectionWorld direction, Time time) {
-  Float3 origin =
+  Real3 origin =
       kernel::offset_ray_origin(to_kernel(hit.position), hit.position_error, to_kernel(hit.normal), to_kernel(direction));
   return TimedRay{ray<World>{from_kernel<PointWorld>(origin), direction}, time};
 }
 
-TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Float3 target_error, Float3 target_normal, Time time,
+TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Real3 target_error, Real3 target_normal, Time time,
                       Length& t_max) {
-  Float3 start = to_kernel(from.position), end_point = to_kernel(target);
-  Float3 origin = kernel::offset_ray_origin(start, from.position_error, to_kernel(from.normal), end_point - start);
-  Float3 end = kernel::offset_ray_origin(end_point, target_error, target_normal, origin - end_point);
-  Float3 d = end - origin;
-  float distance = kernel::length(d);
-  constexpr float kShadowEpsilon = 1e-4f;  // relative: stop just short of the (offset) light point
+  Real3 start = to_kernel(from.position), end_point = to_kernel(target);
+  Real3 origin = kernel::offset_ray_origin(start, from.position_error, to_kernel(from.normal), end_point - start);
+  Real3 end = kernel::offset_ray_origin(end_point, target_error, target_normal, origin - end_point);
+  Real3 d = end - origin;
+  Real distance = kernel::length(d);
+  constexpr Real kShadowEpsilon = 1e-4f;  // relative: stop just short of the (offset) light point
   t_max = sg::from_raw<Length>(distance * (1 - kShadowEpsilon));
   return TimedRay{ray<World>{from_kernel<PointWorld>(origin), from_kernel<DirectionWorld>(d * (1.0f / distance))}, time};
 }

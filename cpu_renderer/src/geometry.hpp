@@ -12,7 +12,7 @@
 
 namespace safegi::render {
 
-using kernel::Float3;
+using kernel::Real3;
 
 // A world-space ray at an instant of the shutter interval, which picks the pose
 // of moving objects.
@@ -22,27 +22,31 @@ struct TimedRay : ray<World> {
 
 struct SurfaceHit {
   PointWorld position;
-  Float3 position_error;  // rounding-error box around `position`, in metres
+  Real3 position_error;  // rounding-error box around `position`, in metres
   NormalWorld normal;     // geometric normal, on the side given by the winding
   Length distance = sg::zero;  // along the ray
   uint32_t shape = 0;     // index into Scene::shapes
+  // The triangle hit (its first index is 3·face into Shape::indices), in scenes
+  // with textures; unused for spheres.
+  uint32_t face = 0;
 };
 
 namespace kernel {
 
 // A ray in the kernel's plain floats: metres, seconds, a unit direction.
 struct Ray {
-  Float3 origin;
-  Float3 direction;
-  float time = 0.0f;
+  Real3 origin;
+  Real3 direction;
+  Real time = 0.0f;
 };
 
 struct Hit {
-  Float3 position;
-  Float3 position_error;
-  Float3 normal;
-  float distance = 0.0f;
+  Real3 position;
+  Real3 position_error;
+  Real3 normal;
+  Real distance = 0.0f;
   uint32_t shape = 0;
+  uint32_t face = 0;
 };
 
 }  // namespace kernel
@@ -51,30 +55,37 @@ struct Hit {
 class PrimitiveSet {
  public:
   struct Triangle {
-    Float3 p0, e1, e2;
+    Real3 p0, e1, e2;
     uint32_t shape;
   };
   struct Sphere {
-    Float3 center;
-    float radius;
+    Real3 center;
+    Real radius;
     uint32_t shape;
   };
 
-  void add_triangle(Float3 a, Float3 b, Float3 c, uint32_t shape) { triangles_.push_back({a, b - a, c - a, shape}); }
-  void add_sphere(Float3 center, float radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
+  // Hits then carry their triangle (for texture lookups).
+  void record_faces() { record_faces_ = true; }
+  void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape, uint32_t face) {
+    triangles_.push_back({a, b - a, c - a, shape});
+    if (record_faces_) faces_.push_back(face);
+  }
+  void add_sphere(Real3 center, Real radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
   void build();
 
   bool empty() const { return triangles_.empty() && spheres_.empty(); }
   kernel::Bounds3 bounds() const { return bvh_.bounds(); }
 
-  std::optional<kernel::Hit> intersect(const kernel::Ray& ray, float t_max) const;
-  bool occluded(const kernel::Ray& ray, float t_max) const;
+  std::optional<kernel::Hit> intersect(const kernel::Ray& ray, Real t_max) const;
+  bool occluded(const kernel::Ray& ray, Real t_max) const;
 
  private:
   template <bool any_hit>
-  bool trace(const kernel::Ray& ray, float& t_max, uint32_t& primitive, float& b1, float& b2) const;
+  bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
 
   std::vector<Triangle> triangles_;
+  std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits), if recorded
+  bool record_faces_ = false;
   std::vector<Sphere> spheres_;
   kernel::Bvh bvh_;
 };
@@ -104,7 +115,7 @@ class Geometry {
 TimedRay spawn_ray(const SurfaceHit& hit, DirectionWorld direction, Time time);
 // A shadow ray from a surface to a point (with its error box and normal, zero
 // for point lights); `t_max` stops just short of the target.
-TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Float3 target_error, Float3 target_normal, Time time,
+TimedRay spawn_ray_to(const SurfaceHit& from, PointWorld target, Real3 target_error, Real3 target_normal, Time time,
                       Length& t_max);
 
 }  // namespace safegi::render

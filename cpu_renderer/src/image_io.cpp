@@ -48,7 +48,7 @@ Image read_image(const std::filesystem::path& file) {
   auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw ImageError(file.string() + ": cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
-  if (spec.nchannels < 3) throw ImageError(file.string() + ": expected at least 3 channels");
+  if (spec.nchannels < 1) throw ImageError(file.string() + ": the image has no channels");
   Image image;
   image.width = spec.width;
   image.height = spec.height;
@@ -57,7 +57,7 @@ Image read_image(const std::filesystem::path& file) {
     throw ImageError(file.string() + ": cannot read image: " + input->geterror());
   image.rgb.resize(static_cast<size_t>(spec.width) * spec.height * 3);
   for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p)
-    for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = all[p * spec.nchannels + c];
+    for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = all[p * spec.nchannels + (spec.nchannels >= 3 ? c : 0)];
   return image;
 }
 

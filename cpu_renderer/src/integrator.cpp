@@ -12,7 +12,7 @@ namespace {
 // Both densities in one measure, so their ratio is a plain number. With n light
 // samples against one BSDF sample, the light strategy's density counts n times
 // (Veach's power heuristic with sample counts).
-float mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
+Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
 
 }  // namespace
 
@@ -20,12 +20,13 @@ float mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuri
 // light_samples_ light samples.
 template <bool area_lights, bool one_light_sample>
 Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
-                                   DirectionShading wo, Sampler& sampler, Time time, RayCounters& counters) const {
+                                   DirectionShading wo, Sampler& sampler, Time time, bool mis,
+                                   RayCounters& counters) const {
   Radiance sum;
   const int samples = one_light_sample ? 1 : light_samples_;
-  const float count = static_cast<float>(samples);
+  const Real count = static_cast<Real>(samples);
   for (int i = 0; i < samples; ++i) {
-    float u_light = sampler.next_1d();
+    Real u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
     std::optional<LightSample> light = lights_.sample(hit.position, time, u_light, u_point.u, u_point.v);
     if (!light) continue;
@@ -40,7 +41,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if constexpr (area_lights) {
       if (!light->delta) {
         PdfSolidAngle light_pdf = light->pdf * count;
-        float weight = mis_ ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
+        Real weight = mis ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
         sum += f * light->radiance * sg::cos_theta(wi) * (weight / light_pdf);
         continue;
       }
@@ -52,7 +53,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
   return sum;
 }
 
-template <bool area_lights, bool one_light_sample>
+template <bool area_lights, bool one_light_sample, bool gather, bool textured>
 Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
   Radiance radiance;
   Reflectance throughput(1.0f);
@@ -60,17 +61,36 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   PdfSolidAngle previous_bsdf_pdf = sg::zero;
   PointWorld previous_position;
   bool last_vertex = false;
+  // The camera ray cone's length so far (textures' footprint), while every bounce was specular.
+  Length travelled = sg::zero;
+  bool sharp_cone = true;
+  // Photon integrator: once a non-specular vertex has occurred, emission found
+  // through specular bounces only (a caustic path, L S+ D …) is the photon map's.
+  bool after_diffuse = false;
+  Real compression = 1;  // the radiance compression by refraction so far (for Russian roulette)
+  const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   for (int depth = 0;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
-    if (!hit) break;
+    if (!hit) {
+      if constexpr (area_lights) {
+        if (lights_.has_environment()) {
+          Radiance sky = lights_.environment_radiance(ray.d);
+          if (specular_bounce) {
+            if (!(gather && after_diffuse)) radiance += throughput * sky;
+          }
+          else if (mis_)
+            radiance += throughput * sky * mis_weight(previous_bsdf_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
+        }
+      }
+      break;
+    }
     if constexpr (area_lights) {
       Radiance emitted = lights_.emitted(*hit, ray.d);
       if (!sg::is_black(emitted)) {
         if (specular_bounce) {
-          radiance += throughput * emitted;
+          if (!(gather && after_diffuse)) radiance += throughput * emitted;
         } else if (mis_) {
-          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) *
-                                    static_cast<float>(one_light_sample ? 1 : light_samples_);
+          PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * light_sample_count;
           radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
         }
       }
@@ -78,16 +98,35 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (last_vertex || depth >= max_depth_) break;
     const Shape& shape = scene_.shapes[hit->shape];
     if (shape.material < 0) break;
-    Bsdf bsdf(scene_.materials[shape.material]);
-    // Shade on the side the ray arrives from: materials are two-sided.
-    hit->normal = sg::face_forward(hit->normal, -ray.d);
+    const Material& material = scene_.materials[shape.material];
+    Reflectance texel;  // the textured diffuse reflectance, when there is one
+    const Reflectance* diffuse = &material.diffuse;
+    if constexpr (textured) {
+      travelled += hit->distance;
+      if (material.diffuse_texture >= 0) {
+        // The cone's width across the surface, stretched by its tilt (a plain ratio).
+        Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
+        Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
+        texel = textures_.diffuse(material, *hit, width, ray.time);
+        diffuse = &texel;
+      }
+    }
+    // Shade on the side the ray arrives from: materials are two-sided (glass
+    // tells the sides apart by the geometric normal, which points out).
+    const bool from_inside = sg::dot(hit->normal, ray.d) > sg::zero;
+    hit->normal = from_inside ? -hit->normal : hit->normal;
+    Bsdf bsdf(material, *diffuse, from_inside);
     ShadingFrame frame = ShadingFrame::from_normal(hit->normal);
     DirectionShading wo = frame.to_local(-ray.d);
 
+    // Photon integrator: the caustics arriving at every non-specular vertex.
+    if constexpr (gather)
+      if (!bsdf.is_specular()) radiance += throughput * photons_->estimate(*hit, frame, bsdf, wo);
     if (!bsdf.is_specular() && !lights_.empty())
-      radiance += throughput * sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, counters);
+      radiance += throughput *
+                  sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, mis_, counters);
 
-    float u_lobe = sampler.next_1d();
+    Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
     std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     if (!scattered) break;
@@ -98,14 +137,17 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       last_vertex = true;
     }
     throughput *= scattered->weight;
+    compression *= scattered->compression;
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
+    if constexpr (textured) sharp_cone = sharp_cone && scattered->specular;
+    if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
     previous_bsdf_pdf = scattered->pdf;
     previous_position = hit->position;
     ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
     ++counters.extension;
     if (depth >= roulette_depth_ && !last_vertex) {
-      float survival = std::min(0.95f, sg::max_component(throughput));
+      Real survival = std::min(Real(0.95), sg::max_component(throughput) / compression);
       if (sampler.next_1d() >= survival) break;
       throughput = throughput / survival;
     }
@@ -113,9 +155,17 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   return radiance;
 }
 
-template Radiance Integrator::trace<true, true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<true, false>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<false, true>(TimedRay, Sampler&, RayCounters&) const;
-template Radiance Integrator::trace<false, false>(TimedRay, Sampler&, RayCounters&) const;
+#define SAFEGI_TRACE(area_lights, one_light_sample, gather)                                                  \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false>(TimedRay, Sampler&, RayCounters&) \
+      const;                                                                                                    \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true>(TimedRay, Sampler&, RayCounters&) \
+      const
+SAFEGI_TRACE(true, true, false);
+SAFEGI_TRACE(true, false, false);
+SAFEGI_TRACE(false, true, false);
+SAFEGI_TRACE(false, false, false);
+SAFEGI_TRACE(true, true, true);
+SAFEGI_TRACE(true, false, true);
+#undef SAFEGI_TRACE
 
 }  // namespace safegi::render

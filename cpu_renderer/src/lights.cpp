@@ -1,10 +1,33 @@
 #include "lights.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
+
+namespace {
+
+// A sphere around every static shape (at the shutter-open pose).
+void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radius) {
+  kernel::Bounds3 bounds;
+  for (const Shape& shape : scene.shapes) {
+    if (shape.type == Shape::Type::sphere) {
+      Real3 center = to_kernel(shape.render_from_object(shape.center));
+      Real r = sg::raw(sg::length(shape.render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero))));
+      bounds.extend(center - Real3{r, r, r});
+      bounds.extend(center + Real3{r, r, r});
+    } else {
+      for (const PointObject& p : shape.positions) bounds.extend(to_kernel(shape.render_from_object(p)));
+    }
+  }
+  if (bounds.empty()) bounds.extend(Real3{0, 0, 0});
+  center = from_kernel<PointWorld>(bounds.centroid());
+  radius = sg::from_raw<Length>(std::max(Real(0.5) * kernel::length(bounds.extent()), std::numeric_limits<Real>::min()));
+}
+
+}  // namespace
 
 Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
   std::vector<double> powers;  // watts, averaged over the channels
@@ -24,8 +47,8 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     light.spot = spot;
     lights_.push_back(light);
     // pbrt-v3's SpotLight::Power: the full cone at I, the falloff band at half.
-    float cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
-    auto cone = (2 * sg::pi * (1 - 0.5f * (cos_start + cos_total))) * units::steradian;
+    Real cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
+    auto cone = (2 * sg::pi * (1 - Real(0.5) * (cos_start + cos_total))) * units::steradian;
     powers.push_back(sg::raw(sg::average(spot.intensity) * cone));
   }
   for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
@@ -85,39 +108,54 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     powers.push_back((light.two_sided ? 2 : 1) * sg::raw(power));
     has_area_lights_ = true;
   }
+  if (scene.environment) {
+    // Choose the environment by the flux it sends into the scene's bounding
+    // sphere, π · L̄ · 4πr² (any positive weight would be unbiased).
+    environment_.emplace(*scene.environment);
+    Light light;
+    light.type = Light::Type::environment;
+    environment_index_ = static_cast<uint32_t>(lights_.size());
+    lights_.push_back(light);
+    scene_bounding_sphere(scene, scene_center_, scene_radius_);
+    Length radius = scene_radius_;
+    auto flux = sg::average(environment_->average_radiance()) * (4 * sg::pi * radius * radius) *
+                (sg::pi * units::steradian * units::proj);
+    powers.push_back(sg::raw(flux));
+    has_area_lights_ = true;
+  }
   double total = 0;
   for (double p : powers) total += p;
   double running = 0;
   for (double p : powers) {
     running += total > 0 ? p / total : 1.0 / static_cast<double>(powers.size());
-    power_cdf_.push_back(static_cast<float>(running));
+    power_cdf_.push_back(static_cast<Real>(running));
   }
   if (!power_cdf_.empty()) power_cdf_.back() = 1.0f;
 }
 
-float Lights::selection_probability(uint32_t light) const {
+Real Lights::selection_probability(uint32_t light) const {
   return power_cdf_[light] - (light == 0 ? 0.0f : power_cdf_[light - 1]);
 }
 
-uint32_t Lights::choose(float u) const {
+uint32_t Lights::choose(Real u) const {
   auto found = std::upper_bound(power_cdf_.begin(), power_cdf_.end(), u);
   return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
 }
 
 template <class Space>
 const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles,
-                                                              const Light& light, float u) const {
+                                                              const Light& light, Real u) const {
   const EmitterTriangle<Space>* first = triangles.data() + light.first_triangle;
   const EmitterTriangle<Space>* last = first + light.triangle_count;
   const EmitterTriangle<Space>* tri =
-      std::upper_bound(first, last, u, [](float v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
+      std::upper_bound(first, last, u, [](Real v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
   return tri == last ? *(last - 1) : *tri;
 }
 
 // The emitter at `time`: a sphere where its centre and radius have moved; a
 // mesh point drawn by object-space area, whose density per world area divides
 // by the area the motion's pose stretches it to.
-Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const {
+Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const {
   const RigidMotion& motion = motions_[light.motion];
   ObjectToWorld render_from_object = motion.render_from_object(time);
   SurfacePoint point;
@@ -133,8 +171,8 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float 
     return point;
   }
   const EmitterTriangle<Object>& tri = choose_triangle(object_triangles_, light, u_triangle);
-  float root = std::sqrt(u1);
-  float b1 = 1 - root, b2 = u2 * root;
+  Real root = std::sqrt(u1);
+  Real b1 = 1 - root, b2 = u2 * root;
   VectorWorld e1 = render_from_object(tri.e1), e2 = render_from_object(tri.e2);
   PointWorld p0 = render_from_object(tri.p0);
   VectorWorld along_u = e1 * b1, along_v = e2 * b2;
@@ -147,13 +185,61 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, float 
   return point;
 }
 
-std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float u_light, float u1, float u2) const {
+// A point on area light `index`, chosen with probability `probability` by
+// u_light, whose rest picks the triangle by area: its position, rounding-error
+// box, unit normal and density per area. (Inlined into both callers, writing
+// straight into theirs: next-event estimation runs it once per shadow ray.)
+[[gnu::always_inline]] inline void Lights::sample_surface(uint32_t index, Real probability, Time time, Real u_light,
+                                                          Real u1, Real u2, PointWorld& position, Real3& position_error,
+                                                          NormalWorld& normal, PdfArea& pdf_area) const {
+  const Light& light = lights_[index];
+  Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
+  Real u_triangle = std::min((u_light - low) / probability, Real(0x1.fffffep-1f));
+  pdf_area = light.pdf_area;
+  if (light.motion >= 0) {
+    SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
+    position = point.position;
+    position_error = point.position_error;
+    normal = point.normal;
+    pdf_area = point.pdf_area;
+  } else if (light.type == Light::Type::sphere) {
+    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
+    normal = sg::to_normal(outward);
+    VectorWorld offset = outward * light.radius;
+    position = light.position + offset;
+    position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+  } else {
+    const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
+    Real root = std::sqrt(u1);
+    Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
+    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+    position = tri.p0 + along_u + along_v;
+    position_error =
+        (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
+        kernel::gamma(7);
+    normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
+  }
+}
+
+std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const {
   if (lights_.empty()) return std::nullopt;
   uint32_t index = choose(u_light);
   const Light& light = lights_[index];
-  float probability = selection_probability(index);
+  Real probability = selection_probability(index);
   if (!(probability > 0)) return std::nullopt;
   LightSample sample;
+  if (light.type == Light::Type::environment) {
+    std::optional<Environment::Sample> direction = environment_->sample(u1, u2);
+    if (!direction) return std::nullopt;
+    // The shadow ray runs to a point beyond the scene's bounding sphere (as pbrt's).
+    sample.wi = direction->wi;
+    sample.radiance = direction->radiance;
+    sample.pdf = probability * direction->pdf;
+    sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
+    sample.position = reference + sample.wi * sample.distance;
+    sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
+    return sample;
+  }
   if (light.type == Light::Type::point || light.type == Light::Type::spot) {
     VectorWorld toward = light.position - reference;
     sample.distance = sg::length(toward);
@@ -162,7 +248,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
     sample.position = light.position;
     sample.intensity = light.intensity;
     if (light.type == Light::Type::spot) {
-      float falloff = spot_falloff(light.spot, -sg::dot(light.spot.direction, sample.wi));
+      Real falloff = spot_falloff(light.spot, -sg::dot(light.spot.direction, sample.wi));
       if (!(falloff > 0)) return std::nullopt;
       sample.intensity = light.intensity * falloff;
     }
@@ -170,34 +256,9 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, float
     sample.delta = true;
     return sample;
   }
-  // Reuse what is left of u_light to pick a triangle by area.
-  float low = index == 0 ? 0.0f : power_cdf_[index - 1];
-  float u_triangle = std::min((u_light - low) / probability, 0x1.fffffep-1f);
   NormalWorld normal;
-  PdfArea pdf_area = light.pdf_area;
-  if (light.motion >= 0) {
-    SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
-    sample.position = point.position;
-    sample.position_error = point.position_error;
-    normal = point.normal;
-    pdf_area = point.pdf_area;
-  } else if (light.type == Light::Type::sphere) {
-    DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
-    normal = sg::to_normal(outward);
-    VectorWorld offset = outward * light.radius;
-    sample.position = light.position + offset;
-    sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
-  } else {
-    const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-    float root = std::sqrt(u1);
-    float b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
-    sample.position = tri.p0 + along_u + along_v;
-    sample.position_error =
-        (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
-        kernel::gamma(7);
-    normal = sg::to_normal(sg::normalize(sg::cross(tri.e1, tri.e2)));
-  }
+  PdfArea pdf_area = sg::zero;
+  sample_surface(index, probability, time, u_light, u1, u2, sample.position, sample.position_error, normal, pdf_area);
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
@@ -229,6 +290,77 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   return selection_probability(static_cast<uint32_t>(index)) *
          to_solid_angle_density(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time), cos_light,
                                 sg::length(toward));
+}
+
+std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3,
+                                                      Real u4) const {
+  if (lights_.empty()) return std::nullopt;
+  uint32_t index = choose(u_light);
+  const Light& light = lights_[index];
+  Real probability = selection_probability(index);
+  if (!(probability > 0)) return std::nullopt;
+  PhotonEmission photon;
+  if (light.type == Light::Type::point || light.type == Light::Type::spot) {
+    photon.origin = light.position;
+    photon.origin_error = kernel::abs(to_kernel(light.position)) * kernel::gamma(1);
+    photon.direction = from_kernel<DirectionWorld>(sample_uniform_sphere(u3, u4));
+    PdfSolidAngle pdf = 1 / (4 * kPi * units::steradian);
+    Intensity intensity = light.intensity;
+    if (light.type == Light::Type::spot) {  // uniform directions, weighted by the cone's falloff
+      Real falloff = spot_falloff(light.spot, sg::dot(light.spot.direction, photon.direction));
+      if (!(falloff > 0)) return std::nullopt;
+      intensity = light.intensity * falloff;
+    }
+    photon.flux = intensity / (pdf * probability);
+    return photon;
+  }
+  if (light.type == Light::Type::environment) {
+    // Towards the scene along -ω, from a disc of the bounding sphere's radius
+    // perpendicular to ω: the flux through it is L · πR² (head on, cos = 1) per
+    // unit of solid angle.
+    std::optional<Environment::Sample> sky = environment_->sample(u1, u2);
+    if (!sky) return std::nullopt;
+    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(sky->wi));
+    Real x, y;
+    sample_concentric_disk(u3, u4, x, y);
+    vector<Shading> across(x * scene_radius_, y * scene_radius_, scene_radius_);
+    photon.origin = scene_center_ + disc.from_local(across);
+    photon.origin_error = kernel::abs(to_kernel(photon.origin)) * kernel::gamma(4);
+    photon.direction = -sky->wi;
+    quantity<dim::area> disc_area = kPi * scene_radius_ * scene_radius_;
+    Proj head_on = Real(1) * units::proj;
+    photon.flux = sky->radiance * head_on * disc_area / (sky->pdf * probability);
+    return photon;
+  }
+  SurfacePoint point;
+  sample_surface(index, probability, time, u_light, u1, u2, point.position, point.position_error, point.normal,
+                 point.pdf_area);
+  NormalWorld normal = point.normal;
+  Real sides = 1;
+  if (light.two_sided) {  // either side, evenly
+    sides = 2;
+    if (u3 < Real(0.5)) {
+      normal = -normal;
+      u3 = 2 * u3;
+    } else {
+      u3 = 2 * u3 - 1;
+    }
+  }
+  ShadingFrame frame = ShadingFrame::from_normal(normal);
+  DirectionShading local = from_kernel<DirectionShading>(sample_cosine_hemisphere(std::min(u3, Real(0x1.fffffep-1f)), u4));
+  Proj cos_emitted = sg::cos_theta(local);
+  if (!(cos_emitted > sg::zero)) return std::nullopt;
+  PdfSolidAngle pdf_direction = cos_emitted / (kPi * units::steradian * units::proj);
+  photon.origin = point.position;
+  photon.origin_error = point.position_error;
+  photon.surface_normal = to_kernel(normal);
+  photon.direction = frame.from_local(local);
+  photon.flux = light.radiance * cos_emitted * sides / (pdf_direction * point.pdf_area * probability);
+  return photon;
+}
+
+PdfSolidAngle Lights::environment_pdf(DirectionWorld direction) const {
+  return selection_probability(environment_index_) * environment_->pdf(direction);
 }
 
 // The density per world area at `time` with which sample_moving() draws `hit`.

@@ -1,11 +1,13 @@
-// Light sources: point and spot lights (intensity) and diffuse area emitters on
-// triangle meshes and spheres (radiance), chosen in proportion to power.
+// Light sources: point and spot lights (intensity), diffuse area emitters on
+// triangle meshes and spheres (radiance) and the environment (radiance from
+// every direction), chosen in proportion to power.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "environment.hpp"
 #include "geometry.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
@@ -14,19 +16,30 @@ namespace safegi::render {
 // A point on a light as seen from a shading point.
 struct LightSample {
   PointWorld position;
-  Float3 position_error;   // metres
-  Float3 emitter_normal;   // unit normal of an area light; zero for point lights
+  Real3 position_error;   // metres
+  Real3 emitter_normal;   // unit normal of an area light; zero for point lights and the environment
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
   bool delta = false;      // a point or spot light: no density over directions
   // Point and spot lights: the intensity towards the shading point and the probability
   // of having chosen this light.
   Intensity intensity;
-  float probability = 0;
-  // Area lights: the emitted radiance and the density of this direction,
-  // light choice included.
+  Real probability = 0;
+  // Area lights and the environment: the emitted radiance and the density of
+  // this direction, light choice included.
   Radiance radiance;
   PdfSolidAngle pdf = sg::zero;
+};
+
+// A photon leaving a light: where, which way, and the flux it carries, with
+// the light's choice and the densities of its position and direction divided
+// out (divide by the number of photons traced for each photon's share).
+struct PhotonEmission {
+  PointWorld origin;
+  Real3 origin_error;    // metres
+  Real3 surface_normal;  // the emitter's, oriented along the photon; zero for point lights and the environment
+  DirectionWorld direction;
+  spectrum<dim::power> flux;
 };
 
 class Lights {
@@ -37,7 +50,7 @@ class Lights {
   bool has_area_lights() const { return has_area_lights_; }
 
   // One light chosen by power, then a point on it, where it is at `time`.
-  std::optional<LightSample> sample(PointWorld reference, Time time, float u_light, float u1, float u2) const;
+  std::optional<LightSample> sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const;
 
   // Radiance an emissive surface sends back along `incoming` (towards -incoming).
   Radiance emitted(const SurfaceHit& hit, DirectionWorld incoming) const;
@@ -45,9 +58,22 @@ class Lights {
   // point `hit` (found at `time`) as seen from `reference`.
   PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit, Time time) const;
 
+  // A photon from a light chosen by power, at `time`: a point light's in a
+  // uniform direction, an area light's from a uniform point (a side chosen
+  // evenly for two-sided ones) in a cosine-distributed direction, the
+  // environment's from a disc across the scene's bounding sphere, facing the
+  // sampled direction.
+  std::optional<PhotonEmission> sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3, Real u4) const;
+
+  // The environment, seen by a ray that escapes along `direction`, and the
+  // density with which sample() picks that direction (light choice included).
+  bool has_environment() const { return environment_.has_value(); }
+  Radiance environment_radiance(DirectionWorld direction) const { return environment_->radiance(direction); }
+  PdfSolidAngle environment_pdf(DirectionWorld direction) const;
+
  private:
   struct Light {
-    enum class Type { point, spot, triangles, sphere } type = Type::point;
+    enum class Type { point, spot, triangles, sphere, environment } type = Type::point;
     PointWorld position;  // point and spot light, sphere centre
     Intensity intensity;  // point and spot light
     SpotLight spot;       // spot light: axis and cone
@@ -66,33 +92,39 @@ class Lights {
   struct EmitterTriangle {
     point<Space> p0;
     vector<Space> e1, e2;
-    float area_cdf;  // cumulative area within its light, 1 at its last triangle
+    Real area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.
   struct SurfacePoint {
     PointWorld position;
-    Float3 position_error;
+    Real3 position_error;
     NormalWorld normal;
     PdfArea pdf_area = sg::zero;
   };
 
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
-                                                float u) const;
-  SurfacePoint sample_moving(const Light& light, Time time, float u_triangle, float u1, float u2) const;
+                                                Real u) const;
+  void sample_surface(uint32_t index, Real probability, Time time, Real u_light, Real u1, Real u2, PointWorld& position,
+                      Real3& position_error, NormalWorld& normal, PdfArea& pdf_area) const;
+  SurfacePoint sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 
-  float selection_probability(uint32_t light) const;
-  uint32_t choose(float u) const;
+  Real selection_probability(uint32_t light) const;
+  uint32_t choose(Real u) const;
 
   std::vector<Light> lights_;
   std::vector<EmitterTriangle<World>> triangles_;
   std::vector<EmitterTriangle<Object>> object_triangles_;  // of moving emitters
   std::vector<RigidMotion> motions_;
-  std::vector<float> power_cdf_;
+  std::vector<Real> power_cdf_;
   std::vector<int32_t> light_of_shape_;
-  bool has_area_lights_ = false;
+  std::optional<Environment> environment_;
+  uint32_t environment_index_ = 0;
+  PointWorld scene_center_;  // the bounding sphere of the scene (with an environment)
+  Length scene_radius_ = sg::zero;
+  bool has_area_lights_ = false;  // area lights or the environment: the lights with a density
 };
 
 }  // namespace safegi::render

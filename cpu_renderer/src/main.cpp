@@ -54,8 +54,14 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", resolution, "image size WIDTHxHEIGHT (default: the scene's)");
   app.add_option("--crop", crop, "render only the window X,Y,WIDTH,HEIGHT (pixels)");
   app.add_option("--time-budget", time_budget, "render until this many seconds are spent")->check(CLI::PositiveNumber);
-  app.add_option("--integrator", integrator, "direct or path (default: the scene's)")
-      ->check(CLI::IsMember({"direct", "path"}));
+  app.add_option("--integrator", integrator, "direct, path or photon (default: the scene's)")
+      ->check(CLI::IsMember({"direct", "path", "photon"}));
+  int photons = 0;
+  double photon_radius = 0;
+  app.add_option("--photons", photons, "photons traced by the photon integrator (default: the scene's, 200000)")
+      ->check(CLI::Range(1, 1 << 28));
+  app.add_option("--photon-radius", photon_radius, "the photon density estimate's radius in metres (default: from the scene)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-depth", max_depth, "longest path, in bounces (default: the scene's)")->check(CLI::Range(1, 1024));
   app.add_option("--mis", mis, "on: light and BSDF sampling combined by MIS; off: area lights by light sampling only")
       ->check(CLI::IsMember({"on", "off"}));
@@ -87,7 +93,7 @@ int main(int argc, char** argv) {
       scene_crop = imported.crop;
     } else {
       if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
-      scene = load_scene(scene_file);
+      scene = load_scene(scene_file, SceneLoadOptions{read_image});
     }
     RenderOptions options;
     options.settings = scene.settings;
@@ -95,7 +101,12 @@ int main(int argc, char** argv) {
     if (spp > 0) options.settings.spp = spp;
     else if (time_budget > 0) options.settings.spp = 1 << 24;
     if (max_depth > 0) options.settings.max_depth = max_depth;
-    if (!integrator.empty()) options.settings.integrator = integrator == "direct" ? IntegratorType::direct : IntegratorType::path;
+    if (!integrator.empty())
+      options.settings.integrator = integrator == "direct" ? IntegratorType::direct
+                                    : integrator == "path" ? IntegratorType::path
+                                                           : IntegratorType::photon;
+    if (photons > 0) options.settings.photons = photons;
+    if (photon_radius > 0) options.settings.photon_radius = static_cast<Real>(photon_radius) * units::metre;
     if (!mis.empty()) options.settings.mis = mis == "on";
     if (light_samples > 0) options.settings.light_samples = light_samples;
     if (!russian_roulette.empty()) options.settings.russian_roulette = russian_roulette == "on";
@@ -162,7 +173,9 @@ int main(int argc, char** argv) {
           "\"rays_per_second\": %.0f, \"samples_per_second\": %.0f, \"rays_per_cpu_second\": %.0f, "
           "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
           image.width, image.height, stats.samples_per_pixel, static_cast<unsigned long long>(stats.camera_rays),
-          session.ranks(), stats.threads, seed, used.integrator == IntegratorType::direct ? "direct" : "path", used.max_depth,
+          session.ranks(), stats.threads, seed,
+          used.integrator == IntegratorType::direct ? "direct" : used.integrator == IntegratorType::path ? "path" : "photon",
+          used.max_depth,
           used.mis ? "true" : "false", used.light_samples, used.russian_roulette ? "true" : "false",
           used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),

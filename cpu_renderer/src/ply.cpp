@@ -240,6 +240,7 @@ int find_property(const Element& element, std::string_view name) {
 struct Layout {
   int position[3] = {-1, -1, -1};
   int normal[3] = {-1, -1, -1};
+  int uv[2] = {-1, -1};
   int face_indices = -1;
 };
 
@@ -258,6 +259,16 @@ Layout layout_of(const Element& element) {
     }
     if (normals != 0 && normals != 3) throw PlyError("the vertex element has some of nx, ny, nz but not all three");
     if (normals == 0) layout.normal[0] = layout.normal[1] = layout.normal[2] = -1;
+    // Texture coordinates go by several names (pbrt-v3 reads u/v, s/t, texture_u/v, texture_s/t).
+    const char* uv_names[][2] = {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+    for (const auto& names : uv_names) {
+      int u = find_property(element, names[0]), v = find_property(element, names[1]);
+      if (u >= 0 && v >= 0 && !element.properties[u].is_list && !element.properties[v].is_list) {
+        layout.uv[0] = u;
+        layout.uv[1] = v;
+        break;
+      }
+    }
   } else if (element.name == "face") {
     layout.face_indices = find_property(element, "vertex_indices");
     if (layout.face_indices < 0) layout.face_indices = find_property(element, "vertex_index");
@@ -301,9 +312,11 @@ PlyMesh parse_ply(std::string_view bytes) {
       throw PlyError("element '" + element.name + "' declares " + std::to_string(element.count) +
                      " entries, more than the rest of the file can hold (truncated?)");
     bool has_normals = is_vertex && layout.normal[0] >= 0;
+    bool has_uvs = is_vertex && layout.uv[0] >= 0;
     if (is_vertex) {
       mesh.positions.reserve(element.count);
       if (has_normals) mesh.normals.reserve(element.count);
+      if (has_uvs) mesh.uvs.reserve(element.count);
     }
     std::vector<double> scalars(element.properties.size());
     std::vector<uint32_t> polygon;
@@ -356,6 +369,8 @@ PlyMesh parse_ply(std::string_view bytes) {
         }
         mesh.positions.push_back(position);
         if (has_normals) mesh.normals.push_back(normal);
+        if (has_uvs)
+          mesh.uvs.push_back({static_cast<float>(scalars[layout.uv[0]]), static_cast<float>(scalars[layout.uv[1]])});
       }
     }
   }

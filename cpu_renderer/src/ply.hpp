@@ -1,5 +1,6 @@
 // A small reader for PLY triangle meshes (ASCII and binary, either byte order):
-// vertex x y z with optional nx ny nz, faces as vertex-index lists (triangles,
+// vertex x y z with optional nx ny nz and texture coordinates (u v, s t,
+// texture_u texture_v or texture_s texture_t), faces as vertex-index lists (triangles,
 // quads and larger convex polygons, fanned into triangles). Other elements and
 // properties are skipped. Any malformed or truncated file is a PlyError naming
 // the header line or the element where reading stopped; never a crash.
@@ -22,6 +23,7 @@ class PlyError : public std::runtime_error {
 struct PlyMesh {
   std::vector<std::array<float, 3>> positions;
   std::vector<std::array<float, 3>> normals;  // empty, or one per position
+  std::vector<std::array<float, 2>> uvs;      // empty, or one per position
   std::vector<uint32_t> indices;              // three per triangle
 };
 

@@ -10,69 +10,12 @@
 #include <numbers>
 #include <sstream>
 
-#include "safegi/cpu_renderer/renderer.hpp"
-#include "safegi/cpu_renderer/scene_loader.hpp"
+#include "render_test_support.hpp"
 
 namespace safegi::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-// Estimator knobs of the speed/accuracy study; each test below must hold under every one.
-struct Knobs {
-  const char* name;
-  std::function<void(RenderSettings&)> apply;
-};
-const std::vector<Knobs>& estimator_knobs() {
-  static const std::vector<Knobs> knobs = {
-      {"defaults", [](RenderSettings&) {}},
-      {"mis off", [](RenderSettings& s) { s.mis = false; }},
-      {"4 light samples", [](RenderSettings& s) { s.light_samples = 4; }},
-      {"mis off, 3 light samples", [](RenderSettings& s) { s.mis = false, s.light_samples = 3; }},
-      {"roulette from depth 0", [](RenderSettings& s) { s.russian_roulette_depth = 0; }},
-  };
-  return knobs;
-}
-
-Image render_text(const std::string& json, int spp, int threads = 2, std::optional<CropWindow> crop = std::nullopt,
-                  const std::function<void(RenderSettings&)>& adjust = {}) {
-  Scene scene = parse_scene(json, "test.json", SAFEGI_SCENES_DIR);
-  RenderOptions options;
-  options.settings = scene.settings;
-  options.settings.spp = spp;
-  if (adjust) adjust(options.settings);
-  options.threads = threads;
-  options.crop = crop;
-  RenderStats stats;
-  Image image = render(scene, options, &stats);
-  EXPECT_EQ(stats.invalid_samples, 0u);
-  for (float v : image.rgb) EXPECT_TRUE(std::isfinite(v));
-  return image;
-}
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Mean and standard error of the mean of one channel over all pixels.
-struct Estimate {
-  double mean, standard_error;
-};
-Estimate channel_estimate(const Image& image, int channel) {
-  double sum = 0, sum2 = 0;
-  size_t n = static_cast<size_t>(image.width) * image.height;
-  for (size_t i = 0; i < n; ++i) {
-    double v = image.rgb[3 * i + channel];
-    sum += v;
-    sum2 += v * v;
-  }
-  double mean = sum / n;
-  double variance = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
-  return {mean, std::sqrt(variance / n)};
-}
+using namespace test_support;
 
 // The mean of radiance(x, z) over the footprint of pixel (px, py) on the plane
 // y = 0, seen straight down from `camera_height` with a square image of `size`
@@ -110,14 +53,14 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
     std::string text = scene;
     text.replace(text.find("direct"), 6, integrator);
     Image image = render_text(text, 64, 2, std::nullopt, knobs.apply);
-    const double half = std::tan(fov / 2 * kPi / 180);
+    const double half = std::tan(fov / 2 * kPiD / 180);
     double worst = 0;
     for (int py = 0; py < size; ++py) {
       for (int px = 0; px < size; ++px) {
         double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
           double r2 = x * x + z * z + light_height * light_height;
           double cos_theta = light_height / std::sqrt(r2);
-          return rho / kPi * intensity * cos_theta / r2;
+          return rho / kPiD * intensity * cos_theta / r2;
         });
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] / expected - 1));
       }
@@ -135,7 +78,7 @@ TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
   const double rho = 0.5, intensity = 10.0, light_height = 2.0, camera_height = 5.0, fov = 60.0;
   const double cone = 30.0, delta = 10.0;
   const int size = 33;
-  const double cos_total = std::cos(cone * kPi / 180), cos_start = std::cos((cone - delta) * kPi / 180);
+  const double cos_total = std::cos(cone * kPiD / 180), cos_start = std::cos((cone - delta) * kPiD / 180);
   auto falloff = [&](double cos_theta) {
     if (cos_theta < cos_total) return 0.0;
     if (cos_theta >= cos_start) return 1.0;
@@ -152,7 +95,7 @@ TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
     "lights": [{"type": "spot", "position": {"value": [0, 2, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
                 "intensity": "10 W/sr", "cone_angle": "30 deg", "cone_delta": "10 deg"}]})json";
   // The same spot given by its power: I = P / (2π (1 − (cos start + cos total)/2)) sr.
-  double power = intensity * 2 * kPi * (1 - 0.5 * (cos_start + cos_total));
+  double power = intensity * 2 * kPiD * (1 - 0.5 * (cos_start + cos_total));
   std::string by_power = scene;
   by_power.replace(by_power.find("\"intensity\": \"10 W/sr\""), 22, "\"power\": \"" + std::to_string(power) + " W\"");
   for (const std::string* text : {&scene, &by_power})
@@ -160,8 +103,8 @@ TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
     std::string variant = *text;
     variant.replace(variant.find("direct"), 6, integrator);
     Image image = render_text(variant, 64);
-    const double half = std::tan(fov / 2 * kPi / 180);
-    const double peak = rho / kPi * intensity / (light_height * light_height);
+    const double half = std::tan(fov / 2 * kPiD / 180);
+    const double peak = rho / kPiD * intensity / (light_height * light_height);
     double worst = 0;
     int dark = 0;
     for (int py = 0; py < size; ++py) {
@@ -169,13 +112,13 @@ TEST(RenderPhysics, DiffusePlaneUnderSpotLight) {
         double expected = footprint_average(px, py, size, half, camera_height, [&](double x, double z) {
           double r2 = x * x + z * z + light_height * light_height;
           double cos_theta = light_height / std::sqrt(r2);
-          return rho / kPi * intensity * falloff(cos_theta) * cos_theta / r2;
+          return rho / kPiD * intensity * falloff(cos_theta) * cos_theta / r2;
         });
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(image.pixel(px, py)[c] - expected) / peak);
         // A pixel whose footprint lies beyond the cone's edge (radius h·tan 30°, plus the pixel's diagonal) gets nothing.
         double cx = camera_height * (2 * (px + 0.5) / size - 1) * half, cz = camera_height * (1 - 2 * (py + 0.5) / size) * half;
         double pixel = 2 * camera_height * half / size;
-        if (std::hypot(cx, cz) > light_height * std::tan(cone * kPi / 180) + pixel) {
+        if (std::hypot(cx, cz) > light_height * std::tan(cone * kPiD / 180) + pixel) {
           ++dark;
           EXPECT_EQ(image.pixel(px, py)[0], 0.0f) << px << "," << py;
         }
@@ -276,7 +219,7 @@ TEST(RenderPhysics, MovingSphereLightAbovePlane) {
 double corner_form_factor(double width, double length, double height) {
   double a = width / height, b = length / height;
   double sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
-  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPi);
+  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPiD);
 }
 
 // A small square emitter above a diffuse plane: L = ρ · Le · F, with F the form

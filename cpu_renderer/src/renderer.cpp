@@ -171,7 +171,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
               Sampler sampler(options.seed, static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(s));
               TimedRay ray = camera.generate(x, y, sampler);
               ++counter.camera;
-              glm::vec3 L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
+              sg::vec3_rep L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
               if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
                 ++invalid[thread_index];
                 continue;

@@ -17,6 +17,7 @@
 #include <tiny_obj_loader.h>
 
 #include "ply.hpp"
+#include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/unit_expression.hpp"
 
 namespace safegi::render {
@@ -49,8 +50,8 @@ RuntimeDimension runtime_dimension_of() {
   return runtime_dimension(D{});
 }
 
-glm::vec3 to_vec3(const Triple& t) {
-  return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+sg::vec3_rep to_vec3(const Triple& t) {
+  return {static_cast<Real>(t[0]), static_cast<Real>(t[1]), static_cast<Real>(t[2])};
 }
 
 // Where a value sits in the document, spelled as in error messages: shapes[2].radius.
@@ -76,8 +77,8 @@ std::string short_dump(const Json& value) {
 
 class Loader {
  public:
-  Loader(std::string_view display_name, std::filesystem::path base_directory)
-      : display_name_(display_name), base_directory_(std::move(base_directory)) {}
+  Loader(std::string_view display_name, std::filesystem::path base_directory, const SceneLoadOptions& options)
+      : display_name_(display_name), base_directory_(std::move(base_directory)), options_(options) {}
 
   Scene load(const Json& root);
 
@@ -107,13 +108,16 @@ class Loader {
     return *found;
   }
 
-  // Every value ends up in a float: one that would become infinite, or 0 from a
-  // non-zero value, is an error rather than a silently broken scene.
+  // Every value ends up in a Real (float, or double in the double build): one
+  // that would become infinite, or 0 from a non-zero value, is an error rather
+  // than a silently broken scene.
   void require_float_range(const JsonPath& path, double value) const {
     if (!std::isfinite(value)) fail(path, "value is not finite");
-    float stored = static_cast<float>(value);
+    Real stored = static_cast<Real>(value);
     if (std::isinf(stored) || (stored == 0 && value != 0))
-      fail(path, "value is out of float range (in SI units its magnitude must be 0 or lie in 1.4e-45 .. 3.4e38)");
+      fail(path, sizeof(Real) == 4
+                     ? "value is out of float range (in SI units its magnitude must be 0 or lie in 1.4e-45 .. 3.4e38)"
+                     : "value is out of double range (in SI units its magnitude must be 0 or lie in 4.9e-324 .. 1.8e308)");
   }
 
   // A dimensioned scalar: "5 mm", {"value": 5, "unit": "mm"}, or a bare number
@@ -184,16 +188,16 @@ class Loader {
 
   // An RGB spectrum: a triple, or one scalar for grey.
   struct Rgb {
-    float r, g, b;
+    Real r, g, b;
   };
   Rgb rgb_field(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
     bool is_triple = value.is_array() || (value.is_object() && value.contains("value") && value["value"].is_array());
     if (!is_triple) {
-      float grey = static_cast<float>(scalar(value, path, expected));
+      Real grey = static_cast<Real>(scalar(value, path, expected));
       return {grey, grey, grey};
     }
     Triple t = triple(value, path, expected);
-    return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
+    return {static_cast<Real>(t[0]), static_cast<Real>(t[1]), static_cast<Real>(t[2])};
   }
 
   Reflectance reflectance(const Json& value, const JsonPath& path) {
@@ -223,42 +227,78 @@ class Loader {
   // Typed fields: the expected dimension comes from the type the value is stored in.
   template <class D>
   quantity<D> typed_scalar(const Json& value, const JsonPath& path) {
-    return sg::from_raw<quantity<D>>(static_cast<float>(scalar(value, path, runtime_dimension_of<D>())));
+    return sg::from_raw<quantity<D>>(static_cast<Real>(scalar(value, path, runtime_dimension_of<D>())));
   }
   template <class D>
   sg::spectrum<D> typed_spectrum(const Json& value, const JsonPath& path) {
     Rgb rgb = rgb_field(value, path, runtime_dimension_of<D>());
-    return sg::from_raw<sg::spectrum<D>>(glm::vec3(rgb.r, rgb.g, rgb.b));
+    return sg::from_raw<sg::spectrum<D>>(sg::vec3_rep(rgb.r, rgb.g, rgb.b));
   }
   template <class P>
   P typed_point(const Json& value, const JsonPath& path) {
     return sg::from_raw<P>(to_vec3(triple(value, path, runtime_dim::length)));
   }
 
+  // A number without unit, in [minimum, maximum].
+  Real number(const Json& value, const JsonPath& path, double minimum, double maximum) {
+    double v = scalar(value, path, runtime_dim::none);
+    if (!(v >= minimum && v <= maximum))
+      fail(path, "expected a number in [" + short_number(minimum) + ", " + short_number(maximum) + "], got " +
+                     short_dump(value));
+    return static_cast<Real>(v);
+  }
+  static std::string short_number(double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  }
+
   void load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings);
   void load_camera(const Json& value, const JsonPath& path, Camera& camera);
+  Image read_image_file(const Json& file_value, const JsonPath& path, std::string& file);
+  ImageTexture load_texture(const std::string& name, const Json& value, const JsonPath& path);
+  // A reflectance that may be textured: a number, RGB triple or {"texture": name}.
+  Reflectance textured_reflectance(const Json& value, const JsonPath& path, int& texture);
   Material load_material(const std::string& name, const Json& value, const JsonPath& path);
+  // The diffuse reflectance's largest value in each channel, texture included.
+  Reflectance largest_diffuse(const Material& material) const {
+    return material.diffuse_texture < 0 ? material.diffuse
+                                        : material.diffuse * textures_[material.diffuse_texture]->maximum();
+  }
   Shape load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials);
   void load_mesh_file(const Json& value, const JsonPath& path, Shape& shape);
-  void load_ply_file(const std::filesystem::path& full, const std::string& file, float scale, const JsonPath& path,
+  void load_ply_file(const std::filesystem::path& full, const std::string& file, Real scale, const JsonPath& path,
                      Shape& shape);
   void load_triangles(const Json& value, const JsonPath& path, Shape& shape);
   ObjectToWorld load_transform(const Json& value, const JsonPath& path);
   void load_light(const Json& value, const JsonPath& path, Scene& scene);
+  EnvironmentLight load_environment(const Json& value, const JsonPath& path);
 
   std::string display_name_;
   std::filesystem::path base_directory_;
+  const SceneLoadOptions& options_;
+  std::map<std::string, int> texture_index_;
+  std::vector<const MipMap*> textures_;  // by index, for checks
 };
 
 Scene Loader::load(const Json& root) {
   JsonPath top;
-  object(root, top, {"format", "description", "render", "camera", "materials", "shapes", "lights"});
+  object(root, top, {"format", "description", "render", "camera", "textures", "materials", "shapes", "lights"});
   if (root.contains("format") && root["format"] != "safegi-scene/1")
     fail(top.field("format"), "expected \"safegi-scene/1\", got " + short_dump(root["format"]));
   Scene scene;
   if (root.contains("render")) load_render_settings(root["render"], top.field("render"), scene.settings);
   load_camera(required(root, top, "camera"), top.field("camera"), scene.camera);
 
+  if (root.contains("textures")) {
+    const Json& textures = root["textures"];
+    if (!textures.is_object()) fail(top.field("textures"), "expected an object of named textures");
+    for (const auto& [name, value] : textures.items()) {
+      texture_index_[name] = static_cast<int>(scene.textures.size());
+      scene.textures.push_back(load_texture(name, value, top.field("textures").field(name)));
+      textures_.push_back(scene.textures.back().mipmap.get());
+    }
+  }
   std::map<std::string, int> material_index;
   if (root.contains("materials")) {
     const Json& materials = root["materials"];
@@ -277,8 +317,15 @@ Scene Loader::load(const Json& root) {
   if (root.contains("lights")) {
     const Json& lights = root["lights"];
     if (!lights.is_array()) fail(top.field("lights"), "expected an array, got " + short_dump(lights));
-    for (size_t i = 0; i < lights.size(); ++i)
-      load_light(lights[i], top.field("lights").index(i), scene);
+    for (size_t i = 0; i < lights.size(); ++i) {
+      JsonPath light_path = top.field("lights").index(i);
+      if (lights[i].is_object() && lights[i].contains("type") && lights[i]["type"] == "environment") {
+        if (scene.environment) fail(light_path, "a scene has at most one environment light");
+        scene.environment = load_environment(lights[i], light_path);
+      } else {
+        load_light(lights[i], light_path, scene);
+      }
+    }
   }
   return scene;
 }
@@ -286,7 +333,7 @@ Scene Loader::load(const Json& root) {
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
          {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "russian_roulette",
-          "russian_roulette_depth"});
+          "russian_roulette_depth", "photons", "photon_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -300,7 +347,8 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     std::string name = string(value["integrator"], path.field("integrator"));
     if (name == "direct") settings.integrator = IntegratorType::direct;
     else if (name == "path") settings.integrator = IntegratorType::path;
-    else fail(path.field("integrator"), "expected \"direct\" or \"path\", got " + short_dump(value["integrator"]));
+    else if (name == "photon") settings.integrator = IntegratorType::photon;
+    else fail(path.field("integrator"), "expected \"direct\", \"path\" or \"photon\", got " + short_dump(value["integrator"]));
   }
   if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
   if (value.contains("light_samples"))
@@ -310,6 +358,11 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   if (value.contains("russian_roulette_depth"))
     settings.russian_roulette_depth =
         integer(value["russian_roulette_depth"], path.field("russian_roulette_depth"), 0, 1024);
+  if (value.contains("photons")) settings.photons = integer(value["photons"], path.field("photons"), 1, 1 << 28);
+  if (value.contains("photon_radius")) {
+    settings.photon_radius = typed_scalar<dim::length>(value["photon_radius"], path.field("photon_radius"));
+    if (!(settings.photon_radius > sg::zero)) fail(path.field("photon_radius"), "must be positive");
+  }
 }
 
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
@@ -318,12 +371,12 @@ void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera
   camera.look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
   Triple up = triple(required(value, path, "up"), path.field("up"), runtime_dim::none);
   Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
-  if (!(fov > 0.0f * units::degree && fov < 180.0f * units::degree))
+  if (!(fov > Real(0) * units::degree && fov < Real(180) * units::degree))
     fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
   camera.fov = fov;
   VectorWorld forward = camera.look_at - camera.position;
   if (!(sg::length(forward) > sg::zero)) fail(path.field("look_at"), "must differ from position");
-  glm::vec3 up_raw = to_vec3(up);
+  sg::vec3_rep up_raw = to_vec3(up);
   if (!(glm::length(glm::cross(sg::raw(forward), up_raw)) > 0))
     fail(path.field("up"), "must not be parallel to the viewing direction");
   camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(up_raw));
@@ -345,6 +398,99 @@ void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera
   }
 }
 
+Image Loader::read_image_file(const Json& file_value, const JsonPath& path, std::string& file) {
+  file = string(file_value, path);
+  std::filesystem::path full = base_directory_ / file;
+  if (!std::filesystem::is_regular_file(full)) fail(path, "cannot read image '" + file + "': no such file");
+  Image image;
+  try {
+    if (options_.read_image) {
+      image = options_.read_image(full);
+    } else {
+      std::string extension = full.extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (extension != ".pfm")
+        fail(path, "cannot read image '" + file + "': this program reads PFM images only (no OpenImageIO)");
+      image = read_pfm(full);
+    }
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& error) {
+    fail(path, "cannot read image '" + file + "': " + error.what());
+  }
+  if (image.width < 1 || image.height < 1 ||
+      image.rgb.size() != 3 * static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
+    fail(path, "cannot read image '" + file + "': it has no pixels");
+  for (float v : image.rgb)
+    if (!std::isfinite(v) || v < 0) fail(path, "image '" + file + "' has a negative or non-finite value");
+  return image;
+}
+
+ImageTexture Loader::load_texture(const std::string& name, const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  if (type != "image") fail(path.field("type"), "expected \"image\", got " + short_dump(value["type"]));
+  object(value, path, {"type", "file", "colour_space", "filter", "wrap", "scale", "uv_scale", "uv_offset"});
+  ImageTexture texture;
+  texture.name = name;
+  Image image = read_image_file(required(value, path, "file"), path.field("file"), texture.file);
+  // 8-bit images are painted in sRGB; floating-point formats hold linear values.
+  std::string extension = std::filesystem::path(texture.file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  bool linear_format = extension == ".exr" || extension == ".hdr" || extension == ".pfm";
+  texture.colour_space = linear_format ? ColourSpace::linear : ColourSpace::srgb;
+  if (value.contains("colour_space")) {
+    std::string space = string(value["colour_space"], path.field("colour_space"));
+    if (space == "srgb") texture.colour_space = ColourSpace::srgb;
+    else if (space == "linear") texture.colour_space = ColourSpace::linear;
+    else fail(path.field("colour_space"), "expected \"srgb\" or \"linear\", got " + short_dump(value["colour_space"]));
+  }
+  if (value.contains("filter")) {
+    std::string filter = string(value["filter"], path.field("filter"));
+    if (filter == "bilinear") texture.filter = TextureFilter::bilinear;
+    else if (filter == "trilinear") texture.filter = TextureFilter::trilinear;
+    else fail(path.field("filter"), "expected \"bilinear\" or \"trilinear\", got " + short_dump(value["filter"]));
+  }
+  TextureWrap wrap = TextureWrap::repeat;
+  if (value.contains("wrap")) {
+    std::string mode = string(value["wrap"], path.field("wrap"));
+    if (mode == "repeat") wrap = TextureWrap::repeat;
+    else if (mode == "clamp") wrap = TextureWrap::clamp;
+    else if (mode == "black") wrap = TextureWrap::black;
+    else fail(path.field("wrap"), "expected \"repeat\", \"clamp\" or \"black\", got " + short_dump(value["wrap"]));
+  }
+  if (value.contains("scale")) texture.scale = number(value["scale"], path.field("scale"), 0, 1e6);
+  auto pair = [&](const char* field, Real& a, Real& b) {
+    if (!value.contains(field)) return;
+    const Json& v = value[field];
+    if (!v.is_array() || v.size() != 2) fail(path.field(field), "expected [u, v], got " + short_dump(v));
+    a = number(v[0], path.field(field).index(0), -1e6, 1e6);
+    b = number(v[1], path.field(field).index(1), -1e6, 1e6);
+  };
+  pair("uv_scale", texture.u_scale, texture.v_scale);
+  pair("uv_offset", texture.u_offset, texture.v_offset);
+  // Texels are stored as float in every build (8 to 32 bits of data per channel).
+  texture.mipmap = std::make_shared<MipMap>(
+      to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(texture.scale), true), wrap);
+  return texture;
+}
+
+Reflectance Loader::textured_reflectance(const Json& value, const JsonPath& path, int& texture) {
+  if (value.is_object() && value.contains("texture")) {
+    object(value, path, {"texture"});
+    std::string name = string(value["texture"], path.field("texture"));
+    auto found = texture_index_.find(name);
+    if (found == texture_index_.end()) fail(path.field("texture"), "no texture named " + short_dump(value["texture"]));
+    texture = found->second;
+    if (sg::max_component(textures_[texture]->maximum()) > 1.0f)
+      fail(path.field("texture"), "texture " + short_dump(value["texture"]) +
+                                      " has values above 1 and cannot be a reflectance (check its scale)");
+    return Reflectance(1.0f);
+  }
+  texture = -1;
+  return reflectance(value, path);
+}
+
 Material Loader::load_material(const std::string& name, const Json& value, const JsonPath& path) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
@@ -353,23 +499,45 @@ Material Loader::load_material(const std::string& name, const Json& value, const
   if (type == "lambert") {
     object(value, path, {"type", "reflectance"});
     material.type = Material::Type::lambert;
-    material.diffuse = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+    material.diffuse =
+        textured_reflectance(required(value, path, "reflectance"), path.field("reflectance"), material.diffuse_texture);
   } else if (type == "phong") {
     object(value, path, {"type", "diffuse", "specular", "exponent"});
     material.type = Material::Type::phong;
-    material.diffuse = reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    material.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"), material.diffuse_texture);
     material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
     double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
     if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
-    material.exponent = static_cast<float>(exponent);
-    if (sg::max_component(material.diffuse + material.specular) > 1.0f)
+    material.exponent = static_cast<Real>(exponent);
+    if (sg::max_component(largest_diffuse(material) + material.specular) > 1.0f)
       fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else if (type == "mirror") {
     object(value, path, {"type", "reflectance"});
     material.type = Material::Type::mirror;
     material.specular = reflectance(required(value, path, "reflectance"), path.field("reflectance"));
+  } else if (type == "glass") {
+    object(value, path, {"type", "ior", "reflectance", "transmittance"});
+    material.type = Material::Type::glass;
+    material.ior = number(required(value, path, "ior"), path.field("ior"), 1.0 / 16, 16);
+    material.specular = value.contains("reflectance") ? reflectance(value["reflectance"], path.field("reflectance"))
+                                                      : Reflectance(1.0f);
+    material.transmission = value.contains("transmittance")
+                                ? reflectance(value["transmittance"], path.field("transmittance"))
+                                : Reflectance(1.0f);
+  } else if (type == "plastic") {
+    object(value, path, {"type", "diffuse", "specular", "alpha", "ior", "pbrt_v3_fresnel"});
+    material.type = Material::Type::plastic;
+    material.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"), material.diffuse_texture);
+    material.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    material.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    if (value.contains("ior")) material.ior = number(value["ior"], path.field("ior"), 1, 16);
+    if (value.contains("pbrt_v3_fresnel"))
+      material.pbrt_v3_plastic_fresnel = boolean(value["pbrt_v3_fresnel"], path.field("pbrt_v3_fresnel"));
+    if (sg::max_component(largest_diffuse(material) + material.specular) > 1.0f)
+      fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
   } else {
-    fail(path.field("type"), "expected \"lambert\", \"phong\" or \"mirror\", got " + short_dump(value["type"]));
+    fail(path.field("type"), "expected \"lambert\", \"phong\", \"mirror\", \"glass\" or \"plastic\", got " +
+                                 short_dump(value["type"]));
   }
   return material;
 }
@@ -401,6 +569,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     if (!(sg::length(sg::cross(u, v)) > sg::zero)) fail(path, "edge_u and edge_v must span a parallelogram");
     shape.positions = {origin, origin + u, origin + u + v, origin + v};
     shape.indices = {0, 1, 2, 0, 2, 3};
+    shape.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   } else if (type == "sphere") {
     allow({"center", "radius"});
     shape.type = Shape::Type::sphere;
@@ -411,7 +580,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     allow({"file", "unit"});
     load_mesh_file(value, path, shape);
   } else if (type == "triangles") {
-    allow({"positions", "indices"});
+    allow({"positions", "indices", "uvs"});
     load_triangles(value, path, shape);
   } else {
     fail(path.field("type"),
@@ -437,8 +606,8 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (shape.type == Shape::Type::sphere) {
     for (const ObjectToWorld* m : {&shape.render_from_object, shape.render_from_object_at_close ? &*shape.render_from_object_at_close : nullptr}) {
       if (!m) continue;
-      glm::mat4 forward = sg::raw(*m).forward;
-      float sx = glm::length(glm::vec3(forward[0])), sy = glm::length(glm::vec3(forward[1])), sz = glm::length(glm::vec3(forward[2]));
+      sg::mat4_rep forward = sg::raw(*m).forward;
+      Real sx = glm::length(sg::vec3_rep(forward[0])), sy = glm::length(sg::vec3_rep(forward[1])), sz = glm::length(sg::vec3_rep(forward[2]));
       if (std::fabs(sx - sy) > 1e-4f * sx || std::fabs(sx - sz) > 1e-4f * sx)
         fail(path.field("transform"), "a sphere's transform must scale uniformly");
     }
@@ -458,7 +627,7 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
                                  dimension_name(unit->dimension) + ")");
 
   std::filesystem::path full = base_directory_ / file;
-  float scale = static_cast<float>(unit->to_reference);
+  Real scale = static_cast<Real>(unit->to_reference);
   std::string extension = full.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".ply") {
@@ -477,16 +646,37 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
   }
   const auto& vertices = reader.GetAttrib().vertices;
   for (size_t i = 0; i + 2 < vertices.size(); i += 3) {
-    glm::vec3 p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
+    sg::vec3_rep p{vertices[i] * scale, vertices[i + 1] * scale, vertices[i + 2] * scale};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
+  // Texture coordinates have their own indices in OBJ: with them, each distinct
+  // (position, texcoord) pair becomes one vertex.
+  const auto& texcoords = reader.GetAttrib().texcoords;
+  bool textured = !texcoords.empty();
+  for (const tinyobj::shape_t& obj_shape : reader.GetShapes())
+    for (const tinyobj::index_t& index : obj_shape.mesh.indices)
+      textured = textured && index.texcoord_index >= 0 && 2 * static_cast<size_t>(index.texcoord_index) + 1 < texcoords.size();
+  std::vector<PointObject> obj_positions;
+  if (textured) obj_positions.swap(shape.positions);
+  std::map<std::pair<int, int>, uint32_t> vertex_of;
   for (const tinyobj::shape_t& obj_shape : reader.GetShapes()) {
     for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
-      if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= shape.positions.size())
+      size_t count = textured ? obj_positions.size() : shape.positions.size();
+      if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= count)
         fail(path.field("file"), "mesh '" + file + "' has a face with a vertex index out of range");
-      shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
+      if (!textured) {
+        shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
+        continue;
+      }
+      auto [found, inserted] = vertex_of.try_emplace({index.vertex_index, index.texcoord_index},
+                                                     static_cast<uint32_t>(shape.positions.size()));
+      if (inserted) {
+        shape.positions.push_back(obj_positions[index.vertex_index]);
+        shape.uvs.push_back({texcoords[2 * index.texcoord_index], texcoords[2 * index.texcoord_index + 1]});
+      }
+      shape.indices.push_back(found->second);
     }
   }
   if (shape.indices.empty() || shape.indices.size() % 3 != 0)
@@ -495,7 +685,7 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
 
 // PLY: positions and faces; vertex normals are read but not used (the renderer
 // shades with geometric normals).
-void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, float scale,
+void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, Real scale,
                            const JsonPath& path, Shape& shape) {
   std::ifstream in(full, std::ios::binary);
   if (!std::filesystem::is_regular_file(full) || !in) fail(path.field("file"), "cannot read mesh '" + file + "'");
@@ -507,10 +697,14 @@ void Loader::load_ply_file(const std::filesystem::path& full, const std::string&
     fail(path.field("file"), "cannot read mesh '" + file + "': " + error.what());
   }
   for (const std::array<float, 3>& p : mesh.positions) {
-    glm::vec3 scaled{p[0] * scale, p[1] * scale, p[2] * scale};
+    sg::vec3_rep scaled{p[0] * scale, p[1] * scale, p[2] * scale};
     if (!std::isfinite(scaled.x) || !std::isfinite(scaled.y) || !std::isfinite(scaled.z))
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(scaled));
+  }
+  for (const std::array<float, 2>& uv : mesh.uvs) {
+    if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) fail(path.field("file"), "mesh '" + file + "' has a non-finite texture coordinate");
+    shape.uvs.push_back({uv[0], uv[1]});
   }
   shape.indices = std::move(mesh.indices);
   if (shape.indices.empty()) fail(path.field("file"), "mesh '" + file + "' has no triangles");
@@ -530,12 +724,12 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
   for (size_t i = 0; i < points.size(); ++i) {
     JsonPath point_path = positions_path.field("value").index(i);
     if (!points[i].is_array() || points[i].size() != 3) fail(point_path, "expected [x, y, z], got " + short_dump(points[i]));
-    glm::vec3 p;
+    sg::vec3_rep p;
     for (int axis = 0; axis < 3; ++axis) {
       if (!points[i][axis].is_number()) fail(point_path.index(axis), "expected a number");
       double coordinate = points[i][axis].get<double>() * unit.to_reference;
       require_float_range(point_path.index(axis), coordinate);
-      p[axis] = static_cast<float>(coordinate);
+      p[axis] = static_cast<Real>(coordinate);
     }
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
@@ -546,21 +740,32 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
   if (last < 0) fail(positions_path.field("value"), "expected at least 3 points");
   for (size_t i = 0; i < indices.size(); ++i)
     shape.indices.push_back(static_cast<uint32_t>(integer(indices[i], path.field("indices").index(i), 0, last)));
+  if (value.contains("uvs")) {
+    const Json& uvs = value["uvs"];
+    JsonPath uvs_path = path.field("uvs");
+    if (!uvs.is_array() || uvs.size() != shape.positions.size())
+      fail(uvs_path, "expected one [u, v] per position (" + std::to_string(shape.positions.size()) + ")");
+    for (size_t i = 0; i < uvs.size(); ++i) {
+      if (!uvs[i].is_array() || uvs[i].size() != 2) fail(uvs_path.index(i), "expected [u, v], got " + short_dump(uvs[i]));
+      shape.uvs.push_back({number(uvs[i][0], uvs_path.index(i).index(0), -1e6, 1e6),
+                           number(uvs[i][1], uvs_path.index(i).index(1), -1e6, 1e6)});
+    }
+  }
 }
 
 ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   if (!value.is_array()) fail(path, "expected an array of transform steps, got " + short_dump(value));
   // The steps compose into one map<object, world>; the spaces between steps are anonymous.
-  glm::mat4 result(1.0f);
+  sg::mat4_rep result(1.0f);
   for (size_t i = 0; i < value.size(); ++i) {
     JsonPath step_path = path.index(i);
     const Json& step = value[i];
     if (!step.is_object() || step.size() != 1)
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
-    glm::mat4 m(1.0f);
+    sg::mat4_rep m(1.0f);
     if (step.contains("translate")) {
       Triple t = triple(step["translate"], step_path.field("translate"), runtime_dim::length);
-      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<float>(t[r]);
+      for (int r = 0; r < 3; ++r) m[3][r] = static_cast<Real>(t[r]);
     } else if (step.contains("rotate")) {
       JsonPath rotate_path = step_path.field("rotate");
       const Json& rotate = object(step["rotate"], rotate_path, {"axis", "angle"});
@@ -574,7 +779,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
                         {t * x * y + s * z, t * y * y + c, t * y * z - s * x},
                         {t * x * z - s * y, t * y * z + s * x, t * z * z + c}};
       for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<float>(r[row][col]);
+        for (int col = 0; col < 3; ++col) m[col][row] = static_cast<Real>(r[row][col]);
     } else if (step.contains("scale")) {
       const Json& scale = step["scale"];
       Triple s = scale.is_array() ? triple(scale, step_path.field("scale"), runtime_dim::none)
@@ -582,7 +787,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
       if (!scale.is_array()) s.fill(scalar(scale, step_path.field("scale"), runtime_dim::none));
       for (int r = 0; r < 3; ++r) {
         if (!(std::fabs(s[r]) > 0)) fail(step_path.field("scale"), "must not be zero");
-        m[r][r] = static_cast<float>(s[r]);
+        m[r][r] = static_cast<Real>(s[r]);
       }
     } else {
       fail(step_path, "expected one of {\"translate\": ...}, {\"rotate\": ...}, {\"scale\": ...}");
@@ -591,12 +796,14 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   }
   // Each step is non-singular, but float products can still underflow or
   // overflow (two 1e-30 scales): the inverse must exist in float.
-  glm::mat4 inverse = glm::inverse(result);
-  float determinant = glm::determinant(glm::mat3(result));
+  sg::mat4_rep inverse = glm::inverse(result);
+  Real determinant = glm::determinant(sg::mat3_rep(result));
   bool finite = std::isnormal(determinant);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(result[c][r]) && std::isfinite(inverse[c][r]);
-  if (!finite) fail(path, "is singular in float precision (its scales multiply to 0 or infinity)");
+  if (!finite)
+    fail(path, sizeof(Real) == 4 ? "is singular in float precision (its scales multiply to 0 or infinity)"
+                                 : "is singular in double precision (its scales multiply to 0 or infinity)");
   return ObjectToWorld::from_matrix(result);
 }
 
@@ -604,7 +811,7 @@ void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
   if (type != "point" && type != "spot")
-    fail(path.field("type"), "expected \"point\" or \"spot\", got " + short_dump(value["type"]));
+    fail(path.field("type"), "expected \"point\", \"spot\" or \"environment\", got " + short_dump(value["type"]));
   if (type == "point")
     object(value, path, {"type", "name", "position", "intensity", "power"});
   else
@@ -615,22 +822,22 @@ void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
   // The solid angle the light's power spreads over: the sphere, or the spot's
   // cone with its falloff band counted at half (pbrt-v3's SpotLight::Power).
   SpotLight spot;
-  quantity<dim::solid_angle> spread = 4.0f * sg::pi * units::steradian;
+  quantity<dim::solid_angle> spread = Real(4) * sg::pi * units::steradian;
   if (type == "spot") {
     spot.position = position;
     PointWorld look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
     if (!(sg::length(look_at - position) > sg::zero)) fail(path.field("look_at"), "must differ from position");
     spot.direction = sg::normalize(look_at - position);
     spot.cone_angle = typed_scalar<dim::angle>(required(value, path, "cone_angle"), path.field("cone_angle"));
-    if (!(spot.cone_angle > sg::zero && spot.cone_angle <= 180.0f * units::degree))
+    if (!(spot.cone_angle > sg::zero && spot.cone_angle <= Real(180) * units::degree))
       fail(path.field("cone_angle"), "expected an angle in (0 deg, 180 deg]");
     if (value.contains("cone_delta")) {
       spot.cone_delta = typed_scalar<dim::angle>(value["cone_delta"], path.field("cone_delta"));
       if (!(spot.cone_delta >= sg::zero && spot.cone_delta <= spot.cone_angle))
         fail(path.field("cone_delta"), "expected an angle in [0 deg, cone_angle]");
     }
-    float cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
-    spread = (2 * sg::pi * (1 - 0.5f * (cos_start + cos_total))) * units::steradian;
+    Real cos_total = sg::cos(spot.cone_angle), cos_start = sg::cos(spot.cone_angle - spot.cone_delta);
+    spread = (2 * sg::pi * (1 - Real(0.5) * (cos_start + cos_total))) * units::steradian;
   }
   Intensity intensity;
   if (value.contains("intensity")) {
@@ -647,6 +854,30 @@ void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
     spot.intensity = intensity;
     scene.spot_lights.push_back(spot);
   }
+}
+
+EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& path) {
+  object(value, path, {"type", "name", "radiance", "file", "transform"});
+  EnvironmentLight light;
+  light.radiance = value.contains("radiance") ? typed_spectrum<dim::radiance>(value["radiance"], path.field("radiance"))
+                                              : Radiance(Real(1) * units::radiance_unit);
+  if (!value.contains("radiance") && !value.contains("file"))
+    fail(path, "expected 'radiance', 'file' or both");
+  if (light.radiance.r() < sg::zero || light.radiance.g() < sg::zero || light.radiance.b() < sg::zero)
+    fail(path.field("radiance"), "radiance must not be negative");
+  if (value.contains("file")) {
+    Image image = read_image_file(value["file"], path.field("file"), light.file);
+    light.map = std::make_shared<MipMap>(std::move(image), TextureWrap::longitude_latitude);
+  }
+  if (value.contains("transform")) {
+    const Json& steps = value["transform"];
+    if (steps.is_array())
+      for (size_t i = 0; i < steps.size(); ++i)
+        if (!steps[i].is_object() || !steps[i].contains("rotate"))
+          fail(path.field("transform").index(i), "an environment light can only be rotated");
+    light.render_from_light = sg::from_raw<LightToWorld>(sg::raw(load_transform(steps, path.field("transform"))));
+  }
+  return light;
 }
 
 std::string line_and_column(std::string_view text, size_t byte) {
@@ -685,7 +916,7 @@ std::string without_exception_id(const std::string& message) {
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
-                  const std::filesystem::path& base_directory) {
+                  const std::filesystem::path& base_directory, const SceneLoadOptions& options) {
   Json root;
   try {
     root = Json::parse(json_text.begin(), json_text.end());
@@ -700,18 +931,18 @@ Scene parse_scene(std::string_view json_text, std::string_view display_name,
     throw SceneError(std::string(display_name) + ": invalid JSON: " + printable(without_exception_id(error.what())));
   }
   try {
-    return Loader(display_name, base_directory).load(root);
+    return Loader(display_name, base_directory, options).load(root);
   } catch (const Json::exception& error) {  // a value of a type the loader did not expect
     throw SceneError(std::string(display_name) + ": " + printable(without_exception_id(error.what())));
   }
 }
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
   std::ifstream stream(file, std::ios::binary);
   if (!stream || std::filesystem::is_directory(file)) throw SceneError(file.string() + ": cannot open scene file");
   std::ostringstream text;
   text << stream.rdbuf();
-  return parse_scene(text.str(), file.string(), file.parent_path());
+  return parse_scene(text.str(), file.string(), file.parent_path(), options);
 }
 
 }  // namespace safegi::render

@@ -188,7 +188,8 @@ std::string DimensionRegistry::format_product(const Dimension& d, Notation notat
   return format_rational(factors, notation);
 }
 
-std::string DimensionRegistry::format_units(const Dimension& d, Notation notation) const {
+std::string DimensionRegistry::format_si(const Dimension& d, Notation notation) const {
+  if (has_unit_factors(d)) return format_units(d, notation);
   // SI symbols of the prelude's bases, in the order units are usually written.
   static const struct {
     const char* base;

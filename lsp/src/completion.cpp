@@ -192,8 +192,8 @@ json completion(const std::string& path, const std::string& text, std::size_t of
     for (const std::string& d : v.dimensions) {
       std::string detail = "dimension";
       if (registry) {
-        if (registry->find_base(d)) detail = "base dimension — " + registry->format_units(*registry->find_dimension(d));
-        else if (std::optional<Dimension> value = registry->find_dimension(d)) detail = "dimension — " + registry->format_units(*value);
+        if (registry->find_base(d)) detail = "base dimension — " + registry->format_si(*registry->find_dimension(d));
+        else if (std::optional<Dimension> value = registry->find_dimension(d)) detail = "dimension — " + registry->format_si(*value);
       }
       items.push_back(item(d, completion_kind::class_, detail));
     }
@@ -207,7 +207,7 @@ json completion(const std::string& path, const std::string& text, std::size_t of
         std::ostringstream scale;
         scale.precision(17);
         scale << found->scale;
-        detail = "unit of " + registry->format(found->dimension) + " = " + scale.str() + " " + registry->format_units(found->dimension);
+        detail = "unit of " + registry->format(found->dimension) + " = " + scale.str() + " " + registry->format_si(found->dimension);
       }
       items.push_back(item(u, completion_kind::unit, detail));
     }

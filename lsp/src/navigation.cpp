@@ -42,7 +42,7 @@ std::string physical_words(const Type& type, const std::string& type_text, const
   }
   std::string units;
   switch (type.dim.state) {
-    case DimSlot::State::known: units = registry.format_units(type.dim.value); break;
+    case DimSlot::State::known: units = registry.format_si(type.dim.value); break;
     case DimSlot::State::generic: units = "any dimension (a template parameter)"; break;
     case DimSlot::State::zero: units = "0 (fits any dimension)"; break;
     case DimSlot::State::unknown: break;
@@ -108,7 +108,7 @@ json hover(const Analysis& analysis, const Locator& locator, std::size_t offset,
       const bool base = registry.find_base(o->name).has_value();
       code = "dimension " + o->name;
       if (!o->type.is_error()) {
-        words = o->name + " — " + registry.format_units(o->type.dim.value) + (base ? " (a base dimension)" : "");
+        words = o->name + " — " + registry.format_si(o->type.dim.value) + (base ? " (a base dimension)" : "");
         equation = dimension_equation(o->type.dim, registry);
       }
       break;
@@ -121,7 +121,7 @@ json hover(const Analysis& analysis, const Locator& locator, std::size_t offset,
         scale.precision(17);
         scale << unit->scale;
         code += " : " + registry.format(unit->dimension) + " = " + scale.str();
-        words = "1 " + o->name + " = " + scale.str() + " " + registry.format_units(unit->dimension);
+        words = "1 " + o->name + " = " + scale.str() + " " + registry.format_si(unit->dimension);
       }
       break;
     }

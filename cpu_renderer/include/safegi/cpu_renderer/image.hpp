@@ -1,5 +1,6 @@
 // A rendered image: linear RGB radiance as plain floats (W/(m2 sr)), the same
 // in the checked and unchecked builds, plus PFM files for small references.
+// Texture files are read into the same struct (their numbers as stored).
 #pragma once
 
 #include <cstddef>

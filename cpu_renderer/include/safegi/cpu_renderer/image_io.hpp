@@ -19,7 +19,10 @@ class ImageError : public std::runtime_error {
 // header, PNG text chunk): what a viewer should know about the picture.
 void write_exr(const std::filesystem::path& file, const Image& image, std::string_view description = {});
 void write_png(const std::filesystem::path& file, const Image& image, std::string_view description = {});
-// Reads any RGB(A) image OpenImageIO understands as linear floats (first three channels).
+// Reads any image OpenImageIO understands as floats, row 0 at the top: the first
+// three channels, or grey (one or two channels) repeated into RGB; integer
+// formats scaled to [0, 1] (still encoded: sRGB decoding is the caller's). The
+// ImageFileReader the programs give the scene loader.
 Image read_image(const std::filesystem::path& file);
 
 // The sRGB transfer function of a linear value, clamped to [0, 1].

@@ -1,9 +1,10 @@
-// Plain float arithmetic for the acceleration kernel.
+// Plain arithmetic for the acceleration kernel, in the renderer's precision
+// (Real: float, or double in the double-precision build, SAFEGI_DOUBLE=1).
 //
 // The BVH and the ray-primitive tests are an index structure over world-space
-// metres: they take a typed ray, do their arithmetic here on floats, and hand
-// back a typed hit (see geometry.hpp). Keeping the inner loop on a small plain
-// vector type makes it identical in the checked and unchecked builds.
+// metres: they take a typed ray, do their arithmetic here on plain numbers, and
+// hand back a typed hit (see geometry.hpp). Keeping the inner loop on a small
+// plain vector type makes it identical in the checked and unchecked builds.
 #pragma once
 
 #include <algorithm>
@@ -11,64 +12,75 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
+
+#include <safegi/typed/config.hpp>
+
+namespace safegi::render {
+// The representation of every geometric and radiometric value.
+using Real = ::safegi::real;
+}  // namespace safegi::render
 
 namespace safegi::render::kernel {
 
-inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// The unsigned integer with Real's bits, for stepping to a neighbouring value.
+using RealBits = std::conditional_t<sizeof(Real) == 4, uint32_t, uint64_t>;
 
-struct Float3 {
-  float x = 0, y = 0, z = 0;
+inline constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-  float operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
-  float& operator[](int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
-  friend Float3 operator+(Float3 a, Float3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-  friend Float3 operator-(Float3 a, Float3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-  friend Float3 operator*(Float3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
-  friend Float3 operator*(float s, Float3 a) { return {a.x * s, a.y * s, a.z * s}; }
-  friend Float3 operator*(Float3 a, Float3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+struct Real3 {
+  Real x = 0, y = 0, z = 0;
+
+  Real operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+  Real& operator[](int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
+  friend Real3 operator+(Real3 a, Real3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  friend Real3 operator-(Real3 a, Real3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Real3 operator*(Real3 a, Real s) { return {a.x * s, a.y * s, a.z * s}; }
+  friend Real3 operator*(Real s, Real3 a) { return {a.x * s, a.y * s, a.z * s}; }
+  friend Real3 operator*(Real3 a, Real3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 };
 
-inline float dot(Float3 a, Float3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Float3 cross(Float3 a, Float3 b) {
+inline Real dot(Real3 a, Real3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Real3 cross(Real3 a, Real3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline Float3 abs(Float3 a) { return {std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)}; }
-inline Float3 min(Float3 a, Float3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
-inline Float3 max(Float3 a, Float3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
-inline float length(Float3 a) { return std::sqrt(dot(a, a)); }
-inline Float3 normalize(Float3 a) { return a * (1.0f / length(a)); }
-inline float max_component(Float3 a) { return std::max(a.x, std::max(a.y, a.z)); }
+inline Real3 abs(Real3 a) { return {std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)}; }
+inline Real3 min(Real3 a, Real3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
+inline Real3 max(Real3 a, Real3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
+inline Real length(Real3 a) { return std::sqrt(dot(a, a)); }
+inline Real3 normalize(Real3 a) { return a * (1.0f / length(a)); }
+inline Real max_component(Real3 a) { return std::max(a.x, std::max(a.y, a.z)); }
 
 // Rounding-error bound of n floating-point operations (pbrt's gamma(n)).
-constexpr float gamma(int n) {
-  constexpr float epsilon = std::numeric_limits<float>::epsilon() * 0.5f;
+constexpr Real gamma(int n) {
+  constexpr Real epsilon = std::numeric_limits<Real>::epsilon() * 0.5f;
   return (n * epsilon) / (1 - n * epsilon);
 }
 
-inline float next_float_up(float v) {
+inline Real next_float_up(Real v) {
   if (std::isinf(v) && v > 0) return v;
-  if (v == -0.0f) v = 0.0f;
-  uint32_t bits = std::bit_cast<uint32_t>(v);
+  if (v == Real(-0.0)) v = Real(0);
+  RealBits bits = std::bit_cast<RealBits>(v);
   bits = v >= 0 ? bits + 1 : bits - 1;
-  return std::bit_cast<float>(bits);
+  return std::bit_cast<Real>(bits);
 }
 
-inline float next_float_down(float v) {
+inline Real next_float_down(Real v) {
   if (std::isinf(v) && v < 0) return v;
-  if (v == 0.0f) v = -0.0f;
-  uint32_t bits = std::bit_cast<uint32_t>(v);
+  if (v == Real(0)) v = Real(-0.0);
+  RealBits bits = std::bit_cast<RealBits>(v);
   bits = v > 0 ? bits - 1 : bits + 1;
-  return std::bit_cast<float>(bits);
+  return std::bit_cast<Real>(bits);
 }
 
 // Moves a point off a surface by its rounding-error box so that a ray leaving
 // it on the side of `w` cannot hit the surface it started on, whatever the
 // scene's scale (pbrt-v3 §3.9.5).
-inline Float3 offset_ray_origin(Float3 p, Float3 error, Float3 n, Float3 w) {
-  float d = dot(abs(n), error);
-  Float3 offset = n * d;
+inline Real3 offset_ray_origin(Real3 p, Real3 error, Real3 n, Real3 w) {
+  Real d = dot(abs(n), error);
+  Real3 offset = n * d;
   if (dot(w, n) < 0) offset = offset * -1.0f;
-  Float3 po = p + offset;
+  Real3 po = p + offset;
   for (int i = 0; i < 3; ++i) {
     if (offset[i] > 0) po[i] = next_float_up(po[i]);
     else if (offset[i] < 0) po[i] = next_float_down(po[i]);
@@ -77,12 +89,12 @@ inline Float3 offset_ray_origin(Float3 p, Float3 error, Float3 n, Float3 w) {
 }
 
 struct Bounds3 {
-  Float3 lower{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-               std::numeric_limits<float>::infinity()};
-  Float3 upper{-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-               -std::numeric_limits<float>::infinity()};
+  Real3 lower{std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::infinity(),
+               std::numeric_limits<Real>::infinity()};
+  Real3 upper{-std::numeric_limits<Real>::infinity(), -std::numeric_limits<Real>::infinity(),
+               -std::numeric_limits<Real>::infinity()};
 
-  void extend(Float3 p) {
+  void extend(Real3 p) {
     lower = min(lower, p);
     upper = max(upper, p);
   }
@@ -90,16 +102,16 @@ struct Bounds3 {
     lower = min(lower, b.lower);
     upper = max(upper, b.upper);
   }
-  Float3 centroid() const { return (lower + upper) * 0.5f; }
-  Float3 extent() const { return upper - lower; }
+  Real3 centroid() const { return (lower + upper) * 0.5f; }
+  Real3 extent() const { return upper - lower; }
   bool empty() const { return lower.x > upper.x; }
-  float surface_area() const {
+  Real surface_area() const {
     if (empty()) return 0.0f;
-    Float3 d = extent();
+    Real3 d = extent();
     return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
   }
   int widest_axis() const {
-    Float3 d = extent();
+    Real3 d = extent();
     return d.x > d.y && d.x > d.z ? 0 : (d.y > d.z ? 1 : 2);
   }
 };

@@ -15,15 +15,15 @@ namespace kernel {
 
 // An affine map on plain floats (row-major 3x4), for instancing and motion.
 struct Affine {
-  float m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+  Real m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
 
   static Affine from(const ObjectToWorld& map);
-  Float3 apply_point(Float3 p) const {
+  Real3 apply_point(Real3 p) const {
     return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
             m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
             m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
   }
-  Float3 apply_vector(Float3 v) const {
+  Real3 apply_vector(Real3 v) const {
     return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
             m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
   }
@@ -36,32 +36,32 @@ struct Affine {
   }
 };
 
-inline Float3 column(const Affine& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
+inline Real3 column(const Affine& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
 
 Affine inverse(const Affine& a);
 
 }  // namespace kernel
 
 using kernel::Affine;
-using kernel::Float3;
+using kernel::Real3;
 
 // Rigid motion between two poses, interpolated as translation, rotation
 // (quaternion slerp) and scale, like pbrt's AnimatedTransform.
 class RigidMotion {
  public:
-  RigidMotion(const Affine& at_open, const Affine& at_close, float time_open, float time_close);
-  Affine at(float time) const;
+  RigidMotion(const Affine& at_open, const Affine& at_close, Real time_open, Real time_close);
+  Affine at(Real time) const;
   ObjectToWorld render_from_object(Time time) const;
 
  private:
   struct Pose {
-    Float3 translation;
-    float rotation[4];  // quaternion x, y, z, w
-    float scale[3][3];
+    Real3 translation;
+    Real rotation[4];  // quaternion x, y, z, w
+    Real scale[3][3];
   };
   static Pose decompose(const Affine& m);
   Pose open_, close_;
-  float time_open_, time_close_;
+  Real time_open_, time_close_;
 };
 
 // How `shape` moves while the camera's shutter is open; nothing when it has no
@@ -70,6 +70,6 @@ std::optional<RigidMotion> motion_of(const Shape& shape, const Camera& camera);
 
 // Area of a surface element after `m` per area before, given its normal after
 // (|det L| / |Lᵀ n| for the linear part L).
-float area_scale(const Affine& m, Float3 normal_after);
+Real area_scale(const Affine& m, Real3 normal_after);
 
 }  // namespace safegi::render

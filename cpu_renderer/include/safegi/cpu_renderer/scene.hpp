@@ -3,21 +3,49 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "safegi/cpu_renderer/texture.hpp"
 #include "safegi/cpu_renderer/types.hpp"
 
 namespace safegi::render {
 
-struct Material {
-  enum class Type { lambert, phong, mirror, black };
-  Type type = Type::black;
-  Reflectance diffuse{};   // Lambert albedo, Phong diffuse part
-  Reflectance specular{};  // Phong specular part, mirror tint
-  float exponent = 1.0f;       // Phong lobe exponent (dimensionless)
+// An image texture: a MIP pyramid of linear texels and how surface (u, v)
+// reach it. Reflectance textures are dimensionless; (0, 0) is the image's
+// bottom-left corner (the loader flips the file's rows, as pbrt does).
+struct ImageTexture {
   std::string name;
+  std::string file;                              // as written in the scene (for messages)
+  ColourSpace colour_space = ColourSpace::srgb;  // how the file encoded its values (decoded at load)
+  TextureFilter filter = TextureFilter::trilinear;
+  Real scale = 1.0f;  // multiplies every texel (pbrt's "scale")
+  // (u, v) -> (u * u_scale + u_offset, v * v_scale + v_offset) before the lookup (pbrt's uv mapping)
+  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+  std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included
+};
+
+struct Material {
+  enum class Type { lambert, phong, plastic, mirror, glass, black };  // the lobed ones, then the deltas: adjacent values
+  Type type = Type::black;
+  Reflectance diffuse{};       // Lambert albedo; Phong and plastic diffuse part (times diffuse_texture)
+  Reflectance specular{};      // Phong specular part; mirror tint; plastic Ks; glass reflection tint (Kr)
+  Reflectance transmission{};  // glass transmission tint (Kt)
+  Real exponent = 1.0f;       // Phong lobe exponent (dimensionless)
+  Real ior = 1.5f;            // glass, plastic: index of refraction inside over outside
+  Real alpha = 0.0f;          // plastic: Trowbridge–Reitz (GGX) roughness alpha; 0 = smooth
+  // pbrt-v3's plastic evaluates its Fresnel term as FrDielectric(cos, 1.5, 1), the
+  // indices swapped (mmp/pbrt-v3#210, left unfixed there); true reproduces that.
+  bool pbrt_v3_plastic_fresnel = false;
+  int diffuse_texture = -1;    // index into Scene::textures; multiplies `diffuse` (lambert, phong, plastic)
+  std::string name;
+};
+
+// Surface parameters of a mesh vertex (dimensionless), for texture lookups.
+struct TexCoord {
+  Real u = 0.0f, v = 0.0f;
 };
 
 struct Shape {
@@ -27,6 +55,7 @@ struct Shape {
   // mesh: triangles over positions in object space
   std::vector<PointObject> positions;
   std::vector<uint32_t> indices;
+  std::vector<TexCoord> uvs;  // empty, or one per position (absent: each triangle's (0,0), (1,0), (1,1))
   // sphere, in object space
   PointObject center;
   Length radius = sg::zero;
@@ -58,13 +87,24 @@ struct SpotLight {
 };
 
 // The spot's falloff towards a direction at cos θ to its axis.
-inline float spot_falloff(const SpotLight& light, float cos_theta) {
-  float cos_total = sg::cos(light.cone_angle), cos_start = sg::cos(light.cone_angle - light.cone_delta);
+inline Real spot_falloff(const SpotLight& light, Real cos_theta) {
+  Real cos_total = sg::cos(light.cone_angle), cos_start = sg::cos(light.cone_angle - light.cone_delta);
   if (cos_theta < cos_total) return 0;
   if (cos_theta >= cos_start) return 1;
-  float delta = (cos_theta - cos_total) / (cos_start - cos_total);
+  Real delta = (cos_theta - cos_total) / (cos_start - cos_total);
   return (delta * delta) * (delta * delta);
 }
+
+// Light from infinitely far away in every direction. Without a map its
+// radiance is constant; with one (lat-long, linear RGB, pbrt's layout) the
+// radiance towards -w is `radiance` times the texel at u = φ/2π, v = θ/π, where
+// θ is measured from light space's +z and φ = atan2(y, x); row 0 is θ = 0.
+struct EnvironmentLight {
+  Radiance radiance;                  // constant radiance, or the factor on the map's texels
+  std::string file;                   // the map, as written in the scene; empty: constant
+  std::shared_ptr<const MipMap> map;  // lat-long texels (u wraps, v clamps)
+  LightToWorld render_from_light;     // a rotation
+};
 
 struct Camera {
   PointWorld position;
@@ -77,7 +117,7 @@ struct Camera {
   Time shutter_close = sg::zero;
 };
 
-enum class IntegratorType { direct, path };
+enum class IntegratorType { direct, path, photon };
 
 struct RenderSettings {
   int width = 256;
@@ -90,15 +130,21 @@ struct RenderSettings {
   int light_samples = 1;           // shadow rays per shading point for direct lighting
   bool russian_roulette = true;    // off: paths end only at max_depth or when nothing is hit
   int russian_roulette_depth = 3;  // bounces before Russian roulette starts
+  // Photon mapping (integrator photon): photons traced from the lights, and the
+  // radius of the density estimate (zero: chosen from the scene's size).
+  int photons = 200000;
+  Length photon_radius = sg::zero;
 };
 
 struct Scene {
   RenderSettings settings;
   Camera camera;
+  std::vector<ImageTexture> textures;
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<PointLight> point_lights;
   std::vector<SpotLight> spot_lights;
+  std::optional<EnvironmentLight> environment;
 };
 
 }  // namespace safegi::render

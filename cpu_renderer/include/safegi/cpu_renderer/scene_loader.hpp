@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -18,10 +19,21 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-Scene load_scene(const std::filesystem::path& file);
+// Reads an image file (a texture, an environment map) as RGB floats, row 0 at
+// the top, 8-bit values scaled to [0, 1]; throws a std::exception whose what()
+// says why it cannot.
+using ImageFileReader = std::function<Image(const std::filesystem::path&)>;
 
-// `display_name` starts error messages; relative mesh paths resolve against `base_directory`.
+struct SceneLoadOptions {
+  // How image files are read. Empty: PFM only (the core links no OpenImageIO);
+  // the programs pass read_image (image_io.hpp), which reads any format.
+  ImageFileReader read_image;
+};
+
+Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options = {});
+
+// `display_name` starts error messages; relative mesh and image paths resolve against `base_directory`.
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
-                  const std::filesystem::path& base_directory);
+                  const std::filesystem::path& base_directory, const SceneLoadOptions& options = {});
 
 }  // namespace safegi::render

@@ -16,6 +16,7 @@ namespace units = ::safegi::units;
 using World = spaces::world;
 using Object = spaces::object;
 using Shading = spaces::shading;
+using LightSpace = spaces::light;
 
 using Length = quantity<dim::length>;
 using Time = quantity<dim::time>;
@@ -39,6 +40,7 @@ using DirectionWorld = direction<World>;
 using NormalWorld = normal<World>;
 using DirectionShading = direction<Shading>;
 using ObjectToWorld = map<Object, World>;
+using LightToWorld = map<LightSpace, World>;
 using ShadingFrame = frame<World, Shading>;
 
 // Solid angle subtended per unit of area at distance r whose normal makes
@@ -55,13 +57,13 @@ inline PdfSolidAngle to_solid_angle_density(PdfArea pdf, Proj cos_at_area, Lengt
 
 // Plain components for the acceleration kernel (reference units: metres).
 template <class T>
-inline kernel::Float3 to_kernel(const T& value) {
-  glm::vec3 v = sg::raw(value);
+inline kernel::Real3 to_kernel(const T& value) {
+  sg::vec3_rep v = sg::raw(value);
   return {v.x, v.y, v.z};
 }
 template <class T>
-inline T from_kernel(kernel::Float3 v) {
-  return sg::from_raw<T>(glm::vec3(v.x, v.y, v.z));
+inline T from_kernel(kernel::Real3 v) {
+  return sg::from_raw<T>(sg::vec3_rep(v.x, v.y, v.z));
 }
 
 }  // namespace safegi::render

@@ -120,8 +120,9 @@ class DimensionRegistry {
   // out: the projected-cosine factor is a ratio of lengths, a pure number in
   // SI, and radiometry writes radiance per projected solid angle as
   // W·m⁻²·sr⁻¹. The checker keeps proj (format_product shows it); these
-  // words are what a reader compares with a textbook.
-  std::string format_units(const Dimension& d, Notation notation = Notation::unicode) const;
+  // words are what a reader compares with a textbook. A dimension with unit
+  // factors is spelled in its own units (format_units).
+  std::string format_si(const Dimension& d, Notation notation = Notation::unicode) const;
   std::string format_rational(const std::vector<RationalFactor>& factors, Notation notation = Notation::unicode) const;
   std::string describe(const DimensionError& error) const;
 

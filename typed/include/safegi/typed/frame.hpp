@@ -22,11 +22,11 @@ class basic_frame {
 
   /// A frame around n (Duff et al. 2017, "Building an orthonormal basis, revisited").
   static basic_frame from_normal(basic_normal<S> n) {
-    const glm::vec3 z = n.raw_value();
-    const float sign = std::copysign(1.0f, z.z);
-    const float a = -1.0f / (sign + z.z);
-    const float b = z.x * z.y * a;
-    return {basic_direction<S>(1.0f + sign * z.x * z.x * a, sign * b, -sign * z.x),
+    const vec3_rep z = n.raw_value();
+    const real sign = std::copysign(real(1), z.z);
+    const real a = -real(1) / (sign + z.z);
+    const real b = z.x * z.y * a;
+    return {basic_direction<S>(real(1) + sign * z.x * z.x * a, sign * b, -sign * z.x),
             basic_direction<S>(b, sign + z.y * z.y * a, -z.y), n};
   }
 
@@ -66,16 +66,16 @@ class basic_frame {
   }
 
  private:
-  [[nodiscard]] constexpr glm::vec3 local(glm::vec3 v) const {
+  [[nodiscard]] constexpr vec3_rep local(vec3_rep v) const {
     return {glm::dot(v, s_.raw_value()), glm::dot(v, t_.raw_value()), glm::dot(v, n_.raw_value())};
   }
-  [[nodiscard]] constexpr glm::vec3 global(glm::vec3 v) const {
+  [[nodiscard]] constexpr vec3_rep global(vec3_rep v) const {
     return v.x * s_.raw_value() + v.y * t_.raw_value() + v.z * n_.raw_value();
   }
 
-  basic_direction<S> s_{1.0f, 0.0f, 0.0f};
-  basic_direction<S> t_{0.0f, 1.0f, 0.0f};
-  basic_normal<S> n_{0.0f, 0.0f, 1.0f};
+  basic_direction<S> s_{real(1), real(0), real(0)};
+  basic_direction<S> t_{real(0), real(1), real(0)};
+  basic_normal<S> n_{real(0), real(0), real(1)};
 };
 
 template <space_type S, space_type L = spaces::shading>
@@ -84,12 +84,12 @@ using frame = basic_frame<mode_space<S>, mode_space<L>>;
 /// cos θ of a direction in a shading space (normal = +z): the projected-cosine factor.
 template <class L>
 constexpr quantity<dim::proj> cos_theta(basic_direction<L> w) {
-  return make_quantity<mode_dimension<dim::proj>, float>(w.z());
+  return make_quantity<mode_dimension<dim::proj>, real>(w.z());
 }
 /// |cos θ|, for two-sided shading.
 template <class L>
 constexpr quantity<dim::proj> abs_cos_theta(basic_direction<L> w) {
-  return make_quantity<mode_dimension<dim::proj>, float>(std::abs(w.z()));
+  return make_quantity<mode_dimension<dim::proj>, real>(std::abs(w.z()));
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE

@@ -32,8 +32,8 @@ constexpr void spaces_meet() {
 
 /// The matrix and its inverse; the part both kinds of map share.
 struct matrix_pair {
-  glm::mat4 forward{1.0f};
-  glm::mat4 inverse{1.0f};
+  mat4_rep forward{real(1)};
+  mat4_rep inverse{real(1)};
 };
 
 /// outer ∘ inner: inner applies first.
@@ -60,50 +60,50 @@ class basic_map {
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
 
   static basic_map translation(basic_vector<B, detail::length_dimension> offset) {
-    return from_matrix(glm::translate(glm::mat4(1.0f), offset.raw_value()));
+    return from_matrix(glm::translate(mat4_rep(real(1)), offset.raw_value()));
   }
-  static basic_map scaling(float sx, float sy, float sz) {
+  static basic_map scaling(real sx, real sy, real sz) {
     return {detail::raw_tag{},
-            {glm::scale(glm::mat4(1.0f), glm::vec3(sx, sy, sz)),
-             glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / sx, 1.0f / sy, 1.0f / sz))}};
+            {glm::scale(mat4_rep(real(1)), vec3_rep(sx, sy, sz)),
+             glm::scale(mat4_rep(real(1)), vec3_rep(real(1) / sx, real(1) / sy, real(1) / sz))}};
   }
   /// A rotation by `angle` about `axis` (right-handed).
   static basic_map rotation(quantity<dim::angle> angle, basic_direction<A> axis) {
-    const glm::mat4 r = glm::rotate(glm::mat4(1.0f), float(raw(angle)), axis.raw_value());
+    const mat4_rep r = glm::rotate(mat4_rep(real(1)), real(raw(angle)), axis.raw_value());
     return {detail::raw_tag{}, {r, glm::transpose(r)}};
   }
   /// A camera at `eye` looking at `target`; camera space as glm::lookAt (looking down -z).
   template <class W>
   static basic_map look_at(basic_point<W> eye, basic_point<W> target, basic_direction<W> up) {
     rules::applies_to<A, B, W>();
-    const glm::mat4 view = glm::lookAt(eye.raw_value(), target.raw_value(), up.raw_value());
+    const mat4_rep view = glm::lookAt(eye.raw_value(), target.raw_value(), up.raw_value());
     return {detail::raw_tag{}, {view, glm::inverse(view)}};
   }
   /// Any invertible affine matrix (the inverse is computed once here).
-  static basic_map from_matrix(const glm::mat4& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
+  static basic_map from_matrix(const mat4_rep& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
 
   // Application: each kind transforms as what it is.
   template <class S>
   constexpr basic_point<B> operator()(basic_point<S> p) const {
     rules::applies_to<A, B, S>();
-    return {detail::raw_tag{}, glm::vec3(m_.forward * glm::vec4(p.raw_value(), 1.0f))};
+    return {detail::raw_tag{}, vec3_rep(m_.forward * vec4_rep(p.raw_value(), real(1)))};
   }
   template <class S, class D>
   constexpr basic_vector<B, D> operator()(basic_vector<S, D> v) const {
     rules::applies_to<A, B, S>();
-    return {detail::raw_tag{}, glm::mat3(m_.forward) * v.raw_value()};
+    return {detail::raw_tag{}, mat3_rep(m_.forward) * v.raw_value()};
   }
   /// Directions stay unit length (renormalised after non-rigid maps).
   template <class S>
   constexpr basic_direction<B> operator()(basic_direction<S> d) const {
     rules::applies_to<A, B, S>();
-    return {detail::raw_tag{}, glm::normalize(glm::mat3(m_.forward) * d.raw_value())};
+    return {detail::raw_tag{}, glm::normalize(mat3_rep(m_.forward) * d.raw_value())};
   }
   /// Normals transform by the inverse transpose, then are renormalised.
   template <class S>
   constexpr basic_normal<B> operator()(basic_normal<S> n) const {
     rules::applies_to<A, B, S>();
-    return {detail::raw_tag{}, glm::normalize(glm::transpose(glm::mat3(m_.inverse)) * n.raw_value())};
+    return {detail::raw_tag{}, glm::normalize(glm::transpose(mat3_rep(m_.inverse)) * n.raw_value())};
   }
   template <class S>
   constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
@@ -126,17 +126,17 @@ class basic_projective_map {
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
 
   /// An OpenGL-style perspective projection (glm::perspective).
-  static basic_projective_map perspective(quantity<dim::angle> fov_y, float aspect, quantity<dim::length> near,
+  static basic_projective_map perspective(quantity<dim::angle> fov_y, real aspect, quantity<dim::length> near,
                                           quantity<dim::length> far) {
-    const glm::mat4 p = glm::perspective(float(raw(fov_y)), aspect, float(raw(near)), float(raw(far)));
+    const mat4_rep p = glm::perspective(real(raw(fov_y)), aspect, real(raw(near)), real(raw(far)));
     return {detail::raw_tag{}, {p, glm::inverse(p)}};
   }
-  static basic_projective_map from_matrix(const glm::mat4& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
+  static basic_projective_map from_matrix(const mat4_rep& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
 
   template <class S>
   constexpr basic_hpoint<B> operator()(basic_point<S> p) const {
     rules::applies_to<A, B, S>();
-    return {detail::raw_tag{}, m_.forward * glm::vec4(p.raw_value(), 1.0f)};
+    return {detail::raw_tag{}, m_.forward * vec4_rep(p.raw_value(), real(1))};
   }
   template <class S>
   constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
@@ -168,17 +168,17 @@ struct raw_access<basic_projective_map<A, B>> {
 
 /// The forward matrix, for uploading to a shader (glUniformMatrix4fv).
 template <class A, class B>
-constexpr glm::mat4 matrix(const basic_map<A, B>& m) {
+constexpr mat4_rep matrix(const basic_map<A, B>& m) {
   return m.raw_value().forward;
 }
 template <class A, class B>
-constexpr glm::mat4 matrix(const basic_projective_map<A, B>& m) {
+constexpr mat4_rep matrix(const basic_projective_map<A, B>& m) {
   return m.raw_value().forward;
 }
 /// The 3x3 matrix that transforms normals (inverse transpose), for shaders.
 template <class A, class B>
-constexpr glm::mat3 normal_matrix(const basic_map<A, B>& m) {
-  return glm::transpose(glm::mat3(m.raw_value().inverse));
+constexpr mat3_rep normal_matrix(const basic_map<A, B>& m) {
+  return glm::transpose(mat3_rep(m.raw_value().inverse));
 }
 
 template <class A, class B>

@@ -53,7 +53,7 @@ constexpr std::partial_ordering operator<=>(F value, zero_t) {
 
 /// The checked representation behind quantity<D, T> for a dimension other than
 /// dimensionless. Use the alias quantity<D, T> in code meant to build in both modes.
-template <dimension_type D, std::floating_point T = float>
+template <dimension_type D, std::floating_point T = real>
 class basic_quantity {
   static_assert(!std::is_same_v<D, dim::dimensionless>, "a dimensionless quantity is the plain number T");
 
@@ -121,10 +121,10 @@ struct checked_quantity<dim::dimensionless, T> {
 }  // namespace detail
 
 #if SAFEGI_TYPED_CHECKED
-template <dimension_type D, std::floating_point T = float>
+template <dimension_type D, std::floating_point T = real>
 using quantity = typename detail::checked_quantity<D, T>::type;
 #else
-template <dimension_type D, std::floating_point T = float>
+template <dimension_type D, std::floating_point T = real>
 using quantity = T;
 #endif
 
@@ -406,8 +406,8 @@ constexpr bool isnan(Q q) {
   return std::isnan(raw(q));
 }
 
-/// π as a plain number (an angle is `pi * units::radian`).
-inline constexpr float pi = 3.14159265358979323846f;
+/// π as a plain number (an angle is `pi * units::radian`), in the representation's precision.
+inline constexpr real pi = real(3.14159265358979323846);
 
 }  // namespace SAFEGI_MODE_NAMESPACE
 }  // namespace safegi

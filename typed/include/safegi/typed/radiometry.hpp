@@ -15,7 +15,7 @@ inline namespace SAFEGI_MODE_NAMESPACE {
 constexpr quantity<dim::pdf_solid_angle> pdf_area_to_solid_angle(quantity<dim::pdf_area> pdf,
                                                                 quantity<dim::area> distance_squared,
                                                                 quantity<dim::proj> cos_light) {
-  const float cosine = raw(cos_light) < 0.0f ? -raw(cos_light) : raw(cos_light);
+  const real cosine = raw(cos_light) < real(0) ? -raw(cos_light) : raw(cos_light);
   return pdf * distance_squared / (cosine * units::steradian);
 }
 
@@ -23,7 +23,7 @@ constexpr quantity<dim::pdf_solid_angle> pdf_area_to_solid_angle(quantity<dim::p
 constexpr quantity<dim::pdf_area> pdf_solid_angle_to_area(quantity<dim::pdf_solid_angle> pdf,
                                                          quantity<dim::area> distance_squared,
                                                          quantity<dim::proj> cos_light) {
-  const float cosine = raw(cos_light) < 0.0f ? -raw(cos_light) : raw(cos_light);
+  const real cosine = raw(cos_light) < real(0) ? -raw(cos_light) : raw(cos_light);
   return pdf * (cosine * units::steradian) / distance_squared;
 }
 

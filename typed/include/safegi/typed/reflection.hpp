@@ -37,7 +37,7 @@ struct dimension_term {
 
 struct type_description {
   type_kind kind = type_kind::scalar;
-  scalar_type scalar = scalar_type::float32;
+  scalar_type scalar = sizeof(real) == 4 ? scalar_type::float32 : scalar_type::float64;
   /// False in the unchecked build: then only kind and scalar are filled in.
   bool checked = is_checked;
   /// Base dimensions and exponents, sorted by base name; empty when dimensionless.
@@ -75,7 +75,8 @@ std::vector<dimension_term> terms_of(safegi::dimension<Terms...>) {
 }
 
 template <class T>
-type_description with_dimension(type_kind kind, scalar_type scalar = scalar_type::float32) {
+type_description with_dimension(type_kind kind, scalar_type scalar = sizeof(real) == 4 ? scalar_type::float32
+                                                                                      : scalar_type::float64) {
   type_description d;
   d.kind = kind;
   d.scalar = scalar;

@@ -24,6 +24,7 @@
 #include <glm/vec4.hpp>
 
 #include "safegi/typed/quantity.hpp"
+#include "safegi/typed/representation.hpp"
 
 namespace safegi {
 
@@ -89,20 +90,20 @@ template <class S>
 using displacement = basic_vector<S, length_dimension>;
 
 template <dimension_type D>
-constexpr quantity<D> component(float value) {
-  return make_quantity<mode_dimension<D>, float>(value);
+constexpr quantity<D> component(real value) {
+  return make_quantity<mode_dimension<D>, real>(value);
 }
 
 /// The storage and raw access every three-component kind shares.
 template <class Derived>
 class vec3_storage {
  public:
-  [[nodiscard]] constexpr glm::vec3 raw_value() const { return xyz_; }
+  [[nodiscard]] constexpr vec3_rep raw_value() const { return xyz_; }
 
  protected:
   constexpr vec3_storage() = default;
-  constexpr explicit vec3_storage(glm::vec3 xyz) : xyz_(xyz) {}
-  glm::vec3 xyz_{0.0f};
+  constexpr explicit vec3_storage(vec3_rep xyz) : xyz_(xyz) {}
+  vec3_rep xyz_{real(0)};
 };
 }  // namespace detail
 
@@ -114,8 +115,8 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   using space_type = S;
   constexpr basic_point() = default;
   constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
-      : base(glm::vec3(raw(x), raw(y), raw(z))) {}
-  constexpr basic_point(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+      : base(vec3_rep(raw(x), raw(y), raw(z))) {}
+  constexpr basic_point(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   // Conversions that are always mistakes; they exist so the error names both sides.
   template <class S2>
     requires(!std::is_same_v<S2, S>)
@@ -127,7 +128,7 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
     (void)sizeof(diagnose::wrong_geometric_kind<"point", "vector", S2::name>);
   }
   template <class S2>
-  constexpr basic_point(basic_hpoint<S2> h) : base(glm::vec3(h.raw_value())) {  // NOLINT
+  constexpr basic_point(basic_hpoint<S2> h) : base(vec3_rep(h.raw_value())) {  // NOLINT
     (void)sizeof(diagnose::wrong_geometric_kind<"point", "hpoint", S2::name>);
   }
 
@@ -148,8 +149,8 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   using space_type = S;
   using dimension_type = D;
   constexpr basic_vector() = default;
-  constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(glm::vec3(raw(x), raw(y), raw(z))) {}
-  constexpr basic_vector(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(vec3_rep(raw(x), raw(y), raw(z))) {}
+  constexpr basic_vector(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2, class E>
     requires(!std::is_same_v<S2, S> || !std::is_same_v<E, D>)
   constexpr basic_vector(basic_vector<S2, E> other) : base(other.raw_value()) {  // NOLINT
@@ -179,12 +180,12 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   }
   template <arithmetic U>
   constexpr basic_vector& operator*=(U factor) {
-    this->xyz_ *= float(factor);
+    this->xyz_ *= real(factor);
     return *this;
   }
   template <arithmetic U>
   constexpr basic_vector& operator/=(U divisor) {
-    this->xyz_ /= float(divisor);
+    this->xyz_ /= real(divisor);
     return *this;
   }
 };
@@ -195,10 +196,10 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
 
  public:
   using space_type = S;
-  constexpr basic_direction() : base(glm::vec3(0.0f, 0.0f, 1.0f)) {}
+  constexpr basic_direction() : base(vec3_rep(real(0), real(0), real(1))) {}
   /// Components of a unit vector (not renormalised; use normalize(vector) otherwise).
-  constexpr explicit basic_direction(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
-  constexpr basic_direction(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  constexpr explicit basic_direction(real x, real y, real z) : base(vec3_rep(x, y, z)) {}
+  constexpr basic_direction(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   constexpr basic_direction(basic_direction<S2> other) : base(other.raw_value()) {  // NOLINT
@@ -214,10 +215,10 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
     (void)sizeof(diagnose::wrong_geometric_kind<"direction", "normal", S2::name>);
   }
 
-  [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
-  [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
-  [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
-  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
+  [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -227,10 +228,10 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
 
  public:
   using space_type = S;
-  constexpr basic_normal() : base(glm::vec3(0.0f, 0.0f, 1.0f)) {}
+  constexpr basic_normal() : base(vec3_rep(real(0), real(0), real(1))) {}
   /// Components of a unit normal (not renormalised).
-  constexpr explicit basic_normal(float x, float y, float z) : base(glm::vec3(x, y, z)) {}
-  constexpr basic_normal(detail::raw_tag, glm::vec3 xyz) : base(xyz) {}
+  constexpr explicit basic_normal(real x, real y, real z) : base(vec3_rep(x, y, z)) {}
+  constexpr basic_normal(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   constexpr basic_normal(basic_normal<S2> other) : base(other.raw_value()) {  // NOLINT
@@ -242,10 +243,10 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
     (void)sizeof(diagnose::wrong_geometric_kind<"normal", "direction", S2::name>);
   }
 
-  [[nodiscard]] constexpr float x() const { return this->xyz_.x; }
-  [[nodiscard]] constexpr float y() const { return this->xyz_.y; }
-  [[nodiscard]] constexpr float z() const { return this->xyz_.z; }
-  [[nodiscard]] constexpr float operator[](int i) const { return this->xyz_[i]; }
+  [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
   constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
@@ -254,16 +255,16 @@ class basic_hpoint {
  public:
   using space_type = S;
   constexpr basic_hpoint() = default;
-  constexpr explicit basic_hpoint(float x, float y, float z, float w) : xyzw_(x, y, z, w) {}
-  constexpr basic_hpoint(detail::raw_tag, glm::vec4 xyzw) : xyzw_(xyzw) {}
-  [[nodiscard]] constexpr glm::vec4 raw_value() const { return xyzw_; }
-  [[nodiscard]] constexpr float x() const { return xyzw_.x; }
-  [[nodiscard]] constexpr float y() const { return xyzw_.y; }
-  [[nodiscard]] constexpr float z() const { return xyzw_.z; }
-  [[nodiscard]] constexpr float w() const { return xyzw_.w; }
+  constexpr explicit basic_hpoint(real x, real y, real z, real w) : xyzw_(x, y, z, w) {}
+  constexpr basic_hpoint(detail::raw_tag, vec4_rep xyzw) : xyzw_(xyzw) {}
+  [[nodiscard]] constexpr vec4_rep raw_value() const { return xyzw_; }
+  [[nodiscard]] constexpr real x() const { return xyzw_.x; }
+  [[nodiscard]] constexpr real y() const { return xyzw_.y; }
+  [[nodiscard]] constexpr real z() const { return xyzw_.z; }
+  [[nodiscard]] constexpr real w() const { return xyzw_.w; }
 
  private:
-  glm::vec4 xyzw_{0.0f, 0.0f, 0.0f, 1.0f};
+  vec4_rep xyzw_{real(0), real(0), real(0), real(1)};
 };
 
 // ---- raw access
@@ -277,15 +278,15 @@ struct raw_access_by_member {
 };
 }  // namespace detail
 template <class S>
-struct raw_access<basic_point<S>> : detail::raw_access_by_member<basic_point<S>, glm::vec3> {};
+struct raw_access<basic_point<S>> : detail::raw_access_by_member<basic_point<S>, vec3_rep> {};
 template <class S, class D>
-struct raw_access<basic_vector<S, D>> : detail::raw_access_by_member<basic_vector<S, D>, glm::vec3> {};
+struct raw_access<basic_vector<S, D>> : detail::raw_access_by_member<basic_vector<S, D>, vec3_rep> {};
 template <class S>
-struct raw_access<basic_direction<S>> : detail::raw_access_by_member<basic_direction<S>, glm::vec3> {};
+struct raw_access<basic_direction<S>> : detail::raw_access_by_member<basic_direction<S>, vec3_rep> {};
 template <class S>
-struct raw_access<basic_normal<S>> : detail::raw_access_by_member<basic_normal<S>, glm::vec3> {};
+struct raw_access<basic_normal<S>> : detail::raw_access_by_member<basic_normal<S>, vec3_rep> {};
 template <class S>
-struct raw_access<basic_hpoint<S>> : detail::raw_access_by_member<basic_hpoint<S>, glm::vec4> {};
+struct raw_access<basic_hpoint<S>> : detail::raw_access_by_member<basic_hpoint<S>, vec4_rep> {};
 
 // ---- affine arithmetic
 
@@ -342,8 +343,8 @@ constexpr bool operator==(basic_vector<S, D> a, basic_vector<S2, E> b) {
 template <class S, class D, class Q>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator*(basic_vector<S, D> v, Q factor) {
-  using F = std::conditional_t<quantity_like<Q>, Q, float>;
-  return basic_vector<S, dim::product<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() * float(raw(F(factor))));
+  using F = std::conditional_t<quantity_like<Q>, Q, real>;
+  return basic_vector<S, dim::product<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() * real(raw(F(factor))));
 }
 template <class S, class D, class Q>
   requires quantity_like<Q> || arithmetic<Q>
@@ -353,16 +354,16 @@ constexpr auto operator*(Q factor, basic_vector<S, D> v) {
 template <class S, class D, class Q>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator/(basic_vector<S, D> v, Q divisor) {
-  using F = std::conditional_t<quantity_like<Q>, Q, float>;
-  return basic_vector<S, dim::quotient<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() / float(raw(F(divisor))));
+  using F = std::conditional_t<quantity_like<Q>, Q, real>;
+  return basic_vector<S, dim::quotient<D, dimension_of<F>>>(detail::raw_tag{}, v.raw_value() / real(raw(F(divisor))));
 }
 
 /// A unit vector scaled by a quantity: direction * (2.0f * units::metre) is a displacement.
 template <class S, class Q>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator*(basic_direction<S> d, Q length) {
-  using F = std::conditional_t<quantity_like<Q>, Q, float>;
-  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, d.raw_value() * float(raw(F(length))));
+  using F = std::conditional_t<quantity_like<Q>, Q, real>;
+  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, d.raw_value() * real(raw(F(length))));
 }
 template <class S, class Q>
   requires quantity_like<Q> || arithmetic<Q>
@@ -372,8 +373,8 @@ constexpr auto operator*(Q length, basic_direction<S> d) {
 template <class S, class Q>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator*(basic_normal<S> n, Q length) {
-  using F = std::conditional_t<quantity_like<Q>, Q, float>;
-  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, n.raw_value() * float(raw(F(length))));
+  using F = std::conditional_t<quantity_like<Q>, Q, real>;
+  return basic_vector<S, dimension_of<F>>(detail::raw_tag{}, n.raw_value() * real(raw(F(length))));
 }
 template <class S, class Q>
   requires quantity_like<Q> || arithmetic<Q>
@@ -407,7 +408,7 @@ constexpr bool operator==(basic_normal<S> a, basic_normal<S2> b) {
 template <class S, class S2, class D, class E>
 constexpr quantity<dim::product<D, E>> dot(basic_vector<S, D> a, basic_vector<S2, E> b) {
   rules::same_space<"dot", S, S2>();
-  return make_quantity<dim::product<D, E>, float>(glm::dot(a.raw_value(), b.raw_value()));
+  return make_quantity<dim::product<D, E>, real>(glm::dot(a.raw_value(), b.raw_value()));
 }
 template <class S, class S2, class D, class E>
 constexpr basic_vector<S, dim::product<D, E>> cross(basic_vector<S, D> a, basic_vector<S2, E> b) {
@@ -415,7 +416,7 @@ constexpr basic_vector<S, dim::product<D, E>> cross(basic_vector<S, D> a, basic_
   return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
 }
 template <class S, class S2>
-constexpr float dot(basic_direction<S> a, basic_direction<S2> b) {
+constexpr real dot(basic_direction<S> a, basic_direction<S2> b) {
   rules::same_space<"dot", S, S2>();
   return glm::dot(a.raw_value(), b.raw_value());
 }
@@ -428,7 +429,7 @@ constexpr basic_vector<S, dim::dimensionless> cross(basic_direction<S> a, basic_
 template <class S, class S2>
 constexpr quantity<dim::proj> dot(basic_normal<S> n, basic_direction<S2> w) {
   rules::same_space<"dot", S, S2>();
-  return make_quantity<mode_dimension<dim::proj>, float>(glm::dot(n.raw_value(), w.raw_value()));
+  return make_quantity<mode_dimension<dim::proj>, real>(glm::dot(n.raw_value(), w.raw_value()));
 }
 template <class S, class S2>
 constexpr quantity<dim::proj> dot(basic_direction<S> w, basic_normal<S2> n) {
@@ -440,14 +441,14 @@ constexpr quantity<dim::proj> abs_dot(basic_normal<S> n, basic_direction<S2> w) 
   return safegi::abs(dot(n, w));
 }
 template <class S, class S2>
-constexpr float dot(basic_normal<S> a, basic_normal<S2> b) {
+constexpr real dot(basic_normal<S> a, basic_normal<S2> b) {
   rules::same_space<"dot", S, S2>();
   return glm::dot(a.raw_value(), b.raw_value());
 }
 template <class S, class S2, class D>
 constexpr quantity<D> dot(basic_direction<S> u, basic_vector<S2, D> v) {
   rules::same_space<"dot", S, S2>();
-  return make_quantity<D, float>(glm::dot(u.raw_value(), v.raw_value()));
+  return make_quantity<D, real>(glm::dot(u.raw_value(), v.raw_value()));
 }
 template <class S, class S2, class D>
 constexpr quantity<D> dot(basic_vector<S2, D> v, basic_direction<S> u) {
@@ -456,7 +457,7 @@ constexpr quantity<D> dot(basic_vector<S2, D> v, basic_direction<S> u) {
 template <class S, class S2, class D>
 constexpr quantity<D> dot(basic_normal<S> n, basic_vector<S2, D> v) {
   rules::same_space<"dot", S, S2>();
-  return make_quantity<D, float>(glm::dot(n.raw_value(), v.raw_value()));
+  return make_quantity<D, real>(glm::dot(n.raw_value(), v.raw_value()));
 }
 template <class S, class S2, class D>
 constexpr quantity<D> dot(basic_vector<S2, D> v, basic_normal<S> n) {
@@ -467,11 +468,11 @@ constexpr quantity<D> dot(basic_vector<S2, D> v, basic_normal<S> n) {
 
 template <class S, class D>
 constexpr quantity<D> length(basic_vector<S, D> v) {
-  return make_quantity<D, float>(glm::length(v.raw_value()));
+  return make_quantity<D, real>(glm::length(v.raw_value()));
 }
 template <class S, class D>
 constexpr quantity<dim::pow<D, 2>> length_squared(basic_vector<S, D> v) {
-  return make_quantity<dim::pow<D, 2>, float>(glm::dot(v.raw_value(), v.raw_value()));
+  return make_quantity<dim::pow<D, 2>, real>(glm::dot(v.raw_value(), v.raw_value()));
 }
 template <class S, class D>
 constexpr basic_direction<S> normalize(basic_vector<S, D> v) {
@@ -487,14 +488,14 @@ constexpr quantity<dim::area> distance_squared(basic_point<S> a, basic_point<S2>
 }
 /// The point a + t (b - a).
 template <class S, class S2>
-constexpr basic_point<S> lerp(basic_point<S> a, basic_point<S2> b, float t) {
+constexpr basic_point<S> lerp(basic_point<S> a, basic_point<S2> b, real t) {
   rules::same_space<"lerp", S, S2>();
-  return {detail::raw_tag{}, (1.0f - t) * a.raw_value() + t * b.raw_value()};
+  return {detail::raw_tag{}, (real(1) - t) * a.raw_value() + t * b.raw_value()};
 }
 /// b0 p0 + b1 p1 + b2 p2 with b0 + b1 + b2 = 1 (a point on a triangle).
 template <class S, class S1, class S2>
-constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basic_point<S2> p2, float b0,
-                                     float b1, float b2) {
+constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basic_point<S2> p2, real b0,
+                                     real b1, real b2) {
   rules::same_space<"barycentric", S, S1>();
   rules::same_space<"barycentric", S, S2>();
   return {detail::raw_tag{}, b0 * p0.raw_value() + b1 * p1.raw_value() + b2 * p2.raw_value()};
@@ -535,13 +536,13 @@ constexpr basic_normal<S> face_forward(basic_normal<S> n, basic_direction<S2> w)
 template <class S, class S2>
 constexpr basic_direction<S> reflect(basic_direction<S> w, basic_normal<S2> n) {
   rules::same_space<"reflect", S, S2>();
-  return {detail::raw_tag{}, -w.raw_value() + 2.0f * glm::dot(w.raw_value(), n.raw_value()) * n.raw_value()};
+  return {detail::raw_tag{}, -w.raw_value() + real(2) * glm::dot(w.raw_value(), n.raw_value()) * n.raw_value()};
 }
 /// The point an hpoint stands for (divides by w).
 template <class S>
 constexpr basic_point<S> dehomogenize(basic_hpoint<S> h) {
-  const glm::vec4 v = h.raw_value();
-  return {detail::raw_tag{}, glm::vec3(v) / v.w};
+  const vec4_rep v = h.raw_value();
+  return {detail::raw_tag{}, vec3_rep(v) / v.w};
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE

@@ -7,6 +7,7 @@
 #include <glm/exponential.hpp>
 
 #include "safegi/typed/quantity.hpp"
+#include "safegi/typed/representation.hpp"
 #include "safegi/typed/units.hpp"
 
 namespace safegi {
@@ -23,7 +24,7 @@ class basic_spectrum {
   constexpr basic_spectrum(quantity<D> r, quantity<D> g, quantity<D> b) : rgb_(raw(r), raw(g), raw(b)) {}
   /// The same value in every channel.
   constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
-  constexpr basic_spectrum(detail::raw_tag, glm::vec3 rgb) : rgb_(rgb) {}
+  constexpr basic_spectrum(detail::raw_tag, vec3_rep rgb) : rgb_(rgb) {}
   /// Converting between dimensions is always a mistake; this only exists to say so in words.
   template <class E>
     requires(!std::is_same_v<E, D>)
@@ -31,11 +32,11 @@ class basic_spectrum {
     rules::convertible_dimension<E, D>();
   }
 
-  [[nodiscard]] constexpr glm::vec3 raw_value() const { return rgb_; }
-  [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, float>(rgb_.r); }
-  [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, float>(rgb_.g); }
-  [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, float>(rgb_.b); }
-  [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, float>(rgb_[channel]); }
+  [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
+  [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
+  [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, real>(rgb_.g); }
+  [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, real>(rgb_.b); }
+  [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
 
   constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
   template <class E>
@@ -55,19 +56,19 @@ class basic_spectrum {
     requires arithmetic<Q> || std::is_same_v<Q, basic_spectrum<dim::dimensionless>>
   constexpr basic_spectrum& operator*=(Q factor) {
     if constexpr (arithmetic<Q>)
-      rgb_ *= float(factor);
+      rgb_ *= real(factor);
     else
       rgb_ *= factor.raw_value();
     return *this;
   }
   template <arithmetic U>
   constexpr basic_spectrum& operator/=(U divisor) {
-    rgb_ /= float(divisor);
+    rgb_ /= real(divisor);
     return *this;
   }
 
  private:
-  glm::vec3 rgb_{0.0f};
+  vec3_rep rgb_{real(0)};
 };
 
 template <dimension_type D>
@@ -75,9 +76,9 @@ using spectrum = basic_spectrum<mode_dimension<D>>;
 
 template <class D>
 struct raw_access<basic_spectrum<D>> {
-  using raw_type = glm::vec3;
-  static constexpr glm::vec3 to(basic_spectrum<D> s) { return s.raw_value(); }
-  static constexpr basic_spectrum<D> from(glm::vec3 rgb) { return {detail::raw_tag{}, rgb}; }
+  using raw_type = vec3_rep;
+  static constexpr vec3_rep to(basic_spectrum<D> s) { return s.raw_value(); }
+  static constexpr basic_spectrum<D> from(vec3_rep rgb) { return {detail::raw_tag{}, rgb}; }
 };
 
 template <dimension_type D, class E>
@@ -111,10 +112,10 @@ constexpr basic_spectrum<dim::quotient<D, E>> operator/(basic_spectrum<D> a, bas
 
 namespace detail {
 template <class Q>
-using scalar_for = std::conditional_t<quantity_like<Q>, Q, float>;
+using scalar_for = std::conditional_t<quantity_like<Q>, Q, real>;
 template <class Q>
-constexpr float scalar_value(Q q) {
-  return float(raw(scalar_for<Q>(q)));
+constexpr real scalar_value(Q q) {
+  return real(raw(scalar_for<Q>(q)));
 }
 }  // namespace detail
 
@@ -142,33 +143,33 @@ constexpr basic_spectrum<dim::quotient<dimension_of<detail::scalar_for<Q>>, D>> 
 /// A spectrum times or over a unit, like a number: spectrum<dim::dimensionless>(0.5f) * units::watt.
 template <class D, class E>
 constexpr basic_spectrum<dim::product<D, E>> operator*(basic_spectrum<D> s, basic_unit<E> u) {
-  return {detail::raw_tag{}, s.raw_value() * float(u.factor)};
+  return {detail::raw_tag{}, s.raw_value() * real(u.factor)};
 }
 template <class D, class E>
 constexpr basic_spectrum<dim::quotient<D, E>> operator/(basic_spectrum<D> s, basic_unit<E> u) {
-  return {detail::raw_tag{}, s.raw_value() / float(u.factor)};
+  return {detail::raw_tag{}, s.raw_value() / real(u.factor)};
 }
 
 /// Rec. 709 luminance Y, in the spectrum's own dimension.
 template <class D>
 constexpr quantity<D> luminance(basic_spectrum<D> s) {
-  const glm::vec3 c = s.raw_value();
-  return make_quantity<D, float>(0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b);
+  const vec3_rep c = s.raw_value();
+  return make_quantity<D, real>(real(0.2126) * c.r + real(0.7152) * c.g + real(0.0722) * c.b);
 }
 template <class D>
 constexpr quantity<D> max_component(basic_spectrum<D> s) {
-  const glm::vec3 c = s.raw_value();
-  return make_quantity<D, float>(c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b));
+  const vec3_rep c = s.raw_value();
+  return make_quantity<D, real>(c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b));
 }
 template <class D>
 constexpr quantity<D> average(basic_spectrum<D> s) {
-  const glm::vec3 c = s.raw_value();
-  return make_quantity<D, float>((c.r + c.g + c.b) / 3.0f);
+  const vec3_rep c = s.raw_value();
+  return make_quantity<D, real>((c.r + c.g + c.b) / real(3));
 }
 template <class D>
 constexpr bool is_black(basic_spectrum<D> s) {
-  const glm::vec3 c = s.raw_value();
-  return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f;
+  const vec3_rep c = s.raw_value();
+  return c.r == real(0) && c.g == real(0) && c.b == real(0);
 }
 /// Per-channel exponential (Beer–Lambert transmittance): the exponent must be dimensionless.
 template <class D>
@@ -183,9 +184,9 @@ constexpr basic_spectrum<dim::root<D, 2>> sqrt(basic_spectrum<D> s) {
   return {detail::raw_tag{}, glm::sqrt(s.raw_value())};
 }
 template <class D, class E>
-constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<E> b, float t) {
+constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<E> b, real t) {
   rules::same_dimension<"lerp", D, E>();
-  return {detail::raw_tag{}, (1.0f - t) * a.raw_value() + t * b.raw_value()};
+  return {detail::raw_tag{}, (real(1) - t) * a.raw_value() + t * b.raw_value()};
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE

@@ -41,14 +41,14 @@ constexpr basic_unit<dim::pow<D, N>> pow(basic_unit<D> u) {
 template <class Q, class D>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator*(Q value, basic_unit<D> u) {
-  using Value = std::conditional_t<quantity_like<Q>, Q, float>;
+  using Value = std::conditional_t<quantity_like<Q>, Q, real>;
   using T = rep_of<Value>;
   return make_quantity<dim::product<dimension_of<Value>, D>, T>(T(raw(Value(value))) * T(u.factor));
 }
 template <class Q, class D>
   requires quantity_like<Q> || arithmetic<Q>
 constexpr auto operator/(Q value, basic_unit<D> u) {
-  using Value = std::conditional_t<quantity_like<Q>, Q, float>;
+  using Value = std::conditional_t<quantity_like<Q>, Q, real>;
   using T = rep_of<Value>;
   return make_quantity<dim::quotient<dimension_of<Value>, D>, T>(T(raw(Value(value))) / T(u.factor));
 }

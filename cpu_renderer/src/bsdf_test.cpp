@@ -1,0 +1,236 @@
+// The BSDFs against closed forms and against each other: Fresnel's values,
+// Snell's law, the microfacet distribution's normalisation, and for every
+// sampled material that its sampling density is the one pdf() reports and
+// that its sample weights average to the albedo a quadrature of eval() gives.
+#include "bsdf.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace safegi::render {
+namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
+
+DirectionShading spherical(double theta, double phi) {
+  return DirectionShading(static_cast<Real>(std::sin(theta) * std::cos(phi)),
+                          static_cast<Real>(std::sin(theta) * std::sin(phi)), static_cast<Real>(std::cos(theta)));
+}
+
+// ∫ g(ω) dω over the upper hemisphere by the midpoint rule in (θ, φ).
+template <class G>
+double hemisphere_integral(G g, int theta_steps = 1500, int phi_steps = 240) {
+  double sum = 0;
+  const double dtheta = kPiD / 2 / theta_steps, dphi = 2 * kPiD / phi_steps;
+  for (int i = 0; i < theta_steps; ++i) {
+    double theta = (i + 0.5) * dtheta;
+    for (int j = 0; j < phi_steps; ++j) sum += g(spherical(theta, (j + 0.5) * dphi)) * std::sin(theta) * dtheta * dphi;
+  }
+  return sum;
+}
+
+TEST(Fresnel, NormalIncidenceIsTheSquaredIndexContrast) {
+  for (double n : {1.33, 1.5, 2.42}) {
+    double expected = (n - 1) * (n - 1) / ((n + 1) * (n + 1));
+    EXPECT_NEAR(fresnel_dielectric(1, static_cast<Real>(n)), expected, 1e-6) << n;
+    EXPECT_NEAR(fresnel_dielectric(1, static_cast<Real>(1 / n)), expected, 1e-6) << "from inside, " << n;
+  }
+  EXPECT_NEAR(fresnel_dielectric(1, 1.5f), 0.04, 1e-7);
+}
+
+TEST(Fresnel, GrazingIncidenceReflectsEverything) {
+  for (Real eta : {1.33f, 1.5f, 2.42f}) {
+    EXPECT_NEAR(fresnel_dielectric(1e-4f, eta), 1, 1e-3) << eta;
+    EXPECT_EQ(fresnel_dielectric(0, eta), 1) << eta;
+    // Rising monotonically from Brewster's angle, where the parallel part vanishes, to 1.
+    Real previous = fresnel_dielectric(std::cos(std::atan(eta)), eta);
+    for (int i = 1; i <= 100; ++i) {
+      double theta = std::atan(eta) + (kPiD / 2 - std::atan(eta)) * i / 100;
+      Real r = fresnel_dielectric(static_cast<Real>(std::cos(theta)), eta);
+      EXPECT_GE(r, previous);
+      previous = r;
+    }
+  }
+}
+
+TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
+  const double critical = std::asin(1 / 1.5);
+  EXPECT_EQ(fresnel_dielectric(static_cast<Real>(std::cos(critical + 1e-3)), 1 / 1.5f), 1);
+  EXPECT_LT(fresnel_dielectric(static_cast<Real>(std::cos(critical - 1e-2)), 1 / 1.5f), 1);
+  EXPECT_FALSE(refract(spherical(critical + 1e-3, 0.3), 1 / 1.5f));
+}
+
+// Stokes: the interface reflects alike whichever way light crosses it, so
+// transmittance 1 - R agrees on both sides of a refraction.
+TEST(Fresnel, ReciprocalAcrossTheInterface) {
+  for (double theta = 0.05; theta < 1.5; theta += 0.1) {
+    DirectionShading wo = spherical(theta, 1.0);
+    std::optional<DirectionShading> wt = refract(wo, 1.5f);
+    ASSERT_TRUE(wt);
+    EXPECT_NEAR(fresnel_dielectric(wo.z(), 1.5f), fresnel_dielectric(-wt->z(), 1 / 1.5f), 1e-5) << theta;
+  }
+}
+
+TEST(Refract, SnellsLaw) {
+  for (double theta = 0; theta < 1.55; theta += 0.05) {
+    DirectionShading wo = spherical(theta, 0.7);
+    std::optional<DirectionShading> wt = refract(wo, 1.5f);
+    ASSERT_TRUE(wt);
+    double sin_t = std::sqrt(wt->x() * wt->x() + wt->y() * wt->y());
+    EXPECT_NEAR(std::sin(theta), 1.5 * sin_t, 1e-6) << theta;
+    EXPECT_LT(wt->z(), 0);
+    // In the plane of incidence, on the other side of the normal.
+    EXPECT_NEAR(wt->x() * wo.y() - wt->y() * wo.x(), 0, 1e-6);
+    EXPECT_LE(wt->x() * wo.x() + wt->y() * wo.y(), 1e-7);
+    EXPECT_NEAR(wt->x() * wt->x() + wt->y() * wt->y() + wt->z() * wt->z(), 1, 1e-6);
+  }
+}
+
+TEST(TrowbridgeReitz, NormalsIntegrateToOneOverProjectedSolidAngle) {
+  for (Real alpha : {0.05f, 0.3f, 1.0f}) {
+    TrowbridgeReitz distribution(alpha);
+    double total = hemisphere_integral(
+        [&](DirectionShading h) { return sg::raw(distribution.density(h)) * h.z(); }, alpha < 0.1f ? 6000 : 1500);
+    EXPECT_NEAR(total, 1.0, 2e-3) << alpha;
+  }
+}
+
+TEST(TrowbridgeReitz, SampledNormalsFollowTheirDensity) {
+  // The fraction of sampled normals within θ < θ0 against ∫ pdf over that cap.
+  TrowbridgeReitz distribution(0.3f);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<Real> u(0, 1);
+  const int n = 200000;
+  for (double theta0 : {0.1, 0.3, 0.6, 1.0}) {
+    int inside = 0;
+    for (int i = 0; i < n; ++i) inside += std::acos(distribution.sample_normal(u(rng), u(rng)).z()) < theta0;
+    double cap = hemisphere_integral(
+        [&](DirectionShading h) { return std::acos(h.z()) < theta0 ? sg::raw(distribution.normal_pdf(h)) : 0.0; });
+    EXPECT_NEAR(static_cast<double>(inside) / n, cap, 4e-3) << theta0;
+  }
+}
+
+Material material(Material::Type type) {
+  Material m;
+  m.type = type;
+  m.diffuse = Reflectance(0.5f, 0.4f, 0.3f);
+  m.specular = Reflectance(0.4f);
+  m.exponent = 40;
+  m.alpha = 0.2f;
+  return m;
+}
+
+struct SampledEstimate {
+  double mean_weight, pdf_mismatch;
+};
+// The average sample weight (an unbiased estimate of the albedo) and the
+// largest relative difference between a sample's pdf and pdf() at its direction.
+SampledEstimate estimate_albedo(const Bsdf& bsdf, DirectionShading wo, int n) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(0, 1);
+  double sum = 0, mismatch = 0;
+  for (int i = 0; i < n; ++i) {
+    std::optional<BsdfSample> s = bsdf.sample(wo, u(rng), u(rng), u(rng));
+    if (!s) continue;
+    sum += sg::raw(s->weight).g;
+    double reported = sg::raw(bsdf.pdf(wo, s->wi));
+    mismatch = std::max(mismatch, std::abs(sg::raw(s->pdf) - reported) / reported);
+    Reflectance expected = bsdf.eval(wo, s->wi) * sg::cos_theta(s->wi) / s->pdf;
+    EXPECT_NEAR(sg::raw(s->weight).g, sg::raw(expected).g, 1e-5 * (1 + sg::raw(expected).g));
+  }
+  return {sum / n, mismatch};
+}
+
+TEST(Bsdf, SamplingAgreesWithEvaluation) {
+  for (Material::Type type : {Material::Type::lambert, Material::Type::phong, Material::Type::plastic}) {
+    Material m = material(type);
+    Bsdf bsdf(m);
+    for (double theta : {0.0, 0.5, 1.0, 1.4}) {
+      DirectionShading wo = spherical(theta, 0.4);
+      double albedo = hemisphere_integral(
+          [&](DirectionShading wi) { return sg::raw(bsdf.eval(wo, wi)).g * wi.z(); }, 1500, 180);
+      double pdf_total = hemisphere_integral([&](DirectionShading wi) { return sg::raw(bsdf.pdf(wo, wi)); }, 1500, 180);
+      SampledEstimate sampled = estimate_albedo(bsdf, wo, 100000);
+      EXPECT_NEAR(sampled.mean_weight, albedo, 0.01 * albedo + 2e-3) << static_cast<int>(type) << " at " << theta;
+      EXPECT_LT(sampled.pdf_mismatch, 1e-4) << static_cast<int>(type) << " at " << theta;
+      EXPECT_LE(pdf_total, 1.0 + 5e-3) << static_cast<int>(type) << " at " << theta;
+      EXPECT_LE(albedo, 1.0) << static_cast<int>(type) << " at " << theta;
+      if (type == Material::Type::lambert) {
+        EXPECT_NEAR(albedo, 0.4, 1e-3);
+        EXPECT_NEAR(pdf_total, 1.0, 1e-3);
+      }
+    }
+  }
+}
+
+TEST(Bsdf, PlasticWithoutSpecularIsLambert) {
+  Material plastic = material(Material::Type::plastic);
+  plastic.specular = Reflectance{};
+  Material lambert = material(Material::Type::lambert);
+  Bsdf a(plastic), b(lambert);
+  for (double theta : {0.2, 0.9}) {
+    DirectionShading wo = spherical(theta, 0.1), wi = spherical(0.7, 2.0);
+    EXPECT_EQ(sg::raw(a.eval(wo, wi)), sg::raw(b.eval(wo, wi)));
+    EXPECT_EQ(sg::raw(a.pdf(wo, wi)), sg::raw(b.pdf(wo, wi)));
+  }
+}
+
+// The coating reflects (ρs-weighted) Fresnel's share: at normal incidence a
+// smooth-ish lobe's specular albedo is about ρs · F(0) = ρs · 0.04; pbrt-v3's
+// swapped indices give the same at normal incidence and total reflection
+// beyond 41.8°.
+TEST(Bsdf, PlasticCoatingFresnel) {
+  Material m = material(Material::Type::plastic);
+  m.diffuse = Reflectance{};
+  m.specular = Reflectance(1.0f);
+  m.alpha = 0.02f;
+  auto specular_albedo = [&](const Material& mat, double theta) {
+    Bsdf bsdf(mat);
+    DirectionShading wo = spherical(theta, 0.0);
+    return estimate_albedo(bsdf, wo, 100000).mean_weight;
+  };
+  EXPECT_NEAR(specular_albedo(m, 0.01), 0.04, 2e-3);
+  EXPECT_NEAR(specular_albedo(m, 0.6), fresnel_dielectric(std::cos(0.6f), 1.5f), 4e-3);
+  m.pbrt_v3_plastic_fresnel = true;
+  EXPECT_NEAR(specular_albedo(m, 0.01), 0.04, 2e-3);
+  EXPECT_GT(specular_albedo(m, 0.9), 0.9);  // beyond the critical angle of 1.5 -> 1: everything
+}
+
+TEST(Bsdf, GlassChoosesByFresnelAndCompressesRadiance) {
+  Material glass;
+  glass.type = Material::Type::glass;
+  glass.specular = Reflectance(1.0f);
+  glass.transmission = Reflectance(1.0f);
+  glass.ior = 1.5f;
+  for (bool from_inside : {false, true}) {
+    const Real eta = from_inside ? 1 / glass.ior : glass.ior;
+    Bsdf bsdf(glass, glass.diffuse, from_inside);
+    EXPECT_TRUE(bsdf.is_specular());
+    for (double theta : {0.0, 0.6, 1.2}) {
+      DirectionShading wo = spherical(theta, 0.3);
+      double reflected = fresnel_dielectric(wo.z(), eta);
+      int reflections = 0;
+      const int n = 20000;
+      for (int i = 0; i < n; ++i) {
+        Real u = (i + 0.5f) / n;
+        std::optional<BsdfSample> s = bsdf.sample(wo, u, 0.5f, 0.5f);
+        ASSERT_TRUE(s);
+        EXPECT_TRUE(s->specular);
+        if (s->wi.z() > 0) {
+          ++reflections;
+          EXPECT_FLOAT_EQ(sg::raw(s->weight).r, 1.0f);
+        } else {
+          EXPECT_FLOAT_EQ(sg::raw(s->weight).r, 1 / (eta * eta));
+          std::optional<BsdfSample> flux = bsdf.sample(wo, u, 0.5f, 0.5f, Transport::importance);
+          EXPECT_FLOAT_EQ(sg::raw(flux->weight).r, 1.0f);
+        }
+      }
+      EXPECT_NEAR(static_cast<double>(reflections) / n, reflected, 1.0 / n + 1e-6) << eta << " at " << theta;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace safegi::render

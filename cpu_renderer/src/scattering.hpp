@@ -1,0 +1,91 @@
+// The physics under the dielectric materials: Fresnel reflectance of a smooth
+// interface, refraction, and the Trowbridge–Reitz (GGX) microfacet
+// distribution with Smith's masking, in the local shading space (normal = +z).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "safegi/cpu_renderer/sampling.hpp"
+#include "safegi/cpu_renderer/scene.hpp"
+
+namespace safegi::render {
+
+// The fraction of light a smooth dielectric interface reflects (unpolarised),
+// for light arriving at cos θ_i > 0 from the side of the normal and relative
+// index eta = n_far / n_near (n_near: the side the light comes from). Beyond
+// the critical angle (eta < 1) it is total internal reflection: 1.
+inline Real fresnel_dielectric(Real cos_i, Real eta) {
+  cos_i = std::clamp(cos_i, Real(0), Real(1));
+  const Real sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1) return 1;
+  const Real cos_t = std::sqrt(std::max(Real(0), 1 - sin2_t));
+  const Real parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  const Real perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  return (parallel * parallel + perpendicular * perpendicular) / 2;
+}
+
+// Snell's law: the direction refracted from `wo` (pointing away from the
+// surface on the normal's side, wo.z > 0) into the far side, eta = n_far / n_near;
+// nothing under total internal reflection.
+inline std::optional<DirectionShading> refract(DirectionShading wo, Real eta) {
+  const Real cos_i = wo.z();
+  const Real sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1) return std::nullopt;
+  const Real cos_t = std::sqrt(std::max(Real(0), 1 - sin2_t));
+  return DirectionShading(-wo.x() / eta, -wo.y() / eta, -cos_t);
+}
+
+// The isotropic Trowbridge–Reitz (GGX) distribution of microfacet normals h
+// with roughness alpha. D(h) is a density per projected solid angle of
+// normals, ∫ D(h) cos θ_h dω_h = 1, hence its type.
+class TrowbridgeReitz {
+ public:
+  explicit TrowbridgeReitz(Real alpha) : alpha_(alpha) {}
+
+  quantity<dim::pdf_projected_solid_angle> density(DirectionShading h) const {
+    const Real cos2 = h.z() * h.z();
+    if (!(cos2 > 0)) return sg::zero;
+    const Real a2 = alpha_ * alpha_;
+    const Real denominator = cos2 * (a2 - 1) + 1;
+    return a2 / (kPi * denominator * denominator) / units::steradian / units::proj;
+  }
+
+  // Smith's masking–shadowing, height-correlated: 1 / (1 + Λ(ωo) + Λ(ωi)).
+  Real masking_shadowing(DirectionShading wo, DirectionShading wi) const { return 1 / (1 + lambda(wo) + lambda(wi)); }
+
+  // A normal drawn with density D(h) cos θ_h per solid angle of normals.
+  DirectionShading sample_normal(Real u1, Real u2) const {
+    const Real tan2 = alpha_ * alpha_ * u1 / std::max(Real(1) - u1, Real(1e-12));
+    const Real cos_theta = 1 / std::sqrt(1 + tan2);
+    const Real sin_theta = std::sqrt(std::max(Real(0), 1 - cos_theta * cos_theta));
+    const Real phi = 2 * kPi * u2;
+    return DirectionShading(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+  }
+  // The density of sample_normal, per solid angle of normals.
+  PdfSolidAngle normal_pdf(DirectionShading h) const { return density(h) * sg::cos_theta(h); }
+
+ private:
+  Real lambda(DirectionShading w) const {
+    const Real cos2 = w.z() * w.z();
+    if (!(cos2 > 0)) return 0;
+    const Real tan2 = std::max(Real(0), 1 - cos2) / cos2;
+    return (std::sqrt(1 + alpha_ * alpha_ * tan2) - 1) / 2;
+  }
+
+  Real alpha_;
+};
+
+// The half vector of a reflection, on the normal's side.
+inline DirectionShading half_vector(DirectionShading wo, DirectionShading wi) {
+  return sg::normalize(wo + wi);
+}
+
+// dω_h / dω_i for reflection about h: 1 / (4 |ωo·h|). Both measures are solid
+// angles (of microfacet normals and of directions), so the ratio is a number.
+inline Real reflection_jacobian(DirectionShading wo, DirectionShading h) {
+  return 1 / (4 * std::abs(sg::dot(wo, h)));
+}
+
+}  // namespace safegi::render

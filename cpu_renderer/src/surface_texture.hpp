@@ -1,0 +1,42 @@
+// Texture lookups at surface hits: a hit's (u, v) on its shape, and how large
+// the pixel it stands for is on the texture (for the MIP level).
+//
+// The footprint is a ray cone (Akenine-Möller et al. 2019, "Texture Level of
+// Detail Strategies for Real-Time Ray Tracing"): a camera ray spreads by the
+// angle one pixel subtends, so after a distance t (summed over the specular
+// bounces before the hit) it covers t · spread, stretched by 1/|cos θ| on a
+// tilted surface; a shape's (u, v) area per world area turns that into
+// texture units. After a diffuse bounce the footprint is taken as zero (the
+// finest level, bilinear), as pbrt-v3 does for rays without differentials.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "geometry.hpp"
+#include "safegi/cpu_renderer/rigid_motion.hpp"
+#include "safegi/cpu_renderer/scene.hpp"
+
+namespace safegi::render {
+
+class SurfaceTextures {
+ public:
+  explicit SurfaceTextures(const Scene& scene);
+
+  bool any() const { return !scene_.textures.empty(); }
+
+  // The hit's texture coordinates on its shape at `time`.
+  TexCoord uv(const SurfaceHit& hit, Time time) const;
+
+  // The diffuse reflectance of `material` at `hit`, its texture (if any)
+  // filtered over a footprint `width` across (zero: the finest level).
+  Reflectance diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const;
+
+ private:
+  const Scene& scene_;
+  // Per shape, sqrt((u, v) area / world area): texture units per length.
+  std::vector<quantity<dim::inverse<dim::length>>> uv_per_length_;
+  std::vector<std::optional<RigidMotion>> motions_;
+};
+
+}  // namespace safegi::render
