@@ -361,7 +361,7 @@ void Importer::finish_camera(SourceRange world_begin) {
   glm::dvec3 forward = glm::normalize(glm::dvec3(world_from_camera[2]));
   glm::dvec3 up = glm::normalize(glm::dvec3(world_from_camera[1]));
   camera.look_at = to_world_point(Matrix(1.0), glm::dvec3(world_from_camera[3]) + forward, at);
-  camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(glm::vec3(up)));
+  camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(sg::vec3_rep(up)));
 
   static const std::vector<Param> kNoParams;
   ParamSet params(camera_ ? camera_->params : kNoParams, "Camera \"perspective\"");
@@ -369,14 +369,14 @@ void Importer::finish_camera(SourceRange world_begin) {
   double half_fov = params.one_float("halffov", -1);
   if (half_fov > 0) fov = 2 * half_fov;
   if (!(fov > 0 && fov < 180)) fail(at, "the field of view must lie in (0, 180) degrees");
-  camera.fov = static_cast<float>(fov) * units::degree;
+  camera.fov = static_cast<Real>(fov) * units::degree;
   double metres_per_camera_unit = sx * unit;
   double lens_radius = params.one_float("lensradius", 0);
   if (lens_radius < 0) fail(at, "\"float lensradius\" must not be negative");
-  camera.lens_radius = sg::from_raw<Length>(static_cast<float>(lens_radius * metres_per_camera_unit));
+  camera.lens_radius = sg::from_raw<Length>(static_cast<Real>(lens_radius * metres_per_camera_unit));
   double focal_distance = params.one_float("focaldistance", 1e6);
   if (!(focal_distance > 0)) fail(at, "\"float focaldistance\" must be positive");
-  camera.focus_distance = sg::from_raw<Length>(static_cast<float>(focal_distance * metres_per_camera_unit));
+  camera.focus_distance = sg::from_raw<Length>(static_cast<Real>(focal_distance * metres_per_camera_unit));
   if (!std::isfinite(sg::raw(camera.focus_distance)) || !std::isfinite(sg::raw(camera.lens_radius)))
     fail(at, "the lens is out of float range at this --length-unit");
   // Shutter times matter only with motion, which is refused (ActiveTransform).
@@ -399,7 +399,7 @@ void Importer::finish_camera(SourceRange world_begin) {
 
 PointWorld Importer::to_world_point(const Matrix& m, glm::dvec3 p, SourceRange at) const {
   glm::dvec4 q = m * glm::dvec4(p, 1.0);
-  glm::vec3 f(q);
+  sg::vec3_rep f(q);
   if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
     fail(at, "a coordinate is out of float range at --length-unit of " + std::to_string(options_.metres_per_unit) + " m");
   return sg::from_raw<PointWorld>(f);

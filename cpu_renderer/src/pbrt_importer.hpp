@@ -61,8 +61,8 @@ struct GraphicsState {
 // once, or at each ObjectInstance of its object).
 struct ShapeSource {
   enum class Kind { mesh, sphere } kind = Kind::mesh;
-  std::vector<glm::vec3> positions;  // object space, pbrt units
-  std::vector<glm::vec3> normals;    // "N": only orient emitters
+  std::vector<glm::dvec3> positions;  // object space, pbrt units
+  std::vector<glm::dvec3> normals;    // "N": only orient emitters
   std::vector<uint32_t> indices;
   double radius = 0;                 // sphere
   Matrix object_to_pbrt_world{1.0};

@@ -127,8 +127,8 @@ Reflectance Importer::reflectance(ParamSet& params, const char* name, double fal
                                           " must lie in [0, 1] in every channel",
                        "above 1 a surface reflects more light than it receives");
   }
-  return sg::from_raw<Reflectance>(glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
-                                             static_cast<float>(rgb[2])));
+  return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(rgb[0]), static_cast<Real>(rgb[1]),
+                                             static_cast<Real>(rgb[2])));
 }
 
 Material Importer::convert_material(const std::string& type, ParamSet& params) {
@@ -243,8 +243,8 @@ void Importer::light_source(const Directive& d) {
     Rgb i = read("I"), s = read("scale");
     // Intensity in the unit system that keeps pbrt's pixel values (pbrt_import.hpp).
     double unit2 = options_.metres_per_unit * options_.metres_per_unit;
-    glm::vec3 rgb(static_cast<float>(i[0] * s[0] * unit2), static_cast<float>(i[1] * s[1] * unit2),
-                  static_cast<float>(i[2] * s[2] * unit2));
+    sg::vec3_rep rgb(static_cast<Real>(i[0] * s[0] * unit2), static_cast<Real>(i[1] * s[1] * unit2),
+                  static_cast<Real>(i[2] * s[2] * unit2));
     Intensity intensity = sg::from_raw<Intensity>(rgb);
     Triple from = params.one_point("from").value_or(Triple{0, 0, 0});
     glm::dvec3 from_v(from[0], from[1], from[2]);
@@ -263,15 +263,15 @@ void Importer::light_source(const Directive& d) {
       SpotLight spot;
       spot.position = to_world_point(m, from_v, d.range);
       glm::dvec3 direction = glm::normalize(glm::dmat3(m) * axis);
-      spot.direction = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(glm::vec3(direction)));
+      spot.direction = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(sg::vec3_rep(direction)));
       spot.intensity = intensity;
       double cone = params.one_float("coneangle", 30), delta = params.one_float("conedeltaangle", 5);
       if (!(cone > 0 && cone <= 180)) fail(d.range, "\"float coneangle\" must lie in (0, 180] degrees");
       if (!(delta >= 0 && delta <= cone))
         fail(d.range, "\"float conedeltaangle\" must lie in [0, coneangle]",
              "the falloff starts at coneangle - conedeltaangle");
-      spot.cone_angle = static_cast<float>(cone) * units::degree;
-      spot.cone_delta = static_cast<float>(delta) * units::degree;
+      spot.cone_angle = static_cast<Real>(cone) * units::degree;
+      spot.cone_delta = static_cast<Real>(delta) * units::degree;
       result_.scene.spot_lights.push_back(spot);
     }
   } else if (type == "infinite") {
@@ -415,8 +415,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   if (source.emission) {
     const Rgb& l = source.emission->radiance;
     if (l[0] > 0 || l[1] > 0 || l[2] > 0)
-      shape.emission = sg::from_raw<Radiance>(glm::vec3(static_cast<float>(l[0]), static_cast<float>(l[1]),
-                                                          static_cast<float>(l[2])));
+      shape.emission = sg::from_raw<Radiance>(sg::vec3_rep(static_cast<Real>(l[0]), static_cast<Real>(l[1]),
+                                                          static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
   if (source.kind == ShapeSource::Kind::sphere) {
@@ -426,8 +426,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
     shape.type = Shape::Type::sphere;
-    shape.center = sg::from_raw<PointObject>(glm::vec3(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at))));
-    float radius = static_cast<float>(source.radius * glm::length(glm::dmat3(world_from_object)[0]));
+    shape.center = sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at))));
+    Real radius = static_cast<Real>(source.radius * glm::length(glm::dmat3(world_from_object)[0]));
     if (!std::isfinite(radius) || !(radius > 0)) fail(source.at, "the sphere's radius is out of float range");
     shape.radius = sg::from_raw<Length>(radius);
     result_.scene.shapes.push_back(std::move(shape));
@@ -435,8 +435,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   }
   shape.type = Shape::Type::mesh;
   shape.positions.reserve(source.positions.size());
-  for (const glm::vec3& p : source.positions)
-    shape.positions.push_back(sg::from_raw<PointObject>(glm::vec3(sg::raw(to_world_point(world_from_object, p, source.at)))));
+  for (const glm::dvec3& p : source.positions)
+    shape.positions.push_back(sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, p, source.at)))));
   shape.indices = source.indices;
   if (shape.emission) {
     // pbrt-v3 emits on the side of its geometric normal: the winding's
