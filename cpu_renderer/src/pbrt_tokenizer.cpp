@@ -1,5 +1,7 @@
 #include "pbrt_tokenizer.hpp"
 
+#include "printable.hpp"
+
 namespace safegi::render::pbrt {
 
 namespace {
@@ -8,19 +10,7 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; 
 bool ends_word(char c) { return is_space(c) || c == '"' || c == '[' || c == ']'; }
 
 // Quoted text may hold any byte: keep messages printable and short.
-std::string printable(std::string_view text) {
-  std::string result;
-  for (unsigned char c : text) {
-    if (result.size() > 60) return result + "...";
-    if (c >= 0x20 && c < 0x7f) {
-      result += static_cast<char>(c);
-    } else {
-      static const char* const kHex = "0123456789ABCDEF";
-      result += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
-    }
-  }
-  return result;
-}
+std::string printable(std::string_view text) { return render::printable(text, 60); }
 
 }  // namespace
 

@@ -17,6 +17,7 @@
 #include <tiny_obj_loader.h>
 
 #include "ply.hpp"
+#include "printable.hpp"
 #include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/unit_expression.hpp"
 
@@ -891,20 +892,6 @@ std::string line_and_column(std::string_view text, size_t byte) {
     }
   }
   return std::to_string(line) + ":" + std::to_string(column);
-}
-
-// The parser quotes what it read, which may be any byte: keep messages printable.
-std::string printable(std::string_view text) {
-  std::string result;
-  for (unsigned char c : text) {
-    if (c >= 0x20 && c < 0x7f) {
-      result += static_cast<char>(c);
-    } else {
-      static const char* const kHex = "0123456789ABCDEF";
-      result += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
-    }
-  }
-  return result;
 }
 
 // nlohmann's messages start with "[json.exception.<kind>.<id>] ".
