@@ -33,8 +33,8 @@ def main() -> None:
     text = f"""## Float against double (typed library kernel)
 
 Measured by `bench/precision/run.py` ({'quick mode' if h.quick() else 'full mode'}; {load}).
-The renderer cannot switch precision: its spectra (`spectrum<D>`) are float-only and its pixel sums are
-already double. So the trade is measured on a kernel written with the typed library and instantiated for
+The whole renderer's trade (`safegi-render` against `safegi-render-double`) is the next section; this one
+isolates the accumulator on a kernel written with the typed library and instantiated for
 `quantity<D, float>` and `quantity<D, double>`: the irradiance at a point from a 0.5 m square lambertian
 emitter 0.2 m above it, by Monte Carlo over the emitter's area, against the closed form (relative error, RMS
 over {seeds} seeds; one thread; CPU seconds per estimate).

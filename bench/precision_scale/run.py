@@ -161,7 +161,7 @@ noise removed); CPU seconds of the render on one thread.
     text += h.table(header, rows(scaled, lambda s: f"× {label(s)}"))
     text += "\nThe 1 m box D metres from the origin:\n\n"
     text += h.table(header, rows(moved, lambda o: f"D = {label(o)} m"))
-    text += ((f"\n* Scaling costs float nothing: from 1e-4 to 1e5 m its error is within {worst_gap * 100:.1f} % of double's"
+    text += ((f"\n* Scaling costs float nothing: from 1e-4 to 1e5 m its error is within {worst_gap * 100:.2f} % of double's"
               f" at {SPPS[-1]} spp (both are the sampling noise), because every ray offset and error bound is relative"
               f" to the coordinates' magnitude (docs/stability.md).\n") if worst_gap < 0.05 else
              f"\n* Scaled, float's error departs from double's by up to {worst_gap * 100:.1f} % at {SPPS[-1]} spp.\n")
@@ -173,7 +173,9 @@ noise removed); CPU seconds of the render on one thread.
              f"* Away from the origin float runs out of digits: "
              + (f"from D = {label(breaks[0])} m its error exceeds 1.5× double's ({far['float'][-1][2]:.3f} against"
                 f" {far['double'][-1][2]:.3f} at D = {label(OFFSETS[-1])} m); there double is the choice." if breaks else
-                "nowhere in this range is its error above 1.5× double's.") + "\n")
+                "nowhere in this range is its error above 1.5× double's.") + "\n" +
+             "* The float program says so: a shape whose float spacing is above 1 % of its size gets a warning naming"
+             " safegi-render-double (docs/stability.md); the box warns from D = 1e5 m on.\n")
     h.write_section("precision_scale", text)
 
 

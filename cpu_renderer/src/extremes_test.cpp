@@ -11,6 +11,7 @@
 #include <numbers>
 #include <string>
 
+#include "safegi/cpu_renderer/precision.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -252,6 +253,40 @@ TEST(Extremes, CameraInsideAClosedSphereSeesOnlyDarkness) {
     "lights": [{"type": "point", "position": {"value": [0, 0, 3], "unit": "m"}, "power": "1000 W"}]})";
   Image image = render_text(text, 16);
   EXPECT_EQ(max_value(image), 0.0f);
+}
+
+// --- Far from the origin ----------------------------------------------------
+
+// Decision: a shape float cannot resolve where it stands is reported, never
+// rendered silently wrong (bench/precision_scale: the Cornell box 1e7 m from
+// the origin renders black in float). Spheres of radius 0.5 m at distance D
+// along x; a 2e5 m floor at the origin is resolved (its own size is large).
+Scene far_spheres(double distance) {
+  return parse_scene(R"({"camera": {"position": )" + metres(distance, 0, 5) + R"(, "look_at": )" +
+                         metres(distance, 0, 0) + R"(, "up": [0, 1, 0], "fov": "40 deg"},
+    "shapes": [{"type": "quad", "name": "floor", "origin": )" + metres(-1e5, -1, -1e5) + R"(, "edge_u": )" +
+                         metres(2e5, 0, 0) + R"(, "edge_v": )" + metres(0, 0, 2e5) + R"(},
+               {"type": "sphere", "name": "ball", "center": )" + metres(distance, 0, 0) + R"(, "radius": "0.5 m"},
+               {"type": "sphere", "center": )" + metres(-distance, 0, 0) + R"(, "radius": "0.5 m"}]})",
+                     "far.json", ".");
+}
+
+TEST(Extremes, ShapesFloatCannotResolveWhereTheyStandAreReported) {
+  EXPECT_FALSE(check_precision(far_spheres(1e3)));
+  EXPECT_FALSE(check_precision(far_spheres(1e4)));  // spacing 0.001 m: 0.06 % of the ball (1.73 m across)
+  std::optional<PrecisionReport> far = check_precision(far_spheres(1e7));
+  ASSERT_TRUE(far);
+  EXPECT_EQ(far->unresolved_shapes, 2);
+  EXPECT_EQ(far->worst_shape, 1);  // the first of the two equally bad balls
+  EXPECT_NEAR(far->worst_size_m, std::sqrt(3.0), 1e-6);
+  EXPECT_DOUBLE_EQ(far->worst_distance_m, 1e7 + 0.5);
+  if (sizeof(Real) == sizeof(float)) {
+    EXPECT_DOUBLE_EQ(far->worst_spacing_m, 1.0);  // floats in [2^23, 2^24) are 1 apart
+    EXPECT_EQ(describe(*far, far_spheres(1e7)),
+              "warning: 2 shapes are too small for float where they stand: shapes[1] \"ball\" is 1.73 m across and "
+              "1e+07 m from the origin, where float values are 1 m apart (57.7 % of its size); expect a wrong image\n"
+              "help: render it in double (safegi-render-double), or move the scene towards the origin\n");
+  }
 }
 
 // --- Zero-area lights ------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include "distributed.hpp"
 #include "safegi/cpu_renderer/image_io.hpp"
 #include "safegi/cpu_renderer/pbrt_import.hpp"
+#include "safegi/cpu_renderer/precision.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -95,6 +96,8 @@ int main(int argc, char** argv) {
       if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
       scene = load_scene(scene_file, SceneLoadOptions{read_image});
     }
+    if (std::optional<PrecisionReport> unresolved = check_precision(scene); unresolved && session.is_root())
+      std::cerr << describe(*unresolved, scene);
     RenderOptions options;
     options.settings = scene.settings;
     options.crop = scene_crop;

@@ -79,6 +79,34 @@ TEST(RenderPrograms, EstimatorOptionsAndStats) {
   fs::remove_all(directory);
 }
 
+// The float program warns where float cannot resolve the scene, and names
+// the double program, which renders it without a warning.
+TEST(RenderPrograms, FloatWarnsAboutAShapeItCannotResolveAndDoubleDoesNot) {
+  fs::path directory = fs::temp_directory_path() / ("safegi-render-far-" + std::to_string(::getpid()));
+  fs::create_directories(directory);
+  fs::path scene = directory / "far.json";
+  {
+    std::ofstream out(scene);
+    out << R"({"render": {"resolution": [4, 4], "spp": 1},
+      "camera": {"position": {"value": [1e7, 0, 5], "unit": "m"}, "look_at": {"value": [1e7, 0, 0], "unit": "m"},
+                 "up": [0, 1, 0], "fov": "40 deg"},
+      "shapes": [{"type": "sphere", "center": {"value": [1e7, 0, 0], "unit": "m"}, "radius": "0.5 m"}]})";
+  }
+  auto warnings = [&](const char* program) {
+    std::string command = std::string(program) + " " + scene.string() + " -q -o " + (directory / "out").string() +
+                          " 2> " + (directory / "err.txt").string();
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream err(directory / "err.txt");
+    return std::string((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(warnings(SAFEGI_RENDER_CHECKED),
+            "warning: a shape is too small for float where it stands: shapes[0] is 1.73 m across and 1e+07 m from "
+            "the origin, where float values are 1 m apart (57.7 % of its size); expect a wrong image\n"
+            "help: render it in double (safegi-render-double), or move the scene towards the origin\n");
+  EXPECT_EQ(warnings(SAFEGI_RENDER_DOUBLE), "");
+  fs::remove_all(directory);
+}
+
 TEST(RenderPrograms, BadSceneGivesAnErrorNotACrash) {
   fs::path directory = fs::temp_directory_path() / ("safegi-render-bad-" + std::to_string(::getpid()));
   fs::create_directories(directory);
