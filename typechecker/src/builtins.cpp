@@ -159,18 +159,25 @@ class SignatureReader {
     if (g == Geometry::direction || g == Geometry::normal) t.type.dim = DimSlot::known(Dimension{});
   }
 
+  // `w` is `head`, one family letter, then `tail` (genF, matDsq, ...): no
+  // temporaries, since every builtin's signature is read at start-up.
+  static bool family_word(std::string_view w, std::string_view head, char family, std::string_view tail = {}) {
+    return w.size() == head.size() + 1 + tail.size() && w.substr(0, head.size()) == head && w[head.size()] == family &&
+           w.substr(head.size() + 1) == tail;
+  }
+
   void numeric_word(const std::string& w, SigType& t) {
     static const struct {
-      const char* prefix;
+      char letter;
       Scalar scalar;
-    } kFamilies[] = {{"F", Scalar::float_}, {"D", Scalar::double_}, {"I", Scalar::int_}, {"U", Scalar::uint_}, {"B", Scalar::bool_}};
+    } kFamilies[] = {{'F', Scalar::float_}, {'D', Scalar::double_}, {'I', Scalar::int_}, {'U', Scalar::uint_}, {'B', Scalar::bool_}};
     for (const auto& f : kFamilies) {
-      if (w == std::string("gen") + f.prefix) {
+      if (family_word(w, "gen", f.letter)) {
         t.size = SizeClass::gen;
         t.type = Type::scalar_of(f.scalar);
         return;
       }
-      if (w == std::string("vec") + f.prefix) {
+      if (family_word(w, "vec", f.letter)) {
         t.size = SizeClass::vec;
         t.type = Type::vector_of(f.scalar, 2);
         return;
@@ -178,12 +185,12 @@ class SignatureReader {
     }
     // Matrix words: float (F) and double (D) matrices and their columns/rows.
     for (const auto& f : {kFamilies[0], kFamilies[1]}) {
-      const std::string x = f.prefix;
-      if (w == "mat" + x) return set(t, SizeClass::mat, Type::matrix_of(f.scalar, 2, 2));
-      if (w == "mat" + x + "T") return set(t, SizeClass::mat_transposed, Type::matrix_of(f.scalar, 2, 2));
-      if (w == "mat" + x + "sq") return set(t, SizeClass::mat_square, Type::matrix_of(f.scalar, 2, 2));
-      if (w == "col" + x) return set(t, SizeClass::column, Type::vector_of(f.scalar, 2));
-      if (w == "row" + x) return set(t, SizeClass::row, Type::vector_of(f.scalar, 2));
+      const char x = f.letter;
+      if (family_word(w, "mat", x)) return set(t, SizeClass::mat, Type::matrix_of(f.scalar, 2, 2));
+      if (family_word(w, "mat", x, "T")) return set(t, SizeClass::mat_transposed, Type::matrix_of(f.scalar, 2, 2));
+      if (family_word(w, "mat", x, "sq")) return set(t, SizeClass::mat_square, Type::matrix_of(f.scalar, 2, 2));
+      if (family_word(w, "col", x)) return set(t, SizeClass::column, Type::vector_of(f.scalar, 2));
+      if (family_word(w, "row", x)) return set(t, SizeClass::row, Type::vector_of(f.scalar, 2));
     }
     if (w == "void") return set(t, SizeClass::fixed, Type::void_type());
     if (w == "geo") {
@@ -216,8 +223,8 @@ class SignatureReader {
     if (w == "uint") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::uint_));
     if (w == "bool") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::bool_));
     for (const auto& v : kVectors) {
-      const std::string p = v.prefix;
-      if (w.size() == p.size() + 1 && w.compare(0, p.size(), p) == 0 && w.back() >= '2' && w.back() <= '4')
+      const std::string_view p = v.prefix;
+      if (w.size() == p.size() + 1 && std::string_view(w).substr(0, p.size()) == p && w.back() >= '2' && w.back() <= '4')
         return set(t, SizeClass::fixed, Type::vector_of(v.scalar, w.back() - '0'));
     }
     if (w.size() == 4 && w.compare(0, 3, "mat") == 0) return set(t, SizeClass::fixed, Type::matrix_of(Scalar::float_, w[3] - '0', w[3] - '0'));
