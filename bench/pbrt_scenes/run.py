@@ -179,6 +179,17 @@ def scene_rows(pbrt: str, entry: dict, scene: Path, tmp: Path) -> tuple[list[str
     return accuracy, speed, damage
 
 
+def bundled_scene(entry: dict) -> Path:
+    """A bundled scene and the images it reads, copied into the cache with their
+    layout under examples/scenes/ (the bench writes its variants next to the scene)."""
+    scenes = h.ROOT / "examples" / "scenes"
+    for name in [entry["bundled"], *entry.get("bundled_files", [])]:
+        target = CACHE / "bundled" / Path(name).relative_to("examples/scenes")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes((h.ROOT / name).read_bytes())
+    return CACHE / "bundled" / Path(entry["bundled"]).relative_to(scenes.relative_to(h.ROOT))
+
+
 def main() -> None:
     mode = "quick mode" if h.quick() else "full mode"
     pbrt = os.environ.get("SAFEGI_PBRT", "")
@@ -187,13 +198,18 @@ def main() -> None:
                         "pbrt-v3 binary (see `docs/cpu-renderer.md`).\n")
         return
     manifest = json.loads((HERE / "scenes.json").read_text())
+    only = os.environ.get("SAFEGI_PBRT_ONLY", "")  # a part of a scene's name: measure only those
     fetched = fetch.fetch_all(CACHE)
     load = h.machine_line()
     accuracy_rows, speed_rows, robustness_lines = [], [], []
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
         for entry in manifest["scenes"]:
-            if "generate" in entry:
+            if only and only not in entry["name"]:
+                continue
+            if "bundled" in entry:
+                scene = bundled_scene(entry)
+            elif "generate" in entry:
                 scene = CACHE / "generated" / f"{entry['generate']}.pbrt"
                 scene.parent.mkdir(parents=True, exist_ok=True)
                 source = h.ROOT / "examples" / "scenes" / entry["generate"] / f"{entry['generate']}.json"
@@ -212,9 +228,10 @@ def main() -> None:
     low, high = (4, 16) if h.quick() else (16, 64)
     sources = "\n".join(f"* {e['name']}: " + (f"`{e['repo']}` at {e['commit'][:10]}, `{e['scene']}`, "
                                               f"`--length-unit {e['length_unit']}`; uses {e['uses']}"
-                                              if "repo" in e else "written from `examples/scenes/cornell-box/` by "
+                                              if "repo" in e else f"`{e['bundled']}` (ours), `--length-unit "
+                                              f"{e['length_unit']}`; uses {e['uses']}" if "bundled" in e else "written from `examples/scenes/cornell-box/` by "
                                               "`bench/renderer/json_to_pbrt.py`, `--length-unit m`")
-                        for e in manifest["scenes"])
+                        for e in manifest["scenes"] if not only or only in e["name"])
     text = f"""## pbrt-v3 scenes, side by side
 
 Measured by `SAFEGI_PBRT=/path/to/pbrt bench/pbrt_scenes/run.py` ({mode}; {load}). The scenes

@@ -1,6 +1,6 @@
 // libFuzzer target over the pbrt-v3 importer: tokenizer, parser, importer and
-// the rendering of its diagnostics. Included files and PLY meshes come from a
-// fixed in-memory set (one each, valid), so the fuzzer never reads the disk.
+// the rendering of its diagnostics. Included files, PLY meshes and images come
+// from a fixed in-memory set (one each, valid), so the fuzzer never reads the disk.
 // Any crash, sanitizer report, hang, or an exception other than
 // PbrtImportError is a bug.
 #include <cstddef>
@@ -21,6 +21,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (path.filename() == "mesh.ply") return kPly;
     error = "no such file";
     return std::nullopt;
+  };
+  // Any image name with a format pbrt-v3 reads: a 2×2 image of values above 1
+  // (so that reflectance checks fire too), except "missing.*".
+  options.read_image = [](const std::filesystem::path& path) {
+    if (path.stem() == "missing") throw std::runtime_error("no such file");
+    safegi::render::Image image;
+    image.width = image.height = 2;
+    image.rgb = {0.1f, 0.2f, 0.3f, 0.5f, 0.5f, 0.5f, 0.9f, 0.8f, 0.7f, 2.0f, 0.0f, 1.0f};
+    return image;
   };
   try {
     safegi::render::PbrtScene scene =

@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
       if (length_unit.empty())
         throw PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
                               "with --length-unit (m, cm, mm, in, ...)\n");
-      PbrtScene imported = load_pbrt_scene(scene_file, {parse_length_unit(length_unit), {}});
+      PbrtScene imported = load_pbrt_scene(scene_file, {parse_length_unit(length_unit), {}, read_image});
       if (session.is_root()) std::cerr << imported.warnings;
       scene = std::move(imported.scene);
       scene_crop = imported.crop;

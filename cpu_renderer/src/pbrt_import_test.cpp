@@ -160,19 +160,19 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error(world("Shape \"disk\"")),
             "scene.pbrt:2:7: error: shape \"disk\" is not supported\nShape \"disk\"\n      ^~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\"\n");
-  EXPECT_EQ(import_error(world("Material \"plastic\"")),
-            "scene.pbrt:2:10: error: material \"plastic\" is not supported yet\nMaterial \"plastic\"\n"
-            "         ^~~~~~~~~\nhelp: supported: \"matte\", \"mirror\"\n");
+  EXPECT_EQ(import_error(world("Material \"metal\"")),
+            "scene.pbrt:2:10: error: material \"metal\" is not supported\nMaterial \"metal\"\n"
+            "         ^~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"\n");
   EXPECT_EQ(import_error(world("Material \"matte\" \"float sigma\" [20]")),
             "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
             "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");
-  EXPECT_EQ(import_error(world("LightSource \"infinite\"")),
-            "scene.pbrt:2:13: error: light \"infinite\" is not supported yet\nLightSource \"infinite\"\n"
-            "            ^~~~~~~~~~\nhelp: supported: \"point\", \"spot\"\n");
-  EXPECT_EQ(import_error(world("Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"")),
-            "scene.pbrt:2:24: error: texture \"imagemap\" is not supported yet\n"
-            "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"\n"
-            "                       ^~~~~~~~~~\nhelp: supported: \"constant\"\n");
+  EXPECT_EQ(import_error(world("LightSource \"distant\"")),
+            "scene.pbrt:2:13: error: light \"distant\" is not supported\nLightSource \"distant\"\n"
+            "            ^~~~~~~~~\nhelp: supported: \"point\", \"spot\", \"infinite\"\n");
+  EXPECT_EQ(import_error(world("Texture \"t\" \"spectrum\" \"checkerboard\"")),
+            "scene.pbrt:2:24: error: texture \"checkerboard\" is not supported\n"
+            "Texture \"t\" \"spectrum\" \"checkerboard\"\n"
+            "                       ^~~~~~~~~~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\"\n");
   EXPECT_EQ(import_error("Integrator \"bdpt\"\n" + world("")),
             "scene.pbrt:1:12: error: integrator \"bdpt\" is not supported\nIntegrator \"bdpt\"\n           ^~~~~~\n"
             "help: supported: \"path\", \"directlighting\" (and \"whitted\", rendered as direct lighting)\n");
@@ -379,8 +379,9 @@ TEST(PbrtImport, ObjectInstancesAreFlattened) {
                            in_memory());
   const Scene& s = scene.scene;
   ASSERT_EQ(s.shapes.size(), 2u);
-  EXPECT_EQ(raw(s.shapes[0].center), glm::vec3(-1, 10, 0));
-  EXPECT_EQ(raw(s.shapes[1].center), glm::vec3(-1, 20, 0));
+  // The centre lives in the sphere's object frame (a mirroring here: the world is mirrored across x).
+  EXPECT_EQ(raw(s.shapes[0].render_from_object(s.shapes[0].center)), glm::vec3(-1, 10, 0));
+  EXPECT_EQ(raw(s.shapes[1].render_from_object(s.shapes[1].center)), glm::vec3(-1, 20, 0));
   EXPECT_EQ(import_error(world("ObjectInstance \"cup\"")),
             "scene.pbrt:2:16: error: no object named \"cup\"\nObjectInstance \"cup\"\n               ^~~~~\n"
             "help: ObjectBegin ... ObjectEnd defines one\n");
@@ -412,6 +413,245 @@ TEST(PbrtImport, IncludeAndPlyMeshesResolveAgainstTheMainFile) {
 // ---------------------------------------------------------------------------
 // Robustness: any bytes give a scene or a PbrtImportError, never a crash.
 
+// ---------------------------------------------------------------------------
+// Plastic, glass, uber, image textures and the infinite light (pbrt-v3's
+// materials/*.cpp, textures/imagemap.cpp, lights/infinite.cpp)
+
+// pbrt-v3's RoughnessToAlpha, written out for the expected values.
+double pbrt_alpha(double roughness) {
+  double x = std::log(roughness);
+  return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
+}
+
+TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
+  PbrtScene scene = import(world(
+      "Material \"plastic\"\nShape \"sphere\"\n"                                                 // 0: pbrt's defaults
+      "Material \"plastic\" \"rgb Kd\" [0.5 0.4 0.3] \"rgb Ks\" [0.2 0.2 0.2] \"float roughness\" 0.3 "
+      "\"bool remaproughness\" \"false\"\nShape \"sphere\"\n"                                    // 1
+      "Material \"plastic\" \"float roughness\" 0 \"bool remaproughness\" \"false\"\nShape \"sphere\"\n"  // 2
+      "Material \"plastic\" \"rgb Ks\" [0 0 0]\nShape \"sphere\"\n"                              // 3: Lambert alone
+      "Material \"glass\"\nShape \"sphere\"\n"                                                   // 4
+      "Material \"glass\" \"rgb Kr\" [0.5 0.5 0.5] \"rgb Kt\" [0.9 0.8 0.7] \"float index\" 1.33\nShape \"sphere\"\n"
+      "Material \"uber\"\nShape \"sphere\"\n"                                                    // 6: plastic
+      "Material \"uber\" \"rgb Ks\" [0 0 0] \"rgb Kd\" [0.7 0.7 0.7]\nShape \"sphere\"\n"        // 7: matte
+      "Material \"uber\" \"rgb Kd\" [0 0 0] \"rgb Ks\" [0 0 0] \"rgb Kr\" [1 1 1] \"rgb Kt\" [1 1 1] "
+      "\"float eta\" 1.7\nShape \"sphere\"\n"                                                    // 8: glass
+      "Material \"glass\" \"float eta\" 2 \"float index\" 1.2\nShape \"sphere\""));             // 9: eta wins
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.shapes.size(), 10u);
+  auto material = [&](size_t shape) { return s.materials.at(s.shapes[shape].material); };
+  EXPECT_EQ(material(0).type, Material::Type::plastic);
+  EXPECT_EQ(sg::raw(material(0).diffuse), glm::vec3(0.25f));
+  EXPECT_EQ(sg::raw(material(0).specular), glm::vec3(0.25f));
+  EXPECT_NEAR(material(0).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_EQ(material(0).ior, 1.5f);
+  EXPECT_TRUE(material(0).pbrt_v3_plastic_fresnel);  // FresnelDielectric(1.5, 1), as pbrt-v3 has it
+  EXPECT_EQ(sg::raw(material(1).diffuse), glm::vec3(0.5f, 0.4f, 0.3f));
+  EXPECT_EQ(material(1).alpha, 0.3f);
+  EXPECT_EQ(material(2).alpha, 0.001f);  // TrowbridgeReitzDistribution's floor
+  EXPECT_EQ(material(3).type, Material::Type::lambert);
+  EXPECT_EQ(sg::raw(material(3).diffuse), glm::vec3(0.25f));
+  EXPECT_EQ(material(4).type, Material::Type::glass);
+  EXPECT_EQ(sg::raw(material(4).specular), glm::vec3(1));
+  EXPECT_EQ(sg::raw(material(4).transmission), glm::vec3(1));
+  EXPECT_EQ(material(4).ior, 1.5f);
+  EXPECT_EQ(sg::raw(material(5).specular), glm::vec3(0.5f));
+  EXPECT_EQ(sg::raw(material(5).transmission), glm::vec3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(material(5).ior, 1.33f);
+  EXPECT_EQ(material(6).type, Material::Type::plastic);
+  EXPECT_FALSE(material(6).pbrt_v3_plastic_fresnel);  // uber: FresnelDielectric(1, eta)
+  EXPECT_NEAR(material(6).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_EQ(material(7).type, Material::Type::lambert);
+  EXPECT_EQ(sg::raw(material(7).diffuse), glm::vec3(0.7f));
+  EXPECT_EQ(material(8).type, Material::Type::glass);
+  EXPECT_EQ(material(8).ior, 1.7f);
+  EXPECT_EQ(material(9).ior, 2.0f);
+  EXPECT_NE(scene.warnings.find("parameter \"float index\" of Material \"glass\" is not used"), std::string::npos);
+
+  EXPECT_EQ(import_error(world("Material \"glass\" \"float uroughness\" 0.1")),
+            "scene.pbrt:2:18: error: \"float uroughness\" of Material \"glass\" is not supported: rough glass (only 0: "
+            "smooth glass)\nMaterial \"glass\" \"float uroughness\" 0.1\n                 ^~~~~~~~~~~~~~~~~~\n");
+  EXPECT_EQ(import_error(world("Material \"plastic\" \"rgb Kd\" [0.8 0.8 0.8] \"rgb Ks\" [0.5 0.5 0.5]")),
+            "scene.pbrt:2:10: error: \"Kd\" + \"Ks\" of Material \"plastic\" exceed 1 in a channel (1.3)\n"
+            "Material \"plastic\" \"rgb Kd\" [0.8 0.8 0.8] \"rgb Ks\" [0.5 0.5 0.5]\n         ^~~~~~~~~\n"
+            "help: the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks\n");
+  EXPECT_EQ(import_error(world("Material \"uber\" \"rgb Kr\" [0.5 0.5 0.5]")),
+            "scene.pbrt:2:10: error: Material \"uber\" with both a diffuse or glossy part (Kd, Ks) and a specular one "
+            "(Kr, Kt) is not supported\nMaterial \"uber\" \"rgb Kr\" [0.5 0.5 0.5]\n         ^~~~~~\n"
+            "help: no material here sums them; uber renders as matte, plastic or glass when one of the two parts is "
+            "black\n");
+  EXPECT_EQ(import_error(world("Material \"uber\" \"rgb opacity\" [0.5 0.5 0.5]")),
+            "scene.pbrt:2:17: error: \"opacity\" other than 1 of Material \"uber\" is not supported\n"
+            "Material \"uber\" \"rgb opacity\" [0.5 0.5 0.5]\n                ^~~~~~~~~~~~~\n"
+            "help: pbrt-v3 passes the rest of the light straight through, a material the renderer does not have\n");
+  EXPECT_EQ(import_error(world("Material \"uber\" \"float uroughness\" 0.1 \"float vroughness\" 0.2")),
+            "scene.pbrt:2:10: error: an anisotropic Material \"uber\" (\"uroughness\" 0.1, \"vroughness\" 0.2) is not "
+            "supported\nMaterial \"uber\" \"float uroughness\" 0.1 \"float vroughness\" 0.2\n         ^~~~~~\n"
+            "help: the microfacet lobe here is isotropic: give one \"roughness\"\n");
+  EXPECT_EQ(import_error(world("Material \"glass\" \"float eta\" 0")),
+            "scene.pbrt:2:10: error: the index of refraction (\"eta\") of Material \"glass\" must lie in [1/16, 16], "
+            "found 0\nMaterial \"glass\" \"float eta\" 0\n         ^~~~~~~\n");
+}
+
+// Glass has an outside, as emitters have a side: pbrt-v3's is its geometric
+// normal's side, ours the winding's, so glass meshes are re-wound like emitters.
+TEST(PbrtImport, GlassKeepsPbrtsOutside) {
+  PbrtScene scene = import(world("Material \"glass\"\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]\n"
+                                 "Material \"matte\"\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]"),
+                           in_memory());
+  EXPECT_EQ(scene.scene.shapes.at(0).indices, (std::vector<uint32_t>{0, 2, 1}));  // mirrored world: re-wound
+  EXPECT_EQ(scene.scene.shapes.at(1).indices, (std::vector<uint32_t>{0, 1, 2}));  // two-sided: left as written
+  EXPECT_EQ(import_error(world("Material \"glass\"\nReverseOrientation\nShape \"sphere\"")),
+            "scene.pbrt:4:7: error: a glass sphere turned inside out (ReverseOrientation) is not supported\n"
+            "Shape \"sphere\"\n      ^~~~~~~~\nhelp: its outside would be the inside of the sphere\n");
+}
+
+// Images in memory, by file name: "grad.exr" is 1×2 linear (top row 0.2, bottom
+// row 0.8), "paint.png" 1×1 sRGB-encoded 0.5, "hot.exr" 1×1 of 4.
+PbrtImportOptions with_images() {
+  PbrtImportOptions options = in_memory();
+  options.read_image = [](const std::filesystem::path& path) {
+    Image image;
+    std::string name = path.filename().string();
+    if (name == "grad.exr") {
+      image.width = 1, image.height = 2, image.rgb = {0.2f, 0.2f, 0.2f, 0.8f, 0.8f, 0.8f};
+    } else if (name == "paint.png" || name == "paint.tga") {
+      image.width = 1, image.height = 1, image.rgb = {0.5f, 0.5f, 0.5f};
+    } else if (name == "hot.exr") {
+      image.width = 1, image.height = 1, image.rgb = {4, 4, 4};
+    } else {
+      throw std::runtime_error("no such file");
+    }
+    return image;
+  };
+  return options;
+}
+
+TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
+  PbrtScene scene = import(
+      world("Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float uscale\" 2 "
+            "\"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5\n"
+            "Texture \"p\" \"color\" \"imagemap\" \"string filename\" \"paint.png\" \"bool trilinear\" \"true\"\n"
+            "Texture \"lin\" \"color\" \"imagemap\" \"string filename\" \"paint.tga\" \"bool gamma\" \"false\"\n"
+            "Texture \"tinted\" \"color\" \"scale\" \"texture tex1\" \"p\" \"rgb tex2\" [0.5 1 1]\n"
+            "Material \"matte\" \"texture Kd\" \"g\"\n"
+            "Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n"
+            "Material \"plastic\" \"texture Kd\" \"tinted\" \"rgb Ks\" [0.1 0.1 0.1]\n"
+            "Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"float st\" [0 0 2 0 0 2]\n"
+            "Material \"matte\" \"texture Kd\" \"lin\"\nShape \"sphere\""),
+      with_images());
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.textures.size(), 3u);
+  const ImageTexture& g = s.textures[0];
+  EXPECT_EQ(g.colour_space, ColourSpace::linear);  // .exr: pbrt-v3's gamma is false
+  EXPECT_EQ(g.u_scale, 2.0f);
+  EXPECT_EQ(g.v_offset, 0.5f);
+  EXPECT_EQ(g.mipmap->wrap(), TextureWrap::clamp);
+  // Flipped as pbrt-v3 flips it (t = 0 is the bottom row), times "scale".
+  EXPECT_EQ(sg::raw(g.mipmap->texel(0, 0, 0)), glm::vec3(0.4f));
+  EXPECT_EQ(sg::raw(g.mipmap->texel(0, 0, 1)), glm::vec3(0.1f));
+  EXPECT_EQ(s.textures[1].colour_space, ColourSpace::srgb);  // .png: sRGB-decoded
+  EXPECT_NEAR(sg::raw(s.textures[1].mipmap->texel(0, 0, 0)).x, srgb_to_linear(0.5f), 1e-7);
+  EXPECT_EQ(s.textures[2].colour_space, ColourSpace::linear);  // "gamma" false overrides the .tga default
+  ASSERT_EQ(s.shapes.size(), 3u);
+  const Material& textured = s.materials.at(s.shapes[0].material);
+  EXPECT_EQ(textured.diffuse_texture, 0);
+  EXPECT_EQ(sg::raw(textured.diffuse), glm::vec3(1));
+  ASSERT_EQ(s.shapes[0].uvs.size(), 3u);
+  EXPECT_EQ(s.shapes[0].uvs[2].v, 1.0f);
+  const Material& tinted = s.materials.at(s.shapes[1].material);
+  EXPECT_EQ(tinted.type, Material::Type::plastic);
+  EXPECT_EQ(tinted.diffuse_texture, 1);
+  EXPECT_EQ(sg::raw(tinted.diffuse), glm::vec3(0.5f, 1, 1));  // "scale": the constant times the image
+  EXPECT_EQ(s.shapes[1].uvs[1].u, 2.0f);                      // "st" when there is no "uv"
+  EXPECT_EQ(s.materials.at(s.shapes[2].material).diffuse_texture, 2);
+  EXPECT_EQ(g.filter, TextureFilter::bilinear);  // pbrt-v3's footprint shrinks as 1/sqrt(spp): said once
+  EXPECT_EQ(scene.warnings,
+            "scene.pbrt:2:1: warning: image textures are looked up bilinearly here, not filtered as pbrt-v3 filters "
+            "them (EWA, or trilinear)\nTexture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float "
+            "uscale\" 2 \"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5\n^~~~~~~\n"
+            "help: pbrt-v3's filter width shrinks as 1/sqrt(spp), so both converge to the same image; at low spp "
+            "pbrt-v3's is a little blurrier where a texture is minified\n");
+
+  const std::string hot = "Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"hot.exr\" \"bool trilinear\" \"true\"\n";
+  EXPECT_EQ(import_error(world(hot + "Material \"matte\" \"texture Kd\" \"h\""), with_images()),
+            "scene.pbrt:3:18: error: \"Kd\" of Material \"matte\" must lie in [0, 1] in every channel\n"
+            "Material \"matte\" \"texture Kd\" \"h\"\n                 ^~~~~~~~~~~~\n"
+            "help: its image texture reaches 4 (lower the Texture's \"float scale\")\n");
+  EXPECT_EQ(import_error(world(hot + "Material \"plastic\" \"texture Ks\" \"h\""), with_images()),
+            "scene.pbrt:3:20: error: an image texture as \"Ks\" of Material \"plastic\" is not supported\n"
+            "Material \"plastic\" \"texture Ks\" \"h\"\n                   ^~~~~~~~~~~~\n"
+            "help: only diffuse reflectances (\"Kd\" of matte, plastic and uber) take image textures here\n");
+  EXPECT_EQ(import_error(world("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\""), with_images()),
+            "scene.pbrt:2:50: error: pbrt-v3 reads no image format \".jpg\"\n"
+            "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"\n"
+            "                                                 ^~~~~~~~~~~\n"
+            "help: it reads .exr, .png, .tga and .pfm files (and would render a grey texture or a missing map instead)\n");
+  EXPECT_EQ(import_error(world("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"gone.png\""), with_images()),
+            "scene.pbrt:2:50: error: cannot read image 'dir/gone.png': no such file\n"
+            "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"gone.png\"\n"
+            "                                                 ^~~~~~~~~~\n");
+  EXPECT_EQ(import_error(world("Texture \"t\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\""), with_images()),
+            "scene.pbrt:2:21: error: float image textures are not supported\n"
+            "Texture \"t\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"\n                    ^~~~~~~~~~\n"
+            "help: nothing here reads a textured number: roughness, bump maps and alpha masks take constants\n");
+  EXPECT_EQ(import_error(world("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" "
+                               "\"string mapping\" \"spherical\""),
+                         with_images()),
+            "scene.pbrt:2:61: error: texture mapping \"spherical\" is not supported\n"
+            "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" \"string mapping\" \"spherical\"\n"
+            "                                                            ^~~~~~~~~~~~~~~~\n"
+            "help: supported: \"uv\" (the shape's own (u, v))\n");
+  EXPECT_EQ(import_error(world("Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"float uv\" [0 0 1 0]")),
+            "scene.pbrt:2:63: error: \"float uv\" needs one (u, v) pair per vertex of \"point P\": 4 values for 3 "
+            "vertices\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"float uv\" [0 0 1 0]\n"
+            "                                                              ^~~~~~~~~\n");
+}
+
+// pbrt's sphere (u, v) are about its object-space z axis: the object frame's
+// rotation survives the import (in render_from_object), the centre is the same point.
+TEST(PbrtImport, SpheresKeepTheirObjectFrame) {
+  PbrtScene scene = import(world("Translate 1 2 3\nRotate 90 1 0 0\nShape \"sphere\" \"float radius\" 2"), in_memory({}, 0.5));
+  const Shape& sphere = scene.scene.shapes.at(0);
+  EXPECT_EQ(sg::raw(sphere.radius), 1.0f);
+  glm::vec3 centre = raw(sphere.render_from_object(sphere.center));
+  EXPECT_NEAR(centre.x, -0.5f, 1e-6);  // mirrored across x, in half metres
+  EXPECT_NEAR(centre.y, 1.0f, 1e-6);
+  EXPECT_NEAR(centre.z, 1.5f, 1e-6);
+  // Object +z (the sphere's pole, v = 1) is pbrt's world -y after Rotate 90 about x.
+  glm::vec3 pole = sg::raw(sphere.render_from_object(direction<Object>(0, 0, 1)));
+  EXPECT_NEAR(pole.y, -1, 1e-6);
+}
+
+TEST(PbrtImport, InfiniteLightAsPbrtV3DefinesIt) {
+  PbrtScene scene = import(world("AttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" \"rgb L\" [1 2 3] "
+                                 "\"rgb scale\" [2 2 2] \"string mapname\" \"grad.exr\" \"integer samples\" 4\nAttributeEnd"),
+                           with_images());
+  ASSERT_TRUE(scene.scene.environment.has_value());
+  const EnvironmentLight& light = *scene.scene.environment;
+  EXPECT_EQ(sg::raw(light.radiance), glm::vec3(2, 4, 6));
+  EXPECT_EQ(light.file, "grad.exr");
+  ASSERT_TRUE(light.map);
+  // Not flipped, not decoded: row 0 (θ = 0, the map's +z) is the file's top row.
+  EXPECT_EQ(sg::raw(light.map->texel(0, 0, 0)), glm::vec3(0.2f));
+  EXPECT_EQ(light.map->wrap(), TextureWrap::longitude_latitude);
+  // Light +z goes to pbrt's world +y (Rotate -90 about x); light +x to pbrt's
+  // +x, which the mirrored import world (default camera) has at -x.
+  glm::vec3 pole = sg::raw(light.render_from_light(direction<LightSpace>(0, 0, 1)));
+  glm::vec3 x = sg::raw(light.render_from_light(direction<LightSpace>(1, 0, 0)));
+  EXPECT_NEAR(pole.y, 1, 1e-6);
+  EXPECT_NEAR(x.x, -1, 1e-6);
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings;
+
+  EXPECT_EQ(sg::raw(import(world("LightSource \"infinite\"")).scene.environment->radiance), glm::vec3(1));
+  EXPECT_EQ(import_error(world("LightSource \"infinite\"\nLightSource \"infinite\" \"rgb L\" [1 1 1]")),
+            "scene.pbrt:3:13: error: a second infinite light\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+            "            ^~~~~~~~~~\nhelp: the renderer has one environment light per scene (the first is at line 2)\n");
+  EXPECT_EQ(import_error(world("Scale 1 2 1\nLightSource \"infinite\"")),
+            "scene.pbrt:3:1: error: an infinite light under a transform that scales unevenly or shears is not "
+            "supported\nLightSource \"infinite\"\n^~~~~~~~~~~\nhelp: it would distort the map; rotate it only\n");
+}
+
 const char* const kRichScene = R"pbrt(# a scene touching every supported directive
 LookAt 0 1 -5  0 1 0  0 1 0
 Camera "perspective" "float fov" [45] "float lensradius" 0.01 "float focaldistance" 5
@@ -425,6 +665,8 @@ LightSource "point" "color I" [5 5 5] "point from" [0 4 0]
 LightSource "spot" "rgb I" [9 9 9] "point from" [1 3 0] "point to" [0 0 0] "float coneangle" 30
 Texture "t" "color" "constant" "rgb value" [0.2 0.4 0.6]
 MakeNamedMaterial "white" "string type" ["matte"] "rgb Kd" [0.7 0.7 0.7]
+MakeNamedMaterial "coat" "string type" "plastic" "rgb Kd" [0.3 0.3 0.3] "float roughness" 0.2
+LightSource "infinite" "rgb L" [0.1 0.1 0.1] "integer samples" 2
 AttributeBegin
   AreaLightSource "area" "color L" [4 4 4] "bool twosided" "true" "integer nsamples" 4
   Translate 0 2.9 0
@@ -438,13 +680,13 @@ TransformBegin
   Shape "sphere" "float radius" 0.5
 TransformEnd
 ObjectBegin "box"
-  NamedMaterial "white"
+  NamedMaterial "coat"
   Shape "trianglemesh" "point P" [0 0 0 1 0 0 1 1 0] "float uv" [0 0 1 0 1 1]
 ObjectEnd
 ObjectInstance "box"
 CoordSysTransform "here"
 ReverseOrientation
-Material "mirror" "rgb Kr" [0.9 0.9 0.9]
+Material "glass" "float eta" 1.4
 Transform [1 0 0 0  0 1 0 0  0 0 1 0  0 -1 0 1]
 Shape "trianglemesh" "point P" [-5 0 -5 5 0 -5 5 0 5 -5 0 5] "integer indices" [0 1 2 0 2 3] "normal N" [0 1 0 0 1 0 0 1 0 0 1 0]
 WorldEnd
@@ -462,12 +704,13 @@ void expect_scene_or_error(const std::string& text, const char* what) {
 TEST(PbrtImport, TheRichSceneImports) {
   PbrtScene scene = import(kRichScene);
   const std::string expected =
-      "scene.pbrt:35:7: warning: vertex normals \"N\" only orient emitters here: surfaces are shaded with their "
+      "scene.pbrt:37:7: warning: vertex normals \"N\" only orient emitters here: surfaces are shaded with their "
       "geometric normals\n";
   EXPECT_EQ(scene.warnings.substr(0, expected.size()), expected);
   EXPECT_EQ(scene.scene.shapes.size(), 4u);
   EXPECT_EQ(scene.scene.point_lights.size(), 1u);
   EXPECT_EQ(scene.scene.spot_lights.size(), 1u);
+  EXPECT_TRUE(scene.scene.environment.has_value());
 }
 
 TEST(PbrtImport, EveryTruncationAndRandomDamageGivesASceneOrAnError) {

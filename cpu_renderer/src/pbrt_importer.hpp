@@ -32,10 +32,19 @@ struct MaterialInstance {
   mutable int index = -2;        // its Scene material without overrides; -2: not made yet
 };
 
+// A texture as the Scene can hold it: a value times, optionally, an image
+// (pbrt's "constant", "imagemap", and "scale" of the two).
 struct TextureEntry {
-  std::string texture_class;  // "constant", ...
-  Rgb value{};                // a constant texture's value
+  std::string texture_class;  // "constant", "imagemap", "scale"
+  Rgb value{1, 1, 1};         // a constant's value, or the factor on `image`
+  int image = -1;             // index into Scene::textures; -1: a constant
   SourceRange at;
+};
+
+// A reflectance parameter as a material holds it: value × texture (if any).
+struct TexturedReflectance {
+  Reflectance value{};
+  int texture = -1;
 };
 
 struct AreaLight {
@@ -64,6 +73,7 @@ struct ShapeSource {
   std::vector<glm::dvec3> positions;  // object space, pbrt units
   std::vector<glm::dvec3> normals;    // "N": only orient emitters
   std::vector<uint32_t> indices;
+  std::vector<TexCoord> uvs;         // "uv"/"st": empty or one per position
   double radius = 0;                 // sphere
   Matrix object_to_pbrt_world{1.0};
   bool reverse_orientation = false;
@@ -93,13 +103,27 @@ class Importer {
   void pixel_filter(const Directive& d);
   void finish_camera(SourceRange world_begin);
 
-  // World block (pbrt_world.cpp).
+  // Materials and textures (pbrt_materials.cpp).
   void material(const Directive& d, bool named);
   int material_index(const MaterialInstance& material, ParamSet& shape_params);
-  Material convert_material(const std::string& type, ParamSet& params);
+  Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
+  Material convert_uber(ParamSet& params, SourceRange at);
+  void make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
+                    bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at);
+  static void make_glass(Material& material, Reflectance kr, Reflectance kt, double ior);
+  std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
+  std::optional<double> float_param(ParamSet& params, const char* name);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
+  TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image);
+  double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
+  double index_of_refraction(ParamSet& params, SourceRange at);
   void texture(const Directive& d);
+  int image_texture(const std::string& name, ParamSet& params, SourceRange at);
+  Image read_image(const Param& filename);
+
+  // World block (pbrt_world.cpp).
   void light_source(const Directive& d);
+  void infinite_light(const Directive& d, ParamSet& params);
   void area_light_source(const Directive& d);
   void shape(const Directive& d);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
@@ -117,6 +141,8 @@ class Importer {
   PbrtScene result_;
   std::vector<Diagnostic> warnings_;
   int normals_warned_ = 0;
+  int filter_warned_ = 0;
+  std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;

@@ -1,5 +1,6 @@
-// The importer's world block: attributes, materials, textures, lights, shapes
-// and object instances (pbrt-v3's core/api.cpp, mapped onto our Scene).
+// The importer's world block: attributes, lights, shapes and object instances
+// (pbrt-v3's core/api.cpp, mapped onto our Scene); materials and textures are
+// in pbrt_materials.cpp.
 #include <array>
 #include <cmath>
 
@@ -10,32 +11,6 @@ namespace safegi::render::pbrt {
 
 namespace {
 
-template <class M>
-M& writable(std::shared_ptr<M>& shared) {
-  if (shared.use_count() > 1) shared = std::make_shared<M>(*shared);
-  return *shared;
-}
-
-// The parameters each supported material reads: a shape that carries one of
-// them gets its own copy of the material (pbrt-v3's GetMaterialForShape).
-struct MaterialParams {
-  std::string_view type;
-  std::array<std::string_view, 3> names;  // empty names pad the list
-};
-constexpr MaterialParams kMaterialParams[] = {
-    {"matte", {"Kd", "sigma", "bumpmap"}},
-    {"mirror", {"Kr", "bumpmap", ""}},
-};
-constexpr std::string_view kLaterMaterials[] = {"plastic", "glass", "uber"};
-
-bool reads_material_params(const std::string& type, const ParamSet& shape) {
-  for (const MaterialParams& m : kMaterialParams)
-    if (m.type == type)
-      for (std::string_view name : m.names)
-        if (!name.empty() && shape.contains(name)) return true;
-  return false;
-}
-
 double determinant3(const Matrix& m) { return glm::determinant(glm::dmat3(m)); }
 
 // Column lengths of the linear part equal and columns orthogonal: angles survive.
@@ -45,6 +20,18 @@ bool is_similarity(const Matrix& m, double tolerance) {
   return s > 0 && std::fabs(glm::length(l[1]) - s) <= tolerance * s && std::fabs(glm::length(l[2]) - s) <= tolerance * s &&
          std::fabs(glm::dot(l[0], l[1])) <= tolerance * s * s && std::fabs(glm::dot(l[0], l[2])) <= tolerance * s * s &&
          std::fabs(glm::dot(l[1], l[2])) <= tolerance * s * s;
+}
+
+// An orthogonal matrix (a rotation, perhaps mirroring) as a typed map; its inverse is its transpose.
+template <class Map>
+Map orthogonal_map(const glm::dmat3& r) {
+  return sg::from_raw<Map>(sg::matrix_pair{sg::mat4_rep(sg::mat3_rep(r)), sg::mat4_rep(sg::mat3_rep(glm::transpose(r)))});
+}
+
+TexCoord texture_coordinate(double u, double v, SourceRange at) {
+  TexCoord t{static_cast<Real>(u), static_cast<Real>(v)};
+  if (!std::isfinite(t.u) || !std::isfinite(t.v)) fail(at, "a texture coordinate is out of float range");
+  return t;
 }
 
 }  // namespace
@@ -108,125 +95,6 @@ void Importer::world_directive(const Directive& d) {
 }
 
 // ---------------------------------------------------------------------------
-// Materials and textures
-
-Reflectance Importer::reflectance(ParamSet& params, const char* name, double fallback) {
-  Rgb rgb{fallback, fallback, fallback};
-  if (std::optional<SpectrumValue> value = params.spectrum(name, true)) {
-    rgb = value->rgb;
-    if (!value->texture.empty()) {
-      auto found = state_.spectrum_textures->find(value->texture);
-      if (found == state_.spectrum_textures->end())
-        fail(value->param->values, "no spectrum texture named \"" + value->texture + "\"",
-             "Texture \"" + value->texture + "\" \"spectrum\" ... defines one");
-      rgb = found->second.value;
-    }
-    for (double c : rgb)
-      if (!(c >= 0 && c <= 1))
-        params.fail_at(*value->param, "\"" + std::string(name) + "\" of " + params.context() +
-                                          " must lie in [0, 1] in every channel",
-                       "above 1 a surface reflects more light than it receives");
-  }
-  return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(rgb[0]), static_cast<Real>(rgb[1]),
-                                             static_cast<Real>(rgb[2])));
-}
-
-Material Importer::convert_material(const std::string& type, ParamSet& params) {
-  Material material;
-  material.name = type;
-  if (type == "matte") {
-    params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
-    params.reject("bumpmap", "bump mapping");
-    material.type = Material::Type::lambert;
-    material.diffuse = reflectance(params, "Kd", 0.5);
-    if (sg::is_black(material.diffuse)) material.type = Material::Type::black;
-  } else if (type == "mirror") {
-    params.reject("bumpmap", "bump mapping");
-    material.type = Material::Type::mirror;
-    material.specular = reflectance(params, "Kr", 0.9);
-    if (sg::is_black(material.specular)) material.type = Material::Type::black;
-  }
-  return material;
-}
-
-void Importer::material(const Directive& d, bool named) {
-  auto instance = std::make_shared<MaterialInstance>();
-  instance->params = d.params;
-  ParamSet params(instance->params, named ? "MakeNamedMaterial \"" + d.strings[0] + "\"" : "Material \"" + d.strings[0] + "\"");
-  if (named) {
-    const Param* type = params.find("type", {ParamType::string});
-    if (!type || type->strings.size() != 1)
-      fail(d.string_ranges[0], "MakeNamedMaterial \"" + d.strings[0] + "\" needs \"string type\", e.g. \"matte\"");
-    instance->type = type->strings[0];
-    instance->at = type->values;
-  } else {
-    instance->type = d.strings[0];
-    instance->at = d.string_ranges[0];
-  }
-  const std::string& type = instance->type;
-  bool supported = false;
-  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
-  if (!supported) {
-    for (std::string_view later : kLaterMaterials)
-      if (type == later) fail(instance->at, "material \"" + type + "\" is not supported yet", "supported: \"matte\", \"mirror\"");
-    if (type.empty() || type == "none")
-      fail(instance->at, "an invisible interface material (\"" + type + "\") is not supported",
-           "it only bounds participating media, which are not supported either");
-    fail(instance->at, "material \"" + type + "\" is not supported", "supported: \"matte\", \"mirror\"");
-  }
-  Material converted = convert_material(type, params);
-  report_unused(params);
-  if (converted.type == Material::Type::black) {
-    instance->index = -1;  // absorbs everything, as pbrt-v3's black matte does
-  } else {
-    instance->index = static_cast<int>(result_.scene.materials.size());
-    result_.scene.materials.push_back(converted);
-  }
-  if (named)
-    writable(state_.named_materials)[d.strings[0]] = instance;
-  else
-    state_.material = instance;
-}
-
-int Importer::material_index(const MaterialInstance& material, ParamSet& shape_params) {
-  if (material.index != -2 && !reads_material_params(material.type, shape_params)) return material.index;
-  // The shape's own values win over the material's.
-  ParamSet material_params(material.params, "the shape's material \"" + material.type + "\"");
-  shape_params.set_fallback(&material_params);
-  Material converted = convert_material(material.type, shape_params);
-  shape_params.set_fallback(nullptr);
-  if (converted.type == Material::Type::black) return -1;
-  result_.scene.materials.push_back(converted);
-  return static_cast<int>(result_.scene.materials.size()) - 1;
-}
-
-void Importer::texture(const Directive& d) {
-  const std::string &name = d.strings[0], &type = d.strings[1], &texture_class = d.strings[2];
-  bool spectrum = type == "spectrum" || type == "color";
-  if (!spectrum && type != "float")
-    fail(d.string_ranges[1], "texture type \"" + type + "\" is unknown", "pbrt-v3 has \"spectrum\" (or \"color\") and \"float\"");
-  ParamSet params(d.params, "Texture \"" + name + "\"");
-  TextureEntry entry;
-  entry.texture_class = texture_class;
-  entry.at = d.string_ranges[2];
-  if (texture_class == "constant") {
-    if (spectrum) {
-      std::optional<SpectrumValue> value = params.spectrum("value", false);
-      entry.value = value ? value->rgb : Rgb{1, 1, 1};
-    } else {
-      double value = params.one_float("value", 1);
-      entry.value = {value, value, value};
-    }
-  } else if (texture_class == "imagemap" || texture_class == "checkerboard") {
-    fail(entry.at, "texture \"" + texture_class + "\" is not supported yet", "supported: \"constant\"");
-  } else {
-    fail(entry.at, "texture \"" + texture_class + "\" is not supported", "supported: \"constant\"");
-  }
-  report_unused(params);
-  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
-}
-
-// ---------------------------------------------------------------------------
 // Lights
 
 void Importer::light_source(const Directive& d) {
@@ -274,12 +142,51 @@ void Importer::light_source(const Directive& d) {
       spot.cone_delta = static_cast<Real>(delta) * units::degree;
       result_.scene.spot_lights.push_back(spot);
     }
-  } else if (type == "infinite") {
-    fail(d.string_ranges[0], "light \"infinite\" is not supported yet", "supported: \"point\", \"spot\"");
+  } else if (type == "infinite" || type == "exinfinite") {
+    infinite_light(d, params);
   } else {
-    fail(d.string_ranges[0], "light \"" + type + "\" is not supported", "supported: \"point\", \"spot\"");
+    fail(d.string_ranges[0], "light \"" + type + "\" is not supported", "supported: \"point\", \"spot\", \"infinite\"");
   }
   report_unused(params);
+}
+
+// pbrt-v3's InfiniteAreaLight: L × scale, times the lat-long map's texels
+// (read as they are: pbrt-v3 decodes no gamma here), in light space, which its
+// transform at the directive maps to the world. Our EnvironmentLight has the
+// same layout (u = φ/2π, v = θ/π, row 0 at +z); the world's mirroring (when
+// the camera needs it) goes into render_from_light, an orthogonal map.
+void Importer::infinite_light(const Directive& d, ParamSet& params) {
+  if (environment_at_)
+    fail(d.string_ranges[0], "a second infinite light",
+         "the renderer has one environment light per scene (the first is at line " +
+             std::to_string(environment_at_->begin.line) + ")");
+  Rgb radiance{1, 1, 1};
+  for (const char* name : {"L", "scale"})
+    if (std::optional<SpectrumValue> value = params.spectrum(name, false))
+      for (int c = 0; c < 3; ++c) {
+        if (!(value->rgb[c] >= 0)) params.fail_at(*value->param, "light output must not be negative");
+        radiance[c] *= value->rgb[c];
+      }
+  EnvironmentLight light;
+  light.radiance = sg::from_raw<Radiance>(sg::vec3_rep(static_cast<Real>(radiance[0]), static_cast<Real>(radiance[1]),
+                                                      static_cast<Real>(radiance[2])));
+  sg::vec3_rep rgb = sg::raw(light.radiance);
+  if (!std::isfinite(rgb.x) || !std::isfinite(rgb.y) || !std::isfinite(rgb.z))
+    fail(d.range, "the infinite light's radiance is out of float range");
+  // Shadow rays per light for pbrt's direct-lighting integrator: noise only.
+  params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
+  if (const Param* map = params.find("mapname", {ParamType::string})) {
+    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+    light.file = map->strings[0];
+    light.map = std::make_shared<MipMap>(read_image(*map), TextureWrap::longitude_latitude);
+  }
+  Matrix m = world_from_pbrt_world_ * state_.ctm;
+  if (!is_similarity(m, 1e-6))
+    fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
+         "it would distort the map; rotate it only");
+  light.render_from_light = orthogonal_map<LightToWorld>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  result_.scene.environment = std::move(light);
+  environment_at_ = d.string_ranges[0];
 }
 
 void Importer::area_light_source(const Directive& d) {
@@ -350,9 +257,17 @@ void Importer::shape(const Directive& d) {
       for (size_t i = 0; i < n->numbers.size(); i += 3)
         source.normals.emplace_back(n->numbers[i], n->numbers[i + 1], n->numbers[i + 2]);
     }
-    // Texture coordinates, tangents and face ids: nothing here reads them.
-    params.find("uv", {ParamType::floating, ParamType::point2});
-    params.find("st", {ParamType::floating, ParamType::point2});
+    // Texture coordinates: "uv", or without it "st" (pbrt-v3's order).
+    const Param* uv = params.find("uv", {ParamType::floating, ParamType::point2});
+    if (!uv) uv = params.find("st", {ParamType::floating, ParamType::point2});
+    if (uv) {
+      if (uv->numbers.size() != 2 * source.positions.size())
+        fail(uv->values, "\"" + uv->type_name + " " + uv->name + "\" needs one (u, v) pair per vertex of \"point P\": " +
+                             std::to_string(uv->numbers.size()) + " values for " + std::to_string(source.positions.size()) +
+                             " vertices");
+      for (size_t i = 0; i < uv->numbers.size(); i += 2) source.uvs.push_back(texture_coordinate(uv->numbers[i], uv->numbers[i + 1], uv->values));
+    }
+    // Tangents and face ids: nothing here reads them.
     params.find("S", {ParamType::vector3});
     params.find("faceIndices", {ParamType::integer});
     reject_alpha();
@@ -403,6 +318,7 @@ void Importer::mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& 
   if (mesh.indices.empty()) fail(filename->values, "mesh '" + path.string() + "' has no triangles");
   for (const auto& p : mesh.positions) source.positions.emplace_back(p[0], p[1], p[2]);
   for (const auto& n : mesh.normals) source.normals.emplace_back(n[0], n[1], n[2]);
+  for (const auto& uv : mesh.uvs) source.uvs.push_back(texture_coordinate(uv[0], uv[1], filename->values));
   source.indices = std::move(mesh.indices);
 }
 
@@ -419,15 +335,25 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
+  const bool glass = shape.material >= 0 && result_.scene.materials[shape.material].type == Material::Type::glass;
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
       fail(source.at, "a sphere under a transform that scales unevenly (an ellipsoid) is not supported");
     if (shape.emission && source.reverse_orientation && !shape.two_sided_emission)
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
+    if (glass && source.reverse_orientation)
+      fail(source.at, "a glass sphere turned inside out (ReverseOrientation) is not supported",
+           "its outside would be the inside of the sphere");
+    // Centre and radius in world metres; the object frame's rotation (and
+    // mirroring) kept in render_from_object, where the sphere's (u, v) are pbrt's.
     shape.type = Shape::Type::sphere;
-    shape.center = sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at))));
-    Real radius = static_cast<Real>(source.radius * glm::length(glm::dmat3(world_from_object)[0]));
+    const double scale = glm::length(glm::dmat3(world_from_object)[0]);
+    const glm::dmat3 rotation = glm::dmat3(world_from_object) / scale;
+    shape.render_from_object = orthogonal_map<ObjectToWorld>(rotation);
+    glm::dvec3 centre = glm::transpose(rotation) * glm::dvec3(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at)));
+    shape.center = sg::from_raw<PointObject>(sg::vec3_rep(centre));
+    Real radius = static_cast<Real>(source.radius * scale);
     if (!std::isfinite(radius) || !(radius > 0)) fail(source.at, "the sphere's radius is out of float range");
     shape.radius = sg::from_raw<Length>(radius);
     result_.scene.shapes.push_back(std::move(shape));
@@ -438,8 +364,10 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   for (const glm::dvec3& p : source.positions)
     shape.positions.push_back(sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, p, source.at)))));
   shape.indices = source.indices;
-  if (shape.emission) {
-    // pbrt-v3 emits on the side of its geometric normal: the winding's
+  shape.uvs = source.uvs;
+  if (shape.emission || glass) {
+    // pbrt-v3 emits on the side of its geometric normal, and has glass's
+    // outside there (our glass: on the winding's side): the winding's
     // (right-handed in its world), flipped by ReverseOrientation and by a
     // mirroring object transform; with vertex normals, the side they point to.
     bool mirrored_object = determinant3(source.object_to_pbrt_world) < 0;

@@ -403,28 +403,11 @@ Image Loader::read_image_file(const Json& file_value, const JsonPath& path, std:
   file = string(file_value, path);
   std::filesystem::path full = base_directory_ / file;
   if (!std::filesystem::is_regular_file(full)) fail(path, "cannot read image '" + file + "': no such file");
-  Image image;
   try {
-    if (options_.read_image) {
-      image = options_.read_image(full);
-    } else {
-      std::string extension = full.extension().string();
-      std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-      if (extension != ".pfm")
-        fail(path, "cannot read image '" + file + "': this program reads PFM images only (no OpenImageIO)");
-      image = read_pfm(full);
-    }
-  } catch (const SceneError&) {
-    throw;
+    return read_checked_image(full, options_.read_image);
   } catch (const std::exception& error) {
     fail(path, "cannot read image '" + file + "': " + error.what());
   }
-  if (image.width < 1 || image.height < 1 ||
-      image.rgb.size() != 3 * static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
-    fail(path, "cannot read image '" + file + "': it has no pixels");
-  for (float v : image.rgb)
-    if (!std::isfinite(v) || v < 0) fail(path, "image '" + file + "' has a negative or non-finite value");
-  return image;
 }
 
 ImageTexture Loader::load_texture(const std::string& name, const Json& value, const JsonPath& path) {
@@ -901,6 +884,24 @@ std::string without_exception_id(const std::string& message) {
 }
 
 }  // namespace
+
+Image read_checked_image(const std::filesystem::path& file, const ImageFileReader& reader) {
+  Image image;
+  if (reader) {
+    image = reader(file);
+  } else {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".pfm") throw std::runtime_error("this program reads PFM images only (no OpenImageIO)");
+    image = read_pfm(file);
+  }
+  if (image.width < 1 || image.height < 1 ||
+      image.rgb.size() != 3 * static_cast<size_t>(image.width) * static_cast<size_t>(image.height))
+    throw std::runtime_error("it has no pixels");
+  for (float v : image.rgb)
+    if (!std::isfinite(v) || v < 0) throw std::runtime_error("it has a negative or non-finite value");
+  return image;
+}
 
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
                   const std::filesystem::path& base_directory, const SceneLoadOptions& options) {

@@ -32,6 +32,9 @@ using PbrtFileReader = std::function<std::optional<std::string>(const std::files
 struct PbrtImportOptions {
   double metres_per_unit = 0;  // what one pbrt length unit is, in metres (required, > 0)
   PbrtFileReader read_file;    // empty: read from disk
+  // Image textures and environment maps (as SceneLoadOptions::read_image).
+  // Empty: PFM files only (the core links no OpenImageIO); the programs pass read_image (image_io.hpp).
+  ImageFileReader read_image;
 };
 
 struct PbrtScene {

@@ -32,6 +32,12 @@ struct SceneLoadOptions {
 
 Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options = {});
 
+// Reads an image file with `reader` (empty: PFM files only) and checks that it
+// has pixels, every value finite and non-negative; throws std::runtime_error
+// saying why not, without the file's name (the caller's message names it).
+// Both scene readers (JSON and pbrt) read their textures and maps through it.
+Image read_checked_image(const std::filesystem::path& file, const ImageFileReader& reader);
+
 // `display_name` starts error messages; relative mesh and image paths resolve against `base_directory`.
 Scene parse_scene(std::string_view json_text, std::string_view display_name,
                   const std::filesystem::path& base_directory, const SceneLoadOptions& options = {});

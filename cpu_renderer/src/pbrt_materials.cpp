@@ -1,0 +1,429 @@
+// The importer's materials and textures: pbrt-v3's matte, mirror, plastic,
+// glass and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
+// its constant, imagemap and scale textures (src/textures/*.cpp), mapped onto
+// the Scene's materials and image textures. What the Scene cannot represent
+// is an error at the parameter or name that asks for it.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+
+#include "pbrt_importer.hpp"
+
+namespace safegi::render::pbrt {
+
+namespace {
+
+template <class M>
+M& writable(std::shared_ptr<M>& shared) {
+  if (shared.use_count() > 1) shared = std::make_shared<M>(*shared);
+  return *shared;
+}
+
+// The parameters each supported material reads: a shape that carries one of
+// them gets its own copy of the material (pbrt-v3's GetMaterialForShape).
+struct MaterialParams {
+  std::string_view type;
+  std::array<std::string_view, 12> names;  // empty names pad the list
+};
+constexpr MaterialParams kMaterialParams[] = {
+    {"matte", {"Kd", "sigma", "bumpmap"}},
+    {"mirror", {"Kr", "bumpmap"}},
+    {"plastic", {"Kd", "Ks", "roughness", "remaproughness", "bumpmap"}},
+    {"glass", {"Kr", "Kt", "eta", "index", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
+    {"uber",
+     {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
+      "bumpmap"}},
+};
+constexpr const char* kSupportedMaterials = "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"";
+constexpr const char* kSupportedTextures = "supported: \"constant\", \"imagemap\", \"scale\"";
+
+bool reads_material_params(const std::string& type, const ParamSet& shape) {
+  for (const MaterialParams& m : kMaterialParams)
+    if (m.type == type)
+      for (std::string_view name : m.names)
+        if (!name.empty() && shape.contains(name)) return true;
+  return false;
+}
+
+bool black(const TexturedReflectance& r) { return sg::is_black(r.value); }
+
+std::string lower_extension(const std::string& file) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+// pbrt-v3's TrowbridgeReitzDistribution::RoughnessToAlpha.
+double roughness_to_alpha(double roughness) {
+  double x = std::log(std::max(roughness, 1e-3));
+  return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
+}
+
+std::string format_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Parameter values: numbers, colours and the textures they name
+
+std::optional<TextureEntry> Importer::spectrum_or_texture(ParamSet& params, const char* name, const Param*& param) {
+  std::optional<SpectrumValue> value = params.spectrum(name, true);
+  if (!value) return std::nullopt;
+  param = value->param;
+  if (value->texture.empty()) {
+    TextureEntry entry;
+    entry.value = value->rgb;
+    return entry;
+  }
+  auto found = state_.spectrum_textures->find(value->texture);
+  if (found == state_.spectrum_textures->end())
+    fail(value->param->values, "no spectrum texture named \"" + value->texture + "\"",
+         "Texture \"" + value->texture + "\" \"spectrum\" ... defines one");
+  return found->second;
+}
+
+std::optional<double> Importer::float_param(ParamSet& params, const char* name) {
+  const Param* param = params.find(name, {ParamType::floating, ParamType::texture});
+  if (!param) return std::nullopt;
+  size_t count = param->is_string ? param->strings.size() : param->numbers.size();
+  if (count != 1)
+    fail(param->values, "\"" + param->type_name + " " + param->name + "\" of " + params.context() + " takes 1 value, found " +
+                            std::to_string(count));
+  if (param->type == ParamType::floating) return param->numbers[0];
+  auto found = state_.float_textures->find(param->strings[0]);
+  if (found == state_.float_textures->end())
+    fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
+         "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
+  return found->second.value[0];  // float textures are constants (image ones are refused at their definition)
+}
+
+TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image) {
+  TextureEntry entry;
+  entry.value = {fallback, fallback, fallback};
+  const Param* param = nullptr;
+  if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
+  Rgb largest = entry.value;
+  if (entry.image >= 0) {
+    if (!allow_image)
+      params.fail_at(*param, "an image texture as \"" + std::string(name) + "\" of " + params.context() +
+                                 " is not supported",
+                     "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take image textures here");
+    sg::vec3_rep texel = sg::raw(result_.scene.textures[entry.image].mipmap->maximum());
+    for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
+  }
+  for (int c = 0; c < 3; ++c)
+    if (!(entry.value[c] >= 0 && largest[c] <= 1))
+      params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " must lie in [0, 1] in every channel",
+                     entry.image >= 0 ? "its image texture reaches " + format_number(largest[c]) +
+                                            " (lower the Texture's \"float scale\")"
+                                      : "above 1 a surface reflects more light than it receives");
+  TexturedReflectance result;
+  result.value = sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(entry.value[0]), static_cast<Real>(entry.value[1]),
+                                                        static_cast<Real>(entry.value[2])));
+  result.texture = entry.image;
+  return result;
+}
+
+Reflectance Importer::reflectance(ParamSet& params, const char* name, double fallback) {
+  return textured_reflectance(params, name, fallback, false).value;
+}
+
+// A microfacet alpha as pbrt-v3 computes it: remapped from a perceptual
+// roughness (RoughnessToAlpha) or taken as given, then clamped to 0.001 as its
+// TrowbridgeReitzDistribution does.
+double Importer::roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap) {
+  double roughness = float_param(params, name).value_or(fallback);
+  return std::max(1e-3, remap ? roughness_to_alpha(roughness) : roughness);
+}
+
+double Importer::index_of_refraction(ParamSet& params, SourceRange at) {
+  // pbrt-v3 reads "eta" and, only without it, "index".
+  std::optional<double> eta = float_param(params, "eta");
+  if (!eta) eta = float_param(params, "index");
+  double value = eta.value_or(1.5);
+  if (!(value >= 1.0 / 16 && value <= 16))
+    fail(at, "the index of refraction (\"eta\") of " + params.context() + " must lie in [1/16, 16], found " +
+                 format_number(value));
+  return value;
+}
+
+// ---------------------------------------------------------------------------
+// Materials
+
+Material Importer::convert_material(const std::string& type, ParamSet& params, SourceRange at) {
+  Material material;
+  material.name = type;
+  if (type == "uber") return convert_uber(params, at);
+  params.reject("bumpmap", "bump mapping");
+  if (type == "matte") {
+    params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
+    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
+    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
+    material.diffuse = kd.value;
+    material.diffuse_texture = kd.texture;
+  } else if (type == "mirror") {
+    material.type = Material::Type::mirror;
+    material.specular = reflectance(params, "Kr", 0.9);
+    if (sg::is_black(material.specular)) material.type = Material::Type::black;
+  } else if (type == "plastic") {
+    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+    Reflectance ks = reflectance(params, "Ks", 0.25);
+    bool remap = params.one_bool("remaproughness", true);
+    // pbrt-v3's plastic: FresnelDielectric(1.5, 1), the indices swapped (mmp/pbrt-v3#210).
+    make_plastic(material, kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
+  } else if (type == "glass") {
+    Reflectance kr = reflectance(params, "Kr", 1), kt = reflectance(params, "Kt", 1);
+    params.reject("uroughness", "rough glass (only 0: smooth glass)", 0.0);
+    params.reject("vroughness", "rough glass (only 0: smooth glass)", 0.0);
+    params.one_bool("remaproughness", true);  // no roughness to remap
+    make_glass(material, kr, kt, index_of_refraction(params, at));
+  }
+  return material;
+}
+
+// pbrt-v3's uber is Lambert (Kd) + Fresnel-weighted microfacet reflection (Ks)
+// + specular reflection (Kr) and transmission (Kt), all times opacity. With
+// opacity 1 and either Kd/Ks or Kr/Kt black it is exactly matte, plastic (with
+// the Fresnel term the right way round: FresnelDielectric(1, eta)) or glass.
+Material Importer::convert_uber(ParamSet& params, SourceRange at) {
+  Material material;
+  material.name = "uber";
+  params.reject("bumpmap", "bump mapping");
+  const Param* opacity_param = nullptr;
+  if (std::optional<TextureEntry> opacity = spectrum_or_texture(params, "opacity", opacity_param))
+    if (opacity->image >= 0 || opacity->value != Rgb{1, 1, 1})
+      params.fail_at(*opacity_param, "\"opacity\" other than 1 of " + params.context() + " is not supported",
+                     "pbrt-v3 passes the rest of the light straight through, a material the renderer does not have");
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+  Reflectance ks = reflectance(params, "Ks", 0.25), kr = reflectance(params, "Kr", 0), kt = reflectance(params, "Kt", 0);
+  bool remap = params.one_bool("remaproughness", true);
+  double roughness = float_param(params, "roughness").value_or(0.1);
+  double u = float_param(params, "uroughness").value_or(roughness);
+  double v = float_param(params, "vroughness").value_or(u);
+  if (u != v)
+    fail(at, "an anisotropic " + params.context() + " (\"uroughness\" " + format_number(u) + ", \"vroughness\" " +
+                 format_number(v) + ") is not supported",
+         "the microfacet lobe here is isotropic: give one \"roughness\"");
+  double eta = index_of_refraction(params, at);
+  bool lobed = !black(kd) || !sg::is_black(ks), specular = !sg::is_black(kr) || !sg::is_black(kt);
+  if (lobed && specular)
+    fail(at, params.context() + " with both a diffuse or glossy part (Kd, Ks) and a specular one (Kr, Kt) is not supported",
+         "no material here sums them; uber renders as matte, plastic or glass when one of the two parts is black");
+  if (specular) {
+    make_glass(material, kr, kt, eta);
+  } else {
+    double alpha = std::max(1e-3, remap ? roughness_to_alpha(u) : u);
+    make_plastic(material, kd, ks, alpha, eta, false, params, at);
+  }
+  return material;
+}
+
+void Importer::make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
+                            bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
+  material.diffuse = kd.value;
+  material.diffuse_texture = kd.texture;
+  if (sg::is_black(ks)) {  // the Lambertian lobe alone, as pbrt-v3 builds it
+    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
+    return;
+  }
+  material.type = Material::Type::plastic;
+  material.specular = ks;
+  material.alpha = static_cast<Real>(alpha);
+  material.ior = static_cast<Real>(ior);
+  material.pbrt_v3_plastic_fresnel = pbrt_v3_fresnel;
+  sg::vec3_rep largest = sg::raw(kd.value);
+  if (kd.texture >= 0) largest *= sg::raw(result_.scene.textures[kd.texture].mipmap->maximum());
+  sg::vec3_rep sum = largest + sg::raw(ks);
+  if (std::max({sum.x, sum.y, sum.z}) > 1)
+    fail(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
+                 format_number(std::max({sum.x, sum.y, sum.z})) + ")",
+         "the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks");
+  if (!std::isfinite(material.alpha)) fail(at, "the roughness of " + params.context() + " is out of float range");
+}
+
+void Importer::make_glass(Material& material, Reflectance kr, Reflectance kt, double ior) {
+  material.type = sg::is_black(kr) && sg::is_black(kt) ? Material::Type::black : Material::Type::glass;
+  material.specular = kr;
+  material.transmission = kt;
+  material.ior = static_cast<Real>(ior);
+}
+
+void Importer::material(const Directive& d, bool named) {
+  auto instance = std::make_shared<MaterialInstance>();
+  instance->params = d.params;
+  ParamSet params(instance->params, named ? "MakeNamedMaterial \"" + d.strings[0] + "\"" : "Material \"" + d.strings[0] + "\"");
+  if (named) {
+    const Param* type = params.find("type", {ParamType::string});
+    if (!type || type->strings.size() != 1)
+      fail(d.string_ranges[0], "MakeNamedMaterial \"" + d.strings[0] + "\" needs \"string type\", e.g. \"matte\"");
+    instance->type = type->strings[0];
+    instance->at = type->values;
+  } else {
+    instance->type = d.strings[0];
+    instance->at = d.string_ranges[0];
+  }
+  const std::string& type = instance->type;
+  bool supported = false;
+  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
+  if (!supported) {
+    if (type.empty() || type == "none")
+      fail(instance->at, "an invisible interface material (\"" + type + "\") is not supported",
+           "it only bounds participating media, which are not supported either");
+    fail(instance->at, "material \"" + type + "\" is not supported", kSupportedMaterials);
+  }
+  Material converted = convert_material(type, params, instance->at);
+  report_unused(params);
+  if (converted.type == Material::Type::black) {
+    instance->index = -1;  // absorbs everything, as pbrt-v3's black matte does
+  } else {
+    instance->index = static_cast<int>(result_.scene.materials.size());
+    result_.scene.materials.push_back(converted);
+  }
+  if (named)
+    writable(state_.named_materials)[d.strings[0]] = instance;
+  else
+    state_.material = instance;
+}
+
+int Importer::material_index(const MaterialInstance& material, ParamSet& shape_params) {
+  if (material.index != -2 && !reads_material_params(material.type, shape_params)) return material.index;
+  // The shape's own values win over the material's.
+  ParamSet material_params(material.params, "the shape's material \"" + material.type + "\"");
+  shape_params.set_fallback(&material_params);
+  Material converted = convert_material(material.type, shape_params, material.at);
+  shape_params.set_fallback(nullptr);
+  if (converted.type == Material::Type::black) return -1;
+  result_.scene.materials.push_back(converted);
+  return static_cast<int>(result_.scene.materials.size()) - 1;
+}
+
+// ---------------------------------------------------------------------------
+// Textures
+
+void Importer::texture(const Directive& d) {
+  const std::string &name = d.strings[0], &type = d.strings[1], &texture_class = d.strings[2];
+  bool spectrum = type == "spectrum" || type == "color";
+  if (!spectrum && type != "float")
+    fail(d.string_ranges[1], "texture type \"" + type + "\" is unknown", "pbrt-v3 has \"spectrum\" (or \"color\") and \"float\"");
+  ParamSet params(d.params, "Texture \"" + name + "\"");
+  TextureEntry entry;
+  entry.texture_class = texture_class;
+  entry.at = d.string_ranges[2];
+  if (texture_class == "constant") {
+    if (spectrum) {
+      std::optional<SpectrumValue> value = params.spectrum("value", false);
+      entry.value = value ? value->rgb : Rgb{1, 1, 1};
+    } else {
+      double value = params.one_float("value", 1);
+      entry.value = {value, value, value};
+    }
+  } else if (texture_class == "imagemap") {
+    if (!spectrum)
+      fail(entry.at, "float image textures are not supported",
+           "nothing here reads a textured number: roughness, bump maps and alpha masks take constants");
+    entry.image = image_texture(name, params, d.range);
+  } else if (texture_class == "scale") {
+    // pbrt-v3's ScaleTexture: tex1 × tex2 (each 1 by default); a constant times
+    // at most one image is a value times an image.
+    if (spectrum) {
+      const Param* param = nullptr;
+      for (const char* factor : {"tex1", "tex2"}) {
+        std::optional<TextureEntry> given = spectrum_or_texture(params, factor, param);
+        if (!given) continue;
+        if (given->image >= 0 && entry.image >= 0)
+          params.fail_at(*param, "a product of two image textures is not supported",
+                         "the renderer multiplies one image by a constant");
+        if (given->image >= 0) entry.image = given->image;
+        for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
+      }
+    } else {
+      double value = float_param(params, "tex1").value_or(1) * float_param(params, "tex2").value_or(1);
+      entry.value = {value, value, value};
+    }
+  } else {
+    fail(entry.at, "texture \"" + texture_class + "\" is not supported", kSupportedTextures);
+  }
+  report_unused(params);
+  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
+}
+
+// pbrt-v3's CreateImageSpectrumTexture: a (u, v) mapping, a wrap mode, a
+// scale, the image flipped so that t = 0 is its bottom row, sRGB-decoded when
+// "gamma" (by default for .png and .tga files, which it reads as 8-bit sRGB).
+int Importer::image_texture(const std::string& name, ParamSet& params, SourceRange at) {
+  const Param* filename = params.find("filename", {ParamType::string});
+  if (!filename || filename->strings.size() != 1)
+    fail(at, "Texture \"" + name + "\" \"imagemap\" needs \"string filename\"");
+  ImageTexture texture;
+  texture.name = name;
+  texture.file = filename->strings[0];
+  std::string extension = lower_extension(texture.file);
+  bool eight_bit = extension == ".png" || extension == ".tga";
+  texture.colour_space = params.one_bool("gamma", eight_bit) ? ColourSpace::srgb : ColourSpace::linear;
+  double scale = params.one_float("scale", 1);
+  if (!(scale >= 0 && scale <= 1e6)) fail(at, "\"float scale\" of " + params.context() + " must lie in [0, 1e6]");
+  texture.scale = static_cast<Real>(scale);
+  std::string mapping = params.one_string("mapping", "uv");
+  if (mapping != "uv")
+    params.fail_at(*params.find("mapping", {ParamType::string}), "texture mapping \"" + mapping + "\" is not supported",
+                   "supported: \"uv\" (the shape's own (u, v))");
+  auto uv_number = [&](const char* parameter, double fallback, Real& out) {
+    double value = params.one_float(parameter, fallback);
+    if (!(std::fabs(value) <= 1e6))
+      fail(at, "\"float " + std::string(parameter) + "\" of " + params.context() + " must lie in [-1e6, 1e6]");
+    out = static_cast<Real>(value);
+  };
+  uv_number("uscale", 1, texture.u_scale);
+  uv_number("vscale", 1, texture.v_scale);
+  uv_number("udelta", 0, texture.u_offset);
+  uv_number("vdelta", 0, texture.v_offset);
+  std::string wrap_name = params.one_string("wrap", "repeat");
+  TextureWrap wrap = TextureWrap::repeat;
+  if (wrap_name == "black") wrap = TextureWrap::black;
+  else if (wrap_name == "clamp") wrap = TextureWrap::clamp;
+  else if (wrap_name != "repeat")
+    params.fail_at(*params.find("wrap", {ParamType::string}), "wrap mode \"" + wrap_name + "\" is unknown",
+                   "pbrt-v3 has \"repeat\", \"black\" and \"clamp\" (and would silently repeat)");
+  // pbrt-v3 filters over a footprint of its ray differentials scaled by
+  // 1/sqrt(spp) (SamplerIntegrator::Render): as the samples grow its image
+  // converges to the unfiltered texture, which the bilinear lookup of level 0
+  // gives (the pixel's samples do the antialiasing); our trilinear lookup over
+  // the whole pixel's cone would converge to a blurrier one.
+  texture.filter = TextureFilter::bilinear;
+  params.one_bool("trilinear", false);
+  params.one_float("maxanisotropy", 8);
+  if (filter_warned_++ == 0)
+    warn(at, "image textures are looked up bilinearly here, not filtered as pbrt-v3 filters them (EWA, or trilinear)",
+         "pbrt-v3's filter width shrinks as 1/sqrt(spp), so both converge to the same image; at low spp pbrt-v3's "
+         "is a little blurrier where a texture is minified");
+  Image image = read_image(*filename);
+  texture.mipmap = std::make_shared<MipMap>(
+      to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(scale), true), wrap);
+  result_.scene.textures.push_back(std::move(texture));
+  return static_cast<int>(result_.scene.textures.size()) - 1;
+}
+
+// An image file named by `filename` (a texture's or an infinite light's map):
+// in the formats pbrt-v3 reads, resolved as pbrt-v3 resolves it (against the
+// main file's directory), through PbrtImportOptions::read_image.
+Image Importer::read_image(const Param& filename) {
+  const std::string& file = filename.strings[0];
+  std::string extension = lower_extension(file);
+  if (extension != ".exr" && extension != ".png" && extension != ".tga" && extension != ".pfm")
+    fail(filename.values, "pbrt-v3 reads no image format \"" + extension + "\"",
+         "it reads .exr, .png, .tga and .pfm files (and would render a grey texture or a missing map instead)");
+  std::filesystem::path path = file;
+  if (path.is_relative()) path = search_directory_ / path;
+  try {
+    return read_checked_image(path, options_.read_image);
+  } catch (const std::exception& error) {
+    fail(filename.values, "cannot read image '" + path.string() + "': " + error.what());
+  }
+}
+
+}  // namespace safegi::render::pbrt
