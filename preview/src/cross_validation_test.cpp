@@ -6,6 +6,8 @@
 // contacts, 16 anti-aliasing positions per pixel at silhouettes, tessellated
 // spheres. They are not loosened to pass.
 #include <cmath>
+#include <filesystem>
+#include <unistd.h>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <safegi/runtime_gl/context.hpp>
 
+#include "safegi/cpu_renderer/image.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 #include "safegi/preview/preview.hpp"
@@ -141,6 +144,39 @@ TEST_F(CrossValidation, CurvedMirrorsAreNamedPlanarOnesReflect) {
   FrameStats stats;
   preview.render(&stats);
   EXPECT_EQ(stats.mirror_views, 3);  // the mirror wall, once per pass
+}
+
+// What the preview does not model is named, shape by shape, for main() to
+// say on stderr and in the image files; the plastic ball is drawn (its
+// diffuse layer), the glass ball is not.
+TEST_F(CrossValidation, ApproximationsAreNamed) {
+  Scene scene = render::load_scene(bundled("environment.json"));
+  PreviewOptions options;
+  options.width = 16;
+  options.height = 16;
+  options.passes = 1;
+  Preview preview(scene, options);
+  EXPECT_EQ(preview.approximations(),
+            (std::vector<std::string>{"glass is not previewed and appears black (glass ball)",
+                                      "plastic is drawn as its diffuse layer, without its coating's reflection (plastic ball)",
+                                      "the environment light is not previewed (no light from it)"}));
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("safegi-preview-texture-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  render::Image grey{2, 2, std::vector<float>(12, 0.5f)};
+  render::write_pfm(directory / "grey.pfm", grey);
+  Scene textured = render::parse_scene(R"({"camera": {"position": ["0 m", "1 m", "3 m"], "look_at": ["0 m", "0 m", "0 m"],
+      "up": [0, 1, 0], "fov": "40 deg"},
+    "textures": {"grey": {"type": "image", "file": "grey.pfm"}},
+    "materials": {"floor": {"type": "lambert", "reflectance": {"texture": "grey"}}},
+    "shapes": [{"name": "floor", "type": "quad", "material": "floor", "origin": ["-1 m", "0 m", "-1 m"],
+                "edge_u": ["0 m", "0 m", "2 m"], "edge_v": ["2 m", "0 m", "0 m"]}],
+    "lights": [{"type": "point", "position": ["0 m", "2 m", "0 m"], "power": "10 W"}]})",
+                                       "textured.json", directory);
+  std::filesystem::remove_all(directory);
+  EXPECT_EQ(Preview(textured, options).approximations(),
+            std::vector<std::string>{"textures are drawn as their mean colour (floor)"});
+  EXPECT_TRUE(Preview(render::load_scene(bundled("cornell-box/cornell-box.json")), options).approximations().empty());
 }
 
 }  // namespace

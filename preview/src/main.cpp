@@ -84,13 +84,13 @@ int main(int argc, char** argv) {
       if (length_unit.empty())
         throw safegi::render::PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length "
                                               "unit is with --length-unit (m, cm, mm, in, ...)\n");
-      safegi::render::PbrtScene imported =
-          safegi::render::load_pbrt_scene(scene_file, {safegi::render::parse_length_unit(length_unit), {}});
+      safegi::render::PbrtScene imported = safegi::render::load_pbrt_scene(
+          scene_file, {safegi::render::parse_length_unit(length_unit), {}, safegi::render::read_image});
       std::cerr << imported.warnings;
       scene = std::move(imported.scene);
     } else {
       if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
-      scene = safegi::render::load_scene(scene_file);
+      scene = safegi::render::load_scene(scene_file, safegi::render::SceneLoadOptions{safegi::render::read_image});
     }
     if (!resolution.empty()) {
       std::smatch match;
@@ -125,14 +125,12 @@ int main(int argc, char** argv) {
       frame_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       if (f == 0) first_frame = seconds_since(start);
     }
-    // Curved mirrors are drawn black: said on stderr and in the image files.
+    // What the preview does not model (curved mirrors, glass, ...): said on
+    // stderr and in the image files.
     std::string note;
-    if (!preview.curved_mirrors().empty()) {
-      std::string names;
-      for (const std::string& name : preview.curved_mirrors()) names += (names.empty() ? "" : ", ") + name;
-      note = "SafeGI preview: curved mirrors are not previewed and appear black (" + names +
-             "); planar mirrors show one-bounce reflections";
-      std::fprintf(stderr, "warning: %s\n", note.c_str());
+    for (const std::string& phrase : preview.approximations()) {
+      note += (note.empty() ? "SafeGI preview: " : "; ") + phrase;
+      std::fprintf(stderr, "warning: preview: %s\n", phrase.c_str());
     }
     if (out.extension() == ".exr") {
       safegi::render::write_exr(out, image, note);

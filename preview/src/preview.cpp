@@ -213,6 +213,7 @@ struct Preview::Impl {
   bool point_shadows_valid = false;
   std::vector<MirrorTarget> mirrors;     // planar mirrors, reflected one bounce
   std::vector<std::string> curved_mirrors;  // mirrors drawn black: not planar
+  std::vector<std::string> approximations;  // Preview::approximations()
   FrameStats stats;
 
   Impl(const Scene& s, PreviewOptions o)
@@ -237,8 +238,46 @@ struct Preview::Impl {
       if (std::optional<Plane> plane = plane_of(shape))
         mirrors.emplace_back(static_cast<int>(s), *plane, width, height, emission.radiance);
       else
-        curved_mirrors.push_back(shape.name.empty() ? "shapes[" + std::to_string(s) + "]" : shape.name);
+        curved_mirrors.push_back(shape_name(s));
     }
+    describe_approximations();
+  }
+
+  std::string shape_name(size_t s) const {
+    return scene.shapes[s].name.empty() ? "shapes[" + std::to_string(s) + "]" : scene.shapes[s].name;
+  }
+
+  // Said on stderr and in the image files: what the preview does not model.
+  void describe_approximations() {
+    auto names_of = [&](auto&& selected) {
+      std::string names;
+      for (size_t s = 0; s < scene.shapes.size(); ++s)
+        if (scene.shapes[s].material >= 0 && selected(scene.materials[scene.shapes[s].material]))
+          names += (names.empty() ? "" : ", ") + shape_name(s);
+      return names;
+    };
+    auto add = [&](const std::string& names, const std::string& phrase) {
+      if (!names.empty()) approximations.push_back(phrase + " (" + names + ")");
+    };
+    if (!curved_mirrors.empty()) {
+      std::string names;
+      for (const std::string& name : curved_mirrors) names += (names.empty() ? "" : ", ") + name;
+      approximations.push_back("curved mirrors are not previewed and appear black (" + names +
+                               "); planar mirrors show one-bounce reflections");
+    }
+    add(names_of([](const Material& m) { return m.type == Material::Type::glass; }),
+        "glass is not previewed and appears black");
+    add(names_of([](const Material& m) { return m.type == Material::Type::plastic; }),
+        "plastic is drawn as its diffuse layer, without its coating's reflection");
+    add(names_of([](const Material& m) { return m.diffuse_texture >= 0; }),
+        "textures are drawn as their mean colour");
+    if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
+  }
+
+  // The diffuse reflectance a surface is drawn with: a texture by its mean.
+  Reflectance preview_diffuse(const Material& material) const {
+    if (material.diffuse_texture < 0) return material.diffuse;
+    return material.diffuse * scene.textures[material.diffuse_texture].mipmap->average();
   }
 
   // The point-like lights: point lights, then spot lights, with their cones.
@@ -380,9 +419,11 @@ struct Preview::Impl {
       if (shape.material < 0 || static_cast<int>(s) == view.skip_shape) continue;
       const Material& material = scene.materials[shape.material];
       // Mirrors get no direct light (a delta BRDF); planar ones reflect in draw_mirrors.
-      if (material.type != Material::Type::lambert && material.type != Material::Type::phong) continue;
+      if (material.type != Material::Type::lambert && material.type != Material::Type::phong &&
+          material.type != Material::Type::plastic)
+        continue;
       bool phong = material.type == Material::Type::phong;
-      pass.program.set(pass.kd, material.diffuse);
+      pass.program.set(pass.kd, preview_diffuse(material));
       pass.program.set(pass.ks, phong ? material.specular : Reflectance{});
       pass.program.set(pass.exponent, phong ? material.exponent : 1.0f);
       pass.program.set(pass.camera.world_from_object, poses.at(s, time));
@@ -541,6 +582,7 @@ render::Image Preview::render(FrameStats* stats) {
 
 int Preview::width() const { return impl_->width; }
 const std::vector<std::string>& Preview::curved_mirrors() const { return impl_->curved_mirrors; }
+const std::vector<std::string>& Preview::approximations() const { return impl_->approximations; }
 int Preview::height() const { return impl_->height; }
 
 }  // namespace safegi::preview

@@ -49,6 +49,10 @@ class Preview {
   // The mirrors the preview does not reflect (curved: spheres, non-planar
   // meshes), by shape name; they are drawn black.
   const std::vector<std::string>& curved_mirrors() const;
+  // What this frame shows differently from the CPU renderer, one phrase each
+  // (curved mirrors, glass, plastic's coating, textures, the environment
+  // light), naming the shapes; empty when the preview models the whole scene.
+  const std::vector<std::string>& approximations() const;
 
  private:
   struct Impl;
