@@ -274,6 +274,11 @@ Scene far_spheres(double distance) {
 TEST(Extremes, ShapesFloatCannotResolveWhereTheyStandAreReported) {
   EXPECT_FALSE(check_precision(far_spheres(1e3)));
   EXPECT_FALSE(check_precision(far_spheres(1e4)));  // spacing 0.001 m: 0.06 % of the ball (1.73 m across)
+  Scene point_like;  // a triangle collapsed to a point: nothing to resolve, wherever it is
+  point_like.shapes.emplace_back();
+  point_like.shapes[0].positions.assign(3, sg::from_raw<PointObject>(sg::vec3_rep(1, 2, 3)));
+  point_like.shapes[0].indices = {0, 1, 2};
+  EXPECT_FALSE(check_precision(point_like));
   std::optional<PrecisionReport> far = check_precision(far_spheres(1e7));
   ASSERT_TRUE(far);
   EXPECT_EQ(far->unresolved_shapes, 2);

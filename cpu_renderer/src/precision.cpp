@@ -78,9 +78,10 @@ std::optional<PrecisionReport> check_precision(const Scene& scene) {
                                                      shape.render_from_object_at_close}) {
       if (!pose) continue;
       Box box = world_box(shape, *pose);
-      if (box.empty()) continue;
-      double size = box.diagonal(), distance = box.farthest(), spacing = spacing_at(distance);
-      double fraction = size > 0 ? spacing / size : std::numeric_limits<double>::infinity();
+      double size = box.empty() ? 0 : box.diagonal();
+      if (!(size > 0)) continue;  // a point: nothing to resolve (zero-area shapes are allowed, and invisible)
+      double distance = box.farthest(), spacing = spacing_at(distance);
+      double fraction = spacing / size;
       if (!(fraction > kUnresolvedFraction)) continue;
       unresolved = true;
       if (fraction > worst_fraction) {
