@@ -15,8 +15,10 @@ jobs=${SAFEGI_JOBS:-$(nproc)}
 
 if ((sanitize)); then
   # The compiler, the typed library and the renderer core under ASan+UBSan;
-  # the GL parts are left out (Mesa's llvmpipe is not built with sanitizers).
+  # the GL parts are left out (Mesa's llvmpipe is not built with sanitizers),
+  # and so are the renderer's programs and their unchecked and double
+  # libraries (no sanitize-labelled test runs them; the Release pass does).
   "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON \
-      -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_BENCH=OFF
+      -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_BENCH=OFF -DSAFEGI_BUILD_RENDERER_PROGRAMS=OFF
   (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" -L sanitize --no-tests=error)
 fi
