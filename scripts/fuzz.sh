@@ -29,7 +29,10 @@ case "$target" in
   *) echo "fuzz.sh: unknown target '$target' (compiler or lsp)" >&2; exit 2 ;;
 esac
 
+# -O1 -g1: the fuzzer's build is most of a CI fuzz run's time; -O1 compiles
+# about 2.5x faster than -O2 -g and is what ASan recommends.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
   -DSAFEGI_SANITIZE=ON -DSAFEGI_FUZZ=ON \
