@@ -7,6 +7,9 @@
 #   scripts/fuzz.sh lsp [seconds]        safegi-lsp's engine (framing, JSON-RPC,
 #                                        documents, requests), seeded with the
 #                                        sessions in lsp/fuzz/seeds/
+#   scripts/fuzz.sh pbrt [seconds]       the pbrt-v3 scene importer, seeded with the
+#                                        bundled .pbrt scenes, the Cornell box
+#                                        written as pbrt, and SAFEGI_FUZZ_SEEDS=DIR
 #   SAFEGI_FUZZ_RUNS=N SAFEGI_FUZZ_SEED=S scripts/fuzz.sh <target>
 #       a fixed number of inputs from a fixed seed instead of a time budget:
 #       the same inputs every time, as CI needs.
@@ -15,18 +18,22 @@
 # targets). A crash leaves its input in build-fuzz/fuzz-artifacts/<target>/
 # and the script exits non-zero; turn every such input into a regression test
 # (compiler: a golden case under testsuite/golden/cases/fuzz/; lsp: a case in
-# lsp/src/server_test.cpp).
+# lsp/src/server_test.cpp; pbrt: a case of cpu_renderer/src/pbrt_import_test.cpp).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-target=${1:?usage: scripts/fuzz.sh compiler|lsp [seconds]}
+target=${1:?usage: scripts/fuzz.sh compiler|lsp|pbrt [seconds]}
 seconds=${2:-60}
 build=${SAFEGI_FUZZ_BUILD_DIR:-$root/build-fuzz}
 jobs=${JOBS:-2}
 
+# The importer is the renderer's: only its target builds the renderer.
+renderer=OFF
+max_len=16384
 case "$target" in
   compiler) executable=safegi_compile_fuzzer ;;
   lsp) executable=safegi_lsp_fuzzer ;;
-  *) echo "fuzz.sh: unknown target '$target' (compiler or lsp)" >&2; exit 2 ;;
+  pbrt) executable=safegi_pbrt_import_fuzzer renderer=ON max_len=65536 ;;
+  *) echo "fuzz.sh: unknown target '$target' (compiler, lsp or pbrt)" >&2; exit 2 ;;
 esac
 
 # -O1 -g1: the fuzzer's build is most of a CI fuzz run's time; -O1 compiles
@@ -36,7 +43,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
   -DSAFEGI_SANITIZE=ON -DSAFEGI_FUZZ=ON \
-  -DSAFEGI_BUILD_TESTS=OFF -DSAFEGI_BUILD_BENCH=OFF -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_RENDERER=OFF >/dev/null
+  -DSAFEGI_BUILD_TESTS=OFF -DSAFEGI_BUILD_BENCH=OFF -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_RENDERER=$renderer >/dev/null
 cmake --build "$build" -j"$jobs" --target "$executable"
 
 corpus="$build/fuzz-corpus/$target"
@@ -47,8 +54,13 @@ if [[ "$target" == compiler ]]; then
   find "$root/examples" "$root/testsuite/golden/cases" "$root/runtime_gl/testdata" "$root/compiler/testdata" \
     -type f \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' -o -name '*.tesc' \
     -o -name '*.tese' -o -name '*.sgl' -o -name '*.glsl' \) -exec cp -t "$corpus" {} + 2>/dev/null || true
-else
+elif [[ "$target" == lsp ]]; then
   cp -t "$corpus" "$root"/lsp/fuzz/seeds/*
+else
+  find "$root/examples" ${SAFEGI_FUZZ_SEEDS:+"$SAFEGI_FUZZ_SEEDS"} -type f -name '*.pbrt' -size -64k \
+    -exec cp -t "$corpus" {} + 2>/dev/null || true
+  python3 "$root/bench/renderer/json_to_pbrt.py" "$root/examples/scenes/cornell-box/cornell-box.json" 4 out.exr \
+    > "$corpus/cornell.pbrt"
 fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
@@ -57,5 +69,5 @@ budget=(-max_total_time="$seconds")
 if [[ -n "${SAFEGI_FUZZ_RUNS:-}" ]]; then
   budget=(-runs="$SAFEGI_FUZZ_RUNS" -seed="${SAFEGI_FUZZ_SEED:-1}")
 fi
-exec "$build/bin/$executable" "${budget[@]}" -max_len=16384 -timeout=10 \
+exec "$build/bin/$executable" "${budget[@]}" -max_len="$max_len" -timeout=10 \
   -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus"
