@@ -378,7 +378,7 @@ void Importer::finish_camera(SourceRange world_begin) {
   if (!(focal_distance > 0)) fail(at, "\"float focaldistance\" must be positive");
   camera.focus_distance = sg::from_raw<Length>(static_cast<Real>(focal_distance * metres_per_camera_unit));
   if (!std::isfinite(sg::raw(camera.focus_distance)) || !std::isfinite(sg::raw(camera.lens_radius)))
-    fail(at, "the lens is out of float range at this --length-unit");
+    fail(at, std::string("the lens is out of ") + kRealName + " range at this --length-unit");
   // Shutter times matter only with motion, which is refused (ActiveTransform).
   params.one_float("shutteropen", 0);
   params.one_float("shutterclose", 1);
@@ -401,7 +401,8 @@ PointWorld Importer::to_world_point(const Matrix& m, glm::dvec3 p, SourceRange a
   glm::dvec4 q = m * glm::dvec4(p, 1.0);
   sg::vec3_rep f(q);
   if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
-    fail(at, "a coordinate is out of float range at --length-unit of " + std::to_string(options_.metres_per_unit) + " m");
+    fail(at, std::string("a coordinate is out of ") + kRealName + " range at --length-unit of " +
+                 std::to_string(options_.metres_per_unit) + " m");
   return sg::from_raw<PointWorld>(f);
 }
 

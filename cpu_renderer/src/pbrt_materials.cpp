@@ -243,7 +243,7 @@ void Importer::make_plastic(Material& material, const TexturedReflectance& kd, R
     fail(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
                  format_number(std::max({sum.x, sum.y, sum.z})) + ")",
          "the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks");
-  if (!std::isfinite(material.alpha)) fail(at, "the roughness of " + params.context() + " is out of float range");
+  if (!std::isfinite(material.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
 }
 
 void Importer::make_glass(Material& material, Reflectance kr, Reflectance kt, double ior) {

@@ -30,7 +30,7 @@ Map orthogonal_map(const glm::dmat3& r) {
 
 TexCoord texture_coordinate(double u, double v, SourceRange at) {
   TexCoord t{static_cast<Real>(u), static_cast<Real>(v)};
-  if (!std::isfinite(t.u) || !std::isfinite(t.v)) fail(at, "a texture coordinate is out of float range");
+  if (!std::isfinite(t.u) || !std::isfinite(t.v)) fail(at, std::string("a texture coordinate is out of ") + kRealName + " range");
   return t;
 }
 
@@ -172,7 +172,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
                                                       static_cast<Real>(radiance[2])));
   sg::vec3_rep rgb = sg::raw(light.radiance);
   if (!std::isfinite(rgb.x) || !std::isfinite(rgb.y) || !std::isfinite(rgb.z))
-    fail(d.range, "the infinite light's radiance is out of float range");
+    fail(d.range, std::string("the infinite light's radiance is out of ") + kRealName + " range");
   // Shadow rays per light for pbrt's direct-lighting integrator: noise only.
   params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
   if (const Param* map = params.find("mapname", {ParamType::string})) {
@@ -354,7 +354,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     glm::dvec3 centre = glm::transpose(rotation) * glm::dvec3(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at)));
     shape.center = sg::from_raw<PointObject>(sg::vec3_rep(centre));
     Real radius = static_cast<Real>(source.radius * scale);
-    if (!std::isfinite(radius) || !(radius > 0)) fail(source.at, "the sphere's radius is out of float range");
+    if (!std::isfinite(radius) || !(radius > 0)) fail(source.at, std::string("the sphere's radius is out of ") + kRealName + " range");
     shape.radius = sg::from_raw<Length>(radius);
     result_.scene.shapes.push_back(std::move(shape));
     return;

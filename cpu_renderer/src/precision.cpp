@@ -100,7 +100,6 @@ std::optional<PrecisionReport> check_precision(const Scene& scene) {
 
 std::string describe(const PrecisionReport& report, const Scene& scene) {
   const bool is_float = sizeof(Real) == sizeof(float);
-  const char* type = is_float ? "float" : "double";
   const Shape& shape = scene.shapes.at(static_cast<size_t>(report.worst_shape));
   std::string name = "shapes[" + std::to_string(report.worst_shape) + "]";
   if (!shape.name.empty()) name += " \"" + shape.name + "\"";
@@ -109,9 +108,9 @@ std::string describe(const PrecisionReport& report, const Scene& scene) {
   std::string text = "warning: ";
   text += report.unresolved_shapes == 1 ? std::string("a shape is")
                                         : std::to_string(report.unresolved_shapes) + " shapes are";
-  text += std::string(" too small for ") + type + " where " + (report.unresolved_shapes == 1 ? "it stands" : "they stand") +
+  text += std::string(" too small for ") + kRealName + " where " + (report.unresolved_shapes == 1 ? "it stands" : "they stand") +
           ": " + name + " is " + metres(report.worst_size_m) + " across and " + metres(report.worst_distance_m) +
-          " from the origin, where " + type + " values are " + metres(report.worst_spacing_m) + " apart (" + percent +
+          " from the origin, where " + kRealName + " values are " + metres(report.worst_spacing_m) + " apart (" + percent +
           " of its size); expect a wrong image\n";
   text += std::string("help: ") + (is_float ? "render it in double (safegi-render-double), or " : "") +
           "move the scene towards the origin\n";

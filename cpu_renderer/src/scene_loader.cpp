@@ -786,8 +786,7 @@ ObjectToWorld Loader::load_transform(const Json& value, const JsonPath& path) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(result[c][r]) && std::isfinite(inverse[c][r]);
   if (!finite)
-    fail(path, sizeof(Real) == 4 ? "is singular in float precision (its scales multiply to 0 or infinity)"
-                                 : "is singular in double precision (its scales multiply to 0 or infinity)");
+    fail(path, std::string("is singular in ") + kRealName + " precision (its scales multiply to 0 or infinity)");
   return ObjectToWorld::from_matrix(result);
 }
 

@@ -19,6 +19,8 @@
 namespace safegi::render {
 // The representation of every geometric and radiometric value.
 using Real = ::safegi::real;
+// Its name, for messages about its range and precision.
+inline constexpr const char* kRealName = sizeof(Real) == sizeof(float) ? "float" : "double";
 }  // namespace safegi::render
 
 namespace safegi::render::kernel {
