@@ -17,7 +17,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 
-cmake -S "$root" -B "$build" -G Ninja >/dev/null
+# CMake's default generator, as scripts/test.sh's Release pass uses in the same folder;
+# a folder already configured keeps its generator.
+cmake -S "$root" -B "$build" >/dev/null
 files="$build/dependency-files.tsv"
 [[ -s "$files" ]] || { echo "check-deps: $files is missing or empty (configure did not record the dependencies)" >&2; exit 1; }
 

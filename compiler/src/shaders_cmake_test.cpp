@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "glslang_check.hpp"
-#include "safegi/runtime_gl/symbol_table.hpp"
+#include "safegi/symbol_table/symbol_table.hpp"
 
 namespace safegi {
 namespace {

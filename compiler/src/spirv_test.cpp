@@ -7,8 +7,8 @@
 
 #include <thread>
 
-#include <safegi/runtime_gl/error.hpp>
-#include <safegi/runtime_gl/spirv_interface.hpp>
+#include <safegi/symbol_table/error.hpp>
+#include <safegi/symbol_table/spirv_interface.hpp>
 
 #include "glslang_check.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "loader.hpp"
 #include "platform.hpp"
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

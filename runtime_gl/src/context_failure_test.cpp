@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "safegi/runtime_gl/context.hpp"
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

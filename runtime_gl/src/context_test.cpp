@@ -6,7 +6,7 @@
 #include <iostream>
 #include <optional>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/gl.hpp"
 
 namespace safegi::gl {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "emission_handles.hpp"
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "test_gl.hpp"
 
 namespace safegi::gl {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "safegi/runtime_gl/driver_log.hpp"
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "test_gl.hpp"
 
 namespace safegi::gl {

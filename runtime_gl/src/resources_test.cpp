@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/gl.hpp"
 #include "test_gl.hpp"
 

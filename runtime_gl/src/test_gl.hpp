@@ -9,7 +9,7 @@
 #include <string>
 
 #include "safegi/runtime_gl/context.hpp"
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/program.hpp"
 #include "test_support.hpp"
 

@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/program.hpp"
 #include "safegi/runtime_gl/resources.hpp"

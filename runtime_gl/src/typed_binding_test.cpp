@@ -7,7 +7,7 @@
 #include <safegi/typed.hpp>
 #include <vector>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/runtime_gl.hpp"
 #include "test_gl.hpp"

@@ -21,7 +21,7 @@
 #include <safegi/diagnostics/source_manager.hpp>
 #include <safegi/lexer/preprocessor.hpp>
 #include <safegi/parser/parser.hpp>
-#include <safegi/runtime_gl/symbol_table.hpp>
+#include <safegi/symbol_table/symbol_table.hpp>
 #include <safegi/typechecker/checker.hpp>
 
 namespace safegi {

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "safegi/runtime_gl/symbol_table.hpp"
+#include "safegi/symbol_table/symbol_table.hpp"
 
 namespace safegi::gl {
 

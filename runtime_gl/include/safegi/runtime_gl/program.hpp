@@ -17,8 +17,8 @@
 
 #include "safegi/runtime_gl/handles.hpp"
 #include "safegi/runtime_gl/resources.hpp"
-#include "safegi/runtime_gl/spirv_interface.hpp"
-#include "safegi/runtime_gl/symbol_table.hpp"
+#include "safegi/symbol_table/spirv_interface.hpp"
+#include "safegi/symbol_table/symbol_table.hpp"
 #include "safegi/runtime_gl/value_traits.hpp"
 
 namespace safegi::gl {

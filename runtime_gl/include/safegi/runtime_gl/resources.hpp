@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/handles.hpp"
 #include "safegi/runtime_gl/value_traits.hpp"
 

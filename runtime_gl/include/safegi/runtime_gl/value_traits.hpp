@@ -18,7 +18,7 @@
 #include <string>
 #include <type_traits>
 
-#include "safegi/runtime_gl/value_type.hpp"
+#include "safegi/symbol_table/value_type.hpp"
 
 namespace safegi::gl {
 

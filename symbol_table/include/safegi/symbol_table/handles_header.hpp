@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "safegi/runtime_gl/symbol_table.hpp"
+#include "safegi/symbol_table/symbol_table.hpp"
 
 namespace safegi::gl {
 

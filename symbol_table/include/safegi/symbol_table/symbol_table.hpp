@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "safegi/runtime_gl/value_type.hpp"
+#include "safegi/symbol_table/value_type.hpp"
 
 namespace safegi::gl {
 

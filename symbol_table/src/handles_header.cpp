@@ -1,10 +1,10 @@
-#include "safegi/runtime_gl/handles_header.hpp"
+#include "safegi/symbol_table/handles_header.hpp"
 
 #include <map>
 #include <set>
 #include <sstream>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

@@ -7,8 +7,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "safegi/runtime_gl/error.hpp"
-#include "safegi/runtime_gl/handles_header.hpp"
+#include "safegi/symbol_table/error.hpp"
+#include "safegi/symbol_table/handles_header.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Writes a C++ header of typed runtime_gl handles from a SafeGI symbol table"};

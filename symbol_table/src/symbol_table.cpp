@@ -1,10 +1,10 @@
-#include "safegi/runtime_gl/symbol_table.hpp"
+#include "safegi/symbol_table/symbol_table.hpp"
 
 #include <array>
 #include <nlohmann/json.hpp>
 #include <utility>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

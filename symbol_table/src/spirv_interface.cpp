@@ -1,8 +1,8 @@
-#include "safegi/runtime_gl/spirv_interface.hpp"
+#include "safegi/symbol_table/spirv_interface.hpp"
 
 #include <unordered_map>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {
 namespace {

@@ -1,4 +1,4 @@
-#include "safegi/runtime_gl/value_type.hpp"
+#include "safegi/symbol_table/value_type.hpp"
 
 #include <array>
 #include <utility>

@@ -1,8 +1,8 @@
-#include "safegi/runtime_gl/handles_header.hpp"
+#include "safegi/symbol_table/handles_header.hpp"
 
 #include <gtest/gtest.h>
 
-#include "safegi/runtime_gl/error.hpp"
+#include "safegi/symbol_table/error.hpp"
 #include "test_support.hpp"
 
 namespace safegi::gl {
