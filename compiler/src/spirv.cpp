@@ -10,7 +10,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
-#include <safegi/runtime_gl/driver_log.hpp>
+#include <safegi/symbol_table/driver_log.hpp>
 
 #include "glslang_language.hpp"
 

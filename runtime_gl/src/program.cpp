@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "safegi/runtime_gl/driver_log.hpp"
+#include "safegi/symbol_table/driver_log.hpp"
 #include "safegi/symbol_table/error.hpp"
 
 namespace safegi::gl {

@@ -1,4 +1,4 @@
-#include "safegi/runtime_gl/driver_log.hpp"
+#include "safegi/symbol_table/driver_log.hpp"
 
 #include <gtest/gtest.h>
 
