@@ -193,7 +193,9 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
                  .with_highlight(measured->dimension->range));
       return std::nullopt;
     }
-    return DimSlot::known(*u);
+    // The declaration's name is kept (inv_length in kilometer⁻¹, not the first-declared pdf_length).
+    const bool named = !d->spelling.empty() && reg.has_unit_factors(*u);
+    return DimSlot::known(*u, named ? d->spelling + " in " + reg.format_units(*u) : d->spelling);
   }
   if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
     std::optional<DimSlot> l = resolve_dimension(bin->lhs);

@@ -188,7 +188,8 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     // float<D> ^ n with n an integer constant: the result is D^n.
     const DimSlot base = value_dimension(args[0].type, result_.registry);
     const bool dimensioned = base.state == DimSlot::State::generic ||
-                             (base.state == DimSlot::State::known && !base.value.is_dimensionless());
+                             (base.state == DimSlot::State::known && !base.value.is_dimensionless() &&
+                              !cosine_as_number(DimSlot::known(Dimension{}), base));  // a lobe: pow(cos θ, n)
     if (dimensioned) {
       const std::optional<double> n = args[1].number;
       if (!n || std::floor(*n) != *n || std::fabs(*n) > 1e6) {
@@ -212,6 +213,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
       return out;
     }
   }
+
+  if (sig.rule == BuiltinRule::angle_unit && args.size() == 1)
+    if (std::optional<Value> v = angle_conversion(name, args[0], shape.result, call_range)) return *v;
 
   std::optional<Type> result = unify_call(name, shape, args, call_range);
   if (!result) return error_value(call_range);
@@ -362,6 +366,9 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
         if (applying && i == 1 && args.size() == 2)
           message = "cannot apply " + name_of(args[0].type) + " to " + name_of(a.type) + ": the map takes values in " + space_word;
         std::string hint = space_hint(expected, *aslots[k]);
+        if (applying && i == 1 && args.size() == 2 && a.type.from.state == SpaceSlot::State::known && a.type.from == args[0].type.to)
+          hint = (a.name.empty() ? std::string("the value") : "'" + a.name + "'") + " is already in " + name_of_space(a.type.from) +
+                 ", where the map leads: use it as it is, or apply the map to a value in " + space_word;
         if (callee == "compose" && args.size() == 2) {
           message = "cannot compose " + name_of(args[0].type) + " with " + name_of(args[1].type) +
                     ": the right-hand map ends in " + name_of_space(args[1].type.to) + " but the left-hand one starts in " +
@@ -378,10 +385,10 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
     std::optional<Dimension> ar = rigid(ad);
     if (!ar) continue;
     if (p.dim.state == DimSlot::State::known) {
-      if (!(p.dim.value == *ar)) {
+      if (!(p.dim.value == *ar) && !cosine_as_number(p.dim, ad)) {
         arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " + fn +
                          " expects " + name_of(p, shape),
-                  physics_hint(p.dim, ad), "E-DIMENSION-MISMATCH");
+                  physics_hint(p.dim, ad, a.range), "E-DIMENSION-MISMATCH");
         return std::nullopt;
       }
     } else if (p.dim.state == DimSlot::State::generic) {
@@ -556,6 +563,17 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
                        .with_code("E-NO-OVERLOAD");
     for (const Function& f : overloads)
       d.with_note(Diagnostic::note(f.decl->name_range, "candidate: " + f.name + "(" + parameters_text(f, result_.registry) + ")"));
+    // One candidate: say which argument's kind keeps it out (a vector for a direction<S> parameter).
+    const Function& only = overloads.front();
+    for (std::size_t i = 0; overloads.size() == 1 && i < args.size() && i < only.params.size(); ++i) {
+      const Geometry want = only.params[i].geometry, have = args[i].type.geometry;
+      if (want == Geometry::none || have == Geometry::none || kind_fits(have, want)) continue;
+      std::string why = kind_mismatch_hint(want, have);
+      d.with_highlight(args[i].range);
+      d.with_hint("argument " + std::to_string(i + 1) + " is " + name_of(args[i].type) + " but the parameter is " +
+                  type_name(only.params[i], result_.registry, &only.dim_params, &only.space_params) + (why.empty() ? "" : ": " + why));
+      break;
+    }
     report(std::move(d));
     return error_value(e.range);
   }

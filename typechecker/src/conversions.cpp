@@ -245,8 +245,11 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
       hint += " (a projmap applies only to points)";
     // A map that would finish the chain the other way round: 'in' does not invert maps.
     for (const MapEdge& edge : edges) {
-      if (!(edge.from == target) || edge.kind == Geometry::projmap) continue;
-      if (!reached.count(Node{edge.to, false})) continue;
+      if (edge.kind == Geometry::projmap) continue;
+      // Into the value's space when no map leaves it (world → light for a point in light), or out of the
+      // target into a space reached.
+      const bool into_value = reached.size() == 1 && edge.to == t.from && !(edge.from == t.from);
+      if (!into_value && (!(edge.from == target) || !reached.count(Node{edge.to, false}))) continue;
       hint += "; '" + edge.variable->name + "' goes the other way (" + name_of_space(edge.from) + " → " + name_of_space(edge.to) +
               ") and 'in' does not invert maps: declare its inverse, or write inverse(" + edge.variable->name + ") * …";
       break;

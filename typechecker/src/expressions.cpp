@@ -182,6 +182,21 @@ Value Checker::unary(const ast::UnaryExpr& e) {
   return error_value(e.range);
 }
 
+// `vs_out.TangentViewPos`, not the instance alone: the member is what has the
+// type. Swizzles and indices keep the variable's name.
+std::string Checker::member_path(const ast::Expr* target, const std::string& variable) const {
+  const auto* member = ast::dyn_cast<ast::MemberExpr>(target);
+  if (!member) return variable;
+  const auto base = result_.types.find(member->base);
+  if (base == result_.types.end() || base->second.shape != Shape::structure || base->second.is_array()) return variable;
+  if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(member->base)) return id->name + "." + member->member;
+  if (ast::isa<ast::MemberExpr>(member->base)) {
+    const std::string outer = member_path(member->base, variable);
+    return outer == variable ? variable : outer + "." + member->member;
+  }
+  return variable;
+}
+
 Value Checker::assign(const ast::AssignExpr& e) {
   Value lhs = expr(e.lhs);
   Value rhs = expr(e.rhs);
@@ -203,7 +218,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
     if (value.type.is_error()) return error_value(e.range);
   }
-  if (!check_assignable(lhs.type, value, e.lhs->range, lhs.name, lhs.origin, "assign")) return error_value(e.range);
+  if (!check_assignable(lhs.type, value, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
   Value out = lhs;
   out.range = e.range;
   out.lvalue = false;
@@ -232,21 +247,7 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
       std::string(action) == "return"
           ? "cannot return a value of type " + name_of(v) + " from '" + target_name + "', which returns " + name_of(target)
           : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(v);
-  std::string kind_hint;
-  if (target.geometry == Geometry::direction && v.geometry == Geometry::vector) kind_hint = "a vector becomes a direction only through normalize()";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::direction) kind_hint = "scale it by a length to get a vector";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::normal)
-    kind_hint = "a normal is not a vector: it transforms by the inverse transpose; convert explicitly with vector<S>(n) if you mean it";
-  else if (target.geometry == Geometry::normal && v.geometry == Geometry::vector)
-    kind_hint = "transform the normal itself (a map applied to a normal uses the inverse transpose), or convert explicitly with normal<S>(v)";
-  else if (target.geometry == Geometry::point && v.geometry == Geometry::hpoint) kind_hint = "divide by w first: homogenize(h)";
-  else if (target.geometry == Geometry::point && v.geometry == Geometry::vector) kind_hint = "add it to a point to get a point";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::point) kind_hint = "subtract another point to get a vector";
-  else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction)
-    kind_hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
-  else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) kind_hint = "a projective map gives hpoints, not points";
-  else if (target.geometry == Geometry::rigidmap && v.geometry == Geometry::map)
-    kind_hint = "a map composed with a non-rigid one is not rigid: declare it map<…> (normals then transform by the inverse transpose)";
+  const std::string kind_hint = kind_mismatch_hint(target.geometry, v.geometry);
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
@@ -263,8 +264,8 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
     return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), "E-SPACE-MISMATCH");
   }
   const DimSlot found = value_dimension(v, result_.registry);
-  if (!value.zero && !consistent(target.dim, found))
-    return fail(sentence, physics_hint(target.dim, found), "E-DIMENSION-MISMATCH");
+  if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
+    return fail(sentence, physics_hint(target.dim, found, value.range), "E-DIMENSION-MISMATCH");
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
                                    consistent(target.texel->dim, v.texel->dim)))
     return fail(sentence, "", "E-TEXEL-MISMATCH");

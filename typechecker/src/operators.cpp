@@ -133,9 +133,17 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       if (!ordering && (a.shape == Shape::opaque || a.shape == Shape::void_)) return invalid();
       // Comparisons need equal dimensions; a zero literal compares with anything.
       const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
-      if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+      if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_as_number(da, db) && !cosine_as_number(db, da)) {
         operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range, physics_hint(da, db),
                          "E-DIMENSION-MISMATCH");
+        return error_value(range);
+      }
+      // `projCoords.z > stored` before the divide compares z·w, not a depth.
+      if ((a.geometry == Geometry::hpoint) != (b.geometry == Geometry::hpoint) && !lhs.zero && !rhs.zero) {
+        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b) +
+                             ": a homogeneous coordinate is a position only after the divide by w",
+                         lhs, rhs, op_range, "divide by w first (h.z / h.w), or compare homogeneous values of the same w",
+                         "E-KIND-MISMATCH");
         return error_value(range);
       }
       if (!consistent(a.from, b.from)) {
@@ -192,12 +200,14 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
   out.type = *shape;
   if (op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mod) {
-    if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+    const bool cosine_a = cosine_as_number(db, da), cosine_b = cosine_as_number(da, db);  // 1 - cos θ is a number
+    if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b) {
       operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
-                       physics_hint(da, db), "E-DIMENSION-MISMATCH");
+                       operand_hint(da, db, rhs.range), "E-DIMENSION-MISMATCH");
       return error_value(range);
     }
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
+    else if (!lhs.zero && !rhs.zero && (cosine_a || cosine_b)) out.type.dim = cosine_a ? db : da;
     else out.type.dim = lhs.zero ? db : da;
     out.type.dim.spelling.clear();
     out.zero = lhs.zero && rhs.zero;
@@ -268,10 +278,13 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       return reject("cannot subtract a point from " + name_of(a), "only point - point and point - vector are defined",
                     "E-POINT-ARITHMETIC");
     if (!consistent(a.from, b.from))
-      return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
+      return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces",
+                    ga == Geometry::hpoint && gb == Geometry::hpoint
+                        ? "divide each by its own w first (h.xy / h.w): two projections' coordinates meet only after the perspective divide"
+                        : space_hint(a.from, b.from),
                     "E-SPACE-MISMATCH");
     if (!lhs.zero && !rhs.zero && !consistent(da, db))
-      return reject(std::string("cannot ") + verb(op) + " " + both, physics_hint(da, db), "E-DIMENSION-MISMATCH");
+      return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), "E-DIMENSION-MISMATCH");
     const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
     out.type.dim.spelling.clear();
@@ -308,6 +321,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   const Geometry g = a_scalar ? gb : ga;
   const Type& geo = a_scalar ? b : a;
   if (a_scalar || b_scalar) {
+    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal)) out.type.dim = projected_component(*d);
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;
