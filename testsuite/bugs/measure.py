@@ -20,6 +20,9 @@ import sys
 
 import mutants
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
+import generated_section  # noqa: E402
+
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 BEGIN, END = "<!-- catalogue-measure:begin -->", "<!-- catalogue-measure:end -->"
@@ -132,20 +135,8 @@ def main() -> int:
         sys.stdout.write(table)
         return 0
     doc = pathlib.Path(args.write or args.check)
-    text = doc.read_text()
-    if BEGIN not in text or END not in text:
-        sys.exit(f"{doc}: no {BEGIN} … {END} markers")
-    head, rest = text.split(BEGIN, 1)
-    old, tail = rest.split(END, 1)
-    if args.check:
-        if old == "\n" + table:
-            return 0
-        sys.stdout.write(f"{doc}: the catalogue table is stale; run testsuite/bugs/measure.py <safegi_check_file> --write {doc}\n")
-        sys.stdout.write(table)
-        return 1
-    doc.write_text(head + BEGIN + "\n" + table + END + tail)
-    return 0
-
+    return generated_section.update(doc, BEGIN, END, table, bool(args.check),
+                                    f"testsuite/bugs/measure.py <safegi_check_file> --write {doc}")
 
 if __name__ == "__main__":
     sys.exit(main())

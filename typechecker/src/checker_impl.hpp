@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <safegi/diagnostics/codes.hpp>
+
 #include "builtins.hpp"
 #include "expansions.hpp"
 #include "symbols.hpp"

@@ -77,7 +77,7 @@ std::optional<Value> Checker::angle_conversion(const std::string& name, const Va
   if (!already) return std::nullopt;
   Diagnostic e = Diagnostic::error(arg.range, "argument 1 of '" + name + "' has type " + name_of(arg.type) + ", which is already in " +
                                                   (name == "radians" ? "radians" : "degrees"))
-                     .with_code("E-DIMENSION-MISMATCH");
+                     .with_code(code::E_DIMENSION_MISMATCH);
   add_origin_note(e, arg);
   e.with_hint(name == "radians" ? "radians() converts degrees (a plain number or float<angle in degree>); use the angle as it is"
                                 : "degrees() converts radians; use the angle as it is");
