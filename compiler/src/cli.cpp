@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <CLI/CLI.hpp>
+#include <safegi/diagnostics/codes.hpp>
 
 #include "safegi/compiler/compile.hpp"
 #include "safegi/compiler/spirv.hpp"
@@ -120,6 +121,18 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   bool werror = false, no_warnings = false, strict = false, write_depfile = false, desktop_default = false;
   bool auto_map_locations = false, auto_map_bindings = false, relaxed = false, debug_info = false;
   std::size_t error_limit = 0;
+  // `--explain CODE`, as rustc's: what a diagnostic code means; nothing is compiled, so no file is needed.
+  std::string explain_code;
+  app.add_option("--explain", explain_code, "print what a diagnostic code (E-DIMENSION-MISMATCH) means, and exit");
+  if (raw_args.size() == 2 && raw_args[0] == "--explain") {
+    const std::string text = explain_diagnostic_code(raw_args[1]);
+    if (text.empty()) {
+      io.err << "safeglslc: error: '" << raw_args[1] << "' is no diagnostic code (docs/typechecker.md lists them)\n";
+      return kExitUsage;
+    }
+    io.out << text;
+    return 0;
+  }
   app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
   app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
   // Each occurrence of a repeatable flag takes one value (`-D A file.frag`).

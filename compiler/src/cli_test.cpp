@@ -41,6 +41,16 @@ TEST(Safeglslc, HelpListsTheFlags) {
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
 }
 
+TEST(Safeglslc, ExplainPrintsWhatACodeMeans) {
+  CliRun r = run({"--explain", "E-UNIT-CAST"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("E-UNIT-CAST: a cast that would change the unit of a quantity", 0), 0u) << r.out;
+  CliRun unknown = run({"--explain", "E-DIM-MISMATCH"});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("'E-DIM-MISMATCH' is no diagnostic code"), std::string::npos) << unknown.err;
+  EXPECT_NE(run({"--help"}).out.find("--explain"), std::string::npos);
+}
+
 TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "safeglslc_cli_test";
   std::filesystem::create_directories(dir);

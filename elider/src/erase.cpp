@@ -9,6 +9,8 @@
 #include <tuple>
 #include <unordered_set>
 
+#include <safegi/diagnostics/codes.hpp>
+
 #include "safegi/elider/elider.hpp"
 #include "walk.hpp"
 
@@ -304,7 +306,7 @@ class Eraser {
   void cannot_rewrite(const ast::Node& node) {
     diags_.report(Diagnostic::error(node.range, "cannot erase this geometric operation: its operands come from "
                                                 "different macro expansions")
-                      .with_code("E-ELIDE-MACRO")
+                      .with_code(code::E_ELIDE_MACRO)
                       .with_hint("write the operation outside the macro, or make the macro expand to the whole operation"));
   }
 

@@ -20,6 +20,9 @@ import sys
 
 import mutants
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
+import generated_section  # noqa: E402
+
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 BEGIN, END = "<!-- catalogue-measure:begin -->", "<!-- catalogue-measure:end -->"
@@ -28,12 +31,38 @@ OTHER_CORRECT = ["examples/shaders", "preview/shaders", "compiler/testdata", "ru
 STAGES = ("vert", "frag", "geom", "comp", "tesc", "tese")
 
 
-def rejected(check_file: str, shader: pathlib.Path) -> bool:
-    """True when the checker reports an error for `shader` (run from its catalogue folder's parent)."""
+def diagnostics(check_file: str, shader: pathlib.Path) -> str:
+    """What the checker prints for `shader` (run from its catalogue folder)."""
     run = subprocess.run([check_file, str(shader)], cwd=shader.parent, capture_output=True, text=True)
     if run.returncode not in (0, 1):
         sys.exit(f"{shader}: safegi_check_file failed ({run.returncode}): {run.stderr}")
-    return ": error:" in run.stdout + run.stderr
+    return run.stdout + run.stderr
+
+
+def rejected(check_file: str, shader: pathlib.Path) -> bool:
+    return ": error:" in diagnostics(check_file, shader)
+
+
+def first_error(output: str) -> str:
+    """The first error's message and help lines (not its source lines or notes)."""
+    lines = output.splitlines()
+    start = next((i for i, line in enumerate(lines) if ": error:" in line), None)
+    if start is None:
+        return ""
+    text = [lines[start]]
+    for line in lines[start + 1:]:
+        if ": error:" in line or ": note:" in line or ": warning:" in line:
+            break
+        if line.startswith("help:"):
+            text.append(line)
+    return "\n".join(text)
+
+
+def names_cause(check_file: str, folder: str, name: str, shader: pathlib.Path) -> bool:
+    cause = mutants.CAUSES.get(folder, {}).get(name)
+    if cause is None:
+        sys.exit(f"{folder}/{name}: no entry in mutants.CAUSES (what the mistake is, as the diagnostic should name it)")
+    return cause.lower() in first_error(diagnostics(check_file, shader)).lower()
 
 
 def shader_of(folder: pathlib.Path, name: str) -> pathlib.Path:
@@ -46,11 +75,13 @@ def shader_of(folder: pathlib.Path, name: str) -> pathlib.Path:
 def measure(check_file: str) -> str:
     rows = []
     caught_total = mutant_total = escape_total = mutants_caught = mutants_total = 0
-    correct_ok = correct_total = 0
+    correct_ok = correct_total = named_total = 0
     classes = list(dict.fromkeys(list(mutants.MUTANTS) + list(mutants.ESCAPES)))
     for folder in classes:
         path = HERE / folder
         caught = sum(rejected(check_file, shader_of(path, name)) for name, _, _ in mutants.MUTANTS.get(folder, []))
+        named = sum(names_cause(check_file, folder, name, shader_of(path, name)) for name, _, _ in mutants.MUTANTS.get(folder, []))
+        named_total += named
         escapes = mutants.ESCAPES.get(folder, [])
         missed = [e for e in escapes if not rejected(check_file, shader_of(path, "escape_" + e[0]))]
         correct = not rejected(check_file, shader_of(path, "correct"))
@@ -65,7 +96,7 @@ def measure(check_file: str) -> str:
         cannot = [e[3] for e in missed]
         if folder in mutants.LIMITS:
             cannot.append(mutants.LIMITS[folder])
-        rows.append(f"| {folder} | {caught + len(escapes) - len(missed)} of {n + len(escapes)} | "
+        rows.append(f"| {folder} | {caught + len(escapes) - len(missed)} of {n + len(escapes)} | {named} of {n} | "
                     f"{'yes' if correct else '**no**'} | {'; '.join(cannot) or '—'} |")
     others = sorted(p for p in (HERE / "paper").glob("*.sgl.*"))
     for folder in OTHER_CORRECT:
@@ -82,10 +113,13 @@ def measure(check_file: str) -> str:
         f"and the {len(others) - len(list((HERE / 'paper').glob('*.sgl.*')))} annotated shaders of "
         + ", ".join(f"`{f}/`" for f in OTHER_CORRECT) + ".",
     ]
+    lines.append(f"Diagnostics that name the actual cause: **{named_total} of {mutants_total}** mutants "
+                 f"({100.0 * named_total / mutants_total:.1f} %): the first error's message or help contains the "
+                 "phrase `mutants.CAUSES` records for the mistake.")
     if false_positives:
         lines.append("Rejected although correct: " + ", ".join(str(p.relative_to(ROOT)) for p in false_positives) + ".")
-    lines += ["", "| class | mistakes rejected | correct accepted | what the language cannot express (right types, wrong value) |",
-              "|---|---|---|---|"] + rows
+    lines += ["", "| class | mistakes rejected | cause named | correct accepted | what the language cannot express (right types, wrong value) |",
+              "|---|---|---|---|---|"] + rows
     return "\n".join(lines) + "\n"
 
 
@@ -101,20 +135,8 @@ def main() -> int:
         sys.stdout.write(table)
         return 0
     doc = pathlib.Path(args.write or args.check)
-    text = doc.read_text()
-    if BEGIN not in text or END not in text:
-        sys.exit(f"{doc}: no {BEGIN} … {END} markers")
-    head, rest = text.split(BEGIN, 1)
-    old, tail = rest.split(END, 1)
-    if args.check:
-        if old == "\n" + table:
-            return 0
-        sys.stdout.write(f"{doc}: the catalogue table is stale; run testsuite/bugs/measure.py <safegi_check_file> --write {doc}\n")
-        sys.stdout.write(table)
-        return 1
-    doc.write_text(head + BEGIN + "\n" + table + END + tail)
-    return 0
-
+    return generated_section.update(doc, BEGIN, END, table, bool(args.check),
+                                    f"testsuite/bugs/measure.py <safegi_check_file> --write {doc}")
 
 if __name__ == "__main__":
     sys.exit(main())

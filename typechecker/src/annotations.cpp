@@ -56,7 +56,7 @@ void Checker::declare_dimension(const ast::DimensionDecl& d) {
   if (!d.definition) {
     if (reg.find_base(d.name)) return;  // repeated identically: a header included twice
     if (!reg.add_base(d.name))
-      report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+      report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
     return;
   }
   std::optional<DimSlot> value = resolve_dimension(d.definition);
@@ -66,11 +66,11 @@ void Checker::declare_dimension(const ast::DimensionDecl& d) {
     report(Diagnostic::error(d.name_range, "dimension '" + d.name + "' is redefined as " +
                                                reg.format_product(value->value) + "; it was " +
                                                reg.format_product(existing->value))
-               .with_code("E-REDECLARED"));
+               .with_code(code::E_REDECLARED));
     return;
   }
   if (!reg.add_derived(d.name, value->value))
-    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
 }
 
 namespace {
@@ -115,7 +115,7 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
   if (!dim || dim->state != DimSlot::State::known) return;
   if (result_.registry.has_unit_factors(dim->value)) {
     report(Diagnostic::error(d.dimension->range, "a unit is declared by the dimension it measures, without a unit")
-               .with_code("E-UNIT-SCALE")
+               .with_code(code::E_UNIT_SCALE)
                .with_hint("write the scale to the reference unit instead, e.g. unit foot : length = 12.0 * inch;"));
     return;
   }
@@ -124,7 +124,7 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
     report(Diagnostic::error(d.scale ? d.scale->range : d.name_range,
                              folded ? "the scale of unit '" + d.name + "' must be a positive finite number"
                                     : "the scale of unit '" + d.name + "' must be a constant of literals and earlier units")
-               .with_code("E-UNIT-SCALE")
+               .with_code(code::E_UNIT_SCALE)
                .with_hint("it is how many reference units one " + d.name + " is, e.g. unit centimeter : length = 0.01;"));
     return;
   }
@@ -132,18 +132,18 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
   DimensionRegistry& reg = result_.registry;
   if (const Unit* existing = reg.find_unit(d.name)) {
     if (existing->dimension == dim->value) return;
-    report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with another dimension").with_code("E-REDECLARED"));
+    report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with another dimension").with_code(code::E_REDECLARED));
     return;
   }
   if (!reg.add_unit(d.name, dim->value, scale))
-    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
 }
 
 void Checker::declare_space(const ast::SpaceDecl& d) {
   DimensionRegistry& reg = result_.registry;
   if (reg.find_space(d.name)) return;
   if (!reg.add_space(d.name))
-    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code("E-REDECLARED"));
+    report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
 }
 
 std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
@@ -169,7 +169,7 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
              measured + " in " + name->name + "'";
     }
     else if (reg.base_count() == 0) hint = "did you forget '#include <safegi/prelude.sgl>'?";
-    Diagnostic d = Diagnostic::error(e->range, message).with_code("E-UNKNOWN-DIMENSION");
+    Diagnostic d = Diagnostic::error(e->range, message).with_code(code::E_UNKNOWN_DIMENSION);
     if (!hint.empty()) d.with_hint(hint);
     report(std::move(d));
     return std::nullopt;
@@ -182,25 +182,27 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
     std::optional<Dimension> u = resolve_unit(measured->unit);
     if (!d || !u) return std::nullopt;
     if (d->state != DimSlot::State::known) {
-      report(Diagnostic::error(measured->in_range, "a generic dimension cannot carry a unit").with_code("E-UNIT-DIMENSION"));
+      report(Diagnostic::error(measured->in_range, "a generic dimension cannot carry a unit").with_code(code::E_UNIT_DIMENSION));
       return std::nullopt;
     }
     Checked<Dimension> ref = reg.reference(*u);
     if (!ref || !(*ref == d->value)) {
       report(Diagnostic::error(measured->unit->range, reg.format_units(*u) + " measures " + (ref ? reg.format(*ref) : "?") +
                                                           ", not " + reg.format(d->value))
-                 .with_code("E-UNIT-DIMENSION")
+                 .with_code(code::E_UNIT_DIMENSION)
                  .with_highlight(measured->dimension->range));
       return std::nullopt;
     }
-    return DimSlot::known(*u);
+    // The declaration's name is kept (inv_length in kilometer⁻¹, not the first-declared pdf_length).
+    const bool named = !d->spelling.empty() && reg.has_unit_factors(*u);
+    return DimSlot::known(*u, named ? d->spelling + " in " + reg.format_units(*u) : d->spelling);
   }
   if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
     std::optional<DimSlot> l = resolve_dimension(bin->lhs);
     std::optional<DimSlot> r = resolve_dimension(bin->rhs);
     if (!l || !r) return std::nullopt;
     std::optional<DimSlot> out = combine(*l, *r, bin->is_division ? -1 : 1);
-    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code(code::E_DIMENSION_OVERFLOW));
     if (out) out->spelling.clear();
     return out;
   }
@@ -208,7 +210,7 @@ std::optional<DimSlot> Checker::resolve_dimension(const ast::DimExpr* e) {
     std::optional<DimSlot> b = resolve_dimension(pow->base);
     if (!b) return std::nullopt;
     std::optional<DimSlot> out = raise(*b, pow->exponent);
-    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    if (!out) report(Diagnostic::error(e->range, "dimension exponent overflows").with_code(code::E_DIMENSION_OVERFLOW));
     if (out) out->spelling.clear();
     return out;
   }
@@ -222,7 +224,7 @@ std::optional<Dimension> Checker::resolve_unit(const ast::DimExpr* e) {
     if (std::optional<Dimension> d = reg.find_dimension(name->name)) return *d;  // its reference unit
     Diagnostic d = Diagnostic::error(e->range, reg.find_space(name->name) ? "'" + name->name + "' is a space, not a unit"
                                                                          : "unknown unit '" + name->name + "'")
-                       .with_code("E-UNKNOWN-UNIT");
+                       .with_code(code::E_UNKNOWN_UNIT);
     if (!reg.find_space(name->name)) d.with_hint("declare it with its scale, e.g. 'unit " + name->name + " : length = 0.3048;'");
     report(std::move(d));
     return std::nullopt;
@@ -230,7 +232,7 @@ std::optional<Dimension> Checker::resolve_unit(const ast::DimExpr* e) {
   if (ast::isa<ast::DimOne>(e)) return Dimension{};
   if (const auto* paren = ast::dyn_cast<ast::DimParen>(e)) return resolve_unit(paren->inner);
   auto overflow = [&]() -> std::optional<Dimension> {
-    report(Diagnostic::error(e->range, "unit exponent overflows").with_code("E-DIMENSION-OVERFLOW"));
+    report(Diagnostic::error(e->range, "unit exponent overflows").with_code(code::E_DIMENSION_OVERFLOW));
     return std::nullopt;
   };
   if (const auto* bin = ast::dyn_cast<ast::DimBinary>(e)) {
@@ -247,7 +249,7 @@ std::optional<Dimension> Checker::resolve_unit(const ast::DimExpr* e) {
     if (!out) return overflow();
     return *out;
   }
-  report(Diagnostic::error(e->range, "expected a unit").with_code("E-UNKNOWN-UNIT"));
+  report(Diagnostic::error(e->range, "expected a unit").with_code(code::E_UNKNOWN_UNIT));
   return std::nullopt;
 }
 
@@ -257,7 +259,7 @@ std::optional<long long> Checker::array_size(const ast::ArrayDim& dim) {
   validate_array_size(dim, v);
   if (v.constant) {
     if (*v.constant <= 0) {
-      report(Diagnostic::error(dim.size->range, "array size must be greater than zero").with_code("E-ARRAY-SIZE"));
+      report(Diagnostic::error(dim.size->range, "array size must be greater than zero").with_code(code::E_ARRAY_SIZE));
       return std::nullopt;
     }
     return v.constant;
@@ -272,7 +274,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
   auto space_arg = [&](const ast::Node* arg, SpaceSlot& slot) -> bool {
     const auto* name = ast::dyn_cast<ast::DimName>(arg);
     if (!name) {
-      report(Diagnostic::error(arg->range, "expected a space name").with_code("E-EXPECTED-SPACE"));
+      report(Diagnostic::error(arg->range, "expected a space name").with_code(code::E_EXPECTED_SPACE));
       return false;
     }
     if (template_spaces_) {
@@ -291,20 +293,20 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     Diagnostic d = Diagnostic::error(arg->range, reg.find_dimension(name->name)
                                                      ? "'" + name->name + "' is a dimension, not a space"
                                                      : "unknown space '" + name->name + "'")
-                       .with_code("E-UNKNOWN-SPACE");
+                       .with_code(code::E_UNKNOWN_SPACE);
     if (!reg.find_dimension(name->name)) d.with_hint("declare it with 'space " + name->name + ";'");
     report(std::move(d));
     return false;
   };
   auto dim_arg = [&](const ast::Node* arg) -> std::optional<DimSlot> {
     if (const auto* e = ast::dyn_cast<ast::DimExpr>(arg)) return resolve_dimension(e);
-    report(Diagnostic::error(arg->range, "expected a dimension").with_code("E-EXPECTED-DIMENSION"));
+    report(Diagnostic::error(arg->range, "expected a dimension").with_code(code::E_EXPECTED_DIMENSION));
     return std::nullopt;
   };
   auto arity = [&](std::size_t lo, std::size_t hi, const char* what) -> bool {
     const std::size_t n = spec->annotation->args.size();
     if (n >= lo && n <= hi) return true;
-    report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' takes " + what).with_code("E-ANNOTATION-ARITY"));
+    report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' takes " + what).with_code(code::E_ANNOTATION_ARITY));
     return false;
   };
 
@@ -313,7 +315,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       std::optional<Type> base = glsl_builtin_type(spec->name);
       if (!base && extension_name(spec->name)) return Type::error();  // left to the driver
       if (!base) {
-        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code(code::E_UNKNOWN_TYPE));
         return Type::error();
       }
       t = *base;
@@ -325,7 +327,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
           if (!texel) {
             report(Diagnostic::error(arg->range, "a sampler's annotation is its texel type, e.g. " + spec->name +
                                                      "<float<length>>")
-                       .with_code("E-EXPECTED-TEXEL"));
+                       .with_code(code::E_EXPECTED_TEXEL));
             return Type::error();
           }
           Type texel_type = resolve_type(texel);
@@ -337,7 +339,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
           t.dim = *d;
         } else {
           report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' cannot carry a dimension")
-                     .with_code("E-NOT-ANNOTATABLE"));
+                     .with_code(code::E_NOT_ANNOTATABLE));
           return Type::error();
         }
       }
@@ -354,7 +356,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       for (const auto& w : kWords)
         if (spec->name == w.word) g = w.geometry;
       if (g == Geometry::none || !spec->annotation) {
-        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code(code::E_UNKNOWN_TYPE));
         return Type::error();
       }
       t = is_map(g) ? Type::matrix_of(Scalar::float_, 4, 4) : Type::vector_of(Scalar::float_, g == Geometry::hpoint ? 4 : 3);
@@ -412,7 +414,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
         break;
       }
       if (it == structs_.end()) {
-        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code("E-UNKNOWN-TYPE"));
+        report(Diagnostic::error(spec->name_range, "unknown type '" + spec->name + "'").with_code(code::E_UNKNOWN_TYPE));
         return Type::error();
       }
       t.shape = Shape::structure;

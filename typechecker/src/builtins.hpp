@@ -19,6 +19,7 @@ namespace safegi {
 enum class BuiltinRule : std::uint8_t {
   plain,             // the signature says everything
   pow,               // genF<1> ^ genF<1>, or float<D> ^ integer constant n -> float<D^n>
+  angle_unit,        // radians/degrees: also an angle in the other unit -> that angle in this one (dimension_rules.cpp)
   normal_transform,  // a normal through a non-rigid map: the elider uses the inverse transpose
   point_misuse,      // a point where the function needs a vector: matching this row is an error (E-POINT-ARITHMETIC)
   texture,           // texture*(sampler<T>, ...) -> the sampler's texel, as gvec4 (or float for shadow)
@@ -68,7 +69,7 @@ class BuiltinLibrary {
 
 // Rules typed by their signature text (the others are typed by code from an opaque argument).
 inline bool has_signature(BuiltinRule r) {
-  return r == BuiltinRule::plain || r == BuiltinRule::pow || r == BuiltinRule::normal_transform || r == BuiltinRule::point_misuse;
+  return r == BuiltinRule::plain || r == BuiltinRule::pow || r == BuiltinRule::angle_unit || r == BuiltinRule::normal_transform || r == BuiltinRule::point_misuse;
 }
 
 // One call argument as matching sees it.

@@ -113,7 +113,7 @@ Value Checker::call(const ast::CallExpr& e) {
   std::string message = "use of undeclared function '" + e.callee + "'";
   if (lookup(e.callee)) message = "called object '" + e.callee + "' is not a function";
   if (e.callee.rfind("gl", 0) == 0 || bad || extension_name(e.callee)) return error_value(e.range);  // unmodelled extension built-ins
-  report(Diagnostic::error(e.callee_range, message).with_code("E-UNDECLARED-FUNCTION"));
+  report(Diagnostic::error(e.callee_range, message).with_code(code::E_UNDECLARED_FUNCTION));
   return error_value(e.range);
 }
 
@@ -121,7 +121,7 @@ Value Checker::method_call(const ast::MethodCallExpr& e) {
   Value base = expr(e.base);
   if (base.type.is_error()) return error_value(e.range);
   if (e.method != "length" || !e.args.empty()) {
-    report(Diagnostic::error(e.method_range, "unknown method '" + e.method + "'; GLSL has only .length()").with_code("E-METHOD"));
+    report(Diagnostic::error(e.method_range, "unknown method '" + e.method + "'; GLSL has only .length()").with_code(code::E_METHOD));
     return error_value(e.range);
   }
   const Type& t = base.type;
@@ -135,7 +135,7 @@ Value Checker::method_call(const ast::MethodCallExpr& e) {
   } else if (t.shape == Shape::matrix) {
     out.constant = t.columns;
   } else {
-    report(Diagnostic::error(e.method_range, ".length() needs an array, vector or matrix, not " + name_of(t)).with_code("E-METHOD"));
+    report(Diagnostic::error(e.method_range, ".length() needs an array, vector or matrix, not " + name_of(t)).with_code(code::E_METHOD));
     return error_value(e.range);
   }
   return out;
@@ -149,7 +149,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   std::optional<ShapeMatch> match = match_shapes(sigs, infos);
   if (!match) {
     Diagnostic d = Diagnostic::error(callee_range, "no matching overload for call to '" + name + "(" + arguments_text(args, *this) + ")'")
-                       .with_code("E-NO-OVERLOAD");
+                       .with_code(code::E_NO_OVERLOAD);
     for (const Value& a : args) d.with_highlight(a.range);
     std::string candidates;
     int shown = 0;
@@ -174,7 +174,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     if (sig.params[i].is_out && (!args[i].lvalue || args[i].read_only)) {
       report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + name +
                                                   "' is an out parameter and needs a writable variable")
-                 .with_code("E-NOT-ASSIGNABLE"));
+                 .with_code(code::E_NOT_ASSIGNABLE));
       return error_value(call_range);
     }
   }
@@ -188,20 +188,21 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     // float<D> ^ n with n an integer constant: the result is D^n.
     const DimSlot base = value_dimension(args[0].type, result_.registry);
     const bool dimensioned = base.state == DimSlot::State::generic ||
-                             (base.state == DimSlot::State::known && !base.value.is_dimensionless());
+                             (base.state == DimSlot::State::known && !base.value.is_dimensionless() &&
+                              !cosine_as_number(DimSlot::known(Dimension{}), base));  // a lobe: pow(cos θ, n)
     if (dimensioned) {
       const std::optional<double> n = args[1].number;
       if (!n || std::floor(*n) != *n || std::fabs(*n) > 1e6) {
         Diagnostic d = Diagnostic::error(args[1].range, "pow of " + name_of(args[0].type) +
                                                             " needs a constant integer exponent (or a dimensionless base)")
-                           .with_code("E-POW-EXPONENT")
+                           .with_code(code::E_POW_EXPONENT)
                            .with_highlight(args[0].range);
         report(std::move(d));
         return error_value(call_range);
       }
       std::optional<DimSlot> d = raise(base, static_cast<long long>(*n));
       if (!d) {
-        report(Diagnostic::error(call_range, "dimension exponent overflows in pow").with_code("E-DIMENSION-OVERFLOW"));
+        report(Diagnostic::error(call_range, "dimension exponent overflows in pow").with_code(code::E_DIMENSION_OVERFLOW));
         return error_value(call_range);
       }
       Value out;
@@ -212,6 +213,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
       return out;
     }
   }
+
+  if (sig.rule == BuiltinRule::angle_unit && args.size() == 1)
+    if (std::optional<Value> v = angle_conversion(name, args[0], shape.result, call_range)) return *v;
 
   std::optional<Type> result = unify_call(name, shape, args, call_range);
   if (!result) return error_value(call_range);
@@ -275,7 +279,7 @@ void Checker::point_given_for_vector(const std::string& name, const Signature& s
     message = "'" + name + "' needs vectors, directions or normals, not " + what + ": a point is a position";
     hint = "subtract the point it is measured from (" + q + " - p is a vector); " + origin;
   }
-  Diagnostic d = Diagnostic::error(p.range, message).with_code("E-POINT-ARITHMETIC");
+  Diagnostic d = Diagnostic::error(p.range, message).with_code(code::E_POINT_ARITHMETIC);
   add_origin_note(d, p);
   d.with_hint(hint);
   report(std::move(d));
@@ -297,7 +301,7 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
         hint = "apply the projective map last: it goes leftmost, projmap * map";
       }
     }
-    operand_mismatch(message, lhs, rhs, range, hint, "E-INVALID-OPERANDS");
+    operand_mismatch(message, lhs, rhs, range, hint, code::E_INVALID_OPERANDS);
     return std::nullopt;
   }
   Value v = builtin_call(static_cast<const ast::CallExpr*>(nullptr), builtin, *sigs, args, range, range);
@@ -362,13 +366,16 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
         if (applying && i == 1 && args.size() == 2)
           message = "cannot apply " + name_of(args[0].type) + " to " + name_of(a.type) + ": the map takes values in " + space_word;
         std::string hint = space_hint(expected, *aslots[k]);
+        if (applying && i == 1 && args.size() == 2 && a.type.from.state == SpaceSlot::State::known && a.type.from == args[0].type.to)
+          hint = (a.name.empty() ? std::string("the value") : "'" + a.name + "'") + " is already in " + name_of_space(a.type.from) +
+                 ", where the map leads: use it as it is, or apply the map to a value in " + space_word;
         if (callee == "compose" && args.size() == 2) {
           message = "cannot compose " + name_of(args[0].type) + " with " + name_of(args[1].type) +
                     ": the right-hand map ends in " + name_of_space(args[1].type.to) + " but the left-hand one starts in " +
                     name_of_space(args[0].type.from);
           hint = compose_hint(args[0].type, args[1].type);
         }
-        arg_error(i, message, hint, "E-SPACE-MISMATCH");
+        arg_error(i, message, hint, code::E_SPACE_MISMATCH);
         return std::nullopt;
       }
     }
@@ -378,10 +385,10 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
     std::optional<Dimension> ar = rigid(ad);
     if (!ar) continue;
     if (p.dim.state == DimSlot::State::known) {
-      if (!(p.dim.value == *ar)) {
+      if (!(p.dim.value == *ar) && !cosine_as_number(p.dim, ad)) {
         arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " + fn +
                          " expects " + name_of(p, shape),
-                  physics_hint(p.dim, ad), "E-DIMENSION-MISMATCH");
+                  physics_hint(p.dim, ad, a.range), code::E_DIMENSION_MISMATCH);
         return std::nullopt;
       }
     } else if (p.dim.state == DimSlot::State::generic) {
@@ -428,13 +435,13 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
     } else {
       message += ", which conflicts with the other arguments";
     }
-    arg_error(i, message, expected ? physics_hint(*expected, found) : "", "E-DIMENSION-MISMATCH");
+    arg_error(i, message, expected ? physics_hint(*expected, found) : "", code::E_DIMENSION_MISMATCH);
     return std::nullopt;
   }
   if (solved.status == UnifyStatus::non_integer || solved.status == UnifyStatus::overflow) {
     std::string args_text = arguments_text(args, *this);
     Diagnostic d = Diagnostic::error(call_range, "cannot call " + fn + " with (" + args_text + "): " + dims.explain(solved, reg))
-                       .with_code(solved.status == UnifyStatus::overflow ? "E-DIMENSION-OVERFLOW" : "E-DIMENSION-ROOT");
+                       .with_code(solved.status == UnifyStatus::overflow ? code::E_DIMENSION_OVERFLOW : code::E_DIMENSION_ROOT);
     for (const Value& a : args) d.with_highlight(a.range);
     report(std::move(d));
     return std::nullopt;
@@ -543,7 +550,7 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   symbols_.use_function(e.callee, e.callee_range, named.decl, named.result);
   if (!best && viable.size() > 1) {
     Diagnostic d = Diagnostic::error(e.callee_range, "call to '" + e.callee + "(" + arguments_text(args, *this) + ")' is ambiguous")
-                       .with_code("E-AMBIGUOUS-CALL");
+                       .with_code(code::E_AMBIGUOUS_CALL);
     for (const auto& [f, conv] : viable)
       d.with_note(Diagnostic::note(f->decl->name_range, "candidate: " + f->name + "(" + parameters_text(*f, result_.registry) + ")"));
     d.with_hint("GLSL prefers an exact match, then float→double, then int→float over int→double");
@@ -553,9 +560,20 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   if (!best) {
     Diagnostic d = Diagnostic::error(e.callee_range, "no matching function for call to '" + e.callee + "(" +
                                                          arguments_text(args, *this) + ")'")
-                       .with_code("E-NO-OVERLOAD");
+                       .with_code(code::E_NO_OVERLOAD);
     for (const Function& f : overloads)
       d.with_note(Diagnostic::note(f.decl->name_range, "candidate: " + f.name + "(" + parameters_text(f, result_.registry) + ")"));
+    // One candidate: say which argument's kind keeps it out (a vector for a direction<S> parameter).
+    const Function& only = overloads.front();
+    for (std::size_t i = 0; overloads.size() == 1 && i < args.size() && i < only.params.size(); ++i) {
+      const Geometry want = only.params[i].geometry, have = args[i].type.geometry;
+      if (want == Geometry::none || have == Geometry::none || kind_fits(have, want)) continue;
+      std::string why = kind_mismatch_hint(want, have);
+      d.with_highlight(args[i].range);
+      d.with_hint("argument " + std::to_string(i + 1) + " is " + name_of(args[i].type) + " but the parameter is " +
+                  type_name(only.params[i], result_.registry, &only.dim_params, &only.space_params) + (why.empty() ? "" : ": " + why));
+      break;
+    }
     report(std::move(d));
     return error_value(e.range);
   }
@@ -563,7 +581,7 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
     if (best->out_params[i] && (!args[i].lvalue || args[i].read_only)) {
       report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + e.callee +
                                                   "' is an out parameter and needs a writable variable")
-                 .with_code("E-NOT-ASSIGNABLE"));
+                 .with_code(code::E_NOT_ASSIGNABLE));
       return error_value(e.range);
     }
     // Kinds: a geometric parameter takes the same kind (or an unannotated value).

@@ -104,7 +104,7 @@ void check_interface_match(const CheckResult& producer, const CheckResult& consu
     const std::string matched = how == "name" ? "" : " (matched by " + how + ")";
     diagnostics.report(Diagnostic::error(in.range, "input '" + in.name + "' has type " + in_text + " but the " + producer_stage +
                                                        " stage's output '" + out->name + "'" + matched + " has type " + out_text)
-                           .with_code("E-STAGE-MISMATCH")
+                           .with_code(code::E_STAGE_MISMATCH)
                            .with_note(Diagnostic::note(out->range, "output '" + out->name + "' declared here as " + out_text)));
   }
 }

@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <safegi/diagnostics/codes.hpp>
+
 #include "builtins.hpp"
 #include "expansions.hpp"
 #include "symbols.hpp"
@@ -204,13 +206,32 @@ class Checker {
   // A call through a subroutine uniform (`f(x)`, `f[i](x)`), or nothing when `e` calls no subroutine uniform.
   std::optional<Value> subroutine_call(const ast::CallExpr& e, std::vector<Value>& args);
 
-  // mismatch.cpp
-  std::string physics_hint(const DimSlot& expected, const DimSlot& found) const;
+  std::string member_path(const ast::Expr* target, const std::string& variable) const;  // for messages: `block.member`
+  // dimension_rules.cpp: a cosine used as a number or as a component; radians()/degrees() of angles in units.
+  bool cosine_as_number(const DimSlot& expected, const DimSlot& found) const;
+  DimSlot projected_component(const DimSlot& scale) const;
+  std::optional<Value> angle_conversion(const std::string& name, const Value& arg, const Type& result, SourceRange call_range);
+
+  // mismatch.cpp. Hints read the found value's expression (its factors) when given its range.
+  struct ProductFactor {
+    std::string name;  // an identifier or member; empty for other expressions
+    DimSlot dim;
+    int sign = 1;      // 1: a factor, -1: a divisor
+    bool unit = false;     // a unit name used as a number (degree, steradian)
+    bool literal = false;
+  };
+  std::vector<ProductFactor> product_factors(SourceRange range) const;
+  std::string physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range = {}) const;
+  std::string operand_hint(const DimSlot& left, const DimSlot& right, SourceRange right_range) const;  // a + b, a - b
+  std::string lambert_hint() const;
+  std::string unit_vector_sum_hint(const Value& lhs, const Value& rhs, const DimSlot& left, const DimSlot& right) const;
   // Two dimensions, at least one with units: the conversion when they measure the same, else the physics hint.
-  std::string unit_hint(const Dimension& expected, const Dimension& found) const;
+  std::string unit_hint(const Dimension& expected, const Dimension& found, SourceRange found_range = {},
+                        const std::string& found_spelling = {}) const;
   // How `x in …` names the unit of `d`: `centimeter`, `(meter^2)`.
   std::string conversion_target(const Dimension& d) const;
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
+  std::string kind_mismatch_hint(Geometry expected, Geometry found) const;
   // Why `left * right` does not compose when their spaces do not meet: wrong order, an inverse, or the space needed.
   std::string compose_hint(const Type& left, const Type& right) const;
   std::string name_of_space(const SpaceSlot& s) const { return space_text(s, result_.registry, template_spaces_); }

@@ -33,7 +33,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
   out.range = e.range;
   out.type = t;
   const std::string what = name_of(t);
-  auto fail = [&](SourceRange r, const std::string& message, const std::string& hint = {}, const char* code = "E-CONSTRUCTOR") {
+  auto fail = [&](SourceRange r, const std::string& message, const std::string& hint = {}, const char* code = code::E_CONSTRUCTOR) {
     Diagnostic d = Diagnostic::error(r, message).with_code(code);
     if (!hint.empty()) d.with_hint(hint);
     report(std::move(d));
@@ -109,7 +109,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
         const double factor = reg.scale(from.value) / reg.scale(to.value);
         Diagnostic d = Diagnostic::error(args[0].range, "a cast to " + what + " would read " + reg.format_units(from.value) +
                                                             " as " + reg.format_units(to.value) + ": a cast keeps the number")
-                           .with_code("E-UNIT-CAST");
+                           .with_code(code::E_UNIT_CAST);
         add_origin_note(d, args[0]);
         d.with_hint(reg.reference(from.value) && reg.reference(to.value) && *reg.reference(from.value) == *reg.reference(to.value)
                         ? "convert instead: x in " + conversion_target(to.value) + " (× " + format_number(factor) + ")"
@@ -128,7 +128,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
       if (a.zero || a.literal || have.state == DimSlot::State::unknown) continue;
       if (!consistent(want, have) || (a.type.geometry != Geometry::none && a.type.geometry != Geometry::spectrum)) {
         Diagnostic d = Diagnostic::error(a.range, "a component of type " + name_of(a.type) + " cannot build " + what)
-                           .with_code("E-DIMENSION-MISMATCH");
+                           .with_code(code::E_DIMENSION_MISMATCH);
         add_origin_note(d, a);
         std::string hint = physics_hint(want, have);
         d.with_hint(hint.empty() ? "to reinterpret a value, cast the whole of it: " + what + "(v)" : hint);
@@ -183,7 +183,7 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
   auto no_match = [&]() {
     std::string text;
     for (const Value& a : args) text += (text.empty() ? "" : ", ") + name_of(a.type);
-    report(Diagnostic::error(call_range, "no matching overload for call to '" + sig.name + "(" + text + ")'").with_code("E-NO-OVERLOAD"));
+    report(Diagnostic::error(call_range, "no matching overload for call to '" + sig.name + "(" + text + ")'").with_code(code::E_NO_OVERLOAD));
     return error_value(call_range);
   };
   if (sig.rule == BuiltinRule::atomic_counter) {
@@ -208,7 +208,7 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
       sig.name.find("Proj") == std::string::npos) {
     Diagnostic d = Diagnostic::error(args[1].range, "texture coordinates of type " + name_of(args[1].type) +
                                                         " are homogeneous: the perspective divide by w is missing")
-                       .with_code("E-KIND-MISMATCH");
+                       .with_code(code::E_KIND_MISMATCH);
     add_origin_note(d, args[1]);
     d.with_hint("divide by w first (h.xy / h.w, or homogenize(h) for a point), or let " +
                 std::string(sig.name.rfind("texture", 0) == 0 ? "textureProj" : "the *Proj lookup") + " divide");
@@ -220,7 +220,7 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
       name.find("Cube") != std::string::npos) {
     Diagnostic d = Diagnostic::error(args[1].range, "a cube map is looked up by direction, not by " + name_of(args[1].type) +
                                                         ": a point is a position")
-                       .with_code("E-POINT-ARITHMETIC");
+                       .with_code(code::E_POINT_ARITHMETIC);
     add_origin_note(d, args[1]);
     d.with_hint("look up the direction towards what is seen, e.g. a reflected direction reflect(-wo, n), or normalize(q - p)");
     report(std::move(d));

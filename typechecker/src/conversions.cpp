@@ -58,7 +58,7 @@ Value Checker::convert(const ast::ConvertExpr& e) {
     if (std::optional<SpaceId> s = result_.registry.find_space(name->name)) return convert_space(e, v, SpaceSlot::known(*s));
     if (!result_.registry.find_unit(name->name) && !result_.registry.find_dimension(name->name)) {
       report(Diagnostic::error(e.target->range, "unknown space or unit '" + name->name + "'")
-                 .with_code("E-UNKNOWN-SPACE")
+                 .with_code(code::E_UNKNOWN_SPACE)
                  .with_hint("'in' converts to a declared space ('space " + name->name + ";') or unit ('unit " + name->name +
                             " : length = 0.3048;')"));
       return error_value(e.range);
@@ -87,7 +87,7 @@ Value Checker::convert_unit(const ast::ConvertExpr& e, const Value& v, const Dim
                 t.geometry == Geometry::point ? "a point's coordinates are lengths in the reference unit; convert its difference "
                                                 "from another point, a vector"
                                               : "",
-                "E-TYPE-MISMATCH");
+                code::E_TYPE_MISMATCH);
   Value out = v;
   out.range = e.range;
   out.lvalue = false;
@@ -104,7 +104,7 @@ Value Checker::convert_unit(const ast::ConvertExpr& e, const Value& v, const Dim
     return fail("cannot convert " + name_of(t) + " to " + unit_text + ": its dimension is not known here",
                 from.state == DimSlot::State::generic ? "a generic quantity has no unit to convert from"
                                                       : "annotate it first, e.g. float<" + reg.format(*reg.reference(target)) + ">(x)",
-                "E-DIMENSION-MISMATCH");
+                code::E_DIMENSION_MISMATCH);
   Checked<Dimension> have = reg.reference(from.value), want = reg.reference(target);
   if (!have || !want || !(*have == *want)) {
     std::string hint = want && have ? physics_hint(DimSlot::known(*want), DimSlot::known(*have)) : "";
@@ -119,7 +119,7 @@ Value Checker::convert_unit(const ast::ConvertExpr& e, const Value& v, const Dim
       hint = "'in' binds tighter than '*' and '/': (a * b) in " + conversion_target(target) + " converts a product";
     return fail("cannot convert " + name_of(t) + " to " + unit_text + ": " + unit_text + " measures " +
                     (want ? reg.format(*want) : std::string("?")),
-                hint, "E-DIMENSION-MISMATCH");
+                hint, code::E_DIMENSION_MISMATCH);
   }
   info.factor = reg.scale(from.value) / reg.scale(target);
   out.type.dim = DimSlot::known(target);
@@ -133,7 +133,7 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
   const Geometry kind = t.geometry;
   const std::string target_text = name_of_space(target);
   auto fail = [&](const std::string& message, const std::string& hint, std::vector<Diagnostic> notes = {}) {
-    Diagnostic d = Diagnostic::error(e.range, message).with_code("E-SPACE-MISMATCH").with_highlight(e.operand->range);
+    Diagnostic d = Diagnostic::error(e.range, message).with_code(code::E_SPACE_MISMATCH).with_highlight(e.operand->range);
     add_origin_note(d, v);
     for (Diagnostic& n : notes) d.with_note(std::move(n));
     if (!hint.empty()) d.with_hint(hint);
@@ -245,8 +245,11 @@ Value Checker::convert_space(const ast::ConvertExpr& e, const Value& v, const Sp
       hint += " (a projmap applies only to points)";
     // A map that would finish the chain the other way round: 'in' does not invert maps.
     for (const MapEdge& edge : edges) {
-      if (!(edge.from == target) || edge.kind == Geometry::projmap) continue;
-      if (!reached.count(Node{edge.to, false})) continue;
+      if (edge.kind == Geometry::projmap) continue;
+      // Into the value's space when no map leaves it (world → light for a point in light), or out of the
+      // target into a space reached.
+      const bool into_value = reached.size() == 1 && edge.to == t.from && !(edge.from == t.from);
+      if (!into_value && (!(edge.from == target) || !reached.count(Node{edge.to, false}))) continue;
       hint += "; '" + edge.variable->name + "' goes the other way (" + name_of_space(edge.from) + " → " + name_of_space(edge.to) +
               ") and 'in' does not invert maps: declare its inverse, or write inverse(" + edge.variable->name + ") * …";
       break;

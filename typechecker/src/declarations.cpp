@@ -162,7 +162,7 @@ void Checker::declare_variable(Variable v) {
     return before.is_array() && before.array[0] < 0 && v.type.is_array() && same_glsl_type(before.element(), v.type.element());
   };
   if (it != scope.end() && !it->second.builtin && v.name.rfind("gl_", 0) != 0 && !sizes_unsized_array(it->second.type)) {
-    Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code("E-REDEFINITION");
+    Diagnostic d = Diagnostic::error(v.range, "redefinition of '" + v.name + "'").with_code(code::E_REDEFINITION);
     d.with_note(Diagnostic::note(it->second.range, "previous definition is here"));
     report(std::move(d));
     return;
@@ -194,7 +194,7 @@ void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& 
   if (options_.strict && !iv.annotated && (t.shape == Shape::scalar || t.shape == Shape::vector || t.shape == Shape::matrix) &&
       t.scalar != Scalar::bool_ && t.is_floating()) {
     report(Diagnostic::warning(range, "interface variable '" + name + "' has no annotation")
-               .with_code("W-UNANNOTATED-INTERFACE")
+               .with_code(code::W_UNANNOTATED_INTERFACE)
                .with_hint("give it a dimension or a space, e.g. '" + glsl_name(t.element()) + "<1>' if it is a pure number"));
   }
   result_.interface.push_back(std::move(iv));
@@ -235,7 +235,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     v.read_only = is_const || (global && is_input);
     v.origin = {decl.name_range, "'" + decl.name + "' declared here"};
     if (declared.shape == Shape::void_) {
-      report(Diagnostic::error(decl.name_range, "variable '" + decl.name + "' declared void").with_code("E-VOID-VARIABLE"));
+      report(Diagnostic::error(decl.name_range, "variable '" + decl.name + "' declared void").with_code(code::E_VOID_VARIABLE));
       declared = Type::error();
     }
     if (const auto* list = ast::dyn_cast<ast::InitializerList>(decl.initializer)) {
@@ -264,7 +264,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       if (is_const && init.constant && declared.shape == Shape::scalar && declared.is_integer()) v.constant = init.constant;
       if (is_const && init.number && declared.shape == Shape::scalar && declared.is_floating()) v.number = init.number;
     } else if (is_const && !global) {
-      report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code("E-CONST-INIT"));
+      report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code(code::E_CONST_INIT));
     }
     if (is_const && decl.initializer) validate_const_initializer(decl, global);
     else if (global && decl.initializer) validate_global_initializer(decl);
@@ -351,11 +351,11 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
   if (existing) {
     if (existing->defined && f.defined) {
       report(Diagnostic::error(d.name_range, "redefinition of '" + d.name + "'")
-                 .with_code("E-REDEFINITION")
+                 .with_code(code::E_REDEFINITION)
                  .with_note(Diagnostic::note(existing->decl->name_range, "previous definition is here")));
     } else if (!same_glsl_type(existing->result, f.result)) {
       report(Diagnostic::error(d.name_range, "'" + d.name + "' is redeclared with a different return type")
-                 .with_code("E-REDEFINITION")
+                 .with_code(code::E_REDEFINITION)
                  .with_note(Diagnostic::note(existing->decl->name_range, "previous declaration is here")));
     }
     if (f.defined) *existing = f;
@@ -432,7 +432,7 @@ void Checker::statement(const ast::Stmt* s) {
       const auto* sw = static_cast<const ast::SwitchStmt*>(s);
       Value sel = expr(sw->selector);
       if (!sel.type.is_error() && !(sel.type.shape == Shape::scalar && sel.type.is_integer() && !sel.type.is_array()))
-        report(Diagnostic::error(sel.range, "switch selector must be int or uint, found " + name_of(sel.type)).with_code("E-SWITCH-TYPE"));
+        report(Diagnostic::error(sel.range, "switch selector must be int or uint, found " + name_of(sel.type)).with_code(code::E_SWITCH_TYPE));
       validate_switch(*sw, sel.type);  // opens the switch its case labels are checked against
       ++loop_depth_;  // `break` is valid inside a switch
       statement(sw->body);
@@ -480,11 +480,11 @@ void Checker::statement(const ast::Stmt* s) {
       if (loop_depth_ == 0)
         report(Diagnostic::error(s->range, std::string("'") + (s->kind == ast::NodeKind::BreakStmt ? "break" : "continue") +
                                                "' outside of a loop")
-                   .with_code("E-JUMP-OUTSIDE-LOOP"));
+                   .with_code(code::E_JUMP_OUTSIDE_LOOP));
       break;
     case ast::NodeKind::DiscardStmt:
       if (options_.stage != Stage::unknown && options_.stage != Stage::fragment)
-        report(Diagnostic::error(s->range, "'discard' is only allowed in fragment shaders").with_code("E-DISCARD-STAGE"));
+        report(Diagnostic::error(s->range, "'discard' is only allowed in fragment shaders").with_code(code::E_DISCARD_STAGE));
       break;
     case ast::NodeKind::ReturnStmt: {
       const auto* r = static_cast<const ast::ReturnStmt*>(s);
@@ -493,14 +493,14 @@ void Checker::statement(const ast::Stmt* s) {
       if (!r->value) {
         if (want.shape != Shape::void_ && !want.is_error())
           report(Diagnostic::error(s->range, "non-void function '" + current_function_->name + "' must return a value")
-                     .with_code("E-RETURN"));
+                     .with_code(code::E_RETURN));
         break;
       }
       Value v = expr(r->value);
       if (want.shape == Shape::void_) {
         if (!v.type.is_error())
           report(Diagnostic::error(r->value->range, "void function '" + current_function_->name + "' cannot return a value")
-                     .with_code("E-RETURN"));
+                     .with_code(code::E_RETURN));
         break;
       }
       std::optional<Origin> origin = Origin{current_function_->decl->return_type->range,

@@ -83,8 +83,11 @@ TEST(Dimensions, TrigonometryTakesAnglesAndReturnsNumbers) {
             Messages{});
   EXPECT_EQ(messages_of("float s = sin(30.0);"),
             Messages{"error: argument 1 of 'sin' has type float<dimensionless>, but 'sin' expects float<angle>"});
+  // degrees() gives the angle in degrees, which sin() does not take.
   EXPECT_EQ(messages_of("float<angle> a = radians(30.0); float s = sin(degrees(a));"),
-            Messages{"error: argument 1 of 'sin' has type float<dimensionless>, but 'sin' expects float<angle>"});
+            Messages{"error: argument 1 of 'sin' has type float<angle in degree>, but 'sin' expects float<angle>"});
+  EXPECT_EQ(messages_of("float<angle in degree> a = 30.0 * degree in degree; float<angle> r = radians(a); float<angle> b = radians(r);"),
+            Messages{"error: argument 1 of 'radians' has type float<angle>, which is already in radians"});
   EXPECT_EQ(messages_of("float e = exp(2.0 * meter);"),
             Messages{"error: argument 1 of 'exp' has type float<length>, but 'exp' expects float<dimensionless>"});
 }

@@ -29,7 +29,7 @@ Value Checker::expr(const ast::Expr* e) {
       return record(e, v);
     }
     case ast::NodeKind::InitializerList:
-      report(Diagnostic::error(e->range, "an initializer list can only initialize a declared variable").with_code("E-INIT-LIST"));
+      report(Diagnostic::error(e->range, "an initializer list can only initialize a declared variable").with_code(code::E_INIT_LIST));
       return record(e, error_value(e->range));
     default: return record(e, error_value(e->range));
   }
@@ -64,7 +64,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
   if (e.name.rfind("gl_", 0) == 0) {
     if (const std::string owners = stages_owning_builtin(e.name); !owners.empty()) {
       report(Diagnostic::error(e.range, "'" + e.name + "' is not available in " + stage_name(options_.stage) + " shaders")
-                 .with_code("E-STAGE-BUILTIN")
+                 .with_code(code::E_STAGE_BUILTIN)
                  .with_hint("'" + e.name + "' is a built-in of " + owners + " shaders"));
       return error_value(e.range);
     }
@@ -83,7 +83,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
   }
   std::string message = "use of undeclared identifier '" + e.name + "'";
   if (functions_.count(e.name) || builtins_->is_builtin(e.name)) message = "'" + e.name + "' is a function, not a variable";
-  report(Diagnostic::error(e.range, message).with_code("E-UNDECLARED"));
+  report(Diagnostic::error(e.range, message).with_code(code::E_UNDECLARED));
   return error_value(e.range);
 }
 
@@ -134,7 +134,7 @@ Value Checker::unary(const ast::UnaryExpr& e) {
       if (!t.is_numeric() || t.is_array()) break;
       if (t.geometry == Geometry::point) {
         report(Diagnostic::error(e.range, "cannot negate " + name_of(t) + ": a point has no opposite")
-                   .with_code("E-POINT-ARITHMETIC")
+                   .with_code(code::E_POINT_ARITHMETIC)
                    .with_hint("subtract it from another point to get a vector"));
         return error_value(e.range);
       }
@@ -159,14 +159,14 @@ Value Checker::unary(const ast::UnaryExpr& e) {
       if (!v.lvalue || v.read_only) {
         report(Diagnostic::error(e.operand->range, v.lvalue ? "cannot modify read-only variable '" + v.name + "'"
                                                             : "expression is not assignable")
-                   .with_code("E-NOT-ASSIGNABLE"));
+                   .with_code(code::E_NOT_ASSIGNABLE));
         return error_value(e.range);
       }
       if (t.is_numeric() && !t.is_array()) {
         // x++ adds a dimensionless 1: only dimensionless (or unannotated) values may be counted.
         if (t.dim.is_known() && !t.dim.value.is_dimensionless()) {
           report(Diagnostic::error(e.op_range, "cannot increment " + name_of(t) + " by a dimensionless 1")
-                     .with_code("E-DIMENSION-MISMATCH")
+                     .with_code(code::E_DIMENSION_MISMATCH)
                      .with_highlight(e.operand->range));
           return error_value(e.range);
         }
@@ -177,9 +177,24 @@ Value Checker::unary(const ast::UnaryExpr& e) {
       break;
   }
   report(Diagnostic::error(e.op_range, "invalid argument type " + name_of(t) + " to unary expression")
-             .with_code("E-INVALID-OPERANDS")
+             .with_code(code::E_INVALID_OPERANDS)
              .with_highlight(e.operand->range));
   return error_value(e.range);
+}
+
+// `vs_out.TangentViewPos`, not the instance alone: the member is what has the
+// type. Swizzles and indices keep the variable's name.
+std::string Checker::member_path(const ast::Expr* target, const std::string& variable) const {
+  const auto* member = ast::dyn_cast<ast::MemberExpr>(target);
+  if (!member) return variable;
+  const auto base = result_.types.find(member->base);
+  if (base == result_.types.end() || base->second.shape != Shape::structure || base->second.is_array()) return variable;
+  if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(member->base)) return id->name + "." + member->member;
+  if (ast::isa<ast::MemberExpr>(member->base)) {
+    const std::string outer = member_path(member->base, variable);
+    return outer == variable ? variable : outer + "." + member->member;
+  }
+  return variable;
 }
 
 Value Checker::assign(const ast::AssignExpr& e) {
@@ -190,7 +205,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
     if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";
-    Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code("E-NOT-ASSIGNABLE");
+    Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code(code::E_NOT_ASSIGNABLE);
     if (lhs.origin && lhs.lvalue) d.with_note(Diagnostic::note(lhs.origin->range, lhs.origin->text));
     report(std::move(d));
     return error_value(e.range);
@@ -203,7 +218,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
     if (value.type.is_error()) return error_value(e.range);
   }
-  if (!check_assignable(lhs.type, value, e.lhs->range, lhs.name, lhs.origin, "assign")) return error_value(e.range);
+  if (!check_assignable(lhs.type, value, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
   Value out = lhs;
   out.range = e.range;
   out.lvalue = false;
@@ -232,46 +247,32 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
       std::string(action) == "return"
           ? "cannot return a value of type " + name_of(v) + " from '" + target_name + "', which returns " + name_of(target)
           : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(v);
-  std::string kind_hint;
-  if (target.geometry == Geometry::direction && v.geometry == Geometry::vector) kind_hint = "a vector becomes a direction only through normalize()";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::direction) kind_hint = "scale it by a length to get a vector";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::normal)
-    kind_hint = "a normal is not a vector: it transforms by the inverse transpose; convert explicitly with vector<S>(n) if you mean it";
-  else if (target.geometry == Geometry::normal && v.geometry == Geometry::vector)
-    kind_hint = "transform the normal itself (a map applied to a normal uses the inverse transpose), or convert explicitly with normal<S>(v)";
-  else if (target.geometry == Geometry::point && v.geometry == Geometry::hpoint) kind_hint = "divide by w first: homogenize(h)";
-  else if (target.geometry == Geometry::point && v.geometry == Geometry::vector) kind_hint = "add it to a point to get a point";
-  else if (target.geometry == Geometry::vector && v.geometry == Geometry::point) kind_hint = "subtract another point to get a vector";
-  else if (target.geometry == Geometry::normal && v.geometry == Geometry::direction)
-    kind_hint = "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
-  else if (target.geometry == Geometry::map && v.geometry == Geometry::projmap) kind_hint = "a projective map gives hpoints, not points";
-  else if (target.geometry == Geometry::rigidmap && v.geometry == Geometry::map)
-    kind_hint = "a map composed with a non-rigid one is not rigid: declare it map<…> (normals then transform by the inverse transpose)";
+  const std::string kind_hint = kind_mismatch_hint(target.geometry, v.geometry);
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
   if (unsized) a.array[0] = b.array[0];
   const bool scalar_ok = implicitly_converts(b.scalar, a.scalar);
   b.scalar = a.scalar;
-  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, kind_hint, "E-TYPE-MISMATCH");
+  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, kind_hint, code::E_TYPE_MISMATCH);
   if (target.shape == Shape::opaque || target.shape == Shape::structure) return true;
   // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
   if (target.geometry != Geometry::none && v.geometry != Geometry::none && !kind_fits(v.geometry, target.geometry))
-    return fail(sentence, kind_hint, "E-KIND-MISMATCH");
+    return fail(sentence, kind_hint, code::E_KIND_MISMATCH);
   if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
     const bool first = !consistent(target.from, v.from);
-    return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), "E-SPACE-MISMATCH");
+    return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), code::E_SPACE_MISMATCH);
   }
   const DimSlot found = value_dimension(v, result_.registry);
-  if (!value.zero && !consistent(target.dim, found))
-    return fail(sentence, physics_hint(target.dim, found), "E-DIMENSION-MISMATCH");
+  if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
+    return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
                                    consistent(target.texel->dim, v.texel->dim)))
-    return fail(sentence, "", "E-TEXEL-MISMATCH");
+    return fail(sentence, "", code::E_TEXEL_MISMATCH);
   if (options_.strict && target.dim.is_known() && found.state == DimSlot::State::unknown && !value.zero) {
     report(Diagnostic::warning(value.range, std::string("unannotated value used to ") + action + " " + subject + " of type " +
                                                 name_of(target))
-               .with_code("W-IMPLICIT-ANNOTATION"));
+               .with_code(code::W_IMPLICIT_ANNOTATION));
   }
   return true;
 }
@@ -291,7 +292,7 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
                               consistent(ta.from, tb.from) && consistent(ta.to, tb.to) && (a.zero || b.zero || consistent(da, db));
   if (!glsl_ok || !annotations_ok) {
     Diagnostic d = Diagnostic::error(e.range, "the branches of '?:' have different types, " + name_of(ta) + " and " + name_of(tb))
-                       .with_code(glsl_ok ? "E-DIMENSION-MISMATCH" : "E-TYPE-MISMATCH")
+                       .with_code(glsl_ok ? code::E_DIMENSION_MISMATCH : code::E_TYPE_MISMATCH)
                        .with_highlight(e.then_expr->range)
                        .with_highlight(e.else_expr->range);
     if (glsl_ok) {
@@ -316,7 +317,7 @@ void Checker::condition(const ast::Expr* e) {
   Value v = expr(e);
   if (v.type.is_error()) return;
   if (!(v.type.shape == Shape::scalar && v.type.scalar == Scalar::bool_ && !v.type.is_array()))
-    report(Diagnostic::error(e->range, "condition must be a bool, found " + name_of(v.type)).with_code("E-CONDITION-TYPE"));
+    report(Diagnostic::error(e->range, "condition must be a bool, found " + name_of(v.type)).with_code(code::E_CONDITION_TYPE));
 }
 
 Value Checker::index(const ast::IndexExpr& e) {
@@ -324,7 +325,7 @@ Value Checker::index(const ast::IndexExpr& e) {
   Value idx = expr(e.index);
   if (base.type.is_error() || idx.type.is_error()) return error_value(e.range);
   if (!(idx.type.shape == Shape::scalar && idx.type.is_integer() && !idx.type.is_array())) {
-    report(Diagnostic::error(e.index->range, "array subscript is not an integer: " + name_of(idx.type)).with_code("E-INDEX-TYPE"));
+    report(Diagnostic::error(e.index->range, "array subscript is not an integer: " + name_of(idx.type)).with_code(code::E_INDEX_TYPE));
     return error_value(e.range);
   }
   Value out = base;
@@ -348,12 +349,12 @@ Value Checker::index(const ast::IndexExpr& e) {
     out.type.dim = is_map(t.geometry) ? DimSlot::unknown() : t.dim;
   } else {
     report(Diagnostic::error(e.base->range, "subscripted value of type " + name_of(t) + " is not an array, vector or matrix")
-               .with_code("E-INDEX-BASE"));
+               .with_code(code::E_INDEX_BASE));
     return error_value(e.range);
   }
   if (idx.constant && size > 0 && (*idx.constant < 0 || *idx.constant >= size)) {
     report(Diagnostic::error(e.index->range, "index " + std::to_string(*idx.constant) + " is out of range for " + name_of(t))
-               .with_code("E-INDEX-RANGE"));
+               .with_code(code::E_INDEX_RANGE));
     return error_value(e.range);
   }
   return out;
@@ -377,7 +378,7 @@ Value Checker::member(const ast::MemberExpr& e) {
       }
     }
     report(Diagnostic::error(e.member_range, "no member named '" + e.member + "' in '" + t.structure->name + "'")
-               .with_code("E-NO-MEMBER"));
+               .with_code(code::E_NO_MEMBER));
     return error_value(e.range);
   }
   if ((t.shape == Shape::vector || t.shape == Shape::scalar) && !t.is_array()) {
@@ -398,7 +399,7 @@ Value Checker::member(const ast::MemberExpr& e) {
       set = found;
     }
     if (!ok) {
-      report(Diagnostic::error(e.member_range, "invalid swizzle '" + s + "' on " + name_of(t)).with_code("E-SWIZZLE"));
+      report(Diagnostic::error(e.member_range, "invalid swizzle '" + s + "' on " + name_of(t)).with_code(code::E_SWIZZLE));
       return error_value(e.range);
     }
     bool repeated = false;
@@ -414,7 +415,7 @@ Value Checker::member(const ast::MemberExpr& e) {
     return out;
   }
   report(Diagnostic::error(e.member_range, "member reference base type " + name_of(t) + " is not a structure or vector")
-             .with_code("E-NO-MEMBER"));
+             .with_code(code::E_NO_MEMBER));
   return error_value(e.range);
 }
 
@@ -445,7 +446,7 @@ Value Checker::initializer_list(const ast::InitializerList& e, const Type& expec
     std::optional<Type> want = element_of(i);
     if (!want) {
       report(Diagnostic::error(e.elements[i]->range, "excess elements in initializer list for " + name_of(expected))
-                 .with_code("E-INIT-LIST"));
+                 .with_code(code::E_INIT_LIST));
       break;
     }
     if (const auto* nested = ast::dyn_cast<ast::InitializerList>(e.elements[i])) {

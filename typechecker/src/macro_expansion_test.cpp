@@ -43,7 +43,7 @@ TEST(MacroExpansion, ErrorInsideAMacroBodyNamesTheExpansion) {
             "m.frag:9:12: note: in expansion of macro 'SUM' (defined at m.frag:3:9)\n"
             "  c = vec4(SUM(d, t));\n"
             "           ^~~~~~~~~\n"
-            "help: the value differs from length by a factor of time·length⁻¹\n"
+            "help: time where length is expected: a different quantity, not a missing factor (another variable meant?)\n"
             "m.frag:4:23: note: 'd' declared here as float<length>\n"
             "uniform float<length> d;\n"
             "                      ^\n"

@@ -10,67 +10,273 @@ std::string format_number(double value) { return DimensionRegistry::format_numbe
 
 std::string Checker::conversion_target(const Dimension& d) const {
   const std::string units = result_.registry.format_units(d, Notation::ascii);
+  if (d.is_dimensionless()) return "(1)";  // `x in 1` does not parse
   if (units.find_first_of("*/^") == std::string::npos) return units;
   return "(" + units + ")";
 }
 
-std::string Checker::unit_hint(const Dimension& expected, const Dimension& found) const {
+std::string Checker::unit_hint(const Dimension& expected, const Dimension& found, SourceRange found_range,
+                               const std::string& found_spelling) const {
   const DimensionRegistry& reg = result_.registry;
   Checked<Dimension> e = reg.reference(expected), f = reg.reference(found);
   if (!e || !f) return {};
-  if (!(*e == *f)) return physics_hint(DimSlot::known(*e), DimSlot::known(*f));  // the dimensions differ too
+  if (!(*e == *f)) {  // the dimensions differ too; `inv_length in kilometer⁻¹` is still an inv_length
+    const std::size_t in = found_spelling.find(" in ");
+    return physics_hint(DimSlot::known(*e), DimSlot::known(*f, in == std::string::npos ? std::string() : found_spelling.substr(0, in)),
+                        found_range);
+  }
   const double factor = reg.scale(found) / reg.scale(expected);
-  return "the same " + reg.format(*e) + " in another unit, " + reg.format_units(found) + " where " + reg.format_units(expected) +
-         " is expected: convert it, x in " + conversion_target(expected) + " (× " + format_number(factor) + ")";
+  std::string hint = "the same " + reg.format(*e) + " in another unit, " + reg.format_units(found) + " where " +
+                     reg.format_units(expected) + " is expected: convert it, x in " + conversion_target(expected) + " (× " +
+                     format_number(factor) + ")";
+  // In a product (ds / spotReachCm), the factor that brought the unit is where to convert.
+  const std::vector<ProductFactor> factors = product_factors(found_range);
+  for (const ProductFactor& f : factors) {
+    if (factors.size() < 2 || f.name.empty() || f.unit || f.dim.state != DimSlot::State::known || !reg.has_unit_factors(f.dim.value))
+      continue;
+    if (Checked<Dimension> ref = reg.reference(f.dim.value))
+      return hint + "; or convert '" + f.name + "' where it enters, " + f.name + " in " + conversion_target(*ref);
+  }
+  return hint;
 }
 
-std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found) const {
+// The factors of a product as written (`Kd * Li * cosI / pdf`), each with the
+// dimension the checker gave it, so a hint can name the factor that is wrong.
+// Errors are rare, so the expression is found by its range rather than
+// threaded through every caller.
+std::vector<Checker::ProductFactor> Checker::product_factors(SourceRange range) const {
+  std::vector<ProductFactor> out;
+  if (!range.valid()) return out;
+  const ast::Expr* root = nullptr;
+  for (const auto& [node, type] : result_.types)
+    if (node->range == range && dynamic_cast<const ast::Expr*>(node)) {
+      root = static_cast<const ast::Expr*>(node);
+      if (!ast::isa<ast::ParenExpr>(node)) break;
+    }
+  std::vector<std::pair<const ast::Expr*, int>> todo;
+  if (root) todo.emplace_back(root, 1);
+  while (!todo.empty() && out.size() < 64) {
+    auto [e, sign] = todo.back();
+    todo.pop_back();
+    if (const auto* paren = ast::dyn_cast<ast::ParenExpr>(e)) {
+      todo.emplace_back(paren->inner, sign);
+      continue;
+    }
+    if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(e); b && (b->op == ast::BinaryOp::Mul || b->op == ast::BinaryOp::Div)) {
+      todo.emplace_back(b->rhs, b->op == ast::BinaryOp::Div ? -sign : sign);
+      todo.emplace_back(b->lhs, sign);
+      continue;
+    }
+    ProductFactor f;
+    f.sign = sign;
+    f.literal = ast::isa<ast::LiteralExpr>(e);
+    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e)) {
+      f.name = id->name;
+      f.unit = !lookup(id->name) && result_.registry.find_unit(id->name) != nullptr;
+    } else if (const auto* m = ast::dyn_cast<ast::MemberExpr>(e)) {
+      f.name = m->member;
+    }
+    const auto type = result_.types.find(e);
+    if (type != result_.types.end()) f.dim = value_dimension(type->second, result_.registry);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range) const {
   if (expected.state != DimSlot::State::known || found.state != DimSlot::State::known) return {};
   const DimensionRegistry& reg = result_.registry;
-  if (reg.has_unit_factors(expected.value) || reg.has_unit_factors(found.value)) return unit_hint(expected.value, found.value);
+  if (reg.has_unit_factors(expected.value) || reg.has_unit_factors(found.value))
+    return unit_hint(expected.value, found.value, found_range, found.spelling);
   Checked<Dimension> ratio = divide(found.value, expected.value);  // what the value has too much of
   if (!ratio) return {};
   const Dimension& r = *ratio;
-  auto base = [&](const char* name) -> std::optional<BaseId> { return reg.find_base(name); };
-  auto is = [&](std::initializer_list<std::pair<const char*, int>> factors) {
+  auto make = [&](std::initializer_list<std::pair<const char*, int>> factors) -> std::optional<Dimension> {
     std::vector<Factor> want;
     for (const auto& [name, e] : factors) {
-      std::optional<BaseId> b = base(name);
-      if (!b) return false;
+      std::optional<BaseId> b = reg.find_base(name);
+      if (!b) return std::nullopt;
       want.push_back({*b, e});
     }
     Checked<Dimension> d = Dimension::from_factors(want);
+    return d ? std::optional<Dimension>(*d) : std::nullopt;
+  };
+  auto is = [&](std::initializer_list<std::pair<const char*, int>> factors) {
+    std::optional<Dimension> d = make(factors);
     return d && *d == r;
   };
+  auto named = [&](const char* name, const Dimension& d) {
+    std::optional<Dimension> n = reg.find_dimension(name);
+    return n && *n == d;
+  };
+  const std::vector<ProductFactor> factors = product_factors(found_range);
+  auto proj_of = [&](const ProductFactor& f) {
+    std::optional<BaseId> proj = reg.find_base("proj");
+    return proj && f.dim.state == DimSlot::State::known ? f.dim.value.exponent(*proj) : 0;
+  };
+  const bool plain_value = found.value.is_dimensionless();
+  bool all_plain = !factors.empty();
+  for (const ProductFactor& f : factors)
+    all_plain = all_plain && (f.literal || (f.dim.state == DimSlot::State::known && f.dim.value.is_dimensionless()));
+  const std::string expected_name = reg.format(expected.value);
+
+  // A plain number where a brdf is expected: an albedo or a lobe without its 1/π.
+  if (plain_value && named("brdf", expected.value)) return lambert_hint();
+  // A number written without its unit (2π(1 - cos θmax) for a cone's solid angle).
+  if (plain_value && (all_plain || factors.empty()) && !is({{"angle", -1}}) && !is({{"proj", -1}})) {
+    for (const Unit& unit : reg.units())
+      if (unit.dimension == expected.value && DimensionRegistry::same_scale(unit.scale, 1.0))
+        return "a plain number where " + expected_name + " is expected: give it its unit, e.g. x * " + unit.name;
+    for (const Unit& unit : reg.units()) {
+      Checked<Dimension> inverse = divide(Dimension{}, unit.dimension);
+      if (inverse && *inverse == expected.value && DimensionRegistry::same_scale(unit.scale, 1.0))
+        return "a plain number where " + expected_name + " (per " + unit.name + ") is expected: a density over " +
+               reg.format(unit.dimension) + " is per unit of it, e.g. x / " + unit.name + " (a phase function is 1/(4π) per steradian)";
+    }
+  }
+  // Irradiance where radiance is expected because a factor meant to be a brdf is a plain number.
+  if (is({{"solid_angle", 1}, {"proj", 1}})) {
+    std::vector<std::string> plain;
+    for (const ProductFactor& f : factors)
+      if (f.sign > 0 && !f.literal && !f.name.empty() && f.dim.state == DimSlot::State::known && f.dim.value.is_dimensionless())
+        plain.push_back("'" + f.name + "'");
+    if (plain.size() == 1)
+      return "irradiance where radiance is expected, and " + plain[0] +
+             " is a plain number: if it is the BRDF (a lobe), it needs its normalisation, 1/π per projected steradian: " +
+             plain[0].substr(1, plain[0].size() - 2) + " * float<brdf>(1.0 / 3.14159265)";
+    if (plain.size() > 1) {
+      std::string names;
+      for (std::size_t i = 0; i < plain.size(); ++i) names += (i == 0 ? "" : i + 1 == plain.size() ? " and " : ", ") + plain[i];
+      return "irradiance where radiance is expected, and " + names +
+             " are plain numbers: the one that is the BRDF (a lobe) needs its normalisation, 1/π per projected steradian: "
+             "x * float<brdf>(1.0 / 3.14159265)";
+    }
+  }
+  // A unit multiplied onto a value that already has it (innerConeDeg * degree).
+  for (const ProductFactor& f : factors)
+    if (f.unit && f.sign > 0 && f.dim.state == DimSlot::State::known && f.dim.value == r && !expected.value.is_dimensionless()) {
+      for (const ProductFactor& g : factors)
+        if (!g.unit && !g.name.empty() && g.dim.state == DimSlot::State::known && reg.reference(g.dim.value) &&
+            *reg.reference(g.dim.value) == expected.value)
+          return "'" + g.name + "' already is " + expected_name + ": multiplying it by the unit '" + f.name + "' gives " +
+                 reg.format(found.value) + "; convert it instead, " + g.name + " in " + conversion_target(expected.value);
+      return "the unit '" + f.name + "' multiplies a value that already is " + expected_name + "; convert with `in` instead";
+    }
+  // A unit of another dimension (5.0 * degree for a length).
+  for (const ProductFactor& f : factors)
+    if (f.unit && f.dim.state == DimSlot::State::known && f.dim.value == found.value) {
+      for (const Unit& unit : reg.units())
+        if (unit.dimension == expected.value)
+          return "the unit '" + f.name + "' measures " + reg.format(found.value) + ", not " + expected_name + ": use a unit of " +
+                 expected_name + ", e.g. x * " + unit.name;
+    }
   if (is({{"proj", -1}})) return "the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?";
-  if (is({{"proj", 1}})) return "the value has an extra factor of proj: is a cosine applied twice?";
+  if (is({{"proj", 1}})) {
+    // One proj too many: a cosine applied twice, or a per-projected-area factor divided without its cosine.
+    for (const ProductFactor& f : factors)
+      if (f.sign < 0 && proj_of(f) < 0)
+        return "the value has an extra factor of proj: '" + (f.name.empty() ? std::string("the divisor") : f.name) +
+               "' is per projected area and divides without its cosine: missing the light-side cos θ of dω = cos θ dA / r²?";
+    return "the value has an extra factor of proj: is a cosine applied twice?";
+  }
+  bool pdf_factor = false;  // a density among the factors (pdf_area, pdf_solid_angle, ...)
+  for (const ProductFactor& f : factors)
+    if (f.dim.state == DimSlot::State::known && !f.literal)
+      for (const char* pdf : {"pdf_solid_angle", "pdf_area", "pdf_projected_solid_angle"})
+        if (named(pdf, f.dim.value)) pdf_factor = true;
   if (is({{"solid_angle", -1}})) return "the value lacks a factor of solid_angle: missing division by a pdf?";
-  if (is({{"solid_angle", 1}})) return "the value has an extra factor of solid_angle: divided by a pdf twice, or multiplied where it should divide?";
+  if (is({{"solid_angle", 1}})) {
+    bool plain_divisor = false;  // Phi / (4.0 * PI): the 4π sr written as a number
+    for (const ProductFactor& f : factors)
+      plain_divisor = plain_divisor || (f.sign < 0 && f.dim.state == DimSlot::State::known && f.dim.value.is_dimensionless());
+    if (!pdf_factor && plain_divisor)
+      return "the value has an extra factor of solid_angle: a divisor that is a solid angle (4π over the sphere, a cone's "
+             "2π(1 - cos θ)) is written as a plain number: give it its unit, x * steradian";
+    return "the value has an extra factor of solid_angle: divided by a pdf twice, or multiplied where it should divide?";
+  }
   if (is({{"solid_angle", -2}})) return "the value lacks solid_angle²: multiplied by a pdf where it should divide by it?";
-  if (is({{"length", 2}, {"solid_angle", -1}}) || is({{"length", 2}, {"solid_angle", -1}, {"proj", -1}}) ||
-      is({{"length", 2}, {"solid_angle", -1}, {"proj", 1}}))
-    return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
-  if (is({{"length", -2}, {"solid_angle", 1}}) || is({{"length", -2}, {"solid_angle", 1}, {"proj", 1}}) ||
-      is({{"length", -2}, {"solid_angle", 1}, {"proj", -1}}))
-    return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
+  const bool area_per_sr = is({{"length", 2}, {"solid_angle", -1}}) || is({{"length", 2}, {"solid_angle", -1}, {"proj", -1}}) ||
+                           is({{"length", 2}, {"solid_angle", -1}, {"proj", 1}});
+  const bool sr_per_area = is({{"length", -2}, {"solid_angle", 1}}) || is({{"length", -2}, {"solid_angle", 1}, {"proj", 1}}) ||
+                           is({{"length", -2}, {"solid_angle", 1}, {"proj", -1}});
+  if ((area_per_sr || sr_per_area) && !pdf_factor && !factors.empty())
+    return area_per_sr ? "the value lacks solid angle per area: missing the inverse-square falloff (1/d² as "
+                         "float<solid_angle / (area * proj)>)?"
+                       : "the value has an extra solid angle per area: the inverse-square falloff applied twice?";
+  if (area_per_sr) return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
+  if (sr_per_area) return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
   if (is({{"solid_angle", -1}, {"proj", -1}}))
     return "radiance where irradiance is expected: integrate over projected solid angle (× cos θ dω) to get irradiance";
   if (is({{"solid_angle", 1}, {"proj", 1}}))
     return "irradiance where radiance is expected: reflect it with a brdf (1/(solid_angle·proj)) to get radiance";
   if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";
-  if (is({{"length", -2}})) return "the value lacks a factor of area: divided by the squared distance twice?";
+  if (is({{"length", -2}}))
+    return "the value lacks a factor of area: a squared distance missing from the numerator (the r² of a Jacobian), or divided by twice?";
   if (is({{"angle", -1}}))
     return "a plain number where an angle is expected: radians or degrees? Use radians(x) or write the unit, x * degree";
-  if (is({{"angle", 1}})) return "an angle where a plain number is expected: did you mean its sine or cosine, or degrees(x)?";
-  if (found.value.is_dimensionless()) {
+  if (is({{"angle", 1}}) && expected.value.is_dimensionless())
+    return "an angle where a plain number is expected: did you mean its sine or cosine, or degrees(x)?";
+  if (plain_value) {
     for (const Unit& unit : reg.units())
       if (unit.dimension == expected.value)
-        return "a plain number where " + reg.format(expected.value) + " is expected: give it a unit, e.g. x * " + unit.name;
-    return "a plain number where " + reg.format(expected.value) + " is expected: convert it explicitly if it is one";
+        return "a plain number where " + expected_name + " is expected: give it a unit, e.g. x * " + unit.name;
+    return "a plain number where " + expected_name + " is expected: convert it explicitly if it is one";
   }
-  if (expected.value.is_dimensionless())
-    return "the value has dimension " + reg.format(found.value) + " where a plain number is expected";
-  return "the value differs from " + reg.format(expected.value) + " by a factor of " + reg.format_product(r);
+  const std::string found_name = found.spelling.empty() ? reg.format(found.value) : found.spelling;
+  if (expected.value.is_dimensionless()) return "the value has dimension " + found_name + " where a plain number is expected";
+  auto simple = [&](const Dimension& d) { return d.factors().size() == 1 && d.factors()[0].exponent == 1; };
+  if (simple(expected.value) && simple(found.value))
+    return found_name + " where " + expected_name + " is expected: a different quantity, not a missing factor (another variable meant?)";
+  return found_name + " where " + expected_name + " is expected: the value differs by a factor of " + reg.format_product(r);
+}
+
+// A unit direction plus a vector with a length (`V + toLight` for a half vector): normalize the vector first.
+std::string Checker::unit_vector_sum_hint(const Value& lhs, const Value& rhs, const DimSlot& left, const DimSlot& right) const {
+  auto unit = [](Geometry g) { return g == Geometry::direction || g == Geometry::normal; };
+  const Geometry ga = lhs.type.geometry, gb = rhs.type.geometry;
+  if ((unit(ga) && gb == Geometry::vector) || (ga == Geometry::vector && unit(gb))) {
+    const Value& v = ga == Geometry::vector ? lhs : rhs;
+    const DimSlot& d = ga == Geometry::vector ? left : right;
+    if (d.state == DimSlot::State::known && !d.value.is_dimensionless()) {
+      const std::string name = v.name.empty() ? "v" : v.name;
+      return "a " + std::string(geometry_name(unit(ga) ? ga : gb)) + " has unit length, '" + name + "' is a vector of dimension " +
+             result_.registry.format(d.value) + ": normalize it first, normalize(" + name + ")";
+    }
+  }
+  return operand_hint(left, right, rhs.range);
+}
+
+std::string Checker::lambert_hint() const {
+  return "a plain number where a brdf is expected: an albedo or a lobe is a BRDF once normalised, 1/π per projected steradian "
+         "(missing 1/π?): x * float<brdf>(1.0 / 3.14159265)";
+}
+
+// `a + b` and `a - b`: an albedo beside a brdf is the Lambert term without its 1/π whichever side it is on.
+std::string Checker::operand_hint(const DimSlot& left, const DimSlot& right, SourceRange right_range) const {
+  auto plain = [](const DimSlot& d) { return d.state == DimSlot::State::known && d.value.is_dimensionless(); };
+  std::optional<Dimension> brdf = result_.registry.find_dimension("brdf");
+  auto is_brdf = [&](const DimSlot& d) { return brdf && d.state == DimSlot::State::known && d.value == *brdf; };
+  if ((plain(left) && is_brdf(right)) || (is_brdf(left) && plain(right))) return lambert_hint();
+  return physics_hint(left, right, right_range);
+}
+
+// Why a value of one geometric kind does not fit where another is expected.
+std::string Checker::kind_mismatch_hint(Geometry expected, Geometry found) const {
+  if (expected == Geometry::direction && found == Geometry::vector) return "a vector becomes a direction only through normalize()";
+  if (expected == Geometry::vector && found == Geometry::direction) return "scale it by a length to get a vector";
+  if (expected == Geometry::vector && found == Geometry::normal)
+    return "a normal is not a vector: it transforms by the inverse transpose; convert explicitly with vector<S>(n) if you mean it";
+  if (expected == Geometry::normal && found == Geometry::vector)
+    return "transform the normal itself (a map applied to a normal uses the inverse transpose), or convert explicitly with normal<S>(v)";
+  if (expected == Geometry::point && found == Geometry::hpoint) return "divide by w first: homogenize(h)";
+  if (expected == Geometry::point && found == Geometry::vector) return "add it to a point to get a point";
+  if (expected == Geometry::vector && found == Geometry::point) return "subtract another point to get a vector";
+  if (expected == Geometry::normal && found == Geometry::direction)
+    return "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
+  if (expected == Geometry::map && found == Geometry::projmap) return "a projective map gives hpoints, not points";
+  if (expected == Geometry::rigidmap && found == Geometry::map)
+    return "a map composed with a non-rigid one is not rigid: declare it map<…> (normals then transform by the inverse transpose)";
+  return {};
 }
 
 std::string Checker::space_hint(const SpaceSlot& expected, const SpaceSlot& found) const {

@@ -105,7 +105,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   out.range = range;
   auto invalid = [&]() {
     operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) + ")", lhs, rhs,
-                     op_range, "", "E-INVALID-OPERANDS");
+                     op_range, "", code::E_INVALID_OPERANDS);
     return error_value(range);
   };
   switch (op) {
@@ -133,14 +133,22 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       if (!ordering && (a.shape == Shape::opaque || a.shape == Shape::void_)) return invalid();
       // Comparisons need equal dimensions; a zero literal compares with anything.
       const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
-      if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+      if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_as_number(da, db) && !cosine_as_number(db, da)) {
         operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range, physics_hint(da, db),
-                         "E-DIMENSION-MISMATCH");
+                         code::E_DIMENSION_MISMATCH);
+        return error_value(range);
+      }
+      // `projCoords.z > stored` before the divide compares z·w, not a depth.
+      if ((a.geometry == Geometry::hpoint) != (b.geometry == Geometry::hpoint) && !lhs.zero && !rhs.zero) {
+        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b) +
+                             ": a homogeneous coordinate is a position only after the divide by w",
+                         lhs, rhs, op_range, "divide by w first (h.z / h.w), or compare homogeneous values of the same w",
+                         code::E_KIND_MISMATCH);
         return error_value(range);
       }
       if (!consistent(a.from, b.from)) {
         operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b) + ": they are in different spaces", lhs, rhs,
-                         op_range, space_hint(a.from, b.from), "E-SPACE-MISMATCH");
+                         op_range, space_hint(a.from, b.from), code::E_SPACE_MISMATCH);
         return error_value(range);
       }
       out.type = Type::scalar_of(Scalar::bool_);
@@ -192,19 +200,21 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
   out.type = *shape;
   if (op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mod) {
-    if (!lhs.zero && !rhs.zero && !consistent(da, db)) {
+    const bool cosine_a = cosine_as_number(db, da), cosine_b = cosine_as_number(da, db);  // 1 - cos θ is a number
+    if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b) {
       operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
-                       physics_hint(da, db), "E-DIMENSION-MISMATCH");
+                       operand_hint(da, db, rhs.range), code::E_DIMENSION_MISMATCH);
       return error_value(range);
     }
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
+    else if (!lhs.zero && !rhs.zero && (cosine_a || cosine_b)) out.type.dim = cosine_a ? db : da;
     else out.type.dim = lhs.zero ? db : da;
     out.type.dim.spelling.clear();
     out.zero = lhs.zero && rhs.zero;
   } else {
     std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
     if (!d) {
-      operand_mismatch("dimension exponent overflows in this product", lhs, rhs, op_range, "", "E-DIMENSION-OVERFLOW");
+      operand_mismatch("dimension exponent overflows in this product", lhs, rhs, op_range, "", code::E_DIMENSION_OVERFLOW);
       return error_value(range);
     }
     out.type.dim = *d;
@@ -251,7 +261,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     const bool add = op == ast::BinaryOp::Add;
     if (ga == Geometry::point && gb == Geometry::point && add)
       return reject("cannot add two points (" + both + ")", "subtract them to get a vector, or average them with mix(p, q, 0.5)",
-                    "E-POINT-ARITHMETIC");
+                    code::E_POINT_ARITHMETIC);
     // A number added to every coordinate of a point or vector moves it along
     // (1, 1, 1), which depends on the axes: `t - dot(t, n)` meant `t - dot(t, n) * n`.
     const bool scalar_a = a.shape == Shape::scalar, scalar_b = b.shape == Shape::scalar;
@@ -261,17 +271,20 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       return reject(std::string("cannot ") + verb(op) + " " + both + ": a number added to every coordinate of a " +
                         geometry_name(geo.geometry) + " depends on the axes of " + name_of_space(geo.from),
                     "scale a direction by it instead (e.g. t - dot(t, n) * n), or build the vector it stands for",
-                    "E-KIND-MISMATCH");
+                    code::E_KIND_MISMATCH);
     }
     // A kind-less vec3 may be a point (gradual typing): plain - point is a vector.
     if (gb == Geometry::point && ga != Geometry::point && ga != Geometry::none && !add)
       return reject("cannot subtract a point from " + name_of(a), "only point - point and point - vector are defined",
-                    "E-POINT-ARITHMETIC");
+                    code::E_POINT_ARITHMETIC);
     if (!consistent(a.from, b.from))
-      return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
-                    "E-SPACE-MISMATCH");
+      return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces",
+                    ga == Geometry::hpoint && gb == Geometry::hpoint
+                        ? "divide each by its own w first (h.xy / h.w): two projections' coordinates meet only after the perspective divide"
+                        : space_hint(a.from, b.from),
+                    code::E_SPACE_MISMATCH);
     if (!lhs.zero && !rhs.zero && !consistent(da, db))
-      return reject(std::string("cannot ") + verb(op) + " " + both, physics_hint(da, db), "E-DIMENSION-MISMATCH");
+      return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), code::E_DIMENSION_MISMATCH);
     const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
     out.type.dim.spelling.clear();
@@ -299,15 +312,16 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   if (ga == Geometry::hpoint || gb == Geometry::hpoint) return homogeneous_product(op, lhs, rhs, shape, op_range, range);
   if (ga == Geometry::point || gb == Geometry::point)
     return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
-                  "subtract another point to get a vector, which can be scaled", "E-POINT-ARITHMETIC");
+                  "subtract another point to get a vector, which can be scaled", code::E_POINT_ARITHMETIC);
   if (op == ast::BinaryOp::Div && !b_scalar && gb != Geometry::spectrum && gb != Geometry::none)
-    return reject("cannot divide by " + name_of(b), "", "E-INVALID-OPERANDS");
+    return reject("cannot divide by " + name_of(b), "", code::E_INVALID_OPERANDS);
   std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
-  if (!d) return reject("dimension exponent overflows in this product", "", "E-DIMENSION-OVERFLOW");
+  if (!d) return reject("dimension exponent overflows in this product", "", code::E_DIMENSION_OVERFLOW);
   out.type.dim = *d;
   const Geometry g = a_scalar ? gb : ga;
   const Type& geo = a_scalar ? b : a;
   if (a_scalar || b_scalar) {
+    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal)) out.type.dim = projected_component(*d);
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;
@@ -327,7 +341,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   }
   if (!consistent(a.from, b.from))
     return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces", space_hint(a.from, b.from),
-                  "E-SPACE-MISMATCH");
+                  code::E_SPACE_MISMATCH);
   return out;  // e.g. vector * vector component-wise: a plain vec3 of the product dimension
 }
 
@@ -342,7 +356,7 @@ Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Val
   if (ha && hb && !consistent(a.from, b.from)) {
     operand_mismatch(std::string("cannot ") + (op == ast::BinaryOp::Mul ? "multiply " : "divide ") + name_of(a) +
                          (op == ast::BinaryOp::Mul ? " and " : " by ") + name_of(b) + ": they are in different spaces",
-                     lhs, rhs, op_range, "divide by the w of the same homogeneous point", "E-SPACE-MISMATCH");
+                     lhs, rhs, op_range, "divide by the w of the same homogeneous point", code::E_SPACE_MISMATCH);
     return error_value(range);
   }
   const int wa = ha ? a.weight : 0, wb = hb ? b.weight : 0;

@@ -30,7 +30,7 @@ bool Checker::subroutine_declaration(const ast::FunctionDecl& d, const Function&
   for (const ast::Qualifier& q : d.qualifiers.list) {
     if (q.kind != ast::QualifierKind::Subroutine) continue;
     if (subroutine) {
-      reject(q.range, "a function takes one 'subroutine' qualifier", "E-SUBROUTINE");
+      reject(q.range, "a function takes one 'subroutine' qualifier", code::E_SUBROUTINE);
       return false;
     }
     subroutine = &q;
@@ -41,25 +41,25 @@ bool Checker::subroutine_declaration(const ast::FunctionDecl& d, const Function&
     return true;
   }
   if (subroutine->type_names.empty()) {
-    reject(subroutine->range, "'subroutine (...)' names at least one subroutine type", "E-SUBROUTINE");
+    reject(subroutine->range, "'subroutine (...)' names at least one subroutine type", code::E_SUBROUTINE);
     return false;
   }
   if (!d.body) {
     reject(d.name_range, "a function implementing a subroutine type must be defined here, not only declared",
-           "E-SUBROUTINE");
+           code::E_SUBROUTINE);
     return false;
   }
   for (const std::string& type : subroutine->type_names) {
     auto it = subroutine_types_.find(type);
     if (it == subroutine_types_.end()) {
-      reject(subroutine->range, "'" + type + "' is not a subroutine type", "E-SUBROUTINE",
+      reject(subroutine->range, "'" + type + "' is not a subroutine type", code::E_SUBROUTINE,
              "declare it first: 'subroutine <return type> " + type + "(<parameters>);'");
       return false;
     }
     if (!same_signature(it->second, f)) {
       report(Diagnostic::error(d.name_range, "'" + d.name + "' does not match subroutine type '" + type +
                                                  "': the return type and every parameter must be the same")
-                 .with_code("E-SUBROUTINE")
+                 .with_code(code::E_SUBROUTINE)
                  .with_note(Diagnostic::note(it->second.decl->name_range, "'" + type + "' is declared here")));
       return false;
     }
@@ -86,12 +86,12 @@ std::optional<Value> Checker::subroutine_call(const ast::CallExpr& e, std::vecto
   }
   if (callee.shape != Shape::opaque || callee.opaque.rfind(kSubroutinePrefix, 0) != 0) {
     if (!e.callee_expr) return std::nullopt;
-    if (!callee.is_error()) reject(e.callee_expr->range, "called object is not a subroutine uniform", "E-UNDECLARED-FUNCTION");
+    if (!callee.is_error()) reject(e.callee_expr->range, "called object is not a subroutine uniform", code::E_UNDECLARED_FUNCTION);
     return error_value(e.range);
   }
   if (callee.is_array()) {
     reject(e.callee_expr ? e.callee_expr->range : e.callee_range, "index the subroutine uniform array to call one element",
-           "E-SUBROUTINE");
+           code::E_SUBROUTINE);
     return error_value(e.range);
   }
   for (const Value& a : args)

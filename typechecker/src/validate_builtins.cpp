@@ -75,7 +75,7 @@ bool Checker::builtin_available(const std::string& name, SourceRange where, bool
     const bool compute_derivatives =
         letter == 'x' && derivative && level && level->extension_enabled("GL_NV_compute_shader_derivatives");
     if (!compute_derivatives) {
-      reject(where, "'" + name + "' is not available in " + stage_name(options_.stage) + " shaders", "E-STAGE-BUILTIN",
+      reject(where, "'" + name + "' is not available in " + stage_name(options_.stage) + " shaders", code::E_STAGE_BUILTIN,
              "'" + name + "' is a built-in of " + stage_list(a->stages) + " shaders");
       return false;
     }
@@ -95,13 +95,13 @@ bool Checker::builtin_available(const std::string& name, SourceRange where, bool
                                               : "'" + name + "' requires " + need + "; the shader is " + here;
     // The GLSL 1.30 lookups have 1.10 names by sampler type.
     const bool new_lookup = function && since == 130 && !level->es && name.rfind("texture", 0) == 0;
-    reject(where, message, "E-VERSION",
+    reject(where, message, code::E_VERSION,
            new_lookup ? "before #version 130 the lookups are named by sampler: texture2D, texture2DProj, textureCube, …" : enable);
     return false;
   }
   if (a->profile == Profile::any || compatibility_profile()) return true;
   if (a->profile == Profile::compat) {
-    reject(where, "'" + name + "' belongs to the compatibility profile, which " + here + " does not have", "E-VERSION",
+    reject(where, "'" + name + "' belongs to the compatibility profile, which " + here + " does not have", code::E_VERSION,
            level->version < 150 ? "enable it with '#extension GL_ARB_compatibility : enable'"
                                 : "use '#version " + std::to_string(level->version) + " compatibility', or declare a variable of your own");
     return false;
@@ -110,7 +110,7 @@ bool Checker::builtin_available(const std::string& name, SourceRange where, bool
   if (!removed) return true;
   const bool output = name == "gl_FragColor" || name == "gl_FragData";
   reject(where, "'" + name + "' was removed in " + (level->es ? "#version 300 es" : std::string("the core profile of #version 420")),
-         "E-VERSION", output ? "declare an output of your own, e.g. 'out vec4 color;'" : "use the overloaded names, e.g. 'texture'");
+         code::E_VERSION, output ? "declare an output of your own, e.g. 'out vec4 color;'" : "use the overloaded names, e.g. 'texture'");
   return false;
 }
 

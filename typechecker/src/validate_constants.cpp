@@ -26,13 +26,13 @@ std::string spelled(const ast::Expr* e) {
 void Checker::validate_array_size(const ast::ArrayDim& dim, const Value& size) {
   if (size.type.is_error()) return;
   if (!(size.type.shape == Shape::scalar && size.type.is_integer() && !size.type.is_array())) {
-    reject(dim.size->range, "an array size must be a constant integer expression, not " + glsl_name(size.type), "E-ARRAY-SIZE");
+    reject(dim.size->range, "an array size must be a constant integer expression, not " + glsl_name(size.type), code::E_ARRAY_SIZE);
     return;
   }
   if (const ast::Expr* part = non_constant_part(dim.size)) {
     report(Diagnostic::error(dim.size->range, "an array size must be a constant integer expression; " + spelled(part) +
                                                   " is not constant")
-               .with_code("E-ARRAY-SIZE")
+               .with_code(code::E_ARRAY_SIZE)
                .with_highlight(part->range));
   }
 }
@@ -44,7 +44,7 @@ void Checker::validate_const_initializer(const ast::Declarator& decl, bool globa
   Diagnostic d = Diagnostic::error(decl.initializer->range, "the initializer of const '" + decl.name +
                                                                 "' must be a constant expression; " + spelled(part) +
                                                                 " is not constant")
-                     .with_code("E-CONST-INIT")
+                     .with_code(code::E_CONST_INIT)
                      .with_highlight(part->range);
   if (!global) d.with_hint("from #version 420 (or GL_ARB_shading_language_420pack) a local const may take any value");
   report(std::move(d));
@@ -59,7 +59,7 @@ void Checker::validate_global_initializer(const ast::Declarator& decl) {
   if (!part) return;
   report(Diagnostic::error(decl.initializer->range, "in GLSL ES the initializer of global '" + decl.name +
                                                         "' must be a constant expression; " + spelled(part) + " is not constant")
-             .with_code("E-CONST-INIT")
+             .with_code(code::E_CONST_INIT)
              .with_highlight(part->range)
              .with_hint("assign it in main(), or enable GL_EXT_shader_non_constant_global_initializers"));
 }

@@ -46,7 +46,7 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
       if (!decl.array_dims.empty() || base.is_array()) continue;
       c.reject(decl.name_range, std::string("a ") + stage_name(stage) + " shader " + (dir == Direction::input ? "input" : "output") +
                                     " holds one value per vertex: declare '" + decl.name + "' as an array, e.g. '" + decl.name + "[]'",
-               "E-INTERFACE-TYPE");
+               code::E_INTERFACE_TYPE);
       return;
     }
   }
@@ -57,12 +57,12 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
   const std::string role = vertex_input ? "vertex shader input" : fragment_output ? "fragment shader output"
                            : dir == Direction::input ? "shader input" : "shader output";
   if (contains_scalar(base, Scalar::bool_)) {
-    c.reject(where, "a " + role + " cannot be bool: '" + name + "' is declared " + glsl_name(base), "E-INTERFACE-TYPE");
+    c.reject(where, "a " + role + " cannot be bool: '" + name + "' is declared " + glsl_name(base), code::E_INTERFACE_TYPE);
     return;
   }
   if (contains_opaque(base) && !c.allows(kBindlessGate)) {
     c.reject(where, "a " + role + " cannot have an opaque type: '" + name + "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE");
+             code::E_INTERFACE_TYPE);
     return;
   }
   if (vertex_input || fragment_output) {
@@ -70,24 +70,24 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
       if (x.kind == ast::QualifierKind::Interpolation || is_auxiliary_word(x.word)) {
         c.reject(x.range, "'" + x.word + "' cannot qualify a " + role + " (" +
                               (vertex_input ? "vertex inputs are not interpolated" : "fragment outputs are not interpolated") + ")",
-                 "E-QUALIFIER");
+                 code::E_QUALIFIER);
         return;
       }
     }
     if (base.shape == Shape::structure) {
-      c.reject(where, "a " + role + " cannot be a struct: '" + name + "' is declared " + glsl_name(base), "E-INTERFACE-TYPE");
+      c.reject(where, "a " + role + " cannot be a struct: '" + name + "' is declared " + glsl_name(base), code::E_INTERFACE_TYPE);
       return;
     }
     if (fragment_output && base.shape == Shape::matrix) {
       c.reject(where, "a fragment shader output cannot be a matrix: '" + name + "' is declared " + glsl_name(base),
-               "E-INTERFACE-TYPE", "write its columns to separate outputs");
+               code::E_INTERFACE_TYPE, "write its columns to separate outputs");
       return;
     }
   }
   if (vertex_input && base.is_integer() && !c.allows(kIntegerVaryings)) {
     c.reject(where, "integer vertex shader inputs require " + gate_requirement(kIntegerVaryings, c.language()->es) +
                         ": '" + name + "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE");
+             code::E_INTERFACE_TYPE);
     return;
   }
   if (vertex_input || fragment_output) return;
@@ -95,26 +95,26 @@ static void check_interface_variable(Checker& c, const ast::VariableDecl& d, con
   if (base.is_integer() && !c.allows(kIntegerVaryings)) {
     c.reject(where, "integer varyings require " + gate_requirement(kIntegerVaryings, c.language()->es) + ": '" + name +
                         "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE");
+             code::E_INTERFACE_TYPE);
     return;
   }
   if (base.scalar == Scalar::double_ && !c.allows(kDoubleVaryings)) {
     c.reject(where, "double-precision varyings require " + gate_requirement(kDoubleVaryings, c.language()->es) + ": '" +
                         name + "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE");
+             code::E_INTERFACE_TYPE);
     return;
   }
   if (base.shape == Shape::structure && !c.allows(kStructVaryings)) {
     c.reject(where, "struct varyings require " + gate_requirement(kStructVaryings, c.language()->es) + ": '" + name +
                         "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE");
+             code::E_INTERFACE_TYPE);
     return;
   }
   // GLSL 1.30 §4.3.6 (and every version since): integer fragment inputs are not interpolated.
   if (stage == Stage::fragment && dir == Direction::input && (base.is_integer() || base.scalar == Scalar::double_) &&
       !d.qualifiers.has("flat")) {
     c.reject(where, "an integer or double fragment shader input must be 'flat': '" + name + "' is declared " + glsl_name(base),
-             "E-INTERFACE-TYPE", "write 'flat in " + glsl_name(base) + " " + name + "'");
+             code::E_INTERFACE_TYPE, "write 'flat in " + glsl_name(base) + " " + name + "'");
   }
 }
 
@@ -127,21 +127,21 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
   const char* storage = q.has("uniform") ? "uniform" : q.has("buffer") ? "buffer" : q.has("in") ? "in" : q.has("out") ? "out" : "";
   const std::string storage_word = storage;
   if (storage_word == "in" && options_.stage == Stage::vertex) {
-    reject(d.block_name_range, "a vertex shader has no input blocks: vertex inputs are single variables", "E-INTERFACE-BLOCK");
+    reject(d.block_name_range, "a vertex shader has no input blocks: vertex inputs are single variables", code::E_INTERFACE_BLOCK);
     return;
   }
   if (storage_word == "out" && options_.stage == Stage::fragment) {
     reject(d.block_name_range, "a fragment shader has no output blocks: fragment outputs are single variables",
-           "E-INTERFACE-BLOCK");
+           code::E_INTERFACE_BLOCK);
     return;
   }
   if (storage_word == "uniform" && !allows(kUniformBlocks)) {
-    reject(d.block_name_range, "uniform blocks require " + gate_requirement(kUniformBlocks, language()->es), "E-VERSION");
+    reject(d.block_name_range, "uniform blocks require " + gate_requirement(kUniformBlocks, language()->es), code::E_VERSION);
     return;
   }
   if ((storage_word == "in" || storage_word == "out") && !allows(kInOutBlocks)) {
     reject(d.block_name_range, "'" + storage_word + "' blocks require " + gate_requirement(kInOutBlocks, language()->es),
-           "E-VERSION");
+           code::E_VERSION);
     return;
   }
   if (storage_word == "out" && per_vertex(options_.stage, false, q) && !d.instance_name.empty())
@@ -152,41 +152,41 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
            std::string("a ") + stage_name(options_.stage) + " shader " + (storage_word == "in" ? "input" : "output") +
                " block holds one value per vertex: give it an array instance, e.g. '} " +
                (d.instance_name.empty() ? std::string("v") : d.instance_name) + "[];'",
-           "E-INTERFACE-BLOCK");
+           code::E_INTERFACE_BLOCK);
     return;
   }
   if (d.block_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
-    reject(d.block_name_range, "block name '" + d.block_name + "' begins with 'gl_', which is reserved", "E-RESERVED-NAME");
+    reject(d.block_name_range, "block name '" + d.block_name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
     return;
   }
   if (d.instance_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
     reject(d.instance_name_range, "instance name '" + d.instance_name + "' begins with 'gl_', which is reserved",
-           "E-RESERVED-NAME");
+           code::E_RESERVED_NAME);
     return;
   }
   for (const ast::VariableDecl* member : d.members) {
     if (member->type && member->type->form == ast::TypeSpecifier::Form::Struct) {
-      reject(member->type->range, "a struct cannot be defined inside a block", "E-INTERFACE-BLOCK",
+      reject(member->type->range, "a struct cannot be defined inside a block", code::E_INTERFACE_BLOCK,
              "define the struct at global scope and use its name");
       return;
     }
     for (const ast::Qualifier& x : member->qualifiers.list) {
       if (!is_storage_word(x.word) || x.word == storage_word) continue;
-      reject(x.range, "member storage '" + x.word + "' contradicts the block's '" + storage_word + "'", "E-INTERFACE-BLOCK");
+      reject(x.range, "member storage '" + x.word + "' contradicts the block's '" + storage_word + "'", code::E_INTERFACE_BLOCK);
       return;
     }
     for (const ast::Declarator& decl : member->declarators) {
       if (!d.instance_name.empty() && member->qualifiers.has("readonly"))
         validation_.readonly_members.emplace(d.instance_name + "." + decl.name, decl.name_range);
       if (decl.name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
-        reject(decl.name_range, "member name '" + decl.name + "' begins with 'gl_', which is reserved", "E-RESERVED-NAME");
+        reject(decl.name_range, "member name '" + decl.name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
         return;
       }
     }
     for (const ast::Declarator& decl : member->declarators) {
       const Type* t = result_.type_of(&decl);  // block_decl resolved it
       if (!t || !contains_opaque(*t) || allows(kBindlessGate)) continue;
-      reject(decl.name_range, "a block member cannot have an opaque type ('" + glsl_name(*t) + "')", "E-INTERFACE-BLOCK",
+      reject(decl.name_range, "a block member cannot have an opaque type ('" + glsl_name(*t) + "')", code::E_INTERFACE_BLOCK,
              "declare it as a separate uniform");
       return;
     }

@@ -178,19 +178,19 @@ std::optional<long long> Checker::layout_value(const ast::LayoutId& id) {
   if (v.type.is_error()) return result;
   if (!(v.type.shape == Shape::scalar && v.type.is_integer() && !v.type.is_array())) {
     reject(id.value->range, "the value of layout '" + id.name + "' must be a constant integer, not " + glsl_name(v.type),
-           "E-LAYOUT");
+           code::E_LAYOUT);
     return result;
   }
   if (const ast::Expr* part = non_constant_part(id.value)) {
     report(Diagnostic::error(id.value->range, "the value of layout '" + id.name + "' must be a constant expression")
-               .with_code("E-LAYOUT")
+               .with_code(code::E_LAYOUT)
                .with_highlight(part->range));
     return result;
   }
   if (v.constant && (*v.constant < 0 || (*v.constant == 0 && positive_value(id.name)))) {
     reject(id.value->range, "layout '" + id.name + "' must be " + (positive_value(id.name) ? "positive" : "non-negative") +
                                 ", not " + std::to_string(*v.constant),
-           "E-LAYOUT");
+           code::E_LAYOUT);
     return result;
   }
   result = v.constant;
@@ -204,7 +204,7 @@ static bool check_repetition(Checker& c, const ast::TypeQualifiers& q) {
     if (x.kind != ast::QualifierKind::Layout) continue;
     if (first_layout && !c.allows(kSeveralLayouts)) {
       c.reject(x.range, "a second layout(...) on one declaration requires " + gate_requirement(kSeveralLayouts, c.language()->es),
-               "E-LAYOUT", "merge them: layout(a, b)");
+               code::E_LAYOUT, "merge them: layout(a, b)");
       return false;
     }
     first_layout = first_layout ? first_layout : &x;
@@ -214,7 +214,7 @@ static bool check_repetition(Checker& c, const ast::TypeQualifiers& q) {
           c.reject(x.layout_ids[i].name_range,
                    "'" + x.layout_ids[i].name + "' is given twice in one layout(...); repeating an identifier requires " +
                        gate_requirement(kRepeatedLayoutIds, c.language()->es),
-                   "E-LAYOUT");
+                   code::E_LAYOUT);
           return false;
         }
   }
@@ -249,7 +249,7 @@ class LayoutRules {
   bool standalone() const { return site_.kind == LayoutSite::Kind::standalone; }
   bool member() const { return site_.kind == LayoutSite::Kind::member; }
   bool in_out() const { return site_.storage == "in" || site_.storage == "out"; }
-  bool fail(SourceRange where, std::string message, const char* code = "E-LAYOUT", std::string hint = {}) {
+  bool fail(SourceRange where, std::string message, const char* code = code::E_LAYOUT, std::string hint = {}) {
     c_.reject(where, std::move(message), code, std::move(hint));
     return false;
   }
@@ -258,7 +258,7 @@ class LayoutRules {
                 SourceRange before_range) {
     c_.report(Diagnostic::error(id.name_range, "the " + what + " is " + now + " here but " + before +
                                                    " before; every declaration must agree")
-                  .with_code("E-LAYOUT")
+                  .with_code(code::E_LAYOUT)
                   .with_note(Diagnostic::note(before_range, "first set here")));
     return false;
   }
@@ -320,7 +320,7 @@ class LayoutRules {
                              : attrib ? (letter_ == 'v' ? "on a vertex shader input" : "on a fragment shader output")
                                       : "on a shader input or output between stages";
     return fail(id.name_range, "layout 'location' " + what + " requires " + gate_requirement(gate, c_.language()->es),
-                "E-VERSION");
+                code::E_VERSION);
   }
 
   bool component(const ast::LayoutId& id, const std::optional<long long>& value) {
@@ -378,7 +378,7 @@ class LayoutRules {
     if (!(site_.storage == "out" && letter_ != 'f' && letter_ != 'x'))
       return fail(id.name_range, "layout '" + name + "' applies to outputs of vertex, tessellation and geometry shaders");
     if (name == "xfb_offset" && standalone())
-      return fail(id.name_range, "layout 'xfb_offset' applies to a variable or block, not to a default declaration", "E-LAYOUT",
+      return fail(id.name_range, "layout 'xfb_offset' applies to a variable or block, not to a default declaration", code::E_LAYOUT,
                   "use 'xfb_buffer' or 'xfb_stride' in 'layout(...) out;'");
     if (!value) return true;
     const long long v = *value;
@@ -494,7 +494,7 @@ class LayoutRules {
       c_.report(Diagnostic::error(location_->value ? location_->value->range : location_->name_range,
                                   "location " + std::to_string(shared) + " is already used by " +
                                       (use.output ? std::string("output '") : std::string("input '")) + other.name + "'")
-                    .with_code("E-LAYOUT")
+                    .with_code(code::E_LAYOUT)
                     .with_note(Diagnostic::note(other.range, "'" + other.name + "' takes locations " + std::to_string(other.first) +
                                                                  (other.last > other.first ? "-" + std::to_string(other.last) : ""))));
       return;
@@ -571,7 +571,7 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
     for (const char* id : {"offset", "align"})
       if (const ast::LayoutId* l = find_layout_id(q, id)) {
         reject(l->name_range, "layout '" + std::string(id) + "' requires a std140 or std430 block, not a " + packing + " one",
-               "E-LAYOUT");
+               code::E_LAYOUT);
         return false;
       }
     return true;
@@ -610,13 +610,13 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
         if (*v % p.align != 0) {
           reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name +
                                            "' is not a multiple of its base alignment (" + std::to_string(p.align) + " bytes)",
-                 "E-LAYOUT");
+                 code::E_LAYOUT);
           return;
         }
         if (*v < next) {
           reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name +
                                            "' lies inside the member before it, which ends at byte " + std::to_string(next),
-                 "E-LAYOUT");
+                 code::E_LAYOUT);
           return;
         }
         at = (*v + member_align - 1) / member_align * member_align;

@@ -40,7 +40,7 @@ const ast::IdentifierExpr* written_variable(const ast::Expr* e, const ast::Index
 bool Checker::validate_assignment(const ast::Expr* target, const Value& value) {
   if (value.type.is_array() && !allows(kArrayAssignment)) {
     reject(target->range, "an array cannot be assigned as a whole in " + std::string(language()->es ? "GLSL ES 1.00" : "GLSL 1.10"),
-           "E-NOT-ASSIGNABLE", "assign its elements one by one");
+           code::E_NOT_ASSIGNABLE, "assign its elements one by one");
     return false;
   }
   const ast::IndexExpr* index = nullptr;
@@ -52,7 +52,7 @@ bool Checker::validate_assignment(const ast::Expr* target, const Value& value) {
     auto it = validation_.readonly_members.find(root->name + "." + member->member);
     if (it != validation_.readonly_members.end()) {
       report(Diagnostic::error(target->range, "cannot assign to readonly member '" + member->member + "'")
-                 .with_code("E-NOT-ASSIGNABLE")
+                 .with_code(code::E_NOT_ASSIGNABLE)
                  .with_note(Diagnostic::note(it->second, "'" + member->member + "' is declared readonly here")));
       return false;
     }
@@ -66,7 +66,7 @@ bool Checker::validate_assignment(const ast::Expr* target, const Value& value) {
   if (invocation && invocation->name == "gl_InvocationID") return true;
   reject(index && index->base == root ? index->index->range : root->range,
          "a tessellation control shader writes its per-vertex output '" + root->name + "' only at [gl_InvocationID]",
-         "E-NOT-ASSIGNABLE", "other vertices' outputs are read-only here; index with gl_InvocationID");
+         code::E_NOT_ASSIGNABLE, "other vertices' outputs are read-only here; index with gl_InvocationID");
   return false;
 }
 

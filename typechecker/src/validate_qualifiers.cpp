@@ -76,13 +76,13 @@ static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, boo
       const bool same = (*slot)->word == x.word;
       if (parameter && slot == &storage && ((*slot)->word == "const" || x.word == "const") && !same) {
         const std::string& other = (*slot)->word == "const" ? x.word : (*slot)->word;
-        c.reject(x.range, "a 'const' parameter cannot be '" + other + "': it could not be written", "E-QUALIFIER");
+        c.reject(x.range, "a 'const' parameter cannot be '" + other + "': it could not be written", code::E_QUALIFIER);
         return false;
       }
       c.reject(x.range,
                same ? "'" + x.word + "' is given twice"
                     : std::string("a declaration takes at most one ") + what + ": '" + (*slot)->word + "' and '" + x.word + "'",
-               "E-QUALIFIER");
+               code::E_QUALIFIER);
       return false;
     }
     *slot = &x;
@@ -97,7 +97,7 @@ static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, boo
       c.reject(x.range,
                "'" + x.word + "' must come before '" + previous->word + "': before #version 420 (or " +
                    "GL_ARB_shading_language_420pack) the order is invariant, interpolation, storage, precision",
-               "E-QUALIFIER-ORDER", std::string(kRankWords[rank]) + " come before " + kRankWords[highest]);
+               code::E_QUALIFIER_ORDER, std::string(kRankWords[rank]) + " come before " + kRankWords[highest]);
       return false;
     }
     highest = rank;
@@ -120,18 +120,18 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
       if (allowed) continue;
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
       reject(x.range, what + " cannot qualify a local variable; locals take only 'const', 'precise' and a precision",
-             "E-QUALIFIER");
+             code::E_QUALIFIER);
       return;
     }
   } else if (const ast::Qualifier* inout = find_qualifier(q, "inout")) {
-    reject(inout->range, "'inout' qualifies only function parameters, not global variables", "E-QUALIFIER",
+    reject(inout->range, "'inout' qualifies only function parameters, not global variables", code::E_QUALIFIER,
            "an output of this stage is 'out', an input 'in'");
     return;
   }
   for (const ast::Declarator& decl : d.declarators) {
     if (reserved_name(decl.name) && !lookup(decl.name) && !known_builtin_variable(decl.name)) {
       reject(decl.name_range, "'" + decl.name + "' is not a built-in variable here, and names beginning with 'gl_' are reserved",
-             "E-RESERVED-NAME");
+             code::E_RESERVED_NAME);
       return;
     }
   }
@@ -139,18 +139,18 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
   if (!d.declarators.empty() && contains_opaque(base) && !q.has("uniform") && !allows(kBindlessGate)) {
     const SourceRange where = d.declarators.empty() ? d.range : d.declarators.front().name_range;
     const std::string what = base.shape == Shape::opaque ? "'" + base.opaque + "'" : "a struct with an opaque member";
-    reject(where, "a variable of " + what + " type must be 'uniform' (or a function parameter)", "E-OPAQUE");
+    reject(where, "a variable of " + what + " type must be 'uniform' (or a function parameter)", code::E_OPAQUE);
   }
 }
 
 void Checker::validate_struct_members(const ast::StructDecl& s) {
   if (reserved_name(s.name)) {
-    reject(s.name_range, "struct name '" + s.name + "' begins with 'gl_', which is reserved", "E-RESERVED-NAME");
+    reject(s.name_range, "struct name '" + s.name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
     return;
   }
   for (const ast::VariableDecl* member : s.members) {
     if (member->type && member->type->form == ast::TypeSpecifier::Form::Struct) {
-      reject(member->type->range, "a struct definition cannot be nested inside another struct", "E-QUALIFIER",
+      reject(member->type->range, "a struct definition cannot be nested inside another struct", code::E_QUALIFIER,
              "define the inner struct at global scope and use its name");
       return;
     }
@@ -167,7 +167,7 @@ void Checker::validate_struct_members(const ast::StructDecl& s) {
         if (parser_reports) continue;
       }
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
-      reject(x.range, what + " cannot qualify a struct member; members take only a precision qualifier", "E-QUALIFIER");
+      reject(x.range, what + " cannot qualify a struct member; members take only a precision qualifier", code::E_QUALIFIER);
       return;
     }
   }
@@ -175,21 +175,21 @@ void Checker::validate_struct_members(const ast::StructDecl& s) {
 
 void Checker::validate_function(const ast::FunctionDecl& d, const Function& f) {
   if (reserved_name(d.name)) {
-    reject(d.name_range, "function name '" + d.name + "' begins with 'gl_', which is reserved", "E-RESERVED-NAME");
+    reject(d.name_range, "function name '" + d.name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
     return;
   }
   const bool bindless = allows(kBindlessGate);
   if (!bindless && contains_opaque(f.result) && d.return_type) {
-    reject(d.return_type->range, "a function cannot return an opaque type ('" + glsl_name(f.result) + "')", "E-OPAQUE");
+    reject(d.return_type->range, "a function cannot return an opaque type ('" + glsl_name(f.result) + "')", code::E_OPAQUE);
     return;
   }
   if (d.name == "main" && d.template_params.empty()) {
     if (f.result.shape != Shape::void_ && !f.result.is_error() && d.return_type) {
-      reject(d.return_type->range, "'main' must return void", "E-MAIN");
+      reject(d.return_type->range, "'main' must return void", code::E_MAIN);
       return;
     }
     if (!d.params.empty()) {
-      reject(d.params.front()->range, "'main' takes no parameters", "E-MAIN");
+      reject(d.params.front()->range, "'main' takes no parameters", code::E_MAIN);
       return;
     }
   }
@@ -205,14 +205,14 @@ void Checker::validate_function(const ast::FunctionDecl& d, const Function& f) {
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
       reject(x.range, what + " cannot qualify a function parameter; parameters take const, in, out, inout, precise, "
                              "memory and precision qualifiers",
-             "E-QUALIFIER");
+             code::E_QUALIFIER);
       return;
     }
     const ast::Qualifier* out = find_qualifier(q, "out");
     if (!out) out = find_qualifier(q, "inout");
     if (out && !bindless && i < f.params.size() && contains_opaque(f.params[i])) {
       reject(out->range, "an opaque type ('" + glsl_name(f.params[i]) + "') cannot be an '" + out->word + "' parameter",
-             "E-OPAQUE");
+             code::E_OPAQUE);
       return;
     }
   }
@@ -225,7 +225,7 @@ void Checker::validate_precision(const ast::PrecisionDecl& d) {
                   t.shape == Shape::opaque;
   if (!ok) {
     reject(d.type->range, "a default precision applies to 'float', 'int' and opaque types, not '" + glsl_name(t) + "'",
-           "E-PRECISION", t.shape == Shape::vector || t.shape == Shape::matrix ? "'precision " + d.precision +
+           code::E_PRECISION, t.shape == Shape::vector || t.shape == Shape::matrix ? "'precision " + d.precision +
                                                                                    " float;' covers vectors and matrices too"
                                                                              : "");
   }
@@ -245,7 +245,7 @@ void Checker::validate_qualifier_decl(const ast::QualifierDecl& d, bool global) 
   for (const ast::Qualifier& x : d.qualifiers.list) {
     if (x.kind == ast::QualifierKind::Precise) continue;
     const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("a layout qualifier") : "'" + x.word + "'";
-    reject(x.range, what + " can be applied to existing variables only at global scope", "E-QUALIFIER");
+    reject(x.range, what + " can be applied to existing variables only at global scope", code::E_QUALIFIER);
     return;
   }
 }

@@ -54,7 +54,7 @@ void Checker::validate_builtin_redeclaration(const ast::VariableDecl& d, const a
   const std::string& name = decl.name;
   if (name == "gl_FragCoord") {
     if (validation_.used_builtins.count(name) && !validation_.frag_coord_layout) {
-      reject(decl.name_range, "gl_FragCoord must be redeclared before it is used", "E-REDECLARATION");
+      reject(decl.name_range, "gl_FragCoord must be redeclared before it is used", code::E_REDECLARATION);
       return;
     }
     const std::string layout = layout_words(d.qualifiers);
@@ -63,7 +63,7 @@ void Checker::validate_builtin_redeclaration(const ast::VariableDecl& d, const a
     } else if (validation_.frag_coord_layout->first != layout) {
       report(Diagnostic::error(decl.name_range, "gl_FragCoord is redeclared with " + layout + ", but was with " +
                                                     validation_.frag_coord_layout->first + " before; every redeclaration must agree")
-                 .with_code("E-REDECLARATION")
+                 .with_code(code::E_REDECLARATION)
                  .with_note(Diagnostic::note(validation_.frag_coord_layout->second, "the first redeclaration is here")));
     }
     return;
@@ -78,19 +78,19 @@ void Checker::validate_builtin_redeclaration(const ast::VariableDecl& d, const a
     if (!storage_ok || !only_storage) {
       reject(decl.name_range, "'" + name + "' can only be redeclared as an '" + storage + "' of a " + stage_name(options_.stage) +
                                   " shader",
-             "E-REDECLARATION", "write '" + std::string(storage) + " " + b.element + " " + name + "[N];'");
+             code::E_REDECLARATION, "write '" + std::string(storage) + " " + b.element + " " + name + "[N];'");
       return;
     }
     if (!type.is_array() || glsl_name(type.element()) != b.element) {
       reject(decl.name_range, "'" + name + "' is redeclared as " + glsl_name(type) + "; it must stay an array of " + b.element,
-             "E-REDECLARATION");
+             code::E_REDECLARATION);
       return;
     }
     const long long maximum = *builtin_constant(b.maximum);
     if (type.array[0] > maximum) {
       reject(decl.name_range, "'" + name + "' is redeclared with " + std::to_string(type.array[0]) +
                                   " elements; it may have at most " + b.maximum + " (" + std::to_string(maximum) + ")",
-             "E-REDECLARATION");
+             code::E_REDECLARATION);
     }
     return;
   }

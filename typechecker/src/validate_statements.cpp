@@ -34,7 +34,7 @@ void Checker::validate_stage(const ast::TranslationUnit& unit) {
   reject(where, std::string(stage_name(options_.stage)) + " shaders require " +
                                          gate_requirement(*gate, level.es) + "; the shader is #version " +
                                          std::to_string(level.version) + (level.es ? " es" : ""),
-         "E-VERSION");
+         code::E_VERSION);
 }
 
 Checker::FlowScope::FlowScope(Checker& c, const ast::Stmt* s) : checker(c) {
@@ -59,19 +59,19 @@ void Checker::validate_call_placement(const ast::CallExpr& e) {
   else if (validation_.flow_depth > 0) problem = "only outside control flow (if, loops, switch)";
   else if (validation_.returned_from == current_function_) problem = "only before a return from main()";
   if (!problem.empty()) {
-    reject(e.callee_range, "'" + name + "()' may be called " + problem, "E-CALL-PLACEMENT",
+    reject(e.callee_range, "'" + name + "()' may be called " + problem, code::E_CALL_PLACEMENT,
            tess_barrier ? "every invocation of the patch must reach the barrier" : "");
     return;
   }
   if (!interlock) return;
   if (auto it = validation_.called_once.find(name); it != validation_.called_once.end()) {
     report(Diagnostic::error(e.callee_range, "'" + name + "()' may be called only once")
-               .with_code("E-CALL-PLACEMENT")
+               .with_code(code::E_CALL_PLACEMENT)
                .with_note(Diagnostic::note(it->second, "the first call is here")));
     return;
   }
   if (name == "endInvocationInterlockARB" && !validation_.called_once.count("beginInvocationInterlockARB")) {
-    reject(e.callee_range, "'endInvocationInterlockARB()' must follow beginInvocationInterlockARB()", "E-CALL-PLACEMENT");
+    reject(e.callee_range, "'endInvocationInterlockARB()' must follow beginInvocationInterlockARB()", code::E_CALL_PLACEMENT);
     return;
   }
   validation_.called_once.emplace(name, e.callee_range);
@@ -82,12 +82,12 @@ void Checker::validate_switch(const ast::SwitchStmt& s, const Type& selector) {
   if (!s.body || s.body->statements.empty()) return;
   const std::vector<ast::Stmt*>& body = s.body->statements;
   if (!is_label(body.front())) {
-    reject(body.front()->range, "a switch body must begin with a 'case' or 'default' label", "E-SWITCH",
+    reject(body.front()->range, "a switch body must begin with a 'case' or 'default' label", code::E_SWITCH,
            "statements before the first label could never run");
     return;
   }
   if (is_label(body.back())) {
-    reject(body.back()->range, "the last label of a switch must be followed by a statement", "E-SWITCH",
+    reject(body.back()->range, "the last label of a switch must be followed by a statement", code::E_SWITCH,
            "add 'break;' after it");
     return;
   }
@@ -96,7 +96,7 @@ void Checker::validate_switch(const ast::SwitchStmt& s, const Type& selector) {
     if (!st || st->kind != ast::NodeKind::DefaultLabel) continue;
     if (first_default) {
       report(Diagnostic::error(st->range, "a switch has at most one 'default' label")
-                 .with_code("E-SWITCH")
+                 .with_code(code::E_SWITCH)
                  .with_note(Diagnostic::note(first_default->range, "the first 'default' is here")));
       return;
     }
@@ -109,12 +109,12 @@ void Checker::validate_case(const ast::CaseLabel& label, const Value& value) {
   SwitchContext& sw = switches_.back();
   const SourceRange where = label.value->range;
   if (!(value.type.shape == Shape::scalar && value.type.is_integer() && !value.type.is_array())) {
-    reject(where, "a case label must be a constant integer expression, not " + glsl_name(value.type), "E-SWITCH");
+    reject(where, "a case label must be a constant integer expression, not " + glsl_name(value.type), code::E_SWITCH);
     return;
   }
   if (const ast::Expr* part = non_constant_part(label.value)) {
     report(Diagnostic::error(where, "a case label must be a constant integer expression")
-               .with_code("E-SWITCH")
+               .with_code(code::E_SWITCH)
                .with_highlight(part->range));
     return;
   }
@@ -123,13 +123,13 @@ void Checker::validate_case(const ast::CaseLabel& label, const Value& value) {
       sw.selector.scalar != value.type.scalar && !allows(kImplicitIntToUint)) {
     reject(where, "case label of type " + glsl_name(value.type) + " in a switch on " + glsl_name(sw.selector) +
                       "; before #version 400 the types must be the same",
-           "E-SWITCH", value.type.scalar == Scalar::int_ ? "write the label as " + std::to_string(*value.constant) + "u" : "");
+           code::E_SWITCH, value.type.scalar == Scalar::int_ ? "write the label as " + std::to_string(*value.constant) + "u" : "");
     return;
   }
   for (const auto& [seen, range] : sw.cases) {
     if (seen != *value.constant) continue;
     report(Diagnostic::error(where, "duplicate case value " + std::to_string(*value.constant))
-               .with_code("E-SWITCH")
+               .with_code(code::E_SWITCH)
                .with_note(Diagnostic::note(range, "the same value is here")));
     return;
   }

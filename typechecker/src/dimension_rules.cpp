@@ -1,0 +1,88 @@
+// Dimension rules beyond the exponent algebra (docs/language.md, "Cosines"
+// and "Units"): where a cosine stops being a projection factor, and
+// radians()/degrees() of an angle measured in a unit.
+
+#include <numbers>
+
+#include "checker_impl.hpp"
+#include "dim_slot.hpp"
+
+namespace safegi::detail {
+namespace {
+
+// The exponent of the base `proj` in `d`, or 0 when the program has no proj.
+int proj_exponent(const Dimension& d, const DimensionRegistry& reg) {
+  std::optional<BaseId> proj = reg.find_base("proj");
+  if (!proj) return 0;
+  for (const Factor& f : d.factors())
+    if (f.base == *proj) return f.exponent;
+  return 0;
+}
+
+// The unit the program measures degrees in (the prelude's `degree`), if any.
+const Unit* degree_unit(const DimensionRegistry& reg) {
+  std::optional<Dimension> angle = reg.find_dimension("angle");
+  if (!angle) return nullptr;
+  for (const Unit& u : reg.units())
+    if (u.dimension == *angle && DimensionRegistry::same_scale(u.scale, std::numbers::pi / 180.0)) return &u;
+  return nullptr;
+}
+
+}  // namespace
+
+// A pure power of proj (cos θ, cos² θ) where a plain number is expected: the
+// cosine is used as a number (Schlick's 1 - cos θ, GGX's cos² θh (α² - 1) + 1,
+// Smith's masking term, a lobe's pow), not as the projection of an area.
+// Never the reverse: a plain number where proj is expected stays the missing
+// cosine it usually is.
+bool Checker::cosine_as_number(const DimSlot& expected, const DimSlot& found) const {
+  if (expected.state != DimSlot::State::known || found.state != DimSlot::State::known) return false;
+  if (!expected.value.is_dimensionless() || found.value.factors().size() != 1) return false;
+  return proj_exponent(found.value, result_.registry) > 0;
+}
+
+// A cosine scaling a unit vector is a component along it (the reflection
+// 2 (n·w) n - w, Gram–Schmidt t - (t·n) n): the product keeps the scale's
+// dimension without one proj.
+DimSlot Checker::projected_component(const DimSlot& scale) const {
+  if (scale.state != DimSlot::State::known || proj_exponent(scale.value, result_.registry) <= 0) return scale;
+  Checked<Dimension> d = divide(scale.value, Dimension::base(*result_.registry.find_base("proj"), 1));
+  return d ? DimSlot::known(*d) : scale;
+}
+
+// radians(x) of an angle in degrees is the angle (in radians); degrees(x) of
+// an angle is that angle in degrees. A plain number (radians(45.0)) takes the
+// signature; so does anything else, for its error.
+std::optional<Value> Checker::angle_conversion(const std::string& name, const Value& arg, const Type& result,
+                                               SourceRange call_range) {
+  const DimensionRegistry& reg = result_.registry;
+  const Unit* degree = degree_unit(reg);
+  std::optional<Dimension> angle = reg.find_dimension("angle");
+  const DimSlot d = value_dimension(arg.type, reg);
+  if (!degree || !angle || d.state != DimSlot::State::known) return std::nullopt;
+  const Dimension in_degrees = reg.measured_in(*degree);
+  Value out;
+  out.range = call_range;
+  out.type = result;
+  out.type.geometry = arg.type.geometry == Geometry::spectrum ? Geometry::spectrum : Geometry::none;
+  if (name == "radians" && d.value == in_degrees) {
+    out.type.dim = DimSlot::known(*angle);
+    return out;
+  }
+  if (name == "degrees" && d.value == *angle) {
+    out.type.dim = DimSlot::known(in_degrees);
+    return out;
+  }
+  const bool already = (name == "radians" && d.value == *angle) || (name == "degrees" && d.value == in_degrees);
+  if (!already) return std::nullopt;
+  Diagnostic e = Diagnostic::error(arg.range, "argument 1 of '" + name + "' has type " + name_of(arg.type) + ", which is already in " +
+                                                  (name == "radians" ? "radians" : "degrees"))
+                     .with_code(code::E_DIMENSION_MISMATCH);
+  add_origin_note(e, arg);
+  e.with_hint(name == "radians" ? "radians() converts degrees (a plain number or float<angle in degree>); use the angle as it is"
+                                : "degrees() converts radians; use the angle as it is");
+  report(std::move(e));
+  return error_value(call_range);
+}
+
+}  // namespace safegi::detail

@@ -1,0 +1,105 @@
+// Hints chosen from the whole expression (issue #21): each names the cause,
+// and where it offers code, that code compiles in place of the mistake.
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "test_support.hpp"
+
+namespace safegi {
+namespace {
+
+using testing::check_source;
+
+struct HintCase {
+  const char* name;
+  std::string declarations;  // globals both programs share
+  std::string mistake;       // the statement with the mistake, with @ where the mistaken expression stands
+  std::string wrong;         // the mistaken expression
+  std::string cause;         // what the help must say
+  std::string suggestion;    // the code the help offers, x standing for `wrong` ("" when it offers none)
+  std::string fixed = {};    // the mistake with the suggestion applied, when x does not stand for all of it
+};
+
+std::string program(const HintCase& c, const std::string& expression) {
+  std::string statement = c.mistake;
+  statement.replace(statement.find('@'), 1, expression);
+  return "space world;\n" + c.declarations + "\nout vec4 color;\nvoid main() {\n  " + statement + "\n  color = vec4(0.0);\n}\n";
+}
+
+std::string first_hint(const testing::CheckedSource& c) {
+  for (const Diagnostic& d : c.diagnostics.diagnostics())
+    if (d.severity == Severity::error) return d.hint;
+  return "(no error)";
+}
+
+class Hints : public ::testing::TestWithParam<HintCase> {};
+
+TEST_P(Hints, NameTheCauseAndTheirCodeCompiles) {
+  const HintCase& c = GetParam();
+  auto wrong = check_source(program(c, c.wrong));
+  ASSERT_EQ(wrong->errors(), 1u) << wrong->rendered();
+  const std::string hint = first_hint(*wrong);
+  EXPECT_NE(hint.find(c.cause), std::string::npos) << hint;
+  if (c.suggestion.empty()) return;
+  EXPECT_NE(hint.find(c.suggestion), std::string::npos) << hint;
+  // The suggestion in place of the mistake: x stands for the mistaken expression, unless the case spells the fix out.
+  const std::string fixed =
+      c.fixed.empty() ? std::regex_replace(c.suggestion, std::regex("\\bx\\b"), "(" + c.wrong + ")") : c.fixed;
+  auto right = check_source(program(c, fixed));
+  EXPECT_EQ(right->errors(), 0u) << "suggested: " << fixed << "\n" << right->rendered();
+}
+
+const char* const kLight = "uniform spectrum<1> albedo; uniform spectrum<brdf> specular; uniform spectrum<irradiance> E;";
+
+INSTANTIATE_TEST_SUITE_P(
+    FromTheWholeExpression, Hints,
+    ::testing::Values(
+        HintCase{"lambert_without_pi", kLight, "spectrum<radiance> L = (@ + specular) * E;", "albedo", "missing 1/π",
+                 "x * float<brdf>(1.0 / 3.14159265)"},
+        HintCase{"ggx_without_pi", "uniform float<1> a2; uniform float<1> denom;", "float<brdf> D = @;", "a2 / (denom * denom)",
+                 "missing 1/π", "x * float<brdf>(1.0 / 3.14159265)"},
+        HintCase{"lobe_without_pi", "uniform float<1> lobe; uniform spectrum<irradiance> E;", "spectrum<radiance> L = @;",
+                 "lobe * E", "'lobe' is a plain number", "lobe * float<brdf>(1.0 / 3.14159265)",
+                 "lobe * float<brdf>(1.0 / 3.14159265) * E"},
+        HintCase{"cone_without_steradian", "uniform float<1> cosMax;", "float<solid_angle> cone = @;", "2.0 * 3.14159265 * (1.0 - cosMax)",
+                 "give it its unit", "x * steradian"},
+        HintCase{"phase_without_steradian", "uniform float<1> g; uniform float<1> hg;", "float<pdf_solid_angle> phase = @;",
+                 "(1.0 - g * g) / (4.0 * 3.14159265 * hg)", "per steradian", "x / steradian"},
+        HintCase{"jacobian_without_light_cosine",
+                 "uniform float<area> lightArea; uniform float<solid_angle / (area * proj)> invR2;",
+                 "float<pdf_solid_angle> pdf = @;", "1.0 / (lightArea * invR2)", "light-side cos θ", ""},
+        HintCase{"angle_given_its_unit_twice", "uniform float<angle in degree> coneDeg;", "float c = cos(@);", "coneDeg * degree",
+                 "'coneDeg' already is angle", "coneDeg in radian",
+                 "coneDeg in radian"},
+        HintCase{"dimensionless_in_two_units", "uniform float<length> d; uniform float<length in centimeter> reachCm;",
+                 "float<1> fade = @;", "d / reachCm", "where it enters", "x in (1)"},
+        HintCase{"unit_converted_where_it_enters", "uniform float<length> d; uniform float<length in centimeter> reachCm;",
+                 "float<1> fade = @;", "d / reachCm", "convert 'reachCm' where it enters", "reachCm in meter",
+                 "d / (reachCm in meter)"},
+        HintCase{"direction_plus_length_vector", "uniform direction<world> V; uniform vector<world> toL;",
+                 "direction<world> H = normalize(@);", "V + toL", "normalize it first", "normalize(toL)",
+                 "V + normalize(toL)"},
+        HintCase{"unit_of_another_dimension", "", "float<length> r = @;", "5.0 * degree", "measures angle, not length",
+                 "x * meter", "5.0 * meter"},
+        HintCase{"intensity_without_falloff", "uniform spectrum<intensity> I; uniform float<proj> c;",
+                 "spectrum<irradiance> E = @;", "I * c", "missing the inverse-square falloff", ""},
+        HintCase{"solid_angle_of_the_sphere_as_a_number", "uniform spectrum<power> Phi;", "spectrum<intensity> I = @;",
+                 "Phi / (4.0 * 3.14159265)", "written as a plain number", "x * steradian", "Phi / (4.0 * 3.14159265 * steradian)"},
+        HintCase{"plain_number_for_a_length", "", "float<length> bias = @;", "0.05", "give it its unit", "x * meter"}),
+    [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
+
+TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {
+  auto c = check_source(
+      "space world; uniform normal<world> n; uniform vector<world> toL; out vec4 color;\n"
+      "template<space S> float<proj> cosineTo(normal<S> m, direction<S> w) { return max(dot(m, w), 0.0); }\n"
+      "void main() { float<proj> c = cosineTo(n, toL); color = vec4(c); }\n");
+  ASSERT_EQ(c->errors(), 1u);
+  EXPECT_EQ(first_hint(*c), "argument 2 is vector<world> but the parameter is direction<S>: a vector becomes a direction only "
+                            "through normalize()");
+}
+
+}  // namespace
+}  // namespace safegi
