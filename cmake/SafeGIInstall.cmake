@@ -22,7 +22,7 @@ function(safegi_install_targets)
   foreach(dir IN LISTS ARG_HEADERS_FROM)
     # Tests live beside the headers they test; only headers are installed.
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-            FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h" PATTERN "*.sgl")
+            FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h" PATTERN "*.def" PATTERN "*.sgl")
   endforeach()
   set_property(GLOBAL APPEND PROPERTY SAFEGI_EXPORTED_TARGETS ${ARG_UNPARSED_ARGUMENTS})
 endfunction()

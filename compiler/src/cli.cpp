@@ -134,7 +134,8 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     return 0;
   }
   app.add_option("files", files, "annotated shaders (.sgl.vert, .frag, …); '-' reads stdin (needs -S)")->required();
-  app.add_option("-S,--stage", stage_name, "stage of every input: vert tesc tese geom frag comp");
+  const std::string stage_words = stage_extension_list(" ");
+  app.add_option("-S,--stage", stage_name, "stage of every input: " + stage_words);
   // Each occurrence of a repeatable flag takes one value (`-D A file.frag`).
   app.add_option("-o", outputs, "write the plain GLSL of each input, in order ('-' for stdout)")->allow_extra_args(false);
   app.add_option("--symbols", symbols_path, "write the JSON symbol table ('-' for stdout)");
@@ -188,7 +189,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   if (!stage_name.empty()) {
     forced_stage = stage_from_name(stage_name);
     if (!forced_stage) {
-      io.err << "safeglslc: error: unknown stage '" << stage_name << "' (expected vert, tesc, tese, geom, frag or comp)\n";
+      io.err << "safeglslc: error: unknown stage '" << stage_name << "' (expected one of " << stage_words << ")\n";
       return kExitUsage;
     }
   }
@@ -253,7 +254,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     s.stage = forced_stage;
     if (path == "-") {
       if (!forced_stage) {
-        io.err << "safeglslc: error: reading stdin needs the stage: give -S vert|tesc|tese|geom|frag|comp\n";
+        io.err << "safeglslc: error: reading stdin needs the stage: give -S " << stage_extension_list("|") << "\n";
         return kExitUsage;
       }
       s.path = "<stdin>";
@@ -272,7 +273,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
       s.text = text.str();
       if (!forced_stage && !stage_from_path(path)) {
         io.err << "safeglslc: error: cannot tell the stage of '" << path
-               << "' from its extension (.vert .tesc .tese .geom .frag .comp, optionally after .sgl); use -S\n";
+               << "' from its extension (" << stage_extension_list(" ", ".") << ", optionally after .sgl); use -S\n";
         return kExitUsage;
       }
     }
@@ -289,6 +290,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   options.diagnostics.error_limit = error_limit;
   if (desktop_default) options.default_version = GlslVersion{110, false};
   options.override_version = override_version;
+  if (spirv && spirv->client == SpirvClient::vulkan) options.vulkan = spirv->client_version;
   CompileResult result = compile(sources, options);
 
   if (diagnostics_format == "json") {

@@ -15,27 +15,12 @@
 namespace safegi {
 namespace {
 
-struct StageTable {
-  Stage stage;
-  std::string_view extension;
-  std::string_view name;
-  std::optional<gl::Stage> table;
-};
-
-constexpr StageTable kStages[] = {
-    {Stage::vertex, "vert", "vertex", gl::Stage::vertex},
-    {Stage::tess_control, "tesc", "tesscontrol", gl::Stage::tess_control},
-    {Stage::tess_evaluation, "tese", "tesseval", gl::Stage::tess_evaluation},
-    {Stage::geometry, "geom", "geometry", gl::Stage::geometry},
-    {Stage::fragment, "frag", "fragment", gl::Stage::fragment},
-    {Stage::compute, "comp", "compute", gl::Stage::compute},
-};
-
-// Pipeline order, for the cross-stage check between neighbours.
+// Pipeline order (stages.def), for the cross-stage check between neighbours.
 int pipeline_index(Stage s) {
-  for (std::size_t i = 0; i < std::size(kStages); ++i)
-    if (kStages[i].stage == s) return static_cast<int>(i);
-  return static_cast<int>(std::size(kStages));
+  const std::vector<StageInfo>& table = stage_table();
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (table[i].stage == s) return static_cast<int>(i);
+  return static_cast<int>(table.size());
 }
 
 struct StageWork {
@@ -137,8 +122,8 @@ std::string to_string(const GlslVersion& version) {
 }
 
 std::optional<Stage> stage_from_name(std::string_view name) {
-  for (const StageTable& s : kStages)
-    if (name == s.extension || name == s.name) return s.stage;
+  for (const StageInfo& s : stage_table())
+    if (name == s.extension || name == s.long_name) return s.stage;
   if (name == "tess_control") return Stage::tess_control;
   if (name == "tess_evaluation") return Stage::tess_evaluation;
   return std::nullopt;
@@ -150,20 +135,29 @@ std::optional<Stage> stage_from_path(std::string_view path) {
   const std::size_t dot = name.find_last_of('.');
   if (dot == std::string_view::npos) return std::nullopt;
   std::string_view ext = name.substr(dot + 1);
-  for (const StageTable& s : kStages)
+  for (const StageInfo& s : stage_table())
     if (ext == s.extension) return s.stage;
   return std::nullopt;
 }
 
 std::string_view stage_extension(Stage stage) {
-  for (const StageTable& s : kStages)
-    if (s.stage == stage) return s.extension;
-  return "";
+  const StageInfo* info = stage_info(stage);
+  return info ? info->extension : "";
+}
+
+std::string stage_extension_list(std::string_view separator, std::string_view prefix) {
+  std::string list;
+  for (const StageInfo& s : stage_table()) list += (list.empty() ? "" : std::string(separator)) + std::string(prefix) + s.extension;
+  return list;
 }
 
 std::optional<gl::Stage> to_table_stage(Stage stage) {
-  for (const StageTable& s : kStages)
-    if (s.stage == stage) return s.table;
+  switch (stage) {
+#define SAFEGI_STAGE(id, ...) \
+  case Stage::id: return gl::Stage::id;
+#include <safegi/typechecker/stages.def>
+    case Stage::unknown: break;
+  }
   return std::nullopt;
 }
 
@@ -252,7 +246,9 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
                        .with_hint("name it *.vert, *.frag, … (or *.sgl.frag), or give the stage with -S"));
       continue;
     }
-    for (std::size_t j = 0; j < i; ++j)
+    // A ray-tracing pipeline has as many hit, miss and callable shaders as it likes.
+    const bool one_per_program = stage_info(*stage)->family != StageFamily::ray_tracing;
+    for (std::size_t j = 0; j < i && one_per_program; ++j)
       if (work[j].stage == *stage) {
         diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
                                        "a program has at most one " + std::string(stage_extension(*stage)) +
@@ -292,8 +288,16 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
   std::stable_sort(ordered.begin(), ordered.end(),
                    [](const StageWork* a, const StageWork* b) { return pipeline_index(a->stage) < pipeline_index(b->stage); });
   for (std::size_t i = 1; i < ordered.size(); ++i)
-    if (ordered[i - 1]->stage != Stage::compute && ordered[i]->stage != Stage::compute)
+    if (stage_info(ordered[i - 1]->stage)->family == StageFamily::graphics &&
+        stage_info(ordered[i]->stage)->family == StageFamily::graphics)
       check_interface_match(*ordered[i - 1]->checked, *ordered[i]->checked, diags);
+
+  // Ray tracing: what the ray generation shader traces reaches the hit and miss shaders.
+  for (const StageWork* tracer : ordered)
+    if (tracer->stage == Stage::ray_generation)
+      for (const StageWork* receiver : ordered)
+        if (receiver->stage == Stage::closest_hit || receiver->stage == Stage::any_hit || receiver->stage == Stage::miss)
+          check_payload_match(*tracer->checked, *receiver->checked, diags);
 
   gl::SymbolTable& table = result.symbols;
   table.mode = sources.size() > 1 ? gl::TableMode::program : gl::TableMode::shader;
@@ -354,6 +358,7 @@ PreprocessorOptions preprocessor_options(const CompileOptions& options) {
   pp.undefines = options.undefines;
   pp.default_version = options.default_version.number;
   pp.default_es = options.default_version.es;
+  pp.vulkan = options.vulkan;
   if (options.override_version) {
     pp.override_version = options.override_version->number;
     pp.override_es = options.override_version->es;

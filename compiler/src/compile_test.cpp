@@ -37,6 +37,35 @@ TEST(StageFromPath, ExtensionsWithAndWithoutTheAnnotatedSuffix) {
   EXPECT_EQ(stage_from_name("pixel"), std::nullopt);
 }
 
+TEST(StageFromPath, VulkanStagesByTheirExtensionsAndNames) {
+  EXPECT_EQ(stage_from_path("scene.rgen"), Stage::ray_generation);
+  EXPECT_EQ(stage_from_path("scene.sgl.rchit"), Stage::closest_hit);
+  EXPECT_EQ(stage_from_path("scene.rahit"), Stage::any_hit);
+  EXPECT_EQ(stage_from_path("scene.rint"), Stage::intersection);
+  EXPECT_EQ(stage_from_path("scene.rmiss"), Stage::miss);
+  EXPECT_EQ(stage_from_path("scene.rcall"), Stage::callable);
+  EXPECT_EQ(stage_from_path("meshlet.mesh"), Stage::mesh);
+  EXPECT_EQ(stage_from_path("meshlet.task"), Stage::task);
+  EXPECT_EQ(stage_from_name("raygen"), Stage::ray_generation);
+  EXPECT_EQ(stage_from_name("rchit"), Stage::closest_hit);
+  for (const StageInfo& s : stage_table()) {
+    EXPECT_EQ(stage_from_name(s.extension), s.stage) << s.extension;
+    EXPECT_EQ(stage_from_path(std::string("x.") + s.extension), s.stage) << s.extension;
+    EXPECT_EQ(to_table_stage(s.stage).has_value(), true) << s.extension;
+  }
+}
+
+// docs/safeglslc.md lists the stages' extensions as stages.def has them.
+TEST(StageFromPath, TheDocsListEveryStageExtension) {
+  const std::string doc = testing::read_text_file(SAFEGI_DOCS_DIR "/safeglslc.md");
+  const std::string sentence = "The stage comes from the last extension: `" + stage_extension_list(" ", ".") + "`";
+  std::string flat = doc;
+  for (std::size_t at = flat.find('\n'); at != std::string::npos; at = flat.find('\n', at)) flat[at] = ' ';
+  EXPECT_NE(flat.find(sentence), std::string::npos) << "docs/safeglslc.md should say: " << sentence;
+  const std::string flag = "stage of every input: `" + stage_extension_list(" ") + "`";
+  EXPECT_NE(flat.find(flag), std::string::npos) << "docs/safeglslc.md should say: " << flag;
+}
+
 TEST(Compile, KeepsTheAnalysisOnlyWhenAskedEvenWithTypeErrors) {
   EXPECT_EQ(compile({{"light.sgl.frag", kFrag}}).stages.at(0).analysis, nullptr);
   CompileOptions options;

@@ -14,6 +14,14 @@ inline EShLanguage glslang_language(Stage stage) {
     case Stage::tess_evaluation: return EShLangTessEvaluation;
     case Stage::geometry: return EShLangGeometry;
     case Stage::compute: return EShLangCompute;
+    case Stage::task: return EShLangTask;
+    case Stage::mesh: return EShLangMesh;
+    case Stage::ray_generation: return EShLangRayGen;
+    case Stage::intersection: return EShLangIntersect;
+    case Stage::any_hit: return EShLangAnyHit;
+    case Stage::closest_hit: return EShLangClosestHit;
+    case Stage::miss: return EShLangMiss;
+    case Stage::callable: return EShLangCallable;
     default: return EShLangFragment;
   }
 }

@@ -94,6 +94,8 @@ class SymbolBuilder {
         case InterfaceKind::output: storage = gl::Storage::output; break;
         case InterfaceKind::buffer: storage = gl::Storage::buffer; break;
         case InterfaceKind::shared: break;  // workgroup memory: no host ever sees it
+        case InterfaceKind::ray_payload:
+        case InterfaceKind::ray_payload_in: break;  // passed between ray-tracing stages, never bound by a host
       }
       if (!storage) continue;
       auto found = block_of.find(iv.decl);

@@ -209,6 +209,11 @@ void Preprocessor::apply_version() {
   define_predefined("__FILE__", "", Macro::Builtin::file);
   define_predefined("__VERSION__", save(std::to_string(unit_.version)));
   for (const std::string& extension : options_.extension_macros) define_predefined(save(extension), "1");
+  if (options_.vulkan != 0) {
+    define_predefined("VULKAN", save(std::to_string(options_.vulkan)));
+    unit_.keywords.extension_groups |= extension_groups_enabled_by(kVulkanGlslExtension);
+    unit_.language.extensions.emplace_back(kVulkanGlslExtension);
+  }
   if (unit_.es) {
     define_predefined("GL_ES", "1");
     define_predefined("GL_es_profile", "1");

@@ -20,8 +20,8 @@ constexpr std::uint32_t kArithmetic = bit(G::arithmetic_types);
 // vendor ones in wide use) whose additions are syntax this front end parses:
 // keywords (their group), layout identifiers, built-in functions and
 // variables, directives. Sorted by name. Extensions that add syntax the
-// parser does not know (ray-tracing storage classes, nonuniformEXT, [[attributes]])
-// are left out, so `#ifdef` on them says "not supported", as it should.
+// parser does not know ([[attributes]] of GL_EXT_control_flow_attributes) are
+// left out, so `#ifdef` on them says "not supported", as it should.
 constexpr std::array kExtensions = {
     ExtensionInfo{"GL_AMD_conservative_depth", kLayout},
     ExtensionInfo{"GL_AMD_gpu_shader_half_float", kArithmetic},
@@ -85,20 +85,36 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_ARB_vertex_attrib_64bit", bit(G::fp64)},
     ExtensionInfo{"GL_ARB_viewport_array", 0},
     ExtensionInfo{"GL_EXT_blend_func_extended", 0},
+    ExtensionInfo{"GL_EXT_buffer_reference", 0},
+    ExtensionInfo{"GL_EXT_buffer_reference2", 0},
+    ExtensionInfo{"GL_EXT_buffer_reference_uvec2", 0},
     ExtensionInfo{"GL_EXT_conservative_depth", kLayout},
     ExtensionInfo{"GL_EXT_debug_printf", 0},
+    ExtensionInfo{"GL_EXT_device_group", 0},
     ExtensionInfo{"GL_EXT_draw_instanced", 0},
     ExtensionInfo{"GL_EXT_frag_depth", 0},
+    ExtensionInfo{"GL_EXT_fragment_shader_barycentric", bit(G::barycentric)},
     ExtensionInfo{"GL_EXT_geometry_shader", 0},
     // flat / noperspective varyings, unsigned integers and samplerBuffer at GLSL 1.10 and 1.20.
     ExtensionInfo{"GL_EXT_gpu_shader4",
                   bit(G::interpolation) | bit(G::unsigned_integers) | bit(G::texture_buffer)},
     ExtensionInfo{"GL_EXT_gpu_shader5", bit(G::gpu_shader5)},
+    ExtensionInfo{"GL_EXT_mesh_shader", bit(G::mesh_shading)},
+    ExtensionInfo{"GL_EXT_multiview", 0},
+    ExtensionInfo{"GL_EXT_nonuniform_qualifier", bit(G::nonuniform)},
     ExtensionInfo{"GL_EXT_primitive_bounding_box", 0},
+    ExtensionInfo{"GL_EXT_ray_cull_mask", 0},
+    ExtensionInfo{"GL_EXT_ray_flags_primitive_culling", 0},
+    ExtensionInfo{"GL_EXT_ray_query", 0},
+    ExtensionInfo{"GL_EXT_ray_tracing", bit(G::ray_tracing)},
+    ExtensionInfo{"GL_EXT_ray_tracing_position_fetch", 0},
+    ExtensionInfo{"GL_EXT_samplerless_texture_functions", 0},
     ExtensionInfo{"GL_EXT_scalar_block_layout", kLayout},
     ExtensionInfo{"GL_EXT_separate_shader_objects", kLayout},
     ExtensionInfo{"GL_EXT_shader_16bit_storage", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_8bit_storage", kArithmetic},
+    ExtensionInfo{"GL_EXT_shader_atomic_float", 0},
+    ExtensionInfo{"GL_EXT_shader_atomic_int64", 0},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_float16", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_float32", kArithmetic},
@@ -107,9 +123,15 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int32", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int64", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int8", kArithmetic},
+    ExtensionInfo{"GL_EXT_shader_image_int64", 0},
     ExtensionInfo{"GL_EXT_shader_image_load_store", kImages},
     ExtensionInfo{"GL_EXT_shader_integer_mix", 0},
     ExtensionInfo{"GL_EXT_shader_io_blocks", 0},
+    ExtensionInfo{"GL_EXT_shader_realtime_clock", 0},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_float16", 0},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int16", 0},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int64", 0},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int8", 0},
     ExtensionInfo{"GL_EXT_shader_texture_lod", 0},
     ExtensionInfo{"GL_EXT_tessellation_shader", bit(G::tessellation)},
     ExtensionInfo{"GL_EXT_texture_array", bit(G::texture_array)},
@@ -117,6 +139,7 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_texture_cube_map_array", bit(G::cube_map_array)},
     ExtensionInfo{"GL_GOOGLE_cpp_style_line_directive", 0},
     ExtensionInfo{"GL_GOOGLE_include_directive", 0},
+    ExtensionInfo{"GL_KHR_memory_scope_semantics", 0},
     ExtensionInfo{"GL_KHR_shader_subgroup_arithmetic", 0},
     ExtensionInfo{"GL_KHR_shader_subgroup_ballot", 0},
     ExtensionInfo{"GL_KHR_shader_subgroup_basic", 0},
@@ -126,7 +149,10 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_KHR_shader_subgroup_shuffle_relative", 0},
     ExtensionInfo{"GL_KHR_shader_subgroup_vote", 0},
     ExtensionInfo{"GL_MESA_shader_integer_functions", 0},
+    ExtensionInfo{"GL_NV_fragment_shader_barycentric", bit(G::barycentric)},
     ExtensionInfo{"GL_NV_gpu_shader5", bit(G::gpu_shader5) | kArithmetic},
+    ExtensionInfo{"GL_NV_mesh_shader", bit(G::mesh_shading)},
+    ExtensionInfo{"GL_NV_ray_tracing", bit(G::ray_tracing)},
     ExtensionInfo{"GL_NV_shader_noperspective_interpolation", bit(G::interpolation)},
     ExtensionInfo{"GL_OES_EGL_image_external", bit(G::external_image)},
     ExtensionInfo{"GL_OES_EGL_image_external_essl3", bit(G::external_image)},
@@ -148,9 +174,7 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_OES_viewport_array", 0},
 };
 
-// Vulkan GLSL is not an extension a GL driver advertises: no macro, but its
-// #extension line still turns on the Vulkan types.
-constexpr ExtensionInfo kVulkanGlsl{"GL_KHR_vulkan_glsl", bit(G::vulkan)};
+constexpr ExtensionInfo kVulkanGlsl{kVulkanGlslExtension, bit(G::vulkan)};
 
 struct FeatureGate {
   LanguageFeature feature;

@@ -30,6 +30,8 @@ struct WordInfo {
   ExtensionGroup group;
   std::uint16_t es_reserved_from;
   std::uint16_t desktop_reserved_from = 0;
+  std::uint16_t desktop_reserved_until = 0;  // reserved words only: an identifier from this version on
+  std::uint16_t es_reserved_until = 0;
 };
 
 std::unordered_map<std::string_view, WordInfo> make_word_table() {
@@ -42,6 +44,9 @@ std::unordered_map<std::string_view, WordInfo> make_word_table() {
   };
 #define SAFEGI_DESKTOP_RESERVED_BEFORE_KEYWORD(spelling, desktop_from) \
   table.at(spelling).desktop_reserved_from = desktop_from;
+#define SAFEGI_RESERVED_UNTIL(spelling, desktop_until, es_until) \
+  table.at(spelling).desktop_reserved_until = desktop_until;      \
+  table.at(spelling).es_reserved_until = es_until;
 #include <safegi/lexer/token_kinds.def>
   return table;
 }
@@ -181,6 +186,9 @@ TokenKind classify_word(std::string_view word, const KeywordContext& context) {
   int since = context.es ? w.es_since : w.desktop_since;
   bool available = (since != 0 && context.version >= since) ||
                    (w.group != ExtensionGroup::none && context.enabled(w.group));
+  const int until = context.es ? w.es_reserved_until : w.desktop_reserved_until;
+  if (available && w.kind == TokenKind::reserved_word && until != 0 && context.version >= until)
+    return TokenKind::identifier;
   if (available) return w.kind;
   if (context.es && w.es_reserved_from != 0 && context.version >= w.es_reserved_from) {
     return TokenKind::reserved_word;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace safegi {
@@ -44,7 +45,9 @@ TEST(Token, EveryKeywordIsAKeywordWhenEverythingIsEnabled) {
 
 TEST(Token, ReservedWordsAreFlagged) {
   for (std::string_view word : kReservedWords) {
-    EXPECT_EQ(classify_word(word, KeywordContext::everything()), TokenKind::reserved_word) << word;
+    // `packed` is given back as a name from 3.30 (PackedIsReservedOnlyBeforeGlsl330): reserved at 1.50.
+    const KeywordContext where = word == "packed" ? context(150) : KeywordContext::everything();
+    EXPECT_EQ(classify_word(word, where), TokenKind::reserved_word) << word;
   }
   EXPECT_EQ(classify_word("class", context(110)), TokenKind::reserved_word);
   EXPECT_EQ(classify_word("goto", context(300, true)), TokenKind::reserved_word);
@@ -103,12 +106,35 @@ TEST(Token, ExtensionsEnableKeywords) {
   EXPECT_EQ(extension_groups_enabled_by("GL_EXT_unknown"), 0u);
 }
 
+TEST(Token, RayTracingAndMeshQualifiersAreKeywordsOnlyWithTheirExtensions) {
+  KeywordContext c = context(460);
+  for (std::string_view word : {"rayPayloadEXT", "hitAttributeEXT", "taskPayloadSharedEXT", "nonuniformEXT", "pervertexEXT"})
+    EXPECT_EQ(classify_word(word, c), TokenKind::identifier) << word;
+  c.extension_groups |= extension_groups_enabled_by("GL_EXT_ray_tracing") | extension_groups_enabled_by("GL_EXT_mesh_shader") |
+                        extension_groups_enabled_by("GL_EXT_nonuniform_qualifier") |
+                        extension_groups_enabled_by("GL_EXT_fragment_shader_barycentric");
+  const std::pair<std::string_view, TokenKind> keywords[] = {
+      {"rayPayloadEXT", TokenKind::kw_rayPayloadEXT},   {"callableDataInEXT", TokenKind::kw_callableDataInEXT},
+      {"taskPayloadSharedEXT", TokenKind::kw_taskPayloadSharedEXT}, {"perprimitiveEXT", TokenKind::kw_perprimitiveEXT},
+      {"nonuniformEXT", TokenKind::kw_nonuniformEXT},   {"pervertexEXT", TokenKind::kw_pervertexEXT}};
+  for (const auto& [word, kind] : keywords) EXPECT_EQ(classify_word(word, c), kind) << word;
+}
+
+// glslang: `packed` is reserved before GLSL 3.30 only.
+TEST(Token, PackedIsReservedOnlyBeforeGlsl330) {
+  EXPECT_EQ(classify_word("packed", context(150)), TokenKind::reserved_word);
+  EXPECT_EQ(classify_word("packed", context(330)), TokenKind::identifier);
+  EXPECT_EQ(classify_word("packed", context(460)), TokenKind::identifier);
+}
+
 TEST(Token, ExtensionTableIsSortedAndNamesTheDefaultMacros) {
   auto known = known_extensions();
   for (std::size_t i = 1; i < known.size(); ++i) EXPECT_LT(known[i - 1].name, known[i].name);
   EXPECT_EQ(default_extension_macros().size(), known.size());
   EXPECT_NE(find_extension("GL_ARB_shader_subroutine"), nullptr);
-  EXPECT_EQ(find_extension("GL_NV_ray_tracing"), nullptr);
+  // [[unroll]] is syntax the parser does not have: not listed, so `#ifdef` says so.
+  EXPECT_EQ(find_extension("GL_EXT_control_flow_attributes"), nullptr);
+  EXPECT_NE(find_extension("GL_NV_ray_tracing"), nullptr);
   // Vulkan GLSL enables its types but is no driver extension macro.
   EXPECT_NE(extension_groups_enabled_by("GL_KHR_vulkan_glsl"), 0u);
   for (const std::string& name : default_extension_macros()) EXPECT_NE(name, "GL_KHR_vulkan_glsl");

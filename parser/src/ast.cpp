@@ -75,4 +75,10 @@ bool TypeQualifiers::has(std::string_view word) const {
   return std::any_of(list.begin(), list.end(), [&](const Qualifier& q) { return q.word == word; });
 }
 
+bool TypeQualifiers::has_layout_id(std::string_view id) const {
+  return std::any_of(list.begin(), list.end(), [&](const Qualifier& q) {
+    return std::any_of(q.layout_ids.begin(), q.layout_ids.end(), [&](const LayoutId& l) { return l.name == id; });
+  });
+}
+
 }  // namespace safegi::ast

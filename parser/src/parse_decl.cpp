@@ -324,6 +324,10 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
       block->qualifiers = std::move(qualifiers);
       block->block_name = std::string(peek().text);
       block->block_name_range = advance().range;
+      // GL_EXT_buffer_reference: the block's name is a type (a pointer to the
+      // block's memory), already inside its own members (a linked list).
+      const bool reference = block->qualifiers.has_layout_id("buffer_reference");
+      if (reference) declare(block->block_name, NameKind::Type);
       block->members = parse_member_list("in block", LayoutPlace::BlockMember);
       bool in_out_block = block->qualifiers.has("in") || block->qualifiers.has("out");
       for (const VariableDecl* member : block->members) check_sample(member->qualifiers, in_out_block);
@@ -332,7 +336,7 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
         block->instance_name_range = advance().range;
         parse_array_dims(block->instance_array_dims);
         declare(block->instance_name, NameKind::Value);
-      } else {
+      } else if (!reference) {
         for (VariableDecl* member : block->members) {
           for (const Declarator& d : member->declarators) declare(d.name, NameKind::Value);
         }
@@ -343,8 +347,11 @@ Decl* Parser::parse_declaration_after_qualifiers(TypeQualifiers qualifiers, bool
     if (at(T::Ident) && (peek(1).kind == T::Comma || peek(1).kind == T::Semicolon) && !is_type_name(peek().text)) {
       auto* decl = make<QualifierDecl>(begin);  // `invariant gl_Position;`, `precise a, b;`
       decl->qualifiers = std::move(qualifiers);
+      // `layout(buffer_reference) buffer Node;`: a reference type declared before its block.
+      const bool reference = decl->qualifiers.has_layout_id("buffer_reference");
       do {
         const PToken& name = expect(T::Ident, "a name", "in qualifier declaration");
+        if (reference) declare(std::string(name.text), NameKind::Type);
         decl->names.emplace_back(name.text);
         decl->name_ranges.push_back(name.range);
       } while (accept(T::Comma));

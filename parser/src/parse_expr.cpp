@@ -428,6 +428,15 @@ Expr* Parser::parse_primary() {
       paren->height = height_of({paren->inner});
       return finish_expr(paren, begin);
     }
+    case T::QualKw:
+      // GL_EXT_nonuniform_qualifier: `nonuniformEXT(i)` is a qualifier used as a function.
+      if (t.text == "nonuniformEXT" && peek(1).kind == T::LParen) {
+        auto* call = make<CallExpr>(begin);
+        call->callee = std::string(t.text);
+        call->callee_range = advance().range;
+        return parse_call_args(call);
+      }
+      fail_expected("an expression", "");
     case T::TypeKw: {
       auto* call = make<CallExpr>(begin);
       call->constructor_type = parse_type_specifier();

@@ -39,8 +39,16 @@ const std::unordered_map<std::string, Word>& word_table() {
                           "shared", "centroid", "sample", "patch"}) {
       w.emplace(s, Word{T::QualKw, QK::Storage});
     }
+    // Storage classes of ray tracing and mesh shading (the lexer makes them keywords only with their extension).
+    for (const char* s : {"rayPayloadEXT", "rayPayloadInEXT", "hitAttributeEXT", "callableDataEXT", "callableDataInEXT",
+                          "rayPayloadNV", "rayPayloadInNV", "hitAttributeNV", "callableDataNV",
+                          "callableDataInNV", "taskPayloadSharedEXT", "perprimitiveEXT",
+                          "perprimitiveNV", "perviewNV", "taskNV"}) {
+      w.emplace(s, Word{T::QualKw, QK::Storage});
+    }
     for (const char* s : {"highp", "mediump", "lowp"}) w.emplace(s, Word{T::QualKw, QK::Precision});
-    for (const char* s : {"smooth", "flat", "noperspective"}) w.emplace(s, Word{T::QualKw, QK::Interpolation});
+    for (const char* s : {"smooth", "flat", "noperspective", "pervertexEXT", "pervertexNV"})
+      w.emplace(s, Word{T::QualKw, QK::Interpolation});
     w.emplace("invariant", Word{T::QualKw, QK::Invariant});
     w.emplace("precise", Word{T::QualKw, QK::Precise});
     for (const char* s : {"coherent", "volatile", "restrict", "readonly", "writeonly", "devicecoherent",

@@ -18,8 +18,9 @@ GLenum shader_kind(Stage stage) {
     case Stage::geometry: return GL_GEOMETRY_SHADER;
     case Stage::fragment: return GL_FRAGMENT_SHADER;
     case Stage::compute: return GL_COMPUTE_SHADER;
+    default: break;  // mesh shading and ray tracing: Vulkan only
   }
-  return GL_VERTEX_SHADER;
+  return 0;
 }
 
 template <class GetInteger, class GetLog>
@@ -108,6 +109,9 @@ Program::Program(std::vector<ProgramSource> sources, std::string name)
   std::string errors;
   std::vector<GLuint> shaders;
   for (const auto& source : sources) {
+    if (shader_kind(source.stage) == 0)
+      throw ShaderError(name_ + ": error: a " + std::string(to_string(source.stage)) +
+                        " shader is Vulkan's (OpenGL has no such stage); bind it through a Vulkan pipeline");
     stages_.push_back(stage_entry(source, name_));
     for (const auto& derived : source.symbols.derived_dimensions) namer_.add(derived.name, derived.exponents);
   }

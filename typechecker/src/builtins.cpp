@@ -228,6 +228,16 @@ class SignatureReader {
         return set(t, SizeClass::fixed, Type::vector_of(v.scalar, w.back() - '0'));
     }
     if (w.size() == 4 && w.compare(0, 3, "mat") == 0) return set(t, SizeClass::fixed, Type::matrix_of(Scalar::float_, w[3] - '0', w[3] - '0'));
+    if (w.size() == 6 && w.compare(0, 3, "mat") == 0 && w[4] == 'x')  // mat4x3: 4 columns of 3
+      return set(t, SizeClass::fixed, Type::matrix_of(Scalar::float_, w[3] - '0', w[5] - '0'));
+    for (const char* opaque : {"accelerationStructureEXT", "rayQueryEXT", "subpassInput", "subpassInputMS",
+                               "isubpassInput", "isubpassInputMS", "usubpassInput", "usubpassInputMS"}) {
+      if (w != opaque) continue;
+      Type o;
+      o.shape = Shape::opaque;
+      o.opaque = w;
+      return set(t, SizeClass::fixed, std::move(o));
+    }
     fail("unknown type word '" + w + "'");
   }
   static void set(SigType& t, SizeClass size, Type type) {
@@ -314,6 +324,8 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
   const Type& p = param.type;
   if (a.is_error()) return 0;  // an erroneous argument fits anything: no cascade
   if (a.is_array()) return std::nullopt;
+  // Opaque parameters (accelerationStructureEXT, rayQueryEXT) take exactly their type.
+  if (p.shape == Shape::opaque) return a.shape == Shape::opaque && a.opaque == p.opaque ? std::optional<int>(0) : std::nullopt;
   int cost = 0;
   if (param.any_geometric || p.geometry != Geometry::none) {
     if (!vec3_like(a) && !(p.geometry == Geometry::hpoint && a.shape == Shape::vector && a.rows == 4) &&

@@ -1,5 +1,7 @@
 #include "safegi/typechecker/checker.hpp"
 
+#include <algorithm>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -15,17 +17,24 @@ const Type* CheckResult::type_of(const ast::Declarator* declarator) const {
   return it == declarators.end() ? nullptr : &it->second;
 }
 
+const std::vector<StageInfo>& stage_table() {
+  static const std::vector<StageInfo> table = {
+#define SAFEGI_STAGE(id, letter, extension, long_name, words, family) \
+  {Stage::id, letter, extension, long_name, words, StageFamily::family},
+#include "safegi/typechecker/stages.def"
+  };
+  return table;
+}
+
+const StageInfo* stage_info(Stage stage) {
+  for (const StageInfo& s : stage_table())
+    if (s.stage == stage) return &s;
+  return nullptr;
+}
+
 const char* stage_name(Stage stage) {
-  switch (stage) {
-    case Stage::vertex: return "vertex";
-    case Stage::tess_control: return "tessellation control";
-    case Stage::tess_evaluation: return "tessellation evaluation";
-    case Stage::geometry: return "geometry";
-    case Stage::fragment: return "fragment";
-    case Stage::compute: return "compute";
-    case Stage::unknown: break;
-  }
-  return "unknown";
+  const StageInfo* info = stage_info(stage);
+  return info ? info->words : "unknown";
 }
 
 CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options, DiagnosticEngine& diagnostics) {
@@ -106,6 +115,30 @@ void check_interface_match(const CheckResult& producer, const CheckResult& consu
                                                        " stage's output '" + out->name + "'" + matched + " has type " + out_text)
                            .with_code(code::E_STAGE_MISMATCH)
                            .with_note(Diagnostic::note(out->range, "output '" + out->name + "' declared here as " + out_text)));
+  }
+}
+
+void check_payload_match(const CheckResult& tracer, const CheckResult& receiver, DiagnosticEngine& diagnostics) {
+  std::vector<const InterfaceVariable*> traced;
+  for (const InterfaceVariable& p : tracer.interface)
+    if (p.kind == InterfaceKind::ray_payload && !p.type.is_error()) traced.push_back(&p);
+  if (traced.empty()) return;
+  for (const InterfaceVariable& in : receiver.interface) {
+    if (in.kind != InterfaceKind::ray_payload_in || in.type.is_error()) continue;
+    const auto same = [&](const InterfaceVariable* p) {
+      return canonical(p->type, tracer.registry) == canonical(in.type, receiver.registry);
+    };
+    if (std::any_of(traced.begin(), traced.end(), same)) continue;
+    const std::string in_text = type_name(in.type, receiver.registry);
+    Diagnostic d = Diagnostic::error(in.range, "the " + std::string(stage_name(receiver.stage)) + " shader's payload '" +
+                                                   in.name + "' has type " + in_text + ", but the " +
+                                                   stage_name(tracer.stage) + " shader traces no payload of that type")
+                       .with_code("E-STAGE-MISMATCH");
+    for (const InterfaceVariable* p : traced)
+      d.with_note(Diagnostic::note(p->range, "payload '" + p->name + "'" +
+                                                 (p->location >= 0 ? " at location " + std::to_string(p->location) : "") +
+                                                 " declared here as " + type_name(p->type, tracer.registry)));
+    diagnostics.report(std::move(d));
   }
 }
 

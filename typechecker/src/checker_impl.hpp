@@ -96,6 +96,12 @@ class Checker {
   // declarations.cpp
   void global_decl(const ast::Decl* d);
   void variable_decl(const ast::VariableDecl& d, bool global);
+  StructInfo* buffer_reference_type(const std::string& name);  // GL_EXT_buffer_reference, declared once
+  void buffer_reference_block(const ast::InterfaceBlockDecl& d);
+  Value buffer_reference_constructor(const ast::CallExpr& e, const Value& out, const std::vector<Value>& args);
+  bool combined_sampler(const Type& t, const std::vector<Value>& args) const;
+  const ast::Qualifier* storage_of_another_stage(const ast::TypeQualifiers& q) const;
+  Type builtin_variable_type(std::string_view text) const;  // builtin_variables.def's spelling
   void block_decl(const ast::InterfaceBlockDecl& d);
   void function_decl(const ast::FunctionDecl& d);
   void statement(const ast::Stmt* s);

@@ -8,6 +8,41 @@
 
 namespace safegi::detail {
 
+// A buffer reference from a 64-bit address (uint64_t: unmodelled, so an
+// erroneous type that never reaches here), a uvec2
+// (GL_EXT_buffer_reference_uvec2) or another reference.
+Value Checker::buffer_reference_constructor(const ast::CallExpr& e, const Value& out, const std::vector<Value>& args) {
+  const Type& a = args.size() == 1 ? args[0].type : Type::error();
+  const bool uvec2 = a.shape == Shape::vector && a.rows == 2 && a.scalar == Scalar::uint_ && !a.is_array();
+  const bool reference = a.shape == Shape::structure && a.structure->buffer_reference && !a.is_array();
+  if (args.size() == 1 && (uvec2 || reference)) return out;
+  report(Diagnostic::error(e.range, "a buffer reference '" + out.type.structure->name +
+                                        "' is made from one 64-bit address (uint64_t or uvec2) or another reference")
+             .with_code("E-CONSTRUCTOR"));
+  return error_value(e.range);
+}
+
+namespace {
+
+// The texture a combined sampler is made from: `texture` for `sampler`, no `Shadow` (itexture2D for isampler2D).
+std::string texture_of_sampler(std::string sampler) {
+  sampler.replace(sampler.find("sampler"), 7, "texture");
+  if (const std::size_t shadow = sampler.find("Shadow"); shadow != std::string::npos) sampler.erase(shadow, 6);
+  return sampler;
+}
+
+}  // namespace
+
+// Vulkan GLSL: sampler2D(texture2D, sampler), samplerCubeShadow(textureCube, samplerShadow), …
+bool Checker::combined_sampler(const Type& t, const std::vector<Value>& args) const {
+  if (args.size() != 2 || t.opaque.find("sampler") == std::string::npos) return false;
+  const Type& image = args[0].type;
+  const Type& sampler = args[1].type;
+  if (image.shape != Shape::opaque || sampler.shape != Shape::opaque || image.is_array() || sampler.is_array()) return false;
+  if (sampler.opaque != "sampler" && sampler.opaque != "samplerShadow") return false;
+  return image.opaque == texture_of_sampler(t.opaque);
+}
+
 Value Checker::constructor(const ast::CallExpr& e) {
   if (e.constructor_type && e.constructor_type->form == ast::TypeSpecifier::Form::Builtin && !e.constructor_type->annotation &&
       e.constructor_type->array_dims.empty()) {
@@ -50,6 +85,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
       if (!check_assignable(element, a, {}, "", std::nullopt, "initialize")) return error_value(e.range);
     return out;
   }
+  if (t.shape == Shape::structure && t.structure->buffer_reference) return buffer_reference_constructor(e, out, args);
   if (t.shape == Shape::structure) {
     if (args.size() != t.structure->fields.size())
       return fail(e.range, "constructor of '" + t.structure->name + "' needs " + std::to_string(t.structure->fields.size()) +
@@ -68,6 +104,13 @@ Value Checker::constructor(const ast::CallExpr& e) {
   if (args.size() == 1 && ((is_handle(t, false) && args[0].type.shape == Shape::opaque && !args[0].type.is_array()) ||
                            (t.shape == Shape::opaque && is_handle(args[0].type, true))))
     return out;
+  // GL_EXT_buffer_reference_uvec2: uvec2(reference).
+  if (args.size() == 1 && is_handle(t, false) && args[0].type.shape == Shape::structure && args[0].type.structure->buffer_reference)
+    return out;
+  if (t.shape == Shape::opaque && combined_sampler(t, args)) return out;
+  if (t.shape == Shape::opaque && args.size() == 2 && t.opaque.find("sampler") != std::string::npos)
+    return fail(e.range, what + " is made from a " + texture_of_sampler(t.opaque) + " and a sampler or samplerShadow, not from " +
+                             glsl_name(args[0].type) + " and " + glsl_name(args[1].type));
   if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
   if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
 

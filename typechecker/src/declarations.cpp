@@ -38,12 +38,44 @@ Type parse_simple_type(std::string_view text) {
   else if (text == "vec2") t = Type::vector_of(Scalar::float_, 2);
   else if (text == "vec3") t = Type::vector_of(Scalar::float_, 3);
   else if (text == "vec4") t = Type::vector_of(Scalar::float_, 4);
+  else if (text == "uvec2") t = Type::vector_of(Scalar::uint_, 2);
   else if (text == "uvec3") t = Type::vector_of(Scalar::uint_, 3);
   else if (text == "mat3") t = Type::matrix_of(Scalar::float_, 3, 3);
+  else if (text == "mat4x3") t = Type::matrix_of(Scalar::float_, 4, 3);
+  else if (text == "mat3x4") t = Type::matrix_of(Scalar::float_, 3, 4);
+  else if (text == "void") t = Type::void_type();
   else if (text == "mat4") t = Type::matrix_of(Scalar::float_, 4, 4);
   if (array) t.array.push_back(size);
   return t;
 }
+
+}  // namespace
+
+// A type of builtin_variables.def: a GLSL type, or `point<S>` / `direction<S>`
+// (a vec3 in space S) or `float<D>`, annotated where the program declares S or
+// D (`space world;`) and plain otherwise (gradual typing).
+Type Checker::builtin_variable_type(std::string_view text) const {
+  const std::size_t open = text.find('<');
+  if (open == std::string_view::npos) return parse_simple_type(text);
+  const std::string_view head = text.substr(0, open);
+  const std::string_view argument = text.substr(open + 1, text.size() - open - 2);
+  const DimensionRegistry& reg = result_.registry;
+  if (head == "float") {
+    Type t = Type::scalar_of(Scalar::float_);
+    if (std::optional<Dimension> d = reg.find_dimension(argument)) t.dim = DimSlot::known(*d);
+    return t;
+  }
+  Type t = Type::vector_of(Scalar::float_, 3);
+  const std::optional<SpaceId> space = reg.find_space(argument);
+  if (!space) return t;
+  t.geometry = head == "point" ? Geometry::point : Geometry::direction;
+  t.from = SpaceSlot::known(*space);
+  if (t.geometry == Geometry::direction) t.dim = DimSlot::known(Dimension{});
+  else if (std::optional<Dimension> length = reg.find_dimension("length")) t.dim = DimSlot::known(*length);
+  return t;
+}
+
+namespace {
 
 std::optional<int> layout_int(const ast::TypeQualifiers& q, const char* id, Checker& c) {
   for (const ast::Qualifier& qual : q.list)
@@ -96,7 +128,10 @@ void Checker::declare_builtin_variables() {
     if (lookup(e.name)) continue;  // listed for several stages
     Variable v;
     v.name = e.name;
-    v.type = parse_simple_type(e.type);
+    const std::string_view type = e.type;
+    const bool constant = type.rfind("const ", 0) == 0;
+    v.type = builtin_variable_type(constant ? type.substr(6) : type);
+    v.constant_expression = constant;
     v.read_only = !e.writable;
     v.builtin = true;
     scopes_.back().emplace(v.name, v);
@@ -179,6 +214,8 @@ void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& 
   else if (is_storage(q, "in") || is_storage(q, "attribute")) kind = InterfaceKind::input;
   else if (is_storage(q, "out")) kind = InterfaceKind::output;
   else if (is_storage(q, "varying")) kind = options_.stage == Stage::vertex ? InterfaceKind::output : InterfaceKind::input;
+  else if (is_storage(q, "rayPayloadEXT") || is_storage(q, "rayPayloadNV")) kind = InterfaceKind::ray_payload;
+  else if (is_storage(q, "rayPayloadInEXT") || is_storage(q, "rayPayloadInNV")) kind = InterfaceKind::ray_payload_in;
   if (!kind) return;
   InterfaceVariable iv;
   iv.kind = *kind;
@@ -279,7 +316,35 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
   if (global) validate_global_layouts(d);
 }
 
+StructInfo* Checker::buffer_reference_type(const std::string& name) {
+  if (auto it = structs_.find(name); it != structs_.end() && it->second->buffer_reference)
+    return const_cast<StructInfo*>(it->second);  // declared before (result_.structs owns it)
+  auto info = std::make_unique<StructInfo>();
+  info->name = name;
+  info->buffer_reference = true;
+  StructInfo* raw = info.get();
+  structs_[name] = raw;
+  result_.structs.push_back(std::move(info));
+  return raw;
+}
+
+// `layout(buffer_reference) buffer Node { Node next; float<length> t; };`: a
+// type, not a resource; its members are reached through a reference.
+void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
+  StructInfo* info = buffer_reference_type(d.block_name);
+  info->fields.clear();
+  for (const ast::VariableDecl* member : d.members)
+    for (const ast::Declarator& decl : member->declarators) {
+      Type t = resolve_type(member->type, &decl.array_dims);
+      result_.declarators[&decl] = t;
+      info->fields.push_back({decl.name, t});
+    }
+  symbols_.declare_fields(info, d.members);
+  validate_block_layouts(d);
+}
+
 void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
+  if (d.qualifiers.has_layout_id("buffer_reference")) return buffer_reference_block(d);
   auto info = std::make_unique<StructInfo>();
   info->name = d.block_name;
   const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("readonly");

@@ -26,12 +26,13 @@ Direction direction_of(const ast::TypeQualifiers& q, Stage stage) {
 }
 
 // Inputs of geometry and tessellation shaders and outputs of tessellation
-// control shaders hold one element per vertex: they are arrays (GLSL 4.60
-// §4.3.4, §4.3.6), except `patch` ones.
+// control and mesh shaders hold one element per vertex (a mesh shader's
+// perprimitiveEXT ones, per primitive): they are arrays (GLSL 4.60 §4.3.4,
+// §4.3.6, GL_EXT_mesh_shader), except `patch` ones.
 bool per_vertex(Stage stage, bool input, const ast::TypeQualifiers& q) {
   if (q.has("patch")) return false;
   if (input) return stage == Stage::geometry || stage == Stage::tess_control || stage == Stage::tess_evaluation;
-  return stage == Stage::tess_control;
+  return stage == Stage::tess_control || stage == Stage::mesh;
 }
 
 }  // namespace

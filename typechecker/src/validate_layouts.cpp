@@ -41,24 +41,32 @@ constexpr StageLayout kStageLayouts[] = {
     {"lines_adjacency", "g", "in", "input primitive"}, {"triangles", "ge", "in", "input primitive"},
     {"triangles_adjacency", "g", "in", "input primitive"}, {"invocations", "g", "in", "invocations"},
     {"line_strip", "g", "out", "output primitive"}, {"triangle_strip", "g", "out", "output primitive"},
-    {"max_vertices", "g", "out", "max_vertices"},   {"vertices", "c", "out", "vertices"},
+    {"max_vertices", "gm", "out", "max_vertices"},  {"vertices", "c", "out", "vertices"},
     {"quads", "e", "in", "input primitive"},        {"isolines", "e", "in", "input primitive"},
     {"equal_spacing", "e", "in", "spacing"},        {"fractional_even_spacing", "e", "in", "spacing"},
     {"fractional_odd_spacing", "e", "in", "spacing"}, {"cw", "e", "in", "ordering"},
     {"ccw", "e", "in", "ordering"},                 {"point_mode", "e", "in", ""},
-    {"local_size_x", "x", "in", "local_size_x"},    {"local_size_y", "x", "in", "local_size_y"},
-    {"local_size_z", "x", "in", "local_size_z"},    {"local_size_variable", "x", "in", ""},
+    {"local_size_x", "xtm", "in", "local_size_x"},  {"local_size_y", "xtm", "in", "local_size_y"},
+    {"local_size_z", "xtm", "in", "local_size_z"},  {"local_size_variable", "x", "in", ""},
+    {"local_size_x_id", "xtm", "in", ""},           {"local_size_y_id", "xtm", "in", ""},
+    {"local_size_z_id", "xtm", "in", ""},
+    // Mesh shaders' output primitives (GL_EXT_mesh_shader): `layout(triangles, max_vertices = 64, max_primitives = 126) out;`
+    {"max_primitives", "m", "out", "max_primitives"},
     {"early_fragment_tests", "f", "in", ""},        {"post_depth_coverage", "f", "in", ""},
     {"pixel_interlock_ordered", "f", "in", "interlock"}, {"pixel_interlock_unordered", "f", "in", "interlock"},
     {"sample_interlock_ordered", "f", "in", "interlock"}, {"sample_interlock_unordered", "f", "in", "interlock"},
 };
 
+// Output primitives of the identifiers that also name an input primitive:
+// `points` of geometry shaders, and `points`, `lines`, `triangles` of mesh shaders.
+constexpr StageLayout kOutputPrimitives[] = {
+    {"points", "gm", "out", "output primitive"}, {"lines", "m", "out", "output primitive"},
+    {"triangles", "m", "out", "output primitive"}};
+
 const StageLayout* stage_layout(std::string_view id, std::string_view storage) {
-  // `points` is an input primitive and an output primitive of geometry shaders.
-  if (id == "points" && storage == "out") {
-    static constexpr StageLayout kPointsOut{"points", "g", "out", "output primitive"};
-    return &kPointsOut;
-  }
+  if (storage == "out")
+    for (const StageLayout& s : kOutputPrimitives)
+      if (id == s.id) return &s;
   for (const StageLayout& s : kStageLayouts)
     if (id == s.id) return &s;
   return nullptr;
@@ -74,14 +82,17 @@ long long layout_row(std::string_view id) {
 bool takes_value(std::string_view id) {
   for (const char* v : {"location", "component", "index", "binding", "offset", "align", "xfb_buffer", "xfb_offset",
                         "xfb_stride", "stream", "max_vertices", "invocations", "vertices", "local_size_x", "local_size_y",
-                        "local_size_z"})
+                        "local_size_z", "max_primitives", "local_size_x_id", "local_size_y_id", "local_size_z_id",
+                        "constant_id", "set", "input_attachment_index", "buffer_reference_align"})
     if (id == v) return true;
   return false;
 }
 
 // Values that must be positive, not just non-negative.
 bool positive_value(std::string_view id) {
-  return id == "max_vertices" ? false : id == "invocations" || id == "vertices" || id.rfind("local_size_", 0) == 0;
+  // local_size_x_id names a specialization constant: 0 is an id like any other.
+  const bool size = id.rfind("local_size_", 0) == 0 && id.substr(id.size() - 3) != "_id";
+  return id == "max_vertices" ? false : id == "invocations" || id == "vertices" || size;
 }
 
 // Input/output locations a type takes (GLSL 4.60 §4.4.1): dvec3/dvec4 two, a matrix one per column, arrays and structs the sum.
@@ -91,7 +102,7 @@ long long location_slots(const Type& t) {
   Type e = t;
   e.array.clear();
   long long per = 1;
-  if (e.shape == Shape::structure && e.structure) {
+  if (e.shape == Shape::structure && e.structure && !e.structure->buffer_reference) {
     per = 0;
     for (const StructField& f : e.structure->fields) per += location_slots(f.type);
   } else if (e.shape == Shape::matrix) {
@@ -108,7 +119,7 @@ long long xfb_bytes(const Type& t) {
   for (int n : t.array) count *= std::max(n, 1);
   Type e = t;
   e.array.clear();
-  if (e.shape == Shape::structure && e.structure) {
+  if (e.shape == Shape::structure && e.structure && !e.structure->buffer_reference) {
     long long sum = 0;
     for (const StructField& f : e.structure->fields) sum += xfb_bytes(f.type);
     return count * sum;
@@ -130,6 +141,8 @@ Packing packing_of(const Type& t, bool std140, bool row_major) {
     const long long stride = round_up(element.size, align);
     return {align, stride * std::max(t.array[0], 1)};
   }
+  // GL_EXT_buffer_reference: a reference is a 64-bit address, whatever it points at (maybe its own block).
+  if (t.shape == Shape::structure && t.structure && t.structure->buffer_reference) return {8, 8};
   if (t.shape == Shape::matrix) {
     const int vectors = row_major ? t.rows : t.columns;
     const int length = row_major ? t.columns : t.rows;
@@ -564,8 +577,12 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
   const std::string storage = storage_of(d.qualifiers);
   if (storage != "uniform" && storage != "buffer") return;
   std::string packing = storage == "uniform" ? validation_.uniform_packing : validation_.buffer_packing;
-  for (const char* p : {"std140", "std430", "shared", "packed"})
+  // GL_KHR_vulkan_glsl: a push-constant block is std430 unless it says otherwise.
+  if (vulkan_glsl(language()) && find_layout_id(d.qualifiers, "push_constant")) packing = "std430";
+  for (const char* p : {"std140", "std430", "shared", "packed", "scalar"})
     if (find_layout_id(d.qualifiers, p)) packing = p;
+  // GL_EXT_scalar_block_layout: members align to their scalars; explicit offsets are not checked against it.
+  if (packing == "scalar") return;
   const bool explicit_layout = packing == "std140" || packing == "std430";
   auto forbid = [&](const ast::TypeQualifiers& q) {
     for (const char* id : {"offset", "align"})

@@ -60,7 +60,10 @@ bool Checker::validate_assignment(const ast::Expr* target, const Value& value) {
   // A tessellation control shader writes only its own vertex: out[gl_InvocationID].
   if (options_.stage != Stage::tess_control) return true;
   const Variable* v = lookup(root->name);
-  const bool per_vertex_output = root->name == "gl_out" || (v && !v->builtin && validation_.per_vertex_outputs.count(root->name));
+  // By declaration, not by name: a local of the same name shadows the output.
+  const auto output = validation_.per_vertex_outputs.find(root->name);
+  const bool per_vertex_output = root->name == "gl_out" || (v && !v->builtin && output != validation_.per_vertex_outputs.end() &&
+                                                            v->range == output->second);
   if (!per_vertex_output) return true;
   const auto* invocation = index && index->base == root ? ast::dyn_cast<ast::IdentifierExpr>(index->index) : nullptr;
   if (invocation && invocation->name == "gl_InvocationID") return true;

@@ -4,6 +4,7 @@
 // outside uniforms, and precision statements (GLSL 4.60 §4.3-4.7, §3.8; the
 // older orders of GLSL 1.30-4.10; Mesa's behaviour where they differ).
 
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,19 @@ const char* kRankWords[] = {"'invariant'", "interpolation and auxiliary qualifie
                             "precision qualifiers"};
 
 bool reserved_name(const std::string& name) { return name.rfind("gl_", 0) == 0; }
+
+}  // namespace
+
+// A ray-tracing or mesh-shading storage qualifier of a stage other than this one.
+const ast::Qualifier* Checker::storage_of_another_stage(const ast::TypeQualifiers& q) const {
+  const char letter = stage_letter(options_.stage);
+  if (letter == '*') return nullptr;
+  for (const ast::Qualifier& x : q.list)
+    if (const char* stages = stages_of_storage(x.word); stages && !std::strchr(stages, letter)) return &x;
+  return nullptr;
+}
+
+namespace {
 
 }  // namespace
 
@@ -123,6 +137,11 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
              code::E_QUALIFIER);
       return;
     }
+  } else if (const ast::Qualifier* misplaced = storage_of_another_stage(q)) {
+    reject(misplaced->range, "'" + misplaced->word + "' variables belong to " + stage_list(stages_of_storage(misplaced->word)) +
+                                 " shaders, not to " + stage_name(options_.stage) + " shaders",
+           "E-QUALIFIER");
+    return;
   } else if (const ast::Qualifier* inout = find_qualifier(q, "inout")) {
     reject(inout->range, "'inout' qualifies only function parameters, not global variables", code::E_QUALIFIER,
            "an output of this stage is 'out', an input 'in'");
@@ -238,6 +257,10 @@ namespace safegi::detail {
 // `invariant gl_Position;`, `precise p;`, `layout(local_size_x = 8) in;`.
 void Checker::validate_qualifier_decl(const ast::QualifierDecl& d, bool global) {
   if (!check_qualifier_counts(*this, d.qualifiers, false)) return;
+  if (global && d.qualifiers.has_layout_id("buffer_reference")) {  // `layout(buffer_reference) buffer Node;`
+    for (const std::string& name : d.names) buffer_reference_type(name);
+    return;
+  }
   if (global) {
     validate_default_layouts(d);
     return;

@@ -22,15 +22,21 @@ const VersionGate kComputeShaders{430, 310, {"GL_ARB_compute_shader"}};
 }  // namespace
 
 // Compute shaders before GLSL 4.30 / ESSL 3.10 need GL_ARB_compute_shader.
+// Vulkan GLSL sets the block defaults.
 // Geometry and tessellation shaders are not gated by #version: piglit expects
 // a geometry shader without #version (glsl-1.50/compiler/uniforms.geom) and
 // tessellation shaders at #version 110 (nv_viewport_array2) to compile.
 void Checker::validate_stage(const ast::TranslationUnit& unit) {
+  // GL_KHR_vulkan_glsl: uniform blocks are std140 and buffer blocks std430 by default.
+  if (vulkan_glsl(language())) {
+    validation_.uniform_packing = "std140";
+    validation_.buffer_packing = "std430";
+  }
+  SourceRange where = options_.version_range;
+  if (!where.valid()) where = unit.decls.empty() ? unit.range : SourceRange{unit.decls.front()->range.begin, unit.decls.front()->range.begin};
   const VersionGate* gate = options_.stage == Stage::compute ? &kComputeShaders : nullptr;
   if (!gate || allows(*gate)) return;
   const LanguageLevel& level = *language();
-  SourceRange where = options_.version_range;
-  if (!where.valid()) where = unit.decls.empty() ? unit.range : SourceRange{unit.decls.front()->range.begin, unit.decls.front()->range.begin};
   reject(where, std::string(stage_name(options_.stage)) + " shaders require " +
                                          gate_requirement(*gate, level.es) + "; the shader is #version " +
                                          std::to_string(level.version) + (level.es ? " es" : ""),

@@ -25,10 +25,32 @@ std::string gate_requirement(const VersionGate& gate, bool es) {
 
 bool is_storage_word(std::string_view w) {
   return w == "const" || w == "in" || w == "out" || w == "inout" || w == "attribute" || w == "varying" ||
-         w == "uniform" || w == "buffer" || w == "shared";
+         w == "uniform" || w == "buffer" || w == "shared" || is_ray_tracing_storage_word(w) || w == "taskPayloadSharedEXT";
 }
 
-bool is_auxiliary_word(std::string_view w) { return w == "centroid" || w == "sample" || w == "patch"; }
+bool is_ray_tracing_storage_word(std::string_view w) {
+  return stages_of_storage(w) != nullptr && w != "taskPayloadSharedEXT";
+}
+
+// The stages each storage qualifier of ray tracing and mesh shading belongs to
+// (GL_EXT_ray_tracing §4.3, GL_EXT_mesh_shader; glslang's "not supported in this stage").
+const char* stages_of_storage(std::string_view w) {
+  static constexpr std::pair<std::string_view, const char*> kStorages[] = {
+      {"rayPayloadEXT", "rhs"},   {"rayPayloadNV", "rhs"},      {"rayPayloadInEXT", "ahs"},   {"rayPayloadInNV", "ahs"},
+      {"hitAttributeEXT", "iah"}, {"hitAttributeNV", "iah"},    {"callableDataEXT", "rhsk"},  {"callableDataNV", "rhsk"},
+      {"callableDataInEXT", "k"}, {"callableDataInNV", "k"},    {"taskPayloadSharedEXT", "tm"}};
+  for (const auto& [word, stages] : kStorages)
+    if (w == word) return stages;
+  return nullptr;
+}
+
+bool vulkan_glsl(const LanguageLevel* level) { return level && level->extension_enabled(kVulkanGlslExtension); }
+
+// perprimitive and perview (mesh shading) qualify an in or out as patch does.
+bool is_auxiliary_word(std::string_view w) {
+  return w == "centroid" || w == "sample" || w == "patch" || w == "perprimitiveEXT" || w == "perprimitiveNV" ||
+         w == "perviewNV" || w == "taskNV";
+}
 
 bool is_interpolation_word(std::string_view w) {
   return w == "smooth" || w == "flat" || w == "noperspective" || w == "__explicitInterpAMD" || w == "pervertexNV" ||
@@ -39,14 +61,14 @@ bool contains_opaque(const Type& t) {
   if (t.shape == Shape::opaque)
     return t.opaque.find("sampler") != std::string::npos || t.opaque.find("image") != std::string::npos ||
            t.opaque == "atomic_uint";
-  if (t.shape == Shape::structure && t.structure)
+  if (t.shape == Shape::structure && t.structure && !t.structure->buffer_reference)  // a reference is an address
     for (const StructField& f : t.structure->fields)
       if (contains_opaque(f.type)) return true;
   return false;
 }
 
 bool contains_scalar(const Type& t, Scalar scalar) {
-  if (t.shape == Shape::structure && t.structure) {
+  if (t.shape == Shape::structure && t.structure && !t.structure->buffer_reference) {
     for (const StructField& f : t.structure->fields)
       if (contains_scalar(f.type, scalar)) return true;
     return false;
@@ -68,24 +90,16 @@ const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_vi
 }
 
 char stage_letter(Stage s) {
-  switch (s) {
-    case Stage::vertex: return 'v';
-    case Stage::tess_control: return 'c';
-    case Stage::tess_evaluation: return 'e';
-    case Stage::geometry: return 'g';
-    case Stage::fragment: return 'f';
-    case Stage::compute: return 'x';
-    case Stage::unknown: break;
-  }
-  return '*';
+  const StageInfo* info = stage_info(s);
+  return info ? info->letter : '*';
 }
 
 std::string stage_list(std::string_view letters) {
   std::string words;
   for (std::size_t i = 0; i < letters.size(); ++i) {
     Stage stage = Stage::unknown;
-    for (Stage s : {Stage::vertex, Stage::tess_control, Stage::tess_evaluation, Stage::geometry, Stage::fragment, Stage::compute})
-      if (stage_letter(s) == letters[i]) stage = s;
+    for (const StageInfo& s : stage_table())
+      if (s.letter == letters[i]) stage = s.stage;
     words += std::string(i == 0 ? "" : i + 1 == letters.size() ? " and " : ", ") + stage_name(stage);
   }
   return words;

@@ -36,6 +36,11 @@ std::string gate_requirement(const VersionGate& gate, bool es);
 
 // The classes of qualifier words (GLSL 4.60 §4.3-4.10).
 bool is_storage_word(std::string_view word);        // const in out inout attribute varying uniform buffer shared
+bool is_ray_tracing_storage_word(std::string_view word);  // rayPayloadEXT … callableDataInNV
+// The stage letters of a ray-tracing or mesh-shading storage qualifier; null for the others.
+const char* stages_of_storage(std::string_view word);
+// Vulkan GLSL's rules apply (safeglslc -V, or #extension GL_KHR_vulkan_glsl).
+bool vulkan_glsl(const LanguageLevel* level);
 bool is_auxiliary_word(std::string_view word);      // centroid sample patch
 bool is_interpolation_word(std::string_view word);  // smooth flat noperspective (and the AMD/NV explicit ones)
 

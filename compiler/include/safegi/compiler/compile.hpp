@@ -58,6 +58,9 @@ struct CompileOptions {
   // --glsl-version: check every shader as this version whatever its #version
   // says. Either way the emitted GLSL states the version it was checked as.
   std::optional<GlslVersion> override_version;
+  // Vulkan GLSL (GL_KHR_vulkan_glsl): non-zero, the value of `VULKAN` (100).
+  // safeglslc sets it for -V / --target-env vulkan*; 0: OpenGL rules.
+  int vulkan = 0;
   // Reads `#include`d files; default: the file system. The prelude is always
   // served from memory.
   std::function<std::optional<std::string>(const std::string& path)> read_file;
@@ -103,16 +106,22 @@ struct CompileResult {
   std::size_t warning_count() const;
 };
 
-// One shader, or several stages of one program (at most one per stage, then
-// checked against each other: each stage's outputs against the next stage's inputs).
+// One shader, or several stages of one program (at most one per stage, except
+// ray-tracing stages, then checked against each other: each stage's outputs
+// against the next stage's inputs, each hit and miss shader's payload against
+// the ray generation shader's).
 CompileResult compile(const std::vector<ShaderSource>& sources, const CompileOptions& options = {});
 
-// `.vert .tesc .tese .geom .frag .comp`, also after the annotated-source
-// suffix `.sgl` (`light.sgl.frag`) and as `.vert.sgl`; nothing otherwise.
+// The extensions of stages.def (`.vert` … `.comp`, `.rgen .rint .rahit
+// .rchit .rmiss .rcall .mesh .task`), also after the annotated-source suffix
+// `.sgl` (`light.sgl.frag`) and as `.vert.sgl`; nothing otherwise.
 std::optional<Stage> stage_from_path(std::string_view path);
-// `vert`/`vertex`, `frag`/`fragment`, … (glslangValidator's -S names).
+// `vert`/`vertex`, `frag`/`fragment`, `rgen`/`raygen`, … (glslangValidator's -S names).
 std::optional<Stage> stage_from_name(std::string_view name);
 std::string_view stage_extension(Stage stage);  // "vert", ...
+// Every stage's extension in pipeline order, each after `prefix`, joined by
+// `separator`: what messages list (".vert .tesc … .rcall").
+std::string stage_extension_list(std::string_view separator, std::string_view prefix = "");
 std::optional<gl::Stage> to_table_stage(Stage stage);
 
 // The built-in prelude's text and the virtual include directory that serves it.

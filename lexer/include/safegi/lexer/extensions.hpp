@@ -23,6 +23,10 @@ struct ExtensionInfo {
   std::uint32_t keyword_groups = 0;  // bits (1 << ExtensionGroup)
 };
 
+// Vulkan GLSL: not an extension a GL driver advertises (no macro), but its
+// #extension line, or Vulkan semantics (safeglslc -V), turn on its types and rules.
+inline constexpr std::string_view kVulkanGlslExtension = "GL_KHR_vulkan_glsl";
+
 // Sorted by name.
 std::span<const ExtensionInfo> known_extensions();
 const ExtensionInfo* find_extension(std::string_view name);

@@ -42,6 +42,12 @@ struct PreprocessorOptions {
   // still checked): safeglslc --glsl-version, glslangValidator's option.
   int override_version = 0;
   bool override_es = false;
+  // Vulkan GLSL (GL_KHR_vulkan_glsl), as glslangValidator -V: when non-zero,
+  // the value of the predefined `VULKAN` macro (100), the Vulkan types are
+  // keywords and LanguageLevel::extensions lists GL_KHR_vulkan_glsl, which
+  // turns on the checker's Vulkan rules (push constants, set, std430 push-constant
+  // blocks). 0: OpenGL GLSL.
+  int vulkan = 0;
   // Reads an include candidate; nullopt when it does not exist. Default: the
   // file system. Tests and embedders (an in-memory prelude) replace it.
   std::function<std::optional<std::string>(const std::string& path)> read_file;

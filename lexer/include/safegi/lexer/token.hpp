@@ -57,6 +57,10 @@ enum class ExtensionGroup : std::uint8_t {
   memory_qualifiers,  // coherent, volatile, restrict, readonly, writeonly: image load/store, storage buffers
   interpolation,      // flat, smooth, noperspective, centroid: GL_EXT_gpu_shader4, GL_NV_shader_noperspective_interpolation
   unsigned_integers,  // uint, uvecN and `unsigned int`: GL_EXT_gpu_shader4
+  ray_tracing,        // rayPayloadEXT, hitAttributeEXT, callableDataEXT, shaderRecordEXT (and NV): GL_EXT/NV_ray_tracing
+  mesh_shading,       // taskPayloadSharedEXT, perprimitiveEXT (and NV): GL_EXT/NV_mesh_shader
+  nonuniform,         // nonuniformEXT: GL_EXT_nonuniform_qualifier
+  barycentric,        // pervertexEXT / pervertexNV: GL_EXT/NV_fragment_shader_barycentric
 };
 
 // Bit mask of ExtensionGroup values that `extension` (a #extension name)

@@ -376,6 +376,7 @@ struct TypeQualifiers {
   SourceRange range;
   bool empty() const { return list.empty(); }
   bool has(std::string_view word) const;
+  bool has_layout_id(std::string_view id) const;  // `layout(..., id, ...)` in any layout qualifier
 };
 
 // --------------------------------------------------------------- declarations

@@ -14,7 +14,11 @@ namespace safegi::gl {
 
 inline constexpr int kSymbolTableVersion = 1;
 
-enum class Stage { vertex, tess_control, tess_evaluation, geometry, fragment, compute };
+enum class Stage {
+  vertex, tess_control, tess_evaluation, geometry, fragment, compute,
+  // Vulkan: mesh shading (GL_EXT_mesh_shader) and ray tracing (GL_EXT_ray_tracing).
+  task, mesh, ray_generation, intersection, any_hit, closest_hit, miss, callable
+};
 
 std::string_view to_string(Stage stage);
 std::optional<Stage> stage_from_string(std::string_view text);

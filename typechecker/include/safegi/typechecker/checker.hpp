@@ -28,9 +28,32 @@
 
 namespace safegi {
 
-enum class Stage : std::uint8_t { vertex, tess_control, tess_evaluation, geometry, fragment, compute, unknown };
+// The stages of stages.def, in pipeline order, then `unknown`.
+enum class Stage : std::uint8_t {
+#define SAFEGI_STAGE(id, ...) id,
+#include "safegi/typechecker/stages.def"
+  unknown
+};
 
-// "vertex", "tessellation control", …, "fragment", "compute" ("unknown" for Stage::unknown).
+// How stages exchange data: by in/out between neighbours (graphics), not at
+// all (compute), by payloads and hit attributes (ray tracing), by a task
+// payload and per-vertex / per-primitive outputs (mesh).
+enum class StageFamily : std::uint8_t { graphics, compute, ray_tracing, mesh };
+
+struct StageInfo {
+  Stage stage;
+  char letter;                 // builtin_variables.def's and builtin_availability.def's letter
+  const char* extension;       // file extension and -S name: "rgen"
+  const char* long_name;       // the other -S name: "raygen"
+  const char* words;           // "ray generation"
+  StageFamily family;
+};
+
+// Every stage (stages.def), in pipeline order.
+const std::vector<StageInfo>& stage_table();
+const StageInfo* stage_info(Stage stage);  // null for Stage::unknown
+
+// "vertex", "tessellation control", …, "ray generation" ("unknown" for Stage::unknown).
 const char* stage_name(Stage stage);
 
 struct CheckOptions {
@@ -52,7 +75,8 @@ struct CheckOptions {
   bool record_symbols = false;
 };
 
-enum class InterfaceKind : std::uint8_t { uniform, input, output, buffer, shared };
+// ray_payload / ray_payload_in: rayPayloadEXT and rayPayloadInEXT variables (and NV), no host's business.
+enum class InterfaceKind : std::uint8_t { uniform, input, output, buffer, shared, ray_payload, ray_payload_in };
 
 struct InterfaceVariable {
   InterfaceKind kind = InterfaceKind::uniform;
@@ -151,5 +175,10 @@ CheckResult check(const ast::TranslationUnit& unit, const CheckOptions& options,
 // not part of the comparison); a mismatch is one error at the input with a
 // note at the output, both types in the program's words.
 void check_interface_match(const CheckResult& producer, const CheckResult& consumer, DiagnosticEngine& diagnostics);
+// Ray tracing: the payload a closest-hit, any-hit or miss shader receives
+// (rayPayloadInEXT) must have the type, dimension and spaces included, of a
+// payload the ray generation shader traces (rayPayloadEXT at some location):
+// which one a ray reaches depends on the shader binding table, so any will do.
+void check_payload_match(const CheckResult& tracer, const CheckResult& receiver, DiagnosticEngine& diagnostics);
 
 }  // namespace safegi

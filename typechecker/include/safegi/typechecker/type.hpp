@@ -118,6 +118,9 @@ struct StructField {
 struct StructInfo {
   std::string name;
   std::vector<StructField> fields;
+  // GL_EXT_buffer_reference: a `layout(buffer_reference) buffer B { … };`
+  // block, whose name is the type of a 64-bit reference to such memory.
+  bool buffer_reference = false;
 };
 
 // Same GLSL type (shape, scalar, sizes, arrays, struct, opaque name), ignoring annotations.
