@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <safegi/diagnostics/codes.hpp>
+#include <safegi/diagnostics/command_line.hpp>
 
 #include "safegi/compiler/compile.hpp"
 #include "safegi/compiler/spirv.hpp"
@@ -15,8 +16,7 @@
 namespace safegi {
 namespace {
 
-constexpr int kExitDiagnostics = 1;
-constexpr int kExitUsage = 2;
+constexpr int kExitDiagnostics = kExitInputError;
 
 // A version number as glslangValidator takes them (-V100): digits, few enough for an int.
 bool all_digits(std::string_view text) {
@@ -181,7 +181,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     io.out << kCompilerName << " " << kCompilerVersion << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
-    io.err << "safeglslc: error: " << e.what() << "\nRun with --help for usage.\n";
+    io.err << usage_error_text("safeglslc", e.what());
     return kExitUsage;
   }
 

@@ -12,6 +12,9 @@
 #include <iostream>
 #include <string>
 
+#include <safegi/diagnostics/exit_status.hpp>
+#include <safegi/diagnostics/printable.hpp>
+
 #include "safegi/compiler/cli.hpp"
 #if SAFEGLSLC_SPIRV
 #include "safegi/compiler/spirv.hpp"
@@ -54,7 +57,12 @@ int main(int argc, char** argv) {
   }
 #endif
   safegi::CliStreams io{std::cin, std::cout, std::cerr, isatty(fileno(stderr)) != 0};
-  const int status = safegi::run_safeglslc(args, io, backend);
-  std::cout.flush();
-  return status;
+  try {
+    const int status = safegi::run_safeglslc(args, io, backend);
+    std::cout.flush();
+    return status;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "safeglslc: " << safegi::error_report(safegi::out_of_memory_text("compiling"));
+    return safegi::kExitInputError;
+  }
 }

@@ -13,6 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include <safegi/diagnostics/exit_status.hpp>
+#include <safegi/diagnostics/printable.hpp>
+
 namespace safegi::render {
 
 namespace {
@@ -71,10 +74,7 @@ namespace {
 // A message ending in a newline is a whole diagnostic already ("scene.pbrt:3:7:
 // error: ..." with its source line: the pbrt importer's), printed as it is.
 bool is_diagnostic(const std::string& message) { return !message.empty() && message.back() == '\n'; }
-void print_error(const std::string& message) {
-  if (is_diagnostic(message)) std::fputs(message.c_str(), stderr);
-  else std::fprintf(stderr, "error: %s\n", message.c_str());
-}
+void print_error(const std::string& message) { std::fputs(error_report(message).c_str(), stderr); }
 
 }  // namespace
 
@@ -93,9 +93,11 @@ void DistributedSession::agree_setup(const std::string* error) {
     // the single process's; otherwise it says which rank failed first.
     if (failures == ranks())
       print_error(message);
-    else
-      std::fprintf(stderr, "error: rank %d of %d: %s%s", first_failed, ranks(), message.c_str(),
-                   is_diagnostic(message) ? "" : "\n");
+    else {
+      const bool whole = is_diagnostic(message);
+      std::fprintf(stderr, "error: rank %d of %d: %s%s", first_failed, ranks(), escape_unprintable(message, whole).c_str(),
+                   whole ? "" : "\n");
+    }
   }
   // Called from render(): no rank renders (report_error() returns quietly).
   if (!error) throw SetupFailedElsewhere();
@@ -200,27 +202,28 @@ Image DistributedSession::gather_on_first(Image image) {
 }
 
 int DistributedSession::report_error(const std::exception& error) {
-  if (dynamic_cast<const SetupFailedElsewhere*>(&error)) return 1;
+  if (dynamic_cast<const SetupFailedElsewhere*>(&error)) return kExitInputError;
+  const int status = dynamic_cast<const CommandLineError*>(&error) ? kExitUsage : kExitInputError;
   switch (phase_) {
     case Phase::setup: {
       std::string message = error.what();
       agree_setup(&message);
-      return 1;
+      return status;
     }
     case Phase::rendering:
       if (ranks() > 1) {
         // The other ranks wait in a collective for this one: end the job.
-        std::fprintf(stderr, "error: rank %d of %d: %s\n", rank(), ranks(), error.what());
+        std::fprintf(stderr, "error: rank %d of %d: %s\n", rank(), ranks(), escape_unprintable(error.what()).c_str());
         std::fflush(stderr);
         communicator_.abort(1);
       }
       break;
     case Phase::reporting:
-      if (!is_root()) return 1;  // rank 0 reports for all
+      if (!is_root()) return status;  // rank 0 reports for all
       break;
   }
   print_error(error.what());
-  return 1;
+  return status;
 }
 
 }  // namespace safegi::render

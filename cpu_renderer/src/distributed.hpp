@@ -21,6 +21,9 @@ class DistributedSession {
   int ranks() const { return communicator_.size(); }
   // Rank 0 prints, shows the progress bar and writes the image.
   bool is_root() const { return rank() == 0; }
+  // The ranks sharing this machine (its memory), and the worker threads a rank takes by default.
+  int ranks_on_this_node() const { return communicator_.ranks_on_this_node(); }
+  int default_threads() const;
 
   // Collective. First agrees that every rank's setup (scene, options)
   // succeeded; when one rank's failed, it throws on every rank (rank 0 has
@@ -39,7 +42,8 @@ class DistributedSession {
   // however many ranks fail, and no rank waits for a failed one. During the
   // render a rank cannot wait for the others: it prints the error with its
   // rank and ends the job. Afterwards (rank 0 writing the image) it prints
-  // the error as a single process would.
+  // the error as a single process would. The status is kExitUsage for a
+  // CommandLineError, else kExitInputError.
   int report_error(const std::exception& error);
 
  private:
@@ -49,7 +53,6 @@ class DistributedSession {
   void agree_setup(const std::string* error);
   void test_fault_point();
   Image gather_on_first(Image image);
-  int default_threads() const;
 
   Communicator communicator_;
   Phase phase_ = Phase::setup;

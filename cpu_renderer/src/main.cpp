@@ -8,7 +8,10 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <safegi/diagnostics/command_line.hpp>
+
 #include "distributed.hpp"
+#include "safegi/cpu_renderer/memory_estimate.hpp"
 #include "safegi/cpu_renderer/image_io.hpp"
 #include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/precision.hpp"
@@ -40,7 +43,8 @@ int main(int argc, char** argv) {
   using namespace safegi::render;
   // Under mpirun, one rank of a distributed render (docs/cpu-renderer.md); else a single process.
   DistributedSession session(argc, argv);
-  CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG"};
+  CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG",
+               std::filesystem::path(argv[0]).filename().string()};
   std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette, length_unit;
   int spp = 0, threads = 0, max_depth = 0, light_samples = 0, roulette_depth = -1;
   uint32_t seed = 0;
@@ -78,22 +82,32 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return session.is_root() ? app.exit(error) : error.get_exit_code();  // every rank parses alike; one prints
+    // Every rank parses alike; one prints.
+    if (session.is_root()) return safegi::exit_after_parse_error(app, error);
+    return error.get_exit_code() == 0 ? safegi::kExitSuccess : safegi::kExitUsage;
   }
 
+  // What the program is doing, for the message when memory runs out anyway.
+  std::string doing = "loading the scene";
   try {
     std::optional<CropWindow> scene_crop;
     Scene scene;
     if (std::filesystem::path(scene_file).extension() == ".pbrt") {
       if (length_unit.empty())
-        throw PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
-                              "with --length-unit (m, cm, mm, in, ...)\n");
-      PbrtScene imported = load_pbrt_scene(scene_file, {parse_length_unit(length_unit), {}, read_image});
+        throw CommandLineError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
+                               "with --length-unit (m, cm, mm, in, ...)");
+      double metres_per_unit = 0;
+      try {
+        metres_per_unit = parse_length_unit(length_unit);
+      } catch (const SceneError& error) {
+        throw CommandLineError(error.what());
+      }
+      PbrtScene imported = load_pbrt_scene(scene_file, {metres_per_unit, {}, read_image});
       if (session.is_root()) std::cerr << imported.warnings;
       scene = std::move(imported.scene);
       scene_crop = imported.crop;
     } else {
-      if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
+      if (!length_unit.empty()) throw CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
       scene = load_scene(scene_file, SceneLoadOptions{read_image});
     }
     if (std::optional<PrecisionReport> unresolved = check_precision(scene); unresolved && session.is_root())
@@ -114,23 +128,20 @@ int main(int argc, char** argv) {
     if (light_samples > 0) options.settings.light_samples = light_samples;
     if (!russian_roulette.empty()) options.settings.russian_roulette = russian_roulette == "on";
     if (roulette_depth >= 0) options.settings.russian_roulette_depth = roulette_depth;
-    std::smatch match;
     if (!resolution.empty()) {
-      if (!std::regex_match(resolution, match, std::regex(R"((\d{1,5})x(\d{1,5}))")))
-        throw std::runtime_error("--resolution: expected WIDTHxHEIGHT, got '" + resolution + "'");
-      options.settings.width = std::stoi(match[1]);
-      options.settings.height = std::stoi(match[2]);
+      ImageSize size = parse_resolution(resolution);
+      options.settings.width = size.width;
+      options.settings.height = size.height;
       options.crop.reset();  // a pbrt Film's crop window was in pixels of its own resolution
-      if (options.settings.width < 1 || options.settings.height < 1)
-        throw std::runtime_error("--resolution: width and height must be positive");
     }
     if (!crop.empty()) {
+      std::smatch match;
       if (!std::regex_match(crop, match, std::regex(R"((\d{1,5}),(\d{1,5}),(\d{1,5}),(\d{1,5}))")))
-        throw std::runtime_error("--crop: expected X,Y,WIDTH,HEIGHT, got '" + crop + "'");
+        throw CommandLineError("--crop: expected X,Y,WIDTH,HEIGHT, got '" + safegi::escape_unprintable(crop) + "'");
       CropWindow window{std::stoi(match[1]), std::stoi(match[2]), std::stoi(match[3]), std::stoi(match[4])};
       if (window.width < 1 || window.height < 1 || window.x + window.width > options.settings.width ||
           window.y + window.height > options.settings.height)
-        throw std::runtime_error("--crop: the window must be non-empty and inside the image");
+        throw CommandLineError("--crop: the window must be non-empty and inside the image");
       options.crop = window;
     }
     options.threads = threads;
@@ -138,7 +149,11 @@ int main(int argc, char** argv) {
     options.time_budget_seconds = time_budget;
     options.progress = !quiet;
 
+    // Refused before anything is allocated, on every rank alike (the setup's agreement).
+    check_render_memory(scene, options, threads > 0 ? threads : session.default_threads(), session.ranks_on_this_node());
+
     RenderStats stats;
+    doing = "rendering";
     rusage before_render = resource_usage();
     Image image = session.render(scene, options, &stats);
     double rank_render_cpu_seconds = cpu_seconds(resource_usage()) - cpu_seconds(before_render);
@@ -147,6 +162,7 @@ int main(int argc, char** argv) {
     // Rank 0 writes the image and reports for all; the others stop here.
     double other_ranks_cpu_seconds = session.sum_over_ranks(session.is_root() ? 0.0 : cpu_seconds(resource_usage()));
     if (!session.is_root()) return 0;
+    doing = "writing the image";
     write_exr(with_extension(output, ".exr"), image);
     write_png(with_extension(output, ".png"), image);
     if (pfm) write_pfm(with_extension(output, ".pfm"), image);
@@ -187,6 +203,8 @@ int main(int argc, char** argv) {
           render_cpu_seconds > 0 ? static_cast<double>(stats.total_rays()) / render_cpu_seconds : 0.0,
           usage.ru_maxrss, static_cast<unsigned long long>(stats.invalid_samples));
     }
+  } catch (const std::bad_alloc&) {
+    return session.report_error(std::runtime_error(out_of_memory_message(doing)));
   } catch (const std::exception& error) {  // a PbrtImportError's text is a whole diagnostic, printed as it is
     return session.report_error(error);
   }

@@ -234,8 +234,8 @@ void Importer::film(const Directive& d) {
   if (d.strings[0] != "image") fail(d.string_ranges[0], "film \"" + d.strings[0] + "\" is not supported", "supported: \"image\"");
   ParamSet params(d.params, "Film \"image\"");
   RenderSettings& settings = result_.scene.settings;
-  settings.width = params.one_int("xresolution", 1280, 1, 65536);
-  settings.height = params.one_int("yresolution", 720, 1, 65536);
+  settings.width = params.one_int("xresolution", 1280, 1, kMaxImageSide);
+  settings.height = params.one_int("yresolution", 720, 1, kMaxImageSide);
   result_.film_filename = params.one_string("filename", "pbrt.exr");
   params.one_float("diagonal", 35);  // the realistic camera's sensor size
   params.reject("scale", "our images are not scaled", 1.0);

@@ -177,10 +177,11 @@ TEST(RenderPrograms, PbrtScenesNeedALengthUnit) {
     int status = std::system(command.c_str());
     return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_all(directory / "err.txt"));
   };
-  EXPECT_EQ(status_and_error(""), std::make_pair(1, scene.string() + ": pbrt scenes carry no units: say what one pbrt "
-                                                  "length unit is with --length-unit (m, cm, mm, in, ...)\n"));
+  // Command-line errors (exit status 2, docs/cpu-renderer.md).
+  EXPECT_EQ(status_and_error(""), std::make_pair(2, "error: " + scene.string() + ": pbrt scenes carry no units: say what "
+                                                  "one pbrt length unit is with --length-unit (m, cm, mm, in, ...)\n"));
   EXPECT_EQ(status_and_error("--length-unit W"),
-            std::make_pair(1, std::string("error: --length-unit: expected a length unit (m, cm, mm, in, ...), got 'W' (power)\n")));
+            std::make_pair(2, std::string("error: --length-unit: expected a length unit (m, cm, mm, in, ...), got 'W' (power)\n")));
   fs::remove_all(directory);
 }
 

@@ -14,6 +14,7 @@
 #include "geometry.hpp"
 #include "integrator.hpp"
 #include "lights.hpp"
+#include "printable.hpp"
 #include "sampler.hpp"
 
 namespace safegi::render {
@@ -104,6 +105,25 @@ class Progress {
 };
 
 }  // namespace
+
+ImageSize parse_resolution(const std::string& text, const std::string& option) {
+  // Digits, 'x', digits; up to 9 digits a side, so that the limit, not an overflow, speaks for long numbers.
+  const std::size_t x = text.find('x');
+  auto side = [&](std::string_view digits) {
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string_view::npos) return -1;
+    return std::stoi(std::string(digits));
+  };
+  const std::string_view whole(text);
+  const int width = x == std::string::npos ? -1 : side(whole.substr(0, x));
+  const int height = x == std::string::npos ? -1 : side(whole.substr(x + 1));
+  if (width < 0 || height < 0)
+    throw CommandLineError(option + ": expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + printable(text, 40) + "'");
+  for (auto [name, value] : {std::pair{"width", width}, std::pair{"height", height}})
+    if (value < 1 || value > kMaxImageSide)
+      throw CommandLineError(option + ": " + text + ": the " + name + " must be 1 to " + std::to_string(kMaxImageSide) +
+                             " pixels, got " + std::to_string(value));
+  return {width, height};
+}
 
 std::vector<PixelRect> render_tiles(int width, int height) {
   std::vector<PixelRect> tiles;

@@ -339,8 +339,8 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
       fail(path.field("resolution"), "expected [width, height], got " + short_dump(resolution));
-    settings.width = integer(resolution[0], path.field("resolution").index(0), 1, 65536);
-    settings.height = integer(resolution[1], path.field("resolution").index(1), 1, 65536);
+    settings.width = integer(resolution[0], path.field("resolution").index(0), 1, kMaxImageSide);
+    settings.height = integer(resolution[1], path.field("resolution").index(1), 1, kMaxImageSide);
   }
   if (value.contains("spp")) settings.spp = integer(value["spp"], path.field("spp"), 1, 1 << 24);
   if (value.contains("max_depth")) settings.max_depth = integer(value["max_depth"], path.field("max_depth"), 1, 1024);

@@ -1,6 +1,7 @@
 #include <safegi/diagnostics/render.hpp>
 
 #include <nlohmann/json.hpp>
+#include <safegi/diagnostics/printable.hpp>
 
 namespace safegi {
 namespace {
@@ -24,10 +25,14 @@ json range_json(SourceRange range, const SourceManager& sources) {
   return r;
 }
 
+// Editors show message and hint as text: an input's control bytes are escaped
+// there as in the text renderer (JSON's own \u001b would reach the editor as ESC).
 json diagnostic_json(const Diagnostic& d, const SourceManager& sources) {
-  json j{{"severity", severity_name(d.severity)}, {"message", d.message}, {"range", range_json(d.range, sources)}};
+  json j{{"severity", severity_name(d.severity)},
+         {"message", escape_unprintable(d.message)},
+         {"range", range_json(d.range, sources)}};
   if (!d.code.empty()) j["code"] = d.code;
-  if (!d.hint.empty()) j["hint"] = d.hint;
+  if (!d.hint.empty()) j["hint"] = escape_unprintable(d.hint);
   if (!d.highlights.empty()) {
     json& highlights = j["highlights"] = json::array();
     for (SourceRange h : d.highlights) highlights.push_back(range_json(h, sources));

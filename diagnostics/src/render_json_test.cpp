@@ -52,10 +52,25 @@ namespace safegi {
 namespace {
 
 TEST(RenderJson, InvalidUtf8IsReplacedNotThrown) {
+  // A file name is data (the editor opens it): its bytes go as they are, and
+  // what is not UTF-8 becomes U+FFFD. Message text is escaped (next test).
   SourceManager sm;
-  FileId f = sm.add_file("a.glsl", "\x86\n");
+  FileId f = sm.add_file("a\x86.glsl", "\x86\n");
   std::string json = render_json(Diagnostic::error(sm.range_of(f, 0, 1), "bad byte '\x86'"), sm);
-  EXPECT_NE(json.find("bad byte '\xEF\xBF\xBD'"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"file\":\"a\xEF\xBF\xBD.glsl\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"message\":\"bad byte '\\\\x86'\""), std::string::npos) << json;
+}
+
+TEST(RenderJson, MessageTextCarriesNoControlCharacters) {
+  SourceManager sm;
+  FileId f = sm.add_file("a.glsl", "\x1b[2J\n");
+  Diagnostic d = Diagnostic::error(sm.range_of(f, 0, 1), "unknown '\x1b[2J'")
+                     .with_hint("not \x07")
+                     .with_note(Diagnostic::note(sm.range_of(f, 0, 1), "\x9b here"));
+  auto j = nlohmann::json::parse(render_json(d, sm));
+  EXPECT_EQ(j["message"], "unknown '\\x1B[2J'");
+  EXPECT_EQ(j["hint"], "not \\x07");
+  EXPECT_EQ(j["notes"][0]["message"], "\\x9B here");
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include <safegi/diagnostics/render.hpp>
 
+#include <safegi/diagnostics/printable.hpp>
+
 #include <algorithm>
 #include <string_view>
 
@@ -19,31 +21,48 @@ std::string_view severity_color(Severity severity) {
   return kBold;
 }
 
-bool is_utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
-
-// A quoted source line with tabs expanded, plus the display column at which
-// each byte of the original line starts (one extra entry for end of line).
+// A quoted source line with tabs expanded and unprintable bytes escaped, plus
+// the display column at which each byte of the original line starts (one
+// extra entry for end of line); the bytes of one character share its column.
 struct QuotedLine {
   std::string text;
   std::vector<std::size_t> column_of_byte;
+  std::vector<std::size_t> text_offset_of_column;  // where each column's text begins (one extra: the end)
+  std::vector<bool> starts_character;              // per column: a character (or tab, or escape) begins there
+  std::size_t columns_so_far() const { return text_offset_of_column.size(); }
+  std::size_t columns() const { return column_of_byte.back(); }
 };
 
 QuotedLine quote_line(std::string_view line, unsigned tab_width) {
   QuotedLine quoted;
   quoted.column_of_byte.reserve(line.size() + 1);
-  std::size_t column = 0;
-  for (char c : line) {
-    quoted.column_of_byte.push_back(column);
-    if (c == '\t' && tab_width != 0) {
-      std::size_t spaces = tab_width - column % tab_width;
-      quoted.text.append(spaces, ' ');
-      column += spaces;
+  for (std::size_t at = 0; at < line.size();) {
+    const TextUnit unit = text_unit_at(line, at);
+    const std::string_view bytes = line.substr(at, unit.bytes);
+    const std::size_t column = quoted.columns_so_far(), before = quoted.text.size();
+    quoted.column_of_byte.insert(quoted.column_of_byte.end(), unit.bytes, column);
+    // A character is one column however many bytes it has; tab stops and escapes are one byte a column.
+    bool one_column = false;
+    if (bytes == "\t") {
+      one_column = tab_width == 0;  // tab_width 0: tabs are quoted as they are
+      if (one_column) quoted.text += bytes;
+      else quoted.text.append(tab_width - column % tab_width, ' ');
+    } else if (!unit.printable) {
+      append_escaped(quoted.text, bytes);
     } else {
-      quoted.text.push_back(c);
-      if (!is_utf8_continuation(c)) ++column;
+      quoted.text += bytes;
+      one_column = true;
     }
+    if (one_column) quoted.text_offset_of_column.push_back(before);
+    else
+      for (std::size_t offset = before; offset < quoted.text.size(); ++offset) quoted.text_offset_of_column.push_back(offset);
+    quoted.starts_character.resize(quoted.columns_so_far(), false);
+    quoted.starts_character[column] = true;
+    at += unit.bytes;
   }
-  quoted.column_of_byte.push_back(column);
+  quoted.column_of_byte.push_back(quoted.columns_so_far());
+  quoted.text_offset_of_column.push_back(quoted.text.size());
+  quoted.starts_character.push_back(true);
   return quoted;
 }
 
@@ -60,6 +79,28 @@ void mark_range(std::string& carets, const QuotedLine& quoted, SourceRange range
   for (std::size_t c = from; c < to; ++c) {
     if (carets[c] != '^') carets[c] = mark;
   }
+}
+
+constexpr std::string_view kElided = "...";
+
+// The columns [begin, end) of a quoted line shown when it is wider than
+// `max_columns`: the caret and as much of its underline as fits, centred, the
+// rest of the room on either side; each side that is cut costs "..." of it.
+struct ColumnWindow {
+  std::size_t begin, end;
+};
+
+ColumnWindow window_around(std::size_t caret, std::size_t underline_end, std::size_t columns, std::size_t max_columns) {
+  if (max_columns == 0 || columns <= max_columns) return {0, columns};
+  const std::size_t room = max_columns > 2 * kElided.size() ? max_columns - 2 * kElided.size() : 1;
+  const std::size_t wanted = std::min(std::max(underline_end, caret + 1) - caret, room);
+  std::size_t begin = caret - std::min(caret, (room - wanted) / 2);
+  std::size_t end = std::min(columns, begin + room);
+  begin = end - std::min(end, room);
+  // A side that is not cut needs no "...": give its room to the other side.
+  if (begin == 0) end = std::min(columns, end + kElided.size());
+  if (end == columns) begin -= std::min(begin, kElided.size());
+  return {begin, end};
 }
 
 class TextRenderer {
@@ -79,7 +120,7 @@ class TextRenderer {
       paint(kBold);
       out_ += "help: ";
       paint(kReset);
-      out_ += d.hint;
+      out_ += escape_unprintable(d.hint);
       out_ += '\n';
     }
     FileId file = d.range.valid() ? d.range.begin.file : outer_file;
@@ -103,7 +144,7 @@ class TextRenderer {
     out_ += ": ";
     paint(kReset);
     paint(kBold);
-    out_ += message;
+    out_ += escape_unprintable(message);
     if (!code.empty()) {
       out_ += " [";
       out_ += code;
@@ -127,10 +168,35 @@ class TextRenderer {
     if (carets.size() <= caret) carets.resize(caret + 1, ' ');
     carets[caret] = '^';
     while (!carets.empty() && carets.back() == ' ') carets.pop_back();
-    out_ += quoted.text;
+    quote(quoted, carets, caret);
+  }
+
+  // The line and its carets, cut to the style's width around the caret.
+  void quote(const QuotedLine& quoted, const std::string& carets, std::size_t caret) {
+    std::size_t underline_end = caret + 1;
+    while (underline_end < carets.size() && carets[underline_end] == '~') ++underline_end;
+    // The caret may stand just past the last character: its column counts as part of the line.
+    const std::size_t columns = std::max(quoted.columns(), caret + 1);
+    ColumnWindow shown = window_around(caret, underline_end, columns, style_.max_line_columns);
+    // Cut between characters, never inside an escape such as \x1B.
+    const auto starts_character = [&](std::size_t column) {
+      return column >= quoted.columns() || quoted.starts_character[column];
+    };
+    while (!starts_character(shown.begin)) ++shown.begin;
+    while (shown.end > caret + 1 && !starts_character(shown.end)) --shown.end;
+    const bool cut_before = shown.begin > 0, cut_after = shown.end < columns;
+    const auto text_at = [&](std::size_t column) {
+      return quoted.text_offset_of_column[std::min(column, quoted.columns())];
+    };
+    if (cut_before) out_ += kElided;
+    out_.append(quoted.text, text_at(shown.begin), text_at(shown.end) - text_at(shown.begin));
+    if (cut_after) out_ += kElided;
     out_ += '\n';
+    std::string caret_line(cut_before ? kElided.size() : 0, ' ');
+    if (shown.begin < carets.size()) caret_line.append(carets, shown.begin, std::min(carets.size(), shown.end) - shown.begin);
+    while (!caret_line.empty() && caret_line.back() == ' ') caret_line.pop_back();
     paint(kCaretColor);
-    out_ += carets;
+    out_ += caret_line;
     paint(kReset);
     out_ += '\n';
   }
@@ -158,7 +224,7 @@ class TextRenderer {
 std::string format_location(SourceLocation at, const SourceManager& sources) {
   if (!at.valid() || !sources.valid(at.file)) return "<unknown>";
   PresumedLocation p = sources.presumed(at);
-  return std::string(p.file_name) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  return escape_unprintable(p.file_name) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
 }
 
 std::string render_text(const Diagnostic& diagnostic, const SourceManager& sources, TextStyle style) {

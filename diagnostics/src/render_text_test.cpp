@@ -125,5 +125,99 @@ TEST_F(RenderText, Utf8InCommentsTakesOneColumnPerCharacter) {
             "   ^~~\n");
 }
 
+TEST_F(RenderText, ControlBytesAreEscapedAndTheCaretStaysUnderItsCharacter) {
+  using namespace std::string_literals;
+  FileId f = add("e\x1b[2J.pbrt", "\x1b[31mShape \0\"x\" bad\n"s);
+  Diagnostic d = Diagnostic::error(range(f, 16, 19), "unknown \x1b[1mword").with_hint("h\x07");
+  EXPECT_EQ(render_text(d, sm),
+            "e\\x1B[2J.pbrt:1:17: error: unknown \\x1B[1mword\n"
+            "\\x1B[31mShape \\x00\"x\" bad\n"
+            "                      ^~~\n"
+            "help: h\\x07\n");
+  // An escaped byte takes four columns, and a range over it underlines all four.
+  EXPECT_EQ(render_text(Diagnostic::error(range(f, 10, 12), "e"), sm),
+            "e\\x1B[2J.pbrt:1:11: error: e\n"
+            "\\x1B[31mShape \\x00\"x\" bad\n"
+            "             ^~~~~\n");
+}
+
+// A long line is cut to a window around the caret, "..." marking what was left out.
+class RenderLongLine : public RenderText {
+ protected:
+  std::string render(std::uint32_t begin, std::uint32_t end, std::size_t columns = 20) {
+    return render_text(Diagnostic::error(range(file, begin, end), "e"), sm, TextStyle{.max_line_columns = columns});
+  }
+  FileId file = add("l.txt", "abcdefghijklmnopqrstuvwxyz0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ\n");
+};
+
+TEST_F(RenderLongLine, CutOnBothSidesAroundTheCaret) {
+  EXPECT_EQ(render(30, 33),
+            "l.txt:1:31: error: e\n"
+            "...z0123456789ABC...\n"  // 14 columns of text: 20 less two "..."
+            "        ^~~\n");
+}
+
+TEST_F(RenderLongLine, CutOnOneSideGivesTheOtherSideItsRoom) {
+  EXPECT_EQ(render(2, 3),
+            "l.txt:1:3: error: e\n"
+            "abcdefghijklmnopq...\n"
+            "  ^\n");
+  EXPECT_EQ(render(61, 62),
+            "l.txt:1:62: error: e\n"
+            "...JKLMNOPQRSTUVWXYZ\n"
+            "                   ^\n");
+  EXPECT_EQ(render(62, 62),  // at the end of the line
+            "l.txt:1:63: error: e\n"
+            "...KLMNOPQRSTUVWXYZ\n"
+            "                   ^\n");
+}
+
+TEST_F(RenderLongLine, AnUnderlineWiderThanTheWindowKeepsItsStart) {
+  EXPECT_EQ(render(10, 50),
+            "l.txt:1:11: error: e\n"
+            "...klmnopqrstuvwx...\n"
+            "   ^~~~~~~~~~~~~~\n");
+}
+
+TEST_F(RenderLongLine, NoCutUnlessWider) {
+  EXPECT_EQ(render(30, 31, 62),
+            "l.txt:1:31: error: e\n"
+            "abcdefghijklmnopqrstuvwxyz0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ\n"
+            "                              ^\n");
+  EXPECT_EQ(render(30, 31, 0), render(30, 31, 62));  // 0: never cut
+}
+
+TEST_F(RenderLongLine, CutsBetweenCharactersOfUtf8EscapesAndTabs) {
+  // Columns: 0-3 "\x01", 4 'é', 5-7 the tab's spaces, 8.. "abc…".
+  FileId f = add("u.txt", "\x01\xC3\xA9\tabcdefghijklmnopqrstuvwxyz\xE2\x82\xAC" "0123456789\n");
+  auto render_in = [&](std::uint32_t begin, std::size_t columns) {
+    return render_text(Diagnostic::error(range(f, begin, begin + 1), "e"), sm, TextStyle{.max_line_columns = columns});
+  };
+  EXPECT_EQ(render_in(3, 16),  // the window would start inside "\x01": it starts after it
+            "u.txt:1:4: error: e\n"
+            "...\xC3\xA9   abcd...\n"
+            "    ^~~\n");
+  EXPECT_EQ(render_in(30, 16),  // '€' is one column, its three bytes shown whole
+            "u.txt:1:31: error: e\n"
+            "...wxyz\xE2\x82\xAC" "01234...\n"
+            "       ^\n");
+  EXPECT_EQ(render_in(1, 12),
+            "u.txt:1:2: error: e\n"
+            "...\xC3\xA9   ...\n"
+            "   ^\n");
+}
+
+TEST_F(RenderText, AOneLineMeshQuotesAWindowNotTheLine) {
+  std::string mesh = "Shape \"trianglemesh\" \"point P\" [";
+  for (int i = 0; i < 20000; ++i) mesh += "0 1 2 ";
+  mesh += "x ]\n";
+  FileId f = add("mesh.pbrt", mesh);
+  const auto at = static_cast<std::uint32_t>(mesh.find('x'));
+  std::string text = render_text(Diagnostic::error(range(f, at, at + 1), "expected a number"), sm);
+  // 160 columns: "..." and the last 157 columns of the line, the caret under 'x'.
+  EXPECT_EQ(text, "mesh.pbrt:1:120033: error: expected a number\n..." + mesh.substr(mesh.size() - 1 - 157) +
+                      std::string(3 + 154, ' ') + "^\n");
+}
+
 }  // namespace
 }  // namespace safegi

@@ -1,6 +1,8 @@
 #include "analysis.hpp"
 
 #include <safegi/compiler/compile.hpp>
+#include <safegi/diagnostics/printable.hpp>
+#include <safegi/diagnostics/render.hpp>
 
 #include "documents.hpp"
 #include "uri.hpp"
@@ -90,19 +92,20 @@ std::vector<Related> related_of(const Diagnostic& d, const SourceManager& source
     out.push_back({e.expansion_site, "in expansion of macro '" + std::string(e.name) + "'", "note"});
     id = e.parent;
   }
-  for (const Diagnostic& n : d.notes) out.push_back({n.range, n.message, "note"});
-  if (!d.hint.empty()) out.push_back({d.range, "help: " + d.hint, "help"});
+  for (const Diagnostic& n : d.notes) out.push_back({n.range, escape_unprintable(n.message), "note"});
+  if (!d.hint.empty()) out.push_back({d.range, "help: " + escape_unprintable(d.hint), "help"});
   return out;
 }
 
 json diagnostic_json(const Diagnostic& d, const Locator& locator, const SourceManager& sources, DiagnosticStyle style) {
-  std::string message = d.message;
+  // Editors render message text: input bytes such as ESC are escaped, as safeglslc prints them.
+  std::string message = escape_unprintable(d.message);
   std::vector<Related> related = related_of(d, sources);
   const SourceRange shown = locator.in_document_range(d.range);
   if (d.range.valid() && shown != d.range) {
     // In an included file: said at the #include line, the real place first among the related.
+    related.insert(related.begin(), {d.range, message, severity_name(d.severity)});
     message = "In included file: " + message;
-    related.insert(related.begin(), {d.range, d.message, severity_name(d.severity)});
   }
   json out{{"range", locator.range(shown)}, {"severity", severity_of(d.severity)}, {"source", "safeglslc"}};
   if (!d.code.empty()) out["code"] = d.code;
@@ -122,10 +125,7 @@ json diagnostic_json(const Diagnostic& d, const Locator& locator, const SourceMa
         continue;
       }
       std::string where;
-      if (r.range.valid() && sources.valid(r.range.begin.file)) {
-        const PresumedLocation p = sources.presumed(r.range.begin);
-        where = std::string(p.file_name) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
-      }
+      if (r.range.valid() && sources.valid(r.range.begin.file)) where = format_location(r.range.begin, sources) + ": ";
       message += "\n" + where + std::string(r.label) + ": " + r.message;
     }
   }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <safegi/diagnostics/command_line.hpp>
 
 #include "safegi/lsp/framing.hpp"
 #include "safegi/lsp/server.hpp"
@@ -32,9 +33,7 @@ std::string executable_path(const char* argv0) {
   return n > 0 ? std::string(buffer, static_cast<std::size_t>(n)) : std::string(argv0);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int serve(int argc, char** argv) {
   CLI::App app{"safegi-lsp: language server for SafeGI annotated GLSL (LSP over stdin/stdout)", "safegi-lsp"};
   safegi::lsp::ServerOptions options;
   std::vector<std::string> defines;
@@ -46,7 +45,11 @@ int main(int argc, char** argv) {
   app.add_option("--prelude-file", options.prelude_file,
                  "a copy of safegi/prelude.sgl where go to definition shows the prelude (default: the installed one)");
   app.set_version_flag("--version", std::string(safegi::lsp::kServerName) + " 0.1.0");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return safegi::exit_after_parse_error(app, error);
+  }
   for (const std::string& d : defines) {
     const std::size_t eq = d.find('=');
     options.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
@@ -71,4 +74,16 @@ int main(int argc, char** argv) {
     }
   }
   return server.exit_code();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return serve(argc, argv);
+  } catch (const std::bad_alloc&) {
+    // Said on stderr, which clients show in their log: stdout is the protocol's.
+    std::cerr << "safegi-lsp: " << safegi::error_report(safegi::out_of_memory_text("serving"));
+    return safegi::kExitInputError;
+  }
 }

@@ -203,6 +203,14 @@ TEST(Server, WithoutRelatedInformationNotesJoinTheMessageAsSafeglslcPrintsThem) 
             "help: the value lacks a factor of solid_angle: missing division by a pdf?");
 }
 
+TEST(Server, ControlBytesOfTheSourceAreEscapedInMessages) {
+  // An editor renders the message: ESC, BEL or CSI from the file must arrive as text.
+  InProcess s;
+  s.initialize();
+  const json d = s.open("file:///tmp/e.sgl.frag", "#version 330\n#error \x1b]0;owned\x07 \xc2\x9b\nvoid main() {}\n")["diagnostics"][0];
+  EXPECT_EQ(d["message"], "#error: \\x1B]0;owned\\x07 \\xC2\\x9B");
+}
+
 TEST(Server, Utf8PositionsAreByteColumns) {
   InProcess s;
   s.initialize({{"general", {{"positionEncodings", {"utf-8"}}}}});

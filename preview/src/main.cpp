@@ -5,14 +5,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <regex>
 #include <ctime>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <safegi/diagnostics/command_line.hpp>
 #include <safegi/runtime_gl/context.hpp>
 
 #include "safegi/cpu_renderer/image_io.hpp"
+#include "safegi/cpu_renderer/memory_estimate.hpp"
 #include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 #include "safegi/preview/preview.hpp"
@@ -40,7 +41,8 @@ double median(std::vector<double> values) {
 
 int main(int argc, char** argv) {
   const Clock::time_point start = Clock::now();
-  CLI::App app{"SafeGI GL preview: direct illumination of a scene file (docs/preview.md) to EXR and PNG"};
+  CLI::App app{"SafeGI GL preview: direct illumination of a scene file (docs/preview.md) to EXR and PNG",
+               std::filesystem::path(argv[0]).filename().string()};
   std::string scene_file, output = "preview.exr", resolution, platform, length_unit;
   safegi::preview::PreviewOptions options;
   int time_samples = 0, frames = 1;
@@ -73,32 +75,34 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   app.add_flag("--pfm", pfm, "also write NAME.pfm (exact floats, readable without OpenImageIO)");
   app.add_flag("--stats", stats, "timings on stderr: start-up phases, first frame, median frame");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return safegi::exit_after_parse_error(app, error);
+  }
 
   try {
     std::filesystem::path out(output);
     if (out.extension() != ".exr" && out.extension() != ".png")
-      throw std::runtime_error("-o: expected a name ending in .exr or .png, got '" + output + "'");
+      throw safegi::render::CommandLineError("-o: expected a name ending in .exr or .png, got '" + output + "'");
     safegi::render::Scene scene;
     if (std::filesystem::path(scene_file).extension() == ".pbrt") {
       if (length_unit.empty())
-        throw safegi::render::PbrtImportError(scene_file + ": pbrt scenes carry no units: say what one pbrt length "
-                                              "unit is with --length-unit (m, cm, mm, in, ...)\n");
+        throw safegi::render::CommandLineError(scene_file + ": pbrt scenes carry no units: say what one pbrt length "
+                                               "unit is with --length-unit (m, cm, mm, in, ...)");
       safegi::render::PbrtScene imported = safegi::render::load_pbrt_scene(
           scene_file, {safegi::render::parse_length_unit(length_unit), {}, safegi::render::read_image});
       std::cerr << imported.warnings;
       scene = std::move(imported.scene);
     } else {
-      if (!length_unit.empty()) throw std::runtime_error("--length-unit: only for pbrt scenes (JSON scenes carry units)");
+      if (!length_unit.empty())
+        throw safegi::render::CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
       scene = safegi::render::load_scene(scene_file, safegi::render::SceneLoadOptions{safegi::render::read_image});
     }
     if (!resolution.empty()) {
-      std::smatch match;
-      if (!std::regex_match(resolution, match, std::regex(R"((\d{1,5})x(\d{1,5}))")))
-        throw std::runtime_error("--resolution: expected WIDTHxHEIGHT, got '" + resolution + "'");
-      options.width = std::stoi(match[1]);
-      options.height = std::stoi(match[2]);
-      if (options.width < 1 || options.height < 1) throw std::runtime_error("--resolution: width and height must be positive");
+      const safegi::render::ImageSize size = safegi::render::parse_resolution(resolution);
+      options.width = size.width;
+      options.height = size.height;
     }
     bool shutter = scene.camera.shutter_close > scene.camera.shutter_open;
     options.passes = time_samples > 0 ? time_samples : (shutter ? 16 : 1);
@@ -152,12 +156,15 @@ int main(int argc, char** argv) {
                    loaded, context_ready - loaded, programs_ready - context_ready, first_frame, frames,
                    wall * 1e3, 1.0 / wall, sorted.front() * 1e3, sorted.back() * 1e3, cpu * 1e3);
     }
-  } catch (const safegi::render::PbrtImportError& error) {
-    std::cerr << error.what();
-    return 1;
-  } catch (const std::exception& error) {
-    std::cerr << "error: " << error.what() << "\n";
-    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << safegi::error_report(safegi::render::out_of_memory_message("previewing the scene"));
+    return safegi::kExitInputError;
+  } catch (const safegi::render::CommandLineError& error) {
+    std::cerr << safegi::error_report(error.what());
+    return safegi::kExitUsage;
+  } catch (const std::exception& error) {  // a PbrtImportError's text is a whole diagnostic, printed as it is
+    std::cerr << safegi::error_report(error.what());
+    return safegi::kExitInputError;
   }
   return 0;
 }

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "safegi/cpu_renderer/image.hpp"
@@ -63,5 +65,20 @@ struct RenderStats {
 };
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr);
+
+// A command-line value the programs refuse (exit status kExitUsage, not the
+// scene's kExitInputError); what() is the whole message.
+class CommandLineError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ImageSize {
+  int width = 0, height = 0;
+};
+
+// `--resolution`'s "WIDTHxHEIGHT", each side 1 to kMaxImageSide; throws
+// CommandLineError naming `option` and what is wrong (the syntax, or the limit).
+ImageSize parse_resolution(const std::string& text, const std::string& option = "--resolution");
 
 }  // namespace safegi::render

@@ -119,6 +119,9 @@ struct Camera {
 
 enum class IntegratorType { direct, path, photon };
 
+// The widest and tallest image a scene file or a command line may ask for.
+inline constexpr int kMaxImageSide = 65536;
+
 struct RenderSettings {
   int width = 256;
   int height = 256;
