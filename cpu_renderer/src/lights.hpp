@@ -9,6 +9,7 @@
 
 #include "environment.hpp"
 #include "geometry.hpp"
+#include "safegi/cpu_renderer/emitter_triangles.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
 namespace safegi::render {
@@ -87,12 +88,6 @@ class Lights {
     int32_t motion = -1;
     PointObject object_center;
     Length object_radius = sg::zero;
-  };
-  template <class Space>
-  struct EmitterTriangle {
-    point<Space> p0;
-    vector<Space> e1, e2;
-    Real area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.

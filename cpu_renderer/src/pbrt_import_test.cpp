@@ -28,6 +28,22 @@ PbrtImportOptions in_memory(std::map<std::string, std::string> files = {}, doubl
   return options;
 }
 
+// A material's parameters, as the test expects its type to be (a failed
+// expectation, and default parameters, when it is another).
+template <class Parameters>
+bool is(const Material& material) {
+  return std::holds_alternative<Parameters>(material.model);
+}
+template <class Parameters>
+Parameters as(const Material& material) {
+  EXPECT_TRUE(is<Parameters>(material)) << material.name;
+  return is<Parameters>(material) ? std::get<Parameters>(material.model) : Parameters{};
+}
+TexturedReflectance diffuse(const Material& material) {
+  EXPECT_TRUE(diffuse_of(material)) << material.name << " has no diffuse part";
+  return diffuse_of(material) ? *diffuse_of(material) : TexturedReflectance{};
+}
+
 PbrtScene import(const std::string& text, const PbrtImportOptions& options = in_memory()) {
   return parse_pbrt_scene(text, "scene.pbrt", "dir", options);
 }
@@ -297,13 +313,13 @@ TEST(PbrtImport, MaterialsFollowTheGraphicsState) {
   const Scene& s = scene.scene;
   ASSERT_EQ(s.shapes.size(), 6u);
   auto material = [&](size_t shape) { return s.materials.at(s.shapes[shape].material); };
-  EXPECT_EQ(material(0).type, Material::Type::lambert);
-  EXPECT_EQ(sg::raw(material(0).diffuse), glm::vec3(0.5f));
-  EXPECT_EQ(sg::raw(material(1).diffuse), glm::vec3(0.8f, 0.1f, 0.1f));
-  EXPECT_EQ(sg::raw(material(2).diffuse), glm::vec3(0, 0.5f, 0));
-  EXPECT_EQ(material(3).type, Material::Type::mirror);
-  EXPECT_EQ(sg::raw(material(3).specular), glm::vec3(0.9f));  // pbrt-v3's default Kr
-  EXPECT_EQ(sg::raw(material(4).diffuse), glm::vec3(0.3f));
+  EXPECT_TRUE(is<LambertMaterial>(material(0)));
+  EXPECT_EQ(sg::raw(diffuse(material(0)).value), glm::vec3(0.5f));
+  EXPECT_EQ(sg::raw(diffuse(material(1)).value), glm::vec3(0.8f, 0.1f, 0.1f));
+  EXPECT_EQ(sg::raw(diffuse(material(2)).value), glm::vec3(0, 0.5f, 0));
+  EXPECT_TRUE(is<MirrorMaterial>(material(3)));
+  EXPECT_EQ(sg::raw(as<MirrorMaterial>(material(3)).reflectance), glm::vec3(0.9f));  // pbrt-v3's default Kr
+  EXPECT_EQ(sg::raw(diffuse(material(4)).value), glm::vec3(0.3f));
   EXPECT_EQ(s.shapes[5].material, -1);
   // A named material made inside an attribute block ends with it.
   EXPECT_EQ(import_error(world("AttributeBegin\nMakeNamedMaterial \"m\" \"string type\" \"matte\"\nAttributeEnd\n"
@@ -440,32 +456,32 @@ TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
   const Scene& s = scene.scene;
   ASSERT_EQ(s.shapes.size(), 10u);
   auto material = [&](size_t shape) { return s.materials.at(s.shapes[shape].material); };
-  EXPECT_EQ(material(0).type, Material::Type::plastic);
-  EXPECT_EQ(sg::raw(material(0).diffuse), glm::vec3(0.25f));
-  EXPECT_EQ(sg::raw(material(0).specular), glm::vec3(0.25f));
-  EXPECT_NEAR(material(0).alpha, pbrt_alpha(0.1), 1e-6);
-  EXPECT_EQ(material(0).ior, 1.5f);
-  EXPECT_TRUE(material(0).pbrt_v3_plastic_fresnel);  // FresnelDielectric(1.5, 1), as pbrt-v3 has it
-  EXPECT_EQ(sg::raw(material(1).diffuse), glm::vec3(0.5f, 0.4f, 0.3f));
-  EXPECT_EQ(material(1).alpha, 0.3f);
-  EXPECT_EQ(material(2).alpha, 0.001f);  // TrowbridgeReitzDistribution's floor
-  EXPECT_EQ(material(3).type, Material::Type::lambert);
-  EXPECT_EQ(sg::raw(material(3).diffuse), glm::vec3(0.25f));
-  EXPECT_EQ(material(4).type, Material::Type::glass);
-  EXPECT_EQ(sg::raw(material(4).specular), glm::vec3(1));
-  EXPECT_EQ(sg::raw(material(4).transmission), glm::vec3(1));
-  EXPECT_EQ(material(4).ior, 1.5f);
-  EXPECT_EQ(sg::raw(material(5).specular), glm::vec3(0.5f));
-  EXPECT_EQ(sg::raw(material(5).transmission), glm::vec3(0.9f, 0.8f, 0.7f));
-  EXPECT_EQ(material(5).ior, 1.33f);
-  EXPECT_EQ(material(6).type, Material::Type::plastic);
-  EXPECT_FALSE(material(6).pbrt_v3_plastic_fresnel);  // uber: FresnelDielectric(1, eta)
-  EXPECT_NEAR(material(6).alpha, pbrt_alpha(0.1), 1e-6);
-  EXPECT_EQ(material(7).type, Material::Type::lambert);
-  EXPECT_EQ(sg::raw(material(7).diffuse), glm::vec3(0.7f));
-  EXPECT_EQ(material(8).type, Material::Type::glass);
-  EXPECT_EQ(material(8).ior, 1.7f);
-  EXPECT_EQ(material(9).ior, 2.0f);
+  EXPECT_TRUE(is<PlasticMaterial>(material(0)));
+  EXPECT_EQ(sg::raw(diffuse(material(0)).value), glm::vec3(0.25f));
+  EXPECT_EQ(sg::raw(as<PlasticMaterial>(material(0)).specular), glm::vec3(0.25f));
+  EXPECT_NEAR(as<PlasticMaterial>(material(0)).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_EQ(as<PlasticMaterial>(material(0)).ior, 1.5f);
+  EXPECT_TRUE(as<PlasticMaterial>(material(0)).pbrt_v3_fresnel);  // FresnelDielectric(1.5, 1), as pbrt-v3 has it
+  EXPECT_EQ(sg::raw(diffuse(material(1)).value), glm::vec3(0.5f, 0.4f, 0.3f));
+  EXPECT_EQ(as<PlasticMaterial>(material(1)).alpha, 0.3f);
+  EXPECT_EQ(as<PlasticMaterial>(material(2)).alpha, 0.001f);  // TrowbridgeReitzDistribution's floor
+  EXPECT_TRUE(is<LambertMaterial>(material(3)));
+  EXPECT_EQ(sg::raw(diffuse(material(3)).value), glm::vec3(0.25f));
+  EXPECT_TRUE(is<GlassMaterial>(material(4)));
+  EXPECT_EQ(sg::raw(as<GlassMaterial>(material(4)).reflectance), glm::vec3(1));
+  EXPECT_EQ(sg::raw(as<GlassMaterial>(material(4)).transmittance), glm::vec3(1));
+  EXPECT_EQ(as<GlassMaterial>(material(4)).ior, 1.5f);
+  EXPECT_EQ(sg::raw(as<GlassMaterial>(material(5)).reflectance), glm::vec3(0.5f));
+  EXPECT_EQ(sg::raw(as<GlassMaterial>(material(5)).transmittance), glm::vec3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(as<GlassMaterial>(material(5)).ior, 1.33f);
+  EXPECT_TRUE(is<PlasticMaterial>(material(6)));
+  EXPECT_FALSE(as<PlasticMaterial>(material(6)).pbrt_v3_fresnel);  // uber: FresnelDielectric(1, eta)
+  EXPECT_NEAR(as<PlasticMaterial>(material(6)).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_TRUE(is<LambertMaterial>(material(7)));
+  EXPECT_EQ(sg::raw(diffuse(material(7)).value), glm::vec3(0.7f));
+  EXPECT_TRUE(is<GlassMaterial>(material(8)));
+  EXPECT_EQ(as<GlassMaterial>(material(8)).ior, 1.7f);
+  EXPECT_EQ(as<GlassMaterial>(material(9)).ior, 2.0f);
   EXPECT_NE(scene.warnings.find("parameter \"float index\" of Material \"glass\" is not used"), std::string::npos);
 
   EXPECT_EQ(import_error(world("Material \"glass\" \"float uroughness\" 0.1")),
@@ -555,16 +571,16 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(s.textures[2].colour_space, ColourSpace::linear);  // "gamma" false overrides the .tga default
   ASSERT_EQ(s.shapes.size(), 3u);
   const Material& textured = s.materials.at(s.shapes[0].material);
-  EXPECT_EQ(textured.diffuse_texture, 0);
-  EXPECT_EQ(sg::raw(textured.diffuse), glm::vec3(1));
+  EXPECT_EQ(diffuse(textured).texture, 0);
+  EXPECT_EQ(sg::raw(diffuse(textured).value), glm::vec3(1));
   ASSERT_EQ(s.shapes[0].uvs.size(), 3u);
   EXPECT_EQ(s.shapes[0].uvs[2].v, 1.0f);
   const Material& tinted = s.materials.at(s.shapes[1].material);
-  EXPECT_EQ(tinted.type, Material::Type::plastic);
-  EXPECT_EQ(tinted.diffuse_texture, 1);
-  EXPECT_EQ(sg::raw(tinted.diffuse), glm::vec3(0.5f, 1, 1));  // "scale": the constant times the image
+  EXPECT_TRUE(is<PlasticMaterial>(tinted));
+  EXPECT_EQ(diffuse(tinted).texture, 1);
+  EXPECT_EQ(sg::raw(diffuse(tinted).value), glm::vec3(0.5f, 1, 1));  // "scale": the constant times the image
   EXPECT_EQ(s.shapes[1].uvs[1].u, 2.0f);                      // "st" when there is no "uv"
-  EXPECT_EQ(s.materials.at(s.shapes[2].material).diffuse_texture, 2);
+  EXPECT_EQ(diffuse(s.materials.at(s.shapes[2].material)).texture, 2);
   EXPECT_EQ(g.filter, TextureFilter::bilinear);  // pbrt-v3's footprint shrinks as 1/sqrt(spp): said once
   EXPECT_EQ(scene.warnings,
             "scene.pbrt:2:1: warning: image textures are looked up bilinearly here, not filtered as pbrt-v3 filters "

@@ -173,8 +173,8 @@ void Importer::transform_directive(const Directive& d) {
       fail(d.arguments, "LookAt: the up vector is parallel to the viewing direction",
            "pbrt-v3 would fall back to the identity transform");
     glm::dvec3 right = glm::normalize(side), new_up = glm::cross(dir, right);
-    Matrix camera_to_world(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
-    next = state_.ctm * glm::inverse(camera_to_world);
+    Matrix world_from_camera(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
+    next = state_.ctm * glm::inverse(world_from_camera);
   } else if (d.name == "Transform") {
     next = from_numbers(n);
   } else if (d.name == "ConcatTransform") {
@@ -342,8 +342,8 @@ void Importer::finish_camera(SourceRange world_begin) {
   Camera& camera = result_.scene.camera;
   SourceRange at = camera_ ? camera_->range : world_begin;
   if (!invertible(camera_from_world_)) fail(at, "the camera transform is singular");
-  Matrix camera_to_world = glm::inverse(camera_from_world_);
-  glm::dmat3 frame(camera_to_world);
+  Matrix pbrt_world_from_camera = glm::inverse(camera_from_world_);
+  glm::dmat3 frame(pbrt_world_from_camera);
   double sx = glm::length(frame[0]), sy = glm::length(frame[1]), sz = glm::length(frame[2]);
   double tolerance = 1e-6 * sx;
   if (std::fabs(sx - sy) > tolerance || std::fabs(sx - sz) > tolerance ||
@@ -356,7 +356,7 @@ void Importer::finish_camera(SourceRange world_begin) {
   bool mirror = glm::determinant(frame) > 0;
   double unit = options_.metres_per_unit;
   world_from_pbrt_world_ = scale({mirror ? -unit : unit, unit, unit});
-  Matrix world_from_camera = world_from_pbrt_world_ * camera_to_world;
+  Matrix world_from_camera = world_from_pbrt_world_ * pbrt_world_from_camera;
   camera.position = to_world_point(world_from_camera, {0, 0, 0}, at);
   glm::dvec3 forward = glm::normalize(glm::dvec3(world_from_camera[2]));
   glm::dvec3 up = glm::normalize(glm::dvec3(world_from_camera[1]));

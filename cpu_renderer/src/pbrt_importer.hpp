@@ -41,12 +41,6 @@ struct TextureEntry {
   SourceRange at;
 };
 
-// A reflectance parameter as a material holds it: value × texture (if any).
-struct TexturedReflectance {
-  Reflectance value{};
-  int texture = -1;
-};
-
 struct AreaLight {
   Rgb radiance{};
   bool two_sided = false;
@@ -75,7 +69,7 @@ struct ShapeSource {
   std::vector<uint32_t> indices;
   std::vector<TexCoord> uvs;         // "uv"/"st": empty or one per position
   double radius = 0;                 // sphere
-  Matrix object_to_pbrt_world{1.0};
+  Matrix pbrt_world_from_object{1.0};
   bool reverse_orientation = false;
   int material = -1;
   std::optional<AreaLight> emission;
@@ -108,9 +102,9 @@ class Importer {
   int material_index(const MaterialInstance& material, ParamSet& shape_params);
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
-  void make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
-                    bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at);
-  static void make_glass(Material& material, Reflectance kr, Reflectance kt, double ior);
+  MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
+                        const ParamSet& params, SourceRange at);
+  static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
   std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<double> float_param(ParamSet& params, const char* name);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
@@ -127,7 +121,7 @@ class Importer {
   void area_light_source(const Directive& d);
   void shape(const Directive& d);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
-  void place(const ShapeSource& source, const Matrix& pbrt_world_to_world);
+  void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
   void object_instance(const Directive& d);
 
   void warn(SourceRange at, std::string message, std::string hint = {});

@@ -48,6 +48,11 @@ bool reads_material_params(const std::string& type, const ParamSet& shape) {
 
 bool black(const TexturedReflectance& r) { return sg::is_black(r.value); }
 
+MaterialModel lambert_or_black(const TexturedReflectance& kd) {
+  if (black(kd)) return BlackMaterial{};  // absorbs, as pbrt-v3's black matte does
+  return LambertMaterial{kd};
+}
+
 std::string lower_extension(const std::string& file) {
   std::string extension = std::filesystem::path(file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -162,26 +167,22 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   params.reject("bumpmap", "bump mapping");
   if (type == "matte") {
     params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
-    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
-    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
-    material.diffuse = kd.value;
-    material.diffuse_texture = kd.texture;
+    material.model = lambert_or_black(textured_reflectance(params, "Kd", 0.5, true));
   } else if (type == "mirror") {
-    material.type = Material::Type::mirror;
-    material.specular = reflectance(params, "Kr", 0.9);
-    if (sg::is_black(material.specular)) material.type = Material::Type::black;
+    Reflectance kr = reflectance(params, "Kr", 0.9);
+    if (!sg::is_black(kr)) material.model = MirrorMaterial{kr};
   } else if (type == "plastic") {
     TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
     Reflectance ks = reflectance(params, "Ks", 0.25);
     bool remap = params.one_bool("remaproughness", true);
     // pbrt-v3's plastic: FresnelDielectric(1.5, 1), the indices swapped (mmp/pbrt-v3#210).
-    make_plastic(material, kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
+    material.model = plastic(kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
   } else if (type == "glass") {
     Reflectance kr = reflectance(params, "Kr", 1), kt = reflectance(params, "Kt", 1);
     params.reject("uroughness", "rough glass (only 0: smooth glass)", 0.0);
     params.reject("vroughness", "rough glass (only 0: smooth glass)", 0.0);
     params.one_bool("remaproughness", true);  // no roughness to remap
-    make_glass(material, kr, kt, index_of_refraction(params, at));
+    material.model = glass(kr, kt, index_of_refraction(params, at));
   }
   return material;
 }
@@ -215,27 +216,18 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
     fail(at, params.context() + " with both a diffuse or glossy part (Kd, Ks) and a specular one (Kr, Kt) is not supported",
          "no material here sums them; uber renders as matte, plastic or glass when one of the two parts is black");
   if (specular) {
-    make_glass(material, kr, kt, eta);
+    material.model = glass(kr, kt, eta);
   } else {
     double alpha = std::max(1e-3, remap ? roughness_to_alpha(u) : u);
-    make_plastic(material, kd, ks, alpha, eta, false, params, at);
+    material.model = plastic(kd, ks, alpha, eta, false, params, at);
   }
   return material;
 }
 
-void Importer::make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
-                            bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
-  material.diffuse = kd.value;
-  material.diffuse_texture = kd.texture;
-  if (sg::is_black(ks)) {  // the Lambertian lobe alone, as pbrt-v3 builds it
-    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
-    return;
-  }
-  material.type = Material::Type::plastic;
-  material.specular = ks;
-  material.alpha = static_cast<Real>(alpha);
-  material.ior = static_cast<Real>(ior);
-  material.pbrt_v3_plastic_fresnel = pbrt_v3_fresnel;
+MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
+                               bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
+  if (sg::is_black(ks)) return lambert_or_black(kd);  // the Lambertian lobe alone, as pbrt-v3 builds it
+  PlasticMaterial plastic{kd, ks, static_cast<Real>(alpha), static_cast<Real>(ior), pbrt_v3_fresnel};
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.texture >= 0) largest *= sg::raw(result_.scene.textures[kd.texture].mipmap->maximum());
   sg::vec3_rep sum = largest + sg::raw(ks);
@@ -243,14 +235,13 @@ void Importer::make_plastic(Material& material, const TexturedReflectance& kd, R
     fail(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
                  format_number(std::max({sum.x, sum.y, sum.z})) + ")",
          "the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks");
-  if (!std::isfinite(material.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
+  if (!std::isfinite(plastic.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
+  return plastic;
 }
 
-void Importer::make_glass(Material& material, Reflectance kr, Reflectance kt, double ior) {
-  material.type = sg::is_black(kr) && sg::is_black(kt) ? Material::Type::black : Material::Type::glass;
-  material.specular = kr;
-  material.transmission = kt;
-  material.ior = static_cast<Real>(ior);
+MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {
+  if (sg::is_black(kr) && sg::is_black(kt)) return BlackMaterial{};
+  return GlassMaterial{kr, kt, static_cast<Real>(ior)};
 }
 
 void Importer::material(const Directive& d, bool named) {
@@ -278,7 +269,7 @@ void Importer::material(const Directive& d, bool named) {
   }
   Material converted = convert_material(type, params, instance->at);
   report_unused(params);
-  if (converted.type == Material::Type::black) {
+  if (std::holds_alternative<BlackMaterial>(converted.model)) {
     instance->index = -1;  // absorbs everything, as pbrt-v3's black matte does
   } else {
     instance->index = static_cast<int>(result_.scene.materials.size());
@@ -297,7 +288,7 @@ int Importer::material_index(const MaterialInstance& material, ParamSet& shape_p
   shape_params.set_fallback(&material_params);
   Material converted = convert_material(material.type, shape_params, material.at);
   shape_params.set_fallback(nullptr);
-  if (converted.type == Material::Type::black) return -1;
+  if (std::holds_alternative<BlackMaterial>(converted.model)) return -1;
   result_.scene.materials.push_back(converted);
   return static_cast<int>(result_.scene.materials.size()) - 1;
 }

@@ -184,7 +184,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   if (!is_similarity(m, 1e-6))
     fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
          "it would distort the map; rotate it only");
-  light.render_from_light = orthogonal_map<LightToWorld>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  light.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
   result_.scene.environment = std::move(light);
   environment_at_ = d.string_ranges[0];
 }
@@ -218,7 +218,7 @@ void Importer::shape(const Directive& d) {
   ParamSet params(d.params, "Shape \"" + type + "\"");
   ShapeSource source;
   source.at = d.string_ranges[0];
-  source.object_to_pbrt_world = state_.ctm;
+  source.pbrt_world_from_object = state_.ctm;
   source.reverse_orientation = state_.reverse_orientation;
   auto reject_alpha = [&] {
     for (const char* name : {"alpha", "shadowalpha"}) {
@@ -325,7 +325,7 @@ void Importer::mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& 
 // Into the Scene, in world metres: meshes baked (their triangles wound so
 // that an emitter emits on pbrt-v3's side), spheres as centre and radius.
 void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_world) {
-  Matrix world_from_object = world_from_pbrt_world * source.object_to_pbrt_world;
+  Matrix world_from_object = world_from_pbrt_world * source.pbrt_world_from_object;
   Shape shape;
   shape.material = source.material;
   if (source.emission) {
@@ -335,7 +335,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
-  const bool glass = shape.material >= 0 && result_.scene.materials[shape.material].type == Material::Type::glass;
+  const bool glass = shape.material >= 0 && std::holds_alternative<GlassMaterial>(result_.scene.materials[shape.material].model);
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
       fail(source.at, "a sphere under a transform that scales unevenly (an ellipsoid) is not supported");
@@ -350,7 +350,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     shape.type = Shape::Type::sphere;
     const double scale = glm::length(glm::dmat3(world_from_object)[0]);
     const glm::dmat3 rotation = glm::dmat3(world_from_object) / scale;
-    shape.render_from_object = orthogonal_map<ObjectToWorld>(rotation);
+    shape.render_from_object = orthogonal_map<RenderFromObject>(rotation);
     glm::dvec3 centre = glm::transpose(rotation) * glm::dvec3(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at)));
     shape.center = sg::from_raw<PointObject>(sg::vec3_rep(centre));
     Real radius = static_cast<Real>(source.radius * scale);
@@ -370,15 +370,15 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     // outside there (our glass: on the winding's side): the winding's
     // (right-handed in its world), flipped by ReverseOrientation and by a
     // mirroring object transform; with vertex normals, the side they point to.
-    bool mirrored_object = determinant3(source.object_to_pbrt_world) < 0;
+    bool mirrored_object = determinant3(source.pbrt_world_from_object) < 0;
     bool mirrored_world = determinant3(world_from_pbrt_world) < 0;
     bool flip_all = mirrored_world != (source.reverse_orientation != mirrored_object);
-    glm::dmat3 normal_to_world = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
+    glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
     for (size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
       bool flip = flip_all;
       if (!source.normals.empty()) {
         const uint32_t* v = &shape.indices[t];
-        glm::dvec3 n = normal_to_world * glm::dvec3(source.normals[v[0]] + source.normals[v[1]] + source.normals[v[2]]);
+        glm::dvec3 n = world_from_object_normals * glm::dvec3(source.normals[v[0]] + source.normals[v[1]] + source.normals[v[2]]);
         glm::dvec3 a(sg::raw(shape.positions[v[0]])), b(sg::raw(shape.positions[v[1]])), c(sg::raw(shape.positions[v[2]]));
         flip = glm::dot(glm::cross(b - a, c - a), n) < 0;
       }
