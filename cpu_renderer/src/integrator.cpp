@@ -46,6 +46,14 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
         continue;
       }
     }
+    if (light->directional) {
+      // A distant light's irradiance on the surface: its beam's, times the
+      // beam's cross-section per unit of surface (cos θ, a ratio of areas here,
+      // not a projected solid angle: hence the explicit cast).
+      Real cross_section = sg::dimension_cast<dim::dimensionless>(sg::cos_theta(wi));
+      sum += f * light->irradiance * (cross_section / (light->probability * count));
+      continue;
+    }
     // A point light's irradiance: its intensity times the solid angle a unit of
     // receiving area subtends from it (cos θ / r², the receiver's cosine).
     sum += f * light->intensity * solid_angle_per_area(sg::cos_theta(wi), light->distance) / (light->probability * count);

@@ -51,6 +51,15 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     auto cone = (2 * sg::pi * (1 - Real(0.5) * (cos_start + cos_total))) * units::steradian;
     powers.push_back(sg::raw(sg::average(spot.intensity) * cone));
   }
+  if (scene.environment || !scene.distant_lights.empty()) scene_bounding_sphere(scene, scene_center_, scene_radius_);
+  for (const DistantLight& distant : scene.distant_lights) {
+    Light light;
+    light.type = Light::Type::distant;
+    light.distant = distant;
+    lights_.push_back(light);
+    // pbrt-v3's DistantLight::Power: the flux through a disc across the scene's bounding sphere.
+    powers.push_back(sg::raw(sg::average(distant.irradiance) * (sg::pi * scene_radius_ * scene_radius_)));
+  }
   for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (!shape.emission) continue;
@@ -101,7 +110,6 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     light.type = Light::Type::environment;
     environment_index_ = static_cast<uint32_t>(lights_.size());
     lights_.push_back(light);
-    scene_bounding_sphere(scene, scene_center_, scene_radius_);
     Length radius = scene_radius_;
     auto flux = sg::average(environment_->average_radiance()) * (4 * sg::pi * radius * radius) *
                 (sg::pi * units::steradian * units::proj);
@@ -220,6 +228,18 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
     return sample;
   }
+  if (light.type == Light::Type::distant) {
+    // The shadow ray runs past the scene's bounding sphere, as the environment's.
+    sample.wi = light.distant.direction;
+    sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
+    sample.position = reference + sample.wi * sample.distance;
+    sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
+    sample.irradiance = light.distant.irradiance;
+    sample.directional = true;
+    sample.probability = probability;
+    sample.delta = true;
+    return sample;
+  }
   if (light.type == Light::Type::point || light.type == Light::Type::spot) {
     VectorWorld toward = light.position - reference;
     sample.distance = sg::length(toward);
@@ -294,20 +314,28 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
     photon.flux = intensity / (pdf * probability);
     return photon;
   }
-  if (light.type == Light::Type::environment) {
+  if (light.type == Light::Type::environment || light.type == Light::Type::distant) {
     // Towards the scene along -ω, from a disc of the bounding sphere's radius
-    // perpendicular to ω: the flux through it is L · πR² (head on, cos = 1) per
-    // unit of solid angle.
-    std::optional<Environment::Sample> sky = environment_->sample(u1, u2);
-    if (!sky) return std::nullopt;
-    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(sky->wi));
+    // perpendicular to ω: the flux through it is E · πR², the environment's
+    // E = L (head on, cos = 1) per unit of the solid angle ω was drawn from.
+    std::optional<Environment::Sample> sky;
+    if (light.type == Light::Type::environment) {
+      sky = environment_->sample(u1, u2);
+      if (!sky) return std::nullopt;
+    }
+    DirectionWorld towards_light = sky ? sky->wi : light.distant.direction;
+    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(towards_light));
     Real x, y;
     sample_concentric_disk(u3, u4, x, y);
     vector<Shading> across(x * scene_radius_, y * scene_radius_, scene_radius_);
     photon.origin = scene_center_ + disc.from_local(across);
     photon.origin_error = kernel::abs(to_kernel(photon.origin)) * kernel::gamma(4);
-    photon.direction = -sky->wi;
+    photon.direction = -towards_light;
     quantity<dim::area> disc_area = kPi * scene_radius_ * scene_radius_;
+    if (!sky) {
+      photon.flux = light.distant.irradiance * disc_area / probability;
+      return photon;
+    }
     Proj head_on = Real(1) * units::proj;
     photon.flux = sky->radiance * head_on * disc_area / (sky->pdf * probability);
     return photon;

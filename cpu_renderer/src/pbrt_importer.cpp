@@ -3,8 +3,10 @@
 // materials, shapes and lights are in pbrt_world.cpp.
 #include "pbrt_importer.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include <safegi/diagnostics/render.hpp>
 
@@ -83,6 +85,37 @@ constexpr DirectiveRule kRules[] = {
     {"Sampler", Where::options},           {"Integrator", Where::options},        {"PixelFilter", Where::options},
     {"Accelerator", Where::options},       {"WorldBegin", Where::options},
 };
+
+// pbrt-v3's integrators that we do not have, and the nearest one we do: the
+// same image in expectation (all are unbiased or consistent estimators of the
+// same light transport, participating media aside), with other noise.
+struct IntegratorSubstitute {
+  std::string_view pbrt;
+  IntegratorType ours;
+  std::string_view ours_name;
+  std::string_view why;
+  std::array<std::string_view, 6> noise_only;  // its parameters that change the noise only (empty names pad)
+};
+constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
+    {"bdpt", IntegratorType::path, "path",
+     "the path tracer converges to the same image, with more noise where light arrives through small or specular paths",
+     {"lightsamplestrategy", "visualizestrategies", "visualizeweights"}},
+    {"mlt", IntegratorType::path, "path",
+     "the path tracer converges to the same image; Metropolis sampling only spreads its noise differently",
+     {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
+    {"volpath", IntegratorType::path, "path",
+     "without participating media (not supported here) pbrt-v3's volpath is its path tracer",
+     {"rrthreshold", "lightsamplestrategy"}},
+    {"sppm", IntegratorType::photon, "photon",
+     "the photon integrator renders the caustics SPPM is chosen for, from a photon map of its own fixed radius",
+     {"numiterations", "photonsperiteration", "imagewritefrequency", "radius", "seed"}},
+};
+
+const IntegratorSubstitute* substitute_for(const std::string& type) {
+  for (const IntegratorSubstitute& substitute : kIntegratorSubstitutes)
+    if (substitute.pbrt == type) return &substitute;
+  return nullptr;
+}
 
 }  // namespace
 
@@ -307,9 +340,19 @@ void Importer::integrator(const Directive& d) {
     // Both are direct lighting plus perfectly specular chains up to maxdepth.
     settings.integrator = IntegratorType::direct;
     if (type == "directlighting") params.one_string("strategy", "all");  // noise only
+  } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {
+    settings.integrator = substitute->ours;
+    for (std::string_view name : substitute->noise_only) {
+      if (name.empty()) break;
+      params.find(name, {ParamType::integer, ParamType::floating, ParamType::boolean, ParamType::string});
+    }
+    warn(d.string_ranges[0],
+         "integrator \"" + type + "\" is not implemented: rendering with \"" + std::string(substitute->ours_name) + "\"",
+         std::string(substitute->why));
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
-         "supported: \"path\", \"directlighting\" (and \"whitted\", rendered as direct lighting)");
+         "supported: \"path\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", \"mlt\", "
+         "\"volpath\" (as path) and \"sppm\" (as photon)");
   }
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");

@@ -30,6 +30,9 @@ struct MaterialInstance {
   std::vector<Param> params;
   SourceRange at;                // the directive's type name
   mutable int index = -2;        // its Scene material without overrides; -2: not made yet
+  // What is wrong with it, reported only when a shape uses it: pbrt-v3 makes a
+  // material for its shapes, so one that is overridden before any shape is harmless.
+  std::optional<Diagnostic> error;
 };
 
 // A texture as the Scene can hold it: a value times, optionally, an image
@@ -39,6 +42,7 @@ struct TextureEntry {
   Rgb value{1, 1, 1};         // a constant's value, or the factor on `image`
   int image = -1;             // index into Scene::textures; -1: a constant
   SourceRange at;
+  std::optional<Diagnostic> error;  // as MaterialInstance::error: reported when a used material reads it
 };
 
 struct AreaLight {
@@ -76,6 +80,12 @@ struct ShapeSource {
   SourceRange at;
 };
 
+// pbrt-v3's quadrics as triangle meshes in object space (pbrt_quadrics.cpp):
+// "disk", "cylinder", "cone", "paraboloid", "hyperboloid" (false for any other
+// type), and a sphere cut by zmin, zmax or phimax (false for a whole one).
+bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+bool partial_sphere_mesh(double radius, ParamSet& params, SourceRange at, ShapeSource& source);
+
 class Importer {
  public:
   Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory);
@@ -99,6 +109,7 @@ class Importer {
 
   // Materials and textures (pbrt_materials.cpp).
   void material(const Directive& d, bool named);
+  void make_material(MaterialInstance& instance, ParamSet& params);
   int material_index(const MaterialInstance& material, ParamSet& shape_params);
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
@@ -112,12 +123,14 @@ class Importer {
   double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
   double index_of_refraction(ParamSet& params, SourceRange at);
   void texture(const Directive& d);
+  TextureEntry convert_texture(const Directive& d, bool spectrum);
   int image_texture(const std::string& name, ParamSet& params, SourceRange at);
   Image read_image(const Param& filename);
 
   // World block (pbrt_world.cpp).
   void light_source(const Directive& d);
   void infinite_light(const Directive& d, ParamSet& params);
+  void distant_light(const Directive& d, ParamSet& params);
   void area_light_source(const Directive& d);
   void shape(const Directive& d);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);

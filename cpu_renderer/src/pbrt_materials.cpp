@@ -48,6 +48,12 @@ bool reads_material_params(const std::string& type, const ParamSet& shape) {
 
 bool black(const TexturedReflectance& r) { return sg::is_black(r.value); }
 
+// A texture a material reads: its deferred error is reported now.
+const TextureEntry& usable(const TextureEntry& texture) {
+  if (texture.error) throw PbrtError(*texture.error);
+  return texture;
+}
+
 MaterialModel lambert_or_black(const TexturedReflectance& kd) {
   if (black(kd)) return BlackMaterial{};  // absorbs, as pbrt-v3's black matte does
   return LambertMaterial{kd};
@@ -89,7 +95,7 @@ std::optional<TextureEntry> Importer::spectrum_or_texture(ParamSet& params, cons
   if (found == state_.spectrum_textures->end())
     fail(value->param->values, "no spectrum texture named \"" + value->texture + "\"",
          "Texture \"" + value->texture + "\" \"spectrum\" ... defines one");
-  return found->second;
+  return usable(found->second);
 }
 
 std::optional<double> Importer::float_param(ParamSet& params, const char* name) {
@@ -104,7 +110,7 @@ std::optional<double> Importer::float_param(ParamSet& params, const char* name) 
   if (found == state_.float_textures->end())
     fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
          "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
-  return found->second.value[0];  // float textures are constants (image ones are refused at their definition)
+  return usable(found->second).value[0];  // float textures are constants (image ones are refused at their definition)
 }
 
 TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image) {
@@ -231,10 +237,10 @@ MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, d
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.texture >= 0) largest *= sg::raw(result_.scene.textures[kd.texture].mipmap->maximum());
   sg::vec3_rep sum = largest + sg::raw(ks);
-  if (std::max({sum.x, sum.y, sum.z}) > 1)
-    fail(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
-                 format_number(std::max({sum.x, sum.y, sum.z})) + ")",
-         "the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks");
+  if (std::max({sum.x, sum.y, sum.z}) > 1)  // pbrt-v3 renders it as it is (veach-mis has Kd 0.13 + Ks 1): so do we
+    warn(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
+                 format_number(std::max({sum.x, sum.y, sum.z})) + "): the surface can reflect more light than it receives",
+         "rendered as pbrt-v3 renders it; lower Kd or Ks for a surface that conserves energy");
   if (!std::isfinite(plastic.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
   return plastic;
 }
@@ -258,22 +264,10 @@ void Importer::material(const Directive& d, bool named) {
     instance->type = d.strings[0];
     instance->at = d.string_ranges[0];
   }
-  const std::string& type = instance->type;
-  bool supported = false;
-  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
-  if (!supported) {
-    if (type.empty() || type == "none")
-      fail(instance->at, "an invisible interface material (\"" + type + "\") is not supported",
-           "it only bounds participating media, which are not supported either");
-    fail(instance->at, "material \"" + type + "\" is not supported", kSupportedMaterials);
-  }
-  Material converted = convert_material(type, params, instance->at);
-  report_unused(params);
-  if (std::holds_alternative<BlackMaterial>(converted.model)) {
-    instance->index = -1;  // absorbs everything, as pbrt-v3's black matte does
-  } else {
-    instance->index = static_cast<int>(result_.scene.materials.size());
-    result_.scene.materials.push_back(converted);
+  try {
+    make_material(*instance, params);
+  } catch (const PbrtError& error) {
+    instance->error = error.diagnostic();
   }
   if (named)
     writable(state_.named_materials)[d.strings[0]] = instance;
@@ -281,7 +275,28 @@ void Importer::material(const Directive& d, bool named) {
     state_.material = instance;
 }
 
+void Importer::make_material(MaterialInstance& instance, ParamSet& params) {
+  const std::string& type = instance.type;
+  bool supported = false;
+  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
+  if (!supported) {
+    if (type.empty() || type == "none")
+      fail(instance.at, "an invisible interface material (\"" + type + "\") is not supported",
+           "it only bounds participating media, which are not supported either");
+    fail(instance.at, "material \"" + type + "\" is not supported", kSupportedMaterials);
+  }
+  Material converted = convert_material(type, params, instance.at);
+  report_unused(params);
+  if (std::holds_alternative<BlackMaterial>(converted.model)) {
+    instance.index = -1;  // absorbs everything, as pbrt-v3's black matte does
+  } else {
+    instance.index = static_cast<int>(result_.scene.materials.size());
+    result_.scene.materials.push_back(converted);
+  }
+}
+
 int Importer::material_index(const MaterialInstance& material, ParamSet& shape_params) {
+  if (material.error) throw PbrtError(*material.error);
   if (material.index != -2 && !reads_material_params(material.type, shape_params)) return material.index;
   // The shape's own values win over the material's.
   ParamSet material_params(material.params, "the shape's material \"" + material.type + "\"");
@@ -297,10 +312,23 @@ int Importer::material_index(const MaterialInstance& material, ParamSet& shape_p
 // Textures
 
 void Importer::texture(const Directive& d) {
-  const std::string &name = d.strings[0], &type = d.strings[1], &texture_class = d.strings[2];
+  const std::string &name = d.strings[0], &type = d.strings[1];
   bool spectrum = type == "spectrum" || type == "color";
   if (!spectrum && type != "float")
     fail(d.string_ranges[1], "texture type \"" + type + "\" is unknown", "pbrt-v3 has \"spectrum\" (or \"color\") and \"float\"");
+  TextureEntry entry;
+  try {
+    entry = convert_texture(d, spectrum);
+  } catch (const PbrtError& error) {
+    entry.texture_class = d.strings[2];
+    entry.at = d.string_ranges[2];
+    entry.error = error.diagnostic();
+  }
+  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
+}
+
+TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
+  const std::string &name = d.strings[0], &texture_class = d.strings[2];
   ParamSet params(d.params, "Texture \"" + name + "\"");
   TextureEntry entry;
   entry.texture_class = texture_class;
@@ -340,7 +368,7 @@ void Importer::texture(const Directive& d) {
     fail(entry.at, "texture \"" + texture_class + "\" is not supported", kSupportedTextures);
   }
   report_unused(params);
-  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
+  return entry;
 }
 
 // pbrt-v3's CreateImageSpectrumTexture: a (u, v) mapping, a wrap mode, a

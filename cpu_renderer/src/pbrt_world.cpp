@@ -144,10 +144,51 @@ void Importer::light_source(const Directive& d) {
     }
   } else if (type == "infinite" || type == "exinfinite") {
     infinite_light(d, params);
+  } else if (type == "distant") {
+    distant_light(d, params);
   } else {
-    fail(d.string_ranges[0], "light \"" + type + "\" is not supported", "supported: \"point\", \"spot\", \"infinite\"");
+    fail(d.string_ranges[0], "light \"" + type + "\" is not supported",
+         "supported: \"point\", \"spot\", \"distant\", \"infinite\"");
   }
   report_unused(params);
+}
+
+namespace {
+
+// A distant or infinite light's "L" × "scale" (each 1 by default), none negative.
+Rgb scaled_output(ParamSet& params) {
+  Rgb output{1, 1, 1};
+  for (const char* name : {"L", "scale"})
+    if (std::optional<SpectrumValue> value = params.spectrum(name, false))
+      for (int c = 0; c < 3; ++c) {
+        if (!(value->rgb[c] >= 0)) params.fail_at(*value->param, "light output must not be negative");
+        output[c] *= value->rgb[c];
+      }
+  return output;
+}
+
+}  // namespace
+
+// pbrt-v3's DistantLight: irradiance L × scale on a surface facing it (read
+// as W/m², which keeps pbrt's pixel values), arriving from the direction
+// from − to under the transform at the directive.
+void Importer::distant_light(const Directive& d, ParamSet& params) {
+  Rgb irradiance = scaled_output(params);
+  Triple from = params.one_point("from").value_or(Triple{0, 0, 0}), to = params.one_point("to").value_or(Triple{0, 0, 1});
+  glm::dvec3 towards(from[0] - to[0], from[1] - to[1], from[2] - to[2]);
+  if (!(glm::length(towards) > 0)) fail(d.range, "the distant light's \"from\" and \"to\" coincide");
+  // As pbrt-v3 maps it: a vector through the transform (LightToWorld(w)).
+  glm::dvec3 direction = glm::dmat3(world_from_pbrt_world_ * state_.ctm) * towards;
+  if (!(glm::length(direction) > 0) || !std::isfinite(glm::length(direction)))
+    fail(d.range, "the distant light's direction is not finite under its transform");
+  DistantLight light;
+  light.direction = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(sg::vec3_rep(glm::normalize(direction))));
+  light.irradiance = sg::from_raw<spectrum<dim::irradiance>>(
+      sg::vec3_rep(static_cast<Real>(irradiance[0]), static_cast<Real>(irradiance[1]), static_cast<Real>(irradiance[2])));
+  sg::vec3_rep rgb = sg::raw(light.irradiance);
+  if (!std::isfinite(rgb.x) || !std::isfinite(rgb.y) || !std::isfinite(rgb.z))
+    fail(d.range, std::string("the distant light's irradiance is out of ") + kRealName + " range");
+  result_.scene.distant_lights.push_back(light);
 }
 
 // pbrt-v3's InfiniteAreaLight: L × scale, times the lat-long map's texels
@@ -160,13 +201,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
     fail(d.string_ranges[0], "a second infinite light",
          "the renderer has one environment light per scene (the first is at line " +
              std::to_string(environment_at_->begin.line) + ")");
-  Rgb radiance{1, 1, 1};
-  for (const char* name : {"L", "scale"})
-    if (std::optional<SpectrumValue> value = params.spectrum(name, false))
-      for (int c = 0; c < 3; ++c) {
-        if (!(value->rgb[c] >= 0)) params.fail_at(*value->param, "light output must not be negative");
-        radiance[c] *= value->rgb[c];
-      }
+  Rgb radiance = scaled_output(params);
   EnvironmentLight light;
   light.radiance = sg::from_raw<Radiance>(sg::vec3_rep(static_cast<Real>(radiance[0]), static_cast<Real>(radiance[1]),
                                                       static_cast<Real>(radiance[2])));
@@ -278,15 +313,20 @@ void Importer::shape(const Directive& d) {
     params.one_float("edgelength", 1);
     reject_alpha();
   } else if (type == "sphere") {
-    source.kind = ShapeSource::Kind::sphere;
-    source.radius = params.one_float("radius", 1);
-    if (!(source.radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
-    params.reject("zmin", "partial spheres", -source.radius);
-    params.reject("zmax", "partial spheres", source.radius);
-    params.reject("phimax", "partial spheres", 360.0);
+    double radius = params.one_float("radius", 1);
+    if (!(radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
+    if (partial_sphere_mesh(radius, params, d.string_ranges[0], source)) {
+      source.kind = ShapeSource::Kind::mesh;
+    } else {
+      source.kind = ShapeSource::Kind::sphere;
+      source.radius = radius;
+    }
+  } else if (quadric_mesh(type, params, d.string_ranges[0], source)) {
+    source.kind = ShapeSource::Kind::mesh;
   } else {
     fail(d.string_ranges[0], "shape \"" + type + "\" is not supported",
-         "supported: \"trianglemesh\", \"plymesh\", \"sphere\"");
+         "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
+         "\"paraboloid\", \"hyperboloid\"");
   }
   source.material = material_index(*state_.material, params);
   source.emission = state_.area_light;

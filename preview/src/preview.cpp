@@ -274,6 +274,7 @@ struct Preview::Impl {
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->texture >= 0; }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
+    if (!scene.distant_lights.empty()) approximations.push_back("distant lights are not previewed (no light from them)");
   }
 
   // The diffuse reflectance a surface is drawn with: a texture by its mean.

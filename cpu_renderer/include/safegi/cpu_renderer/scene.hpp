@@ -152,6 +152,14 @@ inline Real spot_falloff(const SpotLight& light, Real cos_theta) {
   return (delta * delta) * (delta * delta);
 }
 
+// Light from one direction, as from a sun infinitely far away (pbrt-v3's
+// distant light): `irradiance` on a surface facing it, `irradiance` · cos θ on
+// one tilted by θ, the same everywhere it is not in shadow.
+struct DistantLight {
+  DirectionWorld direction;  // towards the light
+  spectrum<dim::irradiance> irradiance;
+};
+
 // Light from infinitely far away in every direction. Without a map its
 // radiance is constant; with one (lat-long, linear RGB, pbrt's layout) the
 // radiance towards -w is `radiance` times the texel at u = φ/2π, v = θ/π, where
@@ -201,6 +209,7 @@ struct Scene {
   std::vector<Shape> shapes;
   std::vector<PointLight> point_lights;
   std::vector<SpotLight> spot_lights;
+  std::vector<DistantLight> distant_lights;
   std::optional<EnvironmentLight> environment;
 };
 
