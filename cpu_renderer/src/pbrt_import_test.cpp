@@ -213,9 +213,6 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:18: error: \"Kd\" of Material \"matte\" must lie in [0, 1] in every channel\n"
             "Material \"matte\" \"rgb Kd\" [1.5 0 0]\n                 ^~~~~~~~\n"
             "help: above 1 a surface reflects more light than it receives\n");
-  EXPECT_EQ(import_error(world("Scale 1 2 1\nShape \"sphere\"")),
-            "scene.pbrt:3:7: error: a sphere under a transform that scales unevenly (an ellipsoid) is not supported\n"
-            "Shape \"sphere\"\n      ^~~~~~~~\n");
 }
 
 // A mesh's area and its area-weighted winding normal (world space, metres).
@@ -277,6 +274,14 @@ TEST(PbrtImport, QuadricsAreMeshesOfTheirArea) {
   m = measure(shape_of("Shape \"sphere\" \"float phimax\" 90"));
   EXPECT_NEAR(m.area, pi, 1e-3 * m.area);
   EXPECT_EQ(shape_of("Shape \"sphere\" \"float zmax\" 5").type, Shape::Type::sphere);  // clamped: whole
+  // Scaled unevenly, a sphere is an ellipsoid: a prolate spheroid (a = 1, c = 2) has area
+  // 2πa² (1 + c/(a e) asin e), e² = 1 − a²/c².
+  Shape spheroid = shape_of("Scale 1 1 2\nShape \"sphere\"");
+  EXPECT_EQ(spheroid.type, Shape::Type::mesh);
+  const double e = std::sqrt(1 - 1.0 / 4);
+  m = measure(spheroid);
+  EXPECT_NEAR(m.area, 2 * pi * (1 + 2 / e * std::asin(e)), 1e-3 * m.area);
+  EXPECT_GT(m.outward, 0);
 
   // The paraboloid z = h (r/R)²: area π R/(6h²) ((R² + 4h²)^{3/2} − R³).
   m = measure(shape_of("Shape \"paraboloid\" \"float radius\" 1 \"float zmax\" 2"));
@@ -286,6 +291,10 @@ TEST(PbrtImport, QuadricsAreMeshesOfTheirArea) {
   EXPECT_NEAR(m.area, 2 * pi * 3, 2e-4 * m.area);
   EXPECT_NEAR(m.outward, m.area, 2e-4 * m.area);
 
+  EXPECT_EQ(import_error(world("ObjectBegin \"o\"\nShape \"sphere\"\nObjectEnd\nScale 1 2 1\nObjectInstance \"o\"")),
+            "scene.pbrt:3:7: error: a sphere under an object instance's transform that scales unevenly (an ellipsoid) "
+            "is not supported\nShape \"sphere\"\n      ^~~~~~~~\n"
+            "help: scale the sphere itself, inside ObjectBegin, and it becomes a mesh\n");
   EXPECT_EQ(import_error(world("Shape \"disk\" \"float innerradius\" 2")),
             "scene.pbrt:2:7: error: \"float innerradius\" of Shape \"disk\" must lie in [0, radius)\n"
             "Shape \"disk\" \"float innerradius\" 2\n      ^~~~~~\n");

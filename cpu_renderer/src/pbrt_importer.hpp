@@ -82,9 +82,10 @@ struct ShapeSource {
 
 // pbrt-v3's quadrics as triangle meshes in object space (pbrt_quadrics.cpp):
 // "disk", "cylinder", "cone", "paraboloid", "hyperboloid" (false for any other
-// type), and a sphere cut by zmin, zmax or phimax (false for a whole one).
+// type), and a sphere cut by zmin, zmax or phimax (false for a whole one,
+// unless `even_if_whole`: the mesh of an ellipsoid, a sphere scaled unevenly).
 bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
-bool partial_sphere_mesh(double radius, ParamSet& params, SourceRange at, ShapeSource& source);
+bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRange at, ShapeSource& source);
 
 class Importer {
  public:

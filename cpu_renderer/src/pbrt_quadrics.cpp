@@ -116,12 +116,12 @@ bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, Sha
   return true;
 }
 
-bool partial_sphere_mesh(double radius, ParamSet& params, SourceRange at, ShapeSource& source) {
+bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRange at, ShapeSource& source) {
   double z0 = params.one_float("zmin", -radius), z1 = params.one_float("zmax", radius);
   double phi = phi_max(params, at);
   // pbrt-v3's clamping, and its v: 0 at zmin, 1 at zmax.
   double zmin = std::clamp(std::min(z0, z1), -radius, radius), zmax = std::clamp(std::max(z0, z1), -radius, radius);
-  if (zmin == -radius && zmax == radius && phi == 2 * std::numbers::pi) return false;
+  if (!even_if_whole && zmin == -radius && zmax == radius && phi == 2 * std::numbers::pi) return false;
   double theta_min = std::acos(std::clamp(zmin / radius, -1.0, 1.0)), theta_max = std::acos(std::clamp(zmax / radius, -1.0, 1.0));
   tessellate(
       [&](double u, double v) {

@@ -315,7 +315,9 @@ void Importer::shape(const Directive& d) {
   } else if (type == "sphere") {
     double radius = params.one_float("radius", 1);
     if (!(radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
-    if (partial_sphere_mesh(radius, params, d.string_ranges[0], source)) {
+    // Scaled unevenly, an ellipsoid: a mesh (the renderer's spheres are round).
+    const bool ellipsoid = !is_similarity(state_.ctm, 1e-4);
+    if (sphere_mesh(radius, ellipsoid, params, d.string_ranges[0], source)) {
       source.kind = ShapeSource::Kind::mesh;
     } else {
       source.kind = ShapeSource::Kind::sphere;
@@ -378,7 +380,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   const bool glass = shape.material >= 0 && std::holds_alternative<GlassMaterial>(result_.scene.materials[shape.material].model);
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
-      fail(source.at, "a sphere under a transform that scales unevenly (an ellipsoid) is not supported");
+      fail(source.at, "a sphere under an object instance's transform that scales unevenly (an ellipsoid) is not supported",
+           "scale the sphere itself, inside ObjectBegin, and it becomes a mesh");
     if (shape.emission && source.reverse_orientation && !shape.two_sided_emission)
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
