@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <optional>
+#include <variant>
 
 #include "safegi/cpu_renderer/sampling.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
@@ -35,93 +36,75 @@ class Bsdf {
  public:
   // `diffuse` is the material's diffuse reflectance at the shading point (its
   // texture already applied; referenced, not copied: it must outlive the
-  // Bsdf); `from_inside`: the light leaves towards the side the geometric
-  // normal points away from (glass: the inside, so η is 1/ior there).
+  // Bsdf; ignored by materials without a diffuse part); `from_inside`: the
+  // light leaves towards the side the geometric normal points away from
+  // (glass: the inside, so η is 1/ior there).
   Bsdf(const Material& material, const Reflectance& diffuse, bool from_inside)
-      : material_(material), diffuse_(diffuse), from_inside_(from_inside) {
-    if (material.type == Material::Type::phong || material.type == Material::Type::plastic) {
-      Real d = sg::average(diffuse), s = sg::average(material.specular);
-      specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
-    }
+      : model_(material.model), diffuse_(diffuse), from_inside_(from_inside) {
+    std::visit(
+        [&](const auto& model) {
+          if constexpr (requires { model.diffuse; model.specular; }) {
+            Real d = sg::average(diffuse), s = sg::average(model.specular);
+            specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
+          }
+        },
+        model_);
   }
-  explicit Bsdf(const Material& material) : Bsdf(material, material.diffuse, false) {}
+  // The material's untextured diffuse value (black without a diffuse part).
+  explicit Bsdf(const Material& material) : Bsdf(material, untextured_diffuse(material), false) {}
 
-  bool is_specular() const {
-    return material_.type == Material::Type::mirror || material_.type == Material::Type::glass;
-  }
+  bool is_specular() const { return render::is_specular(model_); }
 
   Brdf eval(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() <= 0) return Brdf{};
-    if (material_.type == Material::Type::lambert) return lambert(diffuse_);  // the common case, before the switch
-    switch (material_.type) {
-      case Material::Type::phong:
-        // Lafortune & Willems' normalisation keeps the lobe's albedo <= specular.
-        return lambert(diffuse_) +
-               material_.specular * ((material_.exponent + 2) * 0.5f * kInversePi * lobe_cosine_power(wo, wi)) /
-                   units::steradian / units::proj;
-      case Material::Type::plastic:
-        return lambert(diffuse_) + microfacet_reflection(wo, wi);
-      default:
-        return Brdf{};
-    }
+    return std::visit(Overloaded{[&](const LambertMaterial&) { return lambert(diffuse_); },
+                                 [&](const PhongMaterial& m) { return eval_lobed(m, wo, wi); },
+                                 [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
+                                 [](const MirrorMaterial&) { return Brdf{}; },
+                                 [](const GlassMaterial&) { return Brdf{}; },
+                                 [](const BlackMaterial&) { return Brdf{}; }},
+                      model_);
   }
 
   PdfSolidAngle pdf(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() <= 0) return sg::zero;
-    if (material_.type == Material::Type::lambert) return cosine_pdf(wi);
-    switch (material_.type) {
-      case Material::Type::phong: {
-        PdfSolidAngle lobe = (material_.exponent + 1) * 0.5f * kInversePi * lobe_cosine_power(wo, wi) / units::steradian;
-        return (1 - specular_probability_) * cosine_pdf(wi) + specular_probability_ * lobe;
-      }
-      case Material::Type::plastic:
-        return (1 - specular_probability_) * cosine_pdf(wi) + specular_probability_ * microfacet_pdf(wo, wi);
-      default:
-        return sg::zero;
-    }
+    return std::visit(Overloaded{[&](const LambertMaterial&) { return cosine_pdf(wi); },
+                                 [&](const PhongMaterial& m) { return pdf_lobed(m, wo, wi); },
+                                 [&](const PlasticMaterial& m) { return pdf_lobed(m, wo, wi); },
+                                 [](const MirrorMaterial&) { return PdfSolidAngle(sg::zero); },
+                                 [](const GlassMaterial&) { return PdfSolidAngle(sg::zero); },
+                                 [](const BlackMaterial&) { return PdfSolidAngle(sg::zero); }},
+                      model_);
   }
 
   std::optional<BsdfSample> sample(DirectionShading wo, Real u_lobe, Real u1, Real u2,
                                    Transport transport = Transport::radiance) const {
+    using Sampled = std::optional<BsdfSample>;
     if (wo.z() <= 0) return std::nullopt;
-    switch (material_.type) {
-      case Material::Type::mirror:
-        return BsdfSample{reflect(wo), material_.specular, sg::zero, true};
-      case Material::Type::glass:
-        return sample_glass(wo, u_lobe, transport);
-      case Material::Type::lambert: {
-        // The general case below, with eval() and pdf() resolved for Lambert (the same arithmetic).
-        DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
-        if (wi.z() <= 0) return std::nullopt;
-        PdfSolidAngle density = cosine_pdf(wi);
-        if (!(density > sg::zero)) return std::nullopt;
-        return BsdfSample{wi, lambert(diffuse_) * sg::cos_theta(wi) / density, density, false};
-      }
-      case Material::Type::phong:
-      case Material::Type::plastic: {
-        DirectionShading wi;
-        if (u_lobe < specular_probability_) {
-          if (material_.type == Material::Type::plastic) {
-            DirectionShading h = TrowbridgeReitz(material_.alpha).sample_normal(u1, u2);
-            wi = sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
-          } else {
-            auto lobe_frame = frame<Shading, PhongLobe>::from_normal(sg::to_normal(reflect(wo)));
-            wi = lobe_frame.from_local(from_kernel<direction<PhongLobe>>(sample_cosine_power(u1, u2, material_.exponent)));
-          }
-        } else {
-          wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
-        }
-        if (wi.z() <= 0) return std::nullopt;
-        PdfSolidAngle density = pdf(wo, wi);
-        if (!(density > sg::zero)) return std::nullopt;
-        return BsdfSample{wi, eval(wo, wi) * sg::cos_theta(wi) / density, density, false};
-      }
-      default:
-        return std::nullopt;
-    }
+    return std::visit(
+        Overloaded{[&](const MirrorMaterial& m) -> Sampled { return BsdfSample{reflect(wo), m.reflectance, sg::zero, true}; },
+                   [&](const GlassMaterial& m) -> Sampled { return sample_glass(m, wo, u_lobe, transport); },
+                   [&](const LambertMaterial&) -> Sampled {
+                     // The lobed case below, with eval() and pdf() resolved for Lambert (the same arithmetic).
+                     DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+                     if (wi.z() <= 0) return std::nullopt;
+                     PdfSolidAngle density = cosine_pdf(wi);
+                     if (!(density > sg::zero)) return std::nullopt;
+                     return BsdfSample{wi, lambert(diffuse_) * sg::cos_theta(wi) / density, density, false};
+                   },
+                   [&](const PhongMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
+                   [&](const PlasticMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
+                   [](const BlackMaterial&) -> Sampled { return std::nullopt; }},
+        model_);
   }
 
  private:
+  static const Reflectance& untextured_diffuse(const Material& material) {
+    static const Reflectance kBlack{};
+    const TexturedReflectance* diffuse = diffuse_of(material);
+    return diffuse ? diffuse->value : kBlack;
+  }
+
   static DirectionShading reflect(DirectionShading w) { return DirectionShading(-w.x(), -w.y(), w.z()); }
 
   static Brdf lambert(Reflectance albedo) { return albedo * kInversePi / units::steradian / units::proj; }
@@ -131,49 +114,86 @@ class Bsdf {
     return kInversePi / units::steradian / units::proj * sg::cos_theta(wi);
   }
 
+  // Lambert plus a glossy lobe (Phong, plastic), the lobe chosen with
+  // specular_probability_ when sampling.
+  template <class Lobed>
+  Brdf eval_lobed(const Lobed& material, DirectionShading wo, DirectionShading wi) const {
+    return lambert(diffuse_) + lobe(material, wo, wi);
+  }
+  template <class Lobed>
+  PdfSolidAngle pdf_lobed(const Lobed& material, DirectionShading wo, DirectionShading wi) const {
+    return (1 - specular_probability_) * cosine_pdf(wi) + specular_probability_ * lobe_pdf(material, wo, wi);
+  }
+  template <class Lobed>
+  std::optional<BsdfSample> sample_lobed(const Lobed& material, DirectionShading wo, Real u_lobe, Real u1,
+                                         Real u2) const {
+    DirectionShading wi = u_lobe < specular_probability_ ? sample_lobe(material, wo, u1, u2)
+                                                         : from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+    if (wi.z() <= 0) return std::nullopt;
+    PdfSolidAngle density = pdf_lobed(material, wo, wi);
+    if (!(density > sg::zero)) return std::nullopt;
+    return BsdfSample{wi, eval_lobed(material, wo, wi) * sg::cos_theta(wi) / density, density, false};
+  }
+
+  // Phong: Lafortune & Willems' normalisation keeps the lobe's albedo <= specular.
+  static Brdf lobe(const PhongMaterial& phong, DirectionShading wo, DirectionShading wi) {
+    return phong.specular * ((phong.exponent + 2) * 0.5f * kInversePi * lobe_cosine_power(phong, wo, wi)) /
+           units::steradian / units::proj;
+  }
+  static PdfSolidAngle lobe_pdf(const PhongMaterial& phong, DirectionShading wo, DirectionShading wi) {
+    return (phong.exponent + 1) * 0.5f * kInversePi * lobe_cosine_power(phong, wo, wi) / units::steradian;
+  }
+  static DirectionShading sample_lobe(const PhongMaterial& phong, DirectionShading wo, Real u1, Real u2) {
+    auto lobe_frame = frame<Shading, PhongLobe>::from_normal(sg::to_normal(reflect(wo)));
+    return lobe_frame.from_local(from_kernel<direction<PhongLobe>>(sample_cosine_power(u1, u2, phong.exponent)));
+  }
   // cos^n of the angle between wi and the mirror direction of wo.
-  Real lobe_cosine_power(DirectionShading wo, DirectionShading wi) const {
+  static Real lobe_cosine_power(const PhongMaterial& phong, DirectionShading wo, DirectionShading wi) {
     Real cos_alpha = sg::dot(reflect(wo), wi);
-    return cos_alpha > 0 ? std::pow(cos_alpha, material_.exponent) : 0.0f;
+    return cos_alpha > 0 ? std::pow(cos_alpha, phong.exponent) : 0.0f;
+  }
+
+  // Plastic: ρs · D(h) G F / (4 cos θo cos θi). The two cosines are the
+  // geometric factors of the microfacet derivation, plain ratios here: the
+  // projected measure is D's, so the result is a BRDF per projected solid angle.
+  static Brdf lobe(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) {
+    DirectionShading h = half_vector(wo, wi);
+    TrowbridgeReitz microfacets(plastic.alpha);
+    Real ratio =
+        coating_fresnel(plastic, sg::dot(wi, h)) * microfacets.masking_shadowing(wo, wi) / (4 * wo.z() * wi.z());
+    return plastic.specular * ratio * microfacets.density(h);
+  }
+  // Normals drawn by D(h) cos θh, reflected: the density per solid angle of wi.
+  static PdfSolidAngle lobe_pdf(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) {
+    DirectionShading h = half_vector(wo, wi);
+    return TrowbridgeReitz(plastic.alpha).normal_pdf(h) * reflection_jacobian(wo, h);
+  }
+  static DirectionShading sample_lobe(const PlasticMaterial& plastic, DirectionShading wo, Real u1, Real u2) {
+    DirectionShading h = TrowbridgeReitz(plastic.alpha).sample_normal(u1, u2);
+    return sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
+  }
+  // The coating's Fresnel factor at the microfacet: from outside (η = ior), or
+  // as pbrt-v3's plastic computes it, with the indices swapped (η = 1/ior).
+  static Real coating_fresnel(const PlasticMaterial& plastic, Real cos_h) {
+    return fresnel_dielectric(cos_h, plastic.pbrt_v3_fresnel ? 1 / plastic.ior : plastic.ior);
   }
 
   // Reflection by the smooth interface or refraction through it, chosen with
   // the Fresnel probability, so that the weight is the tint alone (and 1/η²
   // for radiance crossing into a denser medium).
-  std::optional<BsdfSample> sample_glass(DirectionShading wo, Real u, Transport transport) const {
+  std::optional<BsdfSample> sample_glass(const GlassMaterial& glass, DirectionShading wo, Real u,
+                                         Transport transport) const {
     // The far side's index over the near side's.
-    const Real eta = from_inside_ ? 1 / material_.ior : material_.ior;
+    const Real eta = from_inside_ ? 1 / glass.ior : glass.ior;
     const Real reflected = fresnel_dielectric(wo.z(), eta);
-    if (u < reflected) return BsdfSample{reflect(wo), material_.specular, sg::zero, true};
+    if (u < reflected) return BsdfSample{reflect(wo), glass.reflectance, sg::zero, true};
     std::optional<DirectionShading> wt = refract(wo, eta);
-    if (!wt) return BsdfSample{reflect(wo), material_.specular, sg::zero, true};  // rounding at the critical angle
+    if (!wt) return BsdfSample{reflect(wo), glass.reflectance, sg::zero, true};  // rounding at the critical angle
     const Real compression = transport == Transport::radiance ? 1 / (eta * eta) : Real(1);
-    return BsdfSample{*wt, material_.transmission * compression, sg::zero, true, compression};
+    return BsdfSample{*wt, glass.transmittance * compression, sg::zero, true, compression};
   }
 
-  // The coating's Fresnel factor at the microfacet: from outside (η = ior), or
-  // as pbrt-v3's plastic computes it, with the indices swapped (η = 1/ior).
-  Real coating_fresnel(Real cos_h) const {
-    return fresnel_dielectric(cos_h, material_.pbrt_v3_plastic_fresnel ? 1 / material_.ior : material_.ior);
-  }
-
-  // ρs · D(h) G F / (4 cos θo cos θi). The two cosines are the geometric
-  // factors of the microfacet derivation, plain ratios here: the projected
-  // measure is D's, so the result is a BRDF per projected solid angle.
-  Brdf microfacet_reflection(DirectionShading wo, DirectionShading wi) const {
-    DirectionShading h = half_vector(wo, wi);
-    TrowbridgeReitz microfacets(material_.alpha);
-    Real ratio = coating_fresnel(sg::dot(wi, h)) * microfacets.masking_shadowing(wo, wi) / (4 * wo.z() * wi.z());
-    return material_.specular * ratio * microfacets.density(h);
-  }
-
-  // Normals drawn by D(h) cos θh, reflected: the density per solid angle of wi.
-  PdfSolidAngle microfacet_pdf(DirectionShading wo, DirectionShading wi) const {
-    DirectionShading h = half_vector(wo, wi);
-    return TrowbridgeReitz(material_.alpha).normal_pdf(h) * reflection_jacobian(wo, h);
-  }
-
-  const Material& material_;
+  const MaterialModel& model_;
   const Reflectance& diffuse_;
   bool from_inside_;
   Real specular_probability_ = 0;

@@ -112,15 +112,13 @@ TEST(TrowbridgeReitz, SampledNormalsFollowTheirDensity) {
   }
 }
 
-Material material(Material::Type type) {
-  Material m;
-  m.type = type;
-  m.diffuse = Reflectance(0.5f, 0.4f, 0.3f);
-  m.specular = Reflectance(0.4f);
-  m.exponent = 40;
-  m.alpha = 0.2f;
-  return m;
-}
+// The lobed materials the tests compare, with the same diffuse and specular parts.
+const TexturedReflectance kTestDiffuse{Reflectance(0.5f, 0.4f, 0.3f)};
+const Reflectance kTestSpecular(0.4f);
+Material lambert_material() { return {LambertMaterial{kTestDiffuse}}; }
+Material phong_material() { return {PhongMaterial{kTestDiffuse, kTestSpecular, 40}}; }
+PlasticMaterial plastic_parameters() { return PlasticMaterial{kTestDiffuse, kTestSpecular, 0.2f}; }
+Material plastic_material() { return {plastic_parameters()}; }
 
 struct SampledEstimate {
   double mean_weight, pdf_mismatch;
@@ -144,8 +142,9 @@ SampledEstimate estimate_albedo(const Bsdf& bsdf, DirectionShading wo, int n) {
 }
 
 TEST(Bsdf, SamplingAgreesWithEvaluation) {
-  for (Material::Type type : {Material::Type::lambert, Material::Type::phong, Material::Type::plastic}) {
-    Material m = material(type);
+  const Material materials[] = {lambert_material(), phong_material(), plastic_material()};
+  for (int type = 0; type < 3; ++type) {
+    const Material& m = materials[type];
     Bsdf bsdf(m);
     for (double theta : {0.0, 0.5, 1.0, 1.4}) {
       DirectionShading wo = spherical(theta, 0.4);
@@ -153,11 +152,11 @@ TEST(Bsdf, SamplingAgreesWithEvaluation) {
           [&](DirectionShading wi) { return sg::raw(bsdf.eval(wo, wi)).g * wi.z(); }, 1500, 180);
       double pdf_total = hemisphere_integral([&](DirectionShading wi) { return sg::raw(bsdf.pdf(wo, wi)); }, 1500, 180);
       SampledEstimate sampled = estimate_albedo(bsdf, wo, 100000);
-      EXPECT_NEAR(sampled.mean_weight, albedo, 0.01 * albedo + 2e-3) << static_cast<int>(type) << " at " << theta;
-      EXPECT_LT(sampled.pdf_mismatch, 1e-4) << static_cast<int>(type) << " at " << theta;
-      EXPECT_LE(pdf_total, 1.0 + 5e-3) << static_cast<int>(type) << " at " << theta;
-      EXPECT_LE(albedo, 1.0) << static_cast<int>(type) << " at " << theta;
-      if (type == Material::Type::lambert) {
+      EXPECT_NEAR(sampled.mean_weight, albedo, 0.01 * albedo + 2e-3) << type << " at " << theta;
+      EXPECT_LT(sampled.pdf_mismatch, 1e-4) << type << " at " << theta;
+      EXPECT_LE(pdf_total, 1.0 + 5e-3) << type << " at " << theta;
+      EXPECT_LE(albedo, 1.0) << type << " at " << theta;
+      if (std::holds_alternative<LambertMaterial>(m.model)) {
         EXPECT_NEAR(albedo, 0.4, 1e-3);
         EXPECT_NEAR(pdf_total, 1.0, 1e-3);
       }
@@ -166,9 +165,9 @@ TEST(Bsdf, SamplingAgreesWithEvaluation) {
 }
 
 TEST(Bsdf, PlasticWithoutSpecularIsLambert) {
-  Material plastic = material(Material::Type::plastic);
-  plastic.specular = Reflectance{};
-  Material lambert = material(Material::Type::lambert);
+  PlasticMaterial parameters = plastic_parameters();
+  parameters.specular = Reflectance{};
+  Material plastic{parameters}, lambert = lambert_material();
   Bsdf a(plastic), b(lambert);
   for (double theta : {0.2, 0.9}) {
     DirectionShading wo = spherical(theta, 0.1), wi = spherical(0.7, 2.0);
@@ -182,31 +181,30 @@ TEST(Bsdf, PlasticWithoutSpecularIsLambert) {
 // swapped indices give the same at normal incidence and total reflection
 // beyond 41.8°.
 TEST(Bsdf, PlasticCoatingFresnel) {
-  Material m = material(Material::Type::plastic);
-  m.diffuse = Reflectance{};
+  PlasticMaterial m = plastic_parameters();
+  m.diffuse = TexturedReflectance{};
   m.specular = Reflectance(1.0f);
   m.alpha = 0.02f;
-  auto specular_albedo = [&](const Material& mat, double theta) {
+  auto specular_albedo = [&](const PlasticMaterial& parameters, double theta) {
+    Material mat{parameters};
     Bsdf bsdf(mat);
     DirectionShading wo = spherical(theta, 0.0);
     return estimate_albedo(bsdf, wo, 100000).mean_weight;
   };
   EXPECT_NEAR(specular_albedo(m, 0.01), 0.04, 2e-3);
   EXPECT_NEAR(specular_albedo(m, 0.6), fresnel_dielectric(std::cos(0.6f), 1.5f), 4e-3);
-  m.pbrt_v3_plastic_fresnel = true;
+  m.pbrt_v3_fresnel = true;
   EXPECT_NEAR(specular_albedo(m, 0.01), 0.04, 2e-3);
   EXPECT_GT(specular_albedo(m, 0.9), 0.9);  // beyond the critical angle of 1.5 -> 1: everything
 }
 
 TEST(Bsdf, GlassChoosesByFresnelAndCompressesRadiance) {
-  Material glass;
-  glass.type = Material::Type::glass;
-  glass.specular = Reflectance(1.0f);
-  glass.transmission = Reflectance(1.0f);
-  glass.ior = 1.5f;
+  const GlassMaterial parameters{Reflectance(1.0f), Reflectance(1.0f), 1.5f};
+  const Material glass{parameters};
+  const Reflectance no_diffuse{};
   for (bool from_inside : {false, true}) {
-    const Real eta = from_inside ? 1 / glass.ior : glass.ior;
-    Bsdf bsdf(glass, glass.diffuse, from_inside);
+    const Real eta = from_inside ? 1 / parameters.ior : parameters.ior;
+    Bsdf bsdf(glass, no_diffuse, from_inside);
     EXPECT_TRUE(bsdf.is_specular());
     for (double theta : {0.0, 0.6, 1.2}) {
       DirectionShading wo = spherical(theta, 0.3);

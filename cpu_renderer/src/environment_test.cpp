@@ -41,7 +41,7 @@ EnvironmentLight sunny_sky(bool rotated) {
   light.radiance = Radiance(Real(2) * units::radiance_unit);
   light.map = std::make_shared<MipMap>(std::move(image), TextureWrap::longitude_latitude);
   if (rotated)
-    light.render_from_light = LightToWorld::rotation(Real(0.7) * units::radian, sg::normalize(vector<LightSpace, dim::dimensionless>(1, 2, 3)));
+    light.render_from_light = RenderFromLight::rotation(Real(0.7) * units::radian, sg::normalize(vector<LightSpace, dim::dimensionless>(1, 2, 3)));
   return light;
 }
 

@@ -185,11 +185,11 @@ namespace {
 
 Real uniform_scale(const Affine& m) { return kernel::length(column(m, 0)); }
 
-// Adds a shape in world space (`to_world` given) or in its own object space.
-void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const ObjectToWorld* to_world) {
-  auto place = [&](PointObject p) { return to_world ? to_kernel((*to_world)(p)) : to_kernel(p); };
+// Adds a shape in world space (`render_from_object` given) or in its own object space.
+void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const RenderFromObject* render_from_object) {
+  auto place = [&](PointObject p) { return render_from_object ? to_kernel((*render_from_object)(p)) : to_kernel(p); };
   if (shape.type == Shape::Type::sphere) {
-    Real scale = to_world ? uniform_scale(Affine::from(*to_world)) : 1.0f;
+    Real scale = render_from_object ? uniform_scale(Affine::from(*render_from_object)) : 1.0f;
     set.add_sphere(place(shape.center), sg::raw(shape.radius) * scale, index);
     return;
   }

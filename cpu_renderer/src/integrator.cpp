@@ -46,6 +46,14 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
         continue;
       }
     }
+    if (light->directional) {
+      // A distant light's irradiance on the surface: its beam's, times the
+      // beam's cross-section per unit of surface (cos θ, a ratio of areas here,
+      // not a projected solid angle: hence the explicit cast).
+      Real cross_section = sg::dimension_cast<dim::dimensionless>(sg::cos_theta(wi));
+      sum += f * light->irradiance * (cross_section / (light->probability * count));
+      continue;
+    }
     // A point light's irradiance: its intensity times the solid angle a unit of
     // receiving area subtends from it (cos θ / r², the receiver's cosine).
     sum += f * light->intensity * solid_angle_per_area(sg::cos_theta(wi), light->distance) / (light->probability * count);
@@ -99,11 +107,12 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     const Shape& shape = scene_.shapes[hit->shape];
     if (shape.material < 0) break;
     const Material& material = scene_.materials[shape.material];
-    Reflectance texel;  // the textured diffuse reflectance, when there is one
-    const Reflectance* diffuse = &material.diffuse;
+    Reflectance texel{};  // the textured diffuse reflectance, when there is one (black: no diffuse part)
+    const TexturedReflectance* diffuse_part = diffuse_of(material);
+    const Reflectance* diffuse = diffuse_part ? &diffuse_part->value : &texel;
     if constexpr (textured) {
       travelled += hit->distance;
-      if (material.diffuse_texture >= 0) {
+      if (diffuse_part && diffuse_part->texture >= 0) {
         // The cone's width across the surface, stretched by its tilt (a plain ratio).
         Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
         Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);

@@ -15,7 +15,7 @@ void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radiu
   for (const Shape& shape : scene.shapes) {
     if (shape.type == Shape::Type::sphere) {
       Real3 center = to_kernel(shape.render_from_object(shape.center));
-      Real r = sg::raw(sg::length(shape.render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero))));
+      Real r = sg::raw(placed_radius(shape.render_from_object, shape.radius));
       bounds.extend(center - Real3{r, r, r});
       bounds.extend(center + Real3{r, r, r});
     } else {
@@ -51,31 +51,33 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     auto cone = (2 * sg::pi * (1 - Real(0.5) * (cos_start + cos_total))) * units::steradian;
     powers.push_back(sg::raw(sg::average(spot.intensity) * cone));
   }
+  if (scene.environment || !scene.distant_lights.empty()) scene_bounding_sphere(scene, scene_center_, scene_radius_);
+  for (const DistantLight& distant : scene.distant_lights) {
+    Light light;
+    light.type = Light::Type::distant;
+    light.distant = distant;
+    lights_.push_back(light);
+    // pbrt-v3's DistantLight::Power: the flux through a disc across the scene's bounding sphere.
+    powers.push_back(sg::raw(sg::average(distant.irradiance) * (sg::pi * scene_radius_ * scene_radius_)));
+  }
   for (uint32_t s = 0; s < scene.shapes.size(); ++s) {
     const Shape& shape = scene.shapes[s];
     if (!shape.emission) continue;
     Light light;
     light.radiance = *shape.emission;
     light.two_sided = shape.two_sided_emission;
-    const ObjectToWorld& render_from_object = shape.render_from_object;
+    const RenderFromObject& render_from_object = shape.render_from_object;
     quantity<dim::area> area = sg::zero;
     if (shape.type == Shape::Type::sphere) {
       light.type = Light::Type::sphere;
       light.position = render_from_object(shape.center);
-      light.radius = sg::length(render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero)));
+      light.radius = placed_radius(render_from_object, shape.radius);
       area = 4 * sg::pi * light.radius * light.radius;
     } else {
       light.type = Light::Type::triangles;
       light.first_triangle = static_cast<uint32_t>(triangles_.size());
-      for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-        PointWorld a = render_from_object(shape.positions[shape.indices[i]]);
-        PointWorld b = render_from_object(shape.positions[shape.indices[i + 1]]);
-        PointWorld c = render_from_object(shape.positions[shape.indices[i + 2]]);
-        area += 0.5f * sg::length(sg::cross(b - a, c - a));
-        triangles_.push_back({a, b - a, c - a, sg::raw(area)});
-      }
+      area = append_emitter_triangles(shape, render_from_object, triangles_);
       light.triangle_count = static_cast<uint32_t>(triangles_.size()) - light.first_triangle;
-      for (uint32_t t = 0; t < light.triangle_count; ++t) triangles_[light.first_triangle + t].area_cdf /= sg::raw(area);
     }
     if (!(area > sg::zero)) continue;
     light.pdf_area = 1.0f / area;
@@ -88,16 +90,8 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
       light.object_radius = shape.radius;
       if (light.type == Light::Type::triangles) {
         light.first_triangle = static_cast<uint32_t>(object_triangles_.size());
-        quantity<dim::area> object_area = sg::zero;
-        for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-          PointObject a = shape.positions[shape.indices[i]];
-          PointObject b = shape.positions[shape.indices[i + 1]];
-          PointObject c = shape.positions[shape.indices[i + 2]];
-          object_area += 0.5f * sg::length(sg::cross(b - a, c - a));
-          object_triangles_.push_back({a, b - a, c - a, sg::raw(object_area)});
-        }
-        for (uint32_t t = 0; t < light.triangle_count; ++t)
-          object_triangles_[light.first_triangle + t].area_cdf /= sg::raw(object_area);
+        quantity<dim::area> object_area =
+            append_emitter_triangles(shape, [](PointObject p) { return p; }, object_triangles_);
         light.pdf_area = 1.0f / object_area;
       }
     }
@@ -116,7 +110,6 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     light.type = Light::Type::environment;
     environment_index_ = static_cast<uint32_t>(lights_.size());
     lights_.push_back(light);
-    scene_bounding_sphere(scene, scene_center_, scene_radius_);
     Length radius = scene_radius_;
     auto flux = sg::average(environment_->average_radiance()) * (4 * sg::pi * radius * radius) *
                 (sg::pi * units::steradian * units::proj);
@@ -143,13 +136,10 @@ uint32_t Lights::choose(Real u) const {
 }
 
 template <class Space>
-const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles,
-                                                              const Light& light, Real u) const {
+const EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles,
+                                                      const Light& light, Real u) const {
   const EmitterTriangle<Space>* first = triangles.data() + light.first_triangle;
-  const EmitterTriangle<Space>* last = first + light.triangle_count;
-  const EmitterTriangle<Space>* tri =
-      std::upper_bound(first, last, u, [](Real v, const EmitterTriangle<Space>& t) { return v < t.area_cdf; });
-  return tri == last ? *(last - 1) : *tri;
+  return *choose_emitter_triangle(first, first + light.triangle_count, u);
 }
 
 // The emitter at `time`: a sphere where its centre and radius have moved; a
@@ -157,11 +147,11 @@ const Lights::EmitterTriangle<Space>& Lights::choose_triangle(const std::vector<
 // by the area the motion's pose stretches it to.
 Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const {
   const RigidMotion& motion = motions_[light.motion];
-  ObjectToWorld render_from_object = motion.render_from_object(time);
+  RenderFromObject render_from_object = motion.render_from_object(time);
   SurfacePoint point;
   if (light.type == Light::Type::sphere) {
     PointWorld center = render_from_object(light.object_center);
-    Length radius = sg::length(render_from_object(vector<Object>(light.object_radius, sg::zero, sg::zero)));
+    Length radius = placed_radius(render_from_object, light.object_radius);
     DirectionWorld outward = from_kernel<DirectionWorld>(sample_uniform_sphere(u1, u2));
     point.normal = sg::to_normal(outward);
     VectorWorld offset = outward * radius;
@@ -171,11 +161,10 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
     return point;
   }
   const EmitterTriangle<Object>& tri = choose_triangle(object_triangles_, light, u_triangle);
-  Real root = std::sqrt(u1);
-  Real b1 = 1 - root, b2 = u2 * root;
+  TriangleWeights b = uniform_triangle_weights(u1, u2);
   VectorWorld e1 = render_from_object(tri.e1), e2 = render_from_object(tri.e2);
   PointWorld p0 = render_from_object(tri.p0);
-  VectorWorld along_u = e1 * b1, along_v = e2 * b2;
+  VectorWorld along_u = e1 * b.along_e1, along_v = e2 * b.along_e2;
   point.position = p0 + along_u + along_v;
   // The triangle's error plus the pose's (a 3x4 affine map: γ(3) of the terms).
   point.position_error = (kernel::abs(to_kernel(p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
@@ -210,9 +199,8 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
     position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
   } else {
     const EmitterTriangle<World>& tri = choose_triangle(triangles_, light, u_triangle);
-    Real root = std::sqrt(u1);
-    Real b1 = 1 - root, b2 = u2 * root;  // uniform over the triangle
-    VectorWorld along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+    TriangleWeights b = uniform_triangle_weights(u1, u2);
+    VectorWorld along_u = tri.e1 * b.along_e1, along_v = tri.e2 * b.along_e2;
     position = tri.p0 + along_u + along_v;
     position_error =
         (kernel::abs(to_kernel(tri.p0)) + kernel::abs(to_kernel(along_u)) + kernel::abs(to_kernel(along_v))) *
@@ -238,6 +226,18 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
     sample.position = reference + sample.wi * sample.distance;
     sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
+    return sample;
+  }
+  if (light.type == Light::Type::distant) {
+    // The shadow ray runs past the scene's bounding sphere, as the environment's.
+    sample.wi = light.distant.direction;
+    sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
+    sample.position = reference + sample.wi * sample.distance;
+    sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
+    sample.irradiance = light.distant.irradiance;
+    sample.directional = true;
+    sample.probability = probability;
+    sample.delta = true;
     return sample;
   }
   if (light.type == Light::Type::point || light.type == Light::Type::spot) {
@@ -314,20 +314,28 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
     photon.flux = intensity / (pdf * probability);
     return photon;
   }
-  if (light.type == Light::Type::environment) {
+  if (light.type == Light::Type::environment || light.type == Light::Type::distant) {
     // Towards the scene along -ω, from a disc of the bounding sphere's radius
-    // perpendicular to ω: the flux through it is L · πR² (head on, cos = 1) per
-    // unit of solid angle.
-    std::optional<Environment::Sample> sky = environment_->sample(u1, u2);
-    if (!sky) return std::nullopt;
-    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(sky->wi));
+    // perpendicular to ω: the flux through it is E · πR², the environment's
+    // E = L (head on, cos = 1) per unit of the solid angle ω was drawn from.
+    std::optional<Environment::Sample> sky;
+    if (light.type == Light::Type::environment) {
+      sky = environment_->sample(u1, u2);
+      if (!sky) return std::nullopt;
+    }
+    DirectionWorld towards_light = sky ? sky->wi : light.distant.direction;
+    ShadingFrame disc = ShadingFrame::from_normal(sg::to_normal(towards_light));
     Real x, y;
     sample_concentric_disk(u3, u4, x, y);
     vector<Shading> across(x * scene_radius_, y * scene_radius_, scene_radius_);
     photon.origin = scene_center_ + disc.from_local(across);
     photon.origin_error = kernel::abs(to_kernel(photon.origin)) * kernel::gamma(4);
-    photon.direction = -sky->wi;
+    photon.direction = -towards_light;
     quantity<dim::area> disc_area = kPi * scene_radius_ * scene_radius_;
+    if (!sky) {
+      photon.flux = light.distant.irradiance * disc_area / probability;
+      return photon;
+    }
     Proj head_on = Real(1) * units::proj;
     photon.flux = sky->radiance * head_on * disc_area / (sky->pdf * probability);
     return photon;
@@ -367,8 +375,7 @@ PdfSolidAngle Lights::environment_pdf(DirectionWorld direction) const {
 PdfArea Lights::moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const {
   const RigidMotion& motion = motions_[light.motion];
   if (light.type == Light::Type::sphere) {
-    Length radius =
-        sg::length(motion.render_from_object(time)(vector<Object>(light.object_radius, sg::zero, sg::zero)));
+    Length radius = placed_radius(motion.render_from_object(time), light.object_radius);
     return 1.0f / (4 * sg::pi * radius * radius);
   }
   return light.pdf_area / area_scale(motion.at(sg::raw(time)), to_kernel(hit.normal));

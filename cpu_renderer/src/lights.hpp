@@ -9,6 +9,7 @@
 
 #include "environment.hpp"
 #include "geometry.hpp"
+#include "safegi/cpu_renderer/emitter_triangles.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
 namespace safegi::render {
@@ -20,11 +21,14 @@ struct LightSample {
   Real3 emitter_normal;   // unit normal of an area light; zero for point lights and the environment
   DirectionWorld wi;       // from the shading point towards the light
   Length distance = sg::zero;
-  bool delta = false;      // a point or spot light: no density over directions
+  bool delta = false;      // a point, spot or distant light: no density over directions
   // Point and spot lights: the intensity towards the shading point and the probability
-  // of having chosen this light.
+  // of having chosen this light (also for a distant light).
   Intensity intensity;
   Real probability = 0;
+  // A distant light: its irradiance on a surface facing it (its intensity is zero).
+  bool directional = false;
+  spectrum<dim::irradiance> irradiance;
   // Area lights and the environment: the emitted radiance and the density of
   // this direction, light choice included.
   Radiance radiance;
@@ -73,10 +77,11 @@ class Lights {
 
  private:
   struct Light {
-    enum class Type { point, spot, triangles, sphere, environment } type = Type::point;
+    enum class Type { point, spot, distant, triangles, sphere, environment } type = Type::point;
     PointWorld position;  // point and spot light, sphere centre
     Intensity intensity;  // point and spot light
     SpotLight spot;       // spot light: axis and cone
+    DistantLight distant; // distant light: direction and irradiance
     uint32_t first_triangle = 0, triangle_count = 0;
     Length radius = sg::zero;  // sphere
     PdfArea pdf_area = sg::zero;  // 1 / surface area (of a moving emitter: in object space)
@@ -87,12 +92,6 @@ class Lights {
     int32_t motion = -1;
     PointObject object_center;
     Length object_radius = sg::zero;
-  };
-  template <class Space>
-  struct EmitterTriangle {
-    point<Space> p0;
-    vector<Space> e1, e2;
-    Real area_cdf;  // cumulative area within its light, 1 at its last triangle
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.
@@ -122,7 +121,7 @@ class Lights {
   std::vector<int32_t> light_of_shape_;
   std::optional<Environment> environment_;
   uint32_t environment_index_ = 0;
-  PointWorld scene_center_;  // the bounding sphere of the scene (with an environment)
+  PointWorld scene_center_;  // the bounding sphere of the scene (with an environment or a distant light)
   Length scene_radius_ = sg::zero;
   bool has_area_lights_ = false;  // area lights or the environment: the lights with a density
 };

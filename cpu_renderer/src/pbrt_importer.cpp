@@ -3,8 +3,10 @@
 // materials, shapes and lights are in pbrt_world.cpp.
 #include "pbrt_importer.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include <safegi/diagnostics/render.hpp>
 
@@ -83,6 +85,37 @@ constexpr DirectiveRule kRules[] = {
     {"Sampler", Where::options},           {"Integrator", Where::options},        {"PixelFilter", Where::options},
     {"Accelerator", Where::options},       {"WorldBegin", Where::options},
 };
+
+// pbrt-v3's integrators that we do not have, and the nearest one we do: the
+// same image in expectation (all are unbiased or consistent estimators of the
+// same light transport, participating media aside), with other noise.
+struct IntegratorSubstitute {
+  std::string_view pbrt;
+  IntegratorType ours;
+  std::string_view ours_name;
+  std::string_view why;
+  std::array<std::string_view, 6> noise_only;  // its parameters that change the noise only (empty names pad)
+};
+constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
+    {"bdpt", IntegratorType::path, "path",
+     "the path tracer converges to the same image, with more noise where light arrives through small or specular paths",
+     {"lightsamplestrategy", "visualizestrategies", "visualizeweights"}},
+    {"mlt", IntegratorType::path, "path",
+     "the path tracer converges to the same image; Metropolis sampling only spreads its noise differently",
+     {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
+    {"volpath", IntegratorType::path, "path",
+     "without participating media (not supported here) pbrt-v3's volpath is its path tracer",
+     {"rrthreshold", "lightsamplestrategy"}},
+    {"sppm", IntegratorType::photon, "photon",
+     "the photon integrator renders the caustics SPPM is chosen for, from a photon map of its own fixed radius",
+     {"numiterations", "photonsperiteration", "imagewritefrequency", "radius", "seed"}},
+};
+
+const IntegratorSubstitute* substitute_for(const std::string& type) {
+  for (const IntegratorSubstitute& substitute : kIntegratorSubstitutes)
+    if (substitute.pbrt == type) return &substitute;
+  return nullptr;
+}
 
 }  // namespace
 
@@ -173,8 +206,8 @@ void Importer::transform_directive(const Directive& d) {
       fail(d.arguments, "LookAt: the up vector is parallel to the viewing direction",
            "pbrt-v3 would fall back to the identity transform");
     glm::dvec3 right = glm::normalize(side), new_up = glm::cross(dir, right);
-    Matrix camera_to_world(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
-    next = state_.ctm * glm::inverse(camera_to_world);
+    Matrix world_from_camera(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
+    next = state_.ctm * glm::inverse(world_from_camera);
   } else if (d.name == "Transform") {
     next = from_numbers(n);
   } else if (d.name == "ConcatTransform") {
@@ -307,9 +340,19 @@ void Importer::integrator(const Directive& d) {
     // Both are direct lighting plus perfectly specular chains up to maxdepth.
     settings.integrator = IntegratorType::direct;
     if (type == "directlighting") params.one_string("strategy", "all");  // noise only
+  } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {
+    settings.integrator = substitute->ours;
+    for (std::string_view name : substitute->noise_only) {
+      if (name.empty()) break;
+      params.find(name, {ParamType::integer, ParamType::floating, ParamType::boolean, ParamType::string});
+    }
+    warn(d.string_ranges[0],
+         "integrator \"" + type + "\" is not implemented: rendering with \"" + std::string(substitute->ours_name) + "\"",
+         std::string(substitute->why));
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
-         "supported: \"path\", \"directlighting\" (and \"whitted\", rendered as direct lighting)");
+         "supported: \"path\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", \"mlt\", "
+         "\"volpath\" (as path) and \"sppm\" (as photon)");
   }
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");
@@ -342,8 +385,8 @@ void Importer::finish_camera(SourceRange world_begin) {
   Camera& camera = result_.scene.camera;
   SourceRange at = camera_ ? camera_->range : world_begin;
   if (!invertible(camera_from_world_)) fail(at, "the camera transform is singular");
-  Matrix camera_to_world = glm::inverse(camera_from_world_);
-  glm::dmat3 frame(camera_to_world);
+  Matrix pbrt_world_from_camera = glm::inverse(camera_from_world_);
+  glm::dmat3 frame(pbrt_world_from_camera);
   double sx = glm::length(frame[0]), sy = glm::length(frame[1]), sz = glm::length(frame[2]);
   double tolerance = 1e-6 * sx;
   if (std::fabs(sx - sy) > tolerance || std::fabs(sx - sz) > tolerance ||
@@ -356,7 +399,7 @@ void Importer::finish_camera(SourceRange world_begin) {
   bool mirror = glm::determinant(frame) > 0;
   double unit = options_.metres_per_unit;
   world_from_pbrt_world_ = scale({mirror ? -unit : unit, unit, unit});
-  Matrix world_from_camera = world_from_pbrt_world_ * camera_to_world;
+  Matrix world_from_camera = world_from_pbrt_world_ * pbrt_world_from_camera;
   camera.position = to_world_point(world_from_camera, {0, 0, 0}, at);
   glm::dvec3 forward = glm::normalize(glm::dvec3(world_from_camera[2]));
   glm::dvec3 up = glm::normalize(glm::dvec3(world_from_camera[1]));

@@ -30,6 +30,9 @@ struct MaterialInstance {
   std::vector<Param> params;
   SourceRange at;                // the directive's type name
   mutable int index = -2;        // its Scene material without overrides; -2: not made yet
+  // What is wrong with it, reported only when a shape uses it: pbrt-v3 makes a
+  // material for its shapes, so one that is overridden before any shape is harmless.
+  std::optional<Diagnostic> error;
 };
 
 // A texture as the Scene can hold it: a value times, optionally, an image
@@ -39,12 +42,7 @@ struct TextureEntry {
   Rgb value{1, 1, 1};         // a constant's value, or the factor on `image`
   int image = -1;             // index into Scene::textures; -1: a constant
   SourceRange at;
-};
-
-// A reflectance parameter as a material holds it: value × texture (if any).
-struct TexturedReflectance {
-  Reflectance value{};
-  int texture = -1;
+  std::optional<Diagnostic> error;  // as MaterialInstance::error: reported when a used material reads it
 };
 
 struct AreaLight {
@@ -75,12 +73,19 @@ struct ShapeSource {
   std::vector<uint32_t> indices;
   std::vector<TexCoord> uvs;         // "uv"/"st": empty or one per position
   double radius = 0;                 // sphere
-  Matrix object_to_pbrt_world{1.0};
+  Matrix pbrt_world_from_object{1.0};
   bool reverse_orientation = false;
   int material = -1;
   std::optional<AreaLight> emission;
   SourceRange at;
 };
+
+// pbrt-v3's quadrics as triangle meshes in object space (pbrt_quadrics.cpp):
+// "disk", "cylinder", "cone", "paraboloid", "hyperboloid" (false for any other
+// type), and a sphere cut by zmin, zmax or phimax (false for a whole one,
+// unless `even_if_whole`: the mesh of an ellipsoid, a sphere scaled unevenly).
+bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRange at, ShapeSource& source);
 
 class Importer {
  public:
@@ -105,12 +110,13 @@ class Importer {
 
   // Materials and textures (pbrt_materials.cpp).
   void material(const Directive& d, bool named);
+  void make_material(MaterialInstance& instance, ParamSet& params);
   int material_index(const MaterialInstance& material, ParamSet& shape_params);
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
-  void make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
-                    bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at);
-  static void make_glass(Material& material, Reflectance kr, Reflectance kt, double ior);
+  MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
+                        const ParamSet& params, SourceRange at);
+  static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
   std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<double> float_param(ParamSet& params, const char* name);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
@@ -118,16 +124,18 @@ class Importer {
   double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
   double index_of_refraction(ParamSet& params, SourceRange at);
   void texture(const Directive& d);
+  TextureEntry convert_texture(const Directive& d, bool spectrum);
   int image_texture(const std::string& name, ParamSet& params, SourceRange at);
   Image read_image(const Param& filename);
 
   // World block (pbrt_world.cpp).
   void light_source(const Directive& d);
   void infinite_light(const Directive& d, ParamSet& params);
+  void distant_light(const Directive& d, ParamSet& params);
   void area_light_source(const Directive& d);
   void shape(const Directive& d);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
-  void place(const ShapeSource& source, const Matrix& pbrt_world_to_world);
+  void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
   void object_instance(const Directive& d);
 
   void warn(SourceRange at, std::string message, std::string hint = {});

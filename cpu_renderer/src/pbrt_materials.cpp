@@ -48,6 +48,17 @@ bool reads_material_params(const std::string& type, const ParamSet& shape) {
 
 bool black(const TexturedReflectance& r) { return sg::is_black(r.value); }
 
+// A texture a material reads: its deferred error is reported now.
+const TextureEntry& usable(const TextureEntry& texture) {
+  if (texture.error) throw PbrtError(*texture.error);
+  return texture;
+}
+
+MaterialModel lambert_or_black(const TexturedReflectance& kd) {
+  if (black(kd)) return BlackMaterial{};  // absorbs, as pbrt-v3's black matte does
+  return LambertMaterial{kd};
+}
+
 std::string lower_extension(const std::string& file) {
   std::string extension = std::filesystem::path(file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -84,7 +95,7 @@ std::optional<TextureEntry> Importer::spectrum_or_texture(ParamSet& params, cons
   if (found == state_.spectrum_textures->end())
     fail(value->param->values, "no spectrum texture named \"" + value->texture + "\"",
          "Texture \"" + value->texture + "\" \"spectrum\" ... defines one");
-  return found->second;
+  return usable(found->second);
 }
 
 std::optional<double> Importer::float_param(ParamSet& params, const char* name) {
@@ -99,7 +110,7 @@ std::optional<double> Importer::float_param(ParamSet& params, const char* name) 
   if (found == state_.float_textures->end())
     fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
          "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
-  return found->second.value[0];  // float textures are constants (image ones are refused at their definition)
+  return usable(found->second).value[0];  // float textures are constants (image ones are refused at their definition)
 }
 
 TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image) {
@@ -162,26 +173,22 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   params.reject("bumpmap", "bump mapping");
   if (type == "matte") {
     params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
-    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
-    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
-    material.diffuse = kd.value;
-    material.diffuse_texture = kd.texture;
+    material.model = lambert_or_black(textured_reflectance(params, "Kd", 0.5, true));
   } else if (type == "mirror") {
-    material.type = Material::Type::mirror;
-    material.specular = reflectance(params, "Kr", 0.9);
-    if (sg::is_black(material.specular)) material.type = Material::Type::black;
+    Reflectance kr = reflectance(params, "Kr", 0.9);
+    if (!sg::is_black(kr)) material.model = MirrorMaterial{kr};
   } else if (type == "plastic") {
     TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
     Reflectance ks = reflectance(params, "Ks", 0.25);
     bool remap = params.one_bool("remaproughness", true);
     // pbrt-v3's plastic: FresnelDielectric(1.5, 1), the indices swapped (mmp/pbrt-v3#210).
-    make_plastic(material, kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
+    material.model = plastic(kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
   } else if (type == "glass") {
     Reflectance kr = reflectance(params, "Kr", 1), kt = reflectance(params, "Kt", 1);
     params.reject("uroughness", "rough glass (only 0: smooth glass)", 0.0);
     params.reject("vroughness", "rough glass (only 0: smooth glass)", 0.0);
     params.one_bool("remaproughness", true);  // no roughness to remap
-    make_glass(material, kr, kt, index_of_refraction(params, at));
+    material.model = glass(kr, kt, index_of_refraction(params, at));
   }
   return material;
 }
@@ -215,42 +222,32 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
     fail(at, params.context() + " with both a diffuse or glossy part (Kd, Ks) and a specular one (Kr, Kt) is not supported",
          "no material here sums them; uber renders as matte, plastic or glass when one of the two parts is black");
   if (specular) {
-    make_glass(material, kr, kt, eta);
+    material.model = glass(kr, kt, eta);
   } else {
     double alpha = std::max(1e-3, remap ? roughness_to_alpha(u) : u);
-    make_plastic(material, kd, ks, alpha, eta, false, params, at);
+    material.model = plastic(kd, ks, alpha, eta, false, params, at);
   }
   return material;
 }
 
-void Importer::make_plastic(Material& material, const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
-                            bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
-  material.diffuse = kd.value;
-  material.diffuse_texture = kd.texture;
-  if (sg::is_black(ks)) {  // the Lambertian lobe alone, as pbrt-v3 builds it
-    material.type = black(kd) ? Material::Type::black : Material::Type::lambert;
-    return;
-  }
-  material.type = Material::Type::plastic;
-  material.specular = ks;
-  material.alpha = static_cast<Real>(alpha);
-  material.ior = static_cast<Real>(ior);
-  material.pbrt_v3_plastic_fresnel = pbrt_v3_fresnel;
+MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
+                               bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
+  if (sg::is_black(ks)) return lambert_or_black(kd);  // the Lambertian lobe alone, as pbrt-v3 builds it
+  PlasticMaterial plastic{kd, ks, static_cast<Real>(alpha), static_cast<Real>(ior), pbrt_v3_fresnel};
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.texture >= 0) largest *= sg::raw(result_.scene.textures[kd.texture].mipmap->maximum());
   sg::vec3_rep sum = largest + sg::raw(ks);
-  if (std::max({sum.x, sum.y, sum.z}) > 1)
-    fail(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
-                 format_number(std::max({sum.x, sum.y, sum.z})) + ")",
-         "the surface would reflect more light than it receives (pbrt-v3 renders it anyway); lower Kd or Ks");
-  if (!std::isfinite(material.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
+  if (std::max({sum.x, sum.y, sum.z}) > 1)  // pbrt-v3 renders it as it is (veach-mis has Kd 0.13 + Ks 1): so do we
+    warn(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
+                 format_number(std::max({sum.x, sum.y, sum.z})) + "): the surface can reflect more light than it receives",
+         "rendered as pbrt-v3 renders it; lower Kd or Ks for a surface that conserves energy");
+  if (!std::isfinite(plastic.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
+  return plastic;
 }
 
-void Importer::make_glass(Material& material, Reflectance kr, Reflectance kt, double ior) {
-  material.type = sg::is_black(kr) && sg::is_black(kt) ? Material::Type::black : Material::Type::glass;
-  material.specular = kr;
-  material.transmission = kt;
-  material.ior = static_cast<Real>(ior);
+MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {
+  if (sg::is_black(kr) && sg::is_black(kt)) return BlackMaterial{};
+  return GlassMaterial{kr, kt, static_cast<Real>(ior)};
 }
 
 void Importer::material(const Directive& d, bool named) {
@@ -267,22 +264,10 @@ void Importer::material(const Directive& d, bool named) {
     instance->type = d.strings[0];
     instance->at = d.string_ranges[0];
   }
-  const std::string& type = instance->type;
-  bool supported = false;
-  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
-  if (!supported) {
-    if (type.empty() || type == "none")
-      fail(instance->at, "an invisible interface material (\"" + type + "\") is not supported",
-           "it only bounds participating media, which are not supported either");
-    fail(instance->at, "material \"" + type + "\" is not supported", kSupportedMaterials);
-  }
-  Material converted = convert_material(type, params, instance->at);
-  report_unused(params);
-  if (converted.type == Material::Type::black) {
-    instance->index = -1;  // absorbs everything, as pbrt-v3's black matte does
-  } else {
-    instance->index = static_cast<int>(result_.scene.materials.size());
-    result_.scene.materials.push_back(converted);
+  try {
+    make_material(*instance, params);
+  } catch (const PbrtError& error) {
+    instance->error = error.diagnostic();
   }
   if (named)
     writable(state_.named_materials)[d.strings[0]] = instance;
@@ -290,14 +275,35 @@ void Importer::material(const Directive& d, bool named) {
     state_.material = instance;
 }
 
+void Importer::make_material(MaterialInstance& instance, ParamSet& params) {
+  const std::string& type = instance.type;
+  bool supported = false;
+  for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
+  if (!supported) {
+    if (type.empty() || type == "none")
+      fail(instance.at, "an invisible interface material (\"" + type + "\") is not supported",
+           "it only bounds participating media, which are not supported either");
+    fail(instance.at, "material \"" + type + "\" is not supported", kSupportedMaterials);
+  }
+  Material converted = convert_material(type, params, instance.at);
+  report_unused(params);
+  if (std::holds_alternative<BlackMaterial>(converted.model)) {
+    instance.index = -1;  // absorbs everything, as pbrt-v3's black matte does
+  } else {
+    instance.index = static_cast<int>(result_.scene.materials.size());
+    result_.scene.materials.push_back(converted);
+  }
+}
+
 int Importer::material_index(const MaterialInstance& material, ParamSet& shape_params) {
+  if (material.error) throw PbrtError(*material.error);
   if (material.index != -2 && !reads_material_params(material.type, shape_params)) return material.index;
   // The shape's own values win over the material's.
   ParamSet material_params(material.params, "the shape's material \"" + material.type + "\"");
   shape_params.set_fallback(&material_params);
   Material converted = convert_material(material.type, shape_params, material.at);
   shape_params.set_fallback(nullptr);
-  if (converted.type == Material::Type::black) return -1;
+  if (std::holds_alternative<BlackMaterial>(converted.model)) return -1;
   result_.scene.materials.push_back(converted);
   return static_cast<int>(result_.scene.materials.size()) - 1;
 }
@@ -306,10 +312,23 @@ int Importer::material_index(const MaterialInstance& material, ParamSet& shape_p
 // Textures
 
 void Importer::texture(const Directive& d) {
-  const std::string &name = d.strings[0], &type = d.strings[1], &texture_class = d.strings[2];
+  const std::string &name = d.strings[0], &type = d.strings[1];
   bool spectrum = type == "spectrum" || type == "color";
   if (!spectrum && type != "float")
     fail(d.string_ranges[1], "texture type \"" + type + "\" is unknown", "pbrt-v3 has \"spectrum\" (or \"color\") and \"float\"");
+  TextureEntry entry;
+  try {
+    entry = convert_texture(d, spectrum);
+  } catch (const PbrtError& error) {
+    entry.texture_class = d.strings[2];
+    entry.at = d.string_ranges[2];
+    entry.error = error.diagnostic();
+  }
+  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
+}
+
+TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
+  const std::string &name = d.strings[0], &texture_class = d.strings[2];
   ParamSet params(d.params, "Texture \"" + name + "\"");
   TextureEntry entry;
   entry.texture_class = texture_class;
@@ -349,7 +368,7 @@ void Importer::texture(const Directive& d) {
     fail(entry.at, "texture \"" + texture_class + "\" is not supported", kSupportedTextures);
   }
   report_unused(params);
-  writable(spectrum ? state_.spectrum_textures : state_.float_textures)[name] = entry;
+  return entry;
 }
 
 // pbrt-v3's CreateImageSpectrumTexture: a (u, v) mapping, a wrap mode, a

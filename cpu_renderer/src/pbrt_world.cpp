@@ -144,10 +144,51 @@ void Importer::light_source(const Directive& d) {
     }
   } else if (type == "infinite" || type == "exinfinite") {
     infinite_light(d, params);
+  } else if (type == "distant") {
+    distant_light(d, params);
   } else {
-    fail(d.string_ranges[0], "light \"" + type + "\" is not supported", "supported: \"point\", \"spot\", \"infinite\"");
+    fail(d.string_ranges[0], "light \"" + type + "\" is not supported",
+         "supported: \"point\", \"spot\", \"distant\", \"infinite\"");
   }
   report_unused(params);
+}
+
+namespace {
+
+// A distant or infinite light's "L" × "scale" (each 1 by default), none negative.
+Rgb scaled_output(ParamSet& params) {
+  Rgb output{1, 1, 1};
+  for (const char* name : {"L", "scale"})
+    if (std::optional<SpectrumValue> value = params.spectrum(name, false))
+      for (int c = 0; c < 3; ++c) {
+        if (!(value->rgb[c] >= 0)) params.fail_at(*value->param, "light output must not be negative");
+        output[c] *= value->rgb[c];
+      }
+  return output;
+}
+
+}  // namespace
+
+// pbrt-v3's DistantLight: irradiance L × scale on a surface facing it (read
+// as W/m², which keeps pbrt's pixel values), arriving from the direction
+// from − to under the transform at the directive.
+void Importer::distant_light(const Directive& d, ParamSet& params) {
+  Rgb irradiance = scaled_output(params);
+  Triple from = params.one_point("from").value_or(Triple{0, 0, 0}), to = params.one_point("to").value_or(Triple{0, 0, 1});
+  glm::dvec3 towards(from[0] - to[0], from[1] - to[1], from[2] - to[2]);
+  if (!(glm::length(towards) > 0)) fail(d.range, "the distant light's \"from\" and \"to\" coincide");
+  // As pbrt-v3 maps it: a vector through the transform (LightToWorld(w)).
+  glm::dvec3 direction = glm::dmat3(world_from_pbrt_world_ * state_.ctm) * towards;
+  if (!(glm::length(direction) > 0) || !std::isfinite(glm::length(direction)))
+    fail(d.range, "the distant light's direction is not finite under its transform");
+  DistantLight light;
+  light.direction = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(sg::vec3_rep(glm::normalize(direction))));
+  light.irradiance = sg::from_raw<spectrum<dim::irradiance>>(
+      sg::vec3_rep(static_cast<Real>(irradiance[0]), static_cast<Real>(irradiance[1]), static_cast<Real>(irradiance[2])));
+  sg::vec3_rep rgb = sg::raw(light.irradiance);
+  if (!std::isfinite(rgb.x) || !std::isfinite(rgb.y) || !std::isfinite(rgb.z))
+    fail(d.range, std::string("the distant light's irradiance is out of ") + kRealName + " range");
+  result_.scene.distant_lights.push_back(light);
 }
 
 // pbrt-v3's InfiniteAreaLight: L × scale, times the lat-long map's texels
@@ -160,13 +201,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
     fail(d.string_ranges[0], "a second infinite light",
          "the renderer has one environment light per scene (the first is at line " +
              std::to_string(environment_at_->begin.line) + ")");
-  Rgb radiance{1, 1, 1};
-  for (const char* name : {"L", "scale"})
-    if (std::optional<SpectrumValue> value = params.spectrum(name, false))
-      for (int c = 0; c < 3; ++c) {
-        if (!(value->rgb[c] >= 0)) params.fail_at(*value->param, "light output must not be negative");
-        radiance[c] *= value->rgb[c];
-      }
+  Rgb radiance = scaled_output(params);
   EnvironmentLight light;
   light.radiance = sg::from_raw<Radiance>(sg::vec3_rep(static_cast<Real>(radiance[0]), static_cast<Real>(radiance[1]),
                                                       static_cast<Real>(radiance[2])));
@@ -184,7 +219,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   if (!is_similarity(m, 1e-6))
     fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
          "it would distort the map; rotate it only");
-  light.render_from_light = orthogonal_map<LightToWorld>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  light.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
   result_.scene.environment = std::move(light);
   environment_at_ = d.string_ranges[0];
 }
@@ -218,7 +253,7 @@ void Importer::shape(const Directive& d) {
   ParamSet params(d.params, "Shape \"" + type + "\"");
   ShapeSource source;
   source.at = d.string_ranges[0];
-  source.object_to_pbrt_world = state_.ctm;
+  source.pbrt_world_from_object = state_.ctm;
   source.reverse_orientation = state_.reverse_orientation;
   auto reject_alpha = [&] {
     for (const char* name : {"alpha", "shadowalpha"}) {
@@ -278,15 +313,22 @@ void Importer::shape(const Directive& d) {
     params.one_float("edgelength", 1);
     reject_alpha();
   } else if (type == "sphere") {
-    source.kind = ShapeSource::Kind::sphere;
-    source.radius = params.one_float("radius", 1);
-    if (!(source.radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
-    params.reject("zmin", "partial spheres", -source.radius);
-    params.reject("zmax", "partial spheres", source.radius);
-    params.reject("phimax", "partial spheres", 360.0);
+    double radius = params.one_float("radius", 1);
+    if (!(radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
+    // Scaled unevenly, an ellipsoid: a mesh (the renderer's spheres are round).
+    const bool ellipsoid = !is_similarity(state_.ctm, 1e-4);
+    if (sphere_mesh(radius, ellipsoid, params, d.string_ranges[0], source)) {
+      source.kind = ShapeSource::Kind::mesh;
+    } else {
+      source.kind = ShapeSource::Kind::sphere;
+      source.radius = radius;
+    }
+  } else if (quadric_mesh(type, params, d.string_ranges[0], source)) {
+    source.kind = ShapeSource::Kind::mesh;
   } else {
     fail(d.string_ranges[0], "shape \"" + type + "\" is not supported",
-         "supported: \"trianglemesh\", \"plymesh\", \"sphere\"");
+         "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
+         "\"paraboloid\", \"hyperboloid\"");
   }
   source.material = material_index(*state_.material, params);
   source.emission = state_.area_light;
@@ -325,7 +367,7 @@ void Importer::mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& 
 // Into the Scene, in world metres: meshes baked (their triangles wound so
 // that an emitter emits on pbrt-v3's side), spheres as centre and radius.
 void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_world) {
-  Matrix world_from_object = world_from_pbrt_world * source.object_to_pbrt_world;
+  Matrix world_from_object = world_from_pbrt_world * source.pbrt_world_from_object;
   Shape shape;
   shape.material = source.material;
   if (source.emission) {
@@ -335,10 +377,11 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
-  const bool glass = shape.material >= 0 && result_.scene.materials[shape.material].type == Material::Type::glass;
+  const bool glass = shape.material >= 0 && std::holds_alternative<GlassMaterial>(result_.scene.materials[shape.material].model);
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
-      fail(source.at, "a sphere under a transform that scales unevenly (an ellipsoid) is not supported");
+      fail(source.at, "a sphere under an object instance's transform that scales unevenly (an ellipsoid) is not supported",
+           "scale the sphere itself, inside ObjectBegin, and it becomes a mesh");
     if (shape.emission && source.reverse_orientation && !shape.two_sided_emission)
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
@@ -350,7 +393,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     shape.type = Shape::Type::sphere;
     const double scale = glm::length(glm::dmat3(world_from_object)[0]);
     const glm::dmat3 rotation = glm::dmat3(world_from_object) / scale;
-    shape.render_from_object = orthogonal_map<ObjectToWorld>(rotation);
+    shape.render_from_object = orthogonal_map<RenderFromObject>(rotation);
     glm::dvec3 centre = glm::transpose(rotation) * glm::dvec3(sg::raw(to_world_point(world_from_object, {0, 0, 0}, source.at)));
     shape.center = sg::from_raw<PointObject>(sg::vec3_rep(centre));
     Real radius = static_cast<Real>(source.radius * scale);
@@ -370,15 +413,15 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     // outside there (our glass: on the winding's side): the winding's
     // (right-handed in its world), flipped by ReverseOrientation and by a
     // mirroring object transform; with vertex normals, the side they point to.
-    bool mirrored_object = determinant3(source.object_to_pbrt_world) < 0;
+    bool mirrored_object = determinant3(source.pbrt_world_from_object) < 0;
     bool mirrored_world = determinant3(world_from_pbrt_world) < 0;
     bool flip_all = mirrored_world != (source.reverse_orientation != mirrored_object);
-    glm::dmat3 normal_to_world = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
+    glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
     for (size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
       bool flip = flip_all;
       if (!source.normals.empty()) {
         const uint32_t* v = &shape.indices[t];
-        glm::dvec3 n = normal_to_world * glm::dvec3(source.normals[v[0]] + source.normals[v[1]] + source.normals[v[2]]);
+        glm::dvec3 n = world_from_object_normals * glm::dvec3(source.normals[v[0]] + source.normals[v[1]] + source.normals[v[2]]);
         glm::dvec3 a(sg::raw(shape.positions[v[0]])), b(sg::raw(shape.positions[v[1]])), c(sg::raw(shape.positions[v[2]]));
         flip = glm::dot(glm::cross(b - a, c - a), n) < 0;
       }

@@ -20,15 +20,15 @@ quantity<dim::area> total_area(const Scene& scene, const std::vector<bool>& whic
   for (size_t s = 0; s < scene.shapes.size(); ++s) {
     if (!which[s]) continue;
     const Shape& shape = scene.shapes[s];
-    const ObjectToWorld& to_world = shape.render_from_object;
+    const RenderFromObject& render_from_object = shape.render_from_object;
     if (shape.type == Shape::Type::sphere) {
-      Length r = sg::length(to_world(vector<Object>(shape.radius, sg::zero, sg::zero)));
+      Length r = placed_radius(render_from_object, shape.radius);
       area += 4 * kPi * r * r;
       continue;
     }
     for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-      PointWorld a = to_world(shape.positions[shape.indices[i]]), b = to_world(shape.positions[shape.indices[i + 1]]),
-                 c = to_world(shape.positions[shape.indices[i + 2]]);
+      PointWorld a = render_from_object(shape.positions[shape.indices[i]]), b = render_from_object(shape.positions[shape.indices[i + 1]]),
+                 c = render_from_object(shape.positions[shape.indices[i + 2]]);
       area += Real(0.5) * sg::length(sg::cross(b - a, c - a));
     }
   }

@@ -33,7 +33,7 @@ struct Box {
 };
 
 // In double, so that the size reported is the scene's, not its rounding.
-Box world_box(const Shape& shape, const ObjectToWorld& render_from_object) {
+Box world_box(const Shape& shape, const RenderFromObject& render_from_object) {
   const glm::dmat4 matrix(sg::raw(render_from_object).forward);
   auto to_world = [&](const glm::dvec3& p) { return glm::dvec3(matrix * glm::dvec4(p, 1.0)); };
   Box box;
@@ -74,7 +74,7 @@ std::optional<PrecisionReport> check_precision(const Scene& scene) {
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
     bool unresolved = false;
-    for (const std::optional<ObjectToWorld>& pose : {std::optional(shape.render_from_object),
+    for (const std::optional<RenderFromObject>& pose : {std::optional(shape.render_from_object),
                                                      shape.render_from_object_at_close}) {
       if (!pose) continue;
       Box box = world_box(shape, *pose);

@@ -129,11 +129,7 @@ TEST(RenderMaterials, GlassSlabTransmitsOneMinusROverOnePlusR) {
 // the pixel is L times the material's directional albedo, which a quadrature
 // of its BRDF gives.
 TEST(RenderMaterials, PlasticReflectsItsDirectionalAlbedo) {
-  Material plastic;
-  plastic.type = Material::Type::plastic;
-  plastic.diffuse = Reflectance(0.5f, 0.3f, 0.2f);
-  plastic.specular = Reflectance(0.4f);
-  plastic.alpha = 0.15f;
+  Material plastic{PlasticMaterial{TexturedReflectance{Reflectance(0.5f, 0.3f, 0.2f)}, Reflectance(0.4f), 0.15f}};
   for (double view_degrees : {0.0, 60.0}) {
     double view = view_degrees * kPiD / 180;
     Bsdf bsdf(plastic);

@@ -70,6 +70,33 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
   }
 }
 
+// Diffuse plane under a distant light (pbrt-v3's, from 50° off the normal):
+// L = ρ/π · E cos θ everywhere, the estimator exact but for float rounding;
+// with no specular surface the photon integrator traces its photons (from a
+// disc across the scene) and gathers none, so it too is exact.
+TEST(RenderPhysics, DiffusePlaneUnderDistantLight) {
+  const double rho = 0.5, irradiance = 3.0, theta = 50 * kPiD / 180;
+  Scene scene = parse_scene(R"json({
+    "render": {"resolution": [17, 17], "integrator": "direct", "photons": 1000},
+    "camera": {"position": {"value": [0, 5, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 0, -1], "fov": "40 deg"},
+    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}]})json",
+                             "test.json", SAFEGI_SCENES_DIR);
+  DistantLight sun;
+  sun.direction = DirectionWorld(static_cast<Real>(std::sin(theta)), static_cast<Real>(std::cos(theta)), 0);
+  sun.irradiance = spectrum<dim::irradiance>(static_cast<Real>(irradiance) * units::watt_per_square_metre);
+  scene.distant_lights.push_back(sun);
+  const double expected = rho / kPiD * irradiance * std::cos(theta);
+  for (IntegratorType integrator : {IntegratorType::direct, IntegratorType::path, IntegratorType::photon})
+    for (const Knobs& knobs : estimator_knobs()) {
+      scene.settings.integrator = integrator;
+      Image image = render_scene(scene, 4, 2, std::nullopt, knobs.apply);
+      for (float v : image.rgb) ASSERT_NEAR(v, expected, 1e-5 * expected) << static_cast<int>(integrator) << ", " << knobs.name;
+    }
+}
+
 // Diffuse plane under a spot light pointing straight down: L = ρ/π · I f(θ)
 // cos θ / r² with pbrt-v3's falloff f: 1 inside cone_angle − cone_delta,
 // δ⁴ across the band (δ the cosine's position within it), 0 beyond. Averaged

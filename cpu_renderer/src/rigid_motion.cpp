@@ -31,7 +31,7 @@ Affine inverse(const Affine& a) {
   return r;
 }
 
-Affine Affine::from(const ObjectToWorld& map) {
+Affine Affine::from(const RenderFromObject& map) {
   sg::mat4_rep forward = sg::raw(map).forward;  // column-major
   Affine a;
   for (int r = 0; r < 3; ++r)
@@ -146,12 +146,12 @@ Affine RigidMotion::at(Real time) const {
   return result;
 }
 
-ObjectToWorld RigidMotion::render_from_object(Time time) const {
+RenderFromObject RigidMotion::render_from_object(Time time) const {
   Affine affine = at(sg::raw(time));
   sg::mat4_rep forward(Real(1));
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) forward[c][r] = affine.m[r][c];
-  return sg::from_raw<ObjectToWorld>({forward, glm::inverse(forward)});
+  return sg::from_raw<RenderFromObject>({forward, glm::inverse(forward)});
 }
 
 std::optional<RigidMotion> motion_of(const Shape& shape, const Camera& camera) {

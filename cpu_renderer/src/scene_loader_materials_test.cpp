@@ -58,18 +58,18 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
       if (m.name == name) return m;
     throw std::runtime_error("no material " + name);
   };
-  const Material& glass = named("glass");
-  EXPECT_EQ(glass.type, Material::Type::glass);
+  ASSERT_TRUE(std::holds_alternative<GlassMaterial>(named("glass").model));
+  const auto& glass = std::get<GlassMaterial>(named("glass").model);
   EXPECT_FLOAT_EQ(glass.ior, 1.33f);
-  EXPECT_EQ(sg::raw(glass.specular), glm::vec3(1.0f));
-  EXPECT_EQ(sg::raw(glass.transmission), glm::vec3(1.0f));
-  EXPECT_EQ(sg::raw(named("tinted").transmission), glm::vec3(0.2f, 0.8f, 0.9f));
-  const Material& plastic = named("plastic");
-  EXPECT_EQ(plastic.type, Material::Type::plastic);
+  EXPECT_EQ(sg::raw(glass.reflectance), glm::vec3(1.0f));
+  EXPECT_EQ(sg::raw(glass.transmittance), glm::vec3(1.0f));
+  EXPECT_EQ(sg::raw(std::get<GlassMaterial>(named("tinted").model).transmittance), glm::vec3(0.2f, 0.8f, 0.9f));
+  ASSERT_TRUE(std::holds_alternative<PlasticMaterial>(named("plastic").model));
+  const auto& plastic = std::get<PlasticMaterial>(named("plastic").model);
   EXPECT_FLOAT_EQ(plastic.alpha, 0.05f);
   EXPECT_FLOAT_EQ(plastic.ior, 1.5f);
-  EXPECT_TRUE(plastic.pbrt_v3_plastic_fresnel);
-  EXPECT_EQ(plastic.diffuse_texture, -1);
+  EXPECT_TRUE(plastic.pbrt_v3_fresnel);
+  EXPECT_EQ(plastic.diffuse.texture, -1);
 
   EXPECT_EQ(error(with_camera(R"j("materials": {"g": {"type": "glass"}})j")), "test.json: materials.g: missing field 'ior'");
   EXPECT_EQ(error(with_camera(R"j("materials": {"g": {"type": "glass", "ior": 0}})j")),
@@ -110,9 +110,10 @@ TEST_F(LoaderFiles, ImageTextures) {
   const ImageTexture& painted = scene.textures[1];
   EXPECT_EQ(painted.colour_space, ColourSpace::srgb);
   EXPECT_NEAR(sg::raw(painted.mipmap->texel(0, 0, 0)).r, 0.5f * 0.2140411f, 1e-6f);
-  EXPECT_EQ(scene.materials[0].diffuse_texture, 0);
-  EXPECT_EQ(sg::raw(scene.materials[0].diffuse), glm::vec3(1.0f));
-  EXPECT_EQ(scene.materials[1].diffuse_texture, 1);
+  ASSERT_TRUE(diffuse_of(scene.materials[0]) && diffuse_of(scene.materials[1]));
+  EXPECT_EQ(diffuse_of(scene.materials[0])->texture, 0);
+  EXPECT_EQ(sg::raw(diffuse_of(scene.materials[0])->value), glm::vec3(1.0f));
+  EXPECT_EQ(diffuse_of(scene.materials[1])->texture, 1);
 
   EXPECT_EQ(error(with_camera(R"j("materials": {"m": {"type": "lambert", "reflectance": {"texture": "wood"}}})j")),
             "test.json: materials.m.reflectance.texture: no texture named \"wood\"");

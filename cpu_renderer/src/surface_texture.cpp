@@ -18,16 +18,16 @@ TexCoord vertex_uv(const Shape& shape, size_t corner) {
 // How much texture a length of the surface spans: the square root of the
 // shape's total (u, v) area (a number) over its total world area.
 quantity<dim::inverse<dim::length>> uv_per_length(const Shape& shape) {
-  const ObjectToWorld& to_world = shape.render_from_object;
+  const RenderFromObject& render_from_object = shape.render_from_object;
   if (shape.type == Shape::Type::sphere) {
-    Length radius = sg::length(to_world(vector<Object>(shape.radius, sg::zero, sg::zero)));
+    Length radius = placed_radius(render_from_object, shape.radius);
     return 1 / sg::sqrt(4 * kPi * radius * radius);  // (u, v) ∈ [0, 1)² covers the sphere once
   }
   Real uv_area = 0;
   quantity<dim::area> world_area = sg::zero;
   for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-    PointWorld a = to_world(shape.positions[shape.indices[i]]), b = to_world(shape.positions[shape.indices[i + 1]]),
-               c = to_world(shape.positions[shape.indices[i + 2]]);
+    PointWorld a = render_from_object(shape.positions[shape.indices[i]]), b = render_from_object(shape.positions[shape.indices[i + 1]]),
+               c = render_from_object(shape.positions[shape.indices[i + 2]]);
     world_area += 0.5f * sg::length(sg::cross(b - a, c - a));
     TexCoord ta = vertex_uv(shape, i), tb = vertex_uv(shape, i + 1), tc = vertex_uv(shape, i + 2);
     uv_area += std::abs((tb.u - ta.u) * (tc.v - ta.v) - (tc.u - ta.u) * (tb.v - ta.v)) / 2;
@@ -50,8 +50,8 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   const Shape& shape = scene_.shapes[hit.shape];
   if (shape.type == Shape::Type::sphere) {
     // pbrt's sphere: u = φ/2π about object-space z, v = 1 − θ/π (0 at −z).
-    ObjectToWorld to_world = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
-    vector<Object> offset = sg::inverse(to_world)(hit.position) - shape.center;
+    RenderFromObject render_from_object = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
+    vector<Object> offset = sg::inverse(render_from_object)(hit.position) - shape.center;
     direction<Object> d = sg::normalize(offset);
     Real phi = std::atan2(d.y(), d.x());
     if (phi < 0) phi += 2 * kPi;
@@ -59,9 +59,9 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   }
   // The hit's barycentric weights on its triangle, where the triangle is at `time`.
   const size_t first = 3 * static_cast<size_t>(hit.face);
-  ObjectToWorld to_world = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
-  PointWorld a = to_world(shape.positions[shape.indices[first]]), b = to_world(shape.positions[shape.indices[first + 1]]),
-             c = to_world(shape.positions[shape.indices[first + 2]]);
+  RenderFromObject render_from_object = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
+  PointWorld a = render_from_object(shape.positions[shape.indices[first]]), b = render_from_object(shape.positions[shape.indices[first + 1]]),
+             c = render_from_object(shape.positions[shape.indices[first + 2]]);
   VectorWorld e1 = b - a, e2 = c - a, d = hit.position - a;
   quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
   quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
@@ -74,14 +74,16 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
 }
 
 Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {
-  if (material.diffuse_texture < 0) return material.diffuse;
-  const ImageTexture& texture = scene_.textures[material.diffuse_texture];
+  const TexturedReflectance* diffuse = diffuse_of(material);
+  if (!diffuse) return Reflectance{};
+  if (diffuse->texture < 0) return diffuse->value;
+  const ImageTexture& texture = scene_.textures[diffuse->texture];
   TexCoord at = uv(hit, time);
   const Real s = at.u * texture.u_scale + texture.u_offset, t = at.v * texture.v_scale + texture.v_offset;
   if (texture.filter == TextureFilter::bilinear || !(width > sg::zero))
-    return material.diffuse * texture.mipmap->bilinear(0, s, t);
+    return diffuse->value * texture.mipmap->bilinear(0, s, t);
   const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(texture.u_scale), std::abs(texture.v_scale));
-  return material.diffuse * texture.mipmap->trilinear(s, t, footprint);
+  return diffuse->value * texture.mipmap->trilinear(s, t, footprint);
 }
 
 }  // namespace safegi::render

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <variant>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <safegi/runtime_gl/gl.hpp>
@@ -29,13 +31,13 @@ constexpr float kFarDistance = 1e30f;  // what an empty shadow-map texel holds, 
 
 // The uniforms every camera pass shares (scene.sgl.vert, shade.sgl.frag).
 struct CameraHandles {
-  gl::uniform_id<ObjectToWorld> world_from_object;
+  gl::uniform_id<RenderFromObject> world_from_object;
   gl::uniform_id<ClipFromWorld> clip_from_world;
   gl::uniform_id<PointWorld> eye;
   gl::uniform_id<NormalWorld> clip_normal;
   gl::uniform_id<PointWorld> clip_point;
   explicit CameraHandles(const gl::Program& p)
-      : world_from_object(p.uniform<ObjectToWorld>("worldFromObject")),
+      : world_from_object(p.uniform<RenderFromObject>("worldFromObject")),
         clip_from_world(p.uniform<ClipFromWorld>("clipFromWorld")),
         eye(p.uniform<PointWorld>("eye")),
         clip_normal(p.uniform<NormalWorld>("clipNormal")),
@@ -91,7 +93,7 @@ struct AreaSamplePass : LightPass {
 
 struct DepthPass {
   gl::Program program;
-  gl::uniform_id<ObjectToWorld> world_from_object = program.uniform<ObjectToWorld>("worldFromObject");
+  gl::uniform_id<RenderFromObject> world_from_object = program.uniform<RenderFromObject>("worldFromObject");
   gl::uniform_id<LightClipFromWorld> light_clip_from_world =
       program.uniform<LightClipFromWorld>("lightClipFromWorld");
   gl::uniform_id<PointWorld> light_position = program.uniform<PointWorld>("lightPosition");
@@ -234,7 +236,7 @@ struct Preview::Impl {
     if (!emitters.empty() && options.area_shadows) area_shadow.emplace(options.area_shadow_resolution, depth);
     for (size_t s = 0; s < scene.shapes.size(); ++s) {
       const Shape& shape = scene.shapes[s];
-      if (shape.material < 0 || scene.materials[shape.material].type != Material::Type::mirror) continue;
+      if (shape.material < 0 || !std::holds_alternative<MirrorMaterial>(scene.materials[shape.material].model)) continue;
       if (std::optional<Plane> plane = plane_of(shape))
         mirrors.emplace_back(static_cast<int>(s), *plane, width, height, emission.radiance);
       else
@@ -265,19 +267,40 @@ struct Preview::Impl {
       approximations.push_back("curved mirrors are not previewed and appear black (" + names +
                                "); planar mirrors show one-bounce reflections");
     }
-    add(names_of([](const Material& m) { return m.type == Material::Type::glass; }),
+    add(names_of([](const Material& m) { return std::holds_alternative<GlassMaterial>(m.model); }),
         "glass is not previewed and appears black");
-    add(names_of([](const Material& m) { return m.type == Material::Type::plastic; }),
+    add(names_of([](const Material& m) { return std::holds_alternative<PlasticMaterial>(m.model); }),
         "plastic is drawn as its diffuse layer, without its coating's reflection");
-    add(names_of([](const Material& m) { return m.diffuse_texture >= 0; }),
+    add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->texture >= 0; }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
+    if (!scene.distant_lights.empty()) approximations.push_back("distant lights are not previewed (no light from them)");
   }
 
   // The diffuse reflectance a surface is drawn with: a texture by its mean.
-  Reflectance preview_diffuse(const Material& material) const {
-    if (material.diffuse_texture < 0) return material.diffuse;
-    return material.diffuse * scene.textures[material.diffuse_texture].mipmap->average();
+  Reflectance preview_diffuse(const TexturedReflectance& diffuse) const {
+    if (diffuse.texture < 0) return diffuse.value;
+    return diffuse.value * scene.textures[diffuse.texture].mipmap->average();
+  }
+
+  // What the light passes draw a material with: a diffuse part and a Phong
+  // lobe. None for mirrors (a delta BRDF gets no direct light; planar ones
+  // reflect in draw_mirrors), glass and black.
+  struct LitSurface {
+    Reflectance kd, ks;
+    float exponent = 1.0f;
+  };
+  std::optional<LitSurface> lit_surface(const Material& material) const {
+    using Lit = std::optional<LitSurface>;
+    return std::visit(Overloaded{[&](const LambertMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const PhongMaterial& m) -> Lit {
+                                   return LitSurface{preview_diffuse(m.diffuse), m.specular, m.exponent};
+                                 },
+                                 [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [](const MirrorMaterial&) -> Lit { return std::nullopt; },
+                                 [](const GlassMaterial&) -> Lit { return std::nullopt; },
+                                 [](const BlackMaterial&) -> Lit { return std::nullopt; }},
+                      material.model);
   }
 
   // The point-like lights: point lights, then spot lights, with their cones.
@@ -417,15 +440,11 @@ struct Preview::Impl {
     for (size_t s = 0; s < scene.shapes.size(); ++s) {
       const Shape& shape = scene.shapes[s];
       if (shape.material < 0 || static_cast<int>(s) == view.skip_shape) continue;
-      const Material& material = scene.materials[shape.material];
-      // Mirrors get no direct light (a delta BRDF); planar ones reflect in draw_mirrors.
-      if (material.type != Material::Type::lambert && material.type != Material::Type::phong &&
-          material.type != Material::Type::plastic)
-        continue;
-      bool phong = material.type == Material::Type::phong;
-      pass.program.set(pass.kd, preview_diffuse(material));
-      pass.program.set(pass.ks, phong ? material.specular : Reflectance{});
-      pass.program.set(pass.exponent, phong ? material.exponent : 1.0f);
+      std::optional<LitSurface> surface = lit_surface(scene.materials[shape.material]);
+      if (!surface) continue;
+      pass.program.set(pass.kd, surface->kd);
+      pass.program.set(pass.ks, surface->ks);
+      pass.program.set(pass.exponent, surface->exponent);
       pass.program.set(pass.camera.world_from_object, poses.at(s, time));
       camera_geometry.draw_triangles(meshes.ranges[s].first, meshes.ranges[s].count);
       ++stats.draw_calls;
@@ -487,7 +506,7 @@ struct Preview::Impl {
   // The camera seen through `mirror`'s plane at `time`; none when the camera
   // lies in the plane.
   std::optional<View> mirror_view(MirrorTarget& mirror, glm::vec2 jitter, Time time) const {
-    ObjectToWorld pose = poses.at(mirror.shape, time);
+    RenderFromObject pose = poses.at(mirror.shape, time);
     PointWorld point = pose(mirror.plane.point);
     NormalWorld normal = pose(mirror.plane.unit_normal);  // renormalised by the map
     Length height = sg::dot(normal, scene.camera.position - point);
@@ -517,7 +536,8 @@ struct Preview::Impl {
     for (const MirrorTarget& mirror : mirrors) {
       if (!mirror.view) continue;
       mirror_pass.program.bind(mirror_pass.reflection, mirror.image, 0);
-      mirror_pass.program.set(mirror_pass.kr, scene.materials[scene.shapes[mirror.shape].material].specular);
+      mirror_pass.program.set(mirror_pass.kr,
+                              std::get<MirrorMaterial>(scene.materials[scene.shapes[mirror.shape].material].model).reflectance);
       mirror_pass.program.set(mirror_pass.camera.world_from_object, poses.at(mirror.shape, time));
       camera_geometry.draw_triangles(meshes.ranges[mirror.shape].first, meshes.ranges[mirror.shape].count);
       ++stats.draw_calls;

@@ -57,11 +57,11 @@ SceneMeshes tessellate(const Scene& scene, int sphere_segments) {
 
 namespace {
 
-ObjectToWorld to_map(const Affine& affine) {
+RenderFromObject to_map(const Affine& affine) {
   glm::mat4 forward(1.0f);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) forward[c][r] = affine.m[r][c];
-  return sg::from_raw<ObjectToWorld>({forward, glm::inverse(forward)});
+  return sg::from_raw<RenderFromObject>({forward, glm::inverse(forward)});
 }
 
 }  // namespace
@@ -86,18 +86,18 @@ ScenePoses::ScenePoses(const Scene& scene) : scene_(scene) {
     const Shape& shape = scene.shapes[s];
     for (int k = 0; k <= (motions_[s] ? kPoses : 0); ++k) {
       Time t = camera.shutter_open + (camera.shutter_close - camera.shutter_open) * (static_cast<float>(k) / kPoses);
-      ObjectToWorld to_world = at(s, t);
+      RenderFromObject render_from_object = at(s, t);
       auto extend = [&](PointWorld p) {
         lower = glm::min(lower, sg::raw(p));
         upper = glm::max(upper, sg::raw(p));
       };
       if (shape.type == Shape::Type::sphere) {
-        Length r = sg::length(to_world(vector<Object>(shape.radius, sg::zero, sg::zero)));
-        PointWorld c = to_world(shape.center);
+        Length r = placed_radius(render_from_object, shape.radius);
+        PointWorld c = render_from_object(shape.center);
         extend(c + VectorWorld(r, r, r));
         extend(c - VectorWorld(r, r, r));
       } else {
-        for (PointObject p : shape.positions) extend(to_world(p));
+        for (PointObject p : shape.positions) extend(render_from_object(p));
       }
     }
   }
@@ -114,7 +114,7 @@ ScenePoses::ScenePoses(const Scene& scene) : scene_(scene) {
   radius_ = sg::from_raw<Length>(std::max(0.5f * glm::length(upper - lower), 1e-6f));
 }
 
-ObjectToWorld ScenePoses::at(size_t shape, Time time) const {
+RenderFromObject ScenePoses::at(size_t shape, Time time) const {
   if (!motions_[shape]) return scene_.shapes[shape].render_from_object;
   return to_map(motions_[shape]->at(sg::raw(time)));
 }
@@ -122,7 +122,7 @@ ObjectToWorld ScenePoses::at(size_t shape, Time time) const {
 Emitter::Emitter(const Scene& scene, int shape_index)
     : Emitter(scene, shape_index, scene.shapes[shape_index].render_from_object) {}
 
-Emitter::Emitter(const Scene& scene, int shape_index, const ObjectToWorld& render_from_object)
+Emitter::Emitter(const Scene& scene, int shape_index, const RenderFromObject& render_from_object)
     : shape_(shape_index),
       radiance_(*scene.shapes[shape_index].emission),
       two_sided_(scene.shapes[shape_index].two_sided_emission) {
@@ -130,18 +130,11 @@ Emitter::Emitter(const Scene& scene, int shape_index, const ObjectToWorld& rende
   if (shape.type == Shape::Type::sphere) {
     sphere_ = true;
     center_ = render_from_object(shape.center);
-    radius_ = sg::length(render_from_object(vector<Object>(shape.radius, sg::zero, sg::zero)));
+    radius_ = placed_radius(render_from_object, shape.radius);
     area_ = 4 * sg::pi * radius_ * radius_;
     return;
   }
-  for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-    PointWorld a = render_from_object(shape.positions[shape.indices[i]]);
-    PointWorld b = render_from_object(shape.positions[shape.indices[i + 1]]);
-    PointWorld c = render_from_object(shape.positions[shape.indices[i + 2]]);
-    area_ += 0.5f * sg::length(sg::cross(b - a, c - a));
-    triangles_.push_back({a, b - a, c - a, sg::raw(area_)});
-  }
-  for (Triangle& t : triangles_) t.area_cdf /= sg::raw(area_);
+  area_ = append_emitter_triangles(shape, render_from_object, triangles_);
 }
 
 EmitterPoint Emitter::sample(float u1, float u2) const {
@@ -150,15 +143,13 @@ EmitterPoint Emitter::sample(float u1, float u2) const {
     return {center_ + outward * radius_, sg::to_normal(outward)};
   }
   // u1 picks the triangle by area, and what is left of it places the point.
-  auto found = std::upper_bound(triangles_.begin(), triangles_.end(), u1,
-                                [](float u, const Triangle& t) { return u < t.area_cdf; });
-  if (found == triangles_.end()) --found;
-  float low = found == triangles_.begin() ? 0.0f : (found - 1)->area_cdf;
+  const EmitterTriangle<World>* first = triangles_.data();
+  const EmitterTriangle<World>* found = choose_emitter_triangle(first, first + triangles_.size(), u1);
+  float low = found == first ? 0.0f : (found - 1)->area_cdf;
   float width = found->area_cdf - low;
   float u = width > 0 ? std::clamp((u1 - low) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
-  float root = std::sqrt(u);
-  float b1 = 1 - root, b2 = u2 * root;
-  return {found->p0 + found->e1 * b1 + found->e2 * b2,
+  TriangleWeights b = uniform_triangle_weights(u, u2);
+  return {found->p0 + found->e1 * b.along_e1 + found->e2 * b.along_e2,
           sg::to_normal(sg::normalize(sg::cross(found->e1, found->e2)))};
 }
 

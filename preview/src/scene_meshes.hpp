@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "safegi/cpu_renderer/emitter_triangles.hpp"
 #include "safegi/cpu_renderer/rigid_motion.hpp"  // both renderers move objects alike
 #include "safegi/cpu_renderer/scene.hpp"
 
@@ -35,7 +36,7 @@ class ScenePoses {
   explicit ScenePoses(const Scene& scene);
   bool animated() const { return animated_; }
   bool moves(size_t shape) const { return motions_[shape].has_value(); }
-  ObjectToWorld at(size_t shape, Time time) const;
+  RenderFromObject at(size_t shape, Time time) const;
   // A sphere around everything the scene holds over the whole shutter.
   PointWorld bounds_center() const { return center_; }
   Length bounds_radius() const { return radius_; }
@@ -57,10 +58,10 @@ struct EmitterPoint {
 // renderer's Lights place it, sampled uniformly by area.
 class Emitter {
  public:
-  // At the shape's own pose, or at `world_from_object` (a moving emitter at one
+  // At the shape's own pose, or at `render_from_object` (a moving emitter at one
   // shutter time: its area, and so each sample's share, follows its scale).
   Emitter(const Scene& scene, int shape);
-  Emitter(const Scene& scene, int shape, const ObjectToWorld& world_from_object);
+  Emitter(const Scene& scene, int shape, const RenderFromObject& render_from_object);
   int shape() const { return shape_; }
   Radiance radiance() const { return radiance_; }
   bool two_sided() const { return two_sided_; }
@@ -68,18 +69,13 @@ class Emitter {
   EmitterPoint sample(float u1, float u2) const;
 
  private:
-  struct Triangle {
-    PointWorld p0;
-    VectorWorld e1, e2;
-    float area_cdf;
-  };
   int shape_;
   Radiance radiance_;
   bool two_sided_;
   bool sphere_ = false;
   PointWorld center_;
   Length radius_ = sg::zero;
-  std::vector<Triangle> triangles_;
+  std::vector<EmitterTriangle<World>> triangles_;
   quantity<dim::area> area_ = sg::zero;
 };
 

@@ -17,7 +17,7 @@ namespace kernel {
 struct Affine {
   Real m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
 
-  static Affine from(const ObjectToWorld& map);
+  static Affine from(const RenderFromObject& map);
   Real3 apply_point(Real3 p) const {
     return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
             m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
@@ -51,7 +51,7 @@ class RigidMotion {
  public:
   RigidMotion(const Affine& at_open, const Affine& at_close, Real time_open, Real time_close);
   Affine at(Real time) const;
-  ObjectToWorld render_from_object(Time time) const;
+  RenderFromObject render_from_object(Time time) const;
 
  private:
   struct Pose {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "safegi/cpu_renderer/texture.hpp"
@@ -27,20 +28,71 @@ struct ImageTexture {
   std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included
 };
 
-struct Material {
-  enum class Type { lambert, phong, plastic, mirror, glass, black };  // the lobed ones, then the deltas: adjacent values
-  Type type = Type::black;
-  Reflectance diffuse{};       // Lambert albedo; Phong and plastic diffuse part (times diffuse_texture)
-  Reflectance specular{};      // Phong specular part; mirror tint; plastic Ks; glass reflection tint (Kr)
-  Reflectance transmission{};  // glass transmission tint (Kt)
-  Real exponent = 1.0f;       // Phong lobe exponent (dimensionless)
-  Real ior = 1.5f;            // glass, plastic: index of refraction inside over outside
-  Real alpha = 0.0f;          // plastic: Trowbridge–Reitz (GGX) roughness alpha; 0 = smooth
+// A reflectance that may be textured: `value` times the texture's texel.
+struct TexturedReflectance {
+  Reflectance value{};
+  int texture = -1;  // index into Scene::textures; -1: the constant `value`
+};
+
+// One parameter type per material: each holds only what its BSDF reads, and a
+// std::visit over Material::model makes the compiler list every place that
+// must learn a new one.
+struct LambertMaterial {
+  TexturedReflectance diffuse;  // the albedo
+};
+struct PhongMaterial {  // energy-conserving Phong (Lafortune & Willems)
+  TexturedReflectance diffuse;
+  Reflectance specular{};
+  Real exponent = 1.0f;  // the lobe's cosine power (dimensionless)
+};
+struct PlasticMaterial {  // pbrt's plastic: Lambert plus a Fresnel-weighted Trowbridge–Reitz lobe
+  TexturedReflectance diffuse;
+  Reflectance specular{};  // pbrt's Ks
+  Real alpha = 0.0f;       // the lobe's GGX roughness alpha; 0 = smooth
+  Real ior = 1.5f;         // the coating's index of refraction inside over outside
   // pbrt-v3's plastic evaluates its Fresnel term as FrDielectric(cos, 1.5, 1), the
   // indices swapped (mmp/pbrt-v3#210, left unfixed there); true reproduces that.
-  bool pbrt_v3_plastic_fresnel = false;
-  int diffuse_texture = -1;    // index into Scene::textures; multiplies `diffuse` (lambert, phong, plastic)
+  bool pbrt_v3_fresnel = false;
+};
+struct MirrorMaterial {
+  Reflectance reflectance{};  // the tint of the perfect reflection
+};
+struct GlassMaterial {  // smooth dielectric
+  Reflectance reflectance{};    // the tint of Fresnel reflection (pbrt's Kr)
+  Reflectance transmittance{};  // the tint of refraction (pbrt's Kt)
+  Real ior = 1.5f;              // index of refraction inside over outside
+};
+struct BlackMaterial {};  // absorbs everything
+
+using MaterialModel =
+    std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial, GlassMaterial>;
+
+struct Material {
+  MaterialModel model;
   std::string name;
+};
+
+// The diffuse part of a material that has one (Lambert, Phong, plastic), else nullptr.
+inline const TexturedReflectance* diffuse_of(const Material& material) {
+  return std::visit(
+      [](const auto& model) -> const TexturedReflectance* {
+        if constexpr (requires { model.diffuse; })
+          return &model.diffuse;
+        else
+          return nullptr;
+      },
+      material.model);
+}
+
+// Perfect mirrors and smooth glass: no density over directions.
+inline bool is_specular(const MaterialModel& model) {
+  return std::holds_alternative<MirrorMaterial>(model) || std::holds_alternative<GlassMaterial>(model);
+}
+
+// The visitor of one lambda per material type, for std::visit over a MaterialModel.
+template <class... Lambdas>
+struct Overloaded : Lambdas... {
+  using Lambdas::operator()...;
 };
 
 // Surface parameters of a mesh vertex (dimensionless), for texture lookups.
@@ -64,10 +116,15 @@ struct Shape {
   std::optional<Radiance> emission;
   bool two_sided_emission = false;
 
-  ObjectToWorld render_from_object;
+  RenderFromObject render_from_object;
   // Rigid motion: where the object is at shutter close (absent: static).
-  std::optional<ObjectToWorld> render_from_object_at_close;
+  std::optional<RenderFromObject> render_from_object_at_close;
 };
+
+// A sphere's radius after `render_from_object` (which scales a sphere uniformly).
+inline Length placed_radius(const RenderFromObject& render_from_object, Length radius) {
+  return sg::length(render_from_object(vector<Object>(radius, sg::zero, sg::zero)));
+}
 
 struct PointLight {
   PointWorld position;
@@ -95,6 +152,14 @@ inline Real spot_falloff(const SpotLight& light, Real cos_theta) {
   return (delta * delta) * (delta * delta);
 }
 
+// Light from one direction, as from a sun infinitely far away (pbrt-v3's
+// distant light): `irradiance` on a surface facing it, `irradiance` · cos θ on
+// one tilted by θ, the same everywhere it is not in shadow.
+struct DistantLight {
+  DirectionWorld direction;  // towards the light
+  spectrum<dim::irradiance> irradiance;
+};
+
 // Light from infinitely far away in every direction. Without a map its
 // radiance is constant; with one (lat-long, linear RGB, pbrt's layout) the
 // radiance towards -w is `radiance` times the texel at u = φ/2π, v = θ/π, where
@@ -103,7 +168,7 @@ struct EnvironmentLight {
   Radiance radiance;                  // constant radiance, or the factor on the map's texels
   std::string file;                   // the map, as written in the scene; empty: constant
   std::shared_ptr<const MipMap> map;  // lat-long texels (u wraps, v clamps)
-  LightToWorld render_from_light;     // a rotation
+  RenderFromLight render_from_light;     // a rotation
 };
 
 struct Camera {
@@ -147,6 +212,7 @@ struct Scene {
   std::vector<Shape> shapes;
   std::vector<PointLight> point_lights;
   std::vector<SpotLight> spot_lights;
+  std::vector<DistantLight> distant_lights;
   std::optional<EnvironmentLight> environment;
 };
 

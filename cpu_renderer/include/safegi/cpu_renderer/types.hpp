@@ -39,8 +39,8 @@ using VectorWorld = vector<World>;
 using DirectionWorld = direction<World>;
 using NormalWorld = normal<World>;
 using DirectionShading = direction<Shading>;
-using ObjectToWorld = map<Object, World>;
-using LightToWorld = map<LightSpace, World>;
+using RenderFromObject = map<Object, World>;
+using RenderFromLight = map<LightSpace, World>;
 using ShadingFrame = frame<World, Shading>;
 
 // Solid angle subtended per unit of area at distance r whose normal makes

@@ -1,0 +1,141 @@
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "json_loader.hpp"
+
+namespace safegi::render::json {
+
+Image Loader::read_image_file(const Json& file_value, const JsonPath& path, std::string& file) {
+  file = string(file_value, path);
+  std::filesystem::path full = base_directory_ / file;
+  if (!std::filesystem::is_regular_file(full)) fail(path, "cannot read image '" + file + "': no such file");
+  try {
+    return read_checked_image(full, options_.read_image);
+  } catch (const std::exception& error) {
+    fail(path, "cannot read image '" + file + "': " + error.what());
+  }
+}
+
+ImageTexture Loader::load_texture(const std::string& name, const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  if (type != "image") fail(path.field("type"), "expected \"image\", got " + short_dump(value["type"]));
+  object(value, path, {"type", "file", "colour_space", "filter", "wrap", "scale", "uv_scale", "uv_offset"});
+  ImageTexture texture;
+  texture.name = name;
+  Image image = read_image_file(required(value, path, "file"), path.field("file"), texture.file);
+  // 8-bit images are painted in sRGB; floating-point formats hold linear values.
+  std::string extension = std::filesystem::path(texture.file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  bool linear_format = extension == ".exr" || extension == ".hdr" || extension == ".pfm";
+  texture.colour_space = linear_format ? ColourSpace::linear : ColourSpace::srgb;
+  if (value.contains("colour_space")) {
+    std::string space = string(value["colour_space"], path.field("colour_space"));
+    if (space == "srgb") texture.colour_space = ColourSpace::srgb;
+    else if (space == "linear") texture.colour_space = ColourSpace::linear;
+    else fail(path.field("colour_space"), "expected \"srgb\" or \"linear\", got " + short_dump(value["colour_space"]));
+  }
+  if (value.contains("filter")) {
+    std::string filter = string(value["filter"], path.field("filter"));
+    if (filter == "bilinear") texture.filter = TextureFilter::bilinear;
+    else if (filter == "trilinear") texture.filter = TextureFilter::trilinear;
+    else fail(path.field("filter"), "expected \"bilinear\" or \"trilinear\", got " + short_dump(value["filter"]));
+  }
+  TextureWrap wrap = TextureWrap::repeat;
+  if (value.contains("wrap")) {
+    std::string mode = string(value["wrap"], path.field("wrap"));
+    if (mode == "repeat") wrap = TextureWrap::repeat;
+    else if (mode == "clamp") wrap = TextureWrap::clamp;
+    else if (mode == "black") wrap = TextureWrap::black;
+    else fail(path.field("wrap"), "expected \"repeat\", \"clamp\" or \"black\", got " + short_dump(value["wrap"]));
+  }
+  if (value.contains("scale")) texture.scale = number(value["scale"], path.field("scale"), 0, 1e6);
+  auto pair = [&](const char* field, Real& a, Real& b) {
+    if (!value.contains(field)) return;
+    const Json& v = value[field];
+    if (!v.is_array() || v.size() != 2) fail(path.field(field), "expected [u, v], got " + short_dump(v));
+    a = number(v[0], path.field(field).index(0), -1e6, 1e6);
+    b = number(v[1], path.field(field).index(1), -1e6, 1e6);
+  };
+  pair("uv_scale", texture.u_scale, texture.v_scale);
+  pair("uv_offset", texture.u_offset, texture.v_offset);
+  // Texels are stored as float in every build (8 to 32 bits of data per channel).
+  texture.mipmap = std::make_shared<MipMap>(
+      to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(texture.scale), true), wrap);
+  return texture;
+}
+
+TexturedReflectance Loader::textured_reflectance(const Json& value, const JsonPath& path) {
+  if (value.is_object() && value.contains("texture")) {
+    object(value, path, {"texture"});
+    std::string name = string(value["texture"], path.field("texture"));
+    auto found = texture_index_.find(name);
+    if (found == texture_index_.end()) fail(path.field("texture"), "no texture named " + short_dump(value["texture"]));
+    if (sg::max_component(textures_[found->second]->maximum()) > 1.0f)
+      fail(path.field("texture"), "texture " + short_dump(value["texture"]) +
+                                      " has values above 1 and cannot be a reflectance (check its scale)");
+    return {Reflectance(1.0f), found->second};
+  }
+  return {reflectance(value, path), -1};
+}
+
+Reflectance Loader::largest_diffuse(const TexturedReflectance& diffuse) const {
+  return diffuse.texture < 0 ? diffuse.value : diffuse.value * textures_[diffuse.texture]->maximum();
+}
+
+Material Loader::load_material(const std::string& name, const Json& value, const JsonPath& path) {
+  if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
+  std::string type = string(required(value, path, "type"), path.field("type"));
+  Material material;
+  material.name = name;
+  // Phong and plastic reflect their two parts' sum.
+  auto require_energy_conservation = [&](const TexturedReflectance& diffuse, Reflectance specular) {
+    if (sg::max_component(largest_diffuse(diffuse) + specular) > 1.0f)
+      fail(path, "diffuse + specular must not exceed 1 in any channel (energy conservation)");
+  };
+  if (type == "lambert") {
+    object(value, path, {"type", "reflectance"});
+    material.model = LambertMaterial{textured_reflectance(required(value, path, "reflectance"), path.field("reflectance"))};
+  } else if (type == "phong") {
+    object(value, path, {"type", "diffuse", "specular", "exponent"});
+    PhongMaterial phong;
+    phong.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    phong.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    double exponent = scalar(required(value, path, "exponent"), path.field("exponent"), runtime_dim::none);
+    if (!(exponent >= 0 && exponent <= 1e6)) fail(path.field("exponent"), "expected a number in [0, 1e6]");
+    phong.exponent = static_cast<Real>(exponent);
+    require_energy_conservation(phong.diffuse, phong.specular);
+    material.model = phong;
+  } else if (type == "mirror") {
+    object(value, path, {"type", "reflectance"});
+    material.model = MirrorMaterial{reflectance(required(value, path, "reflectance"), path.field("reflectance"))};
+  } else if (type == "glass") {
+    object(value, path, {"type", "ior", "reflectance", "transmittance"});
+    GlassMaterial glass;
+    glass.ior = number(required(value, path, "ior"), path.field("ior"), 1.0 / 16, 16);
+    glass.reflectance = value.contains("reflectance") ? reflectance(value["reflectance"], path.field("reflectance"))
+                                                      : Reflectance(1.0f);
+    glass.transmittance = value.contains("transmittance")
+                              ? reflectance(value["transmittance"], path.field("transmittance"))
+                              : Reflectance(1.0f);
+    material.model = glass;
+  } else if (type == "plastic") {
+    object(value, path, {"type", "diffuse", "specular", "alpha", "ior", "pbrt_v3_fresnel"});
+    PlasticMaterial plastic;
+    plastic.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    plastic.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    plastic.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    if (value.contains("ior")) plastic.ior = number(value["ior"], path.field("ior"), 1, 16);
+    if (value.contains("pbrt_v3_fresnel"))
+      plastic.pbrt_v3_fresnel = boolean(value["pbrt_v3_fresnel"], path.field("pbrt_v3_fresnel"));
+    require_energy_conservation(plastic.diffuse, plastic.specular);
+    material.model = plastic;
+  } else {
+    fail(path.field("type"), "expected \"lambert\", \"phong\", \"mirror\", \"glass\" or \"plastic\", got " +
+                                 short_dump(value["type"]));
+  }
+  return material;
+}
+
+}  // namespace safegi::render::json

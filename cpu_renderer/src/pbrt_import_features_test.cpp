@@ -1,0 +1,166 @@
+// The pbrt-v3 features of issue 20: pbrt's quadrics as meshes, the distant
+// light, integrators substituted by name, and materials and textures checked
+// only when a shape uses them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "pbrt_import_test_support.hpp"
+
+namespace safegi::render {
+namespace {
+
+using namespace pbrt_test;
+
+// A mesh's area and its area-weighted winding normal (world space, metres).
+struct MeshMeasure {
+  double area = 0;
+  glm::dvec3 normal_sum{0.0};  // Σ area · unit winding normal
+  double outward = 0;          // Σ area · (unit normal · radial direction off the z axis)
+};
+MeshMeasure measure(const Shape& shape) {
+  MeshMeasure m;
+  for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+    glm::dvec3 a(sg::raw(shape.positions[shape.indices[i]])), b(sg::raw(shape.positions[shape.indices[i + 1]])),
+        c(sg::raw(shape.positions[shape.indices[i + 2]]));
+    glm::dvec3 n = glm::cross(b - a, c - a);
+    double area = 0.5 * glm::length(n);
+    m.area += area;
+    m.normal_sum += 0.5 * n;
+    glm::dvec3 centre = (a + b + c) / 3.0, radial(centre.x, centre.y, 0);
+    if (glm::length(radial) > 0) m.outward += 0.5 * glm::dot(n, glm::normalize(radial));
+  }
+  return m;
+}
+
+// pbrt-v3's quadrics become meshes: each one's area against its closed form
+// (256 segments per turn: within 2e-4), with pbrt's (u, v), emitting (as area
+// lights) on pbrt's side, its dp/du × dp/dv: the winding normal of an emitter
+// (re-wound through the world's mirroring, see Handedness) points there.
+TEST(PbrtImport, QuadricsAreMeshesOfTheirArea) {
+  const double pi = std::numbers::pi;
+  auto shape_of = [](const std::string& text) {
+    PbrtScene scene = import(world("AreaLightSource \"diffuse\"\n" + text));
+    EXPECT_EQ(scene.scene.shapes.size(), 1u) << text;
+    return scene.scene.shapes.at(0);
+  };
+  Shape disk = shape_of("Shape \"disk\" \"float radius\" 2 \"float innerradius\" 1 \"float height\" 0.5");
+  MeshMeasure m = measure(disk);
+  EXPECT_NEAR(m.area, pi * (4 - 1), 2e-4 * m.area);
+  EXPECT_NEAR(m.normal_sum.z, m.area, 1e-9 * m.area);  // flat, emitting towards +z
+  for (const PointObject& p : disk.positions) EXPECT_NEAR(sg::raw(p).z, 0.5f, 1e-6f);
+  ASSERT_EQ(disk.uvs.size(), disk.positions.size());
+  for (size_t i = 0; i < disk.uvs.size(); ++i)  // pbrt's v: 0 at the rim, 1 at the inner radius
+    EXPECT_NEAR(disk.uvs[i].v, (2 - glm::length(glm::vec2(sg::raw(disk.positions[i])))) / (2 - 1), 1e-5f);
+
+  Shape half = shape_of("Shape \"disk\" \"float phimax\" 180");
+  EXPECT_NEAR(measure(half).area, pi / 2, 2e-4);
+
+  m = measure(shape_of("Shape \"cylinder\" \"float radius\" 0.5 \"float zmin\" -1 \"float zmax\" 2"));
+  EXPECT_NEAR(m.area, 2 * pi * 0.5 * 3, 2e-4 * m.area);
+  EXPECT_NEAR(m.outward, m.area, 2e-4 * m.area);  // the normals point away from the axis
+
+  m = measure(shape_of("Shape \"cone\" \"float radius\" 1 \"float height\" 2"));
+  EXPECT_NEAR(m.area, pi * 1 * std::sqrt(1 + 4), 2e-4 * m.area);
+  EXPECT_GT(m.outward, 0);
+
+  // Archimedes: a sphere's zone between two planes has area 2πr·(zmax − zmin).
+  m = measure(shape_of("Shape \"sphere\" \"float radius\" 2 \"float zmin\" -0.5 \"float zmax\" 1.5"));
+  EXPECT_NEAR(m.area, 2 * pi * 2 * 2, 1e-3 * m.area);
+  EXPECT_GT(m.outward, 0);
+  m = measure(shape_of("Shape \"sphere\" \"float phimax\" 90"));
+  EXPECT_NEAR(m.area, pi, 1e-3 * m.area);
+  EXPECT_EQ(shape_of("Shape \"sphere\" \"float zmax\" 5").type, Shape::Type::sphere);  // clamped: whole
+  // Scaled unevenly, a sphere is an ellipsoid: a prolate spheroid (a = 1, c = 2) has area
+  // 2πa² (1 + c/(a e) asin e), e² = 1 − a²/c².
+  Shape spheroid = shape_of("Scale 1 1 2\nShape \"sphere\"");
+  EXPECT_EQ(spheroid.type, Shape::Type::mesh);
+  const double e = std::sqrt(1 - 1.0 / 4);
+  m = measure(spheroid);
+  EXPECT_NEAR(m.area, 2 * pi * (1 + 2 / e * std::asin(e)), 1e-3 * m.area);
+  EXPECT_GT(m.outward, 0);
+
+  // The paraboloid z = h (r/R)²: area π R/(6h²) ((R² + 4h²)^{3/2} − R³).
+  m = measure(shape_of("Shape \"paraboloid\" \"float radius\" 1 \"float zmax\" 2"));
+  EXPECT_NEAR(m.area, pi / (6 * 4) * (std::pow(1 + 16, 1.5) - 1), 1e-3 * m.area);
+  // A hyperboloid from a line parallel to the axis is a cylinder.
+  m = measure(shape_of("Shape \"hyperboloid\" \"point p1\" [1 0 0] \"point p2\" [1 0 3]"));
+  EXPECT_NEAR(m.area, 2 * pi * 3, 2e-4 * m.area);
+  EXPECT_NEAR(m.outward, m.area, 2e-4 * m.area);
+
+  EXPECT_EQ(import_error(world("ObjectBegin \"o\"\nShape \"sphere\"\nObjectEnd\nScale 1 2 1\nObjectInstance \"o\"")),
+            "scene.pbrt:3:7: error: a sphere under an object instance's transform that scales unevenly (an ellipsoid) "
+            "is not supported\nShape \"sphere\"\n      ^~~~~~~~\n"
+            "help: scale the sphere itself, inside ObjectBegin, and it becomes a mesh\n");
+  EXPECT_EQ(import_error(world("Shape \"disk\" \"float innerradius\" 2")),
+            "scene.pbrt:2:7: error: \"float innerradius\" of Shape \"disk\" must lie in [0, radius)\n"
+            "Shape \"disk\" \"float innerradius\" 2\n      ^~~~~~\n");
+}
+
+// pbrt-v3's distant light: irradiance L × scale from the direction from − to,
+// mapped as a vector by the transform at the directive.
+TEST(PbrtImport, DistantLightArrivesFromFromMinusTo) {
+  PbrtScene scene = import(world("Rotate 90 1 0 0\nLightSource \"distant\" \"point from\" [0 0 0] \"point to\" [0 0 -2] "
+                                 "\"rgb L\" [2 1 0.5] \"rgb scale\" [1.5 1.5 1.5]"));
+  ASSERT_EQ(scene.scene.distant_lights.size(), 1u);
+  const DistantLight& sun = scene.scene.distant_lights[0];
+  // +z (from − to) turned 90° about x is −y; the world's mirroring across x leaves it.
+  EXPECT_NEAR(sg::raw(sun.direction).x, 0, 1e-6f);
+  EXPECT_NEAR(sg::raw(sun.direction).y, -1, 1e-6f);
+  EXPECT_NEAR(sg::raw(sun.direction).z, 0, 1e-6f);
+  EXPECT_EQ(sg::raw(sun.irradiance), glm::vec3(3, 1.5f, 0.75f));
+  EXPECT_EQ(import_error(world("LightSource \"distant\" \"point from\" [1 1 1] \"point to\" [1 1 1]")),
+            "scene.pbrt:2:1: error: the distant light's \"from\" and \"to\" coincide\n"
+            "LightSource \"distant\" \"point from\" [1 1 1] \"point to\" [1 1 1]\n^~~~~~~~~~~\n");
+}
+
+// pbrt-v3's integrators we do not have render with the nearest we do, and a
+// warning names the substitution; their own parameters are read (noise only).
+TEST(PbrtImport, MissingIntegratorsAreSubstitutedByName) {
+  PbrtScene bdpt = import("Integrator \"bdpt\" \"integer maxdepth\" 7 \"bool visualizestrategies\" \"false\"\n" + world(""));
+  EXPECT_EQ(bdpt.scene.settings.integrator, IntegratorType::path);
+  EXPECT_EQ(bdpt.scene.settings.max_depth, 7);
+  EXPECT_EQ(bdpt.warnings,
+            "scene.pbrt:1:12: warning: integrator \"bdpt\" is not implemented: rendering with \"path\"\n"
+            "Integrator \"bdpt\" \"integer maxdepth\" 7 \"bool visualizestrategies\" \"false\"\n           ^~~~~~\n"
+            "help: the path tracer converges to the same image, with more noise where light arrives through small or "
+            "specular paths\n");
+  PbrtScene sppm = import("Integrator \"sppm\" \"integer numiterations\" 64 \"float radius\" 0.05\n" + world(""));
+  EXPECT_EQ(sppm.scene.settings.integrator, IntegratorType::photon);
+  EXPECT_EQ(sppm.scene.settings.max_depth, 5);  // pbrt-v3's default
+  EXPECT_NE(sppm.warnings.find("integrator \"sppm\" is not implemented: rendering with \"photon\""), std::string::npos);
+  EXPECT_EQ(sppm.warnings.find("not used"), std::string::npos);
+  for (const char* type : {"mlt", "volpath"}) {
+    PbrtScene scene = import("Integrator \"" + std::string(type) + "\"\n" + world(""));
+    EXPECT_EQ(scene.scene.settings.integrator, IntegratorType::path) << type;
+    EXPECT_NE(scene.warnings.find("rendering with \"path\""), std::string::npos) << type;
+  }
+}
+
+// pbrt-v3 makes a material for the shapes that use it: one overridden before
+// any shape (or a texture only such a material reads) is no error, not even
+// when nothing here could render it; once a shape uses it, its error is the
+// same, at the directive that asks for it.
+TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
+  PbrtScene scene = import(world(
+      "Texture \"odd\" \"spectrum\" \"ptex\"\n"
+      "Material \"metal\"\n"
+      "Material \"matte\" \"texture Kd\" \"odd\"\n"
+      "MakeNamedMaterial \"m\" \"string type\" \"fourier\"\n"
+      "MakeNamedMaterial \"m\" \"string type\" \"matte\" \"rgb Kd\" [0.2 0.3 0.4]\n"
+      "NamedMaterial \"m\"\nShape \"sphere\""));
+  ASSERT_EQ(scene.scene.shapes.size(), 1u);
+  EXPECT_EQ(sg::raw(diffuse(scene.scene.materials.at(scene.scene.shapes[0].material)).value),
+            glm::vec3(0.2f, 0.3f, 0.4f));
+  EXPECT_EQ(import_error(world("Material \"metal\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
+            "scene.pbrt:2:10: error: material \"metal\" is not supported\nMaterial \"metal\"\n"
+            "         ^~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"\n");
+  EXPECT_EQ(import_error(world("Texture \"odd\" \"spectrum\" \"ptex\"\nMaterial \"plastic\" \"texture Kd\" \"odd\"\n"
+                               "Shape \"sphere\"")),
+            "scene.pbrt:2:26: error: texture \"ptex\" is not supported\nTexture \"odd\" \"spectrum\" \"ptex\"\n"
+            "                         ^~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\"\n");
+}
+
+}  // namespace
+}  // namespace safegi::render
