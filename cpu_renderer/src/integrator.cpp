@@ -54,9 +54,10 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
       sum += f * light->irradiance * (cross_section / (light->probability * count));
       continue;
     }
-    // A point light's irradiance: its intensity times the solid angle a unit of
-    // receiving area subtends from it (cos θ / r², the receiver's cosine).
-    sum += f * light->intensity * solid_angle_per_area(sg::cos_theta(wi), light->distance) / (light->probability * count);
+    // A point light's irradiance: its intensity times the inverse-square law (per
+    // projected area) times the receiver's cosine.
+    sum += f * light->intensity * sg::solid_angle_per_projected_area(light->distance) * sg::cos_theta(wi) /
+           (light->probability * count);
   }
   return sum;
 }

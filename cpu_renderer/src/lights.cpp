@@ -268,7 +268,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
   if (!(cos_light > sg::zero)) return std::nullopt;
   sample.emitter_normal = to_kernel(normal);
   sample.radiance = light.radiance;
-  sample.pdf = probability * to_solid_angle_density(pdf_area, cos_light, sample.distance);
+  sample.pdf = probability * sg::pdf_area_to_solid_angle(pdf_area, sample.distance * sample.distance, normal, sample.wi);
   return sample;
 }
 
@@ -288,8 +288,8 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
   if (!(cos_light > sg::zero)) return sg::zero;
   return selection_probability(static_cast<uint32_t>(index)) *
-         to_solid_angle_density(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time), cos_light,
-                                sg::length(toward));
+         sg::pdf_area_to_solid_angle(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time),
+                                     sg::length_squared(toward), hit.normal, sg::normalize(toward));
 }
 
 std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3,

@@ -24,9 +24,6 @@ using Angle = quantity<dim::angle>;
 using Proj = quantity<dim::proj>;
 using PdfSolidAngle = quantity<dim::pdf_solid_angle>;
 using PdfArea = quantity<dim::pdf_area>;
-// dω/dA and dA/dω: converting densities between solid-angle and area measure.
-using SolidAnglePerArea = quantity<dim::quotient<dim::solid_angle, dim::area>>;
-using AreaPerSolidAngle = quantity<dim::quotient<dim::area, dim::solid_angle>>;
 
 using Reflectance = spectrum<dim::dimensionless>;  // albedos and path throughput
 using Radiance = spectrum<dim::radiance>;
@@ -42,18 +39,6 @@ using DirectionShading = direction<Shading>;
 using RenderFromObject = map<Object, World>;
 using RenderFromLight = map<LightSpace, World>;
 using ShadingFrame = frame<World, Shading>;
-
-// Solid angle subtended per unit of area at distance r whose normal makes
-// angle θ with the line of sight: dω/dA = cos θ / r². The cosine is the
-// geometric factor of the change of measure, hence the explicit cast.
-inline SolidAnglePerArea solid_angle_per_area(Proj cos_theta, Length distance) {
-  return sg::dimension_cast<dim::quotient<dim::solid_angle, dim::area>>(cos_theta / (distance * distance));
-}
-
-// A density over area as a density over solid angle: p_ω = p_A · dA/dω.
-inline PdfSolidAngle to_solid_angle_density(PdfArea pdf, Proj cos_at_area, Length distance) {
-  return pdf / solid_angle_per_area(cos_at_area, distance);
-}
 
 // Plain components for the acceleration kernel (reference units: metres).
 template <class T>

@@ -32,6 +32,16 @@
 #endif
 #endif
 
+// Run-time checks the types cannot make (a direction's unit length): on in checked
+// builds without NDEBUG, unless SAFEGI_CHECK_UNIT_LENGTH is defined first.
+#ifndef SAFEGI_CHECK_UNIT_LENGTH
+#if SAFEGI_TYPED_CHECKED && !defined(NDEBUG)
+#define SAFEGI_CHECK_UNIT_LENGTH 1
+#else
+#define SAFEGI_CHECK_UNIT_LENGTH 0
+#endif
+#endif
+
 namespace safegi {
 inline namespace SAFEGI_MODE_NAMESPACE {
 /// True when dimensions and spaces are checked (the default build).

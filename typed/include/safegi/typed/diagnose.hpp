@@ -30,8 +30,8 @@ template <fixed_string From, fixed_string To, fixed_string Ratio>
 struct conversion_between_dimensions {
   static_assert(reported<From, To, Ratio>,
                 "cannot convert a value of one dimension into another (from and to dimension, and "
-                "from/to, are named above); if the physics is right and only the bookkeeping is not, "
-                "use dimension_cast<D>");
+                "from/to, are named above): the ratio from/to is the factor too many, e.g. proj^-1 a "
+                "missing cosine, solid_angle or length^2 a pdf in another measure");
 };
 
 template <fixed_string Kind, fixed_string From, fixed_string To>
@@ -41,18 +41,18 @@ struct conversion_between_spaces {
                 "space are named above): apply a map<From, To>");
 };
 
-template <fixed_string FromSource, fixed_string FromTarget, fixed_string ToSource, fixed_string ToTarget>
+template <fixed_string Given, fixed_string Wanted>
 struct map_conversion {
-  static_assert(reported<FromSource, FromTarget, ToSource, ToTarget>,
-                "cannot convert map<A, B> into a map between other spaces (the given map's spaces, then "
-                "the wanted map's spaces, are named above); inverse(m) turns map<A, B> into map<B, A>");
+  static_assert(reported<Given, Wanted>,
+                "cannot convert map<A, B> into a map between other spaces (the given and the wanted map "
+                "are named above); inverse(m) turns map<A, B> into map<B, A>");
 };
 
 template <fixed_string Operation, fixed_string Dimension>
 struct plain_number_with_dimension {
   static_assert(reported<Operation, Dimension>,
                 "a plain number has no dimension and cannot be added to or compared with a quantity "
-                "that has one: give the number a unit (2.0f * units::metre) or use dimension_cast<D>");
+                "that has one: give the number a unit (2.0f * units::metre) or compare with safegi::zero");
 };
 
 template <fixed_string Dimension>
@@ -89,18 +89,25 @@ struct space_mismatch {
                 "map<A, B> first (operation, left and right space are named above)");
 };
 
-template <fixed_string MapFrom, fixed_string MapTo, fixed_string Argument>
+template <fixed_string Map, fixed_string Argument>
 struct map_applied_to_wrong_space {
-  static_assert(reported<MapFrom, MapTo, Argument>,
+  static_assert(reported<Map, Argument>,
                 "a map<A, B> only applies to values in its source space A "
-                "(the map's spaces and the argument's space are named above)");
+                "(the map and the argument's space are named above)");
 };
 
-template <fixed_string OuterFrom, fixed_string OuterTo, fixed_string InnerFrom, fixed_string InnerTo>
+template <fixed_string Outer, fixed_string Inner>
 struct maps_do_not_meet {
-  static_assert(reported<OuterFrom, OuterTo, InnerFrom, InnerTo>,
+  static_assert(reported<Outer, Inner>,
                 "maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C> "
-                "(outer map's spaces, then inner map's spaces, are named above)");
+                "(the outer and the inner map are named above)");
+};
+
+template <fixed_string Operation, fixed_string Left, fixed_string Right>
+struct representation_mismatch {
+  static_assert(reported<Operation, Left, Right>,
+                "the operands hold different representations (named above): convert one explicitly, "
+                "from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real");
 };
 
 template <fixed_string Space>
@@ -125,6 +132,22 @@ struct wrong_geometric_kind {
 namespace safegi {
 inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
+
+/// "float" or "double", for reports about mixed representations.
+template <class T>
+struct representation_name {
+  static constexpr auto text = fixed_string("long double");
+};
+template <>
+struct representation_name<float> {
+  static constexpr auto text = fixed_string("float");
+};
+template <>
+struct representation_name<double> {
+  static constexpr auto text = fixed_string("double");
+};
+template <class T>
+inline constexpr auto representation_text = representation_name<T>::text;
 
 template <fixed_string Operation, dimension_type Left, dimension_type Right>
 constexpr void same_dimension() {
@@ -169,6 +192,15 @@ constexpr void even_exponents() {
   if constexpr (is_checked && !dim::has_root<D, 2>)
     (void)sizeof(diagnose::sqrt_of_odd_exponent<dimension_text<D>>);
 }
+
+/// The report for mixing representations (used only by overloads that exist to report it).
+template <fixed_string Operation, class Left, class Right>
+using representation_report =
+    diagnose::representation_mismatch<Operation, representation_text<Left>, representation_text<Right>>;
+
+/// "map<world, camera>": a map's spaces, labelled, for reports that name two maps or a map and a value.
+template <class From, class To>
+inline constexpr auto map_text = joined_text<"map<", From::name, ", ", To::name, ">">;
 
 template <fixed_string Operation, class Left, class Right>
 constexpr void same_space() {

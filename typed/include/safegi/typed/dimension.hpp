@@ -211,6 +211,8 @@ using pdf_solid_angle = inverse<solid_angle>;
 using pdf_projected_solid_angle = inverse<projected_solid_angle>;
 using pdf_area = inverse<area>;
 using pdf_length = inverse<length>;
+/// dω/dA⊥, the inverse-square law (radiometry.hpp): solid angle per unit of projected area.
+using solid_angle_per_projected_area = quotient<solid_angle, product<area, proj>>;
 }  // namespace dim
 
 }  // namespace safegi

@@ -37,7 +37,8 @@ using vocabulary = vocabulary_list<
     named_dimension<dim::brdf, "brdf">,
     named_dimension<dim::pdf_projected_solid_angle, "pdf_projected_solid_angle">,
     named_dimension<dim::pdf_solid_angle, "pdf_solid_angle">, named_dimension<dim::pdf_area, "pdf_area">,
-    named_dimension<dim::pdf_length, "pdf_length">>;
+    named_dimension<dim::pdf_length, "pdf_length">,
+    named_dimension<dim::solid_angle_per_projected_area, "solid_angle_per_projected_area">>;
 
 template <class D, class Entry>
 constexpr void append_if_named(text_buffer&, Entry) {}

@@ -21,12 +21,13 @@ namespace rules {
 template <class From, class To, class Argument>
 constexpr void applies_to() {
   if constexpr (is_checked && !std::is_same_v<From, Argument>)
-    (void)sizeof(diagnose::map_applied_to_wrong_space<From::name, To::name, Argument::name>);
+    (void)sizeof(diagnose::map_applied_to_wrong_space<map_text<From, To>, joined_text<"argument in ", Argument::name>>);
 }
 template <class OuterFrom, class OuterTo, class InnerFrom, class InnerTo>
 constexpr void spaces_meet() {
   if constexpr (is_checked && !std::is_same_v<OuterFrom, InnerTo>)
-    (void)sizeof(diagnose::maps_do_not_meet<OuterFrom::name, OuterTo::name, InnerFrom::name, InnerTo::name>);
+    (void)sizeof(diagnose::maps_do_not_meet<joined_text<"outer ", map_text<OuterFrom, OuterTo>>,
+                                            joined_text<"inner ", map_text<InnerFrom, InnerTo>>>);
 }
 }  // namespace rules
 
@@ -54,7 +55,8 @@ class basic_map {
   template <class A2, class B2>
     requires(!std::is_same_v<A2, A> || !std::is_same_v<B2, B>)
   constexpr basic_map(const basic_map<A2, B2>& other) : m_(other.raw_value()) {  // NOLINT
-    (void)sizeof(diagnose::map_conversion<A2::name, B2::name, A::name, B::name>);
+    (void)sizeof(diagnose::map_conversion<joined_text<"given ", rules::map_text<A2, B2>>,
+                                          joined_text<"wanted ", rules::map_text<A, B>>>);
   }
 
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }

@@ -220,6 +220,46 @@ constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quanti
   return a.raw_value() <=> b.raw_value();
 }
 
+// Quantities of different representations (float and double) do not mix silently; these
+// overloads exist to say so in words instead of "no match for operator+" (auto: the
+// check runs as soon as the call is seen, before any error about its result).
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator+(basic_quantity<D, T> a, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"+", T, U>);
+  return a;
+}
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator-(basic_quantity<D, T> a, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"-", T, U>);
+  return a;
+}
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator*(basic_quantity<D, T> a, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"*", T, U>);
+  return a;
+}
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator/(basic_quantity<D, T> a, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"/", T, U>);
+  return a;
+}
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator==(basic_quantity<D, T>, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"==", T, U>);
+  return bool(false);
+}
+template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
+constexpr auto operator<=>(basic_quantity<D, T>, basic_quantity<E, U>) {
+  (void)sizeof(rules::representation_report<"<=>", T, U>);
+  return std::partial_ordering::unordered;
+}
+
 template <class D, class T>
 constexpr bool operator==(basic_quantity<D, T> a, zero_t) {
   return a.raw_value() == T(0);
@@ -311,6 +351,23 @@ template <quantity_like Q, quantity_like R>
 constexpr Q max(Q a, R b) {
   rules::same_dimension<"max", dimension_of<Q>, dimension_of<R>>();
   return raw(a) < raw(b) ? detail::same_kind<Q>(raw(b)) : a;
+}
+/// max(x, safegi::zero), min(x, safegi::zero): zero has every dimension.
+template <quantity_like Q>
+constexpr Q max(Q a, zero_t) {
+  return raw(a) < rep_of<Q>(0) ? Q(zero) : a;
+}
+template <quantity_like Q>
+constexpr Q max(zero_t, Q b) {
+  return safegi::max(b, zero);
+}
+template <quantity_like Q>
+constexpr Q min(Q a, zero_t) {
+  return rep_of<Q>(0) < raw(a) ? Q(zero) : a;
+}
+template <quantity_like Q>
+constexpr Q min(zero_t, Q b) {
+  return safegi::min(b, zero);
 }
 template <quantity_like Q, quantity_like L, quantity_like H>
 constexpr Q clamp(Q q, L low, H high) {

@@ -143,3 +143,18 @@ TEST(Quantity, ConstexprArithmetic) {
   SUCCEED();
 }
 }  // namespace
+
+namespace {
+// max(x, zero) is how a clamped cosine is written; zero has every dimension.
+TEST(Quantity, MinAndMaxWithZero) {
+  using namespace safegi;
+  const quantity<dim::proj> negative = -0.5f * units::proj;
+  const quantity<dim::proj> positive = 0.25f * units::proj;
+  EXPECT_EQ(raw(safegi::max(negative, zero)), 0.0f);
+  EXPECT_EQ(raw(safegi::max(zero, positive)), 0.25f);
+  EXPECT_EQ(raw(safegi::min(positive, zero)), 0.0f);
+  EXPECT_EQ(raw(safegi::min(zero, negative)), -0.5f);
+  static_assert(std::is_same_v<decltype(safegi::max(negative, zero)), quantity<dim::proj>>);
+  EXPECT_EQ(safegi::max(-2.0f, zero), 0.0f);  // plain numbers too
+}
+}  // namespace

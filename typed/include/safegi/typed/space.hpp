@@ -18,6 +18,9 @@
 //   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -92,6 +95,33 @@ using displacement = basic_vector<S, length_dimension>;
 template <dimension_type D>
 constexpr quantity<D> component(real value) {
   return make_quantity<mode_dimension<D>, real>(value);
+}
+
+#if SAFEGI_CHECK_UNIT_LENGTH
+/// Not constexpr on purpose: reached during constant evaluation it makes the
+/// initialiser a compile error; at run time it stops the program with the culprit.
+[[noreturn]] inline void report_not_unit_length(const char* kind, const char* space, vec3_rep xyz) {
+  std::fprintf(stderr,
+               "safegi: %s<%s>(%g, %g, %g) is not unit length (length %g); build it with normalize(vector), "
+               "or from_raw<%s<%s>>(v) for data known to be unit length\n",
+               kind, space, double(xyz.x), double(xyz.y), double(xyz.z), double(glm::length(xyz)), kind, space);
+  std::abort();
+}
+#endif
+
+/// Debug builds (checked, without NDEBUG) check that the components given to a direction
+/// or normal are unit length: direction<S>(3, 0, 0) is a bug the type cannot see.
+template <class S>
+constexpr vec3_rep unit_length_checked(const char* kind, vec3_rep xyz) {
+#if SAFEGI_CHECK_UNIT_LENGTH
+  // Loose enough for components rounded to a few digits (0.577, 0.577, 0.577).
+  const real squared = xyz.x * xyz.x + xyz.y * xyz.y + xyz.z * xyz.z;
+  if (!(squared > real(1) - real(2e-3) && squared < real(1) + real(2e-3)))
+    report_not_unit_length(kind, S::name.text, xyz);
+#else
+  (void)kind;
+#endif
+  return xyz;
 }
 
 /// The storage and raw access every three-component kind shares.
@@ -198,7 +228,9 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   using space_type = S;
   constexpr basic_direction() : base(vec3_rep(real(0), real(0), real(1))) {}
   /// Components of a unit vector (not renormalised; use normalize(vector) otherwise).
-  constexpr explicit basic_direction(real x, real y, real z) : base(vec3_rep(x, y, z)) {}
+  /// Debug builds stop the program if they are not unit length.
+  constexpr explicit basic_direction(real x, real y, real z)
+      : base(detail::unit_length_checked<S>("direction", vec3_rep(x, y, z))) {}
   constexpr basic_direction(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)
@@ -229,8 +261,10 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
  public:
   using space_type = S;
   constexpr basic_normal() : base(vec3_rep(real(0), real(0), real(1))) {}
-  /// Components of a unit normal (not renormalised).
-  constexpr explicit basic_normal(real x, real y, real z) : base(vec3_rep(x, y, z)) {}
+  /// Components of a unit normal (not renormalised). Debug builds stop the program if
+  /// they are not unit length.
+  constexpr explicit basic_normal(real x, real y, real z)
+      : base(detail::unit_length_checked<S>("normal", vec3_rep(x, y, z))) {}
   constexpr basic_normal(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)

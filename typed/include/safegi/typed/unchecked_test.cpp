@@ -55,3 +55,14 @@ TEST(Unchecked, DescriptionsCarryKindOnly) {
   EXPECT_EQ((describe<map<object, world>>().to_string()), "map");
 }
 }  // namespace
+
+namespace {
+// Printing: nothing but the numbers and the kind survive the unchecked build.
+TEST(Unchecked, PrintingShowsNumbersAndKinds) {
+  using namespace safegi;
+  EXPECT_EQ(safegi::to_string(point<world>(1.0f * units::metre, 2.0f * units::metre, 0.0f * units::metre)),
+            "point(1, 2, 0)");
+  EXPECT_EQ(safegi::to_string(direction<world>(0, 0, 1)), "direction(0, 0, 1)");
+  EXPECT_EQ(safegi::to_string(spectrum<dim::radiance>(2.0f * units::radiance_unit)), "(2, 2, 2)");
+}
+}  // namespace
