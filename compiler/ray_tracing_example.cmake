@@ -1,7 +1,7 @@
 # The annotated ray-tracing pipeline of examples/shaders/ray_tracing/: checked
 # as one program (the hit and miss payloads against the ray generation
 # shader's), each stage compiled with -V --target-env vulkan1.2 to a module
-# spirv-val accepts; and the closest-hit shader with the area pdf left in the
+# spirv-val accepts, alone and in one program run; and the closest-hit shader with the area pdf left in the
 # area measure (the classic Jacobian bug) is refused.
 #   cmake -DSAFEGLSLC=<exe> -DSPIRV_VAL=<spirv-val> -DDIR=<example dir> -DOUT=<scratch dir> -P ray_tracing_example.cmake
 file(REMOVE_RECURSE ${OUT})
@@ -23,6 +23,19 @@ run(TRUE ${SAFEGLSLC} ${stages})
 foreach(stage IN LISTS stages)
   run(TRUE ${SAFEGLSLC} -V --target-env vulkan1.2 ${stage} -o ${OUT}/${stage}.spv)
   run(TRUE ${SPIRV_VAL} --target-env vulkan1.2 ${OUT}/${stage}.spv)
+endforeach()
+
+# The whole pipeline in one -V run (two miss shaders: one module each) gives the same modules.
+set(outputs)
+foreach(stage IN LISTS stages)
+  list(APPEND outputs -o ${OUT}/${stage}.program.spv)
+endforeach()
+run(TRUE ${SAFEGLSLC} -V --target-env vulkan1.2 ${stages} ${outputs})
+foreach(stage IN LISTS stages)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/${stage}.spv ${OUT}/${stage}.program.spv RESULT_VARIABLE differs)
+  if(differs)
+    message(FATAL_ERROR "${stage}: the program run's module differs from the stage's own")
+  endif()
 endforeach()
 
 file(READ ${DIR}/direct.sgl.rchit hit)
