@@ -127,6 +127,20 @@ UniformLocations program_uniform_locations(const CompileResult& compiled) {
   return result;
 }
 
+SpirvResult to_spirv_one_by_one(const CompileResult& compiled, const SpirvOptions& options) {
+  SpirvResult result;
+  result.success = true;
+  for (const StageOutput& stage : compiled.stages) {
+    CompileResult single = compiled;
+    single.stages = {stage};
+    SpirvResult one = to_spirv(single, options);
+    result.log += one.log;
+    result.success = result.success && one.success;
+    for (SpirvModule& module : one.modules) result.modules.push_back(std::move(module));
+  }
+  return result;
+}
+
 }  // namespace
 
 SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options) {
@@ -140,6 +154,12 @@ SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options)
     result.log = "safeglslc: error: SPIR-V targets are vulkan1.0 … vulkan1.3 and spirv1.0 … spirv1.6\n";
     return result;
   }
+  // glslang links one entry point per stage: a ray-tracing pipeline's several
+  // hit or miss shaders become one module each, compiled on their own (their
+  // payloads were checked against each other before).
+  for (std::size_t i = 0; i < compiled.stages.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (compiled.stages[i].stage == compiled.stages[j].stage) return to_spirv_one_by_one(compiled, options);
   initialise_glslang();
   const bool vulkan = options.client == SpirvClient::vulkan;
   const int spirv_minor = options.spirv_minor.value_or(default_spirv_minor(options));
