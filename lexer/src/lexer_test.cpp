@@ -213,11 +213,11 @@ TEST_F(LexerTest, InvalidCharacters) {
             "float \xC3\xA9t\xC3\xA9 = 1; // caf\xC3\xA9 ok\n"
             "        ^\n"
             "t.glsl:4:1: error: invalid character '`' in program\n"
-            "`\x01\n"
+            "`\\x01\n"  // the control byte quoted as text, four columns wide
             "^\n"
             "t.glsl:4:2: error: invalid control character 0x01 in program\n"
-            "`\x01\n"
-            " ^\n");
+            "`\\x01\n"
+            " ^~~~\n");
 }
 
 TEST_F(LexerTest, StringLiterals) {

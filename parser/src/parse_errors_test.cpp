@@ -128,8 +128,8 @@ TEST(ParseErrors, NestingCountsEachLevelOnce) {
   EXPECT_EQ(parse_text("void f() { x = " + nested(255, "(", "1.0", ")") + "; }")->errors(), "");
   const std::string parens = "void f() { x = " + nested(256, "(", "1.0", ")") + "; }";
   EXPECT_EQ(parse_text(parens)->errors(),
-            "test.glsl:1:271: error: nesting too deep: more than 256 levels of blocks, parentheses, brackets or operators\n" +
-                parens + "\n" + std::string(270, ' ') + "^\n");
+            std::string("test.glsl:1:271: error: nesting too deep: more than 256 levels of blocks, parentheses, brackets or operators\n") +
+                "..." + parens.substr(194, 154) + "...\n" + std::string(3 + 76, ' ') + "^\n");  // cut around the caret
   EXPECT_EQ(parse_text("void f() " + nested(256, "{", "", "}"))->errors(), "");
   EXPECT_EQ(parse_text("void f() " + nested(257, "{", "", "}"))->diagnostics.error_count(), 1u);
   EXPECT_EQ(parse_text("void f() { x = " + nested(255, "g(", "1.0", ")") + "; }")->errors(), "");
