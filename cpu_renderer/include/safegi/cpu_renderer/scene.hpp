@@ -94,6 +94,9 @@ template <class... Lambdas>
 struct Overloaded : Lambdas... {
   using Lambdas::operator()...;
 };
+// Clang 14 does not deduce an aggregate's template arguments (C++20's P1816).
+template <class... Lambdas>
+Overloaded(Lambdas...) -> Overloaded<Lambdas...>;
 
 // Surface parameters of a mesh vertex (dimensionless), for texture lookups.
 struct TexCoord {
