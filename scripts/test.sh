@@ -22,7 +22,14 @@ if ((sanitize)); then
   # libraries (no sanitize-labelled test runs them; the Release pass does).
   # -O1 -g1, ASan's recommendation: compiles about 2.5x faster than -O2 -g
   # (the pass's largest cost in CI) and keeps file:line in its reports.
+  # Clang, with libFuzzer's coverage instrumentation (-fsanitize=fuzzer-no-link):
+  # the same objects then link the fuzz targets (scripts/fuzz.sh reuses this
+  # folder when SAFEGI_FUZZ_BUILD_DIR names it, as CI does), so the pipeline is
+  # compiled twice in CI, not three times; clang also compiles this pass about
+  # 25 % faster than GCC. The Release pass stays GCC, so both compilers build it.
   SAFEGI_GENERATOR=Ninja "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON \
+      -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+      "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link" -DSAFEGI_FUZZ=ON \
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
       -DSAFEGI_BUILD_GL=OFF -DSAFEGI_BUILD_BENCH=OFF -DSAFEGI_BUILD_RENDERER_PROGRAMS=OFF
   (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" -L sanitize --no-tests=error)
