@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "pbrt_colour.hpp"
 #include "pbrt_import_test_support.hpp"
 
 namespace safegi::render {
@@ -113,6 +114,49 @@ TEST(PbrtImport, DistantLightArrivesFromFromMinusTo) {
   EXPECT_EQ(import_error(world("LightSource \"distant\" \"point from\" [1 1 1] \"point to\" [1 1 1]")),
             "scene.pbrt:2:1: error: the distant light's \"from\" and \"to\" coincide\n"
             "LightSource \"distant\" \"point from\" [1 1 1] \"point to\" [1 1 1]\n^~~~~~~~~~~\n");
+}
+
+// Kim et al.'s cubic fit of the Planckian locus (2002, 1667-25000 K): the
+// chromaticity of a blackbody, independent of our integration.
+std::array<double, 2> planckian_locus(double t) {
+  double x = t <= 4000 ? -0.2661239e9 / (t * t * t) - 0.2343589e6 / (t * t) + 0.8776956e3 / t + 0.179910
+                       : -3.0258469e9 / (t * t * t) + 2.1070379e6 / (t * t) + 0.2226347e3 / t + 0.240390;
+  double y = t <= 2222   ? -1.1063814 * x * x * x - 1.34811020 * x * x + 2.18555832 * x - 0.20219683
+             : t <= 4000 ? -0.9549476 * x * x * x - 1.37418593 * x * x + 2.09137015 * x - 0.16748867
+                         : 3.0817580 * x * x * x - 5.87338670 * x * x + 3.75112997 * x - 0.37001483;
+  return {x, y};
+}
+
+// pbrt-v3's "blackbody" [temperature scale]: its chromaticity is on the
+// Planckian locus (within 1.5e-3 from 2700 K up, 4e-3 at 2000 K: Wyman et
+// al.'s fit of the colour-matching functions errs most in the red tail, where
+// a cool blackbody's energy is; measured 2.6e-3 / 2.9e-3 in y / x at 2000 K),
+// its luminance is that of Planck's law normalised at its peak (a 6500 K
+// spectrum peaks at 446 nm, inside the visible range, so Y is near 0.88), and
+// the scale multiplies it.
+TEST(PbrtImport, BlackbodyColoursFollowThePlanckianLocus) {
+  for (double kelvin : {2000.0, 2700.0, 4000.0, 6500.0, 10000.0, 20000.0}) {
+    std::array<double, 3> xyz = pbrt::normalized_blackbody_xyz(kelvin);
+    double sum = xyz[0] + xyz[1] + xyz[2];
+    std::array<double, 2> locus = planckian_locus(kelvin);
+    double tolerance = kelvin < 2500 ? 4e-3 : 1.5e-3;
+    EXPECT_NEAR(xyz[0] / sum, locus[0], tolerance) << kelvin;
+    EXPECT_NEAR(xyz[1] / sum, locus[1], tolerance) << kelvin;
+  }
+  EXPECT_NEAR(pbrt::normalized_blackbody_xyz(6500)[1], 0.884, 0.01);
+  std::array<double, 3> warm = pbrt::normalized_blackbody_rgb(2700), cool = pbrt::normalized_blackbody_rgb(10000);
+  EXPECT_GT(warm[0], warm[1]);
+  EXPECT_GT(warm[1], warm[2]);
+  EXPECT_GT(cool[2], cool[1]);
+  EXPECT_GT(cool[1], cool[0]);
+
+  PbrtScene scene = import(world("LightSource \"point\" \"blackbody I\" [2700 3]"));
+  ASSERT_EQ(scene.scene.point_lights.size(), 1u);
+  glm::vec3 intensity = sg::raw(scene.scene.point_lights[0].intensity);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(intensity[k], 3 * warm[k], 1e-5) << k;
+  EXPECT_EQ(import_error(world("LightSource \"point\" \"blackbody I\" [2700]")),
+            "scene.pbrt:2:35: error: \"blackbody I\" takes [temperature scale] (2 values, pbrt-v3), found 1\n"
+            "LightSource \"point\" \"blackbody I\" [2700]\n                                  ^~~~~~\n");
 }
 
 // pbrt-v3's integrators we do not have render with the nearest we do, and a

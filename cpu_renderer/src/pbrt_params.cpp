@@ -1,5 +1,7 @@
 #include "pbrt_params.hpp"
 
+#include "pbrt_colour.hpp"
+
 #include <cmath>
 
 namespace safegi::render::pbrt {
@@ -115,20 +117,23 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
     value.texture = param->strings[0];
     return value;
   }
-  if (param->type == ParamType::blackbody || param->type == ParamType::spectrum)
-    fail_at(*param, declared(*param) + ": " + param->type_name + " spectra are not supported",
-            "give the colour as \"rgb " + param->name + "\" [r g b]");
-  if (param->numbers.size() != 3)
-    fail(param->values, declared(*param) + " takes 3 values, found " + std::to_string(param->numbers.size()));
   const std::vector<double>& v = param->numbers;
-  if (param->type == ParamType::xyz) {
-    // pbrt-v3's XYZToRGB (sRGB primaries, D65), as its RGB build converts.
-    value.rgb = {3.240479 * v[0] - 1.537150 * v[1] - 0.498535 * v[2],
-                 -0.969256 * v[0] + 1.875991 * v[1] + 0.041556 * v[2],
-                 0.055648 * v[0] - 0.204043 * v[1] + 1.057311 * v[2]};
-  } else {
-    value.rgb = {v[0], v[1], v[2]};
+  if (param->type == ParamType::spectrum)
+    fail_at(*param, declared(*param) + ": sampled spectra are not supported",
+            "give the colour as \"rgb " + param->name + "\" [r g b]");
+  if (param->type == ParamType::blackbody) {
+    // pbrt-v3 reads [temperature scale]; pbrt-v4's one value is another format.
+    if (v.size() != 2)
+      fail(param->values, declared(*param) + " takes [temperature scale] (2 values, pbrt-v3), found " +
+                              std::to_string(v.size()));
+    if (!(v[0] > 0)) fail(param->values, declared(*param) + ": the temperature (kelvin) must be above 0");
+    value.rgb = normalized_blackbody_rgb(v[0]);
+    for (double& c : value.rgb) c *= v[1];
+    return value;
   }
+  if (v.size() != 3)
+    fail(param->values, declared(*param) + " takes 3 values, found " + std::to_string(v.size()));
+  value.rgb = param->type == ParamType::xyz ? xyz_to_rgb({v[0], v[1], v[2]}) : Rgb{v[0], v[1], v[2]};
   return value;
 }
 

@@ -41,8 +41,9 @@ class ParamSet {
   std::string one_string(std::string_view name, const std::string& fallback);
   std::optional<Triple> one_point(std::string_view name);
   std::vector<double> floats(std::string_view name);              // every value, any count
-  // rgb/color, xyz (converted as pbrt-v3 does), or a texture name where
-  // `allow_texture`; blackbody and sampled spectra are errors.
+  // rgb/color, xyz and blackbody [temperature scale] (converted as pbrt-v3's
+  // RGB build does), or a texture name where `allow_texture`; sampled spectra
+  // are errors.
   std::optional<SpectrumValue> spectrum(std::string_view name, bool allow_texture);
 
   // A parameter pbrt-v3 reads but the importer cannot represent: an error,
