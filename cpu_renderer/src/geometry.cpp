@@ -202,7 +202,7 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Rend
 
 Geometry::Geometry(const Scene& scene) {
   Real time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
-  const bool textured = !scene.textures.empty();
+  const bool textured = scene.textured();
   if (textured) static_primitives_.record_faces();
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];

@@ -113,7 +113,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     const Reflectance* diffuse = diffuse_part ? &diffuse_part->value : &texel;
     if constexpr (textured) {
       travelled += hit->distance;
-      if (diffuse_part && diffuse_part->texture >= 0) {
+      if (diffuse_part && diffuse_part->textured()) {
         // The cone's width across the surface, stretched by its tilt (a plain ratio).
         Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
         Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);

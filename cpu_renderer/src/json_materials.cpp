@@ -58,8 +58,8 @@ ImageTexture Loader::load_texture(const std::string& name, const Json& value, co
     a = number(v[0], path.field(field).index(0), -1e6, 1e6);
     b = number(v[1], path.field(field).index(1), -1e6, 1e6);
   };
-  pair("uv_scale", texture.u_scale, texture.v_scale);
-  pair("uv_offset", texture.u_offset, texture.v_offset);
+  pair("uv_scale", texture.mapping.u_scale, texture.mapping.v_scale);
+  pair("uv_offset", texture.mapping.u_offset, texture.mapping.v_offset);
   // Texels are stored as float in every build (8 to 32 bits of data per channel).
   texture.mipmap = std::make_shared<MipMap>(
       to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(texture.scale), true), wrap);

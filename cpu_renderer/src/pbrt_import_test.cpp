@@ -142,10 +142,11 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error(world("LightSource \"goniometric\"")),
             "scene.pbrt:2:13: error: light \"goniometric\" is not supported\nLightSource \"goniometric\"\n"
             "            ^~~~~~~~~~~~~\nhelp: supported: \"point\", \"spot\", \"distant\", \"infinite\"\n");
-  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"spectrum\" \"checkerboard\""))),
-            "scene.pbrt:2:24: error: texture \"checkerboard\" is not supported\n"
-            "Texture \"t\" \"spectrum\" \"checkerboard\"\n"
-            "                       ^~~~~~~~~~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\"\n");
+  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"spectrum\" \"mix\""))),
+            "scene.pbrt:2:24: error: texture \"mix\" is not supported\n"
+            "Texture \"t\" \"spectrum\" \"mix\"\n"
+            "                       ^~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", "
+            "\"fbm\", \"wrinkled\", \"windy\", \"marble\"\n");
   EXPECT_EQ(import_error("Integrator \"ambientocclusion\"\n" + world("")),
             "scene.pbrt:1:12: error: integrator \"ambientocclusion\" is not supported\nIntegrator \"ambientocclusion\"\n"
             "           ^~~~~~~~~~~~~~~~~~\n"
@@ -521,8 +522,8 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   ASSERT_EQ(s.textures.size(), 3u);
   const ImageTexture& g = s.textures[0];
   EXPECT_EQ(g.colour_space, ColourSpace::linear);  // .exr: pbrt-v3's gamma is false
-  EXPECT_EQ(g.u_scale, 2.0f);
-  EXPECT_EQ(g.v_offset, 0.5f);
+  EXPECT_EQ(g.mapping.u_scale, 2.0f);
+  EXPECT_EQ(g.mapping.v_offset, 0.5f);
   EXPECT_EQ(g.mipmap->wrap(), TextureWrap::clamp);
   // Flipped as pbrt-v3 flips it (t = 0 is the bottom row), times "scale".
   EXPECT_EQ(sg::raw(g.mipmap->texel(0, 0, 0)), glm::vec3(0.4f));
@@ -558,7 +559,7 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(import_error(world(used(hot + "Material \"plastic\" \"texture Ks\" \"h\"")), with_images()),
             "scene.pbrt:3:20: error: an image texture as \"Ks\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture Ks\" \"h\"\n                   ^~~~~~~~~~~~\n"
-            "help: only diffuse reflectances (\"Kd\" of matte, plastic and uber) take image textures here\n");
+            "help: only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"")), with_images()),
             "scene.pbrt:2:50: error: pbrt-v3 reads no image format \".jpg\"\n"
             "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"\n"

@@ -35,12 +35,14 @@ struct MaterialInstance {
   std::optional<Diagnostic> error;
 };
 
-// A texture as the Scene can hold it: a value times, optionally, an image
-// (pbrt's "constant", "imagemap", and "scale" of the two).
+// A texture as the Scene can hold it: a value times, optionally, an image or
+// a pattern (pbrt's "constant", "imagemap", procedural textures, and "scale"
+// of a constant and one of those).
 struct TextureEntry {
-  std::string texture_class;  // "constant", "imagemap", "scale"
-  Rgb value{1, 1, 1};         // a constant's value, or the factor on `image`
-  int image = -1;             // index into Scene::textures; -1: a constant
+  std::string texture_class;  // "constant", "imagemap", "checkerboard", "scale", ...
+  Rgb value{1, 1, 1};         // a constant's value, or the factor on `image` or `pattern`
+  int image = -1;             // index into Scene::textures; -1: none
+  int pattern = -1;           // index into Scene::patterns; -1: none
   SourceRange at;
   std::optional<Diagnostic> error;  // as MaterialInstance::error: reported when a used material reads it
 };
@@ -121,11 +123,17 @@ class Importer {
   std::optional<double> float_param(ParamSet& params, const char* name);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
   TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image);
+  Reflectance texture_maximum(int image, int pattern) const;
   double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
   double index_of_refraction(ParamSet& params, SourceRange at);
   void texture(const Directive& d);
   TextureEntry convert_texture(const Directive& d, bool spectrum);
   int image_texture(const std::string& name, ParamSet& params, SourceRange at);
+  // Mappings and procedural textures (pbrt_patterns.cpp).
+  UvMapping uv_mapping(ParamSet& params, SourceRange at);
+  SolidMapping solid_mapping(SourceRange at);
+  Reflectance pattern_colour(ParamSet& params, const char* name, double fallback);
+  std::optional<Pattern> pattern(const std::string& texture_class, ParamSet& params, SourceRange at);
   Image read_image(const Param& filename);
 
   // World block (pbrt_world.cpp).

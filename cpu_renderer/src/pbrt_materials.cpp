@@ -36,7 +36,11 @@ constexpr MaterialParams kMaterialParams[] = {
       "bumpmap"}},
 };
 constexpr const char* kSupportedMaterials = "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"";
-constexpr const char* kSupportedTextures = "supported: \"constant\", \"imagemap\", \"scale\"";
+constexpr const char* kSupportedTextures =
+    "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
+    "\"windy\", \"marble\"";
+constexpr const char* kNoTexturedNumbers =
+    "nothing here reads a textured number: roughness, bump maps and alpha masks take constants";
 
 bool reads_material_params(const std::string& type, const ParamSet& shape) {
   for (const MaterialParams& m : kMaterialParams)
@@ -69,12 +73,6 @@ std::string lower_extension(const std::string& file) {
 double roughness_to_alpha(double roughness) {
   double x = std::log(std::max(roughness, 1e-3));
   return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
-}
-
-std::string format_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
 }
 
 }  // namespace
@@ -113,18 +111,24 @@ std::optional<double> Importer::float_param(ParamSet& params, const char* name) 
   return usable(found->second).value[0];  // float textures are constants (image ones are refused at their definition)
 }
 
+// The largest value (per channel) of an image texture or a pattern.
+Reflectance Importer::texture_maximum(int image, int pattern) const {
+  return image >= 0 ? result_.scene.textures[image].mipmap->maximum() : largest_value(result_.scene.patterns[pattern].pattern);
+}
+
 TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image) {
   TextureEntry entry;
   entry.value = {fallback, fallback, fallback};
   const Param* param = nullptr;
   if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
   Rgb largest = entry.value;
-  if (entry.image >= 0) {
+  if (entry.image >= 0 || entry.pattern >= 0) {
+    const char* kind = entry.image >= 0 ? "an image texture" : "a procedural texture";
     if (!allow_image)
-      params.fail_at(*param, "an image texture as \"" + std::string(name) + "\" of " + params.context() +
+      params.fail_at(*param, std::string(kind) + " as \"" + std::string(name) + "\" of " + params.context() +
                                  " is not supported",
-                     "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take image textures here");
-    sg::vec3_rep texel = sg::raw(result_.scene.textures[entry.image].mipmap->maximum());
+                     "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here");
+    sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
     for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
   }
   for (int c = 0; c < 3; ++c)
@@ -137,6 +141,7 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   result.value = sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(entry.value[0]), static_cast<Real>(entry.value[1]),
                                                         static_cast<Real>(entry.value[2])));
   result.texture = entry.image;
+  result.pattern = entry.pattern;
   return result;
 }
 
@@ -235,7 +240,7 @@ MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, d
   if (sg::is_black(ks)) return lambert_or_black(kd);  // the Lambertian lobe alone, as pbrt-v3 builds it
   PlasticMaterial plastic{kd, ks, static_cast<Real>(alpha), static_cast<Real>(ior), pbrt_v3_fresnel};
   sg::vec3_rep largest = sg::raw(kd.value);
-  if (kd.texture >= 0) largest *= sg::raw(result_.scene.textures[kd.texture].mipmap->maximum());
+  if (kd.textured()) largest *= sg::raw(texture_maximum(kd.texture, kd.pattern));
   sg::vec3_rep sum = largest + sg::raw(ks);
   if (std::max({sum.x, sum.y, sum.z}) > 1)  // pbrt-v3 renders it as it is (veach-mis has Kd 0.13 + Ks 1): so do we
     warn(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
@@ -342,9 +347,7 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
       entry.value = {value, value, value};
     }
   } else if (texture_class == "imagemap") {
-    if (!spectrum)
-      fail(entry.at, "float image textures are not supported",
-           "nothing here reads a textured number: roughness, bump maps and alpha masks take constants");
+    if (!spectrum) fail(entry.at, "float image textures are not supported", kNoTexturedNumbers);
     entry.image = image_texture(name, params, d.range);
   } else if (texture_class == "scale") {
     // pbrt-v3's ScaleTexture: tex1 × tex2 (each 1 by default); a constant times
@@ -354,16 +357,22 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
       for (const char* factor : {"tex1", "tex2"}) {
         std::optional<TextureEntry> given = spectrum_or_texture(params, factor, param);
         if (!given) continue;
-        if (given->image >= 0 && entry.image >= 0)
-          params.fail_at(*param, "a product of two image textures is not supported",
-                         "the renderer multiplies one image by a constant");
+        const bool textured = entry.image >= 0 || entry.pattern >= 0;
+        if ((given->image >= 0 || given->pattern >= 0) && textured)
+          params.fail_at(*param, "a product of two textures is not supported",
+                         "the renderer multiplies one image or pattern by a constant");
         if (given->image >= 0) entry.image = given->image;
+        if (given->pattern >= 0) entry.pattern = given->pattern;
         for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
       }
     } else {
       double value = float_param(params, "tex1").value_or(1) * float_param(params, "tex2").value_or(1);
       entry.value = {value, value, value};
     }
+  } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range)) {
+    if (!spectrum) fail(entry.at, "float procedural textures are not supported", kNoTexturedNumbers);
+    result_.scene.patterns.push_back({name, std::move(*made)});
+    entry.pattern = static_cast<int>(result_.scene.patterns.size()) - 1;
   } else {
     fail(entry.at, "texture \"" + texture_class + "\" is not supported", kSupportedTextures);
   }
@@ -387,20 +396,7 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
   double scale = params.one_float("scale", 1);
   if (!(scale >= 0 && scale <= 1e6)) fail(at, "\"float scale\" of " + params.context() + " must lie in [0, 1e6]");
   texture.scale = static_cast<Real>(scale);
-  std::string mapping = params.one_string("mapping", "uv");
-  if (mapping != "uv")
-    params.fail_at(*params.find("mapping", {ParamType::string}), "texture mapping \"" + mapping + "\" is not supported",
-                   "supported: \"uv\" (the shape's own (u, v))");
-  auto uv_number = [&](const char* parameter, double fallback, Real& out) {
-    double value = params.one_float(parameter, fallback);
-    if (!(std::fabs(value) <= 1e6))
-      fail(at, "\"float " + std::string(parameter) + "\" of " + params.context() + " must lie in [-1e6, 1e6]");
-    out = static_cast<Real>(value);
-  };
-  uv_number("uscale", 1, texture.u_scale);
-  uv_number("vscale", 1, texture.v_scale);
-  uv_number("udelta", 0, texture.u_offset);
-  uv_number("vdelta", 0, texture.v_offset);
+  texture.mapping = uv_mapping(params, at);
   std::string wrap_name = params.one_string("wrap", "repeat");
   TextureWrap wrap = TextureWrap::repeat;
   if (wrap_name == "black") wrap = TextureWrap::black;

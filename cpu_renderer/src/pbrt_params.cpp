@@ -3,6 +3,7 @@
 #include "pbrt_colour.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace safegi::render::pbrt {
 
@@ -158,6 +159,12 @@ std::vector<const Param*> ParamSet::unused() const {
   for (size_t i = 0; i < params_.size(); ++i)
     if (!used_[i]) result.push_back(params_[i]);
   return result;
+}
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 }  // namespace safegi::render::pbrt

@@ -67,4 +67,7 @@ class ParamSet {
   ParamSet* fallback_;
 };
 
+// A number as messages quote it (%g).
+std::string format_number(double value);
+
 }  // namespace safegi::render::pbrt

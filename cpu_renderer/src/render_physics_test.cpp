@@ -70,24 +70,32 @@ TEST(RenderPhysics, DiffusePlaneUnderPointLight) {
   }
 }
 
+// A 20 m diffuse square at y = 0 of albedo `rho`, seen straight down from 5 m
+// (17 × 17 pixels, 40°), lit by a distant light from `theta` off its normal.
+Scene plane_under_the_sun(double rho, double irradiance, double theta) {
+  Scene scene = parse_scene(R"json({
+    "render": {"resolution": [17, 17], "integrator": "direct", "photons": 1000},
+    "camera": {"position": {"value": [0, 5, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+               "up": [0, 0, -1], "fov": "40 deg"},
+    "materials": {"matte": {"type": "lambert", "reflectance": 1}},
+    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
+                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}]})json",
+                            "test.json", SAFEGI_SCENES_DIR);
+  std::get<LambertMaterial>(scene.materials[0].model).diffuse.value = Reflectance(static_cast<Real>(rho));
+  DistantLight sun;
+  sun.direction = DirectionWorld(static_cast<Real>(std::sin(theta)), static_cast<Real>(std::cos(theta)), 0);
+  sun.irradiance = spectrum<dim::irradiance>(static_cast<Real>(irradiance) * units::watt_per_square_metre);
+  scene.distant_lights.push_back(sun);
+  return scene;
+}
+
 // Diffuse plane under a distant light (pbrt-v3's, from 50° off the normal):
 // L = ρ/π · E cos θ everywhere, the estimator exact but for float rounding;
 // with no specular surface the photon integrator traces its photons (from a
 // disc across the scene) and gathers none, so it too is exact.
 TEST(RenderPhysics, DiffusePlaneUnderDistantLight) {
   const double rho = 0.5, irradiance = 3.0, theta = 50 * kPiD / 180;
-  Scene scene = parse_scene(R"json({
-    "render": {"resolution": [17, 17], "integrator": "direct", "photons": 1000},
-    "camera": {"position": {"value": [0, 5, 0], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
-               "up": [0, 0, -1], "fov": "40 deg"},
-    "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
-    "shapes": [{"type": "quad", "material": "matte", "origin": {"value": [-10, 0, -10], "unit": "m"},
-                "edge_u": {"value": [0, 0, 20], "unit": "m"}, "edge_v": {"value": [20, 0, 0], "unit": "m"}}]})json",
-                             "test.json", SAFEGI_SCENES_DIR);
-  DistantLight sun;
-  sun.direction = DirectionWorld(static_cast<Real>(std::sin(theta)), static_cast<Real>(std::cos(theta)), 0);
-  sun.irradiance = spectrum<dim::irradiance>(static_cast<Real>(irradiance) * units::watt_per_square_metre);
-  scene.distant_lights.push_back(sun);
+  Scene scene = plane_under_the_sun(rho, irradiance, theta);
   const double expected = rho / kPiD * irradiance * std::cos(theta);
   for (IntegratorType integrator : {IntegratorType::direct, IntegratorType::path, IntegratorType::photon})
     for (const Knobs& knobs : estimator_knobs()) {
@@ -95,6 +103,44 @@ TEST(RenderPhysics, DiffusePlaneUnderDistantLight) {
       Image image = render_scene(scene, 4, 2, std::nullopt, knobs.apply);
       for (float v : image.rgb) ASSERT_NEAR(v, expected, 1e-5 * expected) << static_cast<int>(integrator) << ", " << knobs.name;
     }
+}
+
+// The same plane with a box-filtered checkerboard of 1 m checks as its
+// albedo: a pixel whose footprint, widened by a pixel on every side, lies in
+// one check is that check's L = ρ/π · E cos θ exactly (but for rounding);
+// the others, straddling an edge, lie between the two.
+TEST(RenderPhysics, CheckerboardPlaneUnderDistantLight) {
+  const double irradiance = 3.0, theta = 50 * kPiD / 180, even = 0.8, odd = 0.1;
+  Scene scene = plane_under_the_sun(1, irradiance, theta);
+  CheckerboardPattern board;
+  board.mapping.u_scale = board.mapping.v_scale = 20;  // u runs along z, v along x: s = z + 10, t = x + 10
+  board.even = Reflectance(static_cast<Real>(even));
+  board.odd = Reflectance(static_cast<Real>(odd));
+  scene.patterns.push_back({"checks", board});
+  std::get<LambertMaterial>(scene.materials[0].model).diffuse.pattern = 0;
+  const double per_albedo = irradiance * std::cos(theta) / kPiD;
+  Image image = render_scene(scene, 16);
+  const int size = 17;
+  const double half = std::tan(20 * kPiD / 180), camera_height = 5;
+  int whole[2] = {0, 0};
+  for (int py = 0; py < size; ++py)
+    for (int px = 0; px < size; ++px) {
+      // The pixel's footprint on the plane, widened by a pixel: x = h·sx, z = -h·sy.
+      auto x_at = [&](double pixel) { return camera_height * (2 * pixel / size - 1) * half; };
+      auto z_at = [&](double pixel) { return -camera_height * (1 - 2 * pixel / size) * half; };
+      const double x0 = x_at(px - 1), x1 = x_at(px + 2), z0 = z_at(py - 1), z1 = z_at(py + 2);
+      const float value = image.pixel(px, py)[0];
+      if (std::floor(x0) == std::floor(x1) && std::floor(z0) == std::floor(z1)) {
+        const bool is_even = static_cast<long>(std::floor(x0) + std::floor(z0)) % 2 == 0;
+        ++whole[is_even];
+        EXPECT_NEAR(value, (is_even ? even : odd) * per_albedo, 1e-5) << px << ", " << py;
+      } else {
+        EXPECT_GE(value, odd * per_albedo * (1 - 1e-5)) << px << ", " << py;
+        EXPECT_LE(value, even * per_albedo * (1 + 1e-5)) << px << ", " << py;
+      }
+    }
+  EXPECT_GT(whole[0], 4);
+  EXPECT_GT(whole[1], 4);
 }
 
 // Diffuse plane under a spot light pointing straight down: L = ρ/π · I f(θ)

@@ -97,9 +97,9 @@ TEST_F(LoaderFiles, ImageTextures) {
   EXPECT_EQ(linear.colour_space, ColourSpace::linear);  // a PFM holds linear values
   EXPECT_EQ(linear.filter, TextureFilter::bilinear);
   EXPECT_EQ(linear.mipmap->wrap(), TextureWrap::clamp);
-  EXPECT_FLOAT_EQ(linear.u_scale, 4);
-  EXPECT_FLOAT_EQ(linear.v_scale, 2);
-  EXPECT_FLOAT_EQ(linear.u_offset, 0.5f);
+  EXPECT_FLOAT_EQ(linear.mapping.u_scale, 4);
+  EXPECT_FLOAT_EQ(linear.mapping.v_scale, 2);
+  EXPECT_FLOAT_EQ(linear.mapping.u_offset, 0.5f);
   ASSERT_EQ(linear.mipmap->levels(), 2);
   // Rows flipped (t = 0 is the bottom row: 0.5, 1), values times the scale.
   EXPECT_FLOAT_EQ(sg::raw(linear.mipmap->texel(0, 0, 0)).r, 0.25f);

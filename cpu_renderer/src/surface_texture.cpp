@@ -39,7 +39,7 @@ quantity<dim::inverse<dim::length>> uv_per_length(const Shape& shape) {
 }  // namespace
 
 SurfaceTextures::SurfaceTextures(const Scene& scene) : scene_(scene) {
-  if (scene.textures.empty()) return;
+  if (!scene.textured()) return;
   for (const Shape& shape : scene.shapes) {
     uv_per_length_.push_back(uv_per_length(shape));
     motions_.push_back(motion_of(shape, scene.camera));
@@ -76,13 +76,25 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
 Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {
   const TexturedReflectance* diffuse = diffuse_of(material);
   if (!diffuse) return Reflectance{};
-  if (diffuse->texture < 0) return diffuse->value;
+  if (!diffuse->textured()) return diffuse->value;
+  if (diffuse->pattern >= 0) {
+    const Pattern& pattern = scene_.patterns[diffuse->pattern].pattern;
+    PatternLookup lookup{.position = hit.position, .width = width};
+    if (reads_uv(pattern)) {
+      TexCoord at = uv(hit, time);
+      lookup.u = at.u;
+      lookup.v = at.v;
+      lookup.uv_footprint = width * uv_per_length_[hit.shape];
+    }
+    return diffuse->value * evaluate(pattern, lookup);
+  }
   const ImageTexture& texture = scene_.textures[diffuse->texture];
   TexCoord at = uv(hit, time);
-  const Real s = at.u * texture.u_scale + texture.u_offset, t = at.v * texture.v_scale + texture.v_offset;
+  const UvMapping& m = texture.mapping;
+  const Real s = at.u * m.u_scale + m.u_offset, t = at.v * m.v_scale + m.v_offset;
   if (texture.filter == TextureFilter::bilinear || !(width > sg::zero))
     return diffuse->value * texture.mipmap->bilinear(0, s, t);
-  const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(texture.u_scale), std::abs(texture.v_scale));
+  const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(m.u_scale), std::abs(m.v_scale));
   return diffuse->value * texture.mipmap->trilinear(s, t, footprint);
 }
 

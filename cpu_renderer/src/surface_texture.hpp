@@ -23,7 +23,7 @@ class SurfaceTextures {
  public:
   explicit SurfaceTextures(const Scene& scene);
 
-  bool any() const { return !scene_.textures.empty(); }
+  bool any() const { return scene_.textured(); }
 
   // The hit's texture coordinates on its shape at `time`.
   TexCoord uv(const SurfaceHit& hit, Time time) const;

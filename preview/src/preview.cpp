@@ -271,7 +271,7 @@ struct Preview::Impl {
         "glass is not previewed and appears black");
     add(names_of([](const Material& m) { return std::holds_alternative<PlasticMaterial>(m.model); }),
         "plastic is drawn as its diffuse layer, without its coating's reflection");
-    add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->texture >= 0; }),
+    add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
     if (!scene.distant_lights.empty()) approximations.push_back("distant lights are not previewed (no light from them)");
@@ -279,6 +279,7 @@ struct Preview::Impl {
 
   // The diffuse reflectance a surface is drawn with: a texture by its mean.
   Reflectance preview_diffuse(const TexturedReflectance& diffuse) const {
+    if (diffuse.pattern >= 0) return diffuse.value * mean_value(scene.patterns[diffuse.pattern].pattern);
     if (diffuse.texture < 0) return diffuse.value;
     return diffuse.value * scene.textures[diffuse.texture].mipmap->average();
   }

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "safegi/cpu_renderer/procedural_texture.hpp"
 #include "safegi/cpu_renderer/texture.hpp"
 #include "safegi/cpu_renderer/types.hpp"
 
@@ -23,15 +24,17 @@ struct ImageTexture {
   ColourSpace colour_space = ColourSpace::srgb;  // how the file encoded its values (decoded at load)
   TextureFilter filter = TextureFilter::trilinear;
   Real scale = 1.0f;  // multiplies every texel (pbrt's "scale")
-  // (u, v) -> (u * u_scale + u_offset, v * v_scale + v_offset) before the lookup (pbrt's uv mapping)
-  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+  UvMapping mapping;  // (u, v) to the lookup's (s, t)
   std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included
 };
 
-// A reflectance that may be textured: `value` times the texture's texel.
+// A reflectance that may be textured: `value` times the texture's texel, or
+// times the pattern's value (at most one of the two).
 struct TexturedReflectance {
   Reflectance value{};
-  int texture = -1;  // index into Scene::textures; -1: the constant `value`
+  int texture = -1;  // index into Scene::textures (images); -1: none
+  int pattern = -1;  // index into Scene::patterns (procedural); -1: none
+  bool textured() const { return texture >= 0 || pattern >= 0; }
 };
 
 // One parameter type per material: each holds only what its BSDF reads, and a
@@ -211,12 +214,15 @@ struct Scene {
   RenderSettings settings;
   Camera camera;
   std::vector<ImageTexture> textures;
+  std::vector<ProceduralTexture> patterns;
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<PointLight> point_lights;
   std::vector<SpotLight> spot_lights;
   std::vector<DistantLight> distant_lights;
   std::optional<EnvironmentLight> environment;
+
+  bool textured() const { return !textures.empty() || !patterns.empty(); }
 };
 
 }  // namespace safegi::render

@@ -1,0 +1,98 @@
+// Procedural reflectance textures: pbrt-v3's checkerboards, dots, and the
+// noise patterns (fbm, wrinkled, windy, marble), evaluated as pbrt-v3 does.
+//
+// A 2D pattern reads the hit's (u, v) through a uv mapping; a solid one reads
+// the hit's position in its texture space: the space the scene file's
+// transform stood for where the texture was declared, measured in the scene
+// file's own length unit (pbrt-v3's IdentityMapping3D). Every value is a
+// reflectance, clamped to [0, 1] (pbrt-v3 clamps materials' reflectances
+// below 0; above 1 a surface would reflect more than it receives).
+#pragma once
+
+#include <string>
+#include <variant>
+
+#include "safegi/cpu_renderer/types.hpp"
+
+namespace safegi::render {
+
+struct TextureSpace : space_tag<"texture"> {};
+using TextureFromRender = map<World, TextureSpace>;
+
+// pbrt-v3's "uv" mapping: (s, t) = (u · u_scale + u_offset, v · v_scale + v_offset).
+struct UvMapping {
+  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+};
+
+// Where a solid pattern reads a point: its texture-space position over `unit`.
+struct SolidMapping {
+  TextureFromRender texture_from_render;
+  Length unit = Real(1) * units::metre;  // one texture-space unit: the scene file's length unit
+  Real stretch = 1.0f;                // how the map scales lengths (∛|det|), for footprints
+};
+
+// Alternating squares of side 1 in (s, t): `even` where ⌊s⌋ + ⌊t⌋ is even.
+// Box-filtered over the footprint in closed form (pbrt-v3's "closedform"), or
+// point-sampled (its "none").
+struct CheckerboardPattern {
+  UvMapping mapping;
+  Reflectance even{}, odd{};
+  bool box_filtered = true;
+};
+// Unit cubes in texture space: `even` where ⌊x⌋ + ⌊y⌋ + ⌊z⌋ is even.
+struct SolidCheckerboardPattern {
+  SolidMapping mapping;
+  Reflectance even{}, odd{};
+};
+// A dot of radius 0.35 in about half the unit cells of (s, t), placed by noise.
+struct DotsPattern {
+  UvMapping mapping;
+  Reflectance inside{}, outside{};
+};
+// Grey of fractional Brownian motion (`fbm`) or turbulence (`wrinkled`).
+struct FbmPattern {
+  SolidMapping mapping;
+  Real omega = 0.5f;  // pbrt's "roughness": each octave's amplitude over the last's
+  int octaves = 8;
+  bool turbulence = false;  // pbrt's "wrinkled"
+};
+// pbrt-v3's "windy": waves whose height a slower noise modulates.
+struct WindyPattern {
+  SolidMapping mapping;
+};
+// Veins: a sine of y plus `variation` times fbm, through pbrt-v3's colour spline.
+struct MarblePattern {
+  SolidMapping mapping;
+  Real omega = 0.5f;
+  int octaves = 8;
+  Real scale = 1.0f;  // on the texture-space position
+  Real variation = 0.2f;
+};
+
+using Pattern = std::variant<CheckerboardPattern, SolidCheckerboardPattern, DotsPattern, FbmPattern, WindyPattern,
+                             MarblePattern>;
+
+struct ProceduralTexture {
+  std::string name;  // as declared (for messages)
+  Pattern pattern;
+};
+
+// Where a surface is looked up: its (u, v) and how far (u, v) moves between
+// neighbouring camera rays; its position and the footprint's width across it
+// (zero widths: no filtering).
+struct PatternLookup {
+  Real u = 0.0f, v = 0.0f;
+  Real uv_footprint = 0.0f;
+  PointWorld position;
+  Length width = sg::zero;
+};
+
+bool reads_uv(const Pattern& pattern);
+// The reflectance at a lookup, in [0, 1].
+Reflectance evaluate(const Pattern& pattern, const PatternLookup& at);
+// Bounds for the importer's checks and the preview's colour: the largest value
+// the pattern takes (per channel), and its mean over many cells.
+Reflectance largest_value(const Pattern& pattern);
+Reflectance mean_value(const Pattern& pattern);
+
+}  // namespace safegi::render

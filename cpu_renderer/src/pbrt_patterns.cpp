@@ -1,0 +1,110 @@
+// pbrt-v3's texture mappings and procedural textures (its textures/
+// checkerboard, dots, fbm, wrinkled, windy and marble) as Scene patterns.
+#include <cmath>
+
+#include "pbrt_importer.hpp"
+
+namespace safegi::render::pbrt {
+namespace {
+
+// A parameter of a pattern: finite and within [-limit, limit] (pbrt-v3 reads
+// any number; beyond these the noise sums overflow or lose every digit).
+double bounded(ParamSet& params, const char* name, double fallback, double low, double high) {
+  double value = params.one_float(name, fallback);
+  if (!(value >= low && value <= high)) {
+    params.fail_at(*params.find(name, {ParamType::floating, ParamType::texture}),
+                   "\"float " + std::string(name) + "\" of " + params.context() + " must lie in [" + format_number(low) +
+                       ", " + format_number(high) + "], found " + format_number(value));
+  }
+  return value;
+}
+
+}  // namespace
+
+UvMapping Importer::uv_mapping(ParamSet& params, SourceRange at) {
+  std::string mapping = params.one_string("mapping", "uv");
+  if (mapping != "uv")
+    params.fail_at(*params.find("mapping", {ParamType::string}), "texture mapping \"" + mapping + "\" is not supported",
+                   "supported: \"uv\" (the shape's own (u, v))");
+  auto uv_number = [&](const char* parameter, double fallback) {
+    double value = params.one_float(parameter, fallback);
+    if (!(std::fabs(value) <= 1e6))
+      fail(at, "\"float " + std::string(parameter) + "\" of " + params.context() + " must lie in [-1e6, 1e6]");
+    return static_cast<Real>(value);
+  };
+  UvMapping result;
+  result.u_scale = uv_number("uscale", 1);
+  result.v_scale = uv_number("vscale", 1);
+  result.u_offset = uv_number("udelta", 0);
+  result.v_offset = uv_number("vdelta", 0);
+  return result;
+}
+
+// pbrt-v3's IdentityMapping3D: a point in the space the transform stood for
+// at the Texture directive, in the scene file's length unit.
+SolidMapping Importer::solid_mapping(SourceRange at) {
+  const double determinant = glm::determinant(state_.ctm);
+  if (!std::isnormal(determinant))
+    fail(at, "the transform in effect at this Texture is singular", "pbrt-v3 maps points into texture space by its inverse");
+  // From our world (metres) to pbrt's world, then to texture space: pbrt units.
+  const Matrix texture_from_render_units = glm::inverse(state_.ctm) * glm::inverse(world_from_pbrt_world_);
+  const double unit = options_.metres_per_unit;
+  const Matrix texture_from_render = Matrix(glm::dmat3(unit)) * texture_from_render_units;  // the same, in metres
+  SolidMapping mapping;
+  mapping.texture_from_render = sg::from_raw<TextureFromRender>(
+      sg::matrix_pair{sg::mat4_rep(texture_from_render), sg::mat4_rep(glm::inverse(texture_from_render))});
+  mapping.unit = static_cast<Real>(unit) * units::metre;
+  mapping.stretch = static_cast<Real>(unit * std::cbrt(std::abs(glm::determinant(glm::dmat3(texture_from_render_units)))));
+  return mapping;
+}
+
+// One of a pattern's two colours: a colour (or a constant texture) in [0, 1].
+Reflectance Importer::pattern_colour(ParamSet& params, const char* name, double fallback) {
+  const Param* param = nullptr;
+  std::optional<TextureEntry> given = spectrum_or_texture(params, name, param);
+  if (!given) return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(fallback)));
+  if (given->image >= 0 || given->pattern >= 0)
+    params.fail_at(*param, "a texture as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
+                   "give it as a colour (\"rgb " + std::string(name) + "\" [r g b])");
+  for (double c : given->value)
+    if (!(c >= 0 && c <= 1))
+      params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " must lie in [0, 1] in every channel",
+                     "above 1 a surface reflects more light than it receives");
+  return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(given->value[0]), static_cast<Real>(given->value[1]),
+                                                static_cast<Real>(given->value[2])));
+}
+
+std::optional<Pattern> Importer::pattern(const std::string& texture_class, ParamSet& params, SourceRange at) {
+  auto octaves = [&] { return params.one_int("octaves", 8, 0, 32); };
+  auto roughness = [&] { return static_cast<Real>(bounded(params, "roughness", 0.5, 0, 16)); };
+  if (texture_class == "checkerboard") {
+    const int dimension = params.one_int("dimension", 2, 2, 3);
+    if (dimension == 3) return SolidCheckerboardPattern{solid_mapping(at), pattern_colour(params, "tex1", 1),
+                                                        pattern_colour(params, "tex2", 0)};
+    CheckerboardPattern board{uv_mapping(params, at), pattern_colour(params, "tex1", 1), pattern_colour(params, "tex2", 0)};
+    std::string mode = params.one_string("aamode", "closedform");
+    board.box_filtered = mode != "none";
+    if (mode != "none" && mode != "closedform")
+      warn(params.find("aamode", {ParamType::string})->values, "antialiasing mode \"" + mode + "\" is unknown: using \"closedform\"",
+           "pbrt-v3 does the same");
+    return board;
+  }
+  if (texture_class == "dots")
+    return DotsPattern{uv_mapping(params, at), pattern_colour(params, "inside", 1), pattern_colour(params, "outside", 0)};
+  if (texture_class == "fbm" || texture_class == "wrinkled") {
+    const int count = octaves();
+    return FbmPattern{solid_mapping(at), roughness(), count, texture_class == "wrinkled"};
+  }
+  if (texture_class == "windy") return WindyPattern{solid_mapping(at)};
+  if (texture_class == "marble") {
+    MarblePattern marble{solid_mapping(at)};
+    marble.octaves = octaves();
+    marble.omega = roughness();
+    marble.scale = static_cast<Real>(bounded(params, "scale", 1, -1e6, 1e6));
+    marble.variation = static_cast<Real>(bounded(params, "variation", 0.2, -1e6, 1e6));
+    return marble;
+  }
+  return std::nullopt;
+}
+
+}  // namespace safegi::render::pbrt

@@ -1,0 +1,192 @@
+#include "safegi/cpu_renderer/procedural_texture.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <concepts>
+
+#include "noise.hpp"
+
+namespace safegi::render {
+namespace {
+
+Reflectance rgb(Real r, Real g, Real b) { return sg::from_raw<Reflectance>(sg::vec3_rep(r, g, b)); }
+Reflectance grey(Real value) { return rgb(value, value, value); }
+
+Reflectance clamped(Reflectance value) {
+  sg::vec3_rep v = sg::raw(value);
+  for (int c = 0; c < 3; ++c) v[c] = std::isnan(v[c]) ? Real(0) : std::clamp(v[c], Real(0), Real(1));
+  return sg::from_raw<Reflectance>(v);
+}
+
+Reflectance mix(Real weight, Reflectance a, Reflectance b) { return (1 - weight) * a + weight * b; }
+
+// Whether ⌊a⌋ + ⌊b⌋ + ⌊c⌋ is even, from each floor's parity (no int
+// conversion, so any finite coordinate works; a not-finite one counts even).
+bool even_cell(Real a, Real b, Real c = 0) {
+  if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c)) return true;
+  auto odd = [](Real x) { return std::abs(std::fmod(std::floor(x), Real(2))) == 1; };
+  return (odd(a) + odd(b) + odd(c)) % 2 == 0;
+}
+
+// The share of [x − dx, x + dx] in odd columns [2k + 1, 2k + 2): the
+// integral of their indicator (pbrt-v3's bumpInt) over the interval's length.
+Real odd_share(Real x, Real dx) {
+  if (!(dx > 0)) return even_cell(x, 0) ? Real(0) : Real(1);
+  auto integral = [](Real y) {
+    Real half = std::floor(y / 2);
+    return half + 2 * std::max(y / 2 - half - Real(0.5), Real(0));
+  };
+  return (integral(x + dx) - integral(x - dx)) / (2 * dx);
+}
+
+Reflectance sample(const CheckerboardPattern& board, Real s, Real t, Real ds, Real dt) {
+  const bool inside_one_check = std::floor(s - ds) == std::floor(s + ds) && std::floor(t - dt) == std::floor(t + dt);
+  if (!board.box_filtered || inside_one_check) return even_cell(s, t) ? board.even : board.odd;
+  // The box's share of odd checks: odd in s xor odd in t.
+  const Real s_odd = odd_share(s, ds), t_odd = odd_share(t, dt);
+  Real odd = s_odd + t_odd - 2 * s_odd * t_odd;
+  if (ds == 1 || dt == 1) odd = 0.5f;  // pbrt-v3's, for a footprint of exactly one check
+  return mix(odd, board.even, board.odd);
+}
+
+Reflectance sample(const DotsPattern& dots, Real s, Real t, Real, Real) {
+  const Real s_cell = std::floor(s + Real(0.5)), t_cell = std::floor(t + Real(0.5));
+  if (perlin_noise(s_cell + Real(0.5), t_cell + Real(0.5)) > 0) {
+    constexpr Real radius = 0.35f, max_shift = 0.5f - radius;
+    const Real s_centre = s_cell + max_shift * perlin_noise(s_cell + Real(1.5), t_cell + Real(2.8));
+    const Real t_centre = t_cell + max_shift * perlin_noise(s_cell + Real(4.5), t_cell + Real(9.8));
+    const Real ds = s - s_centre, dt = t - t_centre;
+    if (ds * ds + dt * dt < radius * radius) return dots.inside;
+  }
+  return dots.outside;
+}
+
+NoisePoint scaled(NoisePoint p, Real factor) { return {p.x * factor, p.y * factor, p.z * factor}; }
+
+Reflectance sample(const SolidCheckerboardPattern& board, NoisePoint p, Real) {
+  return even_cell(p.x, p.y, p.z) ? board.even : board.odd;
+}
+
+Reflectance sample(const FbmPattern& pattern, NoisePoint p, Real footprint) {
+  return grey(pattern.turbulence ? turbulence(p, footprint, pattern.omega, pattern.octaves)
+                                 : fbm(p, footprint, pattern.omega, pattern.octaves));
+}
+
+Reflectance sample(const WindyPattern&, NoisePoint p, Real footprint) {
+  const Real wind = fbm(scaled(p, Real(0.1)), Real(0.1) * footprint, Real(0.5), 3);
+  const Real waves = fbm(p, footprint, Real(0.5), 6);
+  return grey(std::abs(wind) * waves);
+}
+
+// pbrt-v3's marble colours: the control points of six cubic Bézier segments.
+constexpr std::array<std::array<float, 3>, 9> kMarbleColours = {{{.58f, .58f, .6f},
+                                                                 {.58f, .58f, .6f},
+                                                                 {.58f, .58f, .6f},
+                                                                 {.5f, .5f, .5f},
+                                                                 {.6f, .59f, .58f},
+                                                                 {.58f, .58f, .6f},
+                                                                 {.58f, .58f, .6f},
+                                                                 {.2f, .2f, .33f},
+                                                                 {.58f, .58f, .6f}}};
+constexpr Real kMarbleGain = 1.5f;  // pbrt-v3's, "to increase variation among colors"
+
+Reflectance marble_colour(int point) {
+  const std::array<float, 3>& c = kMarbleColours[point];
+  return rgb(c[0], c[1], c[2]);
+}
+
+Reflectance sample(const MarblePattern& marble, NoisePoint p, Real footprint) {
+  p = scaled(p, marble.scale);
+  const Real phase = p.y + marble.variation * fbm(p, marble.scale * footprint, marble.omega, marble.octaves);
+  const Real t = Real(0.5) + Real(0.5) * std::sin(phase);
+  constexpr int segments = static_cast<int>(kMarbleColours.size()) - 3;
+  // t = 1 falls in the last segment (pbrt-v3 would read past its table there).
+  const int first = std::clamp(static_cast<int>(std::floor(t * segments)), 0, segments - 1);
+  const Real u = t * segments - first;
+  // De Casteljau on the segment's four control points.
+  Reflectance a = mix(u, marble_colour(first), marble_colour(first + 1));
+  Reflectance b = mix(u, marble_colour(first + 1), marble_colour(first + 2));
+  Reflectance c = mix(u, marble_colour(first + 2), marble_colour(first + 3));
+  a = mix(u, a, b);
+  b = mix(u, b, c);
+  return kMarbleGain * mix(u, a, b);
+}
+
+template <class P>
+concept PlanarPattern = std::same_as<std::remove_cvref_t<decltype(P::mapping)>, UvMapping>;
+
+NoisePoint solid_point(const SolidMapping& mapping, PointWorld position) {
+  const point<TextureSpace> origin = sg::from_raw<point<TextureSpace>>(sg::vec3_rep(0));
+  const sg::vec3_rep v = sg::raw((mapping.texture_from_render(position) - origin) / mapping.unit);
+  return {v.x, v.y, v.z};
+}
+
+Reflectance largest(Reflectance a, Reflectance b) {
+  sg::vec3_rep x = sg::raw(a), y = sg::raw(b);
+  return sg::from_raw<Reflectance>(glm::max(x, y));
+}
+
+}  // namespace
+
+bool reads_uv(const Pattern& pattern) {
+  return std::visit([](const auto& p) { return PlanarPattern<std::remove_cvref_t<decltype(p)>>; }, pattern);
+}
+
+Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) {
+  return clamped(std::visit(
+      [&](const auto& p) {
+        if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
+          const UvMapping& m = p.mapping;
+          return sample(p, at.u * m.u_scale + m.u_offset, at.v * m.v_scale + m.v_offset,
+                        at.uv_footprint * std::abs(m.u_scale), at.uv_footprint * std::abs(m.v_scale));
+        } else {
+          const Real footprint = at.width * p.mapping.stretch / p.mapping.unit;
+          return sample(p, solid_point(p.mapping, at.position), footprint);
+        }
+      },
+      pattern));
+}
+
+Reflectance largest_value(const Pattern& pattern) {
+  return std::visit(
+      [](const auto& p) -> Reflectance {
+        using P = std::remove_cvref_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>)
+          return clamped(largest(p.even, p.odd));
+        else if constexpr (std::is_same_v<P, DotsPattern>)
+          return clamped(largest(p.inside, p.outside));
+        else if constexpr (std::is_same_v<P, MarblePattern>) {
+          // A Bézier curve stays inside its control points' hull.
+          Reflectance bound = marble_colour(0);
+          for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
+          return clamped(kMarbleGain * bound);
+        } else {
+          return grey(1);  // noise sums: clamped to 1
+        }
+      },
+      pattern);
+}
+
+Reflectance mean_value(const Pattern& pattern) {
+  // Point samples at the centres of a grid over many cells (64² of (s, t),
+  // 16³ of texture space), unfiltered.
+  return std::visit(
+      [](const auto& p) {
+        Reflectance sum = grey(0);
+        int count = 0;
+        if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
+          for (int i = 0; i < 128; ++i)
+            for (int j = 0; j < 128; ++j, ++count) sum += clamped(sample(p, (i + Real(0.5)) / 2, (j + Real(0.5)) / 2, 0, 0));
+        } else {
+          for (int i = 0; i < 32; ++i)
+            for (int j = 0; j < 32; ++j)
+              for (int k = 0; k < 32; ++k, ++count)
+                sum += clamped(sample(p, NoisePoint{(i + Real(0.5)) / 2, (j + Real(0.5)) / 2, (k + Real(0.5)) / 2}, 0));
+        }
+        return sum / static_cast<Real>(count);
+      },
+      pattern);
+}
+
+}  // namespace safegi::render

@@ -1,0 +1,134 @@
+// The procedural patterns against their definitions: noise's lattice zeros
+// and bounds, the octave counts a footprint leaves, the checkerboard's
+// closed-form box filter against a brute-force average of point samples.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "noise.hpp"
+#include "safegi/cpu_renderer/procedural_texture.hpp"
+
+namespace safegi::render {
+namespace {
+
+Real channel(Reflectance value, int c) { return sg::raw(value)[c]; }
+Reflectance grey(Real v) { return sg::from_raw<Reflectance>(sg::vec3_rep(v)); }
+
+TEST(Noise, VanishesOnTheLatticeAndStaysNearTheUnitInterval) {
+  for (int x = -3; x <= 3; ++x)
+    for (int y = -3; y <= 3; ++y) EXPECT_EQ(perlin_noise(NoisePoint{Real(x), Real(y), 7}), 0) << x << ", " << y;
+  Real lowest = 0, highest = 0;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      for (int k = 0; k < 40; ++k) {
+        Real n = perlin_noise(NoisePoint{i * Real(0.173), j * Real(0.231) - 3, k * Real(0.197) + 11});
+        lowest = std::min(lowest, n);
+        highest = std::max(highest, n);
+      }
+  EXPECT_LT(lowest, -0.5f);  // it takes both signs, to about ±1
+  EXPECT_GT(highest, 0.5f);
+  EXPECT_GE(lowest, -1.1f);
+  EXPECT_LE(highest, 1.1f);
+  // Periodic in 256; the 2D noise is the plane z = 0.5; not-finite input is 0.
+  EXPECT_NEAR(perlin_noise(NoisePoint{Real(1.3), Real(2.7), Real(0.4)}),
+              perlin_noise(NoisePoint{Real(257.3), Real(-253.3), Real(512.4)}), 1e-4);
+  EXPECT_EQ(perlin_noise(Real(1.3), Real(2.7)), perlin_noise(NoisePoint{Real(1.3), Real(2.7), Real(0.5)}));
+  EXPECT_EQ(perlin_noise(NoisePoint{std::nanf(""), 0, 0}), 0);
+  EXPECT_EQ(perlin_noise(NoisePoint{Real(1e30), Real(0.5), Real(0.5)}), perlin_noise(NoisePoint{Real(1e30), Real(0.5), Real(0.5)}));
+}
+
+// pbrt-v3 keeps n = -1 - log2(footprint) octaves (clamped to the maximum):
+// a zero footprint keeps all, one of 1/2 or more none.
+TEST(Noise, FootprintsDropTheOctavesFinerThanThem) {
+  const NoisePoint p{Real(0.37), Real(1.91), Real(-2.3)};
+  Real all = 0, amplitude = 1, frequency = 1;
+  for (int i = 0; i < 5; ++i, amplitude *= 0.5f, frequency *= 1.99f)
+    all += amplitude * perlin_noise(NoisePoint{p.x * frequency, p.y * frequency, p.z * frequency});
+  EXPECT_NEAR(fbm(p, 0, 0.5f, 5), all, 1e-5);
+  EXPECT_EQ(fbm(p, 0.5f, 0.5f, 5), 0);
+  EXPECT_EQ(fbm(p, 4, 0.5f, 5), 0);
+  // Turbulence counts each dropped octave as 0.2 of its amplitude, and the
+  // partial octave after the kept ones as 0.2 more where its fade is 0 (as
+  // pbrt-v3 sums them: the first dropped amplitude is counted twice).
+  EXPECT_NEAR(turbulence(p, 1, 0.5f, 4), 0.2f + 0.2f * (1 + 0.5f + 0.25f + 0.125f), 1e-6);
+  EXPECT_NEAR(turbulence(p, 0, 0.5f, 3), std::abs(perlin_noise(p)) + 0.5f * std::abs(perlin_noise(NoisePoint{p.x * 1.99f, p.y * 1.99f, p.z * 1.99f})) +
+                                            0.25f * std::abs(perlin_noise(NoisePoint{p.x * 1.99f * 1.99f, p.y * 1.99f * 1.99f, p.z * 1.99f * 1.99f})) +
+                                            0.125f * 0.2f,
+              1e-5);
+}
+
+CheckerboardPattern board(bool box_filtered) {
+  return CheckerboardPattern{UvMapping{}, grey(0.8f), grey(0.1f), box_filtered};
+}
+
+TEST(ProceduralTexture, CheckerboardCellsAlternateOnBothSidesOfZero) {
+  const Pattern pattern = board(false);
+  auto at = [&](Real u, Real v) { return channel(evaluate(pattern, PatternLookup{.u = u, .v = v}), 0); };
+  EXPECT_EQ(at(0.5f, 0.5f), 0.8f);
+  EXPECT_EQ(at(1.5f, 0.5f), 0.1f);
+  EXPECT_EQ(at(-0.5f, 0.5f), 0.1f);  // ⌊-0.5⌋ + 0 = -1: odd
+  EXPECT_EQ(at(-0.5f, -0.5f), 0.8f);
+  EXPECT_EQ(at(1e9f, 0.5f), 0.8f);  // far out, no int overflow
+}
+
+// The closed form is the box filter's exact average: compare it with a
+// 400 × 400 midpoint average of point samples over the same box.
+TEST(ProceduralTexture, CheckerboardBoxFilterIsTheAverageOverTheFootprint) {
+  const Pattern filtered = board(true), point = board(false);
+  const Real cases[][3] = {{0.5f, 0.5f, 0.2f}, {0.9f, 0.3f, 0.25f}, {1.1f, 0.95f, 0.3f}, {-0.2f, 2.05f, 0.7f},
+                           {3.3f, -1.6f, 2.5f}};
+  for (const auto& c : cases) {
+    const Real u = c[0], v = c[1], width = c[2];
+    double sum = 0;
+    constexpr int n = 400;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        Real du = (2 * (i + 0.5f) / n - 1) * width, dv = (2 * (j + 0.5f) / n - 1) * width;
+        sum += channel(evaluate(point, PatternLookup{.u = u + du, .v = v + dv}), 0);
+      }
+    const Real closed = channel(evaluate(filtered, PatternLookup{.u = u, .v = v, .uv_footprint = width}), 0);
+    EXPECT_NEAR(closed, sum / (n * n), 4e-3) << u << ", " << v << ", " << width;
+  }
+}
+
+TEST(ProceduralTexture, BoundsAndMeans) {
+  const Pattern checks = board(true);
+  EXPECT_NEAR(channel(mean_value(checks), 0), 0.45f, 1e-6);
+  EXPECT_EQ(channel(largest_value(checks), 0), 0.8f);
+  // Dots cover about half the cells, each a disc of radius 0.35: π·0.35²/2 ≈ 0.19.
+  const Pattern dots = DotsPattern{UvMapping{}, grey(1), grey(0)};
+  EXPECT_NEAR(channel(mean_value(dots), 0), 0.19f, 0.06f);
+  // Marble's spline stays inside its control points' hull, times 1.5.
+  MarblePattern marble;
+  marble.variation = 0.75f;
+  for (int i = 0; i < 200; ++i) {
+    Reflectance value = evaluate(marble, PatternLookup{.position = sg::from_raw<PointWorld>(sg::vec3_rep(0.1f * i, 0.37f * i, 0.05f * i))});
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GE(channel(value, c), 0.3f - 1e-6f);
+      EXPECT_LE(channel(value, c), channel(largest_value(marble), c) + 1e-6f);
+    }
+  }
+  // Noise sums are clamped to [0, 1]; fbm takes both signs, so both ends occur.
+  const Pattern cloud = FbmPattern{};
+  EXPECT_EQ(channel(largest_value(cloud), 0), 1);
+  const Real mean = channel(mean_value(cloud), 0);
+  EXPECT_GT(mean, 0.05f);
+  EXPECT_LT(mean, 0.5f);
+}
+
+TEST(ProceduralTexture, SolidPatternsReadTheTextureSpaceInItsUnit) {
+  // Texture space is render space scaled by 1/2, in centimetres: cells of 2 cm.
+  SolidCheckerboardPattern cubes{SolidMapping{}, grey(0.8f), grey(0.1f)};
+  const glm::mat4 half(glm::mat3(0.5f));
+  cubes.mapping.texture_from_render = sg::from_raw<TextureFromRender>(sg::matrix_pair{sg::mat4_rep(half), sg::mat4_rep(glm::inverse(half))});
+  cubes.mapping.unit = 0.01f * units::metre;
+  auto at = [&](float x) {
+    return channel(evaluate(cubes, PatternLookup{.position = sg::from_raw<PointWorld>(sg::vec3_rep(x, 0.005f, 0.005f))}), 0);
+  };
+  EXPECT_EQ(at(0.01f), 0.8f);   // 0.5 units
+  EXPECT_EQ(at(0.03f), 0.1f);   // 1.5 units
+  EXPECT_EQ(at(-0.01f), 0.1f);  // -0.5 units
+}
+
+}  // namespace
+}  // namespace safegi::render
