@@ -196,6 +196,7 @@ struct Preview::Impl {
   SceneMeshes meshes;
   ScenePoses poses;
   std::vector<Emitter> emitters;
+  std::vector<Reflectance> pattern_means;  // per Scene::patterns: sampled once, drawn as the texture's colour
 
   EmissionPass emission{camera_program("EMISSION", "emission", options)};
   PointLightPass point_pass{{camera_program("POINT_LIGHT", "point_light", options)}};
@@ -226,6 +227,7 @@ struct Preview::Impl {
         meshes(tessellate(s)),
         poses(s),
         emitters(emitters_of(s)) {
+    for (const ProceduralTexture& texture : scene.patterns) pattern_means.push_back(mean_value(texture.pattern));
     camera_geometry.bind(emission.program.attribute<PointObject>("position"), positions);
     camera_geometry.bind(emission.program.attribute<normal<Object>>("objectNormal"), normals);
     light_geometry.bind(depth.program.attribute<PointObject>("position"), positions);
@@ -279,7 +281,7 @@ struct Preview::Impl {
 
   // The diffuse reflectance a surface is drawn with: a texture by its mean.
   Reflectance preview_diffuse(const TexturedReflectance& diffuse) const {
-    if (diffuse.pattern >= 0) return diffuse.value * mean_value(scene.patterns[diffuse.pattern].pattern);
+    if (diffuse.pattern >= 0) return diffuse.value * pattern_means[diffuse.pattern];
     if (diffuse.texture < 0) return diffuse.value;
     return diffuse.value * scene.textures[diffuse.texture].mipmap->average();
   }
