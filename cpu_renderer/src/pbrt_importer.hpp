@@ -43,6 +43,7 @@ struct TextureEntry {
   Rgb value{1, 1, 1};         // a constant's value, or the factor on `image` or `pattern`
   int image = -1;             // index into Scene::textures; -1: none
   int pattern = -1;           // index into Scene::patterns; -1: none
+  bool textured() const { return image >= 0 || pattern >= 0; }
   SourceRange at;
   std::optional<Diagnostic> error;  // as MaterialInstance::error: reported when a used material reads it
 };

@@ -122,7 +122,7 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   const Param* param = nullptr;
   if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
   Rgb largest = entry.value;
-  if (entry.image >= 0 || entry.pattern >= 0) {
+  if (entry.textured()) {
     const char* kind = entry.image >= 0 ? "an image texture" : "a procedural texture";
     if (!allow_image)
       params.fail_at(*param, std::string(kind) + " as \"" + std::string(name) + "\" of " + params.context() +
@@ -357,8 +357,7 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
       for (const char* factor : {"tex1", "tex2"}) {
         std::optional<TextureEntry> given = spectrum_or_texture(params, factor, param);
         if (!given) continue;
-        const bool textured = entry.image >= 0 || entry.pattern >= 0;
-        if ((given->image >= 0 || given->pattern >= 0) && textured)
+        if (given->textured() && entry.textured())
           params.fail_at(*param, "a product of two textures is not supported",
                          "the renderer multiplies one image or pattern by a constant");
         if (given->image >= 0) entry.image = given->image;

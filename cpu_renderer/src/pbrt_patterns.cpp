@@ -7,8 +7,8 @@
 namespace safegi::render::pbrt {
 namespace {
 
-// A parameter of a pattern: finite and within [-limit, limit] (pbrt-v3 reads
-// any number; beyond these the noise sums overflow or lose every digit).
+// A parameter of a pattern: finite and within [low, high] (pbrt-v3 reads any
+// number; beyond these the noise sums overflow or lose every digit).
 double bounded(ParamSet& params, const char* name, double fallback, double low, double high) {
   double value = params.one_float(name, fallback);
   if (!(value >= low && value <= high)) {
@@ -63,7 +63,7 @@ Reflectance Importer::pattern_colour(ParamSet& params, const char* name, double 
   const Param* param = nullptr;
   std::optional<TextureEntry> given = spectrum_or_texture(params, name, param);
   if (!given) return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(fallback)));
-  if (given->image >= 0 || given->pattern >= 0)
+  if (given->textured())
     params.fail_at(*param, "a texture as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
                    "give it as a colour (\"rgb " + std::string(name) + "\" [r g b])");
   for (double c : given->value)
@@ -91,10 +91,8 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
   }
   if (texture_class == "dots")
     return DotsPattern{uv_mapping(params, at), pattern_colour(params, "inside", 1), pattern_colour(params, "outside", 0)};
-  if (texture_class == "fbm" || texture_class == "wrinkled") {
-    const int count = octaves();
-    return FbmPattern{solid_mapping(at), roughness(), count, texture_class == "wrinkled"};
-  }
+  if (texture_class == "fbm" || texture_class == "wrinkled")
+    return FbmPattern{solid_mapping(at), roughness(), octaves(), texture_class == "wrinkled"};
   if (texture_class == "windy") return WindyPattern{solid_mapping(at)};
   if (texture_class == "marble") {
     MarblePattern marble{solid_mapping(at)};
