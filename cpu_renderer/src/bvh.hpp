@@ -46,6 +46,9 @@ class Bvh {
   const std::vector<uint32_t>& primitive_order() const { return primitive_order_; }
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   bool empty() const { return nodes_.empty(); }
+  size_t memory_bytes() const {
+    return nodes_.capacity() * sizeof(BvhNode) + primitive_order_.capacity() * sizeof(uint32_t);
+  }
   Bounds3 bounds() const { return nodes_.empty() ? Bounds3{} : nodes_[0].bounds; }
 
   // Calls `test(primitive, t_max)` for every primitive whose leaf the ray

@@ -51,7 +51,8 @@ Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 // ---------------------------------------------------------------------------
 // PrimitiveSet
 
-void PrimitiveSet::build() {
+void PrimitiveSet::build(int threads) {
+  (void)threads;
   std::vector<Bounds3> bounds;
   bounds.reserve(triangles_.size() + spheres_.size());
   for (const Triangle& t : triangles_) {
@@ -68,6 +69,11 @@ void PrimitiveSet::build() {
     bounds.push_back(b);
   }
   bvh_ = kernel::Bvh(bounds);
+}
+
+size_t PrimitiveSet::memory_bytes() const {
+  return triangles_.capacity() * sizeof(Triangle) + spheres_.capacity() * sizeof(Sphere) +
+         faces_.capacity() * sizeof(uint32_t) + bvh_.memory_bytes();
 }
 
 template <bool any_hit>

@@ -71,10 +71,13 @@ class PrimitiveSet {
     if (record_faces_) faces_.push_back(face);
   }
   void add_sphere(Real3 center, Real radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
-  void build();
+  // Builds the hierarchy on up to `threads` threads (the result does not depend on the count).
+  void build(int threads = 1);
 
   bool empty() const { return triangles_.empty() && spheres_.empty(); }
   kernel::Bounds3 bounds() const { return bvh_.bounds(); }
+  // Bytes held for tracing: primitives, hierarchy, face indices.
+  size_t memory_bytes() const;
 
   std::optional<kernel::Hit> intersect(const kernel::Ray& ray, Real t_max) const;
   bool occluded(const kernel::Ray& ray, Real t_max) const;
