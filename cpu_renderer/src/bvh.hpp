@@ -1,11 +1,14 @@
-// Bounding volume hierarchy: binned SAH build, depth-first node layout,
-// near-child-first stack traversal.
+// Bounding volume hierarchy: a binned-SAH binary build (subtrees on parallel
+// threads), collapsed into nodes of four children whose boxes one loop tests
+// together; traversal visits the nearer children first and stops at the first
+// hit for shadow rays.
 //
 // The BVH knows only primitive bounds; the caller supplies the primitive test
 // as a callable, so triangles, spheres and instances share one traversal.
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
@@ -13,13 +16,20 @@
 
 namespace safegi::render::kernel {
 
-struct BvhNode {
-  Bounds3 bounds;
-  // Leaf: index of the first primitive in `primitive_order`.
-  // Interior: index of the second child (the first child is the next node).
-  uint32_t offset = 0;
-  uint16_t primitive_count = 0;  // 0 for interior nodes
-  uint8_t split_axis = 0;
+// Two cache lines in float, aligned so that a node never straddles a third.
+struct alignas(64) WideBvhNode {
+  static constexpr int kWidth = 4;
+  // The children's boxes, one array per slab plane (lower[axis][child]), so
+  // that the slab test of all four children is one loop the compiler
+  // vectorises. An empty slot holds an inverted box, which no ray hits.
+  Real lower[3][kWidth];
+  Real upper[3][kWidth];
+  // Interior child: its node index. Leaf child: its first leaf entry.
+  uint32_t child[kWidth];
+  uint16_t primitive_count[kWidth];  // 0 for an interior child or an empty slot
+  // Bit i set: slot i holds a child. A ray with a NaN component passes every
+  // slab test, even an empty slot's; this mask keeps it out of those.
+  uint8_t occupied = 0;
 };
 
 // A ray prepared for slab tests.
@@ -39,34 +49,63 @@ struct TraversalRay {
 
 class Bvh {
  public:
+  static constexpr int kDefaultMaxLeafSize = 4;
+
   Bvh() = default;
-  // Builds over `bounds[i]`, the bounds of primitive i.
-  explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = 4);
+  // Builds over `bounds[i]`, the bounds of primitive i, on up to `threads`
+  // threads; the hierarchy is the same whatever the thread count.
+  explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
 
-  const std::vector<uint32_t>& primitive_order() const { return primitive_order_; }
-  const std::vector<BvhNode>& nodes() const { return nodes_; }
-  bool empty() const { return nodes_.empty(); }
-  size_t memory_bytes() const {
-    return nodes_.capacity() * sizeof(BvhNode) + primitive_order_.capacity() * sizeof(uint32_t);
+  // The leaves' primitives: leaf entry k is primitive order[k]. The traversal
+  // names entries, not primitives, so that a caller who stores its primitives
+  // in this order reads a leaf's from adjacent memory; the caller takes the
+  // order once to do so.
+  std::vector<uint32_t> take_primitive_order() {
+    std::vector<uint32_t> order;
+    order.swap(primitive_order_);
+    return order;
   }
-  Bounds3 bounds() const { return nodes_.empty() ? Bounds3{} : nodes_[0].bounds; }
+  const std::vector<WideBvhNode>& nodes() const { return nodes_; }
+  bool empty() const { return nodes_.empty(); }
+  Bounds3 bounds() const { return bounds_; }
+  size_t memory_bytes() const {
+    return nodes_.capacity() * sizeof(WideBvhNode) + primitive_order_.capacity() * sizeof(uint32_t);
+  }
 
-  // Calls `test(primitive, t_max)` for every primitive whose leaf the ray
-  // reaches before `t_max`; `test` returns true on a hit and lowers t_max.
+  // The most a build holds per primitive beside the caller's bounds: a centroid,
+  // its place in the order (twice, while the caller renumbers it), up to two
+  // binary nodes and up to one wide node (a leaf per primitive at worst).
+  static const uint64_t kPeakBytesPerPrimitive;
+
+  // Calls `test(entry, t_max)` for every leaf entry (see take_primitive_order)
+  // whose leaf the ray reaches before `t_max`; `test` returns true on a hit and lowers t_max.
   // With `any_hit`, returns at the first hit (shadow rays).
   template <bool any_hit, class PrimitiveTest>
   bool traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const;
 
  private:
-  uint32_t build_recursive(std::span<const Bounds3> bounds, std::vector<Real3>& centroids,
-                           uint32_t begin, uint32_t end, int max_leaf_size);
+  struct BinaryNode {
+    Bounds3 bounds;
+    const BinaryNode* children[2] = {nullptr, nullptr};
+    uint32_t begin = 0, count = 0;  // a leaf's entries in primitive_order
+    bool leaf() const { return children[0] == nullptr; }
+  };
+  class BinaryBuilder;
+  uint32_t collapse(const BinaryNode& binary);
 
-  std::vector<BvhNode> nodes_;
+  std::vector<WideBvhNode> nodes_;
   std::vector<uint32_t> primitive_order_;
-  int depth_ = 0;  // of the node being built
+  Bounds3 bounds_;
 };
 
-// Slab test; robust against NaN from 0 * inf (pbrt-v3 §3.9.2 widening of t_far).
+inline constexpr uint64_t Bvh::kPeakBytesPerPrimitive =
+    sizeof(Real3) + 2 * sizeof(uint32_t) + 2 * sizeof(BinaryNode) + sizeof(WideBvhNode);
+
+// t_max widened by 1 + 2γ(3), so that rounding in the slab test never loses a
+// box the ray touches (pbrt-v3 §3.9.2).
+inline constexpr Real kSlabWidening = 1 + 2 * gamma(3);
+
+// Slab test of one box.
 inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, Real t_max) {
   const Real3& lo = b.lower;
   const Real3& hi = b.upper;
@@ -77,42 +116,81 @@ inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, Real t_m
   Real ty1 = ((neg[1] ? lo.y : hi.y) - ray.origin.y) * ray.inverse_direction.y;
   Real tz0 = ((neg[2] ? hi.z : lo.z) - ray.origin.z) * ray.inverse_direction.z;
   Real tz1 = ((neg[2] ? lo.z : hi.z) - ray.origin.z) * ray.inverse_direction.z;
-  constexpr Real widen = 1 + 2 * gamma(3);
   Real t_near = std::max(std::max(tx0, ty0), std::max(tz0, Real(0)));
-  Real t_far = std::min(std::min(tx1 * widen, ty1 * widen), std::min(tz1 * widen, t_max));
+  Real t_far = std::min(std::min(tx1 * kSlabWidening, ty1 * kSlabWidening), std::min(tz1 * kSlabWidening, t_max));
   return t_near <= t_far;
+}
+
+// Slab test of a node's four children at once (GCC/Clang vector extensions:
+// SSE on any x86-64); `t_near[i]` is where the ray enters child i. NaN-tolerant
+// the way pbrt-v3 is: a 0 · ∞ term is ignored, because each comparison below
+// keeps the other operand when one is NaN.
+using WideLanes = Real __attribute__((vector_size(WideBvhNode::kWidth * sizeof(Real))));
+
+inline unsigned intersect_children(const WideBvhNode& node, const TraversalRay& ray, Real t_max,
+                                   Real (&t_near_out)[WideBvhNode::kWidth]) {
+  WideLanes t_near = {}, t_far = WideLanes{} + t_max;
+  for (int axis = 0; axis < 3; ++axis) {
+    const bool negative = ray.direction_is_negative[axis];
+    WideLanes near_plane, far_plane;
+    std::memcpy(&near_plane, negative ? node.upper[axis] : node.lower[axis], sizeof near_plane);
+    std::memcpy(&far_plane, negative ? node.lower[axis] : node.upper[axis], sizeof far_plane);
+    const Real origin = ray.origin[axis], inverse = ray.inverse_direction[axis];
+    WideLanes t0 = (near_plane - origin) * inverse;
+    WideLanes t1 = (far_plane - origin) * inverse * kSlabWidening;
+    t_near = t0 > t_near ? t0 : t_near;
+    t_far = t1 < t_far ? t1 : t_far;
+  }
+  auto entered = t_near <= t_far;
+  unsigned hits = 0;
+  for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+    t_near_out[i] = t_near[i];
+    hits |= static_cast<unsigned>(entered[i] != 0) << i;
+  }
+  return hits;
 }
 
 template <bool any_hit, class PrimitiveTest>
 bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const {
   if (nodes_.empty()) return false;
-  bool hit = false;
-  uint32_t stack[128];
+  struct Entry {
+    Real t_near;
+    uint32_t child;
+    uint32_t primitive_count;  // 0: `child` is a node
+  };
+  // Each visit pops one entry and pushes at most four, and the binary build is
+  // at most ~80 levels deep (SAH to depth 48, then halving by count), so
+  // 3 · 80 + 1 entries suffice.
+  Entry stack[256];
   int stack_size = 0;
-  uint32_t current = 0;
-  for (;;) {
-    const BvhNode& node = nodes_[current];
-    if (intersect_bounds(node.bounds, ray, t_max)) {
-      if (node.primitive_count > 0) {
-        for (uint32_t i = 0; i < node.primitive_count; ++i) {
-          if (test(primitive_order_[node.offset + i], t_max)) {
-            hit = true;
-            if constexpr (any_hit) return true;
-          }
+  stack[stack_size++] = {0, 0, 0};
+  bool hit = false;
+  while (stack_size > 0) {
+    const Entry entry = stack[--stack_size];
+    if (entry.t_near > t_max) continue;  // a nearer hit was found after it was pushed
+    if (entry.primitive_count > 0) {
+      for (uint32_t i = 0; i < entry.primitive_count; ++i) {
+        if (test(entry.child + i, t_max)) {
+          hit = true;
+          if constexpr (any_hit) return true;
         }
-        if (stack_size == 0) break;
-        current = stack[--stack_size];
-      } else if (ray.direction_is_negative[node.split_axis]) {
-        stack[stack_size++] = current + 1;
-        current = node.offset;
-      } else {
-        stack[stack_size++] = node.offset;
-        current = current + 1;
       }
-    } else {
-      if (stack_size == 0) break;
-      current = stack[--stack_size];
+      continue;
     }
+    const WideBvhNode& node = nodes_[entry.child];
+    Real t_near[WideBvhNode::kWidth];
+    unsigned hits = intersect_children(node, ray, t_max, t_near) & node.occupied;
+    // Push the children hit, farthest first, so that the nearest is visited next.
+    Entry found[WideBvhNode::kWidth];
+    int found_count = 0;
+    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+      if (!(hits >> i & 1)) continue;
+      Entry e{t_near[i], node.child[i], node.primitive_count[i]};
+      int j = found_count++;
+      for (; j > 0 && found[j - 1].t_near < e.t_near; --j) found[j] = found[j - 1];
+      found[j] = e;
+    }
+    for (int i = 0; i < found_count; ++i) stack[stack_size++] = found[i];
   }
   return hit;
 }

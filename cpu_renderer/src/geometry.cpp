@@ -52,7 +52,6 @@ Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 // PrimitiveSet
 
 void PrimitiveSet::build(int threads) {
-  (void)threads;
   std::vector<Bounds3> bounds;
   bounds.reserve(triangles_.size() + spheres_.size());
   for (const Triangle& t : triangles_) {
@@ -68,19 +67,51 @@ void PrimitiveSet::build(int threads) {
     b.extend(s.center + Real3{s.radius, s.radius, s.radius});
     bounds.push_back(b);
   }
-  bvh_ = kernel::Bvh(bounds);
+  bvh_ = kernel::Bvh(bounds, kernel::Bvh::kDefaultMaxLeafSize, threads);
+  move_into_traversal_order();
+}
+
+// Stores the primitives in the order the BVH's leaves name them, so that a
+// leaf's triangles are adjacent in memory. A set of one kind then needs no map
+// from leaf entries to primitives; a mixed one keeps it (triangles first).
+void PrimitiveSet::move_into_traversal_order() {
+  const std::vector<uint32_t> order = bvh_.take_primitive_order();
+  const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
+  std::vector<Triangle> triangles;
+  std::vector<Sphere> spheres;
+  std::vector<uint32_t> faces;
+  triangles.reserve(triangles_.size());
+  spheres.reserve(spheres_.size());
+  faces.reserve(faces_.size());
+  const bool mixed = !triangles_.empty() && !spheres_.empty();
+  if (mixed) entry_primitive_.resize(order.size());
+  for (size_t k = 0; k < order.size(); ++k) {
+    const uint32_t primitive = order[k];
+    if (primitive < triangle_count) {
+      if (mixed) entry_primitive_[k] = static_cast<uint32_t>(triangles.size());
+      triangles.push_back(triangles_[primitive]);
+      if (record_faces_) faces.push_back(faces_[primitive]);
+    } else {
+      if (mixed) entry_primitive_[k] = triangle_count + static_cast<uint32_t>(spheres.size());
+      spheres.push_back(spheres_[primitive - triangle_count]);
+    }
+  }
+  triangles_ = std::move(triangles);
+  spheres_ = std::move(spheres);
+  faces_ = std::move(faces);
 }
 
 size_t PrimitiveSet::memory_bytes() const {
   return triangles_.capacity() * sizeof(Triangle) + spheres_.capacity() * sizeof(Sphere) +
-         faces_.capacity() * sizeof(uint32_t) + bvh_.memory_bytes();
+         (faces_.capacity() + entry_primitive_.capacity()) * sizeof(uint32_t) + bvh_.memory_bytes();
 }
 
 template <bool any_hit>
 bool PrimitiveSet::trace(const Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const {
   kernel::TraversalRay traversal(ray.origin, ray.direction);
   const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
-  return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t index, Real& t_limit) {
+  return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t entry, Real& t_limit) {
+    const uint32_t index = entry_primitive_.empty() ? entry : entry_primitive_[entry];
     if (index < triangle_count) {
       // Möller–Trumbore in double: in float its u, v and t carry an absolute
       // error that grows with |origin - p0| and the edge lengths, which opens

@@ -83,6 +83,7 @@ class PrimitiveSet {
   bool occluded(const kernel::Ray& ray, Real t_max) const;
 
  private:
+  void move_into_traversal_order();
   template <bool any_hit>
   bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
 
@@ -90,6 +91,7 @@ class PrimitiveSet {
   std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits), if recorded
   bool record_faces_ = false;
   std::vector<Sphere> spheres_;
+  std::vector<uint32_t> entry_primitive_;  // BVH leaf entry -> primitive, in sets of triangles and spheres
   kernel::Bvh bvh_;
 };
 

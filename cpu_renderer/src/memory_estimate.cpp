@@ -29,12 +29,11 @@ constexpr uint64_t kFilmBytesPerPixel = std::max(3 * sizeof(double) + 3 * sizeof
 // out the libraries' and the allocator's own use, and other processes go on
 // allocating while it runs.
 constexpr uint64_t kUsablePercent = 80;
-// Per primitive: its world-space record, a face index, the build's bounds and
-// centroid, its place in the primitive order, and up to two BVH nodes.
-constexpr uint64_t kBvhBytesPerPrimitive =
-    sizeof(kernel::Bounds3) + sizeof(kernel::Real3) + sizeof(uint32_t) + 2 * sizeof(kernel::BvhNode);
-constexpr uint64_t kTriangleBytes = sizeof(PrimitiveSet::Triangle) + sizeof(uint32_t) + kBvhBytesPerPrimitive;
-constexpr uint64_t kSphereBytes = sizeof(PrimitiveSet::Sphere) + kBvhBytesPerPrimitive;
+// Per primitive: its bounds for the build and what the build holds beside them.
+constexpr uint64_t kBvhBytesPerPrimitive = sizeof(kernel::Bounds3) + kernel::Bvh::kPeakBytesPerPrimitive;
+// A primitive's record and face index twice: PrimitiveSet copies them into the BVH's order.
+constexpr uint64_t kTriangleBytes = 2 * (sizeof(PrimitiveSet::Triangle) + sizeof(uint32_t)) + kBvhBytesPerPrimitive;
+constexpr uint64_t kSphereBytes = 2 * sizeof(PrimitiveSet::Sphere) + kBvhBytesPerPrimitive;
 // A worker's stack as far as a path of the deepest bounces touches it, and its counters.
 constexpr uint64_t kBytesPerThread = 256 * 1024;
 constexpr uint64_t kBytesPerTile = sizeof(PixelRect);
