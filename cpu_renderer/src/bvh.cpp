@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <deque>
 #include <memory>
 #include <mutex>
-#include <numeric>
+#include <optional>
 #include <thread>
 
 namespace safegi::render::kernel {
@@ -25,13 +24,11 @@ constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // WideBvhNode::primitive_coun
 
 struct Bin {
   Bounds3 bounds;
-  Bounds3 centroid_bounds;
   uint32_t count = 0;
 };
 using AxisBins = std::array<Bin, kBinCount>;
 
-// The two sides of a node's split, each with its box and its centroids' box
-// (read off the bins, so no pass over the primitives recomputes them).
+// A node's part: its box and its centroids' box.
 struct Side {
   Bounds3 bounds;
   Bounds3 centroid_bounds;
@@ -41,7 +38,7 @@ struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin] go left
   Real cost = std::numeric_limits<Real>::infinity();
-  Side left, right;
+  Bounds3 left, right;  // read off the bins, so no pass over the primitives recomputes them
 };
 
 int bin_of(Real centroid, Real lower, Real scale) {
@@ -66,39 +63,81 @@ void for_each_chunk(uint32_t count, int chunks, Work&& work) {
 
 }  // namespace
 
-// The binary SAH tree, built into per-thread arenas; `collapse` then lays it
-// out as four-wide nodes. Every decision depends only on the primitives, so
-// the tree is the same on one thread or many.
-class Bvh::BinaryBuilder {
+// Builds four-wide nodes top down: a node's range is split in two by binned
+// SAH, then its widest part again, until four parts or only leaves remain; each
+// part that is not a leaf becomes a child node (large ones on their own
+// threads). Nodes go into per-thread arenas, then `flatten` lays them out
+// depth first. Every decision depends only on the primitives, so the hierarchy
+// is the same on one thread or many.
+class Bvh::Builder {
  public:
-  BinaryBuilder(std::span<const Bounds3> bounds, std::vector<uint32_t>& order, int max_leaf_size)
+  Builder(std::span<const Bounds3> bounds, std::vector<uint32_t>& order, int max_leaf_size)
       : bounds_(bounds), order_(order), max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))) {
-    centroids_.resize(bounds.size());
+    records_.resize(bounds.size());
   }
 
-  const BinaryNode& build(int threads) {
+  // Builds the hierarchy into `nodes` and fills `order`; returns its bounds.
+  Bounds3 build(int threads, std::vector<WideBvhNode>& nodes) {
     const uint32_t count = static_cast<uint32_t>(bounds_.size());
     const int chunks = count >= kParallelMinimum ? threads : 1;
     std::vector<Side> chunk_sides(chunks);
     for_each_chunk(count, chunks, [&](int chunk, uint32_t begin, uint32_t end) {
       for (uint32_t i = begin; i < end; ++i) {
-        centroids_[i] = bounds_[i].centroid();
+        records_[i] = {bounds_[i], bounds_[i].centroid(), i};
         chunk_sides[chunk].bounds.extend(bounds_[i]);
-        chunk_sides[chunk].centroid_bounds.extend(centroids_[i]);
+        chunk_sides[chunk].centroid_bounds.extend(records_[i].centroid);
       }
     });
-    Side root;
+    Range root{0, count, {}, 0};
     for (const Side& side : chunk_sides) {
-      root.bounds.extend(side.bounds);
-      root.centroid_bounds.extend(side.centroid_bounds);
+      root.side.bounds.extend(side.bounds);
+      root.side.centroid_bounds.extend(side.centroid_bounds);
     }
-    return build_node(0, count, root, 0, threads, new_arena());
+    std::optional<std::pair<Range, Range>> halves = split(root, threads);
+    const PendingNode& tree = halves ? build_node(*halves, threads, new_arena()) : leaf_root(root);
+    size_t total = 0;
+    for (const auto& arena : arenas_) total += arena->size();
+    nodes.reserve(total);
+    flatten(tree, nodes);
+    for (uint32_t i = 0; i < count; ++i) order_[i] = records_[i].primitive;
+    return root.side.bounds;
   }
 
  private:
-  std::deque<BinaryNode>& new_arena() {
+  // A contiguous run of records: a slot of a node being built.
+  struct Range {
+    uint32_t begin = 0, end = 0;
+    Side side;
+    int depth = 0;  // in binary splits from the root
+    bool leaf = false;
+  };
+  struct PendingNode {
+    WideBvhNode node;
+    const PendingNode* children[WideBvhNode::kWidth] = {};
+  };
+
+  // Nodes in blocks that never move (parents point at them), one arena per thread.
+  class Arena {
+   public:
+    PendingNode& emplace_back() {
+      if (used_ == kBlockSize) {
+        blocks_.push_back(std::make_unique<PendingNode[]>(kBlockSize));
+        used_ = 0;
+      }
+      ++size_;
+      return blocks_.back()[used_++];
+    }
+    size_t size() const { return size_; }
+
+   private:
+    static constexpr size_t kBlockSize = 1024;
+    std::vector<std::unique_ptr<PendingNode[]>> blocks_;
+    size_t used_ = kBlockSize, size_ = 0;
+  };
+
+  Arena& new_arena() {
     std::lock_guard lock(arenas_mutex_);
-    return *arenas_.emplace_back(std::make_unique<std::deque<BinaryNode>>());
+    return *arenas_.emplace_back(std::make_unique<Arena>());
   }
 
   // Binned SAH over the node's primitives, the binning split over `threads`
@@ -108,18 +147,21 @@ class Bvh::BinaryBuilder {
     const int chunks = count >= kParallelMinimum ? threads : 1;
     const Bounds3& centroid_bounds = node.centroid_bounds;
     std::vector<std::array<AxisBins, 3>> chunk_bins(chunks);
+    // Every flat axis bins into bin 0 (scale 0) and is skipped below.
+    Real lower[3], scale[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      lower[axis] = centroid_bounds.lower[axis];
+      Real extent = centroid_bounds.upper[axis] - lower[axis];
+      scale[axis] = extent > 0 ? kBinCount / extent : 0;
+    }
     for_each_chunk(count, chunks, [&](int chunk, uint32_t chunk_begin, uint32_t chunk_end) {
-      for (int axis = 0; axis < 3; ++axis) {
-        Real lower = centroid_bounds.lower[axis], extent = centroid_bounds.upper[axis] - lower;
-        if (!(extent > 0)) continue;
-        Real scale = kBinCount / extent;
-        AxisBins& bins = chunk_bins[chunk][axis];
-        for (uint32_t i = begin + chunk_begin; i < begin + chunk_end; ++i) {
-          uint32_t primitive = order_[i];
-          Bin& bin = bins[bin_of(centroids_[primitive][axis], lower, scale)];
+      std::array<AxisBins, 3>& bins = chunk_bins[chunk];
+      for (uint32_t i = begin + chunk_begin; i < begin + chunk_end; ++i) {
+        const Record& record = records_[i];
+        for (int axis = 0; axis < 3; ++axis) {
+          Bin& bin = bins[axis][bin_of(record.centroid[axis], lower[axis], scale[axis])];
           bin.count++;
-          bin.bounds.extend(bounds_[primitive]);
-          bin.centroid_bounds.extend(centroids_[primitive]);
+          bin.bounds.extend(record.bounds);
         }
       }
     });
@@ -131,29 +173,26 @@ class Bvh::BinaryBuilder {
         for (int b = 0; b < kBinCount; ++b) {
           bins[b].count += chunk_bins[chunk][axis][b].count;
           bins[b].bounds.extend(chunk_bins[chunk][axis][b].bounds);
-          bins[b].centroid_bounds.extend(chunk_bins[chunk][axis][b].centroid_bounds);
         }
       // Sweep from the right to get every right side, then from the left.
-      Side right_sides[kBinCount];
+      Bounds3 right_bounds[kBinCount];
       uint32_t right_count[kBinCount];
-      Side right;
+      Bounds3 right;
       uint32_t right_total = 0;
       for (int b = kBinCount - 1; b > 0; --b) {
-        right.bounds.extend(bins[b].bounds);
-        right.centroid_bounds.extend(bins[b].centroid_bounds);
+        right.extend(bins[b].bounds);
         right_total += bins[b].count;
-        right_sides[b] = right;
+        right_bounds[b] = right;
         right_count[b] = right_total;
       }
-      Side left;
+      Bounds3 left;
       uint32_t left_total = 0;
       for (int b = 0; b < kBinCount - 1; ++b) {
-        left.bounds.extend(bins[b].bounds);
-        left.centroid_bounds.extend(bins[b].centroid_bounds);
+        left.extend(bins[b].bounds);
         left_total += bins[b].count;
         if (left_total == 0 || right_count[b + 1] == 0) continue;
-        Real cost = left.bounds.surface_area() * left_total + right_sides[b + 1].bounds.surface_area() * right_count[b + 1];
-        if (cost < best.cost) best = Split{axis, b, cost, left, right_sides[b + 1]};
+        Real cost = left.surface_area() * left_total + right_bounds[b + 1].surface_area() * right_count[b + 1];
+        if (cost < best.cost) best = Split{axis, b, cost, left, right_bounds[b + 1]};
       }
     }
     return best;
@@ -162,132 +201,162 @@ class Bvh::BinaryBuilder {
   Side side_of(uint32_t begin, uint32_t end) const {
     Side side;
     for (uint32_t i = begin; i < end; ++i) {
-      side.bounds.extend(bounds_[order_[i]]);
-      side.centroid_bounds.extend(centroids_[order_[i]]);
+      side.bounds.extend(records_[i].bounds);
+      side.centroid_bounds.extend(records_[i].centroid);
     }
     return side;
   }
 
-  const BinaryNode& build_node(uint32_t begin, uint32_t end, const Side& side, int depth, int threads,
-                               std::deque<BinaryNode>& arena) {
-    BinaryNode& node = arena.emplace_back();
-    node.bounds = side.bounds;
-    const uint32_t count = end - begin;
-    auto make_leaf = [&]() -> const BinaryNode& {
-      node.begin = begin;
-      node.count = count;
-      return node;
-    };
-    if (count <= max_leaf_size_) return make_leaf();
-
+  // Splits `range` in two, or says it is a leaf (nullopt): by SAH above
+  // kMaxSahDepth, by count below it or where SAH finds no split.
+  std::optional<std::pair<Range, Range>> split(const Range& range, int threads) {
+    const uint32_t begin = range.begin, end = range.end, count = end - begin;
+    if (count <= max_leaf_size_) return std::nullopt;
     uint32_t middle = begin;
-    Side left, right;
-    int axis = side.centroid_bounds.widest_axis();
-    if (depth < kMaxSahDepth) {
-      Split split = find_split(begin, end, side, threads);
+    Range left{begin, 0, {}, range.depth + 1}, right{0, end, {}, range.depth + 1};
+    int axis = range.side.centroid_bounds.widest_axis();
+    if (range.depth < kMaxSahDepth) {
+      Split split = find_split(begin, end, range.side, threads);
       Real leaf_cost = static_cast<Real>(count);
-      Real split_cost = split.axis < 0 ? leaf_cost : kTraversalCost + split.cost / side.bounds.surface_area();
+      Real split_cost = split.axis < 0 ? leaf_cost : kTraversalCost + split.cost / range.side.bounds.surface_area();
       if (split.axis >= 0 && (split_cost < leaf_cost || count > kMaxLeafPrimitives)) {
         axis = split.axis;
-        Real lower = side.centroid_bounds.lower[axis];
-        Real scale = kBinCount / (side.centroid_bounds.upper[axis] - lower);
-        auto goes_left = [&](uint32_t primitive) { return bin_of(centroids_[primitive][axis], lower, scale) <= split.bin; };
-        middle = static_cast<uint32_t>(std::partition(order_.begin() + begin, order_.begin() + end, goes_left) -
-                                       order_.begin());
-        left = split.left;
-        right = split.right;
+        Real lower = range.side.centroid_bounds.lower[axis];
+        Real scale = kBinCount / (range.side.centroid_bounds.upper[axis] - lower);
+        auto goes_left = [&](const Record& record) { return bin_of(record.centroid[axis], lower, scale) <= split.bin; };
+        // The boxes come from the bins; the centroids' boxes are gathered as the records move.
+        uint32_t i = begin, j = end;
+        for (;;) {
+          for (; i < j && goes_left(records_[i]); ++i) left.side.centroid_bounds.extend(records_[i].centroid);
+          for (; i < j && !goes_left(records_[j - 1]); --j) right.side.centroid_bounds.extend(records_[j - 1].centroid);
+          if (i == j) break;
+          std::swap(records_[i], records_[j - 1]);
+        }
+        middle = i;
+        left.side.bounds = split.left;
+        right.side.bounds = split.right;
       } else if (split.axis >= 0 || count <= kMaxLeafPrimitives) {
-        return make_leaf();
+        return std::nullopt;
       }
     }
     if (middle == begin || middle == end) {  // no SAH split: halve by count
       middle = begin + count / 2;
-      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
-                       [&](uint32_t a, uint32_t b) { return centroids_[a][axis] < centroids_[b][axis]; });
-      left = side_of(begin, middle);
-      right = side_of(middle, end);
+      std::nth_element(records_.begin() + begin, records_.begin() + middle, records_.begin() + end,
+                       [&](const Record& a, const Record& b) { return a.centroid[axis] < b.centroid[axis]; });
+      left.side = side_of(begin, middle);
+      right.side = side_of(middle, end);
     }
-    // Large subtrees split the threads between them; the left one gets its
-    // own thread and arena.
-    if (threads > 1 && count >= kParallelMinimum) {
-      const int left_threads = threads / 2;
-      const BinaryNode* left_child = nullptr;
-      std::thread helper([&, left_threads] {
-        left_child = &build_node(begin, middle, left, depth + 1, left_threads, new_arena());
-      });
-      node.children[1] = &build_node(middle, end, right, depth + 1, threads - left_threads, arena);
-      helper.join();
-      node.children[0] = left_child;
-    } else {
-      node.children[0] = &build_node(begin, middle, left, depth + 1, 1, arena);
-      node.children[1] = &build_node(middle, end, right, depth + 1, 1, arena);
+    left.end = middle;
+    right.begin = middle;
+    return std::pair{left, right};
+  }
+
+  // Traversal always starts at a node: a set small enough for one leaf gets a
+  // node with that leaf alone.
+  const PendingNode& leaf_root(const Range& root) {
+    PendingNode& pending = new_arena().emplace_back();
+    for (int axis = 0; axis < 3; ++axis)
+      for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+        pending.node.lower[axis][i] = i == 0 ? root.side.bounds.lower[axis] : kInfinity;
+        pending.node.upper[axis][i] = i == 0 ? root.side.bounds.upper[axis] : -kInfinity;
+      }
+    pending.node.primitive_count[0] = static_cast<uint16_t>(root.end - root.begin);
+    pending.node.occupied = 1;
+    return pending;
+  }
+
+  // A node whose range splits into `halves`.
+  const PendingNode& build_node(const std::pair<Range, Range>& halves, int threads, Arena& arena) {
+    Range slots[WideBvhNode::kWidth] = {halves.first, halves.second};
+    std::optional<std::pair<Range, Range>> slot_halves[WideBvhNode::kWidth];
+    int filled = 2;
+    // Every slot's split is found once: a slot opened here gives way to its
+    // halves; one left when the node is full passes them to its own node.
+    auto settle = [&](int i) {
+      if (!slots[i].leaf && !slot_halves[i] && !(slot_halves[i] = split(slots[i], threads))) slots[i].leaf = true;
+    };
+    for (;;) {
+      int widest = -1;
+      for (int i = 0; i < filled; ++i) {
+        settle(i);
+        if (!slots[i].leaf &&
+            (widest < 0 || slots[i].side.bounds.surface_area() > slots[widest].side.bounds.surface_area()))
+          widest = i;
+      }
+      if (widest < 0 || filled == WideBvhNode::kWidth) break;
+      std::pair<Range, Range> opened = *slot_halves[widest];
+      slots[widest] = opened.first;
+      slot_halves[widest].reset();
+      slots[filled++] = opened.second;
     }
-    return node;
+    PendingNode& pending = arena.emplace_back();
+    WideBvhNode& node = pending.node;
+    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+      Bounds3 box = i < filled ? slots[i].side.bounds : Bounds3{};  // Bounds3{} is inverted: +inf .. -inf
+      for (int axis = 0; axis < 3; ++axis) {
+        node.lower[axis][i] = box.lower[axis];
+        node.upper[axis][i] = box.upper[axis];
+      }
+      const bool leaf = i < filled && slots[i].leaf;
+      node.child[i] = leaf ? slots[i].begin : 0;
+      node.primitive_count[i] = leaf ? static_cast<uint16_t>(slots[i].end - slots[i].begin) : 0;
+    }
+    node.occupied = static_cast<uint8_t>((1u << filled) - 1);
+    build_children(slots, slot_halves, filled, threads, pending, arena);
+    return pending;
+  }
+
+  // The interior slots' nodes; with threads to spare, the large ones are dealt
+  // round-robin to up to `threads` threads, each with its own arena.
+  void build_children(const Range (&slots)[WideBvhNode::kWidth],
+                      const std::optional<std::pair<Range, Range>> (&slot_halves)[WideBvhNode::kWidth], int filled,
+                      int threads, PendingNode& pending, Arena& arena) {
+    std::vector<int> large;
+    for (int i = 0; i < filled; ++i) {
+      if (slots[i].leaf) continue;
+      if (threads > 1 && slots[i].end - slots[i].begin >= kParallelMinimum) large.push_back(i);
+      else pending.children[i] = &build_node(*slot_halves[i], 1, arena);
+    }
+    if (large.empty()) return;
+    const int groups = std::min<int>(threads, static_cast<int>(large.size()));
+    const int group_threads = std::max(1, threads / groups);
+    auto run_group = [&](int group, Arena& group_arena) {
+      for (size_t k = group; k < large.size(); k += groups)
+        pending.children[large[k]] = &build_node(*slot_halves[large[k]], group_threads, group_arena);
+    };
+    std::vector<std::thread> helpers;
+    for (int group = 1; group < groups; ++group)
+      helpers.emplace_back([&, group, &group_arena = new_arena()] { run_group(group, group_arena); });
+    run_group(0, arena);
+    for (std::thread& helper : helpers) helper.join();
+  }
+
+  static uint32_t flatten(const PendingNode& pending, std::vector<WideBvhNode>& nodes) {
+    const uint32_t index = static_cast<uint32_t>(nodes.size());
+    nodes.push_back(pending.node);
+    for (int i = 0; i < WideBvhNode::kWidth; ++i)
+      if (pending.children[i]) {
+        uint32_t child = flatten(*pending.children[i], nodes);  // may reallocate nodes: index, not reference
+        nodes[index].child[i] = child;
+      }
+    return index;
   }
 
   std::span<const Bounds3> bounds_;
   std::vector<uint32_t>& order_;
   const uint32_t max_leaf_size_;
-  std::vector<Real3> centroids_;
+  // The primitives as the build moves them: their partitions are contiguous,
+  // so every pass over a node's primitives reads memory in order.
+  std::vector<Record> records_;
   std::mutex arenas_mutex_;
-  std::vector<std::unique_ptr<std::deque<BinaryNode>>> arenas_;
+  std::vector<std::unique_ptr<Arena>> arenas_;
 };
 
 Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads) {
   if (bounds.empty()) return;
   primitive_order_.resize(bounds.size());
-  std::iota(primitive_order_.begin(), primitive_order_.end(), 0u);
-  BinaryBuilder builder(bounds, primitive_order_, max_leaf_size);
-  const BinaryNode& root = builder.build(std::max(1, threads));
-  bounds_ = root.bounds;
-  if (root.leaf()) {  // the root is always a wide node: here, with one leaf child
-    BinaryNode parent;
-    parent.bounds = root.bounds;
-    parent.children[0] = &root;
-    collapse(parent);
-  } else {
-    collapse(root);
-  }
-}
-
-// Lays out `binary` (an interior node) as a wide node: its children, each
-// interior one with the largest box replaced by its own two children until four
-// slots are filled; a slot left empty (a single-leaf root) gets an inverted box.
-uint32_t Bvh::collapse(const BinaryNode& binary) {
-  const BinaryNode* slots[WideBvhNode::kWidth] = {binary.children[0], binary.children[1]};
-  int filled = binary.children[1] ? 2 : 1;
-  while (filled < WideBvhNode::kWidth) {
-    int widest = -1;
-    for (int i = 0; i < filled; ++i)
-      if (!slots[i]->leaf() && (widest < 0 || slots[i]->bounds.surface_area() > slots[widest]->bounds.surface_area()))
-        widest = i;
-    if (widest < 0) break;
-    const BinaryNode* opened = slots[widest];
-    slots[widest] = opened->children[0];
-    slots[filled++] = opened->children[1];
-  }
-  const uint32_t index = static_cast<uint32_t>(nodes_.size());
-  nodes_.emplace_back();
-  for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-    Bounds3 box = i < filled ? slots[i]->bounds : Bounds3{};  // Bounds3{} is inverted: +inf .. -inf
-    for (int axis = 0; axis < 3; ++axis) {
-      nodes_[index].lower[axis][i] = box.lower[axis];
-      nodes_[index].upper[axis][i] = box.upper[axis];
-    }
-    nodes_[index].child[i] = 0;
-    nodes_[index].primitive_count[i] = 0;
-  }
-  nodes_[index].occupied = static_cast<uint8_t>((1u << filled) - 1);
-  for (int i = 0; i < filled; ++i) {
-    if (slots[i]->leaf()) {
-      nodes_[index].child[i] = slots[i]->begin;
-      nodes_[index].primitive_count[i] = static_cast<uint16_t>(slots[i]->count);
-    } else {
-      uint32_t child = collapse(*slots[i]);  // may reallocate nodes_: index, not reference
-      nodes_[index].child[i] = child;
-    }
-  }
-  return index;
+  Builder builder(bounds, primitive_order_, max_leaf_size);
+  bounds_ = builder.build(std::max(1, threads), nodes_);
 }
 
 }  // namespace safegi::render::kernel

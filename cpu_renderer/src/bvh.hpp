@@ -1,7 +1,7 @@
-// Bounding volume hierarchy: a binned-SAH binary build (subtrees on parallel
-// threads), collapsed into nodes of four children whose boxes one loop tests
-// together; traversal visits the nearer children first and stops at the first
-// hit for shadow rays.
+// Bounding volume hierarchy of four-wide nodes, whose children's boxes one
+// vector test checks together. Built top down by binned SAH (large subtrees and
+// bin passes on parallel threads); traversal visits the nearer children first
+// and stops at the first hit for shadow rays.
 //
 // The BVH knows only primitive bounds; the caller supplies the primitive test
 // as a callable, so triangles, spheres and instances share one traversal.
@@ -72,9 +72,12 @@ class Bvh {
     return nodes_.capacity() * sizeof(WideBvhNode) + primitive_order_.capacity() * sizeof(uint32_t);
   }
 
-  // The most a build holds per primitive beside the caller's bounds: a centroid,
-  // its place in the order (twice, while the caller renumbers it), up to two
-  // binary nodes and up to one wide node (a leaf per primitive at worst).
+  // The most a build holds per primitive beside the caller's bounds: its
+  // record, its place in the order (twice, while the caller reorders its
+  // primitives) and the nodes, each while built and as laid out. A node with
+  // four children has at least three leaves below it that no other such node
+  // counts, and one with fewer has at least two leaves of its own, so there
+  // are at most (1/3 + 1/2) nodes per leaf, hence per primitive.
   static const uint64_t kPeakBytesPerPrimitive;
 
   // Calls `test(entry, t_max)` for every leaf entry (see take_primitive_order)
@@ -84,14 +87,12 @@ class Bvh {
   bool traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const;
 
  private:
-  struct BinaryNode {
+  struct Record {  // a primitive in the build
     Bounds3 bounds;
-    const BinaryNode* children[2] = {nullptr, nullptr};
-    uint32_t begin = 0, count = 0;  // a leaf's entries in primitive_order
-    bool leaf() const { return children[0] == nullptr; }
+    Real3 centroid;
+    uint32_t primitive;
   };
-  class BinaryBuilder;
-  uint32_t collapse(const BinaryNode& binary);
+  class Builder;
 
   std::vector<WideBvhNode> nodes_;
   std::vector<uint32_t> primitive_order_;
@@ -99,7 +100,8 @@ class Bvh {
 };
 
 inline constexpr uint64_t Bvh::kPeakBytesPerPrimitive =
-    sizeof(Real3) + 2 * sizeof(uint32_t) + 2 * sizeof(BinaryNode) + sizeof(WideBvhNode);
+    sizeof(Record) + 2 * sizeof(uint32_t) +
+    (sizeof(WideBvhNode) + WideBvhNode::kWidth * sizeof(void*) + sizeof(WideBvhNode)) * 5 / 6;
 
 // t_max widened by 1 + 2γ(3), so that rounding in the slab test never loses a
 // box the ray touches (pbrt-v3 §3.9.2).
@@ -186,6 +188,10 @@ bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) c
     for (int i = 0; i < WideBvhNode::kWidth; ++i) {
       if (!(hits >> i & 1)) continue;
       Entry e{t_near[i], node.child[i], node.primitive_count[i]};
+      if (e.primitive_count == 0) {  // fetch both of its cache lines while the others are visited
+        __builtin_prefetch(&nodes_[e.child]);
+        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[e.child]) + 64);
+      }
       int j = found_count++;
       for (; j > 0 && found[j - 1].t_near < e.t_near; --j) found[j] = found[j - 1];
       found[j] = e;

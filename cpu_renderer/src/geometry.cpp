@@ -237,7 +237,7 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Rend
 
 }  // namespace
 
-Geometry::Geometry(const Scene& scene) {
+Geometry::Geometry(const Scene& scene, int threads) {
   Real time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
   const bool textured = scene.textured();
   if (textured) static_primitives_.record_faces();
@@ -247,7 +247,7 @@ Geometry::Geometry(const Scene& scene) {
       Instance instance{PrimitiveSet{}, *motion, Bounds3{}};
       if (textured) instance.primitives.record_faces();
       add_shape(instance.primitives, shape, i, nullptr);
-      instance.primitives.build();
+      instance.primitives.build(threads);
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below
       for (int s = 0; s <= kPoseSamples; ++s) {
         Real time = time_open + (time_close - time_open) * static_cast<Real>(s) / kPoseSamples;
@@ -262,7 +262,7 @@ Geometry::Geometry(const Scene& scene) {
       add_shape(static_primitives_, shape, i, &shape.render_from_object);
     }
   }
-  static_primitives_.build();
+  static_primitives_.build(threads);
   if (!static_primitives_.empty()) bounds_.extend(static_primitives_.bounds());
 }
 

@@ -97,7 +97,8 @@ class PrimitiveSet {
 
 class Geometry {
  public:
-  explicit Geometry(const Scene& scene);
+  // Builds the hierarchies on up to `threads` threads.
+  explicit Geometry(const Scene& scene, int threads = 1);
 
   std::optional<SurfaceHit> intersect(const TimedRay& ray) const;
   bool occluded(const TimedRay& ray, Length t_max) const;

@@ -142,7 +142,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   window.width = std::clamp(window.width, 0, settings.width - window.x);
   window.height = std::clamp(window.height, 0, settings.height - window.y);
 
-  Geometry geometry(scene);
+  const int hardware_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  Geometry geometry(scene, options.threads > 0 ? options.threads : hardware_threads);
   Lights lights(scene);
   PerspectiveCamera camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
@@ -163,7 +164,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   // Per-pixel sums in double; every pixel's samples are added in sample order,
   // so the result does not depend on which thread rendered which tile.
   std::vector<double> sums(3 * static_cast<size_t>(window.width) * window.height, 0.0);
-  int thread_count = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int thread_count = options.threads > 0 ? options.threads : hardware_threads;
   thread_count = std::max(1, std::min<int>(thread_count, static_cast<int>(std::max<size_t>(tiles.size(), 1))));
 
   const bool budgeted = options.time_budget_seconds > 0;
