@@ -1,7 +1,8 @@
 // The renderer's acceleration structure at scale, against Embree on the same
 // rays (bench/scale/run.py drives it; never a test).
 //
-//   safegi-bench-scale --mesh heightfield|torus --triangles N [--rays R] [--threads T]
+//   safegi-bench-scale --mesh heightfield|torus --triangles N [--resolution R] [--threads T]
+//   safegi-bench-scale --mesh ... --triangles N --ply FILE   (writes the mesh, traces nothing)
 //
 // Generates the mesh (no files), builds our BVH (PrimitiveSet, as the renderer
 // does) and, when built with Embree, an Embree scene over the same triangles,
@@ -175,7 +176,28 @@ struct Options {
   size_t triangles = 100000;
   size_t resolution = 512;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::string ply;  // write the mesh here and stop
 };
+
+// Binary little-endian PLY, as pbrt-v3 and safegi-render read it.
+void write_ply(const Mesh& mesh, const std::string& path) {
+  std::FILE* out = std::fopen(path.c_str(), "wb");
+  if (!out) {
+    std::fprintf(stderr, "safegi-bench-scale: cannot write '%s'\n", path.c_str());
+    std::exit(1);
+  }
+  std::fprintf(out,
+               "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty float x\nproperty float y\n"
+               "property float z\nelement face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+               mesh.positions.size() / 3, mesh.triangle_count());
+  std::fwrite(mesh.positions.data(), sizeof(float), mesh.positions.size(), out);
+  for (size_t i = 0; i < mesh.triangle_count(); ++i) {
+    const unsigned char three = 3;
+    std::fwrite(&three, 1, 1, out);
+    std::fwrite(&mesh.indices[3 * i], sizeof(uint32_t), 3, out);
+  }
+  std::fclose(out);
+}
 
 Options parse(int argc, char** argv) {
   Options options;
@@ -185,6 +207,7 @@ Options parse(int argc, char** argv) {
     else if (flag == "--triangles") options.triangles = std::stoull(value);
     else if (flag == "--resolution") options.resolution = std::stoull(value);
     else if (flag == "--threads") options.threads = std::stoi(value);
+    else if (flag == "--ply") options.ply = value;
     else {
       std::fprintf(stderr, "safegi-bench-scale: unknown option '%s'\n", flag.c_str());
       std::exit(2);
@@ -270,6 +293,10 @@ int main(int argc, char** argv) {
   Options options = parse(argc, argv);
   Mesh mesh = options.mesh == "torus" ? rippled_torus(options.triangles) : height_field(options.triangles);
   const size_t triangles = mesh.triangle_count();
+  if (!options.ply.empty()) {
+    write_ply(mesh, options.ply);
+    return 0;
+  }
 
   PrimitiveSet set;
   for (size_t i = 0; i < triangles; ++i)
