@@ -159,45 +159,52 @@ bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) c
     uint32_t child;
     uint32_t primitive_count;  // 0: `child` is a node
   };
-  // Each visit pops one entry and pushes at most four, and the binary build is
-  // at most ~80 levels deep (SAH to depth 48, then halving by count), so
-  // 3 · 80 + 1 entries suffice.
+  // Each visit pushes at most three entries (the nearest child is visited
+  // next without a round trip through the stack), and the build is at most ~80
+  // binary splits deep (SAH to depth 48, then halving by count), so 3 · 80
+  // entries suffice.
   Entry stack[256];
   int stack_size = 0;
-  stack[stack_size++] = {0, 0, 0};
+  Entry current{0, 0, 0};
   bool hit = false;
-  while (stack_size > 0) {
-    const Entry entry = stack[--stack_size];
-    if (entry.t_near > t_max) continue;  // a nearer hit was found after it was pushed
-    if (entry.primitive_count > 0) {
-      for (uint32_t i = 0; i < entry.primitive_count; ++i) {
-        if (test(entry.child + i, t_max)) {
+  for (;;) {
+    if (current.primitive_count > 0) {
+      for (uint32_t i = 0; i < current.primitive_count; ++i) {
+        if (test(current.child + i, t_max)) {
           hit = true;
           if constexpr (any_hit) return true;
         }
       }
-      continue;
-    }
-    const WideBvhNode& node = nodes_[entry.child];
-    Real t_near[WideBvhNode::kWidth];
-    unsigned hits = intersect_children(node, ray, t_max, t_near) & node.occupied;
-    // Push the children hit, farthest first, so that the nearest is visited next.
-    Entry found[WideBvhNode::kWidth];
-    int found_count = 0;
-    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-      if (!(hits >> i & 1)) continue;
-      Entry e{t_near[i], node.child[i], node.primitive_count[i]};
-      if (e.primitive_count == 0) {  // fetch both of its cache lines while the others are visited
-        __builtin_prefetch(&nodes_[e.child]);
-        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[e.child]) + 64);
+    } else {
+      const WideBvhNode& node = nodes_[current.child];
+      Real t_near[WideBvhNode::kWidth];
+      unsigned hits = intersect_children(node, ray, t_max, t_near) & node.occupied;
+      if (hits != 0) {
+        // The children hit, farthest first; the nearest is visited next, the others pushed.
+        Entry found[WideBvhNode::kWidth];
+        int found_count = 0;
+        for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+          if (!(hits >> i & 1)) continue;
+          Entry e{t_near[i], node.child[i], node.primitive_count[i]};
+          if (e.primitive_count == 0) {  // fetch both of its cache lines while the others are visited
+            __builtin_prefetch(&nodes_[e.child]);
+            __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[e.child]) + 64);
+          }
+          int j = found_count++;
+          for (; j > 0 && found[j - 1].t_near < e.t_near; --j) found[j] = found[j - 1];
+          found[j] = e;
+        }
+        for (int i = 0; i + 1 < found_count; ++i) stack[stack_size++] = found[i];
+        current = found[found_count - 1];
+        continue;
       }
-      int j = found_count++;
-      for (; j > 0 && found[j - 1].t_near < e.t_near; --j) found[j] = found[j - 1];
-      found[j] = e;
     }
-    for (int i = 0; i < found_count; ++i) stack[stack_size++] = found[i];
+    // The next pushed entry still nearer than the nearest hit so far.
+    do {
+      if (stack_size == 0) return hit;
+      current = stack[--stack_size];
+    } while (current.t_near > t_max);
   }
-  return hit;
 }
 
 }  // namespace safegi::render::kernel
