@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -17,14 +18,35 @@ constexpr int kBinCount = 16;
 constexpr int kMaxSahDepth = 48;
 // Relative cost of one traversal step against one primitive test.
 constexpr Real kTraversalCost = 0.5f;
-// Subtrees and bin passes smaller than this stay on one thread: below it a
-// thread's start costs more than the work it takes over.
-constexpr uint32_t kParallelMinimum = 1u << 14;
 constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // WideBvhNode::primitive_count is 16 bits
 
+// Binning touches every primitive's box three times per split, so a bin's box
+// is kept as two vectors (x, y, z and a lane nobody reads) that one SSE min
+// and max extend.
+using Lanes4 = Real __attribute__((vector_size(4 * sizeof(Real))));
+
+Lanes4 load_lanes(const Real3& v) {  // reads the Real after v too: the caller's struct has one
+  Lanes4 lanes;
+  std::memcpy(&lanes, &v, sizeof lanes);
+  return lanes;
+}
+
 struct Bin {
-  Bounds3 bounds;
+  Lanes4 lower = Lanes4{} + kInfinity;
+  Lanes4 upper = Lanes4{} - kInfinity;
   uint32_t count = 0;
+
+  void extend(Lanes4 box_lower, Lanes4 box_upper) {
+    lower = box_lower < lower ? box_lower : lower;
+    upper = box_upper > upper ? box_upper : upper;
+  }
+  Bounds3 bounds() const {
+    Bounds3 box;
+    if (count == 0) return box;
+    box.lower = {lower[0], lower[1], lower[2]};
+    box.upper = {upper[0], upper[1], upper[2]};
+    return box;
+  }
 };
 using AxisBins = std::array<Bin, kBinCount>;
 
@@ -45,22 +67,6 @@ int bin_of(Real centroid, Real lower, Real scale) {
   return std::min(kBinCount - 1, static_cast<int>((centroid - lower) * scale));
 }
 
-// Runs `work(chunk, begin, end)` over `count` items in `chunks` contiguous
-// chunks, chunk 0 on this thread.
-template <class Work>
-void for_each_chunk(uint32_t count, int chunks, Work&& work) {
-  std::vector<std::thread> helpers;
-  auto range = [&](int chunk) {
-    return std::pair{static_cast<uint32_t>(uint64_t{count} * chunk / chunks),
-                     static_cast<uint32_t>(uint64_t{count} * (chunk + 1) / chunks)};
-  };
-  for (int chunk = 1; chunk < chunks; ++chunk)
-    helpers.emplace_back([&work, chunk, r = range(chunk)] { work(chunk, r.first, r.second); });
-  auto [begin, end] = range(0);
-  work(0, begin, end);
-  for (std::thread& helper : helpers) helper.join();
-}
-
 }  // namespace
 
 // Builds four-wide nodes top down: a node's range is split in two by binned
@@ -71,21 +77,22 @@ void for_each_chunk(uint32_t count, int chunks, Work&& work) {
 // is the same on one thread or many.
 class Bvh::Builder {
  public:
-  Builder(std::span<const Bounds3> bounds, std::vector<uint32_t>& order, int max_leaf_size)
-      : bounds_(bounds), order_(order), max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))) {
-    records_.resize(bounds.size());
+  Builder(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, std::vector<uint32_t>& order,
+          int max_leaf_size)
+      : bounds_of_(bounds_of), order_(order), max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))) {
+    records_.resize(count);
   }
 
   // Builds the hierarchy into `nodes` and fills `order`; returns its bounds.
   Bounds3 build(int threads, std::vector<WideBvhNode>& nodes) {
-    const uint32_t count = static_cast<uint32_t>(bounds_.size());
+    const uint32_t count = static_cast<uint32_t>(records_.size());
     const int chunks = count >= kParallelMinimum ? threads : 1;
     std::vector<Side> chunk_sides(chunks);
     for_each_chunk(count, chunks, [&](int chunk, uint32_t begin, uint32_t end) {
       for (uint32_t i = begin; i < end; ++i) {
-        records_[i] = {bounds_[i], bounds_[i].centroid(), i};
-        chunk_sides[chunk].bounds.extend(bounds_[i]);
-        chunk_sides[chunk].centroid_bounds.extend(records_[i].centroid);
+        records_[i] = {bounds_of_(i), i};
+        chunk_sides[chunk].bounds.extend(records_[i].bounds);
+        chunk_sides[chunk].centroid_bounds.extend(records_[i].centroid());
       }
     });
     Range root{0, count, {}, 0};
@@ -158,10 +165,12 @@ class Bvh::Builder {
       std::array<AxisBins, 3>& bins = chunk_bins[chunk];
       for (uint32_t i = begin + chunk_begin; i < begin + chunk_end; ++i) {
         const Record& record = records_[i];
+        // bounds.upper is followed by the primitive index, bounds.lower by upper.
+        const Lanes4 box_lower = load_lanes(record.bounds.lower), box_upper = load_lanes(record.bounds.upper);
         for (int axis = 0; axis < 3; ++axis) {
-          Bin& bin = bins[axis][bin_of(record.centroid[axis], lower[axis], scale[axis])];
+          Bin& bin = bins[axis][bin_of(record.centroid(axis), lower[axis], scale[axis])];
           bin.count++;
-          bin.bounds.extend(record.bounds);
+          bin.extend(box_lower, box_upper);
         }
       }
     });
@@ -171,8 +180,9 @@ class Bvh::Builder {
       AxisBins bins = chunk_bins[0][axis];
       for (int chunk = 1; chunk < chunks; ++chunk)
         for (int b = 0; b < kBinCount; ++b) {
-          bins[b].count += chunk_bins[chunk][axis][b].count;
-          bins[b].bounds.extend(chunk_bins[chunk][axis][b].bounds);
+          const Bin& other = chunk_bins[chunk][axis][b];
+          bins[b].count += other.count;
+          bins[b].extend(other.lower, other.upper);
         }
       // Sweep from the right to get every right side, then from the left.
       Bounds3 right_bounds[kBinCount];
@@ -180,7 +190,7 @@ class Bvh::Builder {
       Bounds3 right;
       uint32_t right_total = 0;
       for (int b = kBinCount - 1; b > 0; --b) {
-        right.extend(bins[b].bounds);
+        right.extend(bins[b].bounds());
         right_total += bins[b].count;
         right_bounds[b] = right;
         right_count[b] = right_total;
@@ -188,7 +198,7 @@ class Bvh::Builder {
       Bounds3 left;
       uint32_t left_total = 0;
       for (int b = 0; b < kBinCount - 1; ++b) {
-        left.extend(bins[b].bounds);
+        left.extend(bins[b].bounds());
         left_total += bins[b].count;
         if (left_total == 0 || right_count[b + 1] == 0) continue;
         Real cost = left.surface_area() * left_total + right_bounds[b + 1].surface_area() * right_count[b + 1];
@@ -202,7 +212,7 @@ class Bvh::Builder {
     Side side;
     for (uint32_t i = begin; i < end; ++i) {
       side.bounds.extend(records_[i].bounds);
-      side.centroid_bounds.extend(records_[i].centroid);
+      side.centroid_bounds.extend(records_[i].centroid());
     }
     return side;
   }
@@ -223,12 +233,12 @@ class Bvh::Builder {
         axis = split.axis;
         Real lower = range.side.centroid_bounds.lower[axis];
         Real scale = kBinCount / (range.side.centroid_bounds.upper[axis] - lower);
-        auto goes_left = [&](const Record& record) { return bin_of(record.centroid[axis], lower, scale) <= split.bin; };
+        auto goes_left = [&](const Record& record) { return bin_of(record.centroid(axis), lower, scale) <= split.bin; };
         // The boxes come from the bins; the centroids' boxes are gathered as the records move.
         uint32_t i = begin, j = end;
         for (;;) {
-          for (; i < j && goes_left(records_[i]); ++i) left.side.centroid_bounds.extend(records_[i].centroid);
-          for (; i < j && !goes_left(records_[j - 1]); --j) right.side.centroid_bounds.extend(records_[j - 1].centroid);
+          for (; i < j && goes_left(records_[i]); ++i) left.side.centroid_bounds.extend(records_[i].centroid());
+          for (; i < j && !goes_left(records_[j - 1]); --j) right.side.centroid_bounds.extend(records_[j - 1].centroid());
           if (i == j) break;
           std::swap(records_[i], records_[j - 1]);
         }
@@ -242,7 +252,7 @@ class Bvh::Builder {
     if (middle == begin || middle == end) {  // no SAH split: halve by count
       middle = begin + count / 2;
       std::nth_element(records_.begin() + begin, records_.begin() + middle, records_.begin() + end,
-                       [&](const Record& a, const Record& b) { return a.centroid[axis] < b.centroid[axis]; });
+                       [&](const Record& a, const Record& b) { return a.centroid(axis) < b.centroid(axis); });
       left.side = side_of(begin, middle);
       right.side = side_of(middle, end);
     }
@@ -342,7 +352,7 @@ class Bvh::Builder {
     return index;
   }
 
-  std::span<const Bounds3> bounds_;
+  const std::function<Bounds3(uint32_t)>& bounds_of_;
   std::vector<uint32_t>& order_;
   const uint32_t max_leaf_size_;
   // The primitives as the build moves them: their partitions are contiguous,
@@ -352,10 +362,13 @@ class Bvh::Builder {
   std::vector<std::unique_ptr<Arena>> arenas_;
 };
 
-Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads) {
-  if (bounds.empty()) return;
-  primitive_order_.resize(bounds.size());
-  Builder builder(bounds, primitive_order_, max_leaf_size);
+Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads)
+    : Bvh(static_cast<uint32_t>(bounds.size()), [&](uint32_t i) { return bounds[i]; }, max_leaf_size, threads) {}
+
+Bvh::Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads) {
+  if (count == 0) return;
+  primitive_order_.resize(count);
+  Builder builder(count, bounds_of, primitive_order_, max_leaf_size);
   bounds_ = builder.build(std::max(1, threads), nodes_);
 }
 

@@ -9,12 +9,35 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
 namespace safegi::render::kernel {
+
+// Runs `work(chunk, begin, end)` over `count` items in `chunks` contiguous
+// chunks, chunk 0 on this thread and each other on a thread of its own.
+template <class Work>
+void for_each_chunk(uint32_t count, int chunks, Work&& work) {
+  std::vector<std::thread> helpers;
+  auto range = [&](int chunk) {
+    return std::pair{static_cast<uint32_t>(uint64_t{count} * chunk / chunks),
+                     static_cast<uint32_t>(uint64_t{count} * (chunk + 1) / chunks)};
+  };
+  for (int chunk = 1; chunk < chunks; ++chunk)
+    helpers.emplace_back([&work, chunk, r = range(chunk)] { work(chunk, r.first, r.second); });
+  auto [begin, end] = range(0);
+  work(0, begin, end);
+  for (std::thread& helper : helpers) helper.join();
+}
+
+// Passes over fewer items than this stay on one thread: below it a thread's
+// start costs more than the work it takes over.
+inline constexpr uint32_t kParallelMinimum = 1u << 14;
 
 // Two cache lines in float, aligned so that a node never straddles a third.
 struct alignas(64) WideBvhNode {
@@ -55,6 +78,9 @@ class Bvh {
   // Builds over `bounds[i]`, the bounds of primitive i, on up to `threads`
   // threads; the hierarchy is the same whatever the thread count.
   explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
+  // The same over `count` primitives whose bounds `bounds_of(i)` gives (called
+  // once each, from the build's threads), so that no array of them is kept.
+  Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads);
 
   // The leaves' primitives: leaf entry k is primitive order[k]. The traversal
   // names entries, not primitives, so that a caller who stores its primitives
@@ -87,9 +113,10 @@ class Bvh {
 
  private:
   struct Record {  // a primitive in the build
-    Bounds3 bounds;
-    Real3 centroid;
+    Bounds3 bounds;  // followed by a member: the binning loads each corner as four lanes
     uint32_t primitive;
+    Real3 centroid() const { return bounds.centroid(); }
+    Real centroid(int axis) const { return (bounds.lower[axis] + bounds.upper[axis]) * 0.5f; }
   };
   class Builder;
 

@@ -52,30 +52,52 @@ Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 // PrimitiveSet
 
 void PrimitiveSet::build(int threads) {
-  std::vector<Bounds3> bounds;
-  bounds.reserve(triangles_.size() + spheres_.size());
-  for (const Triangle& t : triangles_) {
+  build_hierarchy(threads);
+  move_into_traversal_order(threads);
+}
+
+void PrimitiveSet::build_hierarchy(int threads) {
+  const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
+  auto bounds_of = [&](uint32_t i) {
     Bounds3 b;
-    b.extend(t.p0);
-    b.extend(t.p0 + t.e1);
-    b.extend(t.p0 + t.e2);
-    bounds.push_back(b);
-  }
-  for (const Sphere& s : spheres_) {
-    Bounds3 b;
-    b.extend(s.center - Real3{s.radius, s.radius, s.radius});
-    b.extend(s.center + Real3{s.radius, s.radius, s.radius});
-    bounds.push_back(b);
-  }
-  bvh_ = kernel::Bvh(bounds, kernel::Bvh::kDefaultMaxLeafSize, threads);
-  move_into_traversal_order();
+    if (i < triangle_count) {
+      const Triangle& t = triangles_[i];
+      b.extend(t.p0);
+      b.extend(t.p0 + t.e1);
+      b.extend(t.p0 + t.e2);
+    } else {
+      const Sphere& s = spheres_[i - triangle_count];
+      b.extend(s.center - Real3{s.radius, s.radius, s.radius});
+      b.extend(s.center + Real3{s.radius, s.radius, s.radius});
+    }
+    return b;
+  };
+  bvh_ = kernel::Bvh(triangle_count + static_cast<uint32_t>(spheres_.size()), bounds_of,
+                     kernel::Bvh::kDefaultMaxLeafSize, threads);
 }
 
 // Stores the primitives in the order the BVH's leaves name them, so that a
 // leaf's triangles are adjacent in memory. A set of one kind then needs no map
 // from leaf entries to primitives; a mixed one keeps it (triangles first).
-void PrimitiveSet::move_into_traversal_order() {
+void PrimitiveSet::move_into_traversal_order(int threads) {
   const std::vector<uint32_t> order = bvh_.take_primitive_order();
+  const uint32_t count = static_cast<uint32_t>(order.size());
+  if (triangles_.empty() || spheres_.empty()) {
+    auto gather = [&](auto& items) {
+      std::remove_reference_t<decltype(items)> moved(items.size());
+      kernel::for_each_chunk(count, count >= kernel::kParallelMinimum ? threads : 1, [&](int, uint32_t begin, uint32_t end) {
+        for (uint32_t k = begin; k < end; ++k) moved[k] = items[order[k]];
+      });
+      items = std::move(moved);
+    };
+    if (spheres_.empty()) {
+      gather(triangles_);
+      if (record_faces_) gather(faces_);
+    } else {
+      gather(spheres_);
+    }
+    return;
+  }
   const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
   std::vector<Triangle> triangles;
   std::vector<Sphere> spheres;
@@ -83,16 +105,15 @@ void PrimitiveSet::move_into_traversal_order() {
   triangles.reserve(triangles_.size());
   spheres.reserve(spheres_.size());
   faces.reserve(faces_.size());
-  const bool mixed = !triangles_.empty() && !spheres_.empty();
-  if (mixed) entry_primitive_.resize(order.size());
-  for (size_t k = 0; k < order.size(); ++k) {
+  entry_primitive_.resize(count);
+  for (uint32_t k = 0; k < count; ++k) {
     const uint32_t primitive = order[k];
     if (primitive < triangle_count) {
-      if (mixed) entry_primitive_[k] = static_cast<uint32_t>(triangles.size());
+      entry_primitive_[k] = static_cast<uint32_t>(triangles.size());
       triangles.push_back(triangles_[primitive]);
       if (record_faces_) faces.push_back(faces_[primitive]);
     } else {
-      if (mixed) entry_primitive_[k] = triangle_count + static_cast<uint32_t>(spheres.size());
+      entry_primitive_[k] = triangle_count + static_cast<uint32_t>(spheres.size());
       spheres.push_back(spheres_[primitive - triangle_count]);
     }
   }

@@ -83,7 +83,8 @@ class PrimitiveSet {
   bool occluded(const kernel::Ray& ray, Real t_max) const;
 
  private:
-  void move_into_traversal_order();
+  void build_hierarchy(int threads);
+  void move_into_traversal_order(int threads);
   template <bool any_hit>
   bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
 

@@ -29,8 +29,8 @@ constexpr uint64_t kFilmBytesPerPixel = std::max(3 * sizeof(double) + 3 * sizeof
 // out the libraries' and the allocator's own use, and other processes go on
 // allocating while it runs.
 constexpr uint64_t kUsablePercent = 80;
-// Per primitive: its bounds for the build and what the build holds beside them.
-constexpr uint64_t kBvhBytesPerPrimitive = sizeof(kernel::Bounds3) + kernel::Bvh::kPeakBytesPerPrimitive;
+// Per primitive: what the BVH's build holds.
+constexpr uint64_t kBvhBytesPerPrimitive = kernel::Bvh::kPeakBytesPerPrimitive;
 // A primitive's record and face index twice: PrimitiveSet copies them into the BVH's order.
 constexpr uint64_t kTriangleBytes = 2 * (sizeof(PrimitiveSet::Triangle) + sizeof(uint32_t)) + kBvhBytesPerPrimitive;
 constexpr uint64_t kSphereBytes = 2 * sizeof(PrimitiveSet::Sphere) + kBvhBytesPerPrimitive;

@@ -89,13 +89,13 @@ TEST_F(RenderCli, ARenderThatDoesNotFitIsRefusedBeforeItAllocates) {
   EXPECT_EQ(run("\"" + scene.string() + "\" --resolution 20000x20000 --threads 2", "SAFEGI_RENDER_MEMORY_LIMIT=8GiB"),
             std::make_pair(1, std::string("error: this render needs about 13.4 GiB of memory, more than 80 % of the "
                                           "8.0 GiB available (SAFEGI_RENDER_MEMORY_LIMIT): the 20000x20000 image "
-                                          "13.4 GiB, geometry and BVH 256 B (0 triangles, 1 spheres), 2 threads "
+                                          "13.4 GiB, geometry and BVH 220 B (0 triangles, 1 spheres), 2 threads "
                                           "24.3 MiB; lower --resolution, render a --crop window\n")));
   EXPECT_EQ(run("\"" + scene.string() + "\" --resolution 64x64 --threads 1 --integrator photon --photons 1000000",
                 "SAFEGI_RENDER_MEMORY_LIMIT=1MiB"),
             std::make_pair(1, std::string("error: this render needs about 54.8 MiB of memory, more than 80 % of the "
                                           "1.0 MiB available (SAFEGI_RENDER_MEMORY_LIMIT): the 64x64 image 144.0 KiB, "
-                                          "geometry and BVH 256 B (0 triangles, 1 spheres), 1 thread 256.2 KiB, "
+                                          "geometry and BVH 220 B (0 triangles, 1 spheres), 1 thread 256.2 KiB, "
                                           "photons 54.4 MiB; lower --resolution, render a --crop window or trace "
                                           "fewer --photons\n")));
   // A crop window is what is allocated.
