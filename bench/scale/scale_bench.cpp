@@ -43,6 +43,16 @@ struct Mesh {
   std::vector<uint32_t> indices;  // three per triangle
   Real3 vertex(uint32_t i) const { return {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]}; }
   size_t triangle_count() const { return indices.size() / 3; }
+
+  // Two triangles for each of `columns` × `rows` quads; `vertex(i, j)` names a quad's corner.
+  template <class Vertex>
+  void add_quads(size_t columns, size_t rows, Vertex&& vertex) {
+    indices.reserve(indices.size() + 6 * columns * rows);
+    for (size_t j = 0; j < rows; ++j)
+      for (size_t i = 0; i < columns; ++i)
+        indices.insert(indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j),
+                                       vertex(i + 1, j + 1), vertex(i, j + 1)});
+  }
 };
 
 // A grid of `cells`² quads over [-1, 1]², heights from a few sines: an open,
@@ -57,12 +67,7 @@ Mesh height_field(size_t triangles) {
       float z = 0.15f * std::sin(5 * x) * std::cos(4 * y) + 0.05f * std::sin(23 * x + 17 * y);
       mesh.positions.insert(mesh.positions.end(), {x, y, z});
     }
-  auto vertex = [&](size_t i, size_t j) { return static_cast<uint32_t>(j * (cells + 1) + i); };
-  mesh.indices.reserve(6 * cells * cells);
-  for (size_t j = 0; j < cells; ++j)
-    for (size_t i = 0; i < cells; ++i)
-      mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j),
-                                               vertex(i + 1, j + 1), vertex(i, j + 1)});
+  mesh.add_quads(cells, cells, [&](size_t i, size_t j) { return static_cast<uint32_t>(j * (cells + 1) + i); });
   return mesh;
 }
 
@@ -82,12 +87,8 @@ Mesh rippled_torus(size_t triangles) {
                                                    static_cast<float>(ring * std::sin(u)),
                                                    static_cast<float>(r * std::sin(v))});
     }
-  auto vertex = [&](size_t i, size_t j) { return static_cast<uint32_t>((j % around) * tube + (i % tube)); };
-  mesh.indices.reserve(6 * around * tube);
-  for (size_t j = 0; j < around; ++j)
-    for (size_t i = 0; i < tube; ++i)
-      mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j),
-                                               vertex(i + 1, j + 1), vertex(i, j + 1)});
+  mesh.add_quads(tube, around,
+                 [&](size_t i, size_t j) { return static_cast<uint32_t>((j % around) * tube + (i % tube)); });
   return mesh;
 }
 
