@@ -94,8 +94,11 @@ def renders(program: Path, tmp: Path) -> list[dict]:
         if pbrt:
             out, wall, cpu, peak = run_measured([pbrt, "--nthreads", str(THREADS), scene.name], tmp)
             traced = sum(int(n) for n in re.findall(r"(?:Regular|Shadow) ray intersection tests\s+(\d+)", out))
+            compared = subprocess.run([str(h.binary("safegi-image-compare")), str(tmp / f"ours-{size}.exr"),
+                                       str(tmp / f"pbrt-{size}.exr")], capture_output=True, text=True, check=True)
             row.update({"pbrt_wall": wall, "pbrt_rays_per_cpu_second": traced / cpu if traced else None,
-                        "pbrt_peak_mib": peak / 1024})
+                        "pbrt_cpu": cpu, "pbrt_peak_mib": peak / 1024,
+                        "mean_ratio": json.loads(compared.stdout)["mean_ratio"][0]})
         results.append(row)
     return results
 
@@ -174,19 +177,25 @@ structure holds for tracing (ours: triangles, nodes, face indices; Embree: its m
     render_header = ["triangles", "spp", "ours: rays per render CPU-s", "ours: peak MiB", "ours: wall s"]
     pbrt = any("pbrt_wall" in r for r in rendered)
     if pbrt:
-        render_header += ["pbrt-v3: rays per CPU-s", "pbrt-v3: peak MiB", "pbrt-v3: wall s"]
+        render_header += ["pbrt-v3: rays per CPU-s", "pbrt-v3: peak MiB", "pbrt-v3: wall s", "ours / pbrt-v3: rays per CPU-s",
+                          "peak memory", "image mean"]
     render_rows = []
     for r in rendered:
         row = [f"{r['triangles']:,}", str(r["spp"]), million(r["ours_rays_per_cpu_second"]),
                f"{r['ours_peak_mib']:.0f}", f"{r['ours_wall']:.2f}"]
         if pbrt:
             rays = r.get("pbrt_rays_per_cpu_second")
-            row += [million(rays) if rays else "—", f"{r['pbrt_peak_mib']:.0f}", f"{r['pbrt_wall']:.2f}"]
+            row += [million(rays) if rays else "—", f"{r['pbrt_peak_mib']:.0f}", f"{r['pbrt_wall']:.2f}",
+                    f"{r['ours_rays_per_cpu_second'] / rays:.2f}×" if rays else "—",
+                    f"{r['ours_peak_mib'] / r['pbrt_peak_mib']:.2f}×", f"{r['mean_ratio']:.4f}"]
         render_rows.append(row)
     text += (f"\nWhole renders: `safegi-render` on a pbrt-v3 file of the height field under a quad light, "
              f"{RESOLUTION}², path tracing to depth 5, {THREADS} threads (render CPU includes the BVH build, which "
              f"dominates the 4 spp render of the largest mesh; peak memory includes OpenImageIO's ≈ 127 MiB)"
-             + (", and pbrt-v3 (`SAFEGI_PBRT`) on the same file, back to back" if pbrt else
+             + (", and pbrt-v3 (`SAFEGI_PBRT`) on the same file, back to back. pbrt-v3's rays are its"
+                " 'Regular' and 'Shadow ray intersection tests' over its whole process's CPU time (parsing and"
+                " BVH included), ours over the render's (BVH included, import not); 'image mean' is ours over"
+                " pbrt-v3's mean pixel value" if pbrt else
                 "; pbrt-v3's columns appear when `SAFEGI_PBRT` names its binary") + ":\n\n")
     text += h.table(render_header, render_rows)
     h.write_section("scale", text)
