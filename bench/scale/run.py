@@ -9,7 +9,8 @@ and whole renders of the same meshes, from a thousand to ten million triangles.
 Part 1 (safegi-bench-scale, one process per mesh and size): BVH build time on
 all cores, bytes per triangle, and rays per CPU-second on one thread for
 camera, extension and shadow rays, with Embree tracing the same rays in the
-same process when the program was built with it (Debian: libembree-dev).
+same process when the program was built with it (Debian: libembree-dev, then
+configure with -DSAFEGI_BENCH_EMBREE=ON).
 Part 2: safegi-render on a pbrt-v3 scene of the height field under a quad
 light (path tracing, depth 5), its rays per render CPU-second and peak memory;
 with SAFEGI_PBRT, pbrt-v3 on the same file, back to back.
