@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <condition_variable>
+#include <deque>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -71,9 +73,9 @@ int bin_of(Real centroid, Real lower, Real scale) {
 
 // Builds four-wide nodes top down: a node's range is split in two by binned
 // SAH, then its widest part again, until four parts or only leaves remain; each
-// part that is not a leaf becomes a child node (large ones on their own
-// threads). Nodes go into per-thread arenas, then `flatten` lays them out
-// depth first. Every decision depends only on the primitives, so the hierarchy
+// part that is not a leaf becomes a child node (large ones as tasks that any
+// of the build's workers takes). Nodes go into per-worker arenas, then
+// `flatten` lays them out depth first. Every decision depends only on the primitives, so the hierarchy
 // is the same on one thread or many.
 class Bvh::Builder {
  public:
@@ -100,8 +102,16 @@ class Bvh::Builder {
       root.side.bounds.extend(side.bounds);
       root.side.centroid_bounds.extend(side.centroid_bounds);
     }
+    // The root's splits bin on all threads; the subtrees it leaves go to
+    // `threads` workers, this thread one of them.
+    workers_ = threads;
     std::optional<std::pair<Range, Range>> halves = split(root, threads);
     const PendingNode& tree = halves ? build_node(*halves, threads, new_arena()) : leaf_root(root);
+    std::vector<std::thread> helpers;
+    for (int worker = 1; worker < threads; ++worker)
+      helpers.emplace_back([this, &arena = new_arena()] { work(arena); });
+    work(new_arena());
+    for (std::thread& helper : helpers) helper.join();
     size_t total = 0;
     for (const auto& arena : arenas_) total += arena->size();
     nodes.reserve(total);
@@ -153,7 +163,13 @@ class Bvh::Builder {
     const uint32_t count = end - begin;
     const int chunks = count >= kParallelMinimum ? threads : 1;
     const Bounds3& centroid_bounds = node.centroid_bounds;
-    std::vector<std::array<AxisBins, 3>> chunk_bins(chunks);
+    // One chunk's bins live on the stack: most splits are of small nodes, and
+    // an allocation each would cost more than their binning.
+    std::array<AxisBins, 3> only_bins;
+    std::vector<std::array<AxisBins, 3>> more_bins(chunks > 1 ? chunks : 0);
+    auto chunk_bins = [&](int chunk) -> std::array<AxisBins, 3>& {
+      return chunks > 1 ? more_bins[chunk] : only_bins;
+    };
     // Every flat axis bins into bin 0 (scale 0) and is skipped below.
     Real lower[3], scale[3];
     for (int axis = 0; axis < 3; ++axis) {
@@ -162,7 +178,7 @@ class Bvh::Builder {
       scale[axis] = extent > 0 ? kBinCount / extent : 0;
     }
     for_each_chunk(count, chunks, [&](int chunk, uint32_t chunk_begin, uint32_t chunk_end) {
-      std::array<AxisBins, 3>& bins = chunk_bins[chunk];
+      std::array<AxisBins, 3>& bins = chunk_bins(chunk);
       for (uint32_t i = begin + chunk_begin; i < begin + chunk_end; ++i) {
         const Record& record = records_[i];
         // bounds.upper is followed by the primitive index, bounds.lower by upper.
@@ -177,10 +193,10 @@ class Bvh::Builder {
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
       if (!(centroid_bounds.upper[axis] - centroid_bounds.lower[axis] > 0)) continue;
-      AxisBins bins = chunk_bins[0][axis];
+      AxisBins bins = chunk_bins(0)[axis];
       for (int chunk = 1; chunk < chunks; ++chunk)
         for (int b = 0; b < kBinCount; ++b) {
-          const Bin& other = chunk_bins[chunk][axis][b];
+          const Bin& other = chunk_bins(chunk)[axis][b];
           bins[b].count += other.count;
           bins[b].extend(other.lower, other.upper);
         }
@@ -238,7 +254,8 @@ class Bvh::Builder {
         uint32_t i = begin, j = end;
         for (;;) {
           for (; i < j && goes_left(records_[i]); ++i) left.side.centroid_bounds.extend(records_[i].centroid());
-          for (; i < j && !goes_left(records_[j - 1]); --j) right.side.centroid_bounds.extend(records_[j - 1].centroid());
+          for (; i < j && !goes_left(records_[j - 1]); --j)
+            right.side.centroid_bounds.extend(records_[j - 1].centroid());
           if (i == j) break;
           std::swap(records_[i], records_[j - 1]);
         }
@@ -312,33 +329,45 @@ class Bvh::Builder {
       node.primitive_count[i] = leaf ? static_cast<uint16_t>(slots[i].end - slots[i].begin) : 0;
     }
     node.occupied = static_cast<uint8_t>((1u << filled) - 1);
-    build_children(slots, slot_halves, filled, threads, pending, arena);
+    build_children(slots, slot_halves, filled, pending, arena);
     return pending;
   }
 
-  // The interior slots' nodes; with threads to spare, the large ones are dealt
-  // round-robin to up to `threads` threads, each with its own arena.
+  // The interior slots' nodes. Large ones become tasks for the build's
+  // workers when it has more than one; the rest are built here, on one thread.
   void build_children(const Range (&slots)[WideBvhNode::kWidth],
                       const std::optional<std::pair<Range, Range>> (&slot_halves)[WideBvhNode::kWidth], int filled,
-                      int threads, PendingNode& pending, Arena& arena) {
-    std::vector<int> large;
+                      PendingNode& pending, Arena& arena) {
     for (int i = 0; i < filled; ++i) {
       if (slots[i].leaf) continue;
-      if (threads > 1 && slots[i].end - slots[i].begin >= kParallelMinimum) large.push_back(i);
-      else pending.children[i] = &build_node(*slot_halves[i], 1, arena);
+      if (workers_ > 1 && slots[i].end - slots[i].begin >= kParallelMinimum) {
+        std::lock_guard lock(tasks_mutex_);
+        tasks_.push_back({*slot_halves[i], &pending.children[i]});
+        task_added_.notify_one();
+      } else {
+        pending.children[i] = &build_node(*slot_halves[i], 1, arena);
+      }
     }
-    if (large.empty()) return;
-    const int groups = std::min<int>(threads, static_cast<int>(large.size()));
-    const int group_threads = std::max(1, threads / groups);
-    auto run_group = [&](int group, Arena& group_arena) {
-      for (size_t k = group; k < large.size(); k += groups)
-        pending.children[large[k]] = &build_node(*slot_halves[large[k]], group_threads, group_arena);
-    };
-    std::vector<std::thread> helpers;
-    for (int group = 1; group < groups; ++group)
-      helpers.emplace_back([&, group, &group_arena = new_arena()] { run_group(group, group_arena); });
-    run_group(0, arena);
-    for (std::thread& helper : helpers) helper.join();
+  }
+
+  // A worker: builds queued subtrees (each into this worker's arena) until the
+  // queue is empty and no other worker can add to it.
+  void work(Arena& arena) {
+    std::unique_lock lock(tasks_mutex_);
+    for (;;) {
+      task_added_.wait(lock, [&] { return !tasks_.empty() || busy_ == 0; });
+      if (tasks_.empty()) {
+        task_added_.notify_all();  // nothing left and nobody working: the others stop too
+        return;
+      }
+      Task task = tasks_.front();
+      tasks_.pop_front();
+      ++busy_;
+      lock.unlock();
+      *task.slot = &build_node(task.halves, 1, arena);
+      lock.lock();
+      --busy_;
+    }
   }
 
   static uint32_t flatten(const PendingNode& pending, std::vector<WideBvhNode>& nodes) {
@@ -360,6 +389,17 @@ class Bvh::Builder {
   std::vector<Record> records_;
   std::mutex arenas_mutex_;
   std::vector<std::unique_ptr<Arena>> arenas_;
+
+  // Subtrees waiting for a worker, each with the slot that will point at it.
+  struct Task {
+    std::pair<Range, Range> halves;
+    const PendingNode** slot;
+  };
+  int workers_ = 1;
+  std::mutex tasks_mutex_;
+  std::condition_variable task_added_;
+  std::deque<Task> tasks_;
+  int busy_ = 0;  // workers building a task
 };
 
 Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads)

@@ -43,8 +43,8 @@ inline constexpr uint32_t kParallelMinimum = 1u << 14;
 struct alignas(64) WideBvhNode {
   static constexpr int kWidth = 4;
   // The children's boxes, one array per slab plane (lower[axis][child]), so
-  // that the slab test of all four children is one loop the compiler
-  // vectorises. An empty slot holds an inverted box, which no ray hits.
+  // that each plane of all four children is one vector load and one vector
+  // operation (intersect_children). An empty slot holds an inverted box.
   Real lower[3][kWidth];
   Real upper[3][kWidth];
   // Interior child: its node index. Leaf child: its first leaf entry.

@@ -136,7 +136,8 @@ TEST(Bvh, TrianglesAndSpheresTogetherMatchBruteForce) {
       set.add_sphere(center, radius, i);
       singles[i].add_sphere(center, radius, i);
     } else {
-      Real3 a = center + Real3{small(rng), small(rng), small(rng)}, b = center + Real3{small(rng), small(rng), small(rng)};
+      Real3 a = center + Real3{small(rng), small(rng), small(rng)};
+      Real3 b = center + Real3{small(rng), small(rng), small(rng)};
       set.add_triangle(center, a, b, i, i);
       singles[i].add_triangle(center, a, b, i, i);
     }

@@ -1,6 +1,7 @@
 #include "geometry.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 namespace safegi::render {
 
@@ -83,9 +84,10 @@ void PrimitiveSet::move_into_traversal_order(int threads) {
   const std::vector<uint32_t> order = bvh_.take_primitive_order();
   const uint32_t count = static_cast<uint32_t>(order.size());
   if (triangles_.empty() || spheres_.empty()) {
+    const int chunks = count >= kernel::kParallelMinimum ? threads : 1;
     auto gather = [&](auto& items) {
       std::remove_reference_t<decltype(items)> moved(items.size());
-      kernel::for_each_chunk(count, count >= kernel::kParallelMinimum ? threads : 1, [&](int, uint32_t begin, uint32_t end) {
+      kernel::for_each_chunk(count, chunks, [&](int, uint32_t begin, uint32_t end) {
         for (uint32_t k = begin; k < end; ++k) moved[k] = items[order[k]];
       });
       items = std::move(moved);
