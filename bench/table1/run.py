@@ -37,6 +37,8 @@ CASES = [
     ("depth of field", "dof", "depth-of-field.json", "path"),
     ("Phong", "direct", "phong.json", "direct"),
     ("many lights", "direct", "many-lights.json", "direct"),
+    # A PLY mesh under the BVH: traversal and triangle tests dominate.
+    ("PLY torus", "mesh", "ply-mesh.json", "path"),
 ]
 
 
