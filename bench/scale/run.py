@@ -32,6 +32,7 @@ import plot  # noqa: E402
 
 SIZES = [1_000, 10_000, 100_000] if h.quick() else [1_000, 10_000, 100_000, 1_000_000, 10_000_000]
 MESHES = ["heightfield", "torus"]
+RAY_SETS = ("camera", "extension", "shadow")
 RESOLUTION = 256
 THREADS = os.cpu_count() or 1
 
@@ -98,7 +99,7 @@ def renders(program: Path, tmp: Path) -> list[dict]:
             compared = subprocess.run([str(h.binary("safegi-image-compare")), str(tmp / f"ours-{size}.exr"),
                                        str(tmp / f"pbrt-{size}.exr")], capture_output=True, text=True, check=True)
             row.update({"pbrt_wall": wall, "pbrt_rays_per_cpu_second": traced / cpu if traced else None,
-                        "pbrt_cpu": cpu, "pbrt_peak_mib": peak / 1024,
+                        "pbrt_peak_mib": peak / 1024,
                         "mean_ratio": json.loads(compared.stdout)["mean_ratio"][0]})
         results.append(row)
     return results
@@ -117,14 +118,14 @@ def main() -> None:
         rendered = renders(program, Path(directory))
 
     header = ["mesh", "triangles", "build s (ours / Embree)", "bytes per triangle (ours / Embree)"]
-    for ray_set in ("camera", "extension", "shadow"):
+    for ray_set in RAY_SETS:
         header.append(f"{ray_set}: rays per CPU-s (ours / Embree, ratio)")
     rows = []
     for r in traced:
         row = [r["mesh"], f"{r['triangles']:,}",
                f"{r['ours_build_seconds']:.3f}" + (f" / {r['embree_build_seconds']:.3f}" if with_embree else ""),
                f"{r['ours_bytes_per_triangle']:.0f}" + (f" / {r['embree_bytes_per_triangle']:.0f}" if with_embree else "")]
-        for ray_set in ("camera", "extension", "shadow"):
+        for ray_set in RAY_SETS:
             s = r[ray_set]
             cell = million(s["ours_rays_per_cpu_second"])
             if with_embree:
@@ -165,7 +166,7 @@ structure holds for tracing (ours: triangles, nodes, face indices; Embree: its m
         largest = {mesh: max(r["triangles"] for r in traced if r["mesh"] == mesh) for mesh in MESHES}
         million_rows = [r for r in traced if 500_000 <= r["triangles"] <= 2_000_000] or traced
         ratios = [r[s]["ours_rays_per_cpu_second"] / r[s]["embree_rays_per_cpu_second"]
-                  for r in million_rows for s in ("camera", "extension", "shadow")]
+                  for r in million_rows for s in RAY_SETS]
         builds = [r["ours_build_seconds"] / r["embree_build_seconds"] for r in traced
                   if r["triangles"] == largest[r["mesh"]]]
         memory = [r["ours_bytes_per_triangle"] / r["embree_bytes_per_triangle"] for r in traced]

@@ -15,6 +15,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -150,8 +151,12 @@ struct Answers {
   double cpu_seconds = 0;
 };
 
+// Enough repeats that each set is traced for about a CPU-second.
+int repeats_for(size_t rays) { return static_cast<int>(std::clamp<size_t>(2000000 / std::max<size_t>(rays, 1), 1, 20)); }
+
 template <class Trace>
-Answers trace_all(const std::vector<Ray>& rays, int repeats, Trace&& trace) {
+Answers trace_all(const std::vector<Ray>& rays, Trace&& trace) {
+  const int repeats = repeats_for(rays.size());
   Answers answers;
   answers.distance.resize(rays.size());
   double start = thread_cpu_seconds();
@@ -221,8 +226,29 @@ Options parse(int argc, char** argv) {
   return options;
 }
 
-// Enough repeats that each set is traced for about a CPU-second.
-int repeats_for(size_t rays) { return static_cast<int>(std::clamp<size_t>(2000000 / std::max<size_t>(rays, 1), 1, 20)); }
+struct SetAnswers {
+  Answers camera, extension, shadow;
+};
+
+// The three sets through one structure: `scene.intersect(ray)` gives the
+// nearest hit's distance, `scene.occluded(ray, t_max)` 0 for a hit; both
+// infinity for a miss.
+template <class Scene>
+SetAnswers trace_sets(const RaySets& rays, const Scene& scene) {
+  return {trace_all(rays.camera, [&](size_t i) { return scene.intersect(rays.camera[i]); }),
+          trace_all(rays.extension, [&](size_t i) { return scene.intersect(rays.extension[i]); }),
+          trace_all(rays.shadow, [&](size_t i) { return scene.occluded(rays.shadow[i], rays.shadow_t_max[i]); })};
+}
+
+// Our structure behind the interface trace_sets reads.
+struct OurScene {
+  const PrimitiveSet& set;
+  float intersect(const Ray& ray) const {
+    std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
+    return hit ? hit->distance : kernel::kInfinity;
+  }
+  float occluded(const Ray& ray, float t_max) const { return set.occluded(ray, t_max) ? 0.0f : kernel::kInfinity; }
+};
 
 void print_set(const char* name, size_t rays, const Answers& ours, const Answers* embree, bool last) {
   std::printf("  \"%s\": {\"rays\": %zu, \"ours_rays_per_cpu_second\": %.6g", name, rays, rays / ours.cpu_seconds);
@@ -308,40 +334,23 @@ int main(int argc, char** argv) {
   double build_seconds = wall_seconds() - start;
 
   RaySets rays = make_rays(set, options.resolution);
-  Answers camera = trace_all(rays.camera, repeats_for(rays.camera.size()), [&](size_t i) {
-    auto hit = set.intersect(rays.camera[i], kernel::kInfinity);
-    return hit ? hit->distance : kernel::kInfinity;
-  });
-  Answers extension = trace_all(rays.extension, repeats_for(rays.extension.size()), [&](size_t i) {
-    auto hit = set.intersect(rays.extension[i], kernel::kInfinity);
-    return hit ? hit->distance : kernel::kInfinity;
-  });
-  Answers shadow = trace_all(rays.shadow, repeats_for(rays.shadow.size()), [&](size_t i) {
-    return set.occluded(rays.shadow[i], rays.shadow_t_max[i]) ? 0.0f : kernel::kInfinity;
-  });
+  const SetAnswers ours = trace_sets(rays, OurScene{set});
 
   std::printf("{\n  \"mesh\": \"%s\", \"triangles\": %zu, \"threads\": %d,\n", options.mesh.c_str(), triangles,
               options.threads);
   std::printf("  \"ours_build_seconds\": %.6g, \"ours_bytes_per_triangle\": %.4g,\n", build_seconds,
               static_cast<double>(set.memory_bytes()) / triangles);
+  const SetAnswers* embree_answers = nullptr;
 #ifdef SAFEGI_BENCH_EMBREE
   EmbreeScene embree(mesh, options.threads);
-  Answers embree_camera = trace_all(rays.camera, repeats_for(rays.camera.size()),
-                                    [&](size_t i) { return embree.intersect(rays.camera[i]); });
-  Answers embree_extension = trace_all(rays.extension, repeats_for(rays.extension.size()),
-                                       [&](size_t i) { return embree.intersect(rays.extension[i]); });
-  Answers embree_shadow = trace_all(rays.shadow, repeats_for(rays.shadow.size()), [&](size_t i) {
-    return embree.occluded(rays.shadow[i], rays.shadow_t_max[i]);
-  });
+  const SetAnswers embree_traced = trace_sets(rays, embree);
+  embree_answers = &embree_traced;
   std::printf("  \"embree_build_seconds\": %.6g, \"embree_bytes_per_triangle\": %.4g,\n", embree.build_seconds,
               static_cast<double>(EmbreeScene::peak_bytes.load()) / triangles);
-  print_set("camera", rays.camera.size(), camera, &embree_camera, false);
-  print_set("extension", rays.extension.size(), extension, &embree_extension, false);
-  print_set("shadow", rays.shadow.size(), shadow, &embree_shadow, true);
-#else
-  print_set("camera", rays.camera.size(), camera, nullptr, false);
-  print_set("extension", rays.extension.size(), extension, nullptr, false);
-  print_set("shadow", rays.shadow.size(), shadow, nullptr, true);
 #endif
+  print_set("camera", rays.camera.size(), ours.camera, embree_answers ? &embree_answers->camera : nullptr, false);
+  print_set("extension", rays.extension.size(), ours.extension, embree_answers ? &embree_answers->extension : nullptr,
+            false);
+  print_set("shadow", rays.shadow.size(), ours.shadow, embree_answers ? &embree_answers->shadow : nullptr, true);
   std::printf("}\n");
 }

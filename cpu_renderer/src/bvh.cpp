@@ -42,9 +42,8 @@ struct Bin {
     lower = box_lower < lower ? box_lower : lower;
     upper = box_upper > upper ? box_upper : upper;
   }
-  Bounds3 bounds() const {
+  Bounds3 bounds() const {  // an empty bin's lanes are still ±inf: Bounds3{}
     Bounds3 box;
-    if (count == 0) return box;
     box.lower = {lower[0], lower[1], lower[2]};
     box.upper = {upper[0], upper[1], upper[2]};
     return box;
@@ -75,8 +74,8 @@ int bin_of(Real centroid, Real lower, Real scale) {
 // SAH, then its widest part again, until four parts or only leaves remain; each
 // part that is not a leaf becomes a child node (large ones as tasks that any
 // of the build's workers takes). Nodes go into per-worker arenas, then
-// `flatten` lays them out depth first. Every decision depends only on the primitives, so the hierarchy
-// is the same on one thread or many.
+// `flatten` lays them out depth first. Every decision depends only on the
+// primitives, so the hierarchy is the same on one thread or many.
 class Bvh::Builder {
  public:
   Builder(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, std::vector<uint32_t>& order,
@@ -103,15 +102,19 @@ class Bvh::Builder {
       root.side.centroid_bounds.extend(side.centroid_bounds);
     }
     // The root's splits bin on all threads; the subtrees it leaves go to
-    // `threads` workers, this thread one of them.
-    workers_ = threads;
+    // `threads` workers, this thread one of them. A set too small for any
+    // task is built here alone, with no worker started.
+    workers_ = count >= kParallelMinimum ? threads : 1;
     std::optional<std::pair<Range, Range>> halves = split(root, threads);
-    const PendingNode& tree = halves ? build_node(*halves, threads, new_arena()) : leaf_root(root);
-    std::vector<std::thread> helpers;
-    for (int worker = 1; worker < threads; ++worker)
-      helpers.emplace_back([this, &arena = new_arena()] { work(arena); });
-    work(new_arena());
-    for (std::thread& helper : helpers) helper.join();
+    Arena& arena = new_arena();
+    const PendingNode& tree = halves ? build_node(*halves, threads, arena) : leaf_root(root, arena);
+    if (workers_ > 1) {
+      std::vector<std::thread> helpers;
+      for (int worker = 1; worker < workers_; ++worker)
+        helpers.emplace_back([this, &helper_arena = new_arena()] { work(helper_arena); });
+      work(arena);
+      for (std::thread& helper : helpers) helper.join();
+    }
     size_t total = 0;
     for (const auto& arena : arenas_) total += arena->size();
     nodes.reserve(total);
@@ -278,18 +281,30 @@ class Bvh::Builder {
     return std::pair{left, right};
   }
 
+  // A node of the first `filled` slots: boxes, leaf ranges, the occupied
+  // mask; interior children are linked later.
+  static PendingNode& lay_out(const Range* slots, int filled, Arena& arena) {
+    PendingNode& pending = arena.emplace_back();
+    WideBvhNode& node = pending.node;
+    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+      Bounds3 box = i < filled ? slots[i].side.bounds : Bounds3{};  // Bounds3{} is inverted: +inf .. -inf
+      for (int axis = 0; axis < 3; ++axis) {
+        node.lower[axis][i] = box.lower[axis];
+        node.upper[axis][i] = box.upper[axis];
+      }
+      const bool leaf = i < filled && slots[i].leaf;
+      node.child[i] = leaf ? slots[i].begin : 0;
+      node.primitive_count[i] = leaf ? static_cast<uint16_t>(slots[i].end - slots[i].begin) : 0;
+    }
+    node.occupied = static_cast<uint8_t>((1u << filled) - 1);
+    return pending;
+  }
+
   // Traversal always starts at a node: a set small enough for one leaf gets a
   // node with that leaf alone.
-  const PendingNode& leaf_root(const Range& root) {
-    PendingNode& pending = new_arena().emplace_back();
-    for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-        pending.node.lower[axis][i] = i == 0 ? root.side.bounds.lower[axis] : kInfinity;
-        pending.node.upper[axis][i] = i == 0 ? root.side.bounds.upper[axis] : -kInfinity;
-      }
-    pending.node.primitive_count[0] = static_cast<uint16_t>(root.end - root.begin);
-    pending.node.occupied = 1;
-    return pending;
+  static const PendingNode& leaf_root(Range root, Arena& arena) {
+    root.leaf = true;
+    return lay_out(&root, 1, arena);
   }
 
   // A node whose range splits into `halves`.
@@ -316,19 +331,7 @@ class Bvh::Builder {
       slot_halves[widest].reset();
       slots[filled++] = opened.second;
     }
-    PendingNode& pending = arena.emplace_back();
-    WideBvhNode& node = pending.node;
-    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-      Bounds3 box = i < filled ? slots[i].side.bounds : Bounds3{};  // Bounds3{} is inverted: +inf .. -inf
-      for (int axis = 0; axis < 3; ++axis) {
-        node.lower[axis][i] = box.lower[axis];
-        node.upper[axis][i] = box.upper[axis];
-      }
-      const bool leaf = i < filled && slots[i].leaf;
-      node.child[i] = leaf ? slots[i].begin : 0;
-      node.primitive_count[i] = leaf ? static_cast<uint16_t>(slots[i].end - slots[i].begin) : 0;
-    }
-    node.occupied = static_cast<uint8_t>((1u << filled) - 1);
+    PendingNode& pending = lay_out(slots, filled, arena);
     build_children(slots, slot_halves, filled, pending, arena);
     return pending;
   }
