@@ -4,6 +4,8 @@
 
 #include <unordered_map>
 
+#include <safegi/lexer/extensions.hpp>
+
 #include "safegi/elider/elider.hpp"
 
 namespace safegi {
@@ -32,7 +34,9 @@ gl::DimensionExponents exponents_of(const Dimension& d, const DimensionRegistry&
 
 class SymbolBuilder {
  public:
-  explicit SymbolBuilder(const ElideInput& input) : in_(input), registry_(input.checked.registry) {}
+  explicit SymbolBuilder(const ElideInput& input)
+      : in_(input), registry_(input.checked.registry),
+        vulkan_(input.preprocessed.language.extension_enabled(kVulkanGlslExtension)) {}
 
   gl::ValueType value_type(const Type& t) const {
     gl::ValueType v;
@@ -74,8 +78,50 @@ class SymbolBuilder {
     s.unsized = iv.type.is_array() && !s.array_size;
     if (iv.location >= 0) s.location = iv.location;
     if (iv.binding >= 0) s.binding = iv.binding;
+    // GL_KHR_vulkan_glsl: a uniform or buffer resource without layout(set) is in set 0.
+    const bool resource = storage == gl::Storage::uniform || storage == gl::Storage::buffer;
+    if (iv.set >= 0) s.set = iv.set;
+    else if (vulkan_ && resource && !iv.push_constant) s.set = 0;
     s.declared_at = location_of(in_.sources, iv.range.begin);
     return s;
+  }
+
+  // Where a block's members lie, when its packing says (std140, std430, scalar).
+  void lay_out(gl::Symbol& block, const ast::InterfaceBlockDecl& decl) const {
+    const auto found = in_.checked.block_layouts.find(&decl);
+    if (found == in_.checked.block_layouts.end()) return;
+    const BlockLayout& layout = found->second;
+    block.packing = layout.packing;
+    if (layout.size >= 0) block.size = layout.size;
+    for (gl::Symbol& member : block.members)
+      for (const ast::VariableDecl* m : decl.members)
+        for (const ast::Declarator& d : m->declarators) {
+          if (d.name != member.name) continue;
+          const auto placed = layout.members.find(&d);
+          if (placed == layout.members.end()) continue;
+          const MemberLayout& at = placed->second;
+          member.offset = at.offset;
+          if (at.size >= 0) member.size = at.size;
+          if (at.array_stride > 0) member.array_stride = at.array_stride;
+          if (at.matrix_stride > 0) member.matrix_stride = at.matrix_stride;
+          member.row_major = at.row_major;
+        }
+  }
+
+  std::vector<gl::SpecializationConstant> specialization_constants() const {
+    std::vector<gl::SpecializationConstant> out;
+    for (const SpecializationConstant& c : in_.checked.specialization_constants) {
+      gl::SpecializationConstant s;
+      s.name = c.name;
+      s.id = c.id;
+      s.type = value_type(c.type);
+      s.printed_type = c.type_text;
+      if (c.integer_value) s.default_value = static_cast<double>(*c.integer_value);
+      else if (c.float_value) s.default_value = *c.float_value;
+      s.declared_at = location_of(in_.sources, c.range.begin);
+      out.push_back(std::move(s));
+    }
+    return out;
   }
 
   std::vector<gl::Symbol> symbols() const {
@@ -86,6 +132,10 @@ class SymbolBuilder {
 
     std::vector<gl::Symbol> out;
     const ast::InterfaceBlockDecl* open_block = nullptr;
+    auto close_block = [&] {
+      if (open_block) lay_out(out.back(), *open_block);
+      open_block = nullptr;
+    };
     for (const InterfaceVariable& iv : in_.checked.interface) {
       std::optional<gl::Storage> storage;
       switch (iv.kind) {
@@ -100,12 +150,13 @@ class SymbolBuilder {
       if (!storage) continue;
       auto found = block_of.find(iv.decl);
       if (iv.block.empty() || found == block_of.end()) {
-        open_block = nullptr;
+        close_block();
         out.push_back(symbol(iv, *storage, iv.name));
         continue;
       }
       const ast::InterfaceBlockDecl* block = found->second;
       if (block != open_block) {
+        close_block();
         open_block = block;
         gl::Symbol b;
         b.name = block->block_name;
@@ -123,6 +174,9 @@ class SymbolBuilder {
               if (auto* lit = ast::dyn_cast<ast::LiteralExpr>(id.value))
                 if (auto n = integer_literal_value(lit->spelling); n && *n < (1u << 31)) b.binding = static_cast<int>(*n);
         b.declared_at = location_of(in_.sources, block->block_name_range.begin);
+        b.push_constant = iv.push_constant;
+        if (iv.set >= 0) b.set = iv.set;
+        else if (vulkan_ && !iv.push_constant && (*storage == gl::Storage::uniform || *storage == gl::Storage::buffer)) b.set = 0;
         out.push_back(std::move(b));
       }
       std::string member = iv.name;
@@ -132,12 +186,14 @@ class SymbolBuilder {
       m.block = block->block_name;
       out.back().members.push_back(std::move(m));
     }
+    close_block();
     return out;
   }
 
  private:
   const ElideInput& in_;
   const DimensionRegistry& registry_;
+  const bool vulkan_;
 };
 
 }  // namespace
@@ -155,7 +211,10 @@ gl::StageSymbols stage_symbols(const ElideInput& input, gl::Stage stage, const s
   all += input.sources.text(input.main_file);
   for (const IncludedFile& inc : input.preprocessed.includes) all += input.sources.text(inc.file);
   s.source_hash = source_hash(all);
-  s.symbols = SymbolBuilder(input).symbols();
+  const SymbolBuilder builder(input);
+  s.symbols = builder.symbols();
+  s.specialization_constants = builder.specialization_constants();
+  if (input.preprocessed.language.extension_enabled(kVulkanGlslExtension)) s.client = gl::Client::vulkan;
   return s;
 }
 

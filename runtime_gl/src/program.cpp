@@ -113,6 +113,10 @@ Program::Program(std::vector<ProgramSource> sources, std::string name)
       throw ShaderError(name_ + ": error: a " + std::string(to_string(source.stage)) +
                         " shader is Vulkan's (OpenGL has no such stage); bind it through a Vulkan pipeline");
     stages_.push_back(stage_entry(source, name_));
+    if (stages_.back().client == Client::vulkan)
+      throw ShaderError(name_ + ": error: the " + std::string(to_string(source.stage)) +
+                        " stage was compiled for Vulkan (-V or --target-env vulkan*: descriptor sets, push constants); "
+                        "for OpenGL compile it without -V, or to SPIR-V with -G");
     for (const auto& derived : source.symbols.derived_dimensions) namer_.add(derived.name, derived.exponents);
   }
   const auto spirv_stages = std::count_if(sources.begin(), sources.end(), [](const auto& s) { return !s.spirv.empty(); });

@@ -73,5 +73,20 @@ TEST_F(ProgramTest, ATableWithoutTheStageIsRejected) {
   }
 }
 
+// A stage checked as Vulkan GLSL binds by descriptor sets and push constants,
+// which an OpenGL program has not: refused before the driver sees it.
+TEST_F(ProgramTest, AStageCompiledForVulkanIsRejected) {
+  ProgramSource fragment = example_stage(Stage::fragment, "emission.frag.glsl", "emission.frag.json");
+  fragment.symbols.stages.at(0).client = Client::vulkan;
+  try {
+    Program({example_stage(Stage::vertex, "emission.vert.glsl", "emission.vert.json"), fragment}, "emission");
+    FAIL();
+  } catch (const ShaderError& error) {
+    EXPECT_STREQ(error.what(),
+                 "emission: error: the fragment stage was compiled for Vulkan (-V or --target-env vulkan*: descriptor "
+                 "sets, push constants); for OpenGL compile it without -V, or to SPIR-V with -G");
+  }
+}
+
 }  // namespace
 }  // namespace safegi::gl

@@ -86,6 +86,18 @@ class Node {
   std::optional<int> optional_integer(const char* key) const {
     return has(key) ? std::optional<int>(at(key).integer()) : std::nullopt;
   }
+  std::optional<long long> optional_bytes(const char* key) const {
+    if (!has(key)) return std::nullopt;
+    Node bytes = at(key);
+    bytes.expect(bytes.value_.is_number_integer(), "an integer");
+    if (bytes.value_.is_number_unsigned() ? bytes.value_.get<unsigned long long>() > (1ull << 62)
+                                          : bytes.value_.get<long long>() < 0)
+      bytes.fail("a byte count from 0 to 2^62");
+    return bytes.value_.get<long long>();
+  }
+  std::optional<double> optional_number(const char* key) const {
+    return has(key) ? std::optional<double>(at(key).number()) : std::nullopt;
+  }
 
  private:
   Node child(const json& value, const std::string& step) const { return Node(value, pointer_ + step, origin_); }
@@ -167,6 +179,16 @@ Symbol read_symbol(const Node& node, Storage storage) {
   if (symbol.unsized && symbol.array_size) node.at("unsized").fail("an unsized array has no \"array_size\"");
   symbol.location = node.optional_integer("location");
   symbol.binding = node.optional_integer("binding");
+  symbol.set = node.optional_integer("set");
+  symbol.push_constant = node.has("push_constant") && node.at("push_constant").boolean();
+  symbol.packing = node.optional_string("packing");
+  if (!symbol.packing.empty() && symbol.packing != "std140" && symbol.packing != "std430" && symbol.packing != "scalar")
+    node.at("packing").fail("unknown packing \"" + symbol.packing + "\" (expected std140, std430 or scalar)");
+  symbol.offset = node.optional_bytes("offset");
+  symbol.size = node.optional_bytes("size");
+  symbol.array_stride = node.optional_bytes("array_stride");
+  symbol.matrix_stride = node.optional_bytes("matrix_stride");
+  symbol.row_major = node.has("row_major") && node.at("row_major").boolean();
   symbol.declared_at = read_location(node.at("declared_at"));
   symbol.instance_name = node.optional_string("instance_name");
   if (symbol.type.kind == Kind::block) {
@@ -192,8 +214,25 @@ StageSymbols read_stage(const Node& node) {
   stage.glsl_profile = glsl.optional_string("profile");
   if (node.has("source_files")) stage.source_files = read_strings(node.at("source_files"));
   stage.source_hash = node.optional_string("source_hash");
+  if (node.has("client")) {
+    Node client = node.at("client");
+    if (client.string() == "vulkan") stage.client = Client::vulkan;
+    else if (client.string() != "opengl") client.fail("expected \"opengl\" or \"vulkan\"");
+  }
   for (const auto& symbol : node.at("symbols").elements())
     stage.symbols.push_back(read_symbol(symbol, read_storage(symbol.at("storage"))));
+  if (node.has("specialization_constants"))
+    for (const auto& constant : node.at("specialization_constants").elements()) {
+      SpecializationConstant c;
+      c.name = constant.at("name").string();
+      c.id = constant.at("id").integer();
+      if (c.id < 0) constant.at("id").fail("a constant id is not negative");
+      c.type = read_value_type(constant);
+      c.printed_type = constant.optional_string("type");
+      c.default_value = constant.optional_number("default");
+      c.declared_at = read_location(constant.at("declared_at"));
+      stage.specialization_constants.push_back(std::move(c));
+    }
   return stage;
 }
 
@@ -212,6 +251,8 @@ std::optional<Stage> stage_from_string(std::string_view text) {
     if (name == text) return stage;
   return std::nullopt;
 }
+
+std::string_view to_string(Client client) { return client == Client::vulkan ? "vulkan" : "opengl"; }
 
 std::string_view to_string(Storage storage) {
   switch (storage) {
@@ -271,9 +312,9 @@ SymbolTable parse_symbol_table(std::string_view json_text, std::string_view orig
     root.at("format").fail("expected \"safegi-symbol-table\"");
   SymbolTable table;
   table.version = root.at("version").integer();
-  if (table.version != kSymbolTableVersion)
+  if (table.version < kOldestSymbolTableVersion || table.version > kSymbolTableVersion)
     root.at("version").fail("unsupported version " + std::to_string(table.version) + " (this runtime reads " +
-                            std::to_string(kSymbolTableVersion) + ')');
+                            std::to_string(kOldestSymbolTableVersion) + " to " + std::to_string(kSymbolTableVersion) + ')');
   Node mode = root.at("mode");
   if (mode.string() == "program") table.mode = TableMode::program;
   else if (mode.string() != "shader") mode.fail("expected \"shader\" or \"program\"");
@@ -347,6 +388,14 @@ json write_symbol(const Symbol& symbol) {
   if (symbol.unsized) node["unsized"] = true;
   if (symbol.location) node["location"] = *symbol.location;
   if (symbol.binding) node["binding"] = *symbol.binding;
+  if (symbol.set) node["set"] = *symbol.set;
+  if (symbol.push_constant) node["push_constant"] = true;
+  if (!symbol.packing.empty()) node["packing"] = symbol.packing;
+  if (symbol.offset) node["offset"] = *symbol.offset;
+  if (symbol.size) node["size"] = *symbol.size;
+  if (symbol.array_stride) node["array_stride"] = *symbol.array_stride;
+  if (symbol.matrix_stride) node["matrix_stride"] = *symbol.matrix_stride;
+  if (symbol.row_major) node["row_major"] = true;
   if (!symbol.instance_name.empty()) node["instance_name"] = symbol.instance_name;
   if (symbol.type.kind == Kind::block) {
     node["members"] = json::array();
@@ -383,12 +432,26 @@ std::string to_json(const SymbolTable& table) {
   root["stages"] = json::array();
   for (const auto& stage : table.stages) {
     json node{{"stage", to_string(stage.stage)}, {"file", stage.file}};
+    if (stage.client != Client::opengl) node["client"] = to_string(stage.client);
     node["glsl_version"] = {{"number", stage.glsl_version}};
     if (!stage.glsl_profile.empty()) node["glsl_version"]["profile"] = stage.glsl_profile;
     if (!stage.source_files.empty()) node["source_files"] = stage.source_files;
     if (!stage.source_hash.empty()) node["source_hash"] = stage.source_hash;
     node["symbols"] = json::array();
     for (const auto& symbol : stage.symbols) node["symbols"].push_back(write_symbol(symbol));
+    if (!stage.specialization_constants.empty()) {
+      json& constants = node["specialization_constants"] = json::array();
+      for (const auto& constant : stage.specialization_constants) {
+        json c{{"name", constant.name}, {"id", constant.id}};
+        write_value_type(c, constant.type);
+        if (!constant.printed_type.empty()) c["type"] = constant.printed_type;
+        const bool integral = constant.type.glsl_type == "int" || constant.type.glsl_type == "uint";
+        if (constant.default_value && integral) c["default"] = static_cast<long long>(*constant.default_value);
+        else if (constant.default_value) c["default"] = *constant.default_value;
+        c["declared_at"] = write_location(constant.declared_at);
+        constants.push_back(std::move(c));
+      }
+    }
     root["stages"].push_back(std::move(node));
   }
   return root.dump(2) + '\n';

@@ -21,7 +21,7 @@ std::string error_of(std::string_view json) {
 
 TEST(SymbolTable, ParsesTheFragmentExample) {
   SymbolTable table = parse_symbol_table(read_testdata("emission.frag.json"), "emission.frag.json");
-  EXPECT_EQ(table.version, 1);
+  EXPECT_EQ(table.version, 2);
   EXPECT_EQ(table.mode, TableMode::shader);
   ASSERT_EQ(table.stages.size(), 1u);
   const StageSymbols& stage = table.stages[0];
@@ -57,6 +57,7 @@ TEST(SymbolTable, ParsesTheFragmentExample) {
   const Symbol* focal = stage.find(Storage::uniform, "Camera.focalLength");
   ASSERT_NE(focal, nullptr);
   EXPECT_EQ(focal->block, "Camera");
+  EXPECT_EQ(focal->offset, 64);  // after a std140 mat4
   EXPECT_EQ(stage.find(Storage::uniform, "focalLength"), focal);
 
   const Symbol* color = stage.find(Storage::output, "color");
@@ -91,8 +92,10 @@ TEST(SymbolTable, RejectsInvalidJson) {
 TEST(SymbolTable, NamesThePlaceOfEveryStructuralError) {
   EXPECT_EQ(error_of("[]"), "t.json: error: /: expected an object, found array");
   EXPECT_EQ(error_of(R"({"format":"x"})"), "t.json: error: /format: expected \"safegi-symbol-table\"");
-  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":2})"),
-            "t.json: error: /version: unsupported version 2 (this runtime reads 1)");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":3})"),
+            "t.json: error: /version: unsupported version 3 (this runtime reads 1 to 2)");
+  EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":0})"),
+            "t.json: error: /version: unsupported version 0 (this runtime reads 1 to 2)");
   EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader"})"),
             "t.json: error: /: missing required member \"stages\"");
   EXPECT_EQ(error_of(R"({"format":"safegi-symbol-table","version":1,"mode":"shader","stages":[
@@ -138,6 +141,59 @@ TEST(SymbolTable, ReadsAndWritesShaderStorageBlocks) {
   EXPECT_TRUE(block->members[0].unsized);
   EXPECT_EQ(table.stages.at(0).find(Storage::uniform, "Photons"), nullptr);
   EXPECT_EQ(to_json(parse_symbol_table(to_json(table))), to_json(table));
+}
+
+// Schema v2: what a Vulkan host binds by.
+TEST(SymbolTable, ReadsAndWritesWhatAVulkanHostBindsBy) {
+  const std::string text = R"({"format":"safegi-symbol-table","version":2,"mode":"shader","stages":[
+      {"stage":"fragment","client":"vulkan","file":"v.frag","glsl_version":{"number":460},"symbols":[
+        {"name":"Push","storage":"uniform","kind":"block","glsl_type":"Push","push_constant":true,"packing":"std430",
+         "size":28,"declared_at":{"file":"v.frag","line":3},"members":[
+           {"name":"L","storage":"uniform","kind":"spectrum","glsl_type":"vec3","offset":16,"size":12,
+            "dimension":{"name":"radiance","exponents":{"energy":1}},"declared_at":{"file":"v.frag","line":3}}]},
+        {"name":"Lights","storage":"buffer","kind":"block","glsl_type":"Lights","set":2,"binding":0,"packing":"std430",
+         "declared_at":{"file":"v.frag","line":4},"members":[
+           {"name":"frame","storage":"buffer","kind":"plain","glsl_type":"mat2x3","offset":0,"size":32,
+            "matrix_stride":16,"row_major":true,"set":2,"binding":0,"declared_at":{"file":"v.frag","line":4}},
+           {"name":"power","storage":"buffer","kind":"plain","glsl_type":"vec3","offset":32,"array_stride":16,
+            "unsized":true,"set":2,"binding":0,"declared_at":{"file":"v.frag","line":4}}]}],
+       "specialization_constants":[
+         {"name":"kSamples","id":3,"kind":"plain","glsl_type":"int","type":"int","default":4,
+          "declared_at":{"file":"v.frag","line":2}}]}]})";
+  SymbolTable table = parse_symbol_table(text, "v.json");
+  const StageSymbols& stage = table.stages.at(0);
+  EXPECT_EQ(stage.client, Client::vulkan);
+  const Symbol* push = stage.find(Storage::uniform, "Push");
+  ASSERT_NE(push, nullptr);
+  EXPECT_TRUE(push->push_constant);
+  EXPECT_EQ(push->packing, "std430");
+  EXPECT_EQ(push->size, 28);
+  EXPECT_EQ(push->members.at(0).offset, 16);
+  const Symbol* lights = stage.find(Storage::buffer, "Lights");
+  ASSERT_NE(lights, nullptr);
+  EXPECT_EQ(lights->set, 2);
+  EXPECT_EQ(lights->members.at(0).matrix_stride, 16);
+  EXPECT_TRUE(lights->members.at(0).row_major);
+  EXPECT_EQ(lights->members.at(1).array_stride, 16);
+  ASSERT_EQ(stage.specialization_constants.size(), 1u);
+  EXPECT_EQ(stage.specialization_constants[0].id, 3);
+  EXPECT_EQ(stage.specialization_constants[0].default_value, 4.0);
+  EXPECT_EQ(to_json(parse_symbol_table(to_json(table))), to_json(table));
+  EXPECT_NE(to_json(table).find("\"default\": 4,"), std::string::npos);  // an int's default stays an integer
+
+  auto with = [&](std::string_view from, std::string_view to) {
+    std::string changed = text;
+    changed.replace(changed.find(from), from.size(), to);
+    return error_of(changed);
+  };
+  EXPECT_EQ(with(R"("client":"vulkan")", R"("client":"metal")"),
+            "t.json: error: /stages/0/client: expected \"opengl\" or \"vulkan\"");
+  EXPECT_EQ(with(R"("push_constant":true,"packing":"std430")", R"("push_constant":true,"packing":"shared")"),
+            "t.json: error: /stages/0/symbols/0/packing: unknown packing \"shared\" (expected std140, std430 or scalar)");
+  EXPECT_EQ(with(R"("offset":16)", R"("offset":-16)"),
+            "t.json: error: /stages/0/symbols/0/members/0/offset: a byte count from 0 to 2^62");
+  EXPECT_EQ(with(R"("id":3)", R"("id":-3)"),
+            "t.json: error: /stages/0/specialization_constants/0/id: a constant id is not negative");
 }
 
 }  // namespace

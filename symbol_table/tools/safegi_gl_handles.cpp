@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   std::string input, output = "-";
   std::vector<std::string> cpp_names;
   safegi::gl::HandlesHeaderOptions options;
-  app.add_option("table", input, "symbol table (JSON, schema v1)")->required();
+  app.add_option("table", input, "symbol table (JSON, schema v1 or v2)")->required();
   app.add_option("-o,--output", output, "header to write ('-': standard output)");
   app.add_option("--namespace", options.namespace_name, "C++ namespace of the handles struct");
   app.add_option("--struct", options.struct_name, "name of the handles struct");

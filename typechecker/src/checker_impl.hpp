@@ -200,6 +200,9 @@ class Checker {
   // validate_layouts.cpp: layout qualifiers by declaration, stage and version; values; block offsets; locations.
   std::optional<long long> layout_value(const ast::LayoutId& id);  // evaluated and checked once
   void validate_layouts(const ast::TypeQualifiers& q, const LayoutSite& site);
+  void record_specialization_constant(const ast::TypeQualifiers& q, const ast::Declarator& decl, const Type& t,
+                                      const Variable& v);
+  void record_work_group_size_ids(const ast::TypeQualifiers& q, SourceRange range);
   void validate_block_layout(const ast::InterfaceBlockDecl& d);   // std140/std430 offsets and alignments
   void validate_global_layouts(const ast::VariableDecl& d);       // after its declarators are typed
   void validate_block_layouts(const ast::InterfaceBlockDecl& d);  // the block, its members, their offsets

@@ -227,6 +227,8 @@ void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& 
   iv.decl = decl;
   iv.location = layout_int(q, "location", *this).value_or(-1);
   iv.binding = layout_int(q, "binding", *this).value_or(-1);
+  iv.set = layout_int(q, "set", *this).value_or(-1);
+  iv.push_constant = q.has_layout_id("push_constant");
   iv.annotated = t.is_annotated();
   if (options_.strict && !iv.annotated && (t.shape == Shape::scalar || t.shape == Shape::vector || t.shape == Shape::matrix) &&
       t.scalar != Scalar::bool_ && t.is_floating()) {
@@ -237,12 +239,36 @@ void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& 
   result_.interface.push_back(std::move(iv));
 }
 
+void Checker::record_specialization_constant(const ast::TypeQualifiers& q, const ast::Declarator& decl, const Type& t,
+                                             const Variable& v) {
+  const std::optional<int> id = layout_int(q, "constant_id", *this);
+  if (!id) return;
+  SpecializationConstant c{decl.name, *id, t, name_of(t), decl.name_range, v.constant, v.number};
+  result_.specialization_constants.push_back(std::move(c));
+}
+
+// `layout(local_size_x_id = N) in;`: the work group's size in x, set by the host.
+void Checker::record_work_group_size_ids(const ast::TypeQualifiers& q, SourceRange range) {
+  static constexpr std::pair<const char*, const char*> kAxes[] = {
+      {"local_size_x_id", "gl_WorkGroupSize.x"}, {"local_size_y_id", "gl_WorkGroupSize.y"}, {"local_size_z_id", "gl_WorkGroupSize.z"}};
+  for (const auto& [layout, name] : kAxes)
+    if (const std::optional<int> id = layout_int(q, layout, *this)) {
+      const Type uint_type = Type::scalar_of(Scalar::uint_);
+      result_.specialization_constants.push_back({name, *id, uint_type, name_of(uint_type), range, std::nullopt, std::nullopt});
+    }
+}
+
 void Checker::global_decl(const ast::Decl* d) {
   switch (d->kind) {
     case ast::NodeKind::VariableDecl: variable_decl(*static_cast<const ast::VariableDecl*>(d), true); break;
     case ast::NodeKind::InterfaceBlockDecl: block_decl(*static_cast<const ast::InterfaceBlockDecl*>(d)); break;
     case ast::NodeKind::FunctionDecl: function_decl(*static_cast<const ast::FunctionDecl*>(d)); break;
-    case ast::NodeKind::QualifierDecl: validate_qualifier_decl(*static_cast<const ast::QualifierDecl*>(d), true); break;
+    case ast::NodeKind::QualifierDecl: {
+      const auto& qualifier_decl = *static_cast<const ast::QualifierDecl*>(d);
+      validate_qualifier_decl(qualifier_decl, true);
+      if (qualifier_decl.qualifiers.has("in")) record_work_group_size_ids(qualifier_decl.qualifiers, d->range);
+      break;
+    }
     case ast::NodeKind::PrecisionDecl: validate_precision(*static_cast<const ast::PrecisionDecl*>(d)); break;
     case ast::NodeKind::StructDecl: {
       validate_struct_members(*static_cast<const ast::StructDecl*>(d));
@@ -311,6 +337,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     if (global && decl.name.rfind("gl_", 0) == 0) validate_builtin_redeclaration(d, decl, declared);
     symbols_.declare_variable(decl.name, decl.name_range, declared);
     if (global) record_interface(d.qualifiers, decl.name, "", declared, decl.name_range, &d);
+    if (global && is_const) record_specialization_constant(d.qualifiers, decl, declared, v);
     declare_variable(std::move(v));
   }
   if (global) validate_global_layouts(d);

@@ -127,19 +127,24 @@ long long xfb_bytes(const Type& t) {
   return count * e.components() * (e.scalar == Scalar::double_ ? 8 : 4);
 }
 
+enum class PackingRules { std140, std430, scalar };
+
 struct Packing {
   long long align = 4, size = 4;
+  long long array_stride = 0;   // an array's
+  long long matrix_stride = 0;  // a matrix's, or that of the matrices an array holds
 };
 
-// std140 / std430 base alignment and size (GLSL 4.60 §7.6.2.2).
-Packing packing_of(const Type& t, bool std140, bool row_major) {
+// Base alignment and size under std140 / std430 (GLSL 4.60 §7.6.2.2) or
+// scalar (GL_EXT_scalar_block_layout: everything aligns to its scalars).
+Packing packing_of(const Type& t, PackingRules rules, bool row_major) {
   const long long scalar = t.scalar == Scalar::double_ ? 8 : 4;
   auto round_up = [](long long v, long long a) { return (v + a - 1) / a * a; };
   if (t.is_array()) {
-    Packing element = packing_of(t.element(), std140, row_major);
-    const long long align = std140 ? round_up(element.align, 16) : element.align;
+    Packing element = packing_of(t.element(), rules, row_major);
+    const long long align = rules == PackingRules::std140 ? round_up(element.align, 16) : element.align;
     const long long stride = round_up(element.size, align);
-    return {align, stride * std::max(t.array[0], 1)};
+    return {align, stride * std::max(t.array[0], 1), stride, element.matrix_stride};
   }
   // GL_EXT_buffer_reference: a reference is a 64-bit address, whatever it points at (maybe its own block).
   if (t.shape == Shape::structure && t.structure && t.structure->buffer_reference) return {8, 8};
@@ -148,20 +153,22 @@ Packing packing_of(const Type& t, bool std140, bool row_major) {
     const int length = row_major ? t.columns : t.rows;
     Type column = Type::vector_of(t.scalar, length);
     column.array = {vectors};
-    return packing_of(column, std140, false);
+    const Packing columns = packing_of(column, rules, false);
+    return {columns.align, columns.size, 0, columns.array_stride};
   }
   if (t.shape == Shape::structure && t.structure) {
     long long align = 0, offset = 0;
     for (const StructField& f : t.structure->fields) {
-      const Packing p = packing_of(f.type, std140, row_major);
+      const Packing p = packing_of(f.type, rules, row_major);
       align = std::max(align, p.align);
       offset = round_up(offset, p.align) + p.size;
     }
-    if (std140) align = round_up(std::max<long long>(align, 1), 16);
+    if (rules == PackingRules::std140) align = round_up(std::max<long long>(align, 1), 16);
     align = std::max<long long>(align, 1);
     return {align, round_up(offset, align)};
   }
-  if (t.shape == Shape::vector) return {(t.rows == 2 ? 2 : 4) * scalar, t.rows * scalar};
+  if (t.shape == Shape::vector && rules != PackingRules::scalar) return {(t.rows == 2 ? 2 : 4) * scalar, t.rows * scalar};
+  if (t.shape == Shape::vector) return {scalar, t.rows * scalar};
   return {scalar, scalar};
 }
 
@@ -572,7 +579,8 @@ void Checker::validate_default_layouts(const ast::QualifierDecl& d) {
 
 // Explicit offsets and alignments of the members of a std140/std430 block
 // (GLSL 4.60 §4.4.5): each offset is a multiple of the member's base
-// alignment and past the end of the member before it.
+// alignment and past the end of the member before it. Where every member is
+// placed goes into CheckResult::block_layouts (the symbol table's offsets).
 void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
   const std::string storage = storage_of(d.qualifiers);
   if (storage != "uniform" && storage != "buffer") return;
@@ -581,8 +589,7 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
   if (vulkan_glsl(language()) && find_layout_id(d.qualifiers, "push_constant")) packing = "std430";
   for (const char* p : {"std140", "std430", "shared", "packed", "scalar"})
     if (find_layout_id(d.qualifiers, p)) packing = p;
-  // GL_EXT_scalar_block_layout: members align to their scalars; explicit offsets are not checked against it.
-  if (packing == "scalar") return;
+  const bool scalar = packing == "scalar";
   const bool explicit_layout = packing == "std140" || packing == "std430";
   auto forbid = [&](const ast::TypeQualifiers& q) {
     for (const char* id : {"offset", "align"})
@@ -593,13 +600,15 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
       }
     return true;
   };
-  if (!explicit_layout) {
+  if (!explicit_layout && !scalar) {
     if (!forbid(d.qualifiers)) return;
     for (const ast::VariableDecl* m : d.members)
       if (!forbid(m->qualifiers)) return;
     return;
   }
-  const bool std140 = packing == "std140";
+  const PackingRules rules = scalar ? PackingRules::scalar : packing == "std140" ? PackingRules::std140 : PackingRules::std430;
+  BlockLayout layout;
+  layout.packing = packing;
   long long block_align = 1;
   if (const ast::LayoutId* a = find_layout_id(d.qualifiers, "align"))
     if (std::optional<long long> v = layout_value(*a)) block_align = *v;
@@ -614,33 +623,42 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
     for (const ast::Declarator& decl : m->declarators) {
       const Type* t = result_.type_of(&decl);
       if (!t || t->is_error() || t->shape == Shape::opaque) return;
-      if (t->is_array() && t->array[0] < 0) return;  // a runtime-sized last member
-      const Packing p = packing_of(*t, std140, row_major);
+      const bool runtime_sized = t->is_array() && t->array[0] < 0;
+      const Packing p = packing_of(*t, rules, row_major);
       // A member's align overrides the block's (GLSL 4.60 §4.4.5); either only raises the base alignment.
       long long member_align = std::max(p.align, block_align);
       if (align)
         if (std::optional<long long> v = layout_value(*align)) member_align = std::max(p.align, *v);
       long long at = (next + member_align - 1) / member_align * member_align;
+      // GL_EXT_scalar_block_layout: explicit offsets are the program's to choose; they are not checked against it.
       if (offset && &decl == &m->declarators.front()) {
         const std::optional<long long> v = layout_value(*offset);
         if (!v) return;
-        if (*v % p.align != 0) {
+        if (!scalar && *v % p.align != 0) {
           reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name +
                                            "' is not a multiple of its base alignment (" + std::to_string(p.align) + " bytes)",
                  code::E_LAYOUT);
           return;
         }
-        if (*v < next) {
+        if (!scalar && *v < next) {
           reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name +
                                            "' lies inside the member before it, which ends at byte " + std::to_string(next),
                  code::E_LAYOUT);
           return;
         }
-        at = (*v + member_align - 1) / member_align * member_align;
+        at = scalar ? *v : (*v + member_align - 1) / member_align * member_align;
+      }
+      layout.members[&decl] = {at, runtime_sized ? -1 : p.size, t->is_array() ? p.array_stride : 0, p.matrix_stride,
+                               row_major && (t->shape == Shape::matrix)};
+      if (runtime_sized) {  // the last member: the block's size depends on the buffer bound
+        result_.block_layouts[&d] = std::move(layout);
+        return;
       }
       next = at + p.size;
     }
   }
+  layout.size = next;
+  result_.block_layouts[&d] = std::move(layout);
 }
 
 }  // namespace safegi::detail

@@ -1,5 +1,5 @@
 #pragma once
-// The compiler's symbol table (schema v1, docs/symbol-table.md): what every
+// The compiler's symbol table (schema v2, docs/symbol-table.md): what every
 // shader interface variable is, in GLSL and in SafeGI terms, and where it was
 // declared. runtime_gl binds typed host handles by it.
 #include <cstdint>
@@ -12,7 +12,11 @@
 
 namespace safegi::gl {
 
-inline constexpr int kSymbolTableVersion = 1;
+inline constexpr int kSymbolTableVersion = 2;
+// Version 2 added what a Vulkan host binds by (client, set, push_constant,
+// packing, offsets and sizes, specialization constants); a v1 table is a v2
+// table without them, and is read as one.
+inline constexpr int kOldestSymbolTableVersion = 1;
 
 enum class Stage {
   vertex, tess_control, tess_evaluation, geometry, fragment, compute,
@@ -48,20 +52,46 @@ struct Symbol {
   bool unsized = false;                // arrays whose count the compiler does not know (`flux[]`)
   std::optional<int> location;         // explicit layout(location = N)
   std::optional<int> binding;          // explicit layout(binding = N)
+  std::optional<int> set;              // Vulkan: the descriptor set, layout(set = N) or 0
+  bool push_constant = false;          // blocks: layout(push_constant)
+  std::string packing;                 // blocks whose members have offsets: "std140", "std430" or "scalar"
+  std::optional<long long> offset;     // members of such blocks: bytes from the block's start
+  std::optional<long long> size;       // such blocks (to the end of the last member) and members, in bytes
+  std::optional<long long> array_stride;   // array members: bytes from one element to the next
+  std::optional<long long> matrix_stride;  // matrix members: bytes from one column (row_major: row) to the next
+  bool row_major = false;              // matrix members laid out by rows
   SourceLocation declared_at;
   std::string instance_name;           // blocks: instance name, may be empty
   std::string block;                   // block members: the enclosing block's name
   std::vector<Symbol> members;         // blocks: members in declaration order
 };
 
+// layout(constant_id = N) const ... (and local_size_x_id, named
+// gl_WorkGroupSize.x): a value a Vulkan host sets when it creates the pipeline.
+struct SpecializationConstant {
+  std::string name;
+  int id = 0;
+  ValueType type;
+  std::string printed_type;
+  std::optional<double> default_value;  // the declared one, when the compiler knows it
+  SourceLocation declared_at;
+};
+
+// Which API the stage was compiled for: OpenGL, or Vulkan (-V, --target-env
+// vulkan*: GL_KHR_vulkan_glsl, descriptor sets, push constants).
+enum class Client { opengl, vulkan };
+std::string_view to_string(Client client);  // "opengl", "vulkan"
+
 struct StageSymbols {
   Stage stage = Stage::vertex;
+  Client client = Client::opengl;
   std::string file;                       // the annotated source the stage came from
   int glsl_version = 0;                   // 330, 450, ...
   std::string glsl_profile;               // "core", "compatibility", "es" or empty
   std::vector<std::string> source_files;  // #line source-string number -> file
   std::string source_hash;
   std::vector<Symbol> symbols;
+  std::vector<SpecializationConstant> specialization_constants;
 
   // The interface variable of the given storage and name (blocks are searched
   // by block name; members by "member" and "Block.member").
@@ -110,7 +140,7 @@ struct SymbolTable {
   DimensionNamer namer() const;
 };
 
-// Parses schema v1. `origin` names the table in messages (a path or
+// Parses schema v1 and v2. `origin` names the table in messages (a path or
 // "<in-memory>"). Throws SymbolTableError: "origin: error: <json pointer>: ...".
 SymbolTable parse_symbol_table(std::string_view json_text, std::string_view origin = "<symbol table>");
 

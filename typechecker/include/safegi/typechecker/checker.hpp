@@ -88,7 +88,39 @@ struct InterfaceVariable {
   const ast::Node* decl = nullptr;
   int location = -1;       // layout(location = N), -1 when absent
   int binding = -1;        // layout(binding = N), -1 when absent
+  int set = -1;            // layout(set = N), Vulkan's descriptor set, -1 when absent
+  bool push_constant = false;  // a member of a layout(push_constant) block (Vulkan)
   bool annotated = false;
+};
+
+// Where a block member lies in memory, in bytes from the block's start (GLSL
+// 4.60 §7.6.2.2 for std140 and std430, GL_EXT_scalar_block_layout for scalar,
+// explicit offset and align included): what a host writes a uniform buffer,
+// storage buffer or push-constant range by.
+struct MemberLayout {
+  long long offset = 0;
+  long long size = -1;          // -1: a runtime-sized array (array_stride says how its elements lie)
+  long long array_stride = 0;   // arrays: bytes from one element to the next
+  long long matrix_stride = 0;  // matrices and arrays of them: bytes from one column (row_major: row) to the next
+  bool row_major = false;
+};
+
+struct BlockLayout {
+  std::string packing;  // "std140", "std430" or "scalar" (shared and packed blocks have none)
+  long long size = -1;  // the end of the last member; -1 when that is a runtime-sized array
+  std::unordered_map<const ast::Declarator*, MemberLayout> members;
+};
+
+// `layout(constant_id = N) const T name = value;` and `layout(local_size_x_id = N) in;`
+// (Vulkan, GL_ARB_gl_spirv): a value the host may set when it creates the pipeline.
+struct SpecializationConstant {
+  std::string name;  // the constant, or gl_WorkGroupSize.x/.y/.z for local_size_*_id
+  int id = 0;
+  Type type;
+  std::string type_text;
+  SourceRange range;
+  std::optional<long long> integer_value;  // the declared default, when the checker knows it
+  std::optional<double> float_value;
 };
 
 // How a geometric operation must be emitted (the elider's business).
@@ -156,6 +188,8 @@ struct CheckResult {
   std::unordered_map<const ast::Node*, CallInfo> calls;          // calls and operators that are geometric operations
   std::unordered_map<const ast::ConvertExpr*, ConversionInfo> conversions;  // every `e in target` that checked
   std::vector<InterfaceVariable> interface;                      // uniforms (incl. block members), inputs, outputs, buffers
+  std::unordered_map<const ast::InterfaceBlockDecl*, BlockLayout> block_layouts;  // uniform and buffer blocks of a known layout
+  std::vector<SpecializationConstant> specialization_constants;  // in declaration order
   std::vector<std::unique_ptr<StructInfo>> structs;              // owned: Type::structure points here
   std::vector<SymbolOccurrence> symbols;                         // only with CheckOptions::record_symbols, in checking order
 

@@ -1,0 +1,253 @@
+// What a Vulkan host binds by, in the symbol table: descriptor sets and
+// bindings, push-constant and buffer member offsets, strides, and the ids of
+// specialization constants. Each is checked against what glslang put in the
+// SPIR-V module of the same shader (its decorations), so the table and the
+// module cannot disagree.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <span>
+#include <tuple>
+
+#include "safegi/compiler/compile.hpp"
+#include "safegi/compiler/spirv.hpp"
+
+namespace safegi {
+namespace {
+
+// From the SPIR-V specification (unified 1.6), sections 3.20 and 3.32.
+constexpr std::uint32_t kOpName = 5, kOpMemberName = 6, kOpTypeStruct = 30, kOpDecorate = 71, kOpMemberDecorate = 72;
+constexpr std::uint32_t kSpecId = 1, kArrayStride = 6, kMatrixStride = 7, kRowMajor = 4, kBinding = 33,
+                        kDescriptorSet = 34, kOffset = 35;
+
+std::string literal_string(std::span<const std::uint32_t> words) {
+  std::string text;
+  for (std::uint32_t word : words)
+    for (int shift = 0; shift < 32; shift += 8) {
+      const char c = static_cast<char>((word >> shift) & 0xff);
+      if (c == '\0') return text;
+      text += c;
+    }
+  return text;
+}
+
+// The decorations of a module, by the names glslang keeps (-V keeps OpName).
+struct Decorations {
+  std::map<std::uint32_t, std::string> names;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> member_names;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> on;  // (id, decoration) -> value
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint32_t> on_member;  // (struct, member, decoration)
+  std::map<std::uint32_t, std::vector<std::uint32_t>> member_types;  // struct -> its members' type ids
+
+  std::uint32_t id_named(const std::string& name) const {
+    for (const auto& [id, text] : names)
+      if (text == name) return id;
+    ADD_FAILURE() << "no OpName " << name;
+    return 0;
+  }
+  // The member decoration of `member` of the struct named `type`, or -1.
+  long long member(const std::string& type, const std::string& member, std::uint32_t decoration) const {
+    const std::uint32_t id = id_named(type);
+    for (const auto& [key, text] : member_names)
+      if (key.first == id && text == member) {
+        const auto found = on_member.find({id, key.second, decoration});
+        return found == on_member.end() ? -1 : static_cast<long long>(found->second);
+      }
+    ADD_FAILURE() << "no member " << member << " in " << type;
+    return -1;
+  }
+  // The ArrayStride of the type of `member` (arrays carry it on their type, not on the member).
+  long long array_stride(const std::string& type, const std::string& member) const {
+    const std::uint32_t id = id_named(type);
+    for (const auto& [key, text] : member_names)
+      if (key.first == id && text == member) {
+        const auto found = on.find({member_types.at(id).at(key.second), kArrayStride});
+        return found == on.end() ? -1 : static_cast<long long>(found->second);
+      }
+    return -1;
+  }
+  long long decoration(const std::string& name, std::uint32_t decoration) const {
+    const auto found = on.find({id_named(name), decoration});
+    return found == on.end() ? -1 : static_cast<long long>(found->second);
+  }
+};
+
+Decorations decorations_of(const std::vector<std::uint32_t>& words) {
+  Decorations d;
+  for (std::size_t at = 5; at < words.size();) {
+    const std::uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
+    const std::span<const std::uint32_t> operands(words.data() + at + 1, count - 1);
+    if (opcode == kOpName) d.names[operands[0]] = literal_string(operands.subspan(1));
+    if (opcode == kOpTypeStruct) d.member_types[operands[0]].assign(operands.begin() + 1, operands.end());
+    if (opcode == kOpMemberName) d.member_names[{operands[0], operands[1]}] = literal_string(operands.subspan(2));
+    if (opcode == kOpDecorate) d.on[{operands[0], operands[1]}] = operands.size() > 2 ? operands[2] : 1;
+    if (opcode == kOpMemberDecorate)
+      d.on_member[{operands[0], operands[1], operands[2]}] = operands.size() > 3 ? operands[3] : 1;
+    at += count;
+  }
+  return d;
+}
+
+struct VulkanStage {
+  gl::StageSymbols symbols;
+  Decorations module;
+};
+
+VulkanStage compile_for_vulkan(const std::string& path, const std::string& text) {
+  CompileOptions options;
+  options.vulkan = 100;
+  CompileResult compiled = compile({{path, text}}, options);
+  EXPECT_TRUE(compiled.success) << compiled.diagnostics_text();
+  SpirvOptions spirv_options;
+  spirv_options.vulkan_minor = 2;
+  SpirvResult spirv = to_spirv(compiled, spirv_options);
+  EXPECT_TRUE(spirv.success) << spirv.log;
+  if (!compiled.success || !spirv.success) return {};
+  return {compiled.symbols.stages.at(0), decorations_of(spirv.modules.at(0).words)};
+}
+
+const gl::Symbol& symbol(const gl::StageSymbols& stage, const std::string& name) {
+  for (const gl::Symbol& s : stage.symbols)
+    if (s.name == name) return s;
+  throw std::runtime_error("no symbol " + name);
+}
+
+// Every member with an offset in the table has glslang's Offset (and strides).
+void expect_members_match(const gl::Symbol& block, const Decorations& module) {
+  ASSERT_FALSE(block.members.empty());
+  for (const gl::Symbol& m : block.members) {
+    SCOPED_TRACE(block.name + "." + m.name);
+    ASSERT_TRUE(m.offset.has_value());
+    EXPECT_EQ(*m.offset, module.member(block.name, m.name, kOffset));
+    if (m.array_stride) {
+      EXPECT_EQ(*m.array_stride, module.array_stride(block.name, m.name));
+    }
+    if (m.matrix_stride) {
+      EXPECT_EQ(*m.matrix_stride, module.member(block.name, m.name, kMatrixStride));
+    }
+    if (m.row_major) {
+      EXPECT_EQ(module.member(block.name, m.name, kRowMajor), 1);
+    }
+  }
+}
+
+constexpr const char* kFragment = R"(#version 460
+#extension GL_EXT_scalar_block_layout : require
+#include <safegi/prelude.sgl>
+space world;
+layout(constant_id = 3) const int kSamples = 4;
+layout(constant_id = 7) const float kScale = 1.5;
+layout(push_constant) uniform Push {
+  layout(offset = 16) float<1> roughness;
+  spectrum<radiance> L;
+  mat3 tilt;
+} pc;
+layout(set = 1, binding = 2) uniform Camera { mat3 basis; float<length> aperture[3]; point<world> eye; } cam;
+layout(binding = 1) uniform sampler2D albedoTex;
+layout(std430, set = 2, binding = 0) buffer Lights { layout(row_major) mat2x3 frame; spectrum<radiance> power[]; } lights;
+layout(scalar, set = 2, binding = 1) buffer Packed { vec3 a; float b; vec2 c[2]; } packed_data;
+layout(location = 0) in normal<world> N;
+layout(location = 0) out vec4 color;
+layout(location = 1) out spectrum<radiance> radiance_out;
+layout(location = 2) out float<length> aperture_out;
+void main() {
+  radiance_out = pc.L * float(kSamples) * kScale * pc.roughness + lights.power[0];
+  aperture_out = cam.aperture[1] + distance(cam.eye, cam.eye);
+  vec3 plain = pc.tilt[0] + cam.basis[1] + lights.frame[0] + packed_data.a + packed_data.c[1].xxy * packed_data.b;
+  color = vec4(plain + texture(albedoTex, vec2(0)).rgb, 1.0);
+}
+)";
+
+TEST(VulkanInterface, MemberOffsetsAndStridesAreTheModulesOwn) {
+  const VulkanStage stage = compile_for_vulkan("v.frag", kFragment);
+  ASSERT_FALSE(stage.symbols.symbols.empty());
+  EXPECT_EQ(stage.symbols.client, gl::Client::vulkan);
+
+  const gl::Symbol& push = symbol(stage.symbols, "Push");
+  EXPECT_TRUE(push.push_constant);
+  EXPECT_FALSE(push.set.has_value());  // a push constant is in no descriptor set
+  EXPECT_EQ(push.packing, "std430");   // GL_KHR_vulkan_glsl's default for push constants
+  expect_members_match(push, stage.module);
+  EXPECT_EQ(push.members[0].offset, 16);
+  EXPECT_EQ(push.members[1].offset, 32);  // a vec3 aligns to 16
+  EXPECT_EQ(push.members[1].type.dimension.name, "radiance");
+  EXPECT_EQ(push.members[2].matrix_stride, 16);
+  EXPECT_EQ(push.size, 96);  // the range a host pushes: to the end of tilt, three 16-byte columns from 48
+
+  const gl::Symbol& camera = symbol(stage.symbols, "Camera");
+  EXPECT_EQ(camera.packing, "std140");  // a uniform block's default in Vulkan GLSL
+  EXPECT_EQ(camera.set, 1);
+  EXPECT_EQ(camera.binding, 2);
+  EXPECT_EQ(stage.module.decoration("cam", kDescriptorSet), 1);
+  EXPECT_EQ(stage.module.decoration("cam", kBinding), 2);
+  expect_members_match(camera, stage.module);
+  const gl::Symbol& aperture = camera.members[1];
+  EXPECT_EQ(aperture.array_stride, 16);  // std140 rounds an array's stride up to 16
+  EXPECT_EQ(aperture.size, 48);
+  EXPECT_EQ(camera.members[2].offset, 96);
+
+  const gl::Symbol& lights = symbol(stage.symbols, "Lights");
+  EXPECT_EQ(lights.packing, "std430");
+  expect_members_match(lights, stage.module);
+  EXPECT_TRUE(lights.members[0].row_major);
+  EXPECT_EQ(lights.members[1].array_stride, 16);
+  EXPECT_FALSE(lights.members[1].size.has_value());  // runtime-sized: as long as the buffer bound
+  EXPECT_FALSE(lights.size.has_value());
+
+  const gl::Symbol& packed = symbol(stage.symbols, "Packed");
+  EXPECT_EQ(packed.packing, "scalar");
+  expect_members_match(packed, stage.module);
+  EXPECT_EQ(packed.members[1].offset, 12);  // scalar layout: b packs right after a's three floats
+  EXPECT_EQ(packed.members[2].array_stride, 8);
+  EXPECT_EQ(packed.size, 32);
+
+  // A resource that says no set is in set 0 (GL_KHR_vulkan_glsl), as glslang decorates it.
+  const gl::Symbol& albedo = symbol(stage.symbols, "albedoTex");
+  EXPECT_EQ(albedo.set, 0);
+  EXPECT_EQ(stage.module.decoration("albedoTex", kDescriptorSet), 0);
+  EXPECT_EQ(stage.module.decoration("albedoTex", kBinding), 1);
+  EXPECT_FALSE(symbol(stage.symbols, "N").set.has_value());  // inputs are no resources
+
+  ASSERT_EQ(stage.symbols.specialization_constants.size(), 2u);
+  const gl::SpecializationConstant& samples = stage.symbols.specialization_constants[0];
+  EXPECT_EQ(samples.name, "kSamples");
+  EXPECT_EQ(samples.id, 3);
+  EXPECT_EQ(samples.type.glsl_type, "int");
+  EXPECT_EQ(samples.default_value, 4.0);
+  EXPECT_EQ(stage.module.decoration("kSamples", kSpecId), 3);
+  const gl::SpecializationConstant& scale = stage.symbols.specialization_constants[1];
+  EXPECT_EQ(scale.id, 7);
+  EXPECT_EQ(scale.default_value, 1.5);
+  EXPECT_EQ(stage.module.decoration("kScale", kSpecId), 7);
+}
+
+TEST(VulkanInterface, WorkGroupSizeIdsAreSpecializationConstants) {
+  const VulkanStage stage = compile_for_vulkan(
+      "w.comp", "#version 450\nlayout(local_size_x_id = 4, local_size_y_id = 5) in;\n"
+                "layout(set = 0, binding = 0) buffer Out { uint v[]; } o;\n"
+                "void main() { o.v[gl_GlobalInvocationID.x] = gl_WorkGroupSize.x; }\n");
+  ASSERT_EQ(stage.symbols.specialization_constants.size(), 2u);
+  EXPECT_EQ(stage.symbols.specialization_constants[0].name, "gl_WorkGroupSize.x");
+  EXPECT_EQ(stage.symbols.specialization_constants[0].id, 4);
+  EXPECT_EQ(stage.symbols.specialization_constants[1].name, "gl_WorkGroupSize.y");
+  EXPECT_EQ(stage.symbols.specialization_constants[1].id, 5);
+}
+
+// The same shader for OpenGL: no client, no sets, no push constants.
+TEST(VulkanInterface, AnOpenGLStageSaysNothingOfVulkan) {
+  CompileResult compiled = compile(
+      {{"g.frag", "#version 450\nlayout(std140, binding = 0) uniform U { float a; vec3 b; } u;\n"
+                  "out vec4 c;\nvoid main() { c = vec4(u.b, u.a); }\n"}});
+  ASSERT_TRUE(compiled.success) << compiled.diagnostics_text();
+  const gl::StageSymbols& stage = compiled.symbols.stages.at(0);
+  EXPECT_EQ(stage.client, gl::Client::opengl);
+  const gl::Symbol& block = symbol(stage, "U");
+  EXPECT_FALSE(block.set.has_value());
+  EXPECT_EQ(block.packing, "std140");
+  EXPECT_EQ(block.members[1].offset, 16);
+  EXPECT_EQ(block.size, 28);
+  EXPECT_EQ(gl::to_json(compiled.symbols).find("\"client\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace safegi
