@@ -233,6 +233,28 @@ TEST(VulkanInterface, WorkGroupSizeIdsAreSpecializationConstants) {
   EXPECT_EQ(stage.symbols.specialization_constants[1].id, 5);
 }
 
+// Offsets stop at the first member of a type the checker does not model
+// (64-bit and 16-bit arithmetic types): left out, never guessed. A
+// shader-record block is in no descriptor set.
+TEST(VulkanInterface, WhatCannotBePlacedIsLeftOut) {
+  const VulkanStage stage = compile_for_vulkan(
+      "r.rchit", "#version 460\n#extension GL_EXT_ray_tracing : require\n"
+                 "#extension GL_EXT_shader_explicit_arithmetic_types : require\n"
+                 "struct Node { int texture; uint64_t address; };\n"
+                 "layout(set = 0, binding = 4) buffer Nodes { vec2 scale; Node nodes[]; } nodes;\n"
+                 "layout(shaderRecordEXT) buffer Record { vec4 tint; };\n"
+                 "layout(location = 0) rayPayloadInEXT vec3 hit;\n"
+                 "void main() { hit = tint.rgb * nodes.scale.x * float(nodes.nodes[0].texture); }\n");
+  const gl::Symbol& block = symbol(stage.symbols, "Nodes");
+  EXPECT_EQ(block.members.at(0).offset, 0);
+  EXPECT_FALSE(block.members.at(1).offset.has_value());
+  EXPECT_FALSE(block.size.has_value());
+  const gl::Symbol& record = symbol(stage.symbols, "Record");
+  EXPECT_TRUE(record.shader_record);
+  EXPECT_FALSE(record.set.has_value());
+  EXPECT_EQ(record.members.at(0).offset, 0);
+}
+
 // The same shader for OpenGL: no client, no sets, no push constants.
 TEST(VulkanInterface, AnOpenGLStageSaysNothingOfVulkan) {
   CompileResult compiled = compile(

@@ -81,7 +81,7 @@ class SymbolBuilder {
     // GL_KHR_vulkan_glsl: a uniform or buffer resource without layout(set) is in set 0.
     const bool resource = storage == gl::Storage::uniform || storage == gl::Storage::buffer;
     if (iv.set >= 0) s.set = iv.set;
-    else if (vulkan_ && resource && !iv.push_constant) s.set = 0;
+    else if (vulkan_ && resource && !iv.push_constant && !iv.shader_record) s.set = 0;
     s.declared_at = location_of(in_.sources, iv.range.begin);
     return s;
   }
@@ -175,8 +175,11 @@ class SymbolBuilder {
                 if (auto n = integer_literal_value(lit->spelling); n && *n < (1u << 31)) b.binding = static_cast<int>(*n);
         b.declared_at = location_of(in_.sources, block->block_name_range.begin);
         b.push_constant = iv.push_constant;
+        b.shader_record = iv.shader_record;
+        const bool in_descriptor_set = !iv.push_constant && !iv.shader_record &&
+                                       (*storage == gl::Storage::uniform || *storage == gl::Storage::buffer);
         if (iv.set >= 0) b.set = iv.set;
-        else if (vulkan_ && !iv.push_constant && (*storage == gl::Storage::uniform || *storage == gl::Storage::buffer)) b.set = 0;
+        else if (vulkan_ && in_descriptor_set) b.set = 0;
         out.push_back(std::move(b));
       }
       std::string member = iv.name;

@@ -181,6 +181,7 @@ Symbol read_symbol(const Node& node, Storage storage) {
   symbol.binding = node.optional_integer("binding");
   symbol.set = node.optional_integer("set");
   symbol.push_constant = node.has("push_constant") && node.at("push_constant").boolean();
+  symbol.shader_record = node.has("shader_record") && node.at("shader_record").boolean();
   symbol.packing = node.optional_string("packing");
   if (!symbol.packing.empty() && symbol.packing != "std140" && symbol.packing != "std430" && symbol.packing != "scalar")
     node.at("packing").fail("unknown packing \"" + symbol.packing + "\" (expected std140, std430 or scalar)");
@@ -390,6 +391,7 @@ json write_symbol(const Symbol& symbol) {
   if (symbol.binding) node["binding"] = *symbol.binding;
   if (symbol.set) node["set"] = *symbol.set;
   if (symbol.push_constant) node["push_constant"] = true;
+  if (symbol.shader_record) node["shader_record"] = true;
   if (!symbol.packing.empty()) node["packing"] = symbol.packing;
   if (symbol.offset) node["offset"] = *symbol.offset;
   if (symbol.size) node["size"] = *symbol.size;

@@ -166,6 +166,7 @@ TEST(SymbolTable, ReadsAndWritesWhatAVulkanHostBindsBy) {
   const Symbol* push = stage.find(Storage::uniform, "Push");
   ASSERT_NE(push, nullptr);
   EXPECT_TRUE(push->push_constant);
+  EXPECT_FALSE(push->shader_record);
   EXPECT_EQ(push->packing, "std430");
   EXPECT_EQ(push->size, 28);
   EXPECT_EQ(push->members.at(0).offset, 16);

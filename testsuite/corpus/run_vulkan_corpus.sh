@@ -12,7 +12,9 @@
 # `glslangValidator -V --target-env vulkan1.2` accepts. For each selected
 # shader: safeglslc with the same flags must succeed (compiled), its module
 # must pass spirv-val for vulkan1.2 (re-validated) and equal glslangValidator's
-# byte for byte (identical). A crash is an exit status above 2, a hang 20 s.
+# byte for byte (identical), and its symbol table must give the module's
+# sets, bindings, offsets, strides and specialization-constant ids
+# (check_vulkan_layout.py). A crash is an exit status above 2, a hang 20 s.
 # SAFEGI_VULKAN_CORPUS_VERBOSE=1 prints safeglslc's first error per failure.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -53,17 +55,24 @@ for spec in "$@"; do
   done
 done
 
-total=0 compiled=0 valid=0 identical=0 crashes=0
+total=0 compiled=0 valid=0 identical=0 crashes=0 layouts=0
 : > "$tmp/failures.txt"
+: > "$tmp/layout-failures.txt"
 while read -r f; do
   total=$((total + 1))
   glslangValidator -V --target-env vulkan1.2 -o "$tmp/ref.spv" "$f" >/dev/null 2>&1
-  timeout 20 "$safeglslc" -V --target-env vulkan1.2 -o "$tmp/ours.spv" "$f" 2> "$tmp/err.txt" >/dev/null
+  timeout 20 "$safeglslc" -V --target-env vulkan1.2 -o "$tmp/ours.spv" --symbols "$tmp/ours.json" "$f" \
+      2> "$tmp/err.txt" >/dev/null
   rc=$?
   if [[ $rc -eq 0 ]]; then
     compiled=$((compiled + 1))
     spirv-val --target-env vulkan1.2 "$tmp/ours.spv" >/dev/null 2>&1 && valid=$((valid + 1))
     cmp -s "$tmp/ref.spv" "$tmp/ours.spv" && identical=$((identical + 1))
+    if python3 "$root/testsuite/corpus/check_vulkan_layout.py" "$tmp/ours.json" "$tmp/ours.spv" > "$tmp/layout.txt"; then
+      layouts=$((layouts + 1))
+    else
+      sed "s#^#${f#$tmp/}: #" "$tmp/layout.txt" >> "$tmp/layout-failures.txt"
+    fi
   else
     [[ $rc -gt 2 ]] && crashes=$((crashes + 1))
     echo "${f#$tmp/} (exit $rc): $(grep -m1 -E 'error' "$tmp/err.txt" | sed "s#$tmp/##g")" >> "$tmp/failures.txt"
@@ -75,5 +84,7 @@ echo "glslang-accepted shaders: $total"
 echo "compiled by safeglslc:    $compiled ($(pct "$compiled" "$total"))"
 echo "modules spirv-val accepts: $valid of $compiled"
 echo "modules byte-identical to glslangValidator's: $identical of $compiled"
+echo "symbol tables whose sets, bindings, offsets, strides and constant ids are the module's: $layouts of $compiled"
 echo "crashes or hangs: $crashes"
+cat "$tmp/layout-failures.txt"
 if [[ ${SAFEGI_VULKAN_CORPUS_VERBOSE:-0} == 1 ]]; then cat "$tmp/failures.txt"; fi

@@ -229,6 +229,7 @@ void Checker::record_interface(const ast::TypeQualifiers& q, const std::string& 
   iv.binding = layout_int(q, "binding", *this).value_or(-1);
   iv.set = layout_int(q, "set", *this).value_or(-1);
   iv.push_constant = q.has_layout_id("push_constant");
+  iv.shader_record = q.has_layout_id("shaderRecordEXT") || q.has_layout_id("shaderRecordNV");
   iv.annotated = t.is_annotated();
   if (options_.strict && !iv.annotated && (t.shape == Shape::scalar || t.shape == Shape::vector || t.shape == Shape::matrix) &&
       t.scalar != Scalar::bool_ && t.is_floating()) {

@@ -133,6 +133,7 @@ struct Packing {
   long long align = 4, size = 4;
   long long array_stride = 0;   // an array's
   long long matrix_stride = 0;  // a matrix's, or that of the matrices an array holds
+  bool known = true;            // false when a part's type is one the checker does not model (uint64_t, float16_t, ...)
 };
 
 // Base alignment and size under std140 / std430 (GLSL 4.60 §7.6.2.2) or
@@ -140,11 +141,12 @@ struct Packing {
 Packing packing_of(const Type& t, PackingRules rules, bool row_major) {
   const long long scalar = t.scalar == Scalar::double_ ? 8 : 4;
   auto round_up = [](long long v, long long a) { return (v + a - 1) / a * a; };
+  if (t.is_error()) return {4, 4, 0, 0, false};
   if (t.is_array()) {
     Packing element = packing_of(t.element(), rules, row_major);
     const long long align = rules == PackingRules::std140 ? round_up(element.align, 16) : element.align;
     const long long stride = round_up(element.size, align);
-    return {align, stride * std::max(t.array[0], 1), stride, element.matrix_stride};
+    return {align, stride * std::max(t.array[0], 1), stride, element.matrix_stride, element.known};
   }
   // GL_EXT_buffer_reference: a reference is a 64-bit address, whatever it points at (maybe its own block).
   if (t.shape == Shape::structure && t.structure && t.structure->buffer_reference) return {8, 8};
@@ -158,14 +160,16 @@ Packing packing_of(const Type& t, PackingRules rules, bool row_major) {
   }
   if (t.shape == Shape::structure && t.structure) {
     long long align = 0, offset = 0;
+    bool known = true;
     for (const StructField& f : t.structure->fields) {
       const Packing p = packing_of(f.type, rules, row_major);
       align = std::max(align, p.align);
       offset = round_up(offset, p.align) + p.size;
+      known = known && p.known;
     }
     if (rules == PackingRules::std140) align = round_up(std::max<long long>(align, 1), 16);
     align = std::max<long long>(align, 1);
-    return {align, round_up(offset, align)};
+    return {align, round_up(offset, align), 0, 0, known};
   }
   if (t.shape == Shape::vector && rules != PackingRules::scalar) return {(t.rows == 2 ? 2 : 4) * scalar, t.rows * scalar};
   if (t.shape == Shape::vector) return {scalar, t.rows * scalar};
@@ -622,9 +626,13 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
                                                                              : block_row_major;
     for (const ast::Declarator& decl : m->declarators) {
       const Type* t = result_.type_of(&decl);
-      if (!t || t->is_error() || t->shape == Shape::opaque) return;
+      if (!t || t->shape == Shape::opaque) return;
       const bool runtime_sized = t->is_array() && t->array[0] < 0;
       const Packing p = packing_of(*t, rules, row_major);
+      if (!p.known) {  // nothing from here on can be placed: the table gives the members before it
+        result_.block_layouts[&d] = std::move(layout);
+        return;
+      }
       // A member's align overrides the block's (GLSL 4.60 §4.4.5); either only raises the base alignment.
       long long member_align = std::max(p.align, block_align);
       if (align)

@@ -54,6 +54,7 @@ struct Symbol {
   std::optional<int> binding;          // explicit layout(binding = N)
   std::optional<int> set;              // Vulkan: the descriptor set, layout(set = N) or 0
   bool push_constant = false;          // blocks: layout(push_constant)
+  bool shader_record = false;          // blocks: layout(shaderRecordEXT), the shader binding table's record
   std::string packing;                 // blocks whose members have offsets: "std140", "std430" or "scalar"
   std::optional<long long> offset;     // members of such blocks: bytes from the block's start
   std::optional<long long> size;       // such blocks (to the end of the last member) and members, in bytes

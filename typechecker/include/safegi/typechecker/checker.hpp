@@ -90,6 +90,7 @@ struct InterfaceVariable {
   int binding = -1;        // layout(binding = N), -1 when absent
   int set = -1;            // layout(set = N), Vulkan's descriptor set, -1 when absent
   bool push_constant = false;  // a member of a layout(push_constant) block (Vulkan)
+  bool shader_record = false;  // a member of a layout(shaderRecordEXT) block: the shader binding table's data
   bool annotated = false;
 };
 
