@@ -242,13 +242,20 @@ TEST(VulkanInterface, WhatCannotBePlacedIsLeftOut) {
                  "#extension GL_EXT_shader_explicit_arithmetic_types : require\n"
                  "struct Node { int texture; uint64_t address; };\n"
                  "layout(set = 0, binding = 4) buffer Nodes { vec2 scale; Node nodes[]; } nodes;\n"
+                 "layout(set = 0, binding = 5) buffer Address { float t; uint64_t next; } address;\n"
                  "layout(shaderRecordEXT) buffer Record { vec4 tint; };\n"
                  "layout(location = 0) rayPayloadInEXT vec3 hit;\n"
                  "void main() { hit = tint.rgb * nodes.scale.x * float(nodes.nodes[0].texture); }\n");
   const gl::Symbol& block = symbol(stage.symbols, "Nodes");
   EXPECT_EQ(block.members.at(0).offset, 0);
   EXPECT_FALSE(block.members.at(1).offset.has_value());
+  EXPECT_EQ(block.members.at(1).type.glsl_type, "Node");
   EXPECT_FALSE(block.size.has_value());
+  const gl::Symbol& address = symbol(stage.symbols, "Address");
+  EXPECT_EQ(address.members.at(0).offset, 0);
+  EXPECT_EQ(address.members.at(1).type.glsl_type, "uint64_t");  // as written, though unmodelled
+  EXPECT_EQ(address.members.at(1).printed_type, "uint64_t");
+  EXPECT_FALSE(address.members.at(1).offset.has_value());
   const gl::Symbol& record = symbol(stage.symbols, "Record");
   EXPECT_TRUE(record.shader_record);
   EXPECT_FALSE(record.set.has_value());

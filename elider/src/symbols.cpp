@@ -73,6 +73,10 @@ class SymbolBuilder {
     s.storage = storage;
     s.type = value_type(iv.type);
     s.printed_type = type_name(iv.type.element(), registry_);
+    // A type the checker does not model (uint64_t, f16vec3, ...) is named as the program wrote it.
+    if (iv.type.is_error())
+      if (const auto* declaration = ast::dyn_cast<ast::VariableDecl>(iv.decl); declaration && declaration->type)
+        s.type.glsl_type = s.printed_type = declaration->type->name;
     if (iv.type.texel) s.texel = value_type(*iv.type.texel);
     if (iv.type.is_array() && iv.type.array.front() > 0) s.array_size = iv.type.array.front();
     s.unsized = iv.type.is_array() && !s.array_size;
