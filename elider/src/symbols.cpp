@@ -82,12 +82,18 @@ class SymbolBuilder {
     s.unsized = iv.type.is_array() && !s.array_size;
     if (iv.location >= 0) s.location = iv.location;
     if (iv.binding >= 0) s.binding = iv.binding;
-    // GL_KHR_vulkan_glsl: a uniform or buffer resource without layout(set) is in set 0.
-    const bool resource = storage == gl::Storage::uniform || storage == gl::Storage::buffer;
-    if (iv.set >= 0) s.set = iv.set;
-    else if (vulkan_ && resource && !iv.push_constant && !iv.shader_record) s.set = 0;
+    s.set = descriptor_set(iv, storage);
     s.declared_at = location_of(in_.sources, iv.range.begin);
     return s;
+  }
+
+  // layout(set = N), or 0 for a Vulkan uniform or buffer resource that names
+  // none (GL_KHR_vulkan_glsl); push constants and shader records are in no set.
+  std::optional<int> descriptor_set(const InterfaceVariable& iv, gl::Storage storage) const {
+    if (iv.set >= 0) return iv.set;
+    const bool resource = storage == gl::Storage::uniform || storage == gl::Storage::buffer;
+    if (vulkan_ && resource && !iv.push_constant && !iv.shader_record) return 0;
+    return std::nullopt;
   }
 
   // Where a block's members lie, when its packing says (std140, std430, scalar).
@@ -180,10 +186,7 @@ class SymbolBuilder {
         b.declared_at = location_of(in_.sources, block->block_name_range.begin);
         b.push_constant = iv.push_constant;
         b.shader_record = iv.shader_record;
-        const bool in_descriptor_set = !iv.push_constant && !iv.shader_record &&
-                                       (*storage == gl::Storage::uniform || *storage == gl::Storage::buffer);
-        if (iv.set >= 0) b.set = iv.set;
-        else if (vulkan_ && in_descriptor_set) b.set = 0;
+        b.set = descriptor_set(iv, *storage);
         out.push_back(std::move(b));
       }
       std::string member = iv.name;
