@@ -49,7 +49,7 @@ void JsonFields::require_float_range(const JsonPath& path, double value) const {
 double JsonFields::scalar(const Json& value, const JsonPath& path, const RuntimeDimension& expected) {
   Quantity quantity;
   if (value.is_number()) {
-    if (!expected.dimensionless())
+    if (!expected.is_dimensionless())
       fail(path, "expected " + describe(expected) + ", got " + short_dump(value) + " (a number without unit)");
     quantity = {value.get<double>(), {}};
   } else if (value.is_string()) {

@@ -24,16 +24,11 @@ using Json = nlohmann::json;
 using Triple = std::array<double, 3>;
 
 // The run-time twin of a compile-time dimension, so that a field's expected
-// unit is derived from the type it is stored in. `proj` is internal
-// bookkeeping for the cosine and never written in a scene file.
+// unit is derived from the type it is stored in (both name the bases of
+// vocabulary.def; `proj` is left out, as scene files never write it).
 template <class Term>
 void add_term(RuntimeDimension& dimension) {
-  constexpr std::string_view name = Term::base::name.view();
-  constexpr std::pair<std::string_view, Base> kBases[] = {
-      {"length", Base::length}, {"time", Base::time}, {"energy", Base::energy},
-      {"angle", Base::angle},   {"solid_angle", Base::solid_angle}};
-  for (const auto& [base_name, base] : kBases)
-    if (name == base_name) dimension.exponents[static_cast<int>(base)] += Term::exponent;
+  dimension = runtime_dim::with_base_power(dimension, Term::base::name.view(), Term::exponent);
 }
 template <class... Terms>
 RuntimeDimension runtime_dimension(dimension<Terms...>) {

@@ -3,89 +3,110 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <utility>
+#include <vector>
 
 namespace safegi::render {
 
-RuntimeDimension RuntimeDimension::operator*(const RuntimeDimension& other) const {
-  RuntimeDimension result;
-  for (size_t i = 0; i < exponents.size(); ++i) result.exponents[i] = exponents[i] + other.exponents[i];
-  return result;
-}
-
-RuntimeDimension RuntimeDimension::inverse() const { return pow(-1); }
-
-RuntimeDimension RuntimeDimension::pow(int power) const {
-  RuntimeDimension result;
-  for (size_t i = 0; i < exponents.size(); ++i) result.exponents[i] = exponents[i] * power;
-  return result;
-}
-
-RuntimeDimension runtime_dim::make(int length, int time, int energy, int angle, int solid_angle) {
-  return RuntimeDimension{{length, time, energy, angle, solid_angle}};
+const DimensionRegistry& scene_vocabulary() {
+  static const DimensionRegistry vocabulary = DimensionRegistry::rendering_prelude();
+  return vocabulary;
 }
 
 namespace {
 
+BaseId base_id(std::string_view name) { return *scene_vocabulary().find_base(name); }
+
+RuntimeDimension without_proj(const RuntimeDimension& dimension) {
+  std::vector<Factor> factors;
+  for (const Factor& f : dimension.factors())
+    if (f.base != base_id("proj")) factors.push_back(f);
+  return *RuntimeDimension::from_factors(std::move(factors));
+}
+
+}  // namespace
+
+RuntimeDimension runtime_dim::make(int length, int time, int energy, int angle, int solid_angle) {
+  return *RuntimeDimension::from_factors({{base_id("length"), length},
+                                          {base_id("time"), time},
+                                          {base_id("energy"), energy},
+                                          {base_id("angle"), angle},
+                                          {base_id("solid_angle"), solid_angle}});
+}
+
+RuntimeDimension runtime_dim::named(std::string_view vocabulary_name) {
+  return without_proj(*scene_vocabulary().find_dimension(vocabulary_name));
+}
+
+RuntimeDimension runtime_dim::with_base_power(const RuntimeDimension& dimension, std::string_view base, int exponent) {
+  const std::optional<BaseId> id = scene_vocabulary().find_base(base);
+  if (!id || *id == base_id("proj")) return dimension;
+  return *multiply(dimension, RuntimeDimension::base(*id, exponent));
+}
+
+namespace {
+
+// The vocabulary's dimensions a scene message names, with an example of the unit a scene
+// file writes for each; any other dimension is spelled in base symbols ("m s^-1").
 struct NamedDimension {
-  RuntimeDimension dimension;
-  const char* name;
+  std::string_view vocabulary_name;
   const char* example;
 };
 
 const NamedDimension kNamedDimensions[] = {
-    {runtime_dim::none, "dimensionless number", "0.5"},
-    {runtime_dim::length, "length", "m"},
-    {runtime_dim::make(2, 0, 0, 0, 0), "area", "m2"},
-    {runtime_dim::time, "time", "s"},
-    {runtime_dim::make(0, 0, 1, 0, 0), "energy", "J"},
-    {runtime_dim::angle, "angle", "deg"},
-    {runtime_dim::make(0, 0, 0, 0, 1), "solid angle", "sr"},
-    {runtime_dim::power, "power", "W"},
-    {runtime_dim::intensity, "intensity", "W/sr"},
-    {runtime_dim::make(-2, -1, 1, 0, 0), "irradiance", "W/m2"},
-    {runtime_dim::radiance, "radiance", "W/(m2 sr)"},
+    {"dimensionless", "0.5"}, {"length", "m"},     {"area", "m2"},          {"time", "s"},
+    {"energy", "J"},          {"angle", "deg"},    {"solid_angle", "sr"},   {"power", "W"},
+    {"intensity", "W/sr"},    {"irradiance", "W/m2"}, {"radiance", "W/(m2 sr)"},
 };
 
+// "solid angle"; the dimensionless one is a "dimensionless number".
+std::string display_name(std::string_view vocabulary_name) {
+  if (vocabulary_name == "dimensionless") return "dimensionless number";
+  std::string text(vocabulary_name);
+  for (char& c : text)
+    if (c == '_') c = ' ';
+  return text;
+}
+
+const NamedDimension* find_named(const RuntimeDimension& dimension) {
+  for (const NamedDimension& named : kNamedDimensions)
+    if (runtime_dim::named(named.vocabulary_name) == dimension) return &named;
+  return nullptr;
+}
+
+// What a scene file may write for a unit: its symbol (vocabulary.def), or its name or alias.
 struct UnitSymbol {
   std::string_view symbol;
-  double to_reference;
-  RuntimeDimension dimension;
+  std::string_view unit;
 };
 
-const UnitSymbol kUnitSymbols[] = {
-    {"m", 1.0, runtime_dim::length},
-    {"km", 1e3, runtime_dim::length},
-    {"cm", 1e-2, runtime_dim::length},
-    {"mm", 1e-3, runtime_dim::length},
-    {"um", 1e-6, runtime_dim::length},
-    {"nm", 1e-9, runtime_dim::length},
-    {"in", 0.0254, runtime_dim::length},
-    {"ft", 0.3048, runtime_dim::length},
-    {"s", 1.0, runtime_dim::time},
-    {"ms", 1e-3, runtime_dim::time},
-    {"us", 1e-6, runtime_dim::time},
-    {"ns", 1e-9, runtime_dim::time},
-    {"J", 1.0, runtime_dim::make(0, 0, 1, 0, 0)},
-    {"kJ", 1e3, runtime_dim::make(0, 0, 1, 0, 0)},
-    {"W", 1.0, runtime_dim::power},
-    {"mW", 1e-3, runtime_dim::power},
-    {"kW", 1e3, runtime_dim::power},
-    {"rad", 1.0, runtime_dim::angle},
-    {"deg", std::numbers::pi / 180.0, runtime_dim::angle},
-    {"sr", 1.0, runtime_dim::make(0, 0, 0, 0, 1)},
+constexpr UnitSymbol kUnitSymbols[] = {
+#define VOCABULARY_UNIT(name, symbol, dimension, scale) {symbol, #name},
+#include "safegi/typed/vocabulary.def"
 };
+
+const ::safegi::Unit* find_scene_unit(std::string_view text) {
+  for (const UnitSymbol& candidate : kUnitSymbols)
+    if (!candidate.symbol.empty() && candidate.symbol == text) return scene_vocabulary().find_unit(candidate.unit);
+  return scene_vocabulary().find_unit(text);
+}
+
+// A base's symbol: that of the vocabulary's unit of scale 1 that measures it (m, s, J, rad, sr).
+std::string_view base_symbol(BaseId base) {
+  for (const UnitSymbol& candidate : kUnitSymbols) {
+    const ::safegi::Unit* unit = scene_vocabulary().find_unit(candidate.unit);
+    if (!candidate.symbol.empty() && unit->scale == 1.0 && unit->dimension == RuntimeDimension::base(base))
+      return candidate.symbol;
+  }
+  return scene_vocabulary().base_name(base);
+}
 
 std::string base_spelling(const RuntimeDimension& dimension) {
-  static const char* const kBaseSymbols[] = {"m", "s", "J", "rad", "sr"};
   std::string text;
-  for (size_t i = 0; i < dimension.exponents.size(); ++i) {
-    int exponent = dimension.exponents[i];
-    if (exponent == 0) continue;
+  for (const Factor& f : dimension.factors()) {
     if (!text.empty()) text += ' ';
-    text += kBaseSymbols[i];
-    if (exponent != 1) text += '^' + std::to_string(exponent);
+    text += base_symbol(f.base);
+    if (f.exponent != 1) text += '^' + std::to_string(f.exponent);
   }
   return text;
 }
@@ -158,19 +179,20 @@ class UnitParser {
       ++pos_;
     } else {
       size_t start = pos_;
-      while (!at_end() && std::isalpha(static_cast<unsigned char>(peek()))) ++pos_;
+      while (!at_end() && (std::isalpha(static_cast<unsigned char>(peek())) || peek() == '_')) ++pos_;
       std::string_view symbol = text_.substr(start, pos_ - start);
       if (symbol.empty()) return fail(error, "expected a unit symbol at '" + std::string(text_.substr(start)) + "'");
-      const UnitSymbol* found = nullptr;
-      for (const UnitSymbol& candidate : kUnitSymbols)
-        if (candidate.symbol == symbol) found = &candidate;
+      const ::safegi::Unit* found = find_scene_unit(symbol);
       if (!found) return fail(error, "unknown unit '" + std::string(symbol) + "'");
-      factor = Unit{found->to_reference, found->dimension};
+      factor = Unit{found->scale, without_proj(found->dimension)};
     }
     int exponent = 1;
     if (!parse_exponent(exponent, error)) return false;
     unit.to_reference *= std::pow(factor.to_reference, sign * exponent);
-    unit.dimension = unit.dimension * factor.dimension.pow(sign * exponent);
+    Checked<RuntimeDimension> raised = power(factor.dimension, sign * exponent);
+    Checked<RuntimeDimension> product = raised ? multiply(unit.dimension, *raised) : raised;
+    if (!product) return fail(error, "exponent out of range");
+    unit.dimension = *product;
     return true;
   }
 
@@ -200,14 +222,13 @@ class UnitParser {
 }  // namespace
 
 std::string dimension_name(const RuntimeDimension& dimension) {
-  for (const NamedDimension& named : kNamedDimensions)
-    if (named.dimension == dimension) return named.name;
+  if (const NamedDimension* named = find_named(dimension)) return display_name(named->vocabulary_name);
   return base_spelling(dimension);
 }
 
 std::string describe(const RuntimeDimension& dimension) {
-  for (const NamedDimension& named : kNamedDimensions)
-    if (named.dimension == dimension) return std::string(named.name) + " (e.g. " + named.example + ")";
+  if (const NamedDimension* named = find_named(dimension))
+    return display_name(named->vocabulary_name) + " (e.g. " + named->example + ")";
   return base_spelling(dimension);
 }
 

@@ -39,7 +39,19 @@ TEST(UnitExpression, CompoundUnitsAllSpellings) {
   Quantity per_mm2 = parse("1 W/(mm2 sr)");
   EXPECT_DOUBLE_EQ(per_mm2.value, 1e6);
   EXPECT_EQ(parse("3 W/sr").dimension, runtime_dim::intensity);
-  EXPECT_TRUE(parse("0.5").dimension.dimensionless());
+  EXPECT_TRUE(parse("0.5").dimension.is_dimensionless());
+}
+
+TEST(UnitExpression, TheVocabularysUnitsByNameAndSymbol) {
+  // Scene files take the units of C++ and shaders (vocabulary.def), by symbol or name.
+  EXPECT_DOUBLE_EQ(parse("5 millimetre").value, 0.005);
+  EXPECT_DOUBLE_EQ(parse("5 millimeter").value, 0.005);
+  EXPECT_DOUBLE_EQ(parse("2 h").value, 7200.0);
+  EXPECT_DOUBLE_EQ(parse("2 min").value, 120.0);
+  EXPECT_DOUBLE_EQ(parse("3 mJ").value, 0.003);
+  EXPECT_DOUBLE_EQ(parse("1 square_millimetre").value, 1e-6);
+  EXPECT_EQ(parse("17 radiance_unit").dimension, runtime_dim::radiance);  // no proj in a scene
+  EXPECT_EQ(parse("17 watt / (square_metre steradian)").dimension, runtime_dim::radiance);
 }
 
 TEST(UnitExpression, Errors) {

@@ -266,48 +266,29 @@ std::string DimensionRegistry::describe(const DimensionError& error) const {
 }
 
 DimensionRegistry DimensionRegistry::rendering_prelude() {
+  // vocabulary.def, the list C++ and scene files take too; safegi/prelude.sgl declares the
+  // same names in the same order (typechecker/src/prelude_test.cpp).
   DimensionRegistry r;
-  for (const char* base : {"length", "time", "energy", "angle", "solid_angle", "proj"}) r.add_base(base);
-  auto derive = [&r](const char* name, std::initializer_list<std::pair<std::string_view, std::int32_t>> terms) {
-    r.add_derived(name, *r.make(terms));
+  auto derive = [&r](std::string name, std::initializer_list<std::int32_t> exponents) {
+    std::vector<Factor> factors;
+    BaseId base = 0;
+    for (std::int32_t exponent : exponents) factors.push_back({base++, exponent});
+    r.add_derived(std::move(name), *Dimension::from_factors(std::move(factors)));
   };
-  // The same names, in the same order, as parser/prelude/safegi/prelude.sgl.
-  derive("dimensionless", {});
-  derive("area", {{"length", 2}});
-  derive("volume", {{"length", 3}});
-  derive("velocity", {{"length", 1}, {"time", -1}});
-  derive("power", {{"energy", 1}, {"time", -1}});
-  derive("intensity", {{"power", 1}, {"solid_angle", -1}});
-  derive("irradiance", {{"power", 1}, {"area", -1}});
-  derive("radiant_exitance", {{"power", 1}, {"area", -1}});
-  derive("radiance", {{"irradiance", 1}, {"solid_angle", -1}, {"proj", -1}});
-  // brdf and the projected-solid-angle pdf are the same dimension; the first
-  // declared (brdf) is the one printed.
-  derive("brdf", {{"solid_angle", -1}, {"proj", -1}});
-  derive("pdf_solid_angle", {{"solid_angle", -1}});
-  derive("pdf_projected_solid_angle", {{"solid_angle", -1}, {"proj", -1}});
-  derive("pdf_area", {{"area", -1}});
-  derive("pdf_length", {{"length", -1}});
-  derive("inv_length", {{"length", -1}});
-  derive("inv_area", {{"area", -1}});
-
-  const double pi = std::numbers::pi;
-  auto unit = [&r](const char* name, std::string_view dimension, double scale) {
-    r.add_unit(name, *r.find_dimension(dimension), scale);
+  auto unit = [&r](std::string name, std::string_view dimension, double scale) {
+    r.add_unit(std::move(name), *r.find_dimension(dimension), scale);
   };
-  unit("meter", "length", 1.0);
-  unit("centimeter", "length", 1e-2);
-  unit("millimeter", "length", 1e-3);
-  unit("kilometer", "length", 1e3);
-  unit("inch", "length", 0.0254);
-  unit("second", "time", 1.0);
-  unit("millisecond", "time", 1e-3);
-  unit("joule", "energy", 1.0);
-  unit("watt", "power", 1.0);
-  unit("radian", "angle", 1.0);
-  unit("degree", "angle", pi / 180.0);
-  unit("steradian", "solid_angle", 1.0);
-
+  auto alias = [&r](std::string name, std::string_view of) {
+    const Unit* same = r.find_unit(of);
+    r.add_unit(std::move(name), same->dimension, same->scale);
+  };
+#define VOCABULARY_BASE(name) r.add_base(#name);
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+  derive(#name, {length, time, energy, angle, solid_angle, proj});
+#define VOCABULARY_SYNONYM(name, of) r.add_derived(#name, r.find_derived(#of)->value);
+#define VOCABULARY_UNIT(name, symbol, dimension, scale) unit(#name, #dimension, scale);
+#define VOCABULARY_UNIT_ALIAS(name, of) alias(#name, #of);
+#include "safegi/typed/vocabulary.def"
   return r;
 }
 

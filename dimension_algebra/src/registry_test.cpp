@@ -157,10 +157,12 @@ TEST_F(Prelude, UnitFactors) {
   EXPECT_TRUE(divide(cm, cm)->is_dimensionless());
   EXPECT_DOUBLE_EQ(r.scale(*divide(cm, m)), 0.01);
   EXPECT_TRUE(r.reference(*divide(cm, m))->is_dimensionless());
-  // Units of the same dimension and scale share one factor.
+  // Units of the same dimension and scale share one factor: the vocabulary's two
+  // spellings, and a program's own unit of that scale.
   DimensionRegistry q = DimensionRegistry::rendering_prelude();
-  ASSERT_TRUE(q.add_unit("centimetre", *q.find_dimension("length"), 0.01));
   EXPECT_EQ(q.measured_in(*q.find_unit("centimetre")), q.measured_in(*q.find_unit("centimeter")));
+  ASSERT_TRUE(q.add_unit("hundredth", *q.find_dimension("length"), 0.01));
+  EXPECT_EQ(q.measured_in(*q.find_unit("hundredth")), q.measured_in(*q.find_unit("centimeter")));
 }
 
 TEST_F(Prelude, NumbersAsLiterals) {

@@ -73,8 +73,9 @@ TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheDeclarations) {
   ASSERT_NE(table.stage(Stage::fragment), nullptr);
   EXPECT_EQ(table.stage(Stage::geometry), nullptr);
   EXPECT_EQ(table.base_dimensions.size(), 6u);
-  EXPECT_EQ(table.units.at(2).name, "millimeter");
-  EXPECT_DOUBLE_EQ(table.units.at(2).scale, 0.001);
+  EXPECT_EQ(table.units.at(1).name, "metre");  // the prelude's units in both spellings
+  EXPECT_EQ(table.units.at(4).name, "millimeter");
+  EXPECT_DOUBLE_EQ(table.units.at(4).scale, 0.001);
   EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
 }
 

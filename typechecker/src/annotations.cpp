@@ -131,8 +131,14 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
   const double scale = *folded;
   DimensionRegistry& reg = result_.registry;
   if (const Unit* existing = reg.find_unit(d.name)) {
-    if (existing->dimension == dim->value) return;
-    report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with another dimension").with_code(code::E_REDECLARED));
+    // The same unit again (a shader that declared `hour` before the prelude had it) is that unit.
+    if (existing->dimension != dim->value)
+      report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with another dimension").with_code(code::E_REDECLARED));
+    else if (!DimensionRegistry::same_scale(existing->scale, scale))
+      report(Diagnostic::error(d.name_range, "unit '" + d.name + "' is redeclared with scale " +
+                                                 DimensionRegistry::format_number(scale) + "; it was " +
+                                                 DimensionRegistry::format_number(existing->scale))
+                 .with_code(code::E_REDECLARED));
     return;
   }
   if (!reg.add_unit(d.name, dim->value, scale))

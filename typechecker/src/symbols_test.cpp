@@ -56,7 +56,7 @@ void main() {
       "dimension length @6:9 -> prelude.sgl:8:11 : float<length>",
       "variable toLight @6:28 -> 5:17 : vector<world>",
       "built-in function length @6:21 : length: geo<S, D> -> float<D>",
-      "unit centimeter @6:45 -> prelude.sgl:35:6 : float<length>",
+      "unit centimeter @6:45 -> prelude.sgl:41:6 : float<length>",
       "variable d @6:17 decl -> 6:17 : float<length>",
       "variable d @7:13 -> 6:17 : float<length>",
       "variable c @7:9 decl -> 7:9 : float<length>",  // inferred from its initialiser

@@ -1,43 +1,43 @@
-// Run-time units for the scene loader: "5 mm", "60 deg", "17 W/(m2 sr)".
+// Run-time units for the scene loader: "5 mm", "60 deg", "17 W/(m2 sr)", "5 millimetre".
 //
 // Scene files name their units as text, so the loader needs a run-time twin of
-// the compile-time dimensions: an exponent vector over the user-visible base
-// dimensions plus the factor that converts a value to the reference unit.
+// the compile-time dimensions: the compiler's dimension algebra over the same
+// vocabulary, plus the factor that converts a value to the reference unit.
 // Every conversion happens here, once, at load time (paper §3.3).
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "safegi/dimension_algebra/dimension.hpp"
+#include "safegi/dimension_algebra/registry.hpp"
+
 namespace safegi::render {
 
-// Base dimensions a scene author can write. The renderer's internal `proj`
-// base never appears in a scene file: it is bookkeeping for the cosine factor.
-enum class Base : int { length, time, energy, angle, solid_angle, count };
+// A scene value's dimension: the rendering vocabulary's (typed/include/safegi/typed/
+// vocabulary.def, the one C++ and shaders use), over its bases length, time, energy, angle
+// and solid_angle. The vocabulary's `proj` never appears in a scene file: it is the
+// renderer's bookkeeping for the cosine factor, so scene dimensions leave it out.
+using RuntimeDimension = ::safegi::Dimension;
 
-struct RuntimeDimension {
-  std::array<int, static_cast<int>(Base::count)> exponents{};
-
-  friend bool operator==(const RuntimeDimension&, const RuntimeDimension&) = default;
-  RuntimeDimension operator*(const RuntimeDimension& other) const;
-  RuntimeDimension inverse() const;
-  RuntimeDimension pow(int power) const;
-  bool dimensionless() const { return *this == RuntimeDimension{}; }
-};
+// The vocabulary scene dimensions and units are named by (DimensionRegistry::rendering_prelude()).
+const DimensionRegistry& scene_vocabulary();
 
 // The dimensions scene fields are declared with, named as in the error messages.
 namespace runtime_dim {
 RuntimeDimension make(int length, int time, int energy, int angle, int solid_angle);
+// The vocabulary's dimension of that name, without proj ("radiance" is W m^-2 sr^-1 here).
+RuntimeDimension named(std::string_view vocabulary_name);
+// `dimension` times base^exponent, for a base of the vocabulary (proj and others: unchanged).
+RuntimeDimension with_base_power(const RuntimeDimension& dimension, std::string_view base, int exponent);
 inline const RuntimeDimension none = {};
-inline const RuntimeDimension length = make(1, 0, 0, 0, 0);
-inline const RuntimeDimension time = make(0, 1, 0, 0, 0);
-inline const RuntimeDimension angle = make(0, 0, 0, 1, 0);
-inline const RuntimeDimension power = make(0, -1, 1, 0, 0);
-inline const RuntimeDimension intensity = make(0, -1, 1, 0, -1);
-inline const RuntimeDimension radiance = make(-2, -1, 1, 0, -1);
+inline const RuntimeDimension length = named("length");
+inline const RuntimeDimension time = named("time");
+inline const RuntimeDimension angle = named("angle");
+inline const RuntimeDimension power = named("power");
+inline const RuntimeDimension intensity = named("intensity");
+inline const RuntimeDimension radiance = named("radiance");
 }  // namespace runtime_dim
 
 // "power (e.g. W)" for a known dimension, else its base-unit spelling "m^2 s^-1".
@@ -55,7 +55,8 @@ struct Quantity {
   RuntimeDimension dimension;
 };
 
-// Parses a unit expression: symbols with optional exponents ("m2", "m^2",
+// Parses a unit expression: symbols or unit names (vocabulary.def: "mm" or
+// "millimetre") with optional exponents ("m2", "m^2",
 // "sr^-1"), products by space, '*' or '·', quotients by '/', parentheses.
 // On failure returns nullopt and sets `error`.
 std::optional<Unit> parse_unit(std::string_view text, std::string& error);

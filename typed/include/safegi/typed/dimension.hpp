@@ -176,43 +176,29 @@ constexpr dim::quotient<dimension<A...>, dimension<B...>> operator/(dimension<A.
   return {};
 }
 
-/// The base dimensions of the rendering vocabulary.
+/// The base dimensions of the rendering vocabulary (vocabulary.def, shared with shaders
+/// and scene files). base::proj is the projected-cosine factor (n·ω) of the rendering equation.
 namespace base {
-struct length : base_dimension<"length"> {};
-struct time : base_dimension<"time"> {};
-struct energy : base_dimension<"energy"> {};
-struct angle : base_dimension<"angle"> {};
-struct solid_angle : base_dimension<"solid_angle"> {};
-/// The projected-cosine factor (n·ω) of the rendering equation.
-struct proj : base_dimension<"proj"> {};
+#define VOCABULARY_BASE(name) \
+  struct name : base_dimension<#name> {};
+#include "safegi/typed/vocabulary.def"
 }  // namespace base
 
-/// The rendering vocabulary. Radiometric quantities follow SafeGI: radiance carries
-/// 1/(solid_angle·proj), so a BRDF times radiance only becomes irradiance-like once
-/// multiplied by a cosine (proj) and a solid angle — a forgotten cosine is a type error.
+/// The rendering vocabulary, from vocabulary.def. Radiometric quantities follow SafeGI:
+/// radiance carries 1/(solid_angle·proj), so a BRDF times radiance only becomes
+/// irradiance-like once multiplied by a cosine (proj) and a solid angle — a forgotten
+/// cosine is a type error. dim::solid_angle_per_projected_area is dω/dA⊥, the
+/// inverse-square law (radiometry.hpp).
 namespace dim {
-using dimensionless = dimension<>;
-using length = of<base::length>;
-using time = of<base::time>;
-using energy = of<base::energy>;
-using angle = of<base::angle>;
-using solid_angle = of<base::solid_angle>;
-using proj = of<base::proj>;
-
-using area = pow<length, 2>;
-using volume = pow<length, 3>;
-using power = quotient<energy, time>;
-using intensity = quotient<power, solid_angle>;
-using irradiance = quotient<power, area>;
-using projected_solid_angle = product<solid_angle, proj>;
-using radiance = quotient<irradiance, projected_solid_angle>;
-using brdf = inverse<projected_solid_angle>;
-using pdf_solid_angle = inverse<solid_angle>;
-using pdf_projected_solid_angle = inverse<projected_solid_angle>;
-using pdf_area = inverse<area>;
-using pdf_length = inverse<length>;
-/// dω/dA⊥, the inverse-square law (radiometry.hpp): solid angle per unit of projected area.
-using solid_angle_per_projected_area = quotient<solid_angle, product<area, proj>>;
+/// A dimension by its exponents over the vocabulary's bases, in vocabulary.def's order.
+template <int Length, int Time, int Energy, int Angle, int SolidAngle, int Proj>
+using of_exponents = product<pow<of<base::length>, Length>, pow<of<base::time>, Time>, pow<of<base::energy>, Energy>,
+                             pow<of<base::angle>, Angle>, pow<of<base::solid_angle>, SolidAngle>, pow<of<base::proj>, Proj>>;
+#define VOCABULARY_BASE(name) using name = of<base::name>;
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+  using name = of_exponents<length, time, energy, angle, solid_angle, proj>;
+#define VOCABULARY_SYNONYM(name, same_as) using name = same_as;
+#include "safegi/typed/vocabulary.def"
 }  // namespace dim
 
 }  // namespace safegi

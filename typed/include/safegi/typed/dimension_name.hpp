@@ -24,21 +24,15 @@ struct named_dimension {};
 template <class... Entries>
 struct vocabulary_list {};
 
-// Several names for one dimension are all listed ("brdf or pdf_projected_solid_angle").
+struct no_dimension {};
+
+// vocabulary.def's bases and dimensions; several names of one dimension are all listed
+// ("brdf or pdf_projected_solid_angle"); synonyms are not.
 using vocabulary = vocabulary_list<
-    named_dimension<dim::dimensionless, "dimensionless">, named_dimension<dim::length, "length">,
-    named_dimension<dim::time, "time">, named_dimension<dim::energy, "energy">,
-    named_dimension<dim::angle, "angle">, named_dimension<dim::solid_angle, "solid_angle">,
-    named_dimension<dim::proj, "proj">, named_dimension<dim::area, "area">,
-    named_dimension<dim::volume, "volume">, named_dimension<dim::power, "power">,
-    named_dimension<dim::intensity, "intensity">, named_dimension<dim::irradiance, "irradiance">,
-    named_dimension<dim::radiance, "radiance">,
-    named_dimension<dim::projected_solid_angle, "projected_solid_angle">,
-    named_dimension<dim::brdf, "brdf">,
-    named_dimension<dim::pdf_projected_solid_angle, "pdf_projected_solid_angle">,
-    named_dimension<dim::pdf_solid_angle, "pdf_solid_angle">, named_dimension<dim::pdf_area, "pdf_area">,
-    named_dimension<dim::pdf_length, "pdf_length">,
-    named_dimension<dim::solid_angle_per_projected_area, "solid_angle_per_projected_area">>;
+#define VOCABULARY_BASE(name) named_dimension<dim::name, #name>,
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) named_dimension<dim::name, #name>,
+#include "safegi/typed/vocabulary.def"
+    named_dimension<no_dimension, "">>;
 
 template <class D, class Entry>
 constexpr void append_if_named(text_buffer&, Entry) {}

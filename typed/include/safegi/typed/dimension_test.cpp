@@ -35,6 +35,16 @@ static_assert(std::is_same_v<dim::product<dim::radiance, dim::brdf, dim::proj, d
 // ...and without the cosine it is not.
 static_assert(!std::is_same_v<dim::product<dim::radiance, dim::brdf, dim::inverse<dim::pdf_solid_angle>>,
                               dim::radiance>);
+// vocabulary.def gives dimensions by exponents; these are the formulas they stand for.
+static_assert(std::is_same_v<dim::velocity, dim::quotient<dim::length, dim::time>>);
+static_assert(std::is_same_v<dim::intensity, dim::quotient<dim::power, dim::solid_angle>>);
+static_assert(std::is_same_v<dim::projected_solid_angle, dim::product<dim::solid_angle, dim::proj>>);
+static_assert(std::is_same_v<dim::brdf, dim::inverse<dim::projected_solid_angle>>);
+static_assert(std::is_same_v<dim::solid_angle_per_projected_area,
+                             dim::quotient<dim::solid_angle, dim::product<dim::area, dim::proj>>>);
+static_assert(std::is_same_v<dim::radiant_exitance, dim::irradiance>);
+static_assert(std::is_same_v<dim::inv_length, dim::pdf_length>);
+static_assert(std::is_same_v<dim::inv_area, dim::pdf_area>);
 static_assert(std::is_same_v<dim::root<dim::area, 2>, dim::length>);
 static_assert(dim::has_root<dim::pow<dim::radiance, 2>, 2>);
 static_assert(!dim::has_root<dim::volume, 2>);

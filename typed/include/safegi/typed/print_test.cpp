@@ -41,9 +41,14 @@ TEST(Print, ProjHasNoUnitButShowsInTheName) {
   EXPECT_EQ(sg::to_string(0.5f * units::proj), "0.5 (proj)");
 }
 
-TEST(Print, UnnamedDimensionsShowTheirFormula) {
+TEST(Print, EveryDimensionOfTheVocabularyByItsName) {
   const auto speed = (3.0f * units::metre) / (2.0f * units::second);
-  EXPECT_EQ(sg::to_string(speed), "1.5 m·s⁻¹ (length*time^-1)");
+  EXPECT_EQ(sg::to_string(speed), "1.5 m·s⁻¹ (velocity)");  // the shaders' velocity, from vocabulary.def
+}
+
+TEST(Print, UnnamedDimensionsShowTheirFormula) {
+  const auto acceleration = (3.0f * units::metre) / (2.0f * units::second * units::second);
+  EXPECT_EQ(sg::to_string(acceleration), "1.5 m·s⁻² (length*time^-2)");
   EXPECT_EQ(sg::to_string(1.0f * units::joule * units::joule / units::second), "1 J²·s⁻¹ (energy^2*time^-1)");
   EXPECT_EQ(sg::to_string(1.0f / units::watt), "1 W⁻¹ (energy^-1*time)");
   const quantity<dim::product<pixel, dim::length>> user = dimension_cast<dim::product<pixel, dim::length>>(2.0f);

@@ -61,43 +61,15 @@ constexpr rep_of<Q> in(Q q, basic_unit<D> u) {
   return raw(q) / rep_of<Q>(u.factor);
 }
 
+/// The vocabulary's units (vocabulary.def, the same as shaders' and scene files'), in
+/// both spellings where there are two: units::meter and units::metre are one unit.
+/// units::proj, the projected-cosine factor, has no physical unit; it makes radiance
+/// writable: watt / (square_metre * steradian * proj).
 namespace units {
-// length (reference: metre)
-inline constexpr unit<dim::length> metre{1.0};
-inline constexpr unit<dim::length> kilometre{1e3};
-inline constexpr unit<dim::length> centimetre{1e-2};
-inline constexpr unit<dim::length> millimetre{1e-3};
-inline constexpr unit<dim::length> micrometre{1e-6};
-inline constexpr unit<dim::length> nanometre{1e-9};
-inline constexpr unit<dim::length> inch{0.0254};
-inline constexpr unit<dim::length> foot{0.3048};
-inline constexpr unit<dim::area> square_metre{1.0};
-inline constexpr unit<dim::area> square_millimetre{1e-6};
-// time (reference: second)
-inline constexpr unit<dim::time> second{1.0};
-inline constexpr unit<dim::time> millisecond{1e-3};
-inline constexpr unit<dim::time> microsecond{1e-6};
-inline constexpr unit<dim::time> nanosecond{1e-9};
-inline constexpr unit<dim::time> minute{60.0};
-inline constexpr unit<dim::time> hour{3600.0};
-// angles (reference: radian, steradian)
-inline constexpr unit<dim::angle> radian{1.0};
-inline constexpr unit<dim::angle> degree{3.14159265358979323846 / 180.0};
-inline constexpr unit<dim::solid_angle> steradian{1.0};
-/// The projected-cosine factor has no physical unit; this one makes radiance writable:
-/// watt / (square_metre * steradian * proj).
-inline constexpr unit<dim::proj> proj{1.0};
-// energy and power (reference: joule, watt)
-inline constexpr unit<dim::energy> joule{1.0};
-inline constexpr unit<dim::energy> kilojoule{1e3};
-inline constexpr unit<dim::energy> millijoule{1e-3};
-inline constexpr unit<dim::power> watt{1.0};
-inline constexpr unit<dim::power> milliwatt{1e-3};
-inline constexpr unit<dim::power> kilowatt{1e3};
-// radiometry
-inline constexpr unit<dim::irradiance> watt_per_square_metre{1.0};
-inline constexpr unit<dim::intensity> watt_per_steradian{1.0};
-inline constexpr unit<dim::radiance> radiance_unit{1.0};  // W / (m^2 sr proj)
+#define VOCABULARY_UNIT(name, symbol, dimension, scale) inline constexpr unit<dim::dimension> name{scale};
+#define VOCABULARY_UNIT_ALIAS(alias, of) inline constexpr auto alias = of;
+#define VOCABULARY_CXX_UNIT(name, dimension, scale) inline constexpr unit<dim::dimension> name{scale};
+#include "safegi/typed/vocabulary.def"
 }  // namespace units
 
 }  // namespace SAFEGI_MODE_NAMESPACE

@@ -15,6 +15,18 @@ static_assert(std::is_same_v<decltype(1.0f * units::watt / (units::square_metre 
 static_assert(std::is_same_v<decltype(units::joule / units::second), unit<dim::power>>);
 static_assert(std::is_same_v<decltype(pow<2>(units::metre)), unit<dim::area>>);
 
+// Both spellings of a unit (vocabulary.def) are one unit, as in shaders.
+static_assert(std::is_same_v<decltype(units::meter), decltype(units::metre)>);
+static_assert(units::meter.factor == units::metre.factor && units::centimeter.factor == units::centimetre.factor);
+static_assert(units::watt_per_square_meter.factor == units::watt_per_square_metre.factor);
+
+TEST(Units, TheVocabularysUnitsWithTheirScales) {
+  EXPECT_DOUBLE_EQ(raw(1.0 * units::hour), 3600.0);
+  EXPECT_DOUBLE_EQ(raw(1.0 * units::foot), 0.3048);
+  EXPECT_DOUBLE_EQ(raw(180.0 * units::degree), 3.14159265358979323846);
+  EXPECT_DOUBLE_EQ(raw(1.0 * units::square_millimeter), 1e-6);
+}
+
 TEST(Units, ValuesAreStoredInReferenceUnits) {
   EXPECT_FLOAT_EQ(raw(5.0f * units::millimetre), 0.005f);
   EXPECT_FLOAT_EQ(raw(2.0f * units::kilometre), 2000.0f);

@@ -1,0 +1,53 @@
+// safegi/prelude.sgl and vocabulary.def (through DimensionRegistry::rendering_prelude(),
+// which is made from it) declare the same vocabulary: every base, dimension and unit, in
+// the same order, with the same value. A name added to one and not the other fails here.
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace safegi::testing {
+namespace {
+
+std::vector<std::string> listed(const std::vector<std::string>& names) { return names; }
+
+TEST(Prelude, DeclaresTheVocabularyOfTheTypedLibraryAndTheRenderer) {
+  auto c = check_source("void main() {}");
+  ASSERT_EQ(c->rendered(), "");
+  const DimensionRegistry& shader = c->result.registry;
+  const DimensionRegistry vocabulary = DimensionRegistry::rendering_prelude();
+
+  EXPECT_EQ(listed(shader.bases()), listed(vocabulary.bases()));
+
+  std::vector<std::string> shader_derived, vocabulary_derived;
+  for (const DerivedDimension& d : shader.derived()) shader_derived.push_back(d.name + " = " + shader.format_product(d.value));
+  for (const DerivedDimension& d : vocabulary.derived())
+    vocabulary_derived.push_back(d.name + " = " + vocabulary.format_product(d.value));
+  EXPECT_EQ(shader_derived, vocabulary_derived);
+
+  std::vector<std::string> shader_units, vocabulary_units;
+  auto describe = [](const DimensionRegistry& r, const Unit& u) {
+    return u.name + " : " + r.format_product(u.dimension) + " = " + DimensionRegistry::format_number(u.scale);
+  };
+  for (const Unit& u : shader.units()) shader_units.push_back(describe(shader, u));
+  for (const Unit& u : vocabulary.units()) vocabulary_units.push_back(describe(vocabulary, u));
+  EXPECT_EQ(shader_units, vocabulary_units);
+}
+
+TEST(Prelude, BothSpellingsOfAUnitAreOneUnit) {
+  auto c = check_source(
+      "uniform float<length in centimetre> a;\n"
+      "void main() { float<length in centimeter> b = a; float<length> m = 1.0 * metre + 2.0 * meter; }");
+  EXPECT_EQ(c->rendered(), "");
+  EXPECT_EQ(declared_type(*c, "a"), "float<length in centimeter>");
+}
+
+TEST(Prelude, AUnitRedeclaredAsItIsTakesTheDeclarationAndAnotherScaleIsAnError) {
+  // Shaders written before the prelude gained `hour` declared it themselves.
+  EXPECT_EQ(check_source("unit hour : time = 3600.0;\nvoid main() {}")->rendered(), "");
+  EXPECT_EQ(check_source("unit hour : time = 3000.0;\nvoid main() {}")->messages(),
+            (std::vector<std::string>{"error: unit 'hour' is redeclared with scale 3000.0; it was 3600.0"}));
+}
+
+}  // namespace
+}  // namespace safegi::testing
