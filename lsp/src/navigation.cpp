@@ -1,6 +1,11 @@
 #include "navigation.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <string_view>
+#include <vector>
+
+#include <safegi/diagnostics/codes.hpp>
 
 #include <safegi/typechecker/checker.hpp>
 
@@ -78,12 +83,10 @@ std::string dimension_equation(const DimSlot& dim, const DimensionRegistry& regi
   return out;
 }
 
-json hover(const Analysis& analysis, const Locator& locator, std::size_t offset, HoverStyle style) {
-  const StageAnalysis* stage = analysis.stage();
-  if (!stage) return nullptr;
-  const SymbolOccurrence* o = symbol_at(*stage, locator, offset);
-  if (!o) return nullptr;
-  const DimensionRegistry& registry = stage->checked.registry;
+namespace {
+
+// What a name is: its declaration as code, its physical meaning in words, its dimension's equation.
+std::string symbol_hover_text(const SymbolOccurrence* o, const DimensionRegistry& registry, HoverStyle style) {
   std::string code, words, equation;
   switch (o->kind) {
     case SymbolKind::variable:
@@ -139,8 +142,40 @@ json hover(const Analysis& analysis, const Locator& locator, std::size_t offset,
     if (!words.empty()) value += "\n" + words;
     if (!equation.empty()) value += "\n" + equation;
   }
+  return value;
+}
+
+// `safeglslc --explain` of every diagnostic code reported where the cursor is, once each.
+std::string explanations_at(const Analysis& analysis, const Locator& locator, std::size_t offset, SourceRange& range) {
+  std::string text;
+  std::vector<std::string_view> seen;
+  for (const Diagnostic& d : analysis.result.diagnostics) {
+    const SourceRange shown = locator.in_document_range(d.range);
+    if (d.code.empty() || !shown.valid() || !locator.in_document(shown.begin.file)) continue;
+    if (offset < shown.begin.offset || offset > shown.end.offset) continue;
+    if (std::find(seen.begin(), seen.end(), d.code) != seen.end()) continue;
+    seen.push_back(d.code);
+    std::string explanation = explain_diagnostic_code(d.code);
+    if (explanation.empty()) continue;
+    while (!explanation.empty() && explanation.back() == '\n') explanation.pop_back();
+    text += (text.empty() ? "" : "\n\n") + explanation;
+    if (!range.valid()) range = shown;
+  }
+  return text;
+}
+
+}  // namespace
+
+json hover(const Analysis& analysis, const Locator& locator, std::size_t offset, HoverStyle style) {
+  const StageAnalysis* stage = analysis.stage();
+  const SymbolOccurrence* o = stage ? symbol_at(*stage, locator, offset) : nullptr;
+  std::string value = o ? symbol_hover_text(o, stage->checked.registry, style) : "";
+  SourceRange range = o ? o->range : SourceRange{};
+  const std::string explanations = explanations_at(analysis, locator, offset, range);
+  if (!explanations.empty()) value += (value.empty() ? "" : style.markdown ? "\n\n---\n\n" : "\n\n") + explanations;
+  if (value.empty()) return nullptr;
   return {{"contents", {{"kind", style.markdown ? "markdown" : "plaintext"}, {"value", value}}},
-          {"range", locator.range(o->range)}};
+          {"range", locator.range(range)}};
 }
 
 json definition(const Analysis& analysis, const Locator& locator, std::size_t offset) {

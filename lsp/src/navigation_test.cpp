@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <safegi/diagnostics/codes.hpp>
+
 #include "in_process.hpp"
 
 namespace safegi::lsp {
@@ -135,6 +137,23 @@ TEST_F(Navigation, DefinitionInTheDocumentAndInThePrelude) {
   // The #include line goes to the file.
   EXPECT_EQ(definition(1, 12)["uri"], "file://" + std::string(SAFEGI_SOURCE_PRELUDE));
   EXPECT_EQ(definition(11, 8), nullptr);  // `spectrum` is a type word, not a declared name
+}
+
+TEST_F(Navigation, HoverOnADiagnosticExplainsItsCodeAsSafeglslcExplainDoes) {
+  const std::string uri = "file:///tmp/nav/bug.sgl.frag";
+  const json opened = s->open(uri, "#version 330 core\n#include <safegi/prelude.sgl>\n"
+                                   "void main() { float<length> d = 2.0 * second; }\n");
+  ASSERT_EQ(opened["diagnostics"].size(), 1u);
+  ASSERT_EQ(opened["diagnostics"][0]["code"], "E-DIMENSION-MISMATCH");
+  std::string explanation = explain_diagnostic_code("E-DIMENSION-MISMATCH");
+  explanation.pop_back();  // its last newline
+  // On a name inside the diagnostic's range: the name, then the explanation.
+  const json on_name = s->request("textDocument/hover", at(uri, 2, 40))["result"];
+  EXPECT_EQ(on_name["contents"]["value"], "```glsl\nunit second : time = 1\n```\n1 second = 1 s\n\n---\n\n" + explanation);
+  // Where no name is: the explanation alone, over the diagnostic's range.
+  const json on_operator = s->request("textDocument/hover", at(uri, 2, 37))["result"];
+  EXPECT_EQ(on_operator["contents"]["value"], explanation);
+  EXPECT_EQ(on_operator["range"], opened["diagnostics"][0]["range"]);
 }
 
 TEST(NavigationWithoutAPreludeFile, ThePreludeHasNoLocation) {
