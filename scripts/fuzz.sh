@@ -55,7 +55,7 @@ artifacts="$build/fuzz-artifacts/$target"
 mkdir -p "$corpus" "$artifacts"
 # Seeds are copied, so libFuzzer may add to the corpus directory.
 if [[ "$target" == compiler ]]; then
-  find "$root/examples" "$root/testsuite/golden/cases" "$root/runtime_gl/testdata" "$root/compiler/testdata" \
+  find "$root/examples" "$root/testsuite/golden/cases" "$root/symbol_table/testdata" "$root/compiler/testdata" \
     -type f \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' -o -name '*.tesc' \
     -o -name '*.tese' -o -name '*.sgl' -o -name '*.glsl' \) -exec cp -t "$corpus" {} + 2>/dev/null || true
 elif [[ "$target" == lsp ]]; then

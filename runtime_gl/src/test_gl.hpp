@@ -11,7 +11,7 @@
 #include "safegi/runtime_gl/context.hpp"
 #include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/program.hpp"
-#include "test_support.hpp"
+#include "read_testdata.hpp"
 
 namespace safegi::gl::testing {
 

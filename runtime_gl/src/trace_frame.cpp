@@ -10,7 +10,7 @@
 
 #include "safegi/runtime_gl/gl.hpp"
 #include "safegi/runtime_gl/runtime_gl.hpp"
-#include "test_support.hpp"
+#include "read_testdata.hpp"
 #include "typed_emission_scene.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "safegi/symbol_table/error.hpp"
-#include "test_support.hpp"
+#include "read_testdata.hpp"
 
 namespace safegi::gl {
 namespace {

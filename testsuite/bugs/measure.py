@@ -27,7 +27,7 @@ HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 BEGIN, END = "<!-- catalogue-measure:begin -->", "<!-- catalogue-measure:end -->"
 # Annotated shaders outside the catalogue that are meant to check clean.
-OTHER_CORRECT = ["examples/shaders", "preview/shaders", "compiler/testdata", "runtime_gl/testdata"]
+OTHER_CORRECT = ["examples/shaders", "preview/shaders", "compiler/testdata", "symbol_table/testdata"]
 STAGES = ("vert", "frag", "geom", "comp", "tesc", "tese")
 
 

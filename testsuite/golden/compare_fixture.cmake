@@ -1,6 +1,7 @@
-# runtime_gl's tests read an example program's GLSL and symbol table from
-# runtime_gl/testdata; they must be what safeglslc writes for the annotated
-# sources beside them, so the runtime is tested against the real compiler.
+# The symbol-table contract's example program (symbol_table/testdata), read by
+# symbol_table's and runtime_gl's tests: its GLSL and symbol tables must be what
+# safeglslc writes for the annotated sources beside them, so the hosts are tested
+# against the real compiler.
 #   cmake -DSAFEGLSLC=<exe> -DTESTDATA=<dir> -DOUT=<scratch dir> -P compare_fixture.cmake
 file(MAKE_DIRECTORY ${OUT})
 function(compile_and_compare)
