@@ -7,6 +7,9 @@
 #include <sstream>
 #include <string>
 
+#include <safegi/diagnostics/codes.hpp>
+#include <safegi/lexer/extensions.hpp>
+
 #include "preprocessor_impl.hpp"
 
 namespace safegi::detail {
@@ -277,6 +280,14 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
     } else {
       diagnostics_.report(Diagnostic::warning(line[0].range, std::move(message)));
     }
+  } else if (name != "all" && behavior != "disable" && !find_extension(name) && !glslang_knows_extension(name)) {
+    // A typo or a name no compiler has: glslangValidator warns (refuses it with require); the
+    // checker goes on, so the warning is what says the line turned nothing on.
+    const std::string shown = name.size() > 64 ? std::string(name.substr(0, 60)) + "..." : std::string(name);
+    Diagnostic d = Diagnostic::warning(line[0].range, "unknown extension '" + shown + "': it turns nothing on")
+                       .with_code(code::W_UNKNOWN_EXTENSION);
+    if (behavior == "require") d.with_hint("glslangValidator refuses a shader that requires an extension it does not know");
+    diagnostics_.report(std::move(d));
   }
   unit_.extensions.push_back({std::string(name), std::string(behavior), directive});
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <utility>
 
 #include <safegi/lexer/token.hpp>
@@ -267,6 +268,15 @@ const FeatureGate& gate(LanguageFeature feature) {
 }  // namespace
 
 std::span<const ExtensionInfo> known_extensions() { return kExtensions; }
+
+bool glslang_knows_extension(std::string_view name) {
+  static constexpr std::string_view kGlslangExtensions[] = {
+#define GLSLANG_EXTENSION(name) #name,
+#include "glslang_extensions.def"
+#undef GLSLANG_EXTENSION
+  };
+  return std::binary_search(std::begin(kGlslangExtensions), std::end(kGlslangExtensions), name);
+}
 
 const ExtensionInfo* find_extension(std::string_view name) {
   auto it = std::lower_bound(kExtensions.begin(), kExtensions.end(), name,

@@ -324,12 +324,34 @@ TEST_F(Directives, KnownExtensionsArePredefinedByDefault) {
                    "#ifdef GL_EXT_control_flow_attributes\nno\n#endif\n"),
             "yes");
   // Not strict by default: an extension the front end does not know is
-  // accepted without a macro (the type checker judges its built-ins).
+  // accepted without a macro (the type checker judges its built-ins), with a
+  // warning when glslang does not know it either.
   run("#extension GL_FOO_bar : require\n#undef GL_ARB_gpu_shader5\n");
   EXPECT_EQ(errors(),
+            "main.glsl:1:12: warning: unknown extension 'GL_FOO_bar': it turns nothing on [W-UNKNOWN-EXTENSION]\n"
+            "#extension GL_FOO_bar : require\n"
+            "           ^~~~~~~~~~\n"
+            "help: glslangValidator refuses a shader that requires an extension it does not know\n"
             "main.glsl:2:8: error: cannot undefine predefined macro 'GL_ARB_gpu_shader5'\n"
             "#undef GL_ARB_gpu_shader5\n"
             "       ^~~~~~~~~~~~~~~~~~\n");
+}
+
+TEST_F(Directives, AnExtensionNeitherGlslangNorWeKnowIsWarnedAbout) {
+  // glslang knows GL_NV_cooperative_matrix (this front end does not parse it): no warning,
+  // as glslangValidator gives none; a misspelt name gets glslangValidator's warning.
+  run("#extension GL_NV_cooperative_matrix : enable\n#extension GL_EXT_ray_tracing : require\n"
+      "#extension GL_EXT_raytracing : require\n#extension GL_FOO_bar : enable\n#extension GL_FOO_bar : disable\n");
+  EXPECT_EQ(errors(),
+            "main.glsl:3:12: warning: unknown extension 'GL_EXT_raytracing': it turns nothing on [W-UNKNOWN-EXTENSION]\n"
+            "#extension GL_EXT_raytracing : require\n"
+            "           ^~~~~~~~~~~~~~~~~\n"
+            "help: glslangValidator refuses a shader that requires an extension it does not know\n"
+            "main.glsl:4:12: warning: unknown extension 'GL_FOO_bar': it turns nothing on [W-UNKNOWN-EXTENSION]\n"
+            "#extension GL_FOO_bar : enable\n"
+            "           ^~~~~~~~~~\n");
+  EXPECT_TRUE(glslang_knows_extension("GL_KHR_shader_subgroup_basic"));
+  EXPECT_FALSE(glslang_knows_extension("GL_KHR_shader_subgroup_basics"));
 }
 
 TEST_F(Directives, ExtensionsEnableKeywordsAtOlderVersions) {

@@ -30,6 +30,10 @@ inline constexpr std::string_view kVulkanGlslExtension = "GL_KHR_vulkan_glsl";
 // Sorted by name.
 std::span<const ExtensionInfo> known_extensions();
 const ExtensionInfo* find_extension(std::string_view name);
+// Whether glslang knows an extension of this name (glslang_extensions.def): one
+// neither it nor known_extensions() knows is what glslangValidator warns about
+// (and refuses with `require`).
+bool glslang_knows_extension(std::string_view name);
 // The names of known_extensions(): PreprocessorOptions::extension_macros' default.
 std::vector<std::string> default_extension_macros();
 
