@@ -11,6 +11,7 @@
 
 #include "safegi/compiler/compile.hpp"
 #include "safegi/compiler/spirv.hpp"
+#include "safegi/symbol_table/spirv_interface.hpp"
 
 namespace safegi {
 namespace {
@@ -19,17 +20,6 @@ namespace {
 constexpr std::uint32_t kOpName = 5, kOpMemberName = 6, kOpTypeStruct = 30, kOpDecorate = 71, kOpMemberDecorate = 72;
 constexpr std::uint32_t kSpecId = 1, kArrayStride = 6, kMatrixStride = 7, kRowMajor = 4, kBinding = 33,
                         kDescriptorSet = 34, kOffset = 35;
-
-std::string literal_string(std::span<const std::uint32_t> words) {
-  std::string text;
-  for (std::uint32_t word : words)
-    for (int shift = 0; shift < 32; shift += 8) {
-      const char c = static_cast<char>((word >> shift) & 0xff);
-      if (c == '\0') return text;
-      text += c;
-    }
-  return text;
-}
 
 // The decorations of a module, by the names glslang keeps (-V keeps OpName).
 struct Decorations {
@@ -74,17 +64,14 @@ struct Decorations {
 
 Decorations decorations_of(const std::vector<std::uint32_t>& words) {
   Decorations d;
-  for (std::size_t at = 5; at < words.size();) {
-    const std::uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
-    const std::span<const std::uint32_t> operands(words.data() + at + 1, count - 1);
-    if (opcode == kOpName) d.names[operands[0]] = literal_string(operands.subspan(1));
+  gl::for_each_spirv_instruction(words, "module", [&d](std::uint32_t opcode, std::span<const std::uint32_t> operands) {
+    if (opcode == kOpName) d.names[operands[0]] = gl::spirv_literal_string(operands.subspan(1));
     if (opcode == kOpTypeStruct) d.member_types[operands[0]].assign(operands.begin() + 1, operands.end());
-    if (opcode == kOpMemberName) d.member_names[{operands[0], operands[1]}] = literal_string(operands.subspan(2));
+    if (opcode == kOpMemberName) d.member_names[{operands[0], operands[1]}] = gl::spirv_literal_string(operands.subspan(2));
     if (opcode == kOpDecorate) d.on[{operands[0], operands[1]}] = operands.size() > 2 ? operands[2] : 1;
     if (opcode == kOpMemberDecorate)
       d.on_member[{operands[0], operands[1], operands[2]}] = operands.size() > 3 ? operands[3] : 1;
-    at += count;
-  }
+  });
   return d;
 }
 

@@ -22,4 +22,12 @@ struct SpirvInterface {
 // instruction); `name` labels the message.
 SpirvInterface read_spirv_interface(std::span<const std::uint32_t> words, const std::string& name);
 
+// The walk read_spirv_interface makes, for readers of other instructions (tests
+// that compare a symbol table with a module's decorations): each instruction's
+// opcode and operands (its words after the first), in order. Throws as above.
+void for_each_spirv_instruction(std::span<const std::uint32_t> words, const std::string& name,
+                                const std::function<void(std::uint32_t opcode, std::span<const std::uint32_t> operands)>& visit);
+// A literal string operand: UTF-8 bytes packed little-endian into words, NUL-terminated.
+std::string spirv_literal_string(std::span<const std::uint32_t> words);
+
 }  // namespace safegi::gl
