@@ -16,6 +16,7 @@
 # sets, bindings, offsets, strides and specialization-constant ids
 # (check_vulkan_layout.py). A crash is an exit status above 2, a hang 20 s.
 # SAFEGI_VULKAN_CORPUS_VERBOSE=1 prints safeglslc's first error per failure.
+# Shaders are selected and checked one per core (SAFEGI_JOBS to change it).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=$root/build
@@ -34,7 +35,7 @@ tmp=${keep:-$(mktemp -d)}
 mkdir -p "$tmp"
 stages='vert|tesc|tese|geom|frag|comp|rgen|rint|rahit|rchit|rmiss|rcall|mesh|task'
 
-: > "$tmp/selected.list"
+: > "$tmp/candidates.list"
 for spec in "$@"; do
   git_dir=${spec%%:*}
   sub=; [[ $spec == *:* ]] && sub=${spec#*:}
@@ -48,36 +49,52 @@ for spec in "$@"; do
       git --git-dir="$git_dir" show "HEAD:$f" > "$dest/$f" 2>/dev/null || rm -f "$dest/$f"
     done
   echo "corpus $name @ $(git --git-dir="$git_dir" rev-parse --short HEAD)${sub:+ ($sub)}"
-  find "$dest" -type f | grep -E "\.($stages)$" | sort | while read -r f; do
-    if timeout 20 glslangValidator -V --target-env vulkan1.2 -o "$tmp/ref.spv" "$f" >/dev/null 2>&1; then
-      echo "$f" >> "$tmp/selected.list"
-    fi
-  done
+  find "$dest" -type f | grep -E "\.($stages)$" | sort >> "$tmp/candidates.list"
 done
 
-total=0 compiled=0 valid=0 identical=0 crashes=0 layouts=0
-: > "$tmp/failures.txt"
-: > "$tmp/layout-failures.txt"
-while read -r f; do
-  total=$((total + 1))
-  glslangValidator -V --target-env vulkan1.2 -o "$tmp/ref.spv" "$f" >/dev/null 2>&1
-  timeout 20 "$safeglslc" -V --target-env vulkan1.2 -o "$tmp/ours.spv" --symbols "$tmp/ours.json" "$f" \
-      2> "$tmp/err.txt" >/dev/null
+# One worker per core; each file writes only its own results (the lists are sorted after).
+jobs=${SAFEGI_JOBS:-$(nproc)}
+select_one() {  # select_one FILE: glslangValidator accepts it
+  timeout 20 glslangValidator -V --target-env vulkan1.2 -o /dev/null "$1" >/dev/null 2>&1 && echo "$1"
+}
+export -f select_one
+xargs -d '\n' -P "$jobs" -I{} bash -c 'select_one "$1"' _ {} < "$tmp/candidates.list" | sort > "$tmp/selected.list"
+
+# Per shader one line "VERDICTS<TAB>file" (compiled, valid, identical, layout: 1 or 0; crash),
+# a first error for a failure and the layout mismatches, each in files of its own.
+check_one() {  # check_one FILE
+  local f=$1 work rc
+  work=$(mktemp -d "$tmp/work.XXXXXX")
+  glslangValidator -V --target-env vulkan1.2 -o "$work/ref.spv" "$f" >/dev/null 2>&1
+  timeout 20 "$safeglslc" -V --target-env vulkan1.2 -o "$work/ours.spv" --symbols "$work/ours.json" "$f" \
+      2> "$work/err.txt" >/dev/null
   rc=$?
   if [[ $rc -eq 0 ]]; then
-    compiled=$((compiled + 1))
-    spirv-val --target-env vulkan1.2 "$tmp/ours.spv" >/dev/null 2>&1 && valid=$((valid + 1))
-    cmp -s "$tmp/ref.spv" "$tmp/ours.spv" && identical=$((identical + 1))
-    if python3 "$root/testsuite/corpus/check_vulkan_layout.py" "$tmp/ours.json" "$tmp/ours.spv" > "$tmp/layout.txt"; then
-      layouts=$((layouts + 1))
+    local valid=0 identical=0 layout=0
+    spirv-val --target-env vulkan1.2 "$work/ours.spv" >/dev/null 2>&1 && valid=1
+    cmp -s "$work/ref.spv" "$work/ours.spv" && identical=1
+    if python3 "$root/testsuite/corpus/check_vulkan_layout.py" "$work/ours.json" "$work/ours.spv" > "$work/layout.txt"; then
+      layout=1
     else
-      sed "s#^#${f#$tmp/}: #" "$tmp/layout.txt" >> "$tmp/layout-failures.txt"
+      sed "s#^#${f#$tmp/}: #" "$work/layout.txt" > "$work.layout"
     fi
+    printf '1 %d %d %d 0\t%s\n' "$valid" "$identical" "$layout" "$f"
   else
-    [[ $rc -gt 2 ]] && crashes=$((crashes + 1))
-    echo "${f#$tmp/} (exit $rc): $(grep -m1 -E 'error' "$tmp/err.txt" | sed "s#$tmp/##g")" >> "$tmp/failures.txt"
+    local crash=0
+    [[ $rc -gt 2 ]] && crash=1
+    echo "${f#$tmp/} (exit $rc): $(grep -m1 -E 'error' "$work/err.txt" | sed "s#$tmp/##g")" > "$work.failure"
+    printf '0 0 0 0 %d\t%s\n' "$crash" "$f"
   fi
-done < "$tmp/selected.list"
+  rm -rf "$work"
+}
+export -f check_one
+export tmp root safeglslc
+xargs -d '\n' -P "$jobs" -I{} bash -c 'check_one "$1"' _ {} < "$tmp/selected.list" > "$tmp/verdicts.txt"
+cat "$tmp"/work.*.failure 2>/dev/null | sort > "$tmp/failures.txt"
+cat "$tmp"/work.*.layout 2>/dev/null | sort > "$tmp/layout-failures.txt"
+rm -f "$tmp"/work.*.failure "$tmp"/work.*.layout
+read -r total compiled valid identical layouts crashes < <(awk -F'\t' '{ split($1, v, " ");
+  n++; c += v[1]; va += v[2]; id += v[3]; l += v[4]; cr += v[5] } END { print n + 0, c + 0, va + 0, id + 0, l + 0, cr + 0 }' "$tmp/verdicts.txt")
 
 pct() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f %%", b ? 100 * a / b : 0 }'; }
 echo "glslang-accepted shaders: $total"
