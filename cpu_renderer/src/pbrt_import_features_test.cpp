@@ -14,6 +14,8 @@ namespace {
 
 using namespace pbrt_test;
 
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
 // A mesh's area and its area-weighted winding normal (world space, metres).
 struct MeshMeasure {
   double area = 0;
@@ -101,6 +103,56 @@ TEST(PbrtImport, QuadricsAreMeshesOfTheirArea) {
 
 // pbrt-v3's distant light: irradiance L × scale from the direction from − to,
 // mapped as a vector by the transform at the directive.
+// pbrt-v3's NURBS become the mesh pbrt-v3 dices them into (30 × 30 vertices): an order-2
+// patch is its bilinear quadrilateral, vertex for vertex; a rational quadratic with the
+// weight √2/2 on its middle control point is an exact quarter circle, so every vertex of
+// that patch extruded along z lies on the unit cylinder.
+TEST(PbrtImport, NurbsAreDicedAsPbrtDoes) {
+  auto shape_of = [](const std::string& text) {
+    PbrtScene scene = import(world(text));
+    EXPECT_EQ(scene.scene.shapes.size(), 1u) << text;
+    return scene.scene.shapes.at(0);
+  };
+  const std::string patch = "Shape \"nurbs\" \"integer nu\" 2 \"integer nv\" 2 \"integer uorder\" 2 \"integer vorder\" 2 "
+                            "\"float uknots\" [0 0 1 1] \"float vknots\" [0 0 1 1] ";
+  Shape square = shape_of("AreaLightSource \"diffuse\"\n" + patch + "\"point P\" [0 0 0  2 0 0  0 1 0  2 1 0]");
+  ASSERT_EQ(square.positions.size(), 900u);
+  EXPECT_EQ(square.indices.size(), 6u * 29 * 29);
+  // (x is mirrored: pbrt-v3's left-handed world becomes ours, see Handedness.)
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) {
+      const glm::vec3 p = sg::raw(square.positions[j * 30 + i]);
+      EXPECT_NEAR(-p.x, 2.0 * i / 29, 1e-6);
+      EXPECT_NEAR(p.y, 1.0 * j / 29, 1e-6);
+      EXPECT_EQ(p.z, 0.0f);
+      EXPECT_NEAR(square.uvs[j * 30 + i].u, i / 29.0, 1e-6);
+    }
+  const MeshMeasure flat = measure(square);
+  EXPECT_NEAR(flat.area, 2.0, 1e-5);
+  EXPECT_NEAR(flat.normal_sum.z, flat.area, 1e-9);  // an emitter on pbrt's side, dp/du × dp/dv = +z
+
+  const std::string w = std::to_string(std::sqrt(0.5));
+  Shape arc = shape_of("Shape \"nurbs\" \"integer nu\" 3 \"integer nv\" 2 \"integer uorder\" 3 \"integer vorder\" 2 "
+                       "\"float uknots\" [0 0 0 1 1 1] \"float vknots\" [0 0 1 1] \"float Pw\" [1 0 0 1  " + w + " " + w +
+                       " 0 " + w + "  0 1 0 1  1 0 1 1  " + w + " " + w + " " + w + " " + w + "  0 1 1 1]");
+  for (const PointObject& point : arc.positions) {
+    const glm::vec3 p = sg::raw(point);
+    EXPECT_NEAR(std::hypot(p.x, p.y), 1.0, 2e-6);
+    EXPECT_LE(p.x, 1e-6f);  // mirrored
+    EXPECT_GE(p.y, -1e-6f);
+  }
+  // The quarter cylinder's area π/2, as a polygon of 29 chords: within 1e-3.
+  EXPECT_NEAR(measure(arc).area, std::numbers::pi / 2, 1e-3);
+
+  EXPECT_EQ(first_line(import_error(world(patch + "\"point P\" [0 0 0  1 0 0  0 1 0]"))),
+            "scene.pbrt:2:143: error: \"point P\" of Shape \"nurbs\" needs nu × nv = 4 points, found 9 numbers");
+  EXPECT_EQ(first_line(import_error(world("Shape \"nurbs\" \"integer nu\" 2 \"integer nv\" 2 \"integer uorder\" 2 "
+                                          "\"integer vorder\" 2 \"float uknots\" [0 0 1] \"float vknots\" [0 0 1 1]"))),
+            "scene.pbrt:2:7: error: Shape \"nurbs\": \"float uknots\" needs nu + uorder = 4 knots, found 3");
+  EXPECT_EQ(first_line(import_error(world(patch))),
+            "scene.pbrt:2:7: error: Shape \"nurbs\" needs \"point P\" or \"float Pw\" (its control points)");
+}
+
 TEST(PbrtImport, DistantLightArrivesFromFromMinusTo) {
   PbrtScene scene = import(world("Rotate 90 1 0 0\nLightSource \"distant\" \"point from\" [0 0 0] \"point to\" [0 0 -2] "
                                  "\"rgb L\" [2 1 0.5] \"rgb scale\" [1.5 1.5 1.5]"));
