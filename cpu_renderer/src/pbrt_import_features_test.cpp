@@ -153,6 +153,48 @@ TEST(PbrtImport, NurbsAreDicedAsPbrtDoes) {
             "scene.pbrt:2:7: error: Shape \"nurbs\" needs \"point P\" or \"float Pw\" (its control points)");
 }
 
+// ActiveTransform: a shape's transform at pbrt-v3's two TransformTimes becomes its poses at
+// shutter open and close (the camera's shutter is those times), which the renderer
+// interpolates as pbrt-v3's AnimatedTransform does. Every point is where pbrt-v3 puts it
+// at both times, through the mirroring of pbrt-v3's left-handed world in ours.
+TEST(PbrtImport, AnimatedTransformsMoveShapesBetweenShutterOpenAndClose) {
+  PbrtScene scene = import("TransformTimes 0 1\nCamera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 1\n" +
+                           world("AttributeBegin\nTranslate 0 0 5\nActiveTransform EndTime\nTranslate 2 0 0\nRotate 90 0 0 1\n"
+                                 "ActiveTransform All\nScale 2 2 2\n"
+                                 "Shape \"trianglemesh\" \"point P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [0 1 2]\n"
+                                 "Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n"
+                                 "Shape \"sphere\" \"float radius\" 1"));
+  ASSERT_EQ(scene.scene.shapes.size(), 3u);
+  EXPECT_EQ(sg::raw(scene.scene.camera.shutter_open), 0.0f);
+  EXPECT_EQ(sg::raw(scene.scene.camera.shutter_close), 1.0f);
+  const Shape& mesh = scene.scene.shapes[0];
+  ASSERT_TRUE(mesh.render_from_object_at_close.has_value());
+  // pbrt's object point (1, 0, 0): at the start (2, 0, 5); at the end rotated to (0, 2) and
+  // moved by 2 along x: (2, 2, 5). Ours mirror x.
+  const glm::vec3 open = sg::raw(mesh.render_from_object(mesh.positions[1]));
+  const glm::vec3 close = sg::raw((*mesh.render_from_object_at_close)(mesh.positions[1]));
+  EXPECT_NEAR(glm::distance(open, glm::vec3(-2, 0, 5)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::distance(close, glm::vec3(-2, 2, 5)), 0.0f, 1e-5f);
+  // Each pose is a rotation and a uniform scale (no mirroring left in it): what RigidMotion slerps.
+  const glm::mat3 linear(sg::raw(mesh.render_from_object).forward);
+  EXPECT_GT(glm::determinant(linear), 0.0f);
+  const Shape& sphere = scene.scene.shapes[1];
+  ASSERT_TRUE(sphere.render_from_object_at_close.has_value());
+  EXPECT_NEAR(glm::distance(sg::raw((*sphere.render_from_object_at_close)(sphere.center)), glm::vec3(-2, 0, 5)), 0.0f, 1e-5f);
+  EXPECT_NEAR(sg::raw(placed_radius(sphere.render_from_object, sphere.radius)), 1.0f, 1e-6f);
+  EXPECT_FALSE(scene.scene.shapes[2].render_from_object_at_close.has_value());  // after AttributeEnd: static
+
+  // An emitter that moves does not emit (pbrt-v3 drops its area light too), with a warning.
+  PbrtScene light = import(world("ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
+                                 "AreaLightSource \"diffuse\"\nShape \"sphere\""));
+  EXPECT_FALSE(light.scene.shapes.at(0).emission.has_value());
+  EXPECT_NE(light.warnings.find("an animated shape does not emit"), std::string::npos) << light.warnings;
+  // The shutter must be the TransformTimes.
+  EXPECT_NE(import_error("TransformTimes 0 2\n" + world("ActiveTransform EndTime\nTranslate 1 0 0\nShape \"sphere\""))
+                .find("is not supported\nShape \"sphere\""),
+            std::string::npos);
+}
+
 TEST(PbrtImport, DistantLightArrivesFromFromMinusTo) {
   PbrtScene scene = import(world("Rotate 90 1 0 0\nLightSource \"distant\" \"point from\" [0 0 0] \"point to\" [0 0 -2] "
                                  "\"rgb L\" [2 1 0.5] \"rgb scale\" [1.5 1.5 1.5]"));

@@ -152,9 +152,10 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "           ^~~~~~~~~~~~~~~~~~\n"
             "help: supported: \"path\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", \"mlt\", "
             "\"volpath\" (as path) and \"sppm\" (as photon)\n");
-  EXPECT_EQ(import_error("ActiveTransform EndTime\n"),
-            "scene.pbrt:1:17: error: animated transforms (ActiveTransform EndTime) are not supported\n"
-            "ActiveTransform EndTime\n                ^~~~~~~\n");
+  EXPECT_EQ(import_error("ActiveTransform EndTime\nTranslate 1 0 0\nCamera \"perspective\"\n" + world("")),
+            "scene.pbrt:3:1: error: an animated camera (a transform ActiveTransform changed at one time only) is not "
+            "supported\nCamera \"perspective\"\n^~~~~~\n"
+            "help: animate the objects instead: their motion blurs as pbrt-v3's does\n");
   EXPECT_EQ(import_error(world(used("Material \"matte\" \"rgb Kd\" [1.5 0 0]"))),
             "scene.pbrt:2:18: error: \"Kd\" of Material \"matte\" must lie in [0, 1] in every channel\n"
             "Material \"matte\" \"rgb Kd\" [1.5 0 0]\n                 ^~~~~~~~\n"

@@ -163,6 +163,7 @@ PbrtScene Importer::run(FileId main_file) {
     fail(at, block_ == Block::options ? "the scene ends before WorldBegin" : "the scene ends before WorldEnd",
          "a truncated file? pbrt-v3 renders at WorldEnd");
   }
+  if (motion_at_) set_shutter(*motion_at_);
   for (const Diagnostic& w : warnings_) result_.warnings += render_text(w, sources_);
   return std::move(result_);
 }
@@ -185,17 +186,59 @@ void Importer::directive(const Directive& d) {
 // Transforms (pbrt-v3: the current transform is post-multiplied)
 
 void Importer::transform_directive(const Directive& d) {
+  if (d.name == "CoordinateSystem") {
+    coordinate_systems_[d.strings[0]] = {state_.ctm, state_.ctm_at_end};
+  } else if (d.name == "CoordSysTransform") {
+    auto found = coordinate_systems_.find(d.strings[0]);
+    if (found == coordinate_systems_.end())
+      fail(d.string_ranges[0], "no coordinate system named \"" + d.strings[0] + "\"",
+           "CoordinateSystem names one; pbrt-v3 defines \"camera\" at Camera and \"world\" at WorldBegin");
+    // As pbrt-v3: both times' transforms, whichever are active.
+    state_.ctm = found->second.first;
+    state_.ctm_at_end = found->second.second;
+  } else if (d.name == "ActiveTransform") {
+    state_.start_active = d.strings[0] != "EndTime";
+    state_.end_active = d.strings[0] != "StartTime";
+  } else if (d.name == "MediumInterface") {
+    for (size_t i = 0; i < d.strings.size(); ++i)
+      if (!d.strings[i].empty()) fail(d.string_ranges[i], "participating media are not supported");
+  } else if (d.name == "MakeNamedMedium") {
+    fail(span(d), "participating media (MakeNamedMedium) are not supported");
+  } else {
+    if (state_.start_active) state_.ctm = transformed(d, state_.ctm);
+    if (state_.end_active) state_.ctm_at_end = transformed(d, state_.ctm_at_end);
+  }
+}
+
+// With motion: the camera's shutter, which must be the span the two transforms
+// are given at (pbrt-v3 interpolates between them, and so do we, but only
+// between shutter open and close).
+void Importer::set_shutter(SourceRange motion_at) {
+  if (shutter_open_ != transform_start_time_ || shutter_close_ != transform_end_time_)
+    fail(motion_at,
+         "an animated transform with TransformTimes " + std::to_string(transform_start_time_) + " " +
+             std::to_string(transform_end_time_) + " under a shutter open from " + std::to_string(shutter_open_) +
+             " to " + std::to_string(shutter_close_) + " is not supported",
+         "give the camera's \"float shutteropen\" and \"float shutterclose\" the TransformTimes");
+  if (!(shutter_close_ > shutter_open_)) return;  // the shutter never opens: no blur, as in pbrt-v3
+  Camera& camera = result_.scene.camera;
+  camera.shutter_open = sg::from_raw<Time>(static_cast<Real>(shutter_open_));
+  camera.shutter_close = sg::from_raw<Time>(static_cast<Real>(shutter_close_));
+}
+
+// `ctm` after one transform directive (pbrt-v3 post-multiplies).
+Matrix Importer::transformed(const Directive& d, const Matrix& ctm) const {
   const std::vector<double>& n = d.numbers;
-  Matrix next = state_.ctm;
+  Matrix next = ctm;
   if (d.name == "Identity") {
     next = Matrix(1.0);
   } else if (d.name == "Translate") {
-    next = state_.ctm * translate({n[0], n[1], n[2]});
+    next = ctm * translate({n[0], n[1], n[2]});
   } else if (d.name == "Scale") {
-    next = state_.ctm * scale({n[0], n[1], n[2]});
+    next = ctm * scale({n[0], n[1], n[2]});
   } else if (d.name == "Rotate") {
     if (!(glm::length(glm::dvec3(n[1], n[2], n[3])) > 0)) fail(d.arguments, "Rotate about a zero axis");
-    next = state_.ctm * rotate(n[0], {n[1], n[2], n[3]});
+    next = ctm * rotate(n[0], {n[1], n[2], n[3]});
   } else if (d.name == "LookAt") {
     glm::dvec3 eye(n[0], n[1], n[2]), look(n[3], n[4], n[5]), up(n[6], n[7], n[8]);
     if (!(glm::length(look - eye) > 0)) fail(d.arguments, "LookAt: the eye and the point looked at coincide");
@@ -207,33 +250,25 @@ void Importer::transform_directive(const Directive& d) {
            "pbrt-v3 would fall back to the identity transform");
     glm::dvec3 right = glm::normalize(side), new_up = glm::cross(dir, right);
     Matrix world_from_camera(glm::dvec4(right, 0), glm::dvec4(new_up, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
-    next = state_.ctm * glm::inverse(world_from_camera);
+    next = ctm * glm::inverse(world_from_camera);
   } else if (d.name == "Transform") {
     next = from_numbers(n);
   } else if (d.name == "ConcatTransform") {
-    next = state_.ctm * from_numbers(n);
-  } else if (d.name == "CoordinateSystem") {
-    coordinate_systems_[d.strings[0]] = state_.ctm;
-    return;
-  } else if (d.name == "CoordSysTransform") {
-    auto found = coordinate_systems_.find(d.strings[0]);
-    if (found == coordinate_systems_.end())
-      fail(d.string_ranges[0], "no coordinate system named \"" + d.strings[0] + "\"",
-           "CoordinateSystem names one; pbrt-v3 defines \"camera\" at Camera and \"world\" at WorldBegin");
-    next = found->second;
-  } else if (d.name == "ActiveTransform") {
-    if (d.strings[0] != "All")
-      fail(d.arguments, "animated transforms (ActiveTransform " + d.strings[0] + ") are not supported");
-    return;
-  } else if (d.name == "MediumInterface") {
-    for (size_t i = 0; i < d.strings.size(); ++i)
-      if (!d.strings[i].empty()) fail(d.string_ranges[i], "participating media are not supported");
-    return;
-  } else if (d.name == "MakeNamedMedium") {
-    fail(span(d), "participating media (MakeNamedMedium) are not supported");
+    next = ctm * from_numbers(n);
   }
   if (!finite(next)) fail(span(d), d.name + " makes the transform non-finite");
-  state_.ctm = next;
+  return next;
+}
+
+TransformSet Importer::transform_set() const {
+  return {state_.ctm, state_.ctm_at_end, state_.start_active, state_.end_active};
+}
+
+void Importer::restore(const TransformSet& set) {
+  state_.ctm = set.start;
+  state_.ctm_at_end = set.end;
+  state_.start_active = set.start_active;
+  state_.end_active = set.end_active;
 }
 
 // ---------------------------------------------------------------------------
@@ -243,9 +278,13 @@ void Importer::options_directive(const Directive& d) {
   if (d.name == "Camera") {
     if (d.strings[0] != "perspective")
       fail(d.string_ranges[0], "camera \"" + d.strings[0] + "\" is not supported", "supported: \"perspective\"");
+    if (state_.ctm != state_.ctm_at_end)
+      fail(d.range, "an animated camera (a transform ActiveTransform changed at one time only) is not supported",
+           "animate the objects instead: their motion blurs as pbrt-v3's does");
     camera_ = d;
     camera_from_world_ = state_.ctm;
-    coordinate_systems_["camera"] = invertible(state_.ctm) ? glm::inverse(state_.ctm) : Matrix(1.0);
+    const Matrix world_from_camera = invertible(state_.ctm) ? glm::inverse(state_.ctm) : Matrix(1.0);
+    coordinate_systems_["camera"] = {world_from_camera, world_from_camera};
   } else if (d.name == "Film") {
     film(d);
   } else if (d.name == "Sampler") {
@@ -260,7 +299,12 @@ void Importer::options_directive(const Directive& d) {
     if (d.strings[0] != "bvh" && d.strings[0] != "kdtree")
       fail(d.string_ranges[0], "unknown accelerator \"" + d.strings[0] + "\"", "pbrt-v3 has \"bvh\" and \"kdtree\"");
   }
-  // TransformTimes: only animated transforms use them, and those are refused.
+  if (d.name == "TransformTimes") {
+    transform_start_time_ = d.numbers[0];
+    transform_end_time_ = d.numbers[1];
+    if (!(transform_end_time_ >= transform_start_time_))
+      fail(d.arguments, "TransformTimes: the end time comes before the start time");
+  }
 }
 
 void Importer::film(const Directive& d) {
@@ -376,8 +420,8 @@ void Importer::pixel_filter(const Directive& d) {
 void Importer::world_begin(const Directive& d) {
   finish_camera(d.range);
   block_ = Block::world;
-  state_.ctm = Matrix(1.0);
-  coordinate_systems_["world"] = state_.ctm;
+  state_.ctm = state_.ctm_at_end = Matrix(1.0);
+  coordinate_systems_["world"] = {state_.ctm, state_.ctm_at_end};
 }
 
 // Without a Camera directive pbrt-v3 looks down +z from the origin, fov 90.
@@ -422,9 +466,9 @@ void Importer::finish_camera(SourceRange world_begin) {
   camera.focus_distance = sg::from_raw<Length>(static_cast<Real>(focal_distance * metres_per_camera_unit));
   if (!std::isfinite(sg::raw(camera.focus_distance)) || !std::isfinite(sg::raw(camera.lens_radius)))
     fail(at, std::string("the lens is out of ") + kRealName + " range at this --length-unit");
-  // Shutter times matter only with motion, which is refused (ActiveTransform).
-  params.one_float("shutteropen", 0);
-  params.one_float("shutterclose", 1);
+  // Used once a shape moves (ActiveTransform): pbrt-v3's times, as seconds.
+  shutter_open_ = params.one_float("shutteropen", 0);
+  shutter_close_ = params.one_float("shutterclose", 1);
   const RenderSettings& settings = result_.scene.settings;
   double aspect = static_cast<double>(settings.width) / settings.height;
   double frame_aspect = params.one_float("frameaspectratio", aspect);

@@ -57,8 +57,19 @@ struct AreaLight {
 template <class T>
 using SharedMap = std::shared_ptr<std::map<std::string, T>>;
 
+// pbrt-v3's current transform: one at each of its two TransformTimes, and which
+// of them the transform directives change (ActiveTransform).
+struct TransformSet {
+  Matrix start{1.0};  // at the first of the TransformTimes
+  Matrix end{1.0};    // at the second
+  bool start_active = true, end_active = true;
+  bool animated() const { return start != end; }
+};
+
 struct GraphicsState {
-  Matrix ctm{1.0};  // object → pbrt world (in the options block: world → camera)
+  Matrix ctm{1.0};  // object → pbrt world (in the options block: world → camera), at the start time
+  Matrix ctm_at_end{1.0};  // the same at the end time: ≠ ctm under ActiveTransform (motion)
+  bool start_active = true, end_active = true;
   bool reverse_orientation = false;
   std::shared_ptr<const MaterialInstance> material;
   std::optional<AreaLight> area_light;
@@ -77,6 +88,7 @@ struct ShapeSource {
   std::vector<TexCoord> uvs;         // "uv"/"st": empty or one per position
   double radius = 0;                 // sphere
   Matrix pbrt_world_from_object{1.0};
+  std::optional<Matrix> pbrt_world_from_object_at_end;  // an animated transform (motion blur)
   bool reverse_orientation = false;
   int material = -1;
   std::optional<AreaLight> emission;
@@ -102,6 +114,10 @@ class Importer {
 
   void directive(const Directive& d);
   void transform_directive(const Directive& d);
+  Matrix transformed(const Directive& d, const Matrix& ctm) const;
+  TransformSet transform_set() const;
+  void set_shutter(SourceRange motion_at);
+  void restore(const TransformSet& set);
   void options_directive(const Directive& d);
   void world_begin(const Directive& d);
   void world_directive(const Directive& d);
@@ -147,6 +163,7 @@ class Importer {
   void shape(const Directive& d);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
   void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
+  void animate(const ShapeSource& source, const Matrix& world_from_pbrt_world, Shape& shape);
   void object_instance(const Directive& d);
 
   void warn(SourceRange at, std::string message, std::string hint = {});
@@ -165,8 +182,11 @@ class Importer {
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;
-  std::vector<Matrix> transform_stack_;
-  std::map<std::string, Matrix> coordinate_systems_;
+  std::vector<TransformSet> transform_stack_;
+  std::map<std::string, std::pair<Matrix, Matrix>> coordinate_systems_;  // at the start and the end time
+  double transform_start_time_ = 0, transform_end_time_ = 1;           // TransformTimes
+  std::optional<SourceRange> motion_at_;                                // the first animated shape
+  double shutter_open_ = 0, shutter_close_ = 1;                         // the camera's
 
   // Options kept until WorldBegin, where the camera can be placed.
   std::optional<Directive> camera_;

@@ -46,7 +46,7 @@ void Importer::world_directive(const Directive& d) {
       current_object_->clear();
     }
     attribute_stack_.push_back(state_);
-    transform_stack_.push_back(state_.ctm);
+    transform_stack_.push_back(transform_set());
   } else if (name == "AttributeEnd" || name == "ObjectEnd") {
     if (name == "ObjectEnd") {
       if (!current_object_) fail(d.range, "ObjectEnd without ObjectBegin");
@@ -56,13 +56,13 @@ void Importer::world_directive(const Directive& d) {
       fail(d.range, name + " without a matching " + (name == "ObjectEnd" ? "ObjectBegin" : "AttributeBegin"));
     state_ = std::move(attribute_stack_.back());
     attribute_stack_.pop_back();
-    state_.ctm = transform_stack_.back();
+    restore(transform_stack_.back());
     transform_stack_.pop_back();
   } else if (name == "TransformBegin") {
-    transform_stack_.push_back(state_.ctm);
+    transform_stack_.push_back(transform_set());
   } else if (name == "TransformEnd") {
     if (transform_stack_.empty()) fail(d.range, "TransformEnd without a matching TransformBegin");
-    state_.ctm = transform_stack_.back();
+    restore(transform_stack_.back());
     transform_stack_.pop_back();
   } else if (name == "ReverseOrientation") {
     state_.reverse_orientation = !state_.reverse_orientation;
@@ -100,6 +100,8 @@ void Importer::world_directive(const Directive& d) {
 void Importer::light_source(const Directive& d) {
   const std::string& type = d.strings[0];
   ParamSet params(d.params, "LightSource \"" + type + "\"");
+  if (state_.ctm_at_end != state_.ctm)
+    warn(d.range, "an animated light is placed by its start transform", "pbrt-v3 does the same (and warns)");
   if (type == "point" || type == "spot") {
     auto read = [&](const char* name) {
       std::optional<SpectrumValue> value = params.spectrum(name, false);
@@ -254,6 +256,7 @@ void Importer::shape(const Directive& d) {
   ShapeSource source;
   source.at = d.string_ranges[0];
   source.pbrt_world_from_object = state_.ctm;
+  if (state_.ctm_at_end != state_.ctm) source.pbrt_world_from_object_at_end = state_.ctm_at_end;
   source.reverse_orientation = state_.reverse_orientation;
   auto reject_alpha = [&] {
     for (const char* name : {"alpha", "shadowalpha"}) {
@@ -333,6 +336,16 @@ void Importer::shape(const Directive& d) {
   source.material = material_index(*state_.material, params);
   source.emission = state_.area_light;
   report_unused(params);
+  if (source.pbrt_world_from_object_at_end) {
+    if (current_object_)
+      fail(d.range, "an animated shape inside an object definition (ObjectBegin) is not supported");
+    if (source.emission) {
+      // pbrt-v3's pbrtShape: "Ignoring currently set area light when creating animated shape".
+      warn(d.range, "an animated shape does not emit: its area light is ignored", "pbrt-v3 ignores it too");
+      source.emission.reset();
+    }
+    if (!motion_at_) motion_at_ = d.range;
+  }
   if (current_object_) {
     if (source.emission)
       fail(d.range, "an area light inside an object definition (ObjectBegin) is not supported",
@@ -399,6 +412,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     Real radius = static_cast<Real>(source.radius * scale);
     if (!std::isfinite(radius) || !(radius > 0)) fail(source.at, std::string("the sphere's radius is out of ") + kRealName + " range");
     shape.radius = sg::from_raw<Length>(radius);
+    if (source.pbrt_world_from_object_at_end) animate(source, world_from_pbrt_world, shape);
     result_.scene.shapes.push_back(std::move(shape));
     return;
   }
@@ -431,7 +445,46 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   if (!source.normals.empty() && normals_warned_++ == 0)
     warn(source.at, "vertex normals \"N\" only orient emitters here: surfaces are shaded with their geometric normals",
          "pbrt-v3 interpolates them for shading: smooth meshes look faceted by comparison");
+  if (source.pbrt_world_from_object_at_end) animate(source, world_from_pbrt_world, shape);
   result_.scene.shapes.push_back(std::move(shape));
+}
+
+// A shape that moves (ActiveTransform): kept in object space with its poses at
+// shutter open and close, which the renderer interpolates as pbrt-v3's
+// AnimatedTransform does (translation and scale linearly, rotation slerped).
+// Where the world mirrors (pbrt-v3's left-handed world in ours), both poses are
+// taken times a mirror F in object space and the points times F: F·F = 1 keeps
+// every point where it was, each pose is a rotation again, and interpolating
+// W·C·F is W·(interpolated C)·F, pbrt-v3's motion mirrored.
+void Importer::animate(const ShapeSource& source, const Matrix& world_from_pbrt_world, Shape& shape) {
+  const Matrix at_open = world_from_pbrt_world * source.pbrt_world_from_object;
+  const Matrix at_close = world_from_pbrt_world * *source.pbrt_world_from_object_at_end;
+  const bool mirrored = determinant3(at_open) < 0;
+  if (mirrored != (determinant3(at_close) < 0))
+    fail(source.at, "a shape whose animated transform mirrors it at one time only is not supported");
+  if (source.kind == ShapeSource::Kind::sphere && !is_similarity(at_close, 1e-4))
+    fail(source.at, "a sphere whose animated transform scales it unevenly is not supported");
+  Matrix mirror(1.0);
+  if (mirrored) mirror[0][0] = -1;
+  auto pose = [&](const Matrix& m) {
+    const sg::mat4_rep rep(m * mirror);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(rep[c][r]))
+          fail(source.at, std::string("the shape's animated transform is out of ") + kRealName + " range");
+    return RenderFromObject::from_matrix(rep);
+  };
+  shape.render_from_object = pose(at_open);
+  shape.render_from_object_at_close = pose(at_close);
+  if (shape.type == Shape::Type::sphere) {
+    shape.center = sg::from_raw<PointObject>(sg::vec3_rep(0, 0, 0));
+    shape.radius = sg::from_raw<Length>(static_cast<Real>(source.radius));
+    return;
+  }
+  for (size_t i = 0; i < source.positions.size(); ++i) {
+    const glm::dvec3 p = glm::dvec3(mirror * glm::dvec4(source.positions[i], 1));
+    shape.positions[i] = sg::from_raw<PointObject>(sg::vec3_rep(static_cast<Real>(p.x), static_cast<Real>(p.y), static_cast<Real>(p.z)));
+  }
 }
 
 void Importer::object_instance(const Directive& d) {
@@ -440,6 +493,8 @@ void Importer::object_instance(const Directive& d) {
   if (found == objects_.end())
     fail(d.string_ranges[0], "no object named \"" + d.strings[0] + "\"", "ObjectBegin ... ObjectEnd defines one");
   // Instances are flattened: each is a copy of the object's shapes.
+  if (state_.ctm_at_end != state_.ctm)
+    fail(d.range, "an animated ObjectInstance is not supported", "animate the shapes of the object one by one");
   Matrix world_from_instance = world_from_pbrt_world_ * state_.ctm;
   for (const ShapeSource& source : found->second) place(source, world_from_instance);
 }
