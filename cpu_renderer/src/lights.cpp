@@ -1,13 +1,50 @@
 #include "lights.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 #include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 
 namespace {
+
+// The cone a sphere subtends from a point outside it (pbrt-v3's Sphere::Sample(ref, u),
+// with pbrt-v4's cancellation-free forms): 1 − cos θmax, nothing from inside or on it
+// (or when the cone is too narrow for Real), where the caller samples by area.
+std::optional<Real> cone_one_minus_cos(PointWorld center, Length radius, PointWorld reference) {
+  const Real dc = sg::raw(sg::distance(center, reference)), r = sg::raw(radius);
+  if (!(dc > r * Real(1.0001))) return std::nullopt;
+  const Real sin2_max = (r / dc) * (r / dc);
+  const Real one_minus_cos = sin2_max / (1 + std::sqrt(std::max(Real(0), 1 - sin2_max)));
+  if (!(one_minus_cos > 0)) return std::nullopt;
+  return one_minus_cos;
+}
+
+PdfSolidAngle cone_pdf(Real one_minus_cos) { return 1 / (2 * sg::pi * one_minus_cos * units::steradian); }
+
+// A direction uniform in that cone, and the sphere's nearer point along it: its outward unit normal.
+DirectionWorld cone_point_normal(PointWorld center, Length radius, PointWorld reference, Real one_minus_cos, Real u1,
+                                 Real u2) {
+  using V = sg::vec3_rep;
+  const V to_center(sg::raw(center - reference));
+  const Real dc = glm::length(to_center), sin_max = sg::raw(radius) / dc;
+  const Real one_minus_cos_theta = u1 * one_minus_cos;
+  const Real cos_theta = 1 - one_minus_cos_theta;
+  const Real sin2_theta = one_minus_cos_theta * (2 - one_minus_cos_theta);
+  // The angle at the centre between the reference and the point (pbrt-v4's form).
+  const Real cos_alpha = sin2_theta / sin_max + cos_theta * std::sqrt(std::max(Real(0), 1 - sin2_theta / (sin_max * sin_max)));
+  const Real sin_alpha = std::sqrt(std::max(Real(0), 1 - cos_alpha * cos_alpha));
+  const Real phi = u2 * 2 * sg::pi;
+  const V w = to_center / dc;
+  const V a = std::fabs(w.x) > std::fabs(w.y) ? V(-w.z, 0, w.x) / std::sqrt(w.x * w.x + w.z * w.z)
+                                              : V(0, w.z, -w.y) / std::sqrt(w.y * w.y + w.z * w.z);
+  const V b = glm::cross(w, a);
+  const V outward = -(sin_alpha * std::cos(phi) * a + sin_alpha * std::sin(phi) * b + cos_alpha * w);
+  return from_kernel<DirectionWorld>(kernel::Real3{outward.x, outward.y, outward.z});
+}
 
 // A sphere around every static shape (at the shutter-open pose).
 void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radius) {
@@ -256,6 +293,24 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.delta = true;
     return sample;
   }
+  if (light.type == Light::Type::sphere && light.motion < 0) {
+    // Seen from outside, a sphere is sampled by the cone it subtends: every sample lands on
+    // the side facing the reference, with the density of a direction, not of an area.
+    if (std::optional<Real> one_minus_cos = cone_one_minus_cos(light.position, light.radius, reference)) {
+      DirectionWorld outward = cone_point_normal(light.position, light.radius, reference, *one_minus_cos, u1, u2);
+      VectorWorld offset = outward * light.radius;
+      sample.position = light.position + offset;
+      sample.position_error = (kernel::abs(to_kernel(offset)) + kernel::abs(to_kernel(light.position))) * kernel::gamma(6);
+      VectorWorld toward = sample.position - reference;
+      sample.distance = sg::length(toward);
+      if (!(sample.distance > sg::zero)) return std::nullopt;
+      sample.wi = sg::normalize(toward);
+      sample.emitter_normal = to_kernel(outward);
+      sample.radiance = light.radiance;
+      sample.pdf = probability * cone_pdf(*one_minus_cos);
+      return sample;
+    }
+  }
   NormalWorld normal;
   PdfArea pdf_area = sg::zero;
   sample_surface(index, probability, time, u_light, u1, u2, sample.position, sample.position_error, normal, pdf_area);
@@ -284,6 +339,9 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   int32_t index = light_of_shape_[hit.shape];
   if (index < 0) return sg::zero;
   const Light& light = lights_[index];
+  if (light.type == Light::Type::sphere && light.motion < 0)
+    if (std::optional<Real> one_minus_cos = cone_one_minus_cos(light.position, light.radius, reference))
+      return selection_probability(static_cast<uint32_t>(index)) * cone_pdf(*one_minus_cos);
   VectorWorld toward = hit.position - reference;
   Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
   if (!(cos_light > sg::zero)) return sg::zero;
