@@ -187,26 +187,26 @@ void Importer::directive(const Directive& d) {
 
 void Importer::transform_directive(const Directive& d) {
   if (d.name == "CoordinateSystem") {
-    coordinate_systems_[d.strings[0]] = {state_.ctm, state_.ctm_at_end};
+    coordinate_systems_[d.strings[0]] = {state_.transform.start, state_.transform.end};
   } else if (d.name == "CoordSysTransform") {
     auto found = coordinate_systems_.find(d.strings[0]);
     if (found == coordinate_systems_.end())
       fail(d.string_ranges[0], "no coordinate system named \"" + d.strings[0] + "\"",
            "CoordinateSystem names one; pbrt-v3 defines \"camera\" at Camera and \"world\" at WorldBegin");
     // As pbrt-v3: both times' transforms, whichever are active.
-    state_.ctm = found->second.first;
-    state_.ctm_at_end = found->second.second;
+    state_.transform.start = found->second.first;
+    state_.transform.end = found->second.second;
   } else if (d.name == "ActiveTransform") {
-    state_.start_active = d.strings[0] != "EndTime";
-    state_.end_active = d.strings[0] != "StartTime";
+    state_.transform.start_active = d.strings[0] != "EndTime";
+    state_.transform.end_active = d.strings[0] != "StartTime";
   } else if (d.name == "MediumInterface") {
     for (size_t i = 0; i < d.strings.size(); ++i)
       if (!d.strings[i].empty()) fail(d.string_ranges[i], "participating media are not supported");
   } else if (d.name == "MakeNamedMedium") {
     fail(span(d), "participating media (MakeNamedMedium) are not supported");
   } else {
-    if (state_.start_active) state_.ctm = transformed(d, state_.ctm);
-    if (state_.end_active) state_.ctm_at_end = transformed(d, state_.ctm_at_end);
+    if (state_.transform.start_active) state_.transform.start = transformed(d, state_.transform.start);
+    if (state_.transform.end_active) state_.transform.end = transformed(d, state_.transform.end);
   }
 }
 
@@ -260,17 +260,6 @@ Matrix Importer::transformed(const Directive& d, const Matrix& ctm) const {
   return next;
 }
 
-TransformSet Importer::transform_set() const {
-  return {state_.ctm, state_.ctm_at_end, state_.start_active, state_.end_active};
-}
-
-void Importer::restore(const TransformSet& set) {
-  state_.ctm = set.start;
-  state_.ctm_at_end = set.end;
-  state_.start_active = set.start_active;
-  state_.end_active = set.end_active;
-}
-
 // ---------------------------------------------------------------------------
 // Options block
 
@@ -278,12 +267,12 @@ void Importer::options_directive(const Directive& d) {
   if (d.name == "Camera") {
     if (d.strings[0] != "perspective")
       fail(d.string_ranges[0], "camera \"" + d.strings[0] + "\" is not supported", "supported: \"perspective\"");
-    if (state_.ctm != state_.ctm_at_end)
+    if (state_.transform.animated())
       fail(d.range, "an animated camera (a transform ActiveTransform changed at one time only) is not supported",
            "animate the objects instead: their motion blurs as pbrt-v3's does");
     camera_ = d;
-    camera_from_world_ = state_.ctm;
-    const Matrix world_from_camera = invertible(state_.ctm) ? glm::inverse(state_.ctm) : Matrix(1.0);
+    camera_from_world_ = state_.transform.start;
+    const Matrix world_from_camera = invertible(state_.transform.start) ? glm::inverse(state_.transform.start) : Matrix(1.0);
     coordinate_systems_["camera"] = {world_from_camera, world_from_camera};
   } else if (d.name == "Film") {
     film(d);
@@ -420,8 +409,8 @@ void Importer::pixel_filter(const Directive& d) {
 void Importer::world_begin(const Directive& d) {
   finish_camera(d.range);
   block_ = Block::world;
-  state_.ctm = state_.ctm_at_end = Matrix(1.0);
-  coordinate_systems_["world"] = {state_.ctm, state_.ctm_at_end};
+  state_.transform.start = state_.transform.end = Matrix(1.0);
+  coordinate_systems_["world"] = {state_.transform.start, state_.transform.end};
 }
 
 // Without a Camera directive pbrt-v3 looks down +z from the origin, fov 90.

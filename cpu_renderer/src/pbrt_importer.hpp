@@ -57,8 +57,10 @@ struct AreaLight {
 template <class T>
 using SharedMap = std::shared_ptr<std::map<std::string, T>>;
 
-// pbrt-v3's current transform: one at each of its two TransformTimes, and which
-// of them the transform directives change (ActiveTransform).
+// pbrt-v3's current transform, object → pbrt world (in the options block: world →
+// camera): one at each of its two TransformTimes, and which of them the transform
+// directives change (ActiveTransform). They differ only where ActiveTransform made
+// them: a shape placed under them moves.
 struct TransformSet {
   Matrix start{1.0};  // at the first of the TransformTimes
   Matrix end{1.0};    // at the second
@@ -67,9 +69,7 @@ struct TransformSet {
 };
 
 struct GraphicsState {
-  Matrix ctm{1.0};  // object → pbrt world (in the options block: world → camera), at the start time
-  Matrix ctm_at_end{1.0};  // the same at the end time: ≠ ctm under ActiveTransform (motion)
-  bool start_active = true, end_active = true;
+  TransformSet transform;
   bool reverse_orientation = false;
   std::shared_ptr<const MaterialInstance> material;
   std::optional<AreaLight> area_light;
@@ -115,9 +115,7 @@ class Importer {
   void directive(const Directive& d);
   void transform_directive(const Directive& d);
   Matrix transformed(const Directive& d, const Matrix& ctm) const;
-  TransformSet transform_set() const;
   void set_shutter(SourceRange motion_at);
-  void restore(const TransformSet& set);
   void options_directive(const Directive& d);
   void world_begin(const Directive& d);
   void world_directive(const Directive& d);

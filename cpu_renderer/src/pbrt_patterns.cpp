@@ -43,11 +43,11 @@ UvMapping Importer::uv_mapping(ParamSet& params, SourceRange at) {
 // pbrt-v3's IdentityMapping3D: a point in the space the transform stood for
 // at the Texture directive, in the scene file's length unit.
 SolidMapping Importer::solid_mapping(SourceRange at) {
-  const double determinant = glm::determinant(state_.ctm);
+  const double determinant = glm::determinant(state_.transform.start);
   if (!std::isnormal(determinant))
     fail(at, "the transform in effect at this Texture is singular", "pbrt-v3 maps points into texture space by its inverse");
   // From our world (metres) to pbrt's world, then to texture space: pbrt units.
-  const Matrix texture_from_render_units = glm::inverse(state_.ctm) * glm::inverse(world_from_pbrt_world_);
+  const Matrix texture_from_render_units = glm::inverse(state_.transform.start) * glm::inverse(world_from_pbrt_world_);
   const double unit = options_.metres_per_unit;
   const Matrix texture_from_render = Matrix(glm::dmat3(unit)) * texture_from_render_units;  // the same, in metres
   SolidMapping mapping;

@@ -46,7 +46,7 @@ void Importer::world_directive(const Directive& d) {
       current_object_->clear();
     }
     attribute_stack_.push_back(state_);
-    transform_stack_.push_back(transform_set());
+    transform_stack_.push_back(state_.transform);
   } else if (name == "AttributeEnd" || name == "ObjectEnd") {
     if (name == "ObjectEnd") {
       if (!current_object_) fail(d.range, "ObjectEnd without ObjectBegin");
@@ -56,13 +56,13 @@ void Importer::world_directive(const Directive& d) {
       fail(d.range, name + " without a matching " + (name == "ObjectEnd" ? "ObjectBegin" : "AttributeBegin"));
     state_ = std::move(attribute_stack_.back());
     attribute_stack_.pop_back();
-    restore(transform_stack_.back());
+    state_.transform = transform_stack_.back();
     transform_stack_.pop_back();
   } else if (name == "TransformBegin") {
-    transform_stack_.push_back(transform_set());
+    transform_stack_.push_back(state_.transform);
   } else if (name == "TransformEnd") {
     if (transform_stack_.empty()) fail(d.range, "TransformEnd without a matching TransformBegin");
-    restore(transform_stack_.back());
+    state_.transform = transform_stack_.back();
     transform_stack_.pop_back();
   } else if (name == "ReverseOrientation") {
     state_.reverse_orientation = !state_.reverse_orientation;
@@ -100,7 +100,7 @@ void Importer::world_directive(const Directive& d) {
 void Importer::light_source(const Directive& d) {
   const std::string& type = d.strings[0];
   ParamSet params(d.params, "LightSource \"" + type + "\"");
-  if (state_.ctm_at_end != state_.ctm)
+  if (state_.transform.animated())
     warn(d.range, "an animated light is placed by its start transform", "pbrt-v3 does the same (and warns)");
   if (type == "point" || type == "spot") {
     auto read = [&](const char* name) {
@@ -120,16 +120,16 @@ void Importer::light_source(const Directive& d) {
     glm::dvec3 from_v(from[0], from[1], from[2]);
     if (type == "point") {
       // pbrt-v3 offsets "from" in world space: Translate(from) * CTM.
-      glm::dvec3 at = glm::dvec3(state_.ctm * glm::dvec4(0, 0, 0, 1)) + from_v;
+      glm::dvec3 at = glm::dvec3(state_.transform.start * glm::dvec4(0, 0, 0, 1)) + from_v;
       result_.scene.point_lights.push_back({to_world_point(world_from_pbrt_world_, at, d.range), intensity});
     } else {
       Triple to = params.one_point("to").value_or(Triple{0, 0, 1});
       glm::dvec3 axis = glm::dvec3(to[0], to[1], to[2]) - from_v;
       if (!(glm::length(axis) > 0)) fail(d.range, "the spot light's \"from\" and \"to\" coincide");
-      if (!is_similarity(state_.ctm, 1e-6))
+      if (!is_similarity(state_.transform.start, 1e-6))
         fail(d.range, "a spot light under a transform that scales unevenly or shears is not supported",
              "it would make the cone elliptic");
-      Matrix m = world_from_pbrt_world_ * state_.ctm;
+      Matrix m = world_from_pbrt_world_ * state_.transform.start;
       SpotLight spot;
       spot.position = to_world_point(m, from_v, d.range);
       glm::dvec3 direction = glm::normalize(glm::dmat3(m) * axis);
@@ -180,7 +180,7 @@ void Importer::distant_light(const Directive& d, ParamSet& params) {
   glm::dvec3 towards(from[0] - to[0], from[1] - to[1], from[2] - to[2]);
   if (!(glm::length(towards) > 0)) fail(d.range, "the distant light's \"from\" and \"to\" coincide");
   // As pbrt-v3 maps it: a vector through the transform (LightToWorld(w)).
-  glm::dvec3 direction = glm::dmat3(world_from_pbrt_world_ * state_.ctm) * towards;
+  glm::dvec3 direction = glm::dmat3(world_from_pbrt_world_ * state_.transform.start) * towards;
   if (!(glm::length(direction) > 0) || !std::isfinite(glm::length(direction)))
     fail(d.range, "the distant light's direction is not finite under its transform");
   DistantLight light;
@@ -217,7 +217,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
     light.file = map->strings[0];
     light.map = std::make_shared<MipMap>(read_image(*map), TextureWrap::longitude_latitude);
   }
-  Matrix m = world_from_pbrt_world_ * state_.ctm;
+  Matrix m = world_from_pbrt_world_ * state_.transform.start;
   if (!is_similarity(m, 1e-6))
     fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
          "it would distort the map; rotate it only");
@@ -255,8 +255,8 @@ void Importer::shape(const Directive& d) {
   ParamSet params(d.params, "Shape \"" + type + "\"");
   ShapeSource source;
   source.at = d.string_ranges[0];
-  source.pbrt_world_from_object = state_.ctm;
-  if (state_.ctm_at_end != state_.ctm) source.pbrt_world_from_object_at_end = state_.ctm_at_end;
+  source.pbrt_world_from_object = state_.transform.start;
+  if (state_.transform.animated()) source.pbrt_world_from_object_at_end = state_.transform.end;
   source.reverse_orientation = state_.reverse_orientation;
   auto reject_alpha = [&] {
     for (const char* name : {"alpha", "shadowalpha"}) {
@@ -319,7 +319,7 @@ void Importer::shape(const Directive& d) {
     double radius = params.one_float("radius", 1);
     if (!(radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
     // Scaled unevenly, an ellipsoid: a mesh (the renderer's spheres are round).
-    const bool ellipsoid = !is_similarity(state_.ctm, 1e-4);
+    const bool ellipsoid = !is_similarity(state_.transform.start, 1e-4);
     if (sphere_mesh(radius, ellipsoid, params, d.string_ranges[0], source)) {
       source.kind = ShapeSource::Kind::mesh;
     } else {
@@ -493,9 +493,9 @@ void Importer::object_instance(const Directive& d) {
   if (found == objects_.end())
     fail(d.string_ranges[0], "no object named \"" + d.strings[0] + "\"", "ObjectBegin ... ObjectEnd defines one");
   // Instances are flattened: each is a copy of the object's shapes.
-  if (state_.ctm_at_end != state_.ctm)
+  if (state_.transform.animated())
     fail(d.range, "an animated ObjectInstance is not supported", "animate the shapes of the object one by one");
-  Matrix world_from_instance = world_from_pbrt_world_ * state_.ctm;
+  Matrix world_from_instance = world_from_pbrt_world_ * state_.transform.start;
   for (const ShapeSource& source : found->second) place(source, world_from_instance);
 }
 
