@@ -101,6 +101,10 @@ struct ShapeSource {
 // unless `even_if_whole`: the mesh of an ellipsoid, a sphere scaled unevenly).
 bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
 bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRange at, ShapeSource& source);
+// Two triangles per cell of a grid of `columns` × `rows` vertices already in
+// source.positions (u fastest), wound about ∂p/∂u × ∂p/∂v; cells' triangles of no
+// area (an apex, a disk's centre) left out.
+void triangulate_grid(int columns, int rows, ShapeSource& source);
 // pbrt-v3's "nurbs" as the mesh pbrt-v3 dices it into (pbrt_nurbs.cpp); false for any other type.
 bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
 

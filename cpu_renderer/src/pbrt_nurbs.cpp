@@ -123,16 +123,7 @@ bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, Shape
       source.positions.push_back(evaluate_surface(u.order, u.knots, u.count, s, v.order, v.knots, v.count, t, cp));
       source.uvs.push_back({static_cast<Real>(s), static_cast<Real>(t)});
     }
-  auto vertex = [](int i, int j) { return static_cast<uint32_t>(j * kDice + i); };
-  auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
-    const glm::dvec3 n = glm::cross(source.positions[b] - source.positions[a], source.positions[c] - source.positions[a]);
-    if (glm::length(n) > 0) source.indices.insert(source.indices.end(), {a, b, c});
-  };
-  for (int j = 0; j + 1 < kDice; ++j)
-    for (int i = 0; i + 1 < kDice; ++i) {
-      add(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
-      add(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
-    }
+  triangulate_grid(kDice, kDice, source);
   if (source.indices.empty()) fail(at, params.context() + " has no area");
   return true;
 }

@@ -43,18 +43,7 @@ void tessellate(const std::function<glm::dvec3(double, double)>& surface, double
       source.positions.push_back(surface(u, v));
       source.uvs.push_back({static_cast<Real>(u), static_cast<Real>(v)});
     }
-  auto vertex = [&](int i, int j) { return static_cast<uint32_t>(j * (segments + 1) + i); };
-  auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
-    glm::dvec3 n = glm::cross(source.positions[b] - source.positions[a], source.positions[c] - source.positions[a]);
-    if (!(glm::length(n) > 0)) return;
-    source.indices.insert(source.indices.end(), {a, b, c});
-  };
-  for (int j = 0; j < rings; ++j)
-    for (int i = 0; i < segments; ++i) {
-      // (u, v) → (u + du, v) → (u + du, v + dv): counter-clockwise about ∂p/∂u × ∂p/∂v.
-      add(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
-      add(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
-    }
+  triangulate_grid(segments + 1, rings + 1, source);
 }
 
 glm::dvec3 around_z(double radius, double phi, double z) { return {radius * std::cos(phi), radius * std::sin(phi), z}; }
@@ -67,6 +56,21 @@ double positive(ParamSet& params, const char* name, double fallback, SourceRange
 }
 
 }  // namespace
+
+void triangulate_grid(int columns, int rows, ShapeSource& source) {
+  auto vertex = [&](int i, int j) { return static_cast<uint32_t>(j * columns + i); };
+  auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+    glm::dvec3 n = glm::cross(source.positions[b] - source.positions[a], source.positions[c] - source.positions[a]);
+    if (!(glm::length(n) > 0)) return;
+    source.indices.insert(source.indices.end(), {a, b, c});
+  };
+  for (int j = 0; j + 1 < rows; ++j)
+    for (int i = 0; i + 1 < columns; ++i) {
+      // (u, v) → (u + du, v) → (u + du, v + dv): counter-clockwise about ∂p/∂u × ∂p/∂v.
+      add(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
+      add(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
+    }
+}
 
 bool quadric_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source) {
   if (type == "disk") {
