@@ -54,8 +54,8 @@ done
 
 # One worker per core; each file writes only its own results (the lists are sorted after).
 jobs=${SAFEGI_JOBS:-$(nproc)}
-select_one() {  # select_one FILE: glslangValidator accepts it
-  timeout 20 glslangValidator -V --target-env vulkan1.2 -o /dev/null "$1" >/dev/null 2>&1 && echo "$1"
+select_one() {  # select_one FILE: glslangValidator accepts it; its module, FILE.ref.spv, is the reference
+  timeout 20 glslangValidator -V --target-env vulkan1.2 -o "$1.ref.spv" "$1" >/dev/null 2>&1 && echo "$1"
 }
 export -f select_one
 xargs -d '\n' -P "$jobs" -I{} bash -c 'select_one "$1"' _ {} < "$tmp/candidates.list" | sort > "$tmp/selected.list"
@@ -65,14 +65,13 @@ xargs -d '\n' -P "$jobs" -I{} bash -c 'select_one "$1"' _ {} < "$tmp/candidates.
 check_one() {  # check_one FILE
   local f=$1 work rc
   work=$(mktemp -d "$tmp/work.XXXXXX")
-  glslangValidator -V --target-env vulkan1.2 -o "$work/ref.spv" "$f" >/dev/null 2>&1
   timeout 20 "$safeglslc" -V --target-env vulkan1.2 -o "$work/ours.spv" --symbols "$work/ours.json" "$f" \
       2> "$work/err.txt" >/dev/null
   rc=$?
   if [[ $rc -eq 0 ]]; then
     local valid=0 identical=0 layout=0
     spirv-val --target-env vulkan1.2 "$work/ours.spv" >/dev/null 2>&1 && valid=1
-    cmp -s "$work/ref.spv" "$work/ours.spv" && identical=1
+    cmp -s "$f.ref.spv" "$work/ours.spv" && identical=1
     if python3 "$root/testsuite/corpus/check_vulkan_layout.py" "$work/ours.json" "$work/ours.spv" > "$work/layout.txt"; then
       layout=1
     else
