@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/diagnostics.md from the compile-fail suite: for every case in
-# testsuite/compile_fail/cases/ it shows the mistake, the first lines g++ really prints
-# for it, and the fix. From the same cases it writes docs/typed/troubleshooting.md, the
-# messages as a reader sees them (the static assertion's text) with the cases and
-# fixes under each, so a pasted error line finds its page.
+# testsuite/compile_fail/cases/ it shows the mistake, the first error g++ (and clang++,
+# where installed) really prints for it, and the fix. From the same cases it writes
+# docs/typed/troubleshooting.md, one section per report with the messages that name it
+# and the cases and fixes under each, so a pasted error line finds its page.
 #   scripts/gen-typed-diagnostics.sh [output [troubleshooting-output]]
 #     (defaults docs/diagnostics.md and docs/typed/troubleshooting.md; given only an
 #     output, the troubleshooting page goes beside it; CXX picks the compiler)
@@ -20,38 +20,46 @@ glm_include=$(dirname "$(dirname "$(echo '#include <glm/glm.hpp>' | "$cxx" -std=
 export LC_ALL=C
 cd "$root"
 python3 - "$cxx" "$out" "${glm_include:-}" "$trouble" <<'PY'
-import pathlib, re, subprocess, sys
+import pathlib, re, shutil, subprocess, sys
 
 cxx, out_path, glm_include = sys.argv[1], pathlib.Path(sys.argv[2]), sys.argv[3]
 trouble_path = pathlib.Path(sys.argv[4])
 root = pathlib.Path.cwd()
 cases = sorted((root / "testsuite/compile_fail/cases").glob("*.cpp"))
-version = subprocess.run([cxx, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+clang = shutil.which("clang++")
+compilers = [cxx] + ([clang] if clang else [])
+def version_of(compiler):
+    return subprocess.run([compiler, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+versions = [version_of(c) for c in compilers]
+def label(version):  # "g++ 12.2.0", "clang++ 14.0.6"
+    number = re.search(r"\d+\.\d+\.\d+", version).group(0)
+    return ("clang++ " if "clang" in version else "g++ ") + number
 width = 200
+# The reports and the advice written beside each declaration in diagnose.hpp.
+advice = {m.group(1): m.group(2) for m in re.finditer(r"^template <[^>]*> struct (\w+);  // (.*)$",
+                                                       (root / "typed/include/safegi/typed/diagnose.hpp").read_text(), re.M)}
 
-def compile_case(path):
-    flags = ["-std=c++20", "-fsyntax-only", "-fdiagnostics-color=never", "-fno-diagnostics-show-caret",
-             f"-I{root / 'typed/include'}"] + ([f"-I{glm_include}"] if glm_include else [])
-    run = subprocess.run([cxx, *flags, str(path)], capture_output=True, text=True)
+def compile_case(compiler, path):
+    """The lines from the first error through the note after it, with that note's source line."""
+    flags = ["-std=c++20", "-fsyntax-only", "-fdiagnostics-color=never", f"-I{root / 'typed/include'}"] + \
+            ([f"-I{glm_include}"] if glm_include else [])
+    run = subprocess.run([compiler, *flags, str(path.relative_to(root))], capture_output=True, text=True)
     if run.returncode == 0:
         sys.exit(f"{path} compiled, but must fail")
     lines = run.stderr.replace(str(root) + "/", "").splitlines()
-    errors = [l.split(": error: ", 1)[1] for l in lines if ": error: " in l]
-    reports = [m.group(1) for l in lines for m in [re.search(r"safegi::diagnose::(\w+)<", l)] if m and "In instantiation of" in l]
-    messages[path] = (errors[0] if errors else "", reports[0] if reports else "")
-    shown = []
-    def cut(line):  # the report line and the error line are shown whole: they carry the names
-        keep = "safegi::diagnose::" in line and "In instantiation of" in line or ": error: " in line
-        return line if keep or len(line) <= width else line[:width] + " …"
-    for i, line in enumerate(lines):
-        shown.append(cut(line))
-        if ": error: " in line:
-            if i + 1 < len(lines) and ": note: " in lines[i + 1]:
-                note = lines[i + 1]
-                shown.append(cut(note))
+    first = next(i for i, l in enumerate(lines) if ": error: " in l)
+    shown = [lines[first]]
+    for line in lines[first + 1:]:
+        if ": note: " in line or ": error: " in line:
+            if len(shown) > 1 and ": note: " in shown[-1]:
+                break
+            if ": error: " in line:
+                break
+            shown.append(line if len(line) <= width or "safegi::diagnose::" in line else line[:width] + " …")
+        elif ": note: " in shown[-1] and line.strip() and not set(line.strip()) <= set("^~| 0123456789"):
+            shown.append(line.rstrip())  # the note's source line: the report's declaration and advice
             break
-    return [l for l in shown if not l.startswith("In file included from") and not l.startswith("  ")
-            or "required from" in l]
+    return shown
 
 def split(path):
     text = path.read_text()
@@ -63,16 +71,23 @@ def split(path):
     before = "\n".join(l for l in before.strip("\n").splitlines() if not re.match(r"\s*\(void\)", l))
     return title, before, mistake.rstrip("\n"), fix.rstrip("\n"), after.strip("\n")
 
+def report_of(lines):
+    for line in lines:
+        m = re.search(r"safegi::diagnose::(\w+)<", line)
+        if m:
+            return m.group(1)
+    return ""
+
 parts = [
     "# Diagnostics of the typed library\n",
     "<!-- Generated by scripts/gen-typed-diagnostics.sh from testsuite/compile_fail/cases; do not edit. -->\n",
-    f"What `{version}` prints for each mistake of the compile-fail suite "
-    f"({len(cases)} cases): the first lines up to and including the first error (source excerpts "
-    f"left out with `-fno-diagnostics-show-caret`; `required from` lines longer than {width} characters "
-    "cut with …), "
-    "then the fix. The first line names both sides in words; the error line says what to do. "
-    "ctest checks the same text against `cases/<name>.expected`; see docs/typed/how-to.md for how "
-    "to read these messages.\n",
+    "What " + " and ".join(f"`{v}`" for v in versions) +
+    f" print for each mistake of the compile-fail suite ({len(cases)} cases): the first error, which is on the "
+    "line that made the mistake, and the note after it, whose quoted declaration says what to do "
+    f"(lines longer than {width} characters cut with …, except those naming the report); then the fix. "
+    "The error names the report (`safegi::diagnose::<report>`) and both sides in words; under clang++ a "
+    "mistaken conversion says what it is in words instead. ctest checks each compiler's first error "
+    "against `cases/<name>.expected`; see docs/typed/how-to.md for how to read these messages.\n",
 ]
 index = []
 messages = {}
@@ -84,38 +99,47 @@ for n, path in enumerate(cases, 1):
     parts.append(f"## {n}. {title}\n")
     parts.append(f"`testsuite/compile_fail/cases/{path.name}`\n")
     parts.append("```cpp\n" + "\n".join(x for x in (before, mistake, after) if x) + "\n```\n")
-    parts.append("```text\n" + "\n".join(compile_case(path)) + "\n```\n")
+    outputs = [compile_case(c, path) for c in compilers]
+    for version, shown in zip(versions, outputs):
+        parts.append(f"{label(version)}:\n\n```text\n" + "\n".join(shown) + "\n```\n")
+    report = next((report_of(shown) for shown in outputs if report_of(shown)), "")
+    messages[path] = (report, [shown[0].split(": error: ", 1)[1] for shown in outputs])
     parts.append("Fixed:\n\n```cpp\n" + fix + "\n```\n")
 parts.insert(3, "\n".join(index) + "\n")
 out_path.write_text("\n".join(parts))
 print(f"wrote {out_path} ({len(cases)} cases)")
 
-# The troubleshooting page: one section per message, in the words the compiler prints.
+# The troubleshooting page: one section per report, with the messages the compilers print.
 groups = {}
 for path in cases:
-    message, report = messages[path]
-    groups.setdefault(message, []).append((path, report))
+    report, _ = messages[path]
+    groups.setdefault(report, []).append(path)
 trouble = [
     "# Troubleshooting the typed library's compile errors\n",
     "<!-- Generated by scripts/gen-typed-diagnostics.sh from testsuite/compile_fail/cases; do not edit. -->\n",
-    "Search this page for the text after `error:` in your compiler's output (with g++, "
-    "`static assertion failed: …`). Each message below is followed by the mistakes of the compile-fail "
-    "suite that produce it, what they wrote and how they were fixed; the full compiler output of each is in "
-    "[diagnostics.md](../diagnostics.md). The `In instantiation of 'struct safegi::diagnose::<report><…>'` line "
-    "above the error names the operands in words; the `required from here` line is your code.\n",
+    "Search this page for the report your compiler names after `error:` (`safegi::diagnose::<report>`) or, "
+    "for a mistaken conversion under clang++, for the words after `is unavailable:`. The error is on the line "
+    "that made the mistake. Each report below says what it means, the messages that name it, and the mistakes "
+    "of the compile-fail suite that produce it, what they wrote and how they were fixed; the full compiler "
+    "output of each is in [diagnostics.md](../diagnostics.md).\n",
 ]
-for message, members in sorted(groups.items(), key=lambda item: item[1][0][1] + item[0]):
-    reports = sorted({report for _, report in members if report})
-    trouble.append("## " + (message.replace("static assertion failed: ", "") or "(no error line)") + "\n")
-    trouble.append("```text\nerror: " + message + "\n```\n")
-    if reports:
-        trouble.append("Report: " + ", ".join(f"`safegi::diagnose::{r}`" for r in reports) + "\n")
+for report, members in sorted(groups.items()):
+    trouble.append(f"## {report or 'the dimension algebra (no report)'}\n")
+    if report in advice:
+        trouble.append(advice[report][0].upper() + advice[report][1:] + ".\n")
+    seen = []
+    for path in members:
+        for message in messages[path][1]:
+            generic = re.sub(r"(safegi::diagnose::\w+)<.*>", r"\1<…>", message)
+            if generic not in seen:
+                seen.append(generic)
+    trouble.append("```text\n" + "\n".join("error: " + m for m in seen) + "\n```\n")
     trouble.append("| mistake | you wrote | fix |\n|---|---|---|")
-    for path, _ in members:
+    for path in members:
         title, _, mistake, fix, _ = split(path)
         cell = lambda code: "`" + " ".join(l.strip() for l in code.splitlines() if l.strip()).replace("|", "\\|") + "`"
         trouble.append(f"| [{title}](../diagnostics.md#{anchors[path]}) | {cell(mistake)} | {cell(fix)} |")
     trouble.append("")
 trouble_path.write_text("\n".join(trouble))
-print(f"wrote {trouble_path} ({len(groups)} messages)")
+print(f"wrote {trouble_path} ({len(groups)} reports)")
 PY

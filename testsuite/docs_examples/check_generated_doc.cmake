@@ -3,8 +3,8 @@
 #   cmake -DGENERATOR=<script> -DDOC=<committed page> -DOUT=<scratch file> [-DCXX=<compiler>]
 #         [-DEXTRA_DOCS=<committed page>...] -P check_generated_doc.cmake
 # EXTRA_DOCS are further pages the generator writes beside OUT under the same name.
-# The compiler's version line is compared loosely: a Debian point release of
-# g++ that prints the same messages does not make the page stale.
+# The compilers' version lines are compared loosely: a Debian point release of
+# g++ or clang++ that prints the same messages does not make the page stale.
 if(CXX)
   set(ENV{CXX} ${CXX})
 endif()
@@ -17,7 +17,7 @@ function(compare_generated committed_path regenerated_path)
   file(READ ${committed_path} committed)
   file(READ ${regenerated_path} regenerated)
   foreach(text IN ITEMS committed regenerated)
-    string(REGEX REPLACE "What `[^`]*` prints" "What `<compiler>` prints" ${text} "${${text}}")
+    string(REGEX REPLACE "What `[^`]*`( and `[^`]*`)? prints?" "What `<compilers>` print" ${text} "${${text}}")
   endforeach()
   if(NOT committed STREQUAL regenerated)
     execute_process(COMMAND diff -u ${committed_path} ${regenerated_path} OUTPUT_VARIABLE difference)

@@ -1,10 +1,24 @@
-// Readable compile errors. Each mistake instantiates one of these reports with the
-// involved dimensions and spaces spelled as strings; g++ starts its error with
-//   In instantiation of 'struct safegi::diagnose::dimension_mismatch<
-//       safegi::fixed_string<2>{"+"}, safegi::fixed_string<9>{"radiance"},
-//       safegi::fixed_string<11>{"irradiance"}>':
-// and then prints the static_assert message below, so both sides are named in words
-// before any template machinery appears.
+// Readable compile errors, on the line that made the mistake.
+//
+// A mistake is a declaration: beside each operation a mistake could call sits an
+// overload that only mistakes select, declared and never defined, whose result type
+// is one of the reports below. Reports are declared and never defined either, so the
+// user's call itself is ill-formed and both compilers put the error on the user's line:
+//   user.cpp:12:16: error: invalid use of incomplete type 'struct safegi::diagnose::
+//       dimension_mismatch<safegi::diagnose::op::plus, safegi::named::radiance,
+//       safegi::named::irradiance, ...>'                                          (g++)
+//   user.cpp:12:14: error: implicit instantiation of undefined template
+//       'safegi::diagnose::dimension_mismatch<...>'                              (clang++)
+// and the note that follows quotes the report's declaration, whose comment on the
+// same line says what to do. Every argument of a report is a type (an operation, a
+// named dimension, a space, a geometric kind), never a string, because clang++ prints
+// string template arguments as character codes; dimensions the vocabulary does not
+// name print as their canonical dimension<term<base::..., N>...>.
+//
+// Conversions have no result type to carry a report. g++ reports the converting
+// constructor's defaulted report parameter on the user's line, naming it; clang++
+// reports a default argument where it is written (in the library), so there the
+// constructor is marked unavailable with the report's words instead.
 #pragma once
 
 #include <type_traits>
@@ -12,201 +26,191 @@
 #include "safegi/typed/config.hpp"
 #include "safegi/typed/dimension_name.hpp"
 
+// The reports. Keep each declaration and its advice on one line: that line is what
+// the compilers quote under the error.
 namespace safegi::diagnose {
+// clang-format off
+template <class Operation, class Left, class Right, class LeftOverRight> struct dimension_mismatch;  // the operands must have one dimension; LeftOverRight is the factor too many (proj^-1: a missing cosine, solid_angle or length^2: a pdf in another measure)
+template <class From, class To, class FromOverTo> struct conversion_between_dimensions;  // a value cannot change dimension by assignment; FromOverTo is the factor too many (proj^-1: a missing cosine, solid_angle or length^2: a pdf in another measure)
+template <class Kind, class From, class To> struct conversion_between_spaces;  // a value cannot change space by assignment: apply a map<From, To>
+template <class Given, class Wanted> struct map_conversion;  // a map<A, B> is never a map between other spaces; inverse(m) turns map<A, B> into map<B, A>
+template <class Operation, class Dimension> struct plain_number_with_dimension;  // a plain number has no dimension: give it a unit (2.0f * units::metre) or compare with safegi::zero
+template <class Dimension> struct sqrt_of_odd_exponent;  // sqrt needs every exponent of the dimension to be even: its square root is not a dimension
+template <class Function, class Dimension> struct argument_is_not_an_angle;  // trigonometric functions take an angle: write degrees as x * units::degree, radians as x * units::radian
+template <class Function, class Dimension> struct argument_is_not_dimensionless;  // this function takes a dimensionless argument (a ratio): divide by a quantity of the same dimension first
+template <class Quantity, class Unit> struct unit_of_another_dimension;  // a quantity is read only in a unit of its own dimension
+template <class Operation, class Left, class Right> struct space_mismatch;  // both operands must be in one space: transform one with a map<A, B> first
+template <class Map, class Argument> struct map_applied_to_wrong_space;  // a map<A, B> applies only to values in its source space A
+template <class Outer, class Inner> struct maps_do_not_meet;  // maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C>
+template <class Operation, class Left, class Right> struct representation_mismatch;  // float and double quantities do not mix: convert one, from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real
+template <class Space> struct cannot_add_points;  // point + point has no meaning: subtract points to get a vector, or blend them with lerp / barycentric
+template <class Expected, class Given, class Space> struct wrong_geometric_kind;  // kinds transform differently, so convert explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v
+// clang-format on
 
-template <auto...>
-inline constexpr bool reported = false;
+/// The operations and functions a report names.
+namespace op {
+struct plus;
+struct minus;
+struct plus_assign;
+struct minus_assign;
+struct times;
+struct divide;
+struct equal;
+struct compare;
+struct conversion;
+struct min;
+struct max;
+struct clamp;
+struct lerp;
+struct atan2;
+struct pow;
+struct sin;
+struct cos;
+struct tan;
+struct asin;
+struct acos;
+struct atan;
+struct exp;
+struct log;
+struct dot;
+struct cross;
+struct reflect;
+struct barycentric;
+struct to_local;
+struct from_local;
+}  // namespace op
 
-// Ratio is left / right (from / to) as a formula: proj^-1 is a missing cosine, a power
-// of solid_angle or length a pdf in the wrong measure.
-template <fixed_string Operation, fixed_string Left, fixed_string Right, fixed_string Ratio>
-struct dimension_mismatch {
-  static_assert(reported<Operation, Left, Right, Ratio>,
-                "dimension mismatch: the operands of this operation must have the same dimension "
-                "(operation, left and right dimension, and left/right, are named above)");
-};
+/// Geometric kinds.
+namespace kind {
+struct point;
+struct vector;
+struct vector_to_normalize;  // a vector where a direction is wanted: normalize(v)
+struct direction;
+struct normal;
+struct hpoint;
+struct ray;
+}  // namespace kind
 
-template <fixed_string From, fixed_string To, fixed_string Ratio>
-struct conversion_between_dimensions {
-  static_assert(reported<From, To, Ratio>,
-                "cannot convert a value of one dimension into another (from and to dimension, and "
-                "from/to, are named above): the ratio from/to is the factor too many, e.g. proj^-1 a "
-                "missing cosine, solid_angle or length^2 a pdf in another measure");
-};
-
-template <fixed_string Kind, fixed_string From, fixed_string To>
-struct conversion_between_spaces {
-  static_assert(reported<Kind, From, To>,
-                "cannot convert a value from one space into another by assignment (kind, from and to "
-                "space are named above): apply a map<From, To>");
-};
-
-template <fixed_string Given, fixed_string Wanted>
-struct map_conversion {
-  static_assert(reported<Given, Wanted>,
-                "cannot convert map<A, B> into a map between other spaces (the given and the wanted map "
-                "are named above); inverse(m) turns map<A, B> into map<B, A>");
-};
-
-template <fixed_string Operation, fixed_string Dimension>
-struct plain_number_with_dimension {
-  static_assert(reported<Operation, Dimension>,
-                "a plain number has no dimension and cannot be added to or compared with a quantity "
-                "that has one: give the number a unit (2.0f * units::metre) or compare with safegi::zero");
-};
-
-template <fixed_string Dimension>
-struct sqrt_of_odd_exponent {
-  static_assert(reported<Dimension>,
-                "sqrt needs every exponent of the dimension to be even (the dimension is named above); "
-                "its square root is not a dimension");
-};
-
-template <fixed_string Function, fixed_string Dimension>
-struct argument_is_not_an_angle {
-  static_assert(reported<Function, Dimension>,
-                "trigonometric functions take an angle (quantity<dim::angle>): write degrees as "
-                "x * units::degree and radians as x * units::radian");
-};
-
-template <fixed_string Function, fixed_string Dimension>
-struct argument_is_not_dimensionless {
-  static_assert(reported<Function, Dimension>,
-                "this function needs a dimensionless argument (the argument's dimension is named above)");
-};
-
-template <fixed_string Quantity, fixed_string Unit>
-struct unit_of_another_dimension {
-  static_assert(reported<Quantity, Unit>,
-                "a quantity can only be expressed in a unit of its own dimension "
-                "(quantity and unit dimensions are named above)");
-};
-
-template <fixed_string Operation, fixed_string Left, fixed_string Right>
-struct space_mismatch {
-  static_assert(reported<Operation, Left, Right>,
-                "space mismatch: both operands must be in the same space; transform one with a "
-                "map<A, B> first (operation, left and right space are named above)");
-};
-
-template <fixed_string Map, fixed_string Argument>
-struct map_applied_to_wrong_space {
-  static_assert(reported<Map, Argument>,
-                "a map<A, B> only applies to values in its source space A "
-                "(the map and the argument's space are named above)");
-};
-
-template <fixed_string Outer, fixed_string Inner>
-struct maps_do_not_meet {
-  static_assert(reported<Outer, Inner>,
-                "maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C> "
-                "(the outer and the inner map are named above)");
-};
-
-template <fixed_string Operation, fixed_string Left, fixed_string Right>
-struct representation_mismatch {
-  static_assert(reported<Operation, Left, Right>,
-                "the operands hold different representations (named above): convert one explicitly, "
-                "from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real");
-};
-
-template <fixed_string Space>
-struct cannot_add_points {
-  static_assert(reported<Space>,
-                "two points cannot be added (point + point has no meaning in affine space): "
-                "subtract them to get a vector, or use lerp / barycentric to blend points");
-};
-
-template <fixed_string Expected, fixed_string Given, fixed_string Space>
-struct wrong_geometric_kind {
-  static_assert(reported<Expected, Given, Space>,
-                "wrong kind of geometric value (expected kind, given kind and its space are named above): "
-                "points, vectors, directions, normals and hpoints transform differently, so convert "
-                "explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v");
-};
-
+/// Labels for the spaces of map reports, so two mentions of one space say which is which.
+template <class From, class To>
+struct map;
+template <class Map>
+struct outer;
+template <class Map>
+struct inner;
+template <class Map>
+struct given;
+template <class Map>
+struct wanted;
+template <class Space>
+struct argument_in;
 }  // namespace safegi::diagnose
 
-// The checks that raise the reports. They live in the mode namespace because the
-// unchecked build turns every one of them into a no-op.
+// The vocabulary's dimensions as types, so reports name them in words.
+namespace safegi::named {
+#define VOCABULARY_BASE(name) struct name;
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) struct name;
+#include "safegi/typed/vocabulary.def"
+/// A dimension the vocabulary names more than once (brdf and pdf_projected_solid_angle).
+template <class... Names>
+struct one_of;
+}  // namespace safegi::named
+
+namespace safegi {
+namespace detail {
+template <class D, class Name>
+struct word_entry {};
+template <class... Names>
+struct word_list {};
+
+template <class D, class Entry>
+struct word_if_same {
+  using type = word_list<>;
+};
+template <class D, class Name>
+struct word_if_same<D, word_entry<D, Name>> {
+  using type = word_list<Name>;
+};
+template <class... Lists>
+struct join_words;
+template <>
+struct join_words<> {
+  using type = word_list<>;
+};
+template <class... A, class... Rest>
+struct join_words<word_list<A...>, Rest...> {
+  template <class Tail>
+  struct prepend;
+  template <class... B>
+  struct prepend<word_list<B...>> {
+    using type = word_list<A..., B...>;
+  };
+  using type = typename prepend<typename join_words<Rest...>::type>::type;
+};
+
+template <class D, class Names>
+struct words_or_formula {
+  using type = D;  // not in the vocabulary: its canonical form, whose bases are words
+};
+template <class D, class Name>
+struct words_or_formula<D, word_list<Name>> {
+  using type = Name;
+};
+template <class D, class First, class Second, class... Rest>
+struct words_or_formula<D, word_list<First, Second, Rest...>> {
+  using type = named::one_of<First, Second, Rest...>;
+};
+
+template <class D, class... Entries>
+using vocabulary_words = typename join_words<typename word_if_same<D, Entries>::type...>::type;
+template <class D>
+using words_of = typename words_or_formula<D, vocabulary_words<D,
+#define VOCABULARY_BASE(name) word_entry<dim::name, named::name>,
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) word_entry<dim::name, named::name>,
+#include "safegi/typed/vocabulary.def"
+                                                                                    word_entry<void, void>>>::type;
+}  // namespace detail
+
+/// A dimension as a report names it: named::radiance, or its canonical form.
+template <dimension_type D>
+using in_words = detail::words_of<D>;
+
+/// The factor by which dimension L exceeds R (L/R), as a report names it: proj^-1 is a
+/// missing cosine, solid_angle or length^2 a pdf in another measure.
+template <dimension_type L, dimension_type R>
+using ratio_in_words = in_words<dim::quotient<L, R>>;
+}  // namespace safegi
+
+// A converting constructor that only mistakes select is declared
+//   SAFEGI_MISTAKE("words") basic_x(basic_x<Other> SAFEGI_REPORTED_AS(diagnose::report<...>));
+// g++ reports the defaulted parameter of the report's type on the user's line, naming the
+// report; clang++ would report that default argument inside the library, so there the
+// parameter is left out and the constructor is unavailable, with the report's words.
+#if defined(__clang__)
+#define SAFEGI_MISTAKE(words) __attribute__((unavailable(words)))
+#define SAFEGI_REPORTED_AS(...)
+#else
+#define SAFEGI_MISTAKE(words)
+#define SAFEGI_REPORTED_AS(...) , __VA_ARGS__ = {}
+#endif
+
 namespace safegi {
 inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
 
-/// "float" or "double", for reports about mixed representations.
-template <class T>
-struct representation_name {
-  static constexpr auto text = fixed_string("long double");
-};
-template <>
-struct representation_name<float> {
-  static constexpr auto text = fixed_string("float");
-};
-template <>
-struct representation_name<double> {
-  static constexpr auto text = fixed_string("double");
-};
-template <class T>
-inline constexpr auto representation_text = representation_name<T>::text;
-
-template <fixed_string Operation, dimension_type Left, dimension_type Right>
-constexpr void same_dimension() {
-  if constexpr (is_checked && !std::is_same_v<Left, Right>)
-    (void)sizeof(diagnose::dimension_mismatch<Operation, dimension_text<Left>, dimension_text<Right>,
-                                              formula_text<dim::quotient<Left, Right>>>);
-}
-
-template <dimension_type From, dimension_type To>
-constexpr void convertible_dimension() {
-  if constexpr (is_checked && !std::is_same_v<From, To>)
-    (void)sizeof(diagnose::conversion_between_dimensions<dimension_text<From>, dimension_text<To>,
-                                                         formula_text<dim::quotient<From, To>>>);
-}
-
-template <fixed_string Kind, class From, class To>
-constexpr void convertible_space() {
-  if constexpr (is_checked && !std::is_same_v<From, To>)
-    (void)sizeof(diagnose::conversion_between_spaces<Kind, From::name, To::name>);
-}
-
-template <fixed_string Operation, dimension_type D>
-constexpr void number_needs_dimensionless() {
-  if constexpr (is_checked && !std::is_same_v<D, dim::dimensionless>)
-    (void)sizeof(diagnose::plain_number_with_dimension<Operation, dimension_text<D>>);
-}
-
-template <fixed_string Function, dimension_type D>
-constexpr void angle() {
-  if constexpr (is_checked && !std::is_same_v<D, dim::angle>)
-    (void)sizeof(diagnose::argument_is_not_an_angle<Function, dimension_text<D>>);
-}
-
-template <fixed_string Function, dimension_type D>
-constexpr void dimensionless() {
-  if constexpr (is_checked && !std::is_same_v<D, dim::dimensionless>)
-    (void)sizeof(diagnose::argument_is_not_dimensionless<Function, dimension_text<D>>);
-}
-
-template <dimension_type D>
-constexpr void even_exponents() {
-  if constexpr (is_checked && !dim::has_root<D, 2>)
-    (void)sizeof(diagnose::sqrt_of_odd_exponent<dimension_text<D>>);
-}
-
-/// The report for mixing representations (used only by overloads that exist to report it).
-template <fixed_string Operation, class Left, class Right>
-using representation_report =
-    diagnose::representation_mismatch<Operation, representation_text<Left>, representation_text<Right>>;
-
-/// "map<world, camera>": a map's spaces, labelled, for reports that name two maps or a map and a value.
-template <class From, class To>
-inline constexpr auto map_text = joined_text<"map<", From::name, ", ", To::name, ">">;
-
-template <fixed_string Operation, class Left, class Right>
-constexpr void same_space() {
-  if constexpr (is_checked && !std::is_same_v<Left, Right>)
-    (void)sizeof(diagnose::space_mismatch<Operation, Left::name, Right::name>);
-}
+// What the operations ask of their operands. Each holds in the unchecked build, so a
+// report is never chosen there. An operation requires these concepts and its report
+// overload requires less, so where both are viable the operation is more constrained.
+template <class Left, class Right>
+concept same_dimension = !is_checked || std::is_same_v<Left, Right>;
+template <class Left, class Right>
+concept same_space = !is_checked || std::is_same_v<Left, Right>;
+template <class D>
+concept dimensionless = !is_checked || std::is_same_v<D, dim::dimensionless>;
+template <class D>
+concept angle = !is_checked || std::is_same_v<D, dim::angle>;
+template <class D>
+concept even_exponents = !is_checked || dim::has_root<D, 2>;
 
 }  // namespace rules
 }  // namespace SAFEGI_MODE_NAMESPACE

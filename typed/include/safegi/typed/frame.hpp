@@ -35,33 +35,45 @@ class basic_frame {
   [[nodiscard]] constexpr basic_direction<S> bitangent() const { return t_; }
 
   template <class S2>
+  diagnose::space_mismatch<diagnose::op::to_local, S, S2> to_local(basic_direction<S2>) const;
+  template <class S2>
+    requires rules::same_space<S, S2>
   constexpr basic_direction<L> to_local(basic_direction<S2> w) const {
-    rules::same_space<"to_local", S, S2>();
     return {detail::raw_tag{}, local(w.raw_value())};
   }
   template <class S2, class D>
+  diagnose::space_mismatch<diagnose::op::to_local, S, S2> to_local(basic_vector<S2, D>) const;
+  template <class S2, class D>
+    requires rules::same_space<S, S2>
   constexpr basic_vector<L, D> to_local(basic_vector<S2, D> v) const {
-    rules::same_space<"to_local", S, S2>();
     return {detail::raw_tag{}, local(v.raw_value())};
   }
   template <class S2>
+  diagnose::space_mismatch<diagnose::op::to_local, S, S2> to_local(basic_normal<S2>) const;
+  template <class S2>
+    requires rules::same_space<S, S2>
   constexpr basic_normal<L> to_local(basic_normal<S2> n) const {  // orthonormal: same as directions
-    rules::same_space<"to_local", S, S2>();
     return {detail::raw_tag{}, local(n.raw_value())};
   }
   template <class L2>
+  diagnose::space_mismatch<diagnose::op::from_local, L, L2> from_local(basic_direction<L2>) const;
+  template <class L2>
+    requires rules::same_space<L, L2>
   constexpr basic_direction<S> from_local(basic_direction<L2> w) const {
-    rules::same_space<"from_local", L, L2>();
     return {detail::raw_tag{}, global(w.raw_value())};
   }
   template <class L2, class D>
+  diagnose::space_mismatch<diagnose::op::from_local, L, L2> from_local(basic_vector<L2, D>) const;
+  template <class L2, class D>
+    requires rules::same_space<L, L2>
   constexpr basic_vector<S, D> from_local(basic_vector<L2, D> v) const {
-    rules::same_space<"from_local", L, L2>();
     return {detail::raw_tag{}, global(v.raw_value())};
   }
   template <class L2>
+  diagnose::space_mismatch<diagnose::op::from_local, L, L2> from_local(basic_normal<L2>) const;
+  template <class L2>
+    requires rules::same_space<L, L2>
   constexpr basic_normal<S> from_local(basic_normal<L2> n) const {
-    rules::same_space<"from_local", L, L2>();
     return {detail::raw_tag{}, global(n.raw_value())};
   }
 

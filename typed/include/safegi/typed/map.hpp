@@ -17,20 +17,6 @@
 namespace safegi {
 inline namespace SAFEGI_MODE_NAMESPACE {
 
-namespace rules {
-template <class From, class To, class Argument>
-constexpr void applies_to() {
-  if constexpr (is_checked && !std::is_same_v<From, Argument>)
-    (void)sizeof(diagnose::map_applied_to_wrong_space<map_text<From, To>, joined_text<"argument in ", Argument::name>>);
-}
-template <class OuterFrom, class OuterTo, class InnerFrom, class InnerTo>
-constexpr void spaces_meet() {
-  if constexpr (is_checked && !std::is_same_v<OuterFrom, InnerTo>)
-    (void)sizeof(diagnose::maps_do_not_meet<joined_text<"outer ", map_text<OuterFrom, OuterTo>>,
-                                            joined_text<"inner ", map_text<InnerFrom, InnerTo>>>);
-}
-}  // namespace rules
-
 /// The matrix and its inverse; the part both kinds of map share.
 struct matrix_pair {
   mat4_rep forward{real(1)};
@@ -51,13 +37,12 @@ class basic_map {
   /// The identity.
   constexpr basic_map() = default;
   constexpr basic_map(detail::raw_tag, matrix_pair m) : m_(m) {}
-  /// A map between other spaces never converts; this only exists to say so in words.
+  /// A map between other spaces never converts; declared to say so in words.
   template <class A2, class B2>
     requires(!std::is_same_v<A2, A> || !std::is_same_v<B2, B>)
-  constexpr basic_map(const basic_map<A2, B2>& other) : m_(other.raw_value()) {  // NOLINT
-    (void)sizeof(diagnose::map_conversion<joined_text<"given ", rules::map_text<A2, B2>>,
-                                          joined_text<"wanted ", rules::map_text<A, B>>>);
-  }
+  SAFEGI_MISTAKE("a map<A, B> is never a map between other spaces; inverse(m) turns map<A, B> into map<B, A>")
+  basic_map(const basic_map<A2, B2>& SAFEGI_REPORTED_AS(diagnose::map_conversion<diagnose::given<diagnose::map<A2, B2>>,
+                                                             diagnose::wanted<diagnose::map<A, B>>>));  // NOLINT
 
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
 
@@ -76,8 +61,10 @@ class basic_map {
   }
   /// A camera at `eye` looking at `target`; camera space as glm::lookAt (looking down -z).
   template <class W>
+  static diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<W>> look_at(basic_point<W>, basic_point<W>, basic_direction<W>);
+  template <class W>
+    requires rules::same_space<A, W>
   static basic_map look_at(basic_point<W> eye, basic_point<W> target, basic_direction<W> up) {
-    rules::applies_to<A, B, W>();
     const mat4_rep view = glm::lookAt(eye.raw_value(), target.raw_value(), up.raw_value());
     return {detail::raw_tag{}, {view, glm::inverse(view)}};
   }
@@ -86,30 +73,40 @@ class basic_map {
 
   // Application: each kind transforms as what it is.
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_point<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_point<B> operator()(basic_point<S> p) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, vec3_rep(m_.forward * vec4_rep(p.raw_value(), real(1)))};
   }
   template <class S, class D>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_vector<S, D>) const;
+  template <class S, class D>
+    requires rules::same_space<A, S>
   constexpr basic_vector<B, D> operator()(basic_vector<S, D> v) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, mat3_rep(m_.forward) * v.raw_value()};
   }
   /// Directions stay unit length (renormalised after non-rigid maps).
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_direction<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_direction<B> operator()(basic_direction<S> d) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, glm::normalize(mat3_rep(m_.forward) * d.raw_value())};
   }
   /// Normals transform by the inverse transpose, then are renormalised.
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_normal<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_normal<B> operator()(basic_normal<S> n) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, glm::normalize(glm::transpose(mat3_rep(m_.inverse)) * n.raw_value())};
   }
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_hpoint<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, m_.forward * h.raw_value()};
   }
 
@@ -136,13 +133,17 @@ class basic_projective_map {
   static basic_projective_map from_matrix(const mat4_rep& m) { return {detail::raw_tag{}, {m, glm::inverse(m)}}; }
 
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_point<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_hpoint<B> operator()(basic_point<S> p) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, m_.forward * vec4_rep(p.raw_value(), real(1))};
   }
   template <class S>
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_hpoint<S>) const;
+  template <class S>
+    requires rules::same_space<A, S>
   constexpr basic_hpoint<B> operator()(basic_hpoint<S> h) const {
-    rules::applies_to<A, B, S>();
     return {detail::raw_tag{}, m_.forward * h.raw_value()};
   }
 
@@ -196,18 +197,24 @@ constexpr basic_projective_map<B, A> inverse(const basic_projective_map<A, B>& m
 // (auto return types: the check runs as soon as the call is seen, so its error comes
 // before any error about what the caller does with the result.)
 template <class B, class C, class A, class B2>
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_map<B, C>&, const basic_map<A, B2>&);
+template <class B, class C, class A, class B2>
+  requires rules::same_space<B, B2>
 constexpr auto operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
-  rules::spaces_meet<B, C, A, B2>();
   return basic_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_projective_map<B, C>&, const basic_map<A, B2>&);
+template <class B, class C, class A, class B2>
+  requires rules::same_space<B, B2>
 constexpr auto operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
-  rules::spaces_meet<B, C, A, B2>();
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_map<B, C>&, const basic_projective_map<A, B2>&);
+template <class B, class C, class A, class B2>
+  requires rules::same_space<B, B2>
 constexpr auto operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
-  rules::spaces_meet<B, C, A, B2>();
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 

@@ -65,16 +65,15 @@ class basic_quantity {
   constexpr basic_quantity(zero_t) {}  // NOLINT: implicit, zero has every dimension
   constexpr basic_quantity(detail::raw_tag, T value) : value_(value) {}
 
-  // Conversions that are always mistakes; they exist so the error names both sides.
+  // Conversions that are always mistakes, declared so that the error names both sides
+  // (diagnose.hpp); never defined.
   template <class E>
     requires(!std::is_same_v<E, D>)
-  constexpr basic_quantity(basic_quantity<E, T> other) : value_(other.raw_value()) {  // NOLINT
-    rules::convertible_dimension<E, D>();
-  }
+  SAFEGI_MISTAKE("cannot convert a quantity of one dimension into another")
+  basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
   template <arithmetic U>
-  constexpr basic_quantity(U number) : value_(T(number)) {  // NOLINT
-    rules::number_needs_dimensionless<"conversion", D>();
-  }
+  SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
+  basic_quantity(U SAFEGI_REPORTED_AS(diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
 
   /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
   [[nodiscard]] constexpr T raw_value() const { return value_; }
@@ -82,18 +81,22 @@ class basic_quantity {
   constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
   constexpr basic_quantity operator+() const { return *this; }
 
-  template <class E>
-  constexpr basic_quantity& operator+=(basic_quantity<E, T> other) {
-    rules::same_dimension<"+=", D, E>();
+  constexpr basic_quantity& operator+=(basic_quantity other) {
     value_ += other.raw_value();
     return *this;
   }
-  template <class E>
-  constexpr basic_quantity& operator-=(basic_quantity<E, T> other) {
-    rules::same_dimension<"-=", D, E>();
+  constexpr basic_quantity& operator-=(basic_quantity other) {
     value_ -= other.raw_value();
     return *this;
   }
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+=(basic_quantity<E, T>);
+  template <class E, class U>
+  diagnose::representation_mismatch<diagnose::op::plus_assign, T, U> operator+=(basic_quantity<E, U>);
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-=(basic_quantity<E, T>);
+  template <class E, class U>
+  diagnose::representation_mismatch<diagnose::op::minus_assign, T, U> operator-=(basic_quantity<E, U>);
   template <arithmetic U>
   constexpr basic_quantity& operator*=(U factor) {
     value_ *= T(factor);
@@ -199,66 +202,41 @@ constexpr quantity<D, rep_of<Q>> dimension_cast(Q q) {
 
 // ---- operators (only basic_quantity needs them; plain numbers have their own)
 
-template <class D, class E, class T>
-constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<E, T> b) {
-  rules::same_dimension<"+", D, E>();
+// Each operation on two quantities has its reports beside it (diagnose.hpp): the operation
+// takes one dimension and one representation twice, so any other pair selects a report
+// (partial ordering: the more specialised signature wins), which names the two sides.
+template <class D, class T>
+constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E, class T>
-constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, basic_quantity<E, T> b) {
-  rules::same_dimension<"-", D, E>();
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+(basic_quantity<D, T>, basic_quantity<E, T>);
+template <class D, class E, class T, class U>
+diagnose::representation_mismatch<diagnose::op::plus, T, U> operator+(basic_quantity<D, T>, basic_quantity<E, U>);
+template <class D, class T>
+constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E, class T>
-constexpr bool operator==(basic_quantity<D, T> a, basic_quantity<E, T> b) {
-  rules::same_dimension<"==", D, E>();
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-(basic_quantity<D, T>, basic_quantity<E, T>);
+template <class D, class E, class T, class U>
+diagnose::representation_mismatch<diagnose::op::minus, T, U> operator-(basic_quantity<D, T>, basic_quantity<E, U>);
+template <class D, class T>
+constexpr bool operator==(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return a.raw_value() == b.raw_value();
 }
 template <class D, class E, class T>
-constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quantity<E, T> b) {
-  rules::same_dimension<"<=>", D, E>();
+diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator==(basic_quantity<D, T>, basic_quantity<E, T>);
+template <class D, class E, class T, class U>
+diagnose::representation_mismatch<diagnose::op::equal, T, U> operator==(basic_quantity<D, T>, basic_quantity<E, U>);
+template <class D, class T>
+constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return a.raw_value() <=> b.raw_value();
 }
-
-// Quantities of different representations (float and double) do not mix silently; these
-// overloads exist to say so in words instead of "no match for operator+" (auto: the
-// check runs as soon as the call is seen, before any error about its result).
+template <class D, class E, class T>
+diagnose::dimension_mismatch<diagnose::op::compare, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator<=>(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator+(basic_quantity<D, T> a, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"+", T, U>);
-  return a;
-}
-template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator-(basic_quantity<D, T> a, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"-", T, U>);
-  return a;
-}
-template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator*(basic_quantity<D, T> a, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"*", T, U>);
-  return a;
-}
-template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator/(basic_quantity<D, T> a, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"/", T, U>);
-  return a;
-}
-template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator==(basic_quantity<D, T>, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"==", T, U>);
-  return bool(false);
-}
-template <class D, class E, class T, class U>
-  requires(!std::is_same_v<T, U>)
-constexpr auto operator<=>(basic_quantity<D, T>, basic_quantity<E, U>) {
-  (void)sizeof(rules::representation_report<"<=>", T, U>);
-  return std::partial_ordering::unordered;
-}
+diagnose::representation_mismatch<diagnose::op::compare, T, U> operator<=>(basic_quantity<D, T>, basic_quantity<E, U>);
 
 template <class D, class T>
 constexpr bool operator==(basic_quantity<D, T> a, zero_t) {
@@ -272,35 +250,17 @@ constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, zero_t) {
 // A plain number next to a dimensioned quantity in + - == < ... is a mistake; these
 // overloads exist to say so in words (see diagnose.hpp).
 template <class D, class T, arithmetic U>
-constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, U) {
-  rules::number_needs_dimensionless<"+", D>();
-  return a;
-}
+diagnose::plain_number_with_dimension<diagnose::op::plus, in_words<D>> operator+(basic_quantity<D, T>, U);
 template <class D, class T, arithmetic U>
-constexpr basic_quantity<D, T> operator+(U, basic_quantity<D, T> b) {
-  rules::number_needs_dimensionless<"+", D>();
-  return b;
-}
+diagnose::plain_number_with_dimension<diagnose::op::plus, in_words<D>> operator+(U, basic_quantity<D, T>);
 template <class D, class T, arithmetic U>
-constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, U) {
-  rules::number_needs_dimensionless<"-", D>();
-  return a;
-}
+diagnose::plain_number_with_dimension<diagnose::op::minus, in_words<D>> operator-(basic_quantity<D, T>, U);
 template <class D, class T, arithmetic U>
-constexpr basic_quantity<D, T> operator-(U, basic_quantity<D, T> b) {
-  rules::number_needs_dimensionless<"-", D>();
-  return b;
-}
+diagnose::plain_number_with_dimension<diagnose::op::minus, in_words<D>> operator-(U, basic_quantity<D, T>);
 template <class D, class T, arithmetic U>
-constexpr bool operator==(basic_quantity<D, T>, U) {
-  rules::number_needs_dimensionless<"==", D>();
-  return false;
-}
+diagnose::plain_number_with_dimension<diagnose::op::equal, in_words<D>> operator==(basic_quantity<D, T>, U);
 template <class D, class T, arithmetic U>
-constexpr std::partial_ordering operator<=>(basic_quantity<D, T>, U) {
-  rules::number_needs_dimensionless<"<=>", D>();
-  return std::partial_ordering::unordered;
-}
+diagnose::plain_number_with_dimension<diagnose::op::compare, in_words<D>> operator<=>(basic_quantity<D, T>, U);
 
 template <class D, class E, class T>
 constexpr quantity<dim::product<D, E>, T> operator*(basic_quantity<D, T> a, basic_quantity<E, T> b) {
@@ -310,6 +270,10 @@ template <class D, class E, class T>
 constexpr quantity<dim::quotient<D, E>, T> operator/(basic_quantity<D, T> a, basic_quantity<E, T> b) {
   return make_quantity<dim::quotient<D, E>, T>(a.raw_value() / b.raw_value());
 }
+template <class D, class E, class T, class U>
+diagnose::representation_mismatch<diagnose::op::times, T, U> operator*(basic_quantity<D, T>, basic_quantity<E, U>);
+template <class D, class E, class T, class U>
+diagnose::representation_mismatch<diagnose::op::divide, T, U> operator/(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T, arithmetic U>
 constexpr basic_quantity<D, T> operator*(basic_quantity<D, T> a, U factor) {
   return {detail::raw_tag{}, a.raw_value() * T(factor)};
@@ -343,15 +307,19 @@ constexpr Q abs(Q q) {
 }
 
 template <quantity_like Q, quantity_like R>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q min(Q a, R b) {
-  rules::same_dimension<"min", dimension_of<Q>, dimension_of<R>>();
   return raw(b) < raw(a) ? detail::same_kind<Q>(raw(b)) : a;
 }
 template <quantity_like Q, quantity_like R>
+diagnose::dimension_mismatch<diagnose::op::min, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> min(Q, R);
+template <quantity_like Q, quantity_like R>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q max(Q a, R b) {
-  rules::same_dimension<"max", dimension_of<Q>, dimension_of<R>>();
   return raw(a) < raw(b) ? detail::same_kind<Q>(raw(b)) : a;
 }
+template <quantity_like Q, quantity_like R>
+diagnose::dimension_mismatch<diagnose::op::max, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> max(Q, R);
 /// max(x, safegi::zero), min(x, safegi::zero): zero has every dimension.
 template <quantity_like Q>
 constexpr Q max(Q a, zero_t) {
@@ -370,27 +338,37 @@ constexpr Q min(zero_t, Q b) {
   return safegi::min(b, zero);
 }
 template <quantity_like Q, quantity_like L, quantity_like H>
+diagnose::dimension_mismatch<diagnose::op::clamp, in_words<dimension_of<Q>>, in_words<std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>,
+                                             dimension_of<L>>>, ratio_in_words<dimension_of<Q>, std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>,
+                                             dimension_of<L>>>>
+clamp(Q, L, H);
+template <quantity_like Q, quantity_like L, quantity_like H>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<L>> && rules::same_dimension<dimension_of<Q>, dimension_of<H>>
 constexpr Q clamp(Q q, L low, H high) {
-  rules::same_dimension<"clamp", dimension_of<Q>, dimension_of<L>>();
-  rules::same_dimension<"clamp", dimension_of<Q>, dimension_of<H>>();
   return detail::same_kind<Q>(raw(q) < raw(low) ? raw(low) : (raw(high) < raw(q) ? raw(high) : raw(q)));
 }
 /// a + t (b - a), like std::lerp; t is a plain number.
 template <quantity_like Q, quantity_like R>
+diagnose::dimension_mismatch<diagnose::op::lerp, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> lerp(Q, R, rep_of<Q>);
+template <quantity_like Q, quantity_like R>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q lerp(Q a, R b, rep_of<Q> t) {
-  rules::same_dimension<"lerp", dimension_of<Q>, dimension_of<R>>();
   return detail::same_kind<Q>((rep_of<Q>(1) - t) * raw(a) + t * raw(b));
 }
 
 template <quantity_like Q>
+diagnose::sqrt_of_odd_exponent<in_words<dimension_of<Q>>> sqrt(Q);
+template <quantity_like Q>
+  requires rules::even_exponents<dimension_of<Q>>
 constexpr quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>> sqrt(Q q) {
-  rules::even_exponents<dimension_of<Q>>();
   return make_quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>>(std::sqrt(raw(q)));
 }
 /// sqrt(max(q, 0)): pbrt's SafeSqrt, for values that rounding can push below zero.
 template <quantity_like Q>
+diagnose::sqrt_of_odd_exponent<in_words<dimension_of<Q>>> safe_sqrt(Q);
+template <quantity_like Q>
+  requires rules::even_exponents<dimension_of<Q>>
 constexpr quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>> safe_sqrt(Q q) {
-  rules::even_exponents<dimension_of<Q>>();
   const rep_of<Q> value = raw(q);
   return make_quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>>(std::sqrt(value > 0 ? value : 0));
 }
@@ -403,55 +381,75 @@ constexpr quantity<dim::pow<dimension_of<Q>, N>, rep_of<Q>> pow(Q q) {
 }
 /// A real exponent needs a dimensionless base.
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::pow, in_words<dimension_of<Q>>> pow(Q, rep_of<Q>);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr rep_of<Q> pow(Q base, rep_of<Q> exponent) {
-  rules::dimensionless<"pow", dimension_of<Q>>();
   return std::pow(raw(base), exponent);
 }
 
 template <quantity_like Q>
+diagnose::argument_is_not_an_angle<diagnose::op::sin, in_words<dimension_of<Q>>> sin(Q);
+template <quantity_like Q>
+  requires rules::angle<dimension_of<Q>>
 constexpr rep_of<Q> sin(Q angle) {
-  rules::angle<"sin", dimension_of<Q>>();
   return std::sin(raw(angle));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_an_angle<diagnose::op::cos, in_words<dimension_of<Q>>> cos(Q);
+template <quantity_like Q>
+  requires rules::angle<dimension_of<Q>>
 constexpr rep_of<Q> cos(Q angle) {
-  rules::angle<"cos", dimension_of<Q>>();
   return std::cos(raw(angle));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_an_angle<diagnose::op::tan, in_words<dimension_of<Q>>> tan(Q);
+template <quantity_like Q>
+  requires rules::angle<dimension_of<Q>>
 constexpr rep_of<Q> tan(Q angle) {
-  rules::angle<"tan", dimension_of<Q>>();
   return std::tan(raw(angle));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::asin, in_words<dimension_of<Q>>> asin(Q);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr quantity<dim::angle, rep_of<Q>> asin(Q ratio) {
-  rules::dimensionless<"asin", dimension_of<Q>>();
   return make_quantity<dim::angle, rep_of<Q>>(std::asin(raw(ratio)));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::acos, in_words<dimension_of<Q>>> acos(Q);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr quantity<dim::angle, rep_of<Q>> acos(Q ratio) {
-  rules::dimensionless<"acos", dimension_of<Q>>();
   return make_quantity<dim::angle, rep_of<Q>>(std::acos(raw(ratio)));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::atan, in_words<dimension_of<Q>>> atan(Q);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr quantity<dim::angle, rep_of<Q>> atan(Q ratio) {
-  rules::dimensionless<"atan", dimension_of<Q>>();
   return make_quantity<dim::angle, rep_of<Q>>(std::atan(raw(ratio)));
 }
 /// The angle of (x, y); x and y may have any dimension, but the same one.
 template <quantity_like Q, quantity_like R>
+diagnose::dimension_mismatch<diagnose::op::atan2, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> atan2(Q, R);
+template <quantity_like Q, quantity_like R>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr quantity<dim::angle, rep_of<Q>> atan2(Q y, R x) {
-  rules::same_dimension<"atan2", dimension_of<Q>, dimension_of<R>>();
   return make_quantity<dim::angle, rep_of<Q>>(std::atan2(raw(y), raw(x)));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::exp, in_words<dimension_of<Q>>> exp(Q);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr rep_of<Q> exp(Q exponent) {
-  rules::dimensionless<"exp", dimension_of<Q>>();
   return std::exp(raw(exponent));
 }
 template <quantity_like Q>
+diagnose::argument_is_not_dimensionless<diagnose::op::log, in_words<dimension_of<Q>>> log(Q);
+template <quantity_like Q>
+  requires rules::dimensionless<dimension_of<Q>>
 constexpr rep_of<Q> log(Q argument) {
-  rules::dimensionless<"log", dimension_of<Q>>();
   return std::log(raw(argument));
 }
 template <quantity_like Q>

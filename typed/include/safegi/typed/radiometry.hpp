@@ -26,8 +26,10 @@ constexpr quantity<dim::solid_angle_per_projected_area> solid_angle_per_projecte
 
 namespace detail {
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> abs_cosine(basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr real abs_cosine(basic_normal<S> n, basic_direction<S2> w) {
-  rules::same_space<"dot", S, S2>();
   const real cosine = glm::dot(n.raw_value(), w.raw_value());
   return cosine < real(0) ? -cosine : cosine;
 }

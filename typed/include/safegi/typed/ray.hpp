@@ -18,9 +18,8 @@ struct basic_ray {
   /// A ray of another space never converts; this only exists to say so in words.
   template <class S2>
     requires(!std::is_same_v<S2, S>)
-  constexpr basic_ray(const basic_ray<S2>& other) : o(detail::raw_tag{}, raw(other.o)), d(detail::raw_tag{}, raw(other.d)) {
-    rules::convertible_space<"ray", S2, S>();
-  }
+  SAFEGI_MISTAKE("cannot convert a ray from one space into another by assignment: transform(m, r)")
+  basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
 
   /// The point at distance t along the ray.
   constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
@@ -31,8 +30,10 @@ using ray = basic_ray<mode_space<S>>;
 
 /// A ray moves to another space by moving its origin and its direction.
 template <class A, class B, class S>
+diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> transform(const basic_map<A, B>&, const basic_ray<S>&);
+template <class A, class B, class S>
+  requires rules::same_space<A, S>
 constexpr auto transform(const basic_map<A, B>& m, const basic_ray<S>& r) {  // auto: see map.hpp's operator*
-  rules::applies_to<A, B, S>();
   return basic_ray<B>{m(r.o), m(r.d)};
 }
 

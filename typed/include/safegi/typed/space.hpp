@@ -150,17 +150,14 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   // Conversions that are always mistakes; they exist so the error names both sides.
   template <class S2>
     requires(!std::is_same_v<S2, S>)
-  constexpr basic_point(basic_point<S2> other) : base(other.raw_value()) {  // NOLINT
-    rules::convertible_space<"point", S2, S>();
-  }
+  SAFEGI_MISTAKE("cannot convert a point from one space into another by assignment: apply a map<From, To>")
+  basic_point(basic_point<S2> SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::point, S2, S>));  // NOLINT
   template <class S2, class D>
-  constexpr basic_point(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
-    (void)sizeof(diagnose::wrong_geometric_kind<"point", "vector", S2::name>);
-  }
+  SAFEGI_MISTAKE("a vector is not a point: p + v moves a point")
+  basic_point(basic_vector<S2, D> SAFEGI_REPORTED_AS(diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::vector, S2>));  // NOLINT
   template <class S2>
-  constexpr basic_point(basic_hpoint<S2> h) : base(vec3_rep(h.raw_value())) {  // NOLINT
-    (void)sizeof(diagnose::wrong_geometric_kind<"point", "hpoint", S2::name>);
-  }
+  SAFEGI_MISTAKE("an hpoint is not a point: dehomogenize(h)")
+  basic_point(basic_hpoint<S2> SAFEGI_REPORTED_AS(diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::hpoint, S2>));  // NOLINT
 
   [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
@@ -182,11 +179,13 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2, class E>
-    requires(!std::is_same_v<S2, S> || !std::is_same_v<E, D>)
-  constexpr basic_vector(basic_vector<S2, E> other) : base(other.raw_value()) {  // NOLINT
-    rules::convertible_space<"vector", S2, S>();
-    rules::convertible_dimension<E, D>();
-  }
+    requires(!std::is_same_v<S2, S>)
+  SAFEGI_MISTAKE("cannot convert a vector from one space into another by assignment: apply a map<From, To>")
+  basic_vector(basic_vector<S2, E> SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::vector, S2, S>));  // NOLINT
+  template <class E>
+    requires(!std::is_same_v<E, D>)
+  SAFEGI_MISTAKE("cannot convert a vector of one dimension into another")
+  basic_vector(basic_vector<S, E> SAFEGI_REPORTED_AS(diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
 
   [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
@@ -194,20 +193,22 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
 
   constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
-  template <class S2, class E>
-  constexpr basic_vector& operator+=(basic_vector<S2, E> other) {
-    rules::same_space<"+=", S, S2>();
-    rules::same_dimension<"+=", D, E>();
+  constexpr basic_vector& operator+=(basic_vector other) {
     this->xyz_ += other.raw_value();
     return *this;
   }
-  template <class S2, class E>
-  constexpr basic_vector& operator-=(basic_vector<S2, E> other) {
-    rules::same_space<"-=", S, S2>();
-    rules::same_dimension<"-=", D, E>();
+  constexpr basic_vector& operator-=(basic_vector other) {
     this->xyz_ -= other.raw_value();
     return *this;
   }
+  template <class S2, class E>
+  diagnose::space_mismatch<diagnose::op::plus_assign, S, S2> operator+=(basic_vector<S2, E>);
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+=(basic_vector<S, E>);
+  template <class S2, class E>
+  diagnose::space_mismatch<diagnose::op::minus_assign, S, S2> operator-=(basic_vector<S2, E>);
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-=(basic_vector<S, E>);
   template <arithmetic U>
   constexpr basic_vector& operator*=(U factor) {
     this->xyz_ *= real(factor);
@@ -234,18 +235,14 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   constexpr basic_direction(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)
-  constexpr basic_direction(basic_direction<S2> other) : base(other.raw_value()) {  // NOLINT
-    rules::convertible_space<"direction", S2, S>();
-  }
+  SAFEGI_MISTAKE("cannot convert a direction from one space into another by assignment: apply a map<From, To>")
+  basic_direction(basic_direction<S2> SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::direction, S2, S>));  // NOLINT
   template <class S2, class D>
-  constexpr basic_direction(basic_vector<S2, D> v) : base(v.raw_value()) {  // NOLINT
-    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "vector (use normalize)", S2::name>);
-  }
-  /// A normal is not a direction: this only exists to say so in words.
+  SAFEGI_MISTAKE("a vector is not a direction: normalize(v)")
+  basic_direction(basic_vector<S2, D> SAFEGI_REPORTED_AS(diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::vector_to_normalize, S2>));  // NOLINT
   template <class S2>
-  constexpr basic_direction(basic_normal<S2>) {  // NOLINT
-    (void)sizeof(diagnose::wrong_geometric_kind<"direction", "normal", S2::name>);
-  }
+  SAFEGI_MISTAKE("a normal is not a direction: to_direction(n)")
+  basic_direction(basic_normal<S2> SAFEGI_REPORTED_AS(diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::normal, S2>));  // NOLINT
 
   [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
@@ -268,14 +265,11 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   constexpr basic_normal(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2>
     requires(!std::is_same_v<S2, S>)
-  constexpr basic_normal(basic_normal<S2> other) : base(other.raw_value()) {  // NOLINT
-    rules::convertible_space<"normal", S2, S>();
-  }
-  /// A direction is not a normal: this only exists to say so in words.
+  SAFEGI_MISTAKE("cannot convert a normal from one space into another by assignment: apply a map<From, To>")
+  basic_normal(basic_normal<S2> SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::normal, S2, S>));  // NOLINT
   template <class S2>
-  constexpr basic_normal(basic_direction<S2>) {  // NOLINT
-    (void)sizeof(diagnose::wrong_geometric_kind<"normal", "direction", S2::name>);
-  }
+  SAFEGI_MISTAKE("a direction is not a normal: to_normal(d)")
+  basic_normal(basic_direction<S2> SAFEGI_REPORTED_AS(diagnose::wrong_geometric_kind<diagnose::kind::normal, diagnose::kind::direction, S2>));  // NOLINT
 
   [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
@@ -325,53 +319,80 @@ struct raw_access<basic_hpoint<S>> : detail::raw_access_by_member<basic_hpoint<S
 // ---- affine arithmetic
 
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr detail::displacement<S> operator-(basic_point<S> a, basic_point<S2> b) {
-  rules::same_space<"-", S, S2>();
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_point<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<detail::length_dimension>, in_words<D>, ratio_in_words<detail::length_dimension, D>> operator+(basic_point<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>
 constexpr basic_point<S> operator+(basic_point<S> p, basic_vector<S2, D> v) {
-  rules::same_space<"+", S, S2>();
-  rules::same_dimension<"+", detail::length_dimension, D>();
   return {detail::raw_tag{}, p.raw_value() + v.raw_value()};
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::plus, S2, S> operator+(basic_vector<S2, D>, basic_point<S>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<detail::length_dimension>, ratio_in_words<D, detail::length_dimension>> operator+(basic_vector<S2, D>, basic_point<S>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>
 constexpr basic_point<S> operator+(basic_vector<S2, D> v, basic_point<S> p) {
   return p + v;
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_point<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<detail::length_dimension>, in_words<D>, ratio_in_words<detail::length_dimension, D>> operator-(basic_point<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>
 constexpr basic_point<S> operator-(basic_point<S> p, basic_vector<S2, D> v) {
-  rules::same_space<"-", S, S2>();
-  rules::same_dimension<"-", detail::length_dimension, D>();
   return {detail::raw_tag{}, p.raw_value() - v.raw_value()};
 }
 template <class S, class S2>
-constexpr basic_point<S> operator+(basic_point<S> a, basic_point<S2>) {
-  (void)sizeof(diagnose::cannot_add_points<S::name>);
-  return a;
-}
+diagnose::cannot_add_points<S> operator+(basic_point<S>, basic_point<S2>);
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr bool operator==(basic_point<S> a, basic_point<S2> b) {
-  rules::same_space<"==", S, S2>();
   return a.raw_value() == b.raw_value();
 }
 
 template <class S, class S2, class D, class E>
+diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2> && rules::same_dimension<D, E>
 constexpr basic_vector<S, D> operator+(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  rules::same_space<"+", S, S2>();
-  rules::same_dimension<"+", D, E>();
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class S, class S2, class D, class E>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2> && rules::same_dimension<D, E>
 constexpr basic_vector<S, D> operator-(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  rules::same_space<"-", S, S2>();
-  rules::same_dimension<"-", D, E>();
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class S, class S2, class D, class E>
+diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator==(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2> && rules::same_dimension<D, E>
 constexpr bool operator==(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  rules::same_space<"==", S, S2>();
-  rules::same_dimension<"==", D, E>();
   return a.raw_value() == b.raw_value();
 }
 template <class S, class D, class Q>
@@ -417,83 +438,119 @@ constexpr auto operator*(Q length, basic_normal<S> n) {
 }
 /// The sum of two directions (e.g. the half vector wo + wi) is a dimensionless vector.
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_direction<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::dimensionless> operator+(basic_direction<S> a, basic_direction<S2> b) {
-  rules::same_space<"+", S, S2>();
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_direction<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::dimensionless> operator-(basic_direction<S> a, basic_direction<S2> b) {
-  rules::same_space<"-", S, S2>();
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_direction<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr bool operator==(basic_direction<S> a, basic_direction<S2> b) {
-  rules::same_space<"==", S, S2>();
   return a.raw_value() == b.raw_value();
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_normal<S>, basic_normal<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr bool operator==(basic_normal<S> a, basic_normal<S2> b) {
-  rules::same_space<"==", S, S2>();
   return a.raw_value() == b.raw_value();
 }
 
 // ---- products
 
 template <class S, class S2, class D, class E>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::product<D, E>> dot(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  rules::same_space<"dot", S, S2>();
   return make_quantity<dim::product<D, E>, real>(glm::dot(a.raw_value(), b.raw_value()));
 }
 template <class S, class S2, class D, class E>
+diagnose::space_mismatch<diagnose::op::cross, S, S2> cross(basic_vector<S, D>, basic_vector<S2, E>);
+template <class S, class S2, class D, class E>
+  requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::product<D, E>> cross(basic_vector<S, D> a, basic_vector<S2, E> b) {
-  rules::same_space<"cross", S, S2>();
   return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_direction<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr real dot(basic_direction<S> a, basic_direction<S2> b) {
-  rules::same_space<"dot", S, S2>();
   return glm::dot(a.raw_value(), b.raw_value());
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::cross, S, S2> cross(basic_direction<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::dimensionless> cross(basic_direction<S> a, basic_direction<S2> b) {
-  rules::same_space<"cross", S, S2>();
   return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
 }
 /// The projected-cosine factor n·ω: the only way to get a quantity<dim::proj>.
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::proj> dot(basic_normal<S> n, basic_direction<S2> w) {
-  rules::same_space<"dot", S, S2>();
   return make_quantity<mode_dimension<dim::proj>, real>(glm::dot(n.raw_value(), w.raw_value()));
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_direction<S>, basic_normal<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::proj> dot(basic_direction<S> w, basic_normal<S2> n) {
   return dot(n, w);
 }
 /// |n·ω|, for two-sided surfaces.
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> abs_dot(basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::proj> abs_dot(basic_normal<S> n, basic_direction<S2> w) {
   return safegi::abs(dot(n, w));
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_normal<S>, basic_normal<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr real dot(basic_normal<S> a, basic_normal<S2> b) {
-  rules::same_space<"dot", S, S2>();
   return glm::dot(a.raw_value(), b.raw_value());
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_direction<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
 constexpr quantity<D> dot(basic_direction<S> u, basic_vector<S2, D> v) {
-  rules::same_space<"dot", S, S2>();
   return make_quantity<D, real>(glm::dot(u.raw_value(), v.raw_value()));
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::dot, S2, S> dot(basic_vector<S2, D>, basic_direction<S>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
 constexpr quantity<D> dot(basic_vector<S2, D> v, basic_direction<S> u) {
   return dot(u, v);
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> dot(basic_normal<S>, basic_vector<S2, D>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
 constexpr quantity<D> dot(basic_normal<S> n, basic_vector<S2, D> v) {
-  rules::same_space<"dot", S, S2>();
   return make_quantity<D, real>(glm::dot(n.raw_value(), v.raw_value()));
 }
 template <class S, class S2, class D>
+diagnose::space_mismatch<diagnose::op::dot, S2, S> dot(basic_vector<S2, D>, basic_normal<S>);
+template <class S, class S2, class D>
+  requires rules::same_space<S, S2>
 constexpr quantity<D> dot(basic_vector<S2, D> v, basic_normal<S> n) {
   return dot(n, v);
 }
@@ -513,36 +570,50 @@ constexpr basic_direction<S> normalize(basic_vector<S, D> v) {
   return {detail::raw_tag{}, glm::normalize(v.raw_value())};
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> distance(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::length> distance(basic_point<S> a, basic_point<S2> b) {
   return length(a - b);
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::minus, S, S2> distance_squared(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::area> distance_squared(basic_point<S> a, basic_point<S2> b) {
   return length_squared(a - b);
 }
 /// The point a + t (b - a).
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::lerp, S, S2> lerp(basic_point<S>, basic_point<S2>, real);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_point<S> lerp(basic_point<S> a, basic_point<S2> b, real t) {
-  rules::same_space<"lerp", S, S2>();
   return {detail::raw_tag{}, (real(1) - t) * a.raw_value() + t * b.raw_value()};
 }
 /// b0 p0 + b1 p1 + b2 p2 with b0 + b1 + b2 = 1 (a point on a triangle).
 template <class S, class S1, class S2>
+diagnose::space_mismatch<diagnose::op::barycentric, S, std::conditional_t<std::is_same_v<S, S1>, S2, S1>>
+barycentric(basic_point<S>, basic_point<S1>, basic_point<S2>, real, real, real);
+template <class S, class S1, class S2>
+  requires rules::same_space<S, S1> && rules::same_space<S, S2>
 constexpr basic_point<S> barycentric(basic_point<S> p0, basic_point<S1> p1, basic_point<S2> p2, real b0,
                                      real b1, real b2) {
-  rules::same_space<"barycentric", S, S1>();
-  rules::same_space<"barycentric", S, S2>();
   return {detail::raw_tag{}, b0 * p0.raw_value() + b1 * p1.raw_value() + b2 * p2.raw_value()};
 }
 /// Componentwise minimum and maximum of two points (bounding boxes).
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::min, S, S2> min(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_point<S> min(basic_point<S> a, basic_point<S2> b) {
-  rules::same_space<"min", S, S2>();
   return {detail::raw_tag{}, glm::min(a.raw_value(), b.raw_value())};
 }
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::max, S, S2> max(basic_point<S>, basic_point<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_point<S> max(basic_point<S> a, basic_point<S2> b) {
-  rules::same_space<"max", S, S2>();
   return {detail::raw_tag{}, glm::max(a.raw_value(), b.raw_value())};
 }
 /// Componentwise absolute value of a vector.
@@ -563,13 +634,18 @@ constexpr basic_direction<S> to_direction(basic_normal<S> n) {
 }
 /// n flipped into the hemisphere of w.
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2> face_forward(basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_normal<S> face_forward(basic_normal<S> n, basic_direction<S2> w) {
   return dot(n, w) < zero ? -n : n;
 }
 /// The mirror direction of w about n (both pointing away from the surface).
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::reflect, S, S2> reflect(basic_direction<S>, basic_normal<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr basic_direction<S> reflect(basic_direction<S> w, basic_normal<S2> n) {
-  rules::same_space<"reflect", S, S2>();
   return {detail::raw_tag{}, -w.raw_value() + real(2) * glm::dot(w.raw_value(), n.raw_value()) * n.raw_value()};
 }
 /// The point an hpoint stands for (divides by w).

@@ -25,12 +25,11 @@ class basic_spectrum {
   /// The same value in every channel.
   constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
   constexpr basic_spectrum(detail::raw_tag, vec3_rep rgb) : rgb_(rgb) {}
-  /// Converting between dimensions is always a mistake; this only exists to say so in words.
+  /// Converting between dimensions is always a mistake, declared to say so in words.
   template <class E>
     requires(!std::is_same_v<E, D>)
-  constexpr basic_spectrum(basic_spectrum<E> other) : rgb_(other.raw_value()) {  // NOLINT
-    rules::convertible_dimension<E, D>();
-  }
+  SAFEGI_MISTAKE("cannot convert a spectrum of one dimension into another")
+  basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
 
   [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
   [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
@@ -39,18 +38,18 @@ class basic_spectrum {
   [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
 
   constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
-  template <class E>
-  constexpr basic_spectrum& operator+=(basic_spectrum<E> other) {
-    rules::same_dimension<"+=", D, E>();
+  constexpr basic_spectrum& operator+=(basic_spectrum other) {
     rgb_ += other.raw_value();
     return *this;
   }
-  template <class E>
-  constexpr basic_spectrum& operator-=(basic_spectrum<E> other) {
-    rules::same_dimension<"-=", D, E>();
+  constexpr basic_spectrum& operator-=(basic_spectrum other) {
     rgb_ -= other.raw_value();
     return *this;
   }
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+=(basic_spectrum<E>);
+  template <class E>
+  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-=(basic_spectrum<E>);
   /// Scaling by a dimensionless factor (a plain number or a dimensionless spectrum).
   template <class Q>
     requires arithmetic<Q> || std::is_same_v<Q, basic_spectrum<dim::dimensionless>>
@@ -86,21 +85,24 @@ constexpr spectrum<D> dimension_cast(basic_spectrum<E> s) {
   return {detail::raw_tag{}, s.raw_value()};
 }
 
-template <class D, class E>
-constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<E> b) {
-  rules::same_dimension<"+", D, E>();
+template <class D>
+constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<D> b) {
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E>
-constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<E> b) {
-  rules::same_dimension<"-", D, E>();
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+(basic_spectrum<D>, basic_spectrum<E>);
+template <class D>
+constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<D> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E>
-constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<E> b) {
-  rules::same_dimension<"==", D, E>();
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-(basic_spectrum<D>, basic_spectrum<E>);
+template <class D>
+constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<D> b) {
   return a.raw_value() == b.raw_value();
 }
+template <class D, class E>
+diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator==(basic_spectrum<D>, basic_spectrum<E>);
 template <class D, class E>
 constexpr basic_spectrum<dim::product<D, E>> operator*(basic_spectrum<D> a, basic_spectrum<E> b) {
   return {detail::raw_tag{}, a.raw_value() * b.raw_value()};
@@ -173,19 +175,24 @@ constexpr bool is_black(basic_spectrum<D> s) {
 }
 /// Per-channel exponential (Beer–Lambert transmittance): the exponent must be dimensionless.
 template <class D>
+diagnose::argument_is_not_dimensionless<diagnose::op::exp, in_words<D>> exp(basic_spectrum<D>);
+template <class D>
+  requires rules::dimensionless<D>
 constexpr basic_spectrum<dim::dimensionless> exp(basic_spectrum<D> s) {
-  rules::dimensionless<"exp", D>();
   return {detail::raw_tag{}, glm::exp(s.raw_value())};
 }
 /// Per-channel square root; every exponent of D must be even.
 template <class D>
+diagnose::sqrt_of_odd_exponent<in_words<D>> sqrt(basic_spectrum<D>);
+template <class D>
+  requires rules::even_exponents<D>
 constexpr basic_spectrum<dim::root<D, 2>> sqrt(basic_spectrum<D> s) {
-  rules::even_exponents<D>();
   return {detail::raw_tag{}, glm::sqrt(s.raw_value())};
 }
 template <class D, class E>
-constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<E> b, real t) {
-  rules::same_dimension<"lerp", D, E>();
+diagnose::dimension_mismatch<diagnose::op::lerp, in_words<D>, in_words<E>, ratio_in_words<D, E>> lerp(basic_spectrum<D>, basic_spectrum<E>, real);
+template <class D>
+constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<D> b, real t) {
   return {detail::raw_tag{}, (real(1) - t) * a.raw_value() + t * b.raw_value()};
 }
 

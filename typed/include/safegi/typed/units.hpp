@@ -55,11 +55,12 @@ constexpr auto operator/(Q value, basic_unit<D> u) {
 
 /// The number of `u` in q — the greppable way out of the typed world.
 template <quantity_like Q, class D>
+  requires rules::same_dimension<dimension_of<Q>, D>
 constexpr rep_of<Q> in(Q q, basic_unit<D> u) {
-  if constexpr (is_checked && !std::is_same_v<dimension_of<Q>, D>)
-    (void)sizeof(diagnose::unit_of_another_dimension<dimension_text<dimension_of<Q>>, dimension_text<D>>);
   return raw(q) / rep_of<Q>(u.factor);
 }
+template <quantity_like Q, class D>
+diagnose::unit_of_another_dimension<in_words<dimension_of<Q>>, in_words<D>> in(Q, basic_unit<D>);
 
 /// The vocabulary's units (vocabulary.def, the same as shaders' and scene files'), in
 /// both spellings where there are two: units::meter and units::metre are one unit.
