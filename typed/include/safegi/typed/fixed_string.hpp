@@ -1,6 +1,6 @@
-// A string usable as a template argument. Base dimensions and spaces are named with
-// one, and g++ prints its text verbatim in diagnostics (safegi::fixed_string<9>{"radiance"}),
-// which is how compile errors come to name dimensions and spaces in words.
+// A string usable as a template argument: base dimensions and spaces are named with one,
+// for printing and reflection. (Compile errors name them by type instead, diagnose.hpp:
+// clang 14 prints a fixed_string argument as character codes.)
 #pragma once
 
 #include <cstddef>

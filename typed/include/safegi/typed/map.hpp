@@ -61,7 +61,8 @@ class basic_map {
   }
   /// A camera at `eye` looking at `target`; camera space as glm::lookAt (looking down -z).
   template <class W>
-  static diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<W>> look_at(basic_point<W>, basic_point<W>, basic_direction<W>);
+  static diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<W>>
+  look_at(basic_point<W>, basic_point<W>, basic_direction<W>);
   template <class W>
     requires rules::same_space<A, W>
   static basic_map look_at(basic_point<W> eye, basic_point<W> target, basic_direction<W> up) {
@@ -80,7 +81,8 @@ class basic_map {
     return {detail::raw_tag{}, vec3_rep(m_.forward * vec4_rep(p.raw_value(), real(1)))};
   }
   template <class S, class D>
-  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_vector<S, D>) const;
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>>
+  operator()(basic_vector<S, D>) const;
   template <class S, class D>
     requires rules::same_space<A, S>
   constexpr basic_vector<B, D> operator()(basic_vector<S, D> v) const {
@@ -88,7 +90,8 @@ class basic_map {
   }
   /// Directions stay unit length (renormalised after non-rigid maps).
   template <class S>
-  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> operator()(basic_direction<S>) const;
+  diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>>
+  operator()(basic_direction<S>) const;
   template <class S>
     requires rules::same_space<A, S>
   constexpr basic_direction<B> operator()(basic_direction<S> d) const {
@@ -194,27 +197,28 @@ constexpr basic_projective_map<B, A> inverse(const basic_projective_map<A, B>& m
 }
 
 /// Composition where spaces meet: map<B, C> * map<A, B> is map<A, C> (apply the right one first).
-// (auto return types: the check runs as soon as the call is seen, so its error comes
-// before any error about what the caller does with the result.)
 template <class B, class C, class A, class B2>
-diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_map<B, C>&, const basic_map<A, B2>&);
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>>
+operator*(const basic_map<B, C>&, const basic_map<A, B2>&);
 template <class B, class C, class A, class B2>
   requires rules::same_space<B, B2>
-constexpr auto operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
+constexpr basic_map<A, C> operator*(const basic_map<B, C>& outer, const basic_map<A, B2>& inner) {
   return basic_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
-diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_projective_map<B, C>&, const basic_map<A, B2>&);
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>>
+operator*(const basic_projective_map<B, C>&, const basic_map<A, B2>&);
 template <class B, class C, class A, class B2>
   requires rules::same_space<B, B2>
-constexpr auto operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
+constexpr basic_projective_map<A, C> operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
-diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>> operator*(const basic_map<B, C>&, const basic_projective_map<A, B2>&);
+diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner<diagnose::map<A, B2>>>
+operator*(const basic_map<B, C>&, const basic_projective_map<A, B2>&);
 template <class B, class C, class A, class B2>
   requires rules::same_space<B, B2>
-constexpr auto operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
+constexpr basic_projective_map<A, C> operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 

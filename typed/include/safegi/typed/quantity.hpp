@@ -70,31 +70,35 @@ class basic_quantity {
   template <class E>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE("cannot convert a quantity of one dimension into another")
-  basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
-  template <arithmetic U>
-  SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
-  basic_quantity(U SAFEGI_REPORTED_AS(diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
+    basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(
+        diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+    template <arithmetic U>
+    SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
+    basic_quantity(
+        U SAFEGI_REPORTED_AS(diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
 
-  /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
-  [[nodiscard]] constexpr T raw_value() const { return value_; }
+    /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
+    [[nodiscard]] constexpr T raw_value() const { return value_; }
 
-  constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
-  constexpr basic_quantity operator+() const { return *this; }
+    constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
+    constexpr basic_quantity operator+() const { return *this; }
 
-  constexpr basic_quantity& operator+=(basic_quantity other) {
-    value_ += other.raw_value();
-    return *this;
+    constexpr basic_quantity& operator+=(basic_quantity other) {
+      value_ += other.raw_value();
+      return *this;
   }
   constexpr basic_quantity& operator-=(basic_quantity other) {
     value_ -= other.raw_value();
     return *this;
   }
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+=(basic_quantity<E, T>);
+  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  operator+=(basic_quantity<E, T>);
   template <class E, class U>
   diagnose::representation_mismatch<diagnose::op::plus_assign, T, U> operator+=(basic_quantity<E, U>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-=(basic_quantity<E, T>);
+  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  operator-=(basic_quantity<E, T>);
   template <class E, class U>
   diagnose::representation_mismatch<diagnose::op::minus_assign, T, U> operator-=(basic_quantity<E, U>);
   template <arithmetic U>
@@ -210,7 +214,8 @@ constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E, class T>
-diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+(basic_quantity<D, T>, basic_quantity<E, T>);
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator+(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
 diagnose::representation_mismatch<diagnose::op::plus, T, U> operator+(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
@@ -218,7 +223,8 @@ constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, basic_quantity<
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E, class T>
-diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-(basic_quantity<D, T>, basic_quantity<E, T>);
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator-(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
 diagnose::representation_mismatch<diagnose::op::minus, T, U> operator-(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
@@ -226,7 +232,8 @@ constexpr bool operator==(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return a.raw_value() == b.raw_value();
 }
 template <class D, class E, class T>
-diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator==(basic_quantity<D, T>, basic_quantity<E, T>);
+diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator==(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
 diagnose::representation_mismatch<diagnose::op::equal, T, U> operator==(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
@@ -234,7 +241,8 @@ constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quanti
   return a.raw_value() <=> b.raw_value();
 }
 template <class D, class E, class T>
-diagnose::dimension_mismatch<diagnose::op::compare, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator<=>(basic_quantity<D, T>, basic_quantity<E, T>);
+diagnose::dimension_mismatch<diagnose::op::compare, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator<=>(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
 diagnose::representation_mismatch<diagnose::op::compare, T, U> operator<=>(basic_quantity<D, T>, basic_quantity<E, U>);
 
@@ -312,14 +320,18 @@ constexpr Q min(Q a, R b) {
   return raw(b) < raw(a) ? detail::same_kind<Q>(raw(b)) : a;
 }
 template <quantity_like Q, quantity_like R>
-diagnose::dimension_mismatch<diagnose::op::min, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> min(Q, R);
+diagnose::dimension_mismatch<diagnose::op::min, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
+                             ratio_in_words<dimension_of<Q>, dimension_of<R>>>
+    min(Q, R);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q max(Q a, R b) {
   return raw(a) < raw(b) ? detail::same_kind<Q>(raw(b)) : a;
 }
 template <quantity_like Q, quantity_like R>
-diagnose::dimension_mismatch<diagnose::op::max, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> max(Q, R);
+diagnose::dimension_mismatch<diagnose::op::max, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
+                             ratio_in_words<dimension_of<Q>, dimension_of<R>>>
+    max(Q, R);
 /// max(x, safegi::zero), min(x, safegi::zero): zero has every dimension.
 template <quantity_like Q>
 constexpr Q max(Q a, zero_t) {
@@ -338,18 +350,23 @@ constexpr Q min(zero_t, Q b) {
   return safegi::min(b, zero);
 }
 template <quantity_like Q, quantity_like L, quantity_like H>
-diagnose::dimension_mismatch<diagnose::op::clamp, in_words<dimension_of<Q>>, in_words<std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>,
-                                             dimension_of<L>>>, ratio_in_words<dimension_of<Q>, std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>,
-                                             dimension_of<L>>>>
-clamp(Q, L, H);
+diagnose::dimension_mismatch<
+    diagnose::op::clamp, in_words<dimension_of<Q>>,
+    in_words<std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>, dimension_of<L>>>,
+    ratio_in_words<dimension_of<Q>, std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>,
+                                                       dimension_of<H>, dimension_of<L>>>>
+    clamp(Q, L, H);
 template <quantity_like Q, quantity_like L, quantity_like H>
-  requires rules::same_dimension<dimension_of<Q>, dimension_of<L>> && rules::same_dimension<dimension_of<Q>, dimension_of<H>>
+requires rules::same_dimension<dimension_of<Q>, dimension_of<L>> &&
+    rules::same_dimension<dimension_of<Q>, dimension_of<H>>
 constexpr Q clamp(Q q, L low, H high) {
   return detail::same_kind<Q>(raw(q) < raw(low) ? raw(low) : (raw(high) < raw(q) ? raw(high) : raw(q)));
 }
 /// a + t (b - a), like std::lerp; t is a plain number.
 template <quantity_like Q, quantity_like R>
-diagnose::dimension_mismatch<diagnose::op::lerp, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> lerp(Q, R, rep_of<Q>);
+diagnose::dimension_mismatch<diagnose::op::lerp, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
+                             ratio_in_words<dimension_of<Q>, dimension_of<R>>>
+    lerp(Q, R, rep_of<Q>);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q lerp(Q a, R b, rep_of<Q> t) {
@@ -432,7 +449,9 @@ constexpr quantity<dim::angle, rep_of<Q>> atan(Q ratio) {
 }
 /// The angle of (x, y); x and y may have any dimension, but the same one.
 template <quantity_like Q, quantity_like R>
-diagnose::dimension_mismatch<diagnose::op::atan2, in_words<dimension_of<Q>>, in_words<dimension_of<R>>, ratio_in_words<dimension_of<Q>, dimension_of<R>>> atan2(Q, R);
+diagnose::dimension_mismatch<diagnose::op::atan2, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
+                             ratio_in_words<dimension_of<Q>, dimension_of<R>>>
+    atan2(Q, R);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr quantity<dim::angle, rep_of<Q>> atan2(Q y, R x) {

@@ -19,10 +19,11 @@ struct basic_ray {
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a ray from one space into another by assignment: transform(m, r)")
-  basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
+    basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(
+        diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
 
-  /// The point at distance t along the ray.
-  constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
+    /// The point at distance t along the ray.
+    constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
 };
 
 template <space_type S>
@@ -30,10 +31,11 @@ using ray = basic_ray<mode_space<S>>;
 
 /// A ray moves to another space by moving its origin and its direction.
 template <class A, class B, class S>
-diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>> transform(const basic_map<A, B>&, const basic_ray<S>&);
+diagnose::map_applied_to_wrong_space<diagnose::map<A, B>, diagnose::argument_in<S>>
+transform(const basic_map<A, B>&, const basic_ray<S>&);
 template <class A, class B, class S>
   requires rules::same_space<A, S>
-constexpr auto transform(const basic_map<A, B>& m, const basic_ray<S>& r) {  // auto: see map.hpp's operator*
+constexpr basic_ray<B> transform(const basic_map<A, B>& m, const basic_ray<S>& r) {
   return basic_ray<B>{m(r.o), m(r.d)};
 }
 

@@ -29,27 +29,30 @@ class basic_spectrum {
   template <class E>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE("cannot convert a spectrum of one dimension into another")
-  basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+    basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(
+        diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
 
-  [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
-  [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
-  [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, real>(rgb_.g); }
-  [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, real>(rgb_.b); }
-  [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
+    [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
+    [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
+    [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, real>(rgb_.g); }
+    [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, real>(rgb_.b); }
+    [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
 
-  constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
-  constexpr basic_spectrum& operator+=(basic_spectrum other) {
-    rgb_ += other.raw_value();
-    return *this;
+    constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
+    constexpr basic_spectrum& operator+=(basic_spectrum other) {
+      rgb_ += other.raw_value();
+      return *this;
   }
   constexpr basic_spectrum& operator-=(basic_spectrum other) {
     rgb_ -= other.raw_value();
     return *this;
   }
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+=(basic_spectrum<E>);
+  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  operator+=(basic_spectrum<E>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-=(basic_spectrum<E>);
+  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  operator-=(basic_spectrum<E>);
   /// Scaling by a dimensionless factor (a plain number or a dimensionless spectrum).
   template <class Q>
     requires arithmetic<Q> || std::is_same_v<Q, basic_spectrum<dim::dimensionless>>
@@ -90,19 +93,22 @@ constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<D> b) 
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E>
-diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator+(basic_spectrum<D>, basic_spectrum<E>);
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator+(basic_spectrum<D>, basic_spectrum<E>);
 template <class D>
 constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<D> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E>
-diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator-(basic_spectrum<D>, basic_spectrum<E>);
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator-(basic_spectrum<D>, basic_spectrum<E>);
 template <class D>
 constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<D> b) {
   return a.raw_value() == b.raw_value();
 }
 template <class D, class E>
-diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>> operator==(basic_spectrum<D>, basic_spectrum<E>);
+diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+operator==(basic_spectrum<D>, basic_spectrum<E>);
 template <class D, class E>
 constexpr basic_spectrum<dim::product<D, E>> operator*(basic_spectrum<D> a, basic_spectrum<E> b) {
   return {detail::raw_tag{}, a.raw_value() * b.raw_value()};
@@ -190,7 +196,8 @@ constexpr basic_spectrum<dim::root<D, 2>> sqrt(basic_spectrum<D> s) {
   return {detail::raw_tag{}, glm::sqrt(s.raw_value())};
 }
 template <class D, class E>
-diagnose::dimension_mismatch<diagnose::op::lerp, in_words<D>, in_words<E>, ratio_in_words<D, E>> lerp(basic_spectrum<D>, basic_spectrum<E>, real);
+diagnose::dimension_mismatch<diagnose::op::lerp, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+lerp(basic_spectrum<D>, basic_spectrum<E>, real);
 template <class D>
 constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<D> b, real t) {
   return {detail::raw_tag{}, (real(1) - t) * a.raw_value() + t * b.raw_value()};
