@@ -119,9 +119,10 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
     return value;
   }
   const std::vector<double>& v = param->numbers;
-  if (param->type == ParamType::spectrum)
-    fail_at(*param, declared(*param) + ": sampled spectra are not supported",
-            "give the colour as \"rgb " + param->name + "\" [r g b]");
+  if (param->type == ParamType::spectrum) {
+    value.rgb = sampled_spectrum(*param);
+    return value;
+  }
   if (param->type == ParamType::blackbody) {
     // pbrt-v3 reads [temperature scale]; pbrt-v4's one value is another format.
     if (v.size() != 2)
@@ -136,6 +137,35 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
     fail(param->values, declared(*param) + " takes 3 values, found " + std::to_string(v.size()));
   value.rgb = param->type == ParamType::xyz ? xyz_to_rgb({v[0], v[1], v[2]}) : Rgb{v[0], v[1], v[2]};
   return value;
+}
+
+// pbrt-v3 reads "spectrum" as [wavelength value ...] pairs, or as the name of
+// a file of such pairs (not read here); the names of pbrt-v4's metal spectra
+// are taken instead, as scenes written for both name them.
+Rgb ParamSet::sampled_spectrum(const Param& param) const {
+  if (param.is_string) {
+    if (param.strings.size() != 1)
+      fail(param.values, declared(param) + " names one spectrum, found " + std::to_string(param.strings.size()));
+    if (std::optional<Rgb> named = named_spectrum_rgb(param.strings[0])) return *named;
+    fail(param.values, declared(param) + ": no spectrum named \"" + param.strings[0] + "\" here",
+         "named spectra: " + named_spectrum_names() +
+             "; pbrt-v3 would read a file of that name (.spd), which is not supported: give [wavelength value ...] "
+             "pairs or rgb");
+  }
+  const std::vector<double>& v = param.numbers;
+  if (v.empty() || v.size() % 2 != 0)
+    fail(param.values, declared(param) + " takes [wavelength value ...] pairs, found " + std::to_string(v.size()) +
+                           " number" + (v.size() == 1 ? "" : "s"));
+  std::vector<SpectrumSample> samples;
+  for (size_t i = 0; i < v.size(); i += 2) {
+    if (!(v[i] > 0)) fail(param.values, declared(param) + ": wavelengths (nm) must be above 0, found " + format_number(v[i]));
+    for (const SpectrumSample& earlier : samples)
+      if (earlier.wavelength_nm == v[i])
+        fail(param.values, declared(param) + " gives the wavelength " + format_number(v[i]) + " nm twice",
+             "pbrt-v3 stops on a failed check there");
+    samples.push_back({v[i], v[i + 1]});
+  }
+  return sampled_spectrum_rgb(std::move(samples));
 }
 
 void ParamSet::reject(std::string_view name, const std::string& why, std::optional<double> harmless) {
