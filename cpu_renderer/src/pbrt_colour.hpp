@@ -31,7 +31,7 @@ struct SpectrumSample {
 std::array<double, 3> sampled_spectrum_rgb(std::vector<SpectrumSample> samples);
 
 // The named spectra of metals pbrt-v4 defines ("metal-Cu-eta", "metal-Cu-k",
-// ... for Ag, Al, Au, Cu, CuZn, MgO, TiO2: η and k of the complex index of
+// ... for Ag, Al, Au, Cu, CuZn: η and k of the complex index of
 // refraction), converted as sampled_spectrum_rgb converts; nothing for other names.
 std::optional<std::array<double, 3>> named_spectrum_rgb(std::string_view name);
 // Their names, quoted and comma-separated, for messages.

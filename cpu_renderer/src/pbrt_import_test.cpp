@@ -133,9 +133,9 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:7: error: shape \"curve\" is not supported\nShape \"curve\"\n      ^~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
             "\"paraboloid\", \"hyperboloid\", \"nurbs\"\n");
-  EXPECT_EQ(import_error(world(used("Material \"metal\""))),
-            "scene.pbrt:2:10: error: material \"metal\" is not supported\nMaterial \"metal\"\n"
-            "         ^~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"\n");
+  EXPECT_EQ(import_error(world(used("Material \"substrate\""))),
+            "scene.pbrt:2:10: error: material \"substrate\" is not supported\nMaterial \"substrate\"\n"
+            "         ^~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"\n");
   EXPECT_EQ(import_error(world(used("Material \"matte\" \"float sigma\" [20]"))),
             "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
             "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");
@@ -388,12 +388,6 @@ TEST(PbrtImport, IncludeAndPlyMeshesResolveAgainstTheMainFile) {
 // ---------------------------------------------------------------------------
 // Plastic, glass, uber, image textures and the infinite light (pbrt-v3's
 // materials/*.cpp, textures/imagemap.cpp, lights/infinite.cpp)
-
-// pbrt-v3's RoughnessToAlpha, written out for the expected values.
-double pbrt_alpha(double roughness) {
-  double x = std::log(roughness);
-  return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
-}
 
 TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
   PbrtScene scene = import(world(
