@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "json_loader.hpp"
+#include "pbrt_colour.hpp"
 
 namespace safegi::render::json {
 
@@ -86,8 +87,16 @@ Reflectance Loader::largest_diffuse(const TexturedReflectance& diffuse) const {
 
 // η must be above 0 (the Fresnel equations divide by η² + k² at normal
 // incidence); k = 0 is a dielectric. The bound of 1000 keeps the equations'
-// fourth powers well inside float range.
+// fourth powers well inside float range. A measured metal may be named as
+// pbrt-v4 names it ("metal-Au-eta"), converted to RGB as the pbrt importer does.
 IndexSpectrum Loader::index_spectrum(const Json& value, const JsonPath& path, bool zero_allowed) {
+  if (value.is_string()) {
+    std::optional<std::array<double, 3>> named = pbrt::named_spectrum_rgb(value.get<std::string>());
+    if (!named)
+      fail(path, "expected a number, [r, g, b] or a named spectrum (" + pbrt::named_spectrum_names() + "), got " +
+                     short_dump(value));
+    return IndexSpectrum(static_cast<Real>((*named)[0]), static_cast<Real>((*named)[1]), static_cast<Real>((*named)[2]));
+  }
   IndexSpectrum index = typed_spectrum<dim::dimensionless>(value, path);
   for (int c = 0; c < 3; ++c)
     if (!((zero_allowed ? index[c] >= 0 : index[c] > 0) && index[c] <= 1000))
