@@ -152,7 +152,8 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   Rgb largest = entry.value;
   if (entry.textured()) {
     if (!allow_image)
-      refuse_texture(params, *param, entry, name, "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here");
+      refuse_texture(params, *param, entry, name,
+                     "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here");
     sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
     for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
   }

@@ -140,8 +140,8 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
 }
 
 // pbrt-v3 reads "spectrum" as [wavelength value ...] pairs, or as the name of
-// a file of such pairs (not read here); the names of pbrt-v4's metal spectra
-// are taken instead, as scenes written for both name them.
+// a file of such pairs (not read here). A string is read as one of pbrt-v4's
+// names of measured metals instead, which scenes exported for pbrt-v4 use.
 Rgb ParamSet::sampled_spectrum(const Param& param) const {
   if (param.is_string) {
     if (param.strings.size() != 1)
