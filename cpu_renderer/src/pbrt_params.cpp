@@ -2,6 +2,7 @@
 
 #include "pbrt_colour.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -159,12 +160,15 @@ Rgb ParamSet::sampled_spectrum(const Param& param) const {
   std::vector<SpectrumSample> samples;
   for (size_t i = 0; i < v.size(); i += 2) {
     if (!(v[i] > 0)) fail(param.values, declared(param) + ": wavelengths (nm) must be above 0, found " + format_number(v[i]));
-    for (const SpectrumSample& earlier : samples)
-      if (earlier.wavelength_nm == v[i])
-        fail(param.values, declared(param) + " gives the wavelength " + format_number(v[i]) + " nm twice",
-             "pbrt-v3 stops on a failed check there");
     samples.push_back({v[i], v[i + 1]});
   }
+  // Sorted first, so that a long list is checked in n log n.
+  std::sort(samples.begin(), samples.end(),
+            [](const SpectrumSample& a, const SpectrumSample& b) { return a.wavelength_nm < b.wavelength_nm; });
+  for (size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].wavelength_nm == samples[i - 1].wavelength_nm)
+      fail(param.values, declared(param) + " gives the wavelength " + format_number(samples[i].wavelength_nm) + " nm twice",
+           "pbrt-v3 stops on a failed check there");
   return sampled_spectrum_rgb(std::move(samples));
 }
 
