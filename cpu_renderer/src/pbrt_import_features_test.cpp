@@ -351,6 +351,9 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
             "scene.pbrt:3:18: error: a procedural texture as \"eta\" of Material \"metal\" is not supported\n"
             "Material \"metal\" \"texture eta\" \"t\"\n                 ^~~~~~~~~~~~~\n"
             "help: a metal's \"eta\" and \"k\" are constants here: rgb, a named spectrum or [wavelength value ...] pairs\n");
+  EXPECT_EQ(first_line(import_error(world("Texture \"r\" \"float\" \"fbm\"\n" +
+                                          used("Material \"metal\" \"texture roughness\" \"r\"")))),
+            "scene.pbrt:2:21: error: float procedural textures are not supported");  // textured roughness
   EXPECT_EQ(error_of("Material \"metal\" \"texture bumpmap\" \"b\""),
             "scene.pbrt:2:18: error: \"texture bumpmap\" of Material \"metal\" is not supported: bump mapping");
 }
