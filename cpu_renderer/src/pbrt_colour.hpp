@@ -34,6 +34,7 @@ std::array<double, 3> sampled_spectrum_rgb(std::vector<SpectrumSample> samples);
 // ... for Ag, Al, Au, Cu, CuZn: η and k of the complex index of
 // refraction), converted as sampled_spectrum_rgb converts; nothing for other names.
 std::optional<std::array<double, 3>> named_spectrum_rgb(std::string_view name);
+bool is_named_spectrum(std::string_view name);
 // Their names, quoted and comma-separated, for messages.
 std::string named_spectrum_names();
 

@@ -324,13 +324,13 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
   EXPECT_EQ(error_of("Material \"metal\" \"float uroughness\" 0.2"),
             "scene.pbrt:2:10: error: an anisotropic Material \"metal\" (\"uroughness\" 0.2, \"vroughness\" 0.01) is not "
             "supported");
-  EXPECT_EQ(import_error(world(used("Material \"metal\" \"spectrum eta\" \"metal-Cu.eta.spd\""))),
-            "scene.pbrt:2:33: error: \"spectrum eta\": no spectrum named \"metal-Cu.eta.spd\" here\n"
-            "Material \"metal\" \"spectrum eta\" \"metal-Cu.eta.spd\"\n"
-            "                                ^~~~~~~~~~~~~~~~~~\n"
-            "help: named spectra: \"metal-Ag-eta\", \"metal-Ag-k\", \"metal-Al-eta\", \"metal-Al-k\", \"metal-Au-eta\", "
-            "\"metal-Au-k\", \"metal-Cu-eta\", \"metal-Cu-k\", \"metal-CuZn-eta\", \"metal-CuZn-k\"; pbrt-v3 would read a "
-            "file of that name (.spd), which is not supported: give [wavelength value ...] pairs or rgb\n");
+  EXPECT_EQ(import_error(world(used("Material \"metal\" \"spectrum eta\" \"spds/Cu.eta.spd\""))),
+            "scene.pbrt:2:33: error: cannot read spectrum file 'dir/spds/Cu.eta.spd': no such file\n"
+            "Material \"metal\" \"spectrum eta\" \"spds/Cu.eta.spd\"\n"
+            "                                ^~~~~~~~~~~~~~~~~\n"
+            "help: pbrt-v3 resolves it against the directory of the main scene file (and renders black without it); "
+            "named spectra: \"metal-Ag-eta\", \"metal-Ag-k\", \"metal-Al-eta\", \"metal-Al-k\", \"metal-Au-eta\", "
+            "\"metal-Au-k\", \"metal-Cu-eta\", \"metal-Cu-k\", \"metal-CuZn-eta\", \"metal-CuZn-k\"\n");
   EXPECT_EQ(import_error(world(used("Material \"metal\" \"rgb eta\" [0 1 1]"))),
             "scene.pbrt:2:18: error: \"eta\" of Material \"metal\" must lie in (0, 1000] in every channel, found "
             "[0 1 1]\nMaterial \"metal\" \"rgb eta\" [0 1 1]\n                 ^~~~~~~~~\n"
@@ -356,6 +356,26 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
             "scene.pbrt:2:21: error: float procedural textures are not supported");  // textured roughness
   EXPECT_EQ(error_of("Material \"metal\" \"texture bumpmap\" \"b\""),
             "scene.pbrt:2:18: error: \"texture bumpmap\" of Material \"metal\" is not supported: bump mapping");
+}
+
+// pbrt-v3's spectrum files (.spd, as pbrt-v3-scenes ship them for metals):
+// [wavelength value ...] pairs with '#' comments, resolved against the main
+// file's directory, read as its ReadFloatFile reads them, then converted as
+// pairs written in the scene are.
+TEST(PbrtImport, SpectrumFilesAreReadAsPbrtV3ReadsThem) {
+  PbrtImportOptions files = in_memory({{"dir/spds/test.eta.spd", "# a test metal\n400 1.5\t500 1.0\n# more\n600 +0.3e0\n"},
+                                       {"dir/spds/odd.spd", "400 1 500"},
+                                       {"dir/spds/words.spd", "400 1\n500 one\n"}});
+  PbrtScene scene = import(world(used("Material \"metal\" \"spectrum eta\" \"spds/test.eta.spd\"")), files);
+  ASSERT_EQ(scene.scene.shapes.size(), 1u);
+  ConductorMaterial metal = as<ConductorMaterial>(scene.scene.materials.at(scene.scene.shapes[0].material));
+  std::array<double, 3> expected = pbrt::sampled_spectrum_rgb({{400, 1.5}, {500, 1.0}, {600, 0.3}});
+  for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(metal.eta[c], static_cast<float>(expected[c])) << c;
+  EXPECT_EQ(first_line(import_error(world(used("Material \"metal\" \"spectrum eta\" \"spds/odd.spd\"")), files)),
+            "scene.pbrt:2:33: error: spectrum file 'dir/spds/odd.spd' holds 3 numbers, not [wavelength value ...] pairs");
+  EXPECT_EQ(first_line(import_error(world(used("Material \"metal\" \"spectrum eta\" \"spds/words.spd\"")), files)),
+            "scene.pbrt:2:33: error: spectrum file 'dir/spds/words.spd', line 2: 'o' is neither a number nor a '#' "
+            "comment");
 }
 
 // pbrt-v3's integrators we do not have render with the nearest we do, and a

@@ -177,6 +177,12 @@ std::optional<std::array<double, 3>> named_spectrum_rgb(std::string_view name) {
   return std::nullopt;
 }
 
+bool is_named_spectrum(std::string_view name) {
+  for (const NamedSpectrum& spectrum : kNamedSpectra)
+    if (spectrum.name == name) return true;
+  return false;
+}
+
 std::string named_spectrum_names() {
   std::string names;
   for (const NamedSpectrum& spectrum : kNamedSpectra)

@@ -141,17 +141,14 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
 }
 
 // pbrt-v3 reads "spectrum" as [wavelength value ...] pairs, or as the name of
-// a file of such pairs (not read here). A string is read as one of pbrt-v4's
-// names of measured metals instead, which scenes exported for pbrt-v4 use.
+// a file of such pairs (which the parser has read into `numbers`). A name is
+// one of pbrt-v4's measured metals, which scenes exported for pbrt-v4 use.
 Rgb ParamSet::sampled_spectrum(const Param& param) const {
   if (param.is_string) {
-    if (param.strings.size() != 1)
-      fail(param.values, declared(param) + " names one spectrum, found " + std::to_string(param.strings.size()));
-    if (std::optional<Rgb> named = named_spectrum_rgb(param.strings[0])) return *named;
-    fail(param.values, declared(param) + ": no spectrum named \"" + param.strings[0] + "\" here",
-         "named spectra: " + named_spectrum_names() +
-             "; pbrt-v3 would read a file of that name (.spd), which is not supported: give [wavelength value ...] "
-             "pairs or rgb");
+    std::optional<Rgb> named = param.strings.size() == 1 ? named_spectrum_rgb(param.strings[0]) : std::nullopt;
+    if (!named)
+      fail(param.values, declared(param) + " names one spectrum or file, found " + std::to_string(param.strings.size()));
+    return *named;
   }
   const std::vector<double>& v = param.numbers;
   if (v.empty() || v.size() % 2 != 0)
