@@ -1,7 +1,8 @@
 // Materials as BSDFs in the local shading space (normal = +z, on the side the
 // light leaves towards): Lambert, energy-conserving Phong, perfect mirror,
-// smooth glass (Fresnel reflection and refraction) and pbrt's plastic
-// (Lambert plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe).
+// smooth glass (Fresnel reflection and refraction), pbrt's plastic (Lambert
+// plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe) and rough metal
+// (the same lobe weighted by the conductor's Fresnel term).
 #pragma once
 
 #include <cmath>
@@ -60,6 +61,7 @@ class Bsdf {
     return std::visit(Overloaded{[&](const LambertMaterial&) { return lambert(diffuse_); },
                                  [&](const PhongMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
+                                 [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
                                  [](const MirrorMaterial&) { return Brdf{}; },
                                  [](const GlassMaterial&) { return Brdf{}; },
                                  [](const BlackMaterial&) { return Brdf{}; }},
@@ -71,6 +73,7 @@ class Bsdf {
     return std::visit(Overloaded{[&](const LambertMaterial&) { return cosine_pdf(wi); },
                                  [&](const PhongMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return pdf_lobed(m, wo, wi); },
+                                 [&](const ConductorMaterial& m) { return conductor_pdf(m, wo, wi); },
                                  [](const MirrorMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const GlassMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const BlackMaterial&) { return PdfSolidAngle(sg::zero); }},
@@ -84,16 +87,18 @@ class Bsdf {
     return std::visit(
         Overloaded{[&](const MirrorMaterial& m) -> Sampled { return BsdfSample{reflect(wo), m.reflectance, sg::zero, true}; },
                    [&](const GlassMaterial& m) -> Sampled { return sample_glass(m, wo, u_lobe, transport); },
-                   [&](const LambertMaterial&) -> Sampled {
-                     // The lobed case below, with eval() and pdf() resolved for Lambert (the same arithmetic).
+                   [&](const LambertMaterial&) {
                      DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
-                     if (wi.z() <= 0) return std::nullopt;
-                     PdfSolidAngle density = cosine_pdf(wi);
-                     if (!(density > sg::zero)) return std::nullopt;
-                     return BsdfSample{wi, lambert(diffuse_) * sg::cos_theta(wi) / density, density, false};
+                     return weighted(wi, lambert(diffuse_), cosine_pdf(wi));
                    },
                    [&](const PhongMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
                    [&](const PlasticMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
+                   [&](const ConductorMaterial& m) -> Sampled {
+                     // The lobe is the whole BSDF: every sample is drawn from it.
+                     DirectionShading wi = TrowbridgeReitz(m.alpha).sample_reflection(wo, u1, u2);
+                     if (wi.z() <= 0) return std::nullopt;  // before conductor(), which divides by cos θi
+                     return weighted(wi, conductor(m, wo, wi), conductor_pdf(m, wo, wi));
+                   },
                    [](const BlackMaterial&) -> Sampled { return std::nullopt; }},
         model_);
   }
@@ -129,10 +134,16 @@ class Bsdf {
                                          Real u2) const {
     DirectionShading wi = u_lobe < specular_probability_ ? sample_lobe(material, wo, u1, u2)
                                                          : from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
-    if (wi.z() <= 0) return std::nullopt;
-    PdfSolidAngle density = pdf_lobed(material, wo, wi);
-    if (!(density > sg::zero)) return std::nullopt;
-    return BsdfSample{wi, eval_lobed(material, wo, wi) * sg::cos_theta(wi) / density, density, false};
+    if (wi.z() <= 0) return std::nullopt;  // before eval_lobed, whose lobes divide by cos θi
+    return weighted(wi, eval_lobed(material, wo, wi), pdf_lobed(material, wo, wi));
+  }
+
+  // The sample of a direction `wi` drawn with `density` (the whole strategy's,
+  // per solid angle), the BSDF being `value` there: the path's throughput is
+  // multiplied by f cos θ / pdf. None below the surface or where the density vanishes.
+  static std::optional<BsdfSample> weighted(DirectionShading wi, Brdf value, PdfSolidAngle density) {
+    if (wi.z() <= 0 || !(density > sg::zero)) return std::nullopt;
+    return BsdfSample{wi, value * sg::cos_theta(wi) / density, density, false};
   }
 
   // Phong: Lafortune & Willems' normalisation keeps the lobe's albedo <= specular.
@@ -153,29 +164,34 @@ class Bsdf {
     return cos_alpha > 0 ? std::pow(cos_alpha, phong.exponent) : 0.0f;
   }
 
-  // Plastic: ρs · D(h) G F / (4 cos θo cos θi). The two cosines are the
-  // geometric factors of the microfacet derivation, plain ratios here: the
-  // projected measure is D's, so the result is a BRDF per projected solid angle.
+  // Plastic: ρs · F(ωi·h) · D(h) G / (4 cos θo cos θi), the coating's
+  // Torrance–Sparrow lobe; sampled by its normals (D(h) cos θh), reflected.
   static Brdf lobe(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) {
     DirectionShading h = half_vector(wo, wi);
-    TrowbridgeReitz microfacets(plastic.alpha);
-    Real ratio =
-        coating_fresnel(plastic, sg::dot(wi, h)) * microfacets.masking_shadowing(wo, wi) / (4 * wo.z() * wi.z());
-    return plastic.specular * ratio * microfacets.density(h);
+    return plastic.specular * coating_fresnel(plastic, sg::dot(wi, h)) *
+           TrowbridgeReitz(plastic.alpha).reflection(wo, wi, h);
   }
-  // Normals drawn by D(h) cos θh, reflected: the density per solid angle of wi.
   static PdfSolidAngle lobe_pdf(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) {
-    DirectionShading h = half_vector(wo, wi);
-    return TrowbridgeReitz(plastic.alpha).normal_pdf(h) * reflection_jacobian(wo, h);
+    return TrowbridgeReitz(plastic.alpha).reflection_pdf(wo, half_vector(wo, wi));
   }
   static DirectionShading sample_lobe(const PlasticMaterial& plastic, DirectionShading wo, Real u1, Real u2) {
-    DirectionShading h = TrowbridgeReitz(plastic.alpha).sample_normal(u1, u2);
-    return sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
+    return TrowbridgeReitz(plastic.alpha).sample_reflection(wo, u1, u2);
   }
   // The coating's Fresnel factor at the microfacet: from outside (η = ior), or
   // as pbrt-v3's plastic computes it, with the indices swapped (η = 1/ior).
   static Real coating_fresnel(const PlasticMaterial& plastic, Real cos_h) {
     return fresnel_dielectric(cos_h, plastic.pbrt_v3_fresnel ? 1 / plastic.ior : plastic.ior);
+  }
+
+  // Metal: F_conductor(ωi·h; η, k) · D(h) G / (4 cos θo cos θi), pbrt-v3's
+  // MicrofacetReflection with its FresnelConductor; the same lobe as plastic's
+  // but weighted per channel by the metal's Fresnel reflectance and alone.
+  static Brdf conductor(const ConductorMaterial& metal, DirectionShading wo, DirectionShading wi) {
+    DirectionShading h = half_vector(wo, wi);
+    return fresnel_conductor(sg::dot(wi, h), metal.eta, metal.k) * TrowbridgeReitz(metal.alpha).reflection(wo, wi, h);
+  }
+  static PdfSolidAngle conductor_pdf(const ConductorMaterial& metal, DirectionShading wo, DirectionShading wi) {
+    return TrowbridgeReitz(metal.alpha).reflection_pdf(wo, half_vector(wo, wi));
   }
 
   // Reflection by the smooth interface or refraction through it, chosen with

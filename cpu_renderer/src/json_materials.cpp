@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "json_loader.hpp"
+#include "pbrt_colour.hpp"
 
 namespace safegi::render::json {
 
@@ -84,6 +85,26 @@ Reflectance Loader::largest_diffuse(const TexturedReflectance& diffuse) const {
   return diffuse.texture < 0 ? diffuse.value : diffuse.value * textures_[diffuse.texture]->maximum();
 }
 
+// η must be above 0 (the Fresnel equations divide by η² + k² at normal
+// incidence); k = 0 is a dielectric. The bound of 1000 keeps the equations'
+// fourth powers well inside float range. A measured metal may be named as
+// pbrt-v4 names it ("metal-Au-eta"), converted to RGB as the pbrt importer does.
+IndexSpectrum Loader::index_spectrum(const Json& value, const JsonPath& path, bool zero_allowed) {
+  if (value.is_string()) {
+    std::optional<std::array<double, 3>> named = pbrt::named_spectrum_rgb(value.get<std::string>());
+    if (!named)
+      fail(path, "expected a number, [r, g, b] or a named spectrum (" + pbrt::named_spectrum_names() + "), got " +
+                     short_dump(value));
+    return IndexSpectrum(static_cast<Real>((*named)[0]), static_cast<Real>((*named)[1]), static_cast<Real>((*named)[2]));
+  }
+  IndexSpectrum index = typed_spectrum<dim::dimensionless>(value, path);
+  for (int c = 0; c < 3; ++c)
+    if (!((zero_allowed ? index[c] >= 0 : index[c] > 0) && index[c] <= 1000))
+      fail(path, std::string("expected ") + (zero_allowed ? "values in [0, 1000]" : "values in (0, 1000]") +
+                     " in every channel, got " + short_dump(value));
+  return index;
+}
+
 Material Loader::load_material(const std::string& name, const Json& value, const JsonPath& path) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
@@ -131,9 +152,17 @@ Material Loader::load_material(const std::string& name, const Json& value, const
       plastic.pbrt_v3_fresnel = boolean(value["pbrt_v3_fresnel"], path.field("pbrt_v3_fresnel"));
     require_energy_conservation(plastic.diffuse, plastic.specular);
     material.model = plastic;
+  } else if (type == "conductor") {
+    object(value, path, {"type", "eta", "k", "alpha"});
+    ConductorMaterial metal;
+    metal.eta = index_spectrum(required(value, path, "eta"), path.field("eta"), false);
+    metal.k = index_spectrum(required(value, path, "k"), path.field("k"), true);
+    metal.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    material.model = metal;
   } else {
-    fail(path.field("type"), "expected \"lambert\", \"phong\", \"mirror\", \"glass\" or \"plastic\", got " +
-                                 short_dump(value["type"]));
+    fail(path.field("type"),
+         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\" or \"conductor\", got " +
+             short_dump(value["type"]));
   }
   return material;
 }

@@ -1,5 +1,6 @@
 #include "pbrt_colour.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace safegi::render::pbrt {
@@ -28,23 +29,46 @@ std::array<double, 3> colour_matching(double l) {
           1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8)};
 }
 
-}  // namespace
-
-std::array<double, 3> normalized_blackbody_xyz(double kelvin) {
-  constexpr double wien_displacement = 2.8977721e-3;  // m·K
-  const double peak = planck(wien_displacement / kelvin * 1e9, kelvin);
-  // pbrt-v3's CIE range and its 1 nm samples.
+// CIE XYZ of a spectrum given as a function of the wavelength in nm, as
+// pbrt-v3's RGBSpectrum::FromSampled sums it: over its CIE range at its 1 nm
+// samples, scaled so that a constant 1 has Y = 1.
+template <class Spectrum>
+std::array<double, 3> spectrum_xyz(const Spectrum& value_at_nm) {
   constexpr int first_nm = 360, samples = 471;
   constexpr double cie_y_integral = 106.856895;
   std::array<double, 3> xyz{0, 0, 0};
   for (int i = 0; i < samples; ++i) {
-    double l = first_nm + i, value = planck(l, kelvin) / peak;
+    double l = first_nm + i, value = value_at_nm(l);
     std::array<double, 3> cmf = colour_matching(l);
     for (int k = 0; k < 3; ++k) xyz[k] += value * cmf[k];
   }
   const double scale = double(samples - 1) / (cie_y_integral * samples);
   for (double& v : xyz) v *= scale;
   return xyz;
+}
+
+}  // namespace
+
+std::array<double, 3> normalized_blackbody_xyz(double kelvin) {
+  constexpr double wien_displacement = 2.8977721e-3;  // m·K
+  const double peak = planck(wien_displacement / kelvin * 1e9, kelvin);
+  return spectrum_xyz([&](double l) { return planck(l, kelvin) / peak; });
+}
+
+std::array<double, 3> sampled_spectrum_rgb(std::vector<SpectrumSample> samples) {
+  std::sort(samples.begin(), samples.end(),
+            [](const SpectrumSample& a, const SpectrumSample& b) { return a.wavelength_nm < b.wavelength_nm; });
+  // pbrt-v3's InterpolateSpectrumSamples: linear between samples, the end values beyond them.
+  auto value_at = [&](double l) {
+    if (l <= samples.front().wavelength_nm) return samples.front().value;
+    if (l >= samples.back().wavelength_nm) return samples.back().value;
+    auto above = std::upper_bound(samples.begin(), samples.end(), l,
+                                  [](double nm, const SpectrumSample& s) { return nm < s.wavelength_nm; });
+    const SpectrumSample &a = above[-1], &b = above[0];
+    double t = (l - a.wavelength_nm) / (b.wavelength_nm - a.wavelength_nm);
+    return (1 - t) * a.value + t * b.value;
+  };
+  return xyz_to_rgb(spectrum_xyz(value_at));
 }
 
 std::array<double, 3> xyz_to_rgb(const std::array<double, 3>& v) {

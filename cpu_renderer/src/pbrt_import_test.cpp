@@ -133,9 +133,9 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:7: error: shape \"curve\" is not supported\nShape \"curve\"\n      ^~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
             "\"paraboloid\", \"hyperboloid\", \"nurbs\"\n");
-  EXPECT_EQ(import_error(world(used("Material \"metal\""))),
-            "scene.pbrt:2:10: error: material \"metal\" is not supported\nMaterial \"metal\"\n"
-            "         ^~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"\n");
+  EXPECT_EQ(import_error(world(used("Material \"substrate\""))),
+            "scene.pbrt:2:10: error: material \"substrate\" is not supported\nMaterial \"substrate\"\n"
+            "         ^~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"\n");
   EXPECT_EQ(import_error(world(used("Material \"matte\" \"float sigma\" [20]"))),
             "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
             "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");
@@ -389,12 +389,6 @@ TEST(PbrtImport, IncludeAndPlyMeshesResolveAgainstTheMainFile) {
 // Plastic, glass, uber, image textures and the infinite light (pbrt-v3's
 // materials/*.cpp, textures/imagemap.cpp, lights/infinite.cpp)
 
-// pbrt-v3's RoughnessToAlpha, written out for the expected values.
-double pbrt_alpha(double roughness) {
-  double x = std::log(roughness);
-  return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
-}
-
 TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
   PbrtScene scene = import(world(
       "Material \"plastic\"\nShape \"sphere\"\n"                                                 // 0: pbrt's defaults
@@ -645,6 +639,7 @@ LightSource "spot" "rgb I" [9 9 9] "point from" [1 3 0] "point to" [0 0 0] "floa
 Texture "t" "color" "constant" "rgb value" [0.2 0.4 0.6]
 MakeNamedMaterial "white" "string type" ["matte"] "rgb Kd" [0.7 0.7 0.7]
 MakeNamedMaterial "coat" "string type" "plastic" "rgb Kd" [0.3 0.3 0.3] "float roughness" 0.2
+MakeNamedMaterial "gold" "string type" "metal" "spectrum eta" "metal-Au-eta" "spectrum k" [400 3.9 700 2] "float roughness" 0.05
 LightSource "infinite" "rgb L" [0.1 0.1 0.1] "integer samples" 2
 AttributeBegin
   AreaLightSource "area" "color L" [4 4 4] "bool twosided" "true" "integer nsamples" 4
@@ -657,6 +652,8 @@ TransformBegin
   ConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1]
   Material "matte" "texture Kd" "t"
   Shape "sphere" "float radius" 0.5
+  NamedMaterial "gold"
+  Shape "sphere" "float radius" 0.25
 TransformEnd
 ObjectBegin "box"
   NamedMaterial "coat"
@@ -683,10 +680,10 @@ void expect_scene_or_error(const std::string& text, const char* what) {
 TEST(PbrtImport, TheRichSceneImports) {
   PbrtScene scene = import(kRichScene);
   const std::string expected =
-      "scene.pbrt:37:7: warning: vertex normals \"N\" only orient emitters here: surfaces are shaded with their "
+      "scene.pbrt:40:7: warning: vertex normals \"N\" only orient emitters here: surfaces are shaded with their "
       "geometric normals\n";
   EXPECT_EQ(scene.warnings.substr(0, expected.size()), expected);
-  EXPECT_EQ(scene.scene.shapes.size(), 4u);
+  EXPECT_EQ(scene.scene.shapes.size(), 5u);
   EXPECT_EQ(scene.scene.point_lights.size(), 1u);
   EXPECT_EQ(scene.scene.spot_lights.size(), 1u);
   EXPECT_TRUE(scene.scene.environment.has_value());

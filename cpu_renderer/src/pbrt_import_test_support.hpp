@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <variant>
@@ -42,6 +43,12 @@ Parameters as(const Material& material) {
 inline TexturedReflectance diffuse(const Material& material) {
   EXPECT_TRUE(diffuse_of(material)) << material.name << " has no diffuse part";
   return diffuse_of(material) ? *diffuse_of(material) : TexturedReflectance{};
+}
+
+// pbrt-v3's RoughnessToAlpha, written out for the expected values.
+inline double pbrt_alpha(double roughness) {
+  double x = std::log(roughness);
+  return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
 }
 
 inline PbrtScene import(const std::string& text, const PbrtImportOptions& options = in_memory()) {

@@ -140,6 +140,10 @@ class Importer {
   MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
                         const ParamSet& params, SourceRange at);
   static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
+  MaterialModel metal(ParamSet& params, SourceRange at);
+  IndexSpectrum index_spectrum(ParamSet& params, const char* name, const Rgb& fallback, bool zero_allowed);
+  static double isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at);
+  static Real checked_alpha(double alpha, const ParamSet& params, SourceRange at);
   std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<double> float_param(ParamSet& params, const char* name);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);

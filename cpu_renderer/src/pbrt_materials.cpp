@@ -1,5 +1,5 @@
 // The importer's materials and textures: pbrt-v3's matte, mirror, plastic,
-// glass and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
+// glass, metal and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
 // its constant, imagemap and scale textures (src/textures/*.cpp), mapped onto
 // the Scene's materials and image textures. What the Scene cannot represent
 // is an error at the parameter or name that asks for it.
@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "pbrt_colour.hpp"
 #include "pbrt_importer.hpp"
 
 namespace safegi::render::pbrt {
@@ -31,11 +32,13 @@ constexpr MaterialParams kMaterialParams[] = {
     {"mirror", {"Kr", "bumpmap"}},
     {"plastic", {"Kd", "Ks", "roughness", "remaproughness", "bumpmap"}},
     {"glass", {"Kr", "Kt", "eta", "index", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
+    {"metal", {"eta", "k", "roughness", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
     {"uber",
      {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
       "bumpmap"}},
 };
-constexpr const char* kSupportedMaterials = "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"uber\"";
+constexpr const char* kSupportedMaterials =
+    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"";
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
@@ -69,10 +72,35 @@ std::string lower_extension(const std::string& file) {
   return extension;
 }
 
+// A parameter that names an image texture or a pattern where the material
+// reads a constant.
+[[noreturn]] void refuse_texture(const ParamSet& params, const Param& param, const TextureEntry& texture,
+                                 std::string_view name, const std::string& hint) {
+  const char* kind = texture.image >= 0 ? "an image texture" : "a procedural texture";
+  params.fail_at(param, std::string(kind) + " as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
+                 hint);
+}
+
+std::string format_rgb(const Rgb& rgb) {
+  std::string text;
+  for (double channel : rgb) {
+    text += text.empty() ? "[" : " ";
+    text += format_number(channel);
+  }
+  return text + "]";
+}
+
 // pbrt-v3's TrowbridgeReitzDistribution::RoughnessToAlpha.
 double roughness_to_alpha(double roughness) {
   double x = std::log(std::max(roughness, 1e-3));
   return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x + 0.000640711 * x * x * x * x;
+}
+
+// A microfacet alpha as pbrt-v3 computes it: remapped from a perceptual
+// roughness (RoughnessToAlpha) or taken as given, then clamped to 0.001 as its
+// TrowbridgeReitzDistribution does.
+double microfacet_alpha(double roughness, bool remap) {
+  return std::max(1e-3, remap ? roughness_to_alpha(roughness) : roughness);
 }
 
 }  // namespace
@@ -123,10 +151,8 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
   Rgb largest = entry.value;
   if (entry.textured()) {
-    const char* kind = entry.image >= 0 ? "an image texture" : "a procedural texture";
     if (!allow_image)
-      params.fail_at(*param, std::string(kind) + " as \"" + std::string(name) + "\" of " + params.context() +
-                                 " is not supported",
+      refuse_texture(params, *param, entry, name,
                      "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here");
     sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
     for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
@@ -149,12 +175,48 @@ Reflectance Importer::reflectance(ParamSet& params, const char* name, double fal
   return textured_reflectance(params, name, fallback, false).value;
 }
 
-// A microfacet alpha as pbrt-v3 computes it: remapped from a perceptual
-// roughness (RoughnessToAlpha) or taken as given, then clamped to 0.001 as its
-// TrowbridgeReitzDistribution does.
 double Importer::roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap) {
-  double roughness = float_param(params, name).value_or(fallback);
-  return std::max(1e-3, remap ? roughness_to_alpha(roughness) : roughness);
+  return microfacet_alpha(float_param(params, name).value_or(fallback), remap);
+}
+
+// η or k of a metal: a constant (rgb, xyz, blackbody, a sampled or named
+// spectrum, or a constant texture). η must be above 0 (the Fresnel equations
+// divide by η² + k² at normal incidence), k at least 0 (0: a dielectric); the
+// bound of 1000 keeps the equations' fourth powers inside float range.
+IndexSpectrum Importer::index_spectrum(ParamSet& params, const char* name, const Rgb& fallback, bool zero_allowed) {
+  TextureEntry entry;
+  entry.value = fallback;
+  const Param* param = nullptr;
+  if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
+  if (entry.textured())
+    refuse_texture(params, *param, entry, name,
+                   "a metal's \"eta\" and \"k\" are constants here: rgb, a named spectrum or [wavelength value ...] pairs");
+  for (double value : entry.value)
+    if (!((zero_allowed ? value >= 0 : value > 0) && value <= 1000))
+      params.fail_at(*param,
+                     "\"" + std::string(name) + "\" of " + params.context() + " must lie in " +
+                         (zero_allowed ? "[0, 1000]" : "(0, 1000]") + " in every channel, found " + format_rgb(entry.value),
+                     zero_allowed ? "k is the extinction coefficient: 0 for a dielectric, copper's is 2.1 to 3.9"
+                                  : "eta is the real part of the metal's index over the outside's: copper's is 0.2 to 1.1");
+  return IndexSpectrum(static_cast<Real>(entry.value[0]), static_cast<Real>(entry.value[1]),
+                       static_cast<Real>(entry.value[2]));
+}
+
+// pbrt-v3 reads "uroughness" and "vroughness" for an anisotropic lobe; the one
+// here is isotropic, so they must agree.
+double Importer::isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at) {
+  if (u != v)
+    fail(at, "an anisotropic " + params.context() + " (\"uroughness\" " + format_number(u) + ", \"vroughness\" " +
+                 format_number(v) + ") is not supported",
+         "the microfacet lobe here is isotropic: give one \"roughness\"");
+  return u;
+}
+
+// An alpha the renderer's precision holds (a huge unremapped roughness does not).
+Real Importer::checked_alpha(double alpha, const ParamSet& params, SourceRange at) {
+  Real value = static_cast<Real>(alpha);
+  if (!std::isfinite(value)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
+  return value;
 }
 
 double Importer::index_of_refraction(ParamSet& params, SourceRange at) {
@@ -194,6 +256,8 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     params.reject("vroughness", "rough glass (only 0: smooth glass)", 0.0);
     params.one_bool("remaproughness", true);  // no roughness to remap
     material.model = glass(kr, kt, index_of_refraction(params, at));
+  } else if (type == "metal") {
+    material.model = metal(params, at);
   }
   return material;
 }
@@ -216,11 +280,7 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
   bool remap = params.one_bool("remaproughness", true);
   double roughness = float_param(params, "roughness").value_or(0.1);
   double u = float_param(params, "uroughness").value_or(roughness);
-  double v = float_param(params, "vroughness").value_or(u);
-  if (u != v)
-    fail(at, "an anisotropic " + params.context() + " (\"uroughness\" " + format_number(u) + ", \"vroughness\" " +
-                 format_number(v) + ") is not supported",
-         "the microfacet lobe here is isotropic: give one \"roughness\"");
+  u = isotropic_roughness(u, float_param(params, "vroughness").value_or(u), params, at);
   double eta = index_of_refraction(params, at);
   bool lobed = !black(kd) || !sg::is_black(ks), specular = !sg::is_black(kr) || !sg::is_black(kt);
   if (lobed && specular)
@@ -229,8 +289,7 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
   if (specular) {
     material.model = glass(kr, kt, eta);
   } else {
-    double alpha = std::max(1e-3, remap ? roughness_to_alpha(u) : u);
-    material.model = plastic(kd, ks, alpha, eta, false, params, at);
+    material.model = plastic(kd, ks, microfacet_alpha(u, remap), eta, false, params, at);
   }
   return material;
 }
@@ -238,7 +297,7 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
 MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
                                bool pbrt_v3_fresnel, const ParamSet& params, SourceRange at) {
   if (sg::is_black(ks)) return lambert_or_black(kd);  // the Lambertian lobe alone, as pbrt-v3 builds it
-  PlasticMaterial plastic{kd, ks, static_cast<Real>(alpha), static_cast<Real>(ior), pbrt_v3_fresnel};
+  PlasticMaterial plastic{kd, ks, checked_alpha(alpha, params, at), static_cast<Real>(ior), pbrt_v3_fresnel};
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.textured()) largest *= sg::raw(texture_maximum(kd.texture, kd.pattern));
   sg::vec3_rep sum = largest + sg::raw(ks);
@@ -246,8 +305,25 @@ MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, d
     warn(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
                  format_number(std::max({sum.x, sum.y, sum.z})) + "): the surface can reflect more light than it receives",
          "rendered as pbrt-v3 renders it; lower Kd or Ks for a surface that conserves energy");
-  if (!std::isfinite(plastic.alpha)) fail(at, "the roughness of " + params.context() + " is out of " + kRealName + " range");
   return plastic;
+}
+
+// pbrt-v3's metal (src/materials/metal.cpp): a MicrofacetReflection of its
+// FresnelConductor(1, η, k) and a Trowbridge–Reitz distribution; by default
+// copper's η and k (its CopperN and CopperK, which are "metal-Cu-eta" and
+// "metal-Cu-k") and roughness 0.01, remapped.
+MaterialModel Importer::metal(ParamSet& params, SourceRange at) {
+  static const Rgb copper_eta = *named_spectrum_rgb("metal-Cu-eta"), copper_k = *named_spectrum_rgb("metal-Cu-k");
+  ConductorMaterial metal;
+  metal.eta = index_spectrum(params, "eta", copper_eta, false);
+  metal.k = index_spectrum(params, "k", copper_k, true);
+  bool remap = params.one_bool("remaproughness", true);
+  // Unlike uber's, metal's "vroughness" falls back to "roughness", not to "uroughness".
+  double roughness = float_param(params, "roughness").value_or(0.01);
+  double u = float_param(params, "uroughness").value_or(roughness), v = float_param(params, "vroughness").value_or(roughness);
+  u = isotropic_roughness(u, v, params, at);
+  metal.alpha = checked_alpha(microfacet_alpha(u, remap), params, at);
+  return metal;
 }
 
 MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {

@@ -2,6 +2,7 @@
 
 #include "pbrt_colour.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -119,9 +120,10 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
     return value;
   }
   const std::vector<double>& v = param->numbers;
-  if (param->type == ParamType::spectrum)
-    fail_at(*param, declared(*param) + ": sampled spectra are not supported",
-            "give the colour as \"rgb " + param->name + "\" [r g b]");
+  if (param->type == ParamType::spectrum) {
+    value.rgb = sampled_spectrum(*param);
+    return value;
+  }
   if (param->type == ParamType::blackbody) {
     // pbrt-v3 reads [temperature scale]; pbrt-v4's one value is another format.
     if (v.size() != 2)
@@ -136,6 +138,35 @@ std::optional<SpectrumValue> ParamSet::spectrum(std::string_view name, bool allo
     fail(param->values, declared(*param) + " takes 3 values, found " + std::to_string(v.size()));
   value.rgb = param->type == ParamType::xyz ? xyz_to_rgb({v[0], v[1], v[2]}) : Rgb{v[0], v[1], v[2]};
   return value;
+}
+
+// pbrt-v3 reads "spectrum" as [wavelength value ...] pairs, or as the name of
+// a file of such pairs (which the parser has read into `numbers`). A name is
+// one of pbrt-v4's measured metals, which scenes exported for pbrt-v4 use.
+Rgb ParamSet::sampled_spectrum(const Param& param) const {
+  if (param.is_string) {
+    std::optional<Rgb> named = param.strings.size() == 1 ? named_spectrum_rgb(param.strings[0]) : std::nullopt;
+    if (!named)
+      fail(param.values, declared(param) + " names one spectrum or file, found " + std::to_string(param.strings.size()));
+    return *named;
+  }
+  const std::vector<double>& v = param.numbers;
+  if (v.empty() || v.size() % 2 != 0)
+    fail(param.values, declared(param) + " takes [wavelength value ...] pairs, found " + std::to_string(v.size()) +
+                           " number" + (v.size() == 1 ? "" : "s"));
+  std::vector<SpectrumSample> samples;
+  for (size_t i = 0; i < v.size(); i += 2) {
+    if (!(v[i] > 0)) fail(param.values, declared(param) + ": wavelengths (nm) must be above 0, found " + format_number(v[i]));
+    samples.push_back({v[i], v[i + 1]});
+  }
+  // Sorted first, so that a long list is checked in n log n.
+  std::sort(samples.begin(), samples.end(),
+            [](const SpectrumSample& a, const SpectrumSample& b) { return a.wavelength_nm < b.wavelength_nm; });
+  for (size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].wavelength_nm == samples[i - 1].wavelength_nm)
+      fail(param.values, declared(param) + " gives the wavelength " + format_number(samples[i].wavelength_nm) + " nm twice",
+           "pbrt-v3 stops on a failed check there");
+  return sampled_spectrum_rgb(std::move(samples));
 }
 
 void ParamSet::reject(std::string_view name, const std::string& why, std::optional<double> harmless) {

@@ -41,9 +41,9 @@ class ParamSet {
   std::string one_string(std::string_view name, const std::string& fallback);
   std::optional<Triple> one_point(std::string_view name);
   std::vector<double> floats(std::string_view name);              // every value, any count
-  // rgb/color, xyz and blackbody [temperature scale] (converted as pbrt-v3's
-  // RGB build does), or a texture name where `allow_texture`; sampled spectra
-  // are errors.
+  // rgb/color, xyz, blackbody [temperature scale] and spectrum ([wavelength
+  // value ...] pairs, or one of pbrt-v4's named metal spectra), converted as
+  // pbrt-v3's RGB build converts them, or a texture name where `allow_texture`.
   std::optional<SpectrumValue> spectrum(std::string_view name, bool allow_texture);
 
   // A parameter pbrt-v3 reads but the importer cannot represent: an error,
@@ -60,6 +60,7 @@ class ParamSet {
 
  private:
   const Param* single(std::string_view name, std::initializer_list<ParamType> types, size_t values);
+  Rgb sampled_spectrum(const Param& param) const;
 
   std::vector<const Param*> params_;
   std::vector<bool> used_;

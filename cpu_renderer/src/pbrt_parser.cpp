@@ -1,9 +1,12 @@
 #include "pbrt_parser.hpp"
 
+#include "pbrt_colour.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -95,6 +98,44 @@ std::string type_list() {
 SourceRange span(SourceRange first, SourceRange last) {
   if (first.begin.file != last.begin.file) return first;
   return {first.begin, last.end};
+}
+
+// pbrt-v3's ReadFloatFile: numbers (characters of 0-9 . e + -, starting
+// with no e) separated by anything else, '#' comments to the end of the line.
+// pbrt-v3 warns about other text and skips it; here it is an error.
+bool read_float_file(std::string_view text, std::vector<double>& values, std::string& error) {
+  int line = 1;
+  auto starts_number = [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
+  };
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i];
+    if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (starts_number(c)) {
+      size_t start = i;
+      while (i < text.size() && (starts_number(text[i]) || text[i] == 'e')) ++i;
+      std::string_view word = text.substr(start, i - start);
+      if (word[0] == '+') word.remove_prefix(1);
+      double value = 0;
+      auto [end, failed] = std::from_chars(word.data(), word.data() + word.size(), value);
+      if (failed != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) {
+        error = "line " + std::to_string(line) + ": '" + std::string(text.substr(start, i - start)) + "' is not a number";
+        return false;
+      }
+      values.push_back(value);
+    } else if (std::isspace(static_cast<unsigned char>(c))) {
+      line += c == '\n';
+      ++i;
+    } else {
+      char shown[8];
+      std::snprintf(shown, sizeof shown, std::isprint(static_cast<unsigned char>(c)) ? "'%c'" : "byte %02x",
+                    static_cast<unsigned char>(c));
+      error = "line " + std::to_string(line) + ": " + shown + " is neither a number nor a '#' comment";
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -264,7 +305,32 @@ Param Parser::parameter(const Token& declaration) {
       param.numbers.push_back(number(value));
     }
   }
+  if (param.type == ParamType::spectrum && param.is_string && param.strings.size() == 1 &&
+      !is_named_spectrum(param.strings[0]))
+    read_spectrum_file(param);
   return param;
+}
+
+// pbrt-v3's "spectrum" given as a file name: the file's [wavelength value ...]
+// pairs (an .spd file), resolved as Include resolves its files.
+void Parser::read_spectrum_file(Param& param) {
+  std::filesystem::path path = param.strings[0];
+  if (path.is_relative()) path = search_directory_ / path;
+  std::string error;
+  std::optional<std::string> text = read_file_(path, error);
+  if (!text)
+    fail(param.values, "cannot read spectrum file '" + path.string() + "': " + error,
+         "pbrt-v3 resolves it against the directory of the main scene file (and renders black without it); "
+         "named spectra: " + named_spectrum_names());
+  std::vector<double> numbers;
+  if (!read_float_file(*text, numbers, error)) fail(param.values, "spectrum file '" + path.string() + "', " + error);
+  if (numbers.size() % 2 != 0)
+    fail(param.values, "spectrum file '" + path.string() + "' holds " + std::to_string(numbers.size()) +
+                           " numbers, not [wavelength value ...] pairs",
+         "pbrt-v3 would drop the last one");
+  param.numbers = std::move(numbers);
+  param.strings.clear();
+  param.is_string = false;
 }
 
 void Parser::parameter_list(Directive& directive) {

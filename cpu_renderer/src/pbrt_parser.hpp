@@ -29,7 +29,7 @@ struct Param {
   SourceRange values;       // the value, or the bracketed list
   std::vector<double> numbers;
   std::vector<std::string> strings;  // also bools ("true"/"false") and texture names
-  bool is_string = false;   // a spectrum may be numbers or file names
+  bool is_string = false;   // a spectrum may be numbers or a name (its file is read into `numbers`)
 };
 
 struct Directive {
@@ -69,6 +69,7 @@ class Parser {
   void parameter_list(Directive& directive);
   Param parameter(const Token& declaration);
   void include(const Directive& directive);
+  void read_spectrum_file(Param& param);
 
   SourceManager& sources_;
   std::filesystem::path search_directory_;

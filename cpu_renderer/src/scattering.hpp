@@ -1,6 +1,7 @@
-// The physics under the dielectric materials: Fresnel reflectance of a smooth
-// interface, refraction, and the Trowbridge–Reitz (GGX) microfacet
-// distribution with Smith's masking, in the local shading space (normal = +z).
+// The physics under the materials: Fresnel reflectance of a smooth dielectric
+// or conductor interface, refraction, and the Trowbridge–Reitz (GGX)
+// microfacet distribution with Smith's masking and the Torrance–Sparrow
+// reflection it gives, in the local shading space (normal = +z).
 #pragma once
 
 #include <algorithm>
@@ -24,6 +25,32 @@ inline Real fresnel_dielectric(Real cos_i, Real eta) {
   const Real parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
   const Real perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
   return (parallel * parallel + perpendicular * perpendicular) / 2;
+}
+
+// The fraction of light a smooth conductor reflects (unpolarised), light
+// arriving at cos θ_i > 0 from a dielectric of index 1 onto a metal of complex
+// index η + ik (relative to that dielectric): pbrt-v3's FrConductor for one
+// channel, the exact Fresnel equations with a complex index. At normal
+// incidence it is ((η − 1)² + k²) / ((η + 1)² + k²); k = 0 gives
+// fresnel_dielectric's value.
+inline Real fresnel_conductor(Real cos_i, Real eta, Real k) {
+  cos_i = std::clamp(cos_i, Real(0), Real(1));
+  const Real cos2 = cos_i * cos_i, sin2 = 1 - cos2;
+  const Real eta2 = eta * eta, k2 = k * k;
+  // a² + b² and a, where a + ib is the complex cosine of the refracted angle times the index.
+  const Real t0 = eta2 - k2 - sin2;
+  const Real a2_plus_b2 = std::sqrt(t0 * t0 + 4 * eta2 * k2);
+  const Real a = std::sqrt(std::max(Real(0), (a2_plus_b2 + t0) / 2));
+  const Real t1 = a2_plus_b2 + cos2, t2 = 2 * cos_i * a;
+  const Real perpendicular = (t1 - t2) / (t1 + t2);
+  const Real t3 = cos2 * a2_plus_b2 + sin2 * sin2, t4 = t2 * sin2;
+  const Real parallel = perpendicular * (t3 - t4) / (t3 + t4);
+  return (parallel + perpendicular) / 2;
+}
+// The same per channel: η and k are spectra (dimensionless), so is the reflectance.
+inline Reflectance fresnel_conductor(Real cos_i, IndexSpectrum eta, IndexSpectrum k) {
+  return Reflectance(fresnel_conductor(cos_i, eta.r(), k.r()), fresnel_conductor(cos_i, eta.g(), k.g()),
+                     fresnel_conductor(cos_i, eta.b(), k.b()));
 }
 
 // Snell's law: the direction refracted from `wo` (pointing away from the
@@ -66,6 +93,22 @@ class TrowbridgeReitz {
   // The density of sample_normal, per solid angle of normals.
   PdfSolidAngle normal_pdf(DirectionShading h) const { return density(h) * sg::cos_theta(h); }
 
+  // Torrance–Sparrow reflection by facets that reflect everything,
+  // D(h) G(ωo, ωi) / (4 cos θo cos θi) with h the half vector of ωo and ωi: a
+  // material multiplies it by its Fresnel factor at ωi·h. The two cosines are
+  // the geometric factors of the microfacet derivation, plain ratios here: the
+  // projected measure is D's, so the result is per projected solid angle, a BRDF's.
+  quantity<dim::brdf> reflection(DirectionShading wo, DirectionShading wi, DirectionShading h) const {
+    return masking_shadowing(wo, wi) / (4 * wo.z() * wi.z()) * density(h);
+  }
+  // ωo reflected about a normal drawn by sample_normal.
+  DirectionShading sample_reflection(DirectionShading wo, Real u1, Real u2) const {
+    DirectionShading h = sample_normal(u1, u2);
+    return sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
+  }
+  // The density of sample_reflection per solid angle of ωi, h their half vector.
+  PdfSolidAngle reflection_pdf(DirectionShading wo, DirectionShading h) const;
+
  private:
   Real lambda(DirectionShading w) const {
     const Real cos2 = w.z() * w.z();
@@ -86,6 +129,10 @@ inline DirectionShading half_vector(DirectionShading wo, DirectionShading wi) {
 // angles (of microfacet normals and of directions), so the ratio is a number.
 inline Real reflection_jacobian(DirectionShading wo, DirectionShading h) {
   return 1 / (4 * std::abs(sg::dot(wo, h)));
+}
+
+inline PdfSolidAngle TrowbridgeReitz::reflection_pdf(DirectionShading wo, DirectionShading h) const {
+  return normal_pdf(h) * reflection_jacobian(wo, h);
 }
 
 }  // namespace safegi::render

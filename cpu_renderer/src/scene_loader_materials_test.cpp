@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "safegi/cpu_renderer/image.hpp"
+#include "pbrt_colour.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
 namespace safegi::render {
@@ -81,7 +82,48 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "plastic", "diffuse": 0.5, "specular": 0.5, "alpha": 0}})j")),
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
-            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\" or \"plastic\", got \"wood\"");
+            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\" or "
+            "\"conductor\", got \"wood\"");
+}
+
+TEST_F(LoaderFiles, Conductor) {
+  Scene scene = load(with_camera(R"j("materials": {
+      "copper": {"type": "conductor", "eta": [0.2, 0.92, 1.1], "k": [3.9, 2.45, 2.14], "alpha": 0.1},
+      "gold": {"type": "conductor", "eta": "metal-Au-eta", "k": "metal-Au-k", "alpha": 0.01},
+      "grey": {"type": "conductor", "eta": 1.5, "k": 0, "alpha": 1}})j"));
+  ASSERT_EQ(scene.materials.size(), 3u);
+  auto metal = [&](const std::string& name) {
+    for (const Material& m : scene.materials)
+      if (m.name == name) return std::get<ConductorMaterial>(m.model);
+    throw std::runtime_error("no material " + name);
+  };
+  EXPECT_EQ(sg::raw(metal("copper").eta), glm::vec3(0.2f, 0.92f, 1.1f));
+  EXPECT_EQ(sg::raw(metal("copper").k), glm::vec3(3.9f, 2.45f, 2.14f));
+  EXPECT_FLOAT_EQ(metal("copper").alpha, 0.1f);
+  std::array<double, 3> gold_eta = *pbrt::named_spectrum_rgb("metal-Au-eta"), gold_k = *pbrt::named_spectrum_rgb("metal-Au-k");
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_FLOAT_EQ(metal("gold").eta[c], static_cast<float>(gold_eta[c]));
+    EXPECT_FLOAT_EQ(metal("gold").k[c], static_cast<float>(gold_k[c]));
+  }
+  EXPECT_EQ(sg::raw(metal("grey").eta), glm::vec3(1.5f));
+  EXPECT_EQ(sg::raw(metal("grey").k), glm::vec3(0.0f));
+
+  auto conductor_error = [&](const std::string& fields) {
+    return error(with_camera(R"j("materials": {"m": {"type": "conductor", )j" + fields + "}}"));
+  };
+  EXPECT_EQ(conductor_error(R"j("eta": 1, "alpha": 0.1)j"), "test.json: materials.m: missing field 'k'");
+  EXPECT_EQ(conductor_error(R"j("eta": [0.2, 0, 1], "k": 1, "alpha": 0.1)j"),
+            "test.json: materials.m.eta: expected values in (0, 1000] in every channel, got [0.2,0,1]");
+  EXPECT_EQ(conductor_error(R"j("eta": 1, "k": -1, "alpha": 0.1)j"),
+            "test.json: materials.m.k: expected values in [0, 1000] in every channel, got -1");
+  EXPECT_EQ(conductor_error(R"j("eta": 1, "k": 1, "alpha": 0)j"),
+            "test.json: materials.m.alpha: expected a number in [0.0001, 1], got 0");
+  EXPECT_EQ(conductor_error(R"j("eta": "metal-Xx-eta", "k": 1, "alpha": 0.1)j"),
+            "test.json: materials.m.eta: expected a number, [r, g, b] or a named spectrum (\"metal-Ag-eta\", "
+            "\"metal-Ag-k\", \"metal-Al-eta\", \"metal-Al-k\", \"metal-Au-eta\", \"metal-Au-k\", \"metal-Cu-eta\", "
+            "\"metal-Cu-k\", \"metal-CuZn-eta\", \"metal-CuZn-k\"), got \"metal-Xx-eta\"");
+  EXPECT_EQ(conductor_error(R"j("eta": 1, "k": 1, "alpha": 0.1, "roughness": 0.1)j"),
+            "test.json: materials.m.roughness: unknown field (expected one of: type, eta, k, alpha)");
 }
 
 TEST_F(LoaderFiles, ImageTextures) {

@@ -271,6 +271,8 @@ struct Preview::Impl {
     }
     add(names_of([](const Material& m) { return std::holds_alternative<GlassMaterial>(m.model); }),
         "glass is not previewed and appears black");
+    add(names_of([](const Material& m) { return std::holds_alternative<ConductorMaterial>(m.model); }),
+        "metal is not previewed and appears black");
     add(names_of([](const Material& m) { return std::holds_alternative<PlasticMaterial>(m.model); }),
         "plastic is drawn as its diffuse layer, without its coating's reflection");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
@@ -288,7 +290,7 @@ struct Preview::Impl {
 
   // What the light passes draw a material with: a diffuse part and a Phong
   // lobe. None for mirrors (a delta BRDF gets no direct light; planar ones
-  // reflect in draw_mirrors), glass and black.
+  // reflect in draw_mirrors), glass, metal and black.
   struct LitSurface {
     Reflectance kd, ks;
     float exponent = 1.0f;
@@ -302,6 +304,7 @@ struct Preview::Impl {
                                  [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [](const MirrorMaterial&) -> Lit { return std::nullopt; },
                                  [](const GlassMaterial&) -> Lit { return std::nullopt; },
+                                 [](const ConductorMaterial&) -> Lit { return std::nullopt; },
                                  [](const BlackMaterial&) -> Lit { return std::nullopt; }},
                       material.model);
   }

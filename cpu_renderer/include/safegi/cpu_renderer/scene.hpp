@@ -65,10 +65,17 @@ struct GlassMaterial {  // smooth dielectric
   Reflectance transmittance{};  // the tint of refraction (pbrt's Kt)
   Real ior = 1.5f;              // index of refraction inside over outside
 };
+// A rough metal (pbrt-v3's metal, pbrt-v4's conductor): the conductor's Fresnel
+// reflectance at the microfacet times a Trowbridge–Reitz lobe; nothing enters.
+struct ConductorMaterial {
+  IndexSpectrum eta{};  // the metal's index over the outside's, real part η (> 0), per channel
+  IndexSpectrum k{};    // the extinction coefficient k (>= 0): the index's imaginary part
+  Real alpha = 0.001f;  // the lobe's GGX roughness alpha (pbrt-v3's floor: 0.001)
+};
 struct BlackMaterial {};  // absorbs everything
 
-using MaterialModel =
-    std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial, GlassMaterial>;
+using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
+                                   GlassMaterial, ConductorMaterial>;
 
 struct Material {
   MaterialModel model;

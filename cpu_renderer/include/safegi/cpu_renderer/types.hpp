@@ -26,6 +26,9 @@ using PdfSolidAngle = quantity<dim::pdf_solid_angle>;
 using PdfArea = quantity<dim::pdf_area>;
 
 using Reflectance = spectrum<dim::dimensionless>;  // albedos and path throughput
+// A complex index of refraction's real part η or extinction k, per channel: a
+// ratio like a reflectance (the same type), but not bounded by 1.
+using IndexSpectrum = spectrum<dim::dimensionless>;
 using Radiance = spectrum<dim::radiance>;
 using Intensity = spectrum<dim::intensity>;
 using Brdf = spectrum<dim::brdf>;
