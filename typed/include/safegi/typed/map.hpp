@@ -210,7 +210,8 @@ diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner
 operator*(const basic_projective_map<B, C>&, const basic_map<A, B2>&);
 template <class B, class C, class A, class B2>
   requires rules::same_space<B, B2>
-constexpr basic_projective_map<A, C> operator*(const basic_projective_map<B, C>& outer, const basic_map<A, B2>& inner) {
+constexpr basic_projective_map<A, C> operator*(const basic_projective_map<B, C>& outer,
+                                               const basic_map<A, B2>& inner) {
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 template <class B, class C, class A, class B2>
@@ -218,7 +219,8 @@ diagnose::maps_do_not_meet<diagnose::outer<diagnose::map<B, C>>, diagnose::inner
 operator*(const basic_map<B, C>&, const basic_projective_map<A, B2>&);
 template <class B, class C, class A, class B2>
   requires rules::same_space<B, B2>
-constexpr basic_projective_map<A, C> operator*(const basic_map<B, C>& outer, const basic_projective_map<A, B2>& inner) {
+constexpr basic_projective_map<A, C> operator*(const basic_map<B, C>& outer,
+                                               const basic_projective_map<A, B2>& inner) {
   return basic_projective_map<A, C>(detail::raw_tag{}, compose(outer.raw_value(), inner.raw_value()));
 }
 

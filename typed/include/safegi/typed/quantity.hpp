@@ -70,22 +70,22 @@ class basic_quantity {
   template <class E>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE("cannot convert a quantity of one dimension into another")
-    basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
-    template <arithmetic U>
-    SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
-    basic_quantity(
-        U SAFEGI_REPORTED_AS(diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
+  basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  template <arithmetic U>
+  SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
+  basic_quantity(U SAFEGI_REPORTED_AS(
+      diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
 
-    /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
-    [[nodiscard]] constexpr T raw_value() const { return value_; }
+  /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
+  [[nodiscard]] constexpr T raw_value() const { return value_; }
 
-    constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
-    constexpr basic_quantity operator+() const { return *this; }
+  constexpr basic_quantity operator-() const { return basic_quantity(detail::raw_tag{}, -value_); }
+  constexpr basic_quantity operator+() const { return *this; }
 
-    constexpr basic_quantity& operator+=(basic_quantity other) {
-      value_ += other.raw_value();
-      return *this;
+  constexpr basic_quantity& operator+=(basic_quantity other) {
+    value_ += other.raw_value();
+    return *this;
   }
   constexpr basic_quantity& operator-=(basic_quantity other) {
     value_ -= other.raw_value();
@@ -322,7 +322,7 @@ constexpr Q min(Q a, R b) {
 template <quantity_like Q, quantity_like R>
 diagnose::dimension_mismatch<diagnose::op::min, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
-    min(Q, R);
+min(Q, R);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q max(Q a, R b) {
@@ -331,7 +331,7 @@ constexpr Q max(Q a, R b) {
 template <quantity_like Q, quantity_like R>
 diagnose::dimension_mismatch<diagnose::op::max, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
-    max(Q, R);
+max(Q, R);
 /// max(x, safegi::zero), min(x, safegi::zero): zero has every dimension.
 template <quantity_like Q>
 constexpr Q max(Q a, zero_t) {
@@ -349,16 +349,20 @@ template <quantity_like Q>
 constexpr Q min(zero_t, Q b) {
   return safegi::min(b, zero);
 }
+namespace detail {
+/// The bound of clamp(q, low, high) whose dimension differs from q's (low, if both do).
+template <class Q, class L, class H>
+using clamp_bound_dimension =
+    std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>, dimension_of<L>>;
+}  // namespace detail
 template <quantity_like Q, quantity_like L, quantity_like H>
-diagnose::dimension_mismatch<
-    diagnose::op::clamp, in_words<dimension_of<Q>>,
-    in_words<std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>, dimension_of<L>>>,
-    ratio_in_words<dimension_of<Q>, std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>,
-                                                       dimension_of<H>, dimension_of<L>>>>
-    clamp(Q, L, H);
+diagnose::dimension_mismatch<diagnose::op::clamp, in_words<dimension_of<Q>>,
+                             in_words<detail::clamp_bound_dimension<Q, L, H>>,
+                             ratio_in_words<dimension_of<Q>, detail::clamp_bound_dimension<Q, L, H>>>
+clamp(Q, L, H);
 template <quantity_like Q, quantity_like L, quantity_like H>
-requires rules::same_dimension<dimension_of<Q>, dimension_of<L>> &&
-    rules::same_dimension<dimension_of<Q>, dimension_of<H>>
+  requires rules::same_dimension<dimension_of<Q>, dimension_of<L>> &&
+           rules::same_dimension<dimension_of<Q>, dimension_of<H>>
 constexpr Q clamp(Q q, L low, H high) {
   return detail::same_kind<Q>(raw(q) < raw(low) ? raw(low) : (raw(high) < raw(q) ? raw(high) : raw(q)));
 }
@@ -366,7 +370,7 @@ constexpr Q clamp(Q q, L low, H high) {
 template <quantity_like Q, quantity_like R>
 diagnose::dimension_mismatch<diagnose::op::lerp, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
-    lerp(Q, R, rep_of<Q>);
+lerp(Q, R, rep_of<Q>);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr Q lerp(Q a, R b, rep_of<Q> t) {
@@ -451,7 +455,7 @@ constexpr quantity<dim::angle, rep_of<Q>> atan(Q ratio) {
 template <quantity_like Q, quantity_like R>
 diagnose::dimension_mismatch<diagnose::op::atan2, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
-    atan2(Q, R);
+atan2(Q, R);
 template <quantity_like Q, quantity_like R>
   requires rules::same_dimension<dimension_of<Q>, dimension_of<R>>
 constexpr quantity<dim::angle, rep_of<Q>> atan2(Q y, R x) {

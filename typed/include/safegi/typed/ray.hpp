@@ -19,11 +19,11 @@ struct basic_ray {
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a ray from one space into another by assignment: transform(m, r)")
-    basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
+  basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
 
-    /// The point at distance t along the ray.
-    constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
+  /// The point at distance t along the ray.
+  constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }
 };
 
 template <space_type S>

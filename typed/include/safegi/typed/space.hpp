@@ -151,23 +151,23 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a point from one space into another by assignment: apply a map<From, To>")
-    basic_point(basic_point<S2> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_spaces<diagnose::kind::point, S2, S>));  // NOLINT
-    template <class S2, class D>
-    SAFEGI_MISTAKE("a vector is not a point: p + v moves a point")
-    basic_point(basic_vector<S2, D> SAFEGI_REPORTED_AS(
-        diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::vector, S2>));  // NOLINT
-    template <class S2>
-    SAFEGI_MISTAKE("an hpoint is not a point: dehomogenize(h)")
-    basic_point(basic_hpoint<S2> SAFEGI_REPORTED_AS(
-        diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::hpoint, S2>));  // NOLINT
+  basic_point(basic_point<S2> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_spaces<diagnose::kind::point, S2, S>));  // NOLINT
+  template <class S2, class D>
+  SAFEGI_MISTAKE("a vector is not a point: p + v moves a point")
+  basic_point(basic_vector<S2, D> SAFEGI_REPORTED_AS(
+      diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::vector, S2>));  // NOLINT
+  template <class S2>
+  SAFEGI_MISTAKE("an hpoint is not a point: dehomogenize(h)")
+  basic_point(basic_hpoint<S2> SAFEGI_REPORTED_AS(
+      diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::hpoint, S2>));  // NOLINT
 
-    [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
-    [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
-    [[nodiscard]] constexpr quantity<dim::length> z() const { return detail::component<dim::length>(this->xyz_.z); }
-    /// Component i (0, 1, 2), e.g. the split axis of a BVH.
-    [[nodiscard]] constexpr quantity<dim::length> operator[](int i) const {
-      return detail::component<dim::length>(this->xyz_[i]);
+  [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
+  [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
+  [[nodiscard]] constexpr quantity<dim::length> z() const { return detail::component<dim::length>(this->xyz_.z); }
+  /// Component i (0, 1, 2), e.g. the split axis of a BVH.
+  [[nodiscard]] constexpr quantity<dim::length> operator[](int i) const {
+    return detail::component<dim::length>(this->xyz_[i]);
   }
 };
 
@@ -184,23 +184,23 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   template <class S2, class E>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a vector from one space into another by assignment: apply a map<From, To>")
-    basic_vector(basic_vector<S2, E> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_spaces<diagnose::kind::vector, S2, S>));  // NOLINT
-    template <class E>
+  basic_vector(basic_vector<S2, E> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_spaces<diagnose::kind::vector, S2, S>));  // NOLINT
+  template <class E>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE("cannot convert a vector of one dimension into another")
-    basic_vector(basic_vector<S, E> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  basic_vector(basic_vector<S, E> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
 
-    [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
-    [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
-    [[nodiscard]] constexpr quantity<D> z() const { return detail::component<D>(this->xyz_.z); }
-    [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
+  [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
+  [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
+  [[nodiscard]] constexpr quantity<D> z() const { return detail::component<D>(this->xyz_.z); }
+  [[nodiscard]] constexpr quantity<D> operator[](int i) const { return detail::component<D>(this->xyz_[i]); }
 
-    constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
-    constexpr basic_vector& operator+=(basic_vector other) {
-      this->xyz_ += other.raw_value();
-      return *this;
+  constexpr basic_vector operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+  constexpr basic_vector& operator+=(basic_vector other) {
+    this->xyz_ += other.raw_value();
+    return *this;
   }
   constexpr basic_vector& operator-=(basic_vector other) {
     this->xyz_ -= other.raw_value();
@@ -243,22 +243,22 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a direction from one space into another by assignment: apply a map<From, To>")
-    basic_direction(basic_direction<S2> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_spaces<diagnose::kind::direction, S2, S>));  // NOLINT
-    template <class S2, class D>
-    SAFEGI_MISTAKE("a vector is not a direction: normalize(v)")
-    basic_direction(basic_vector<S2, D> SAFEGI_REPORTED_AS(
-        diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::vector_to_normalize, S2>));  // NOLINT
-    template <class S2>
-    SAFEGI_MISTAKE("a normal is not a direction: to_direction(n)")
-    basic_direction(basic_normal<S2> SAFEGI_REPORTED_AS(
-        diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::normal, S2>));  // NOLINT
+  basic_direction(basic_direction<S2> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_spaces<diagnose::kind::direction, S2, S>));  // NOLINT
+  template <class S2, class D>
+  SAFEGI_MISTAKE("a vector is not a direction: normalize(v)")
+  basic_direction(basic_vector<S2, D> SAFEGI_REPORTED_AS(
+      diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::vector_to_normalize, S2>));  // NOLINT
+  template <class S2>
+  SAFEGI_MISTAKE("a normal is not a direction: to_direction(n)")
+  basic_direction(basic_normal<S2> SAFEGI_REPORTED_AS(
+      diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::normal, S2>));  // NOLINT
 
-    [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
-    [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
-    [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
-    [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
-    constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+  [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
+  constexpr basic_direction operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
 template <class S>
@@ -276,18 +276,18 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   template <class S2>
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE("cannot convert a normal from one space into another by assignment: apply a map<From, To>")
-    basic_normal(basic_normal<S2> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_spaces<diagnose::kind::normal, S2, S>));  // NOLINT
-    template <class S2>
-    SAFEGI_MISTAKE("a direction is not a normal: to_normal(d)")
-    basic_normal(basic_direction<S2> SAFEGI_REPORTED_AS(
-        diagnose::wrong_geometric_kind<diagnose::kind::normal, diagnose::kind::direction, S2>));  // NOLINT
+  basic_normal(basic_normal<S2> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_spaces<diagnose::kind::normal, S2, S>));  // NOLINT
+  template <class S2>
+  SAFEGI_MISTAKE("a direction is not a normal: to_normal(d)")
+  basic_normal(basic_direction<S2> SAFEGI_REPORTED_AS(
+      diagnose::wrong_geometric_kind<diagnose::kind::normal, diagnose::kind::direction, S2>));  // NOLINT
 
-    [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
-    [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
-    [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
-    [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
-    constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
+  [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
+  [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
+  [[nodiscard]] constexpr real z() const { return this->xyz_.z; }
+  [[nodiscard]] constexpr real operator[](int i) const { return this->xyz_[i]; }
+  constexpr basic_normal operator-() const { return {detail::raw_tag{}, -this->xyz_}; }
 };
 
 template <class S>
@@ -340,8 +340,9 @@ constexpr detail::displacement<S> operator-(basic_point<S> a, basic_point<S2> b)
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
-requires rules::same_space<S, S2> diagnose::dimension_mismatch<diagnose::op::plus, in_words<detail::length_dimension>,
-                                                               in_words<D>, ratio_in_words<detail::length_dimension, D>>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<detail::length_dimension>, in_words<D>,
+                             ratio_in_words<detail::length_dimension, D>>
 operator+(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
   requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>
@@ -351,8 +352,9 @@ constexpr basic_point<S> operator+(basic_point<S> p, basic_vector<S2, D> v) {
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::plus, S2, S> operator+(basic_vector<S2, D>, basic_point<S>);
 template <class S, class S2, class D>
-requires rules::same_space<S, S2> diagnose::dimension_mismatch<
-    diagnose::op::plus, in_words<D>, in_words<detail::length_dimension>, ratio_in_words<D, detail::length_dimension>>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<detail::length_dimension>,
+                             ratio_in_words<D, detail::length_dimension>>
 operator+(basic_vector<S2, D>, basic_point<S>);
 template <class S, class S2, class D>
   requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>
@@ -362,8 +364,9 @@ constexpr basic_point<S> operator+(basic_vector<S2, D> v, basic_point<S> p) {
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
-requires rules::same_space<S, S2> diagnose::dimension_mismatch<diagnose::op::minus, in_words<detail::length_dimension>,
-                                                               in_words<D>, ratio_in_words<detail::length_dimension, D>>
+  requires rules::same_space<S, S2>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<detail::length_dimension>, in_words<D>,
+                             ratio_in_words<detail::length_dimension, D>>
 operator-(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
   requires rules::same_space<S, S2> && rules::same_dimension<detail::length_dimension, D>

@@ -29,19 +29,19 @@ class basic_spectrum {
   template <class E>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE("cannot convert a spectrum of one dimension into another")
-    basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(
-        diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(
+      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
 
-    [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
-    [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
-    [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, real>(rgb_.g); }
-    [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, real>(rgb_.b); }
-    [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
+  [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
+  [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }
+  [[nodiscard]] constexpr quantity<D> g() const { return make_quantity<D, real>(rgb_.g); }
+  [[nodiscard]] constexpr quantity<D> b() const { return make_quantity<D, real>(rgb_.b); }
+  [[nodiscard]] constexpr quantity<D> operator[](int channel) const { return make_quantity<D, real>(rgb_[channel]); }
 
-    constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
-    constexpr basic_spectrum& operator+=(basic_spectrum other) {
-      rgb_ += other.raw_value();
-      return *this;
+  constexpr basic_spectrum operator-() const { return {detail::raw_tag{}, -rgb_}; }
+  constexpr basic_spectrum& operator+=(basic_spectrum other) {
+    rgb_ += other.raw_value();
+    return *this;
   }
   constexpr basic_spectrum& operator-=(basic_spectrum other) {
     rgb_ -= other.raw_value();
