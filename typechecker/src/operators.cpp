@@ -321,7 +321,11 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   const Geometry g = a_scalar ? gb : ga;
   const Type& geo = a_scalar ? b : a;
   if (a_scalar || b_scalar) {
-    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal)) out.type.dim = projected_component(*d);
+    // A cosine scaling a unit vector, or a plain multiple of one (`2.0 * n * dot(n, wo)`), is a component along it.
+    const DimSlot& geo_dim = a_scalar ? db : da;
+    const bool plain_multiple = g == Geometry::vector && geo_dim.state == DimSlot::State::known && geo_dim.value.is_dimensionless();
+    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal || plain_multiple))
+      out.type.dim = projected_component(*d);
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;
