@@ -237,10 +237,10 @@ std::string Checker::unit_vector_sum_hint(const Value& lhs, const Value& rhs, co
   if ((unit(ga) && gb == Geometry::vector) || (ga == Geometry::vector && unit(gb))) {
     const Value& v = ga == Geometry::vector ? lhs : rhs;
     const DimSlot& d = ga == Geometry::vector ? left : right;
-    if (d.state == DimSlot::State::known && !d.value.is_dimensionless()) {
-      const std::string name = v.name.empty() ? "v" : v.name;
-      return "a " + std::string(geometry_name(unit(ga) ? ga : gb)) + " has unit length, '" + name + "' is a vector of dimension " +
-             result_.registry.format(d.value) + ": normalize it first, normalize(" + name + ")";
+    // Only a named vector: normalize(name) is code that compiles; an expression's hint is its dimensions'.
+    if (d.state == DimSlot::State::known && !d.value.is_dimensionless() && !v.name.empty()) {
+      return "a " + std::string(geometry_name(unit(ga) ? ga : gb)) + " has unit length, '" + v.name + "' is a vector of dimension " +
+             result_.registry.format(d.value) + ": normalize it first, normalize(" + v.name + ")";
     }
   }
   return operand_hint(left, right, rhs.range);
