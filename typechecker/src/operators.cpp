@@ -209,7 +209,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
     else if (!lhs.zero && !rhs.zero && (cosine_a || cosine_b)) out.type.dim = cosine_a ? db : da;
     else out.type.dim = lhs.zero ? db : da;
-    if (!lhs.zero && !rhs.zero && da.spelling != db.spelling) out.type.dim.spelling.clear();  // k + k keeps k's name
+    keep_shared_spelling(out.type.dim, {da, db});  // k + k keeps k's name
     out.zero = lhs.zero && rhs.zero;
   } else {
     std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
@@ -288,7 +288,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), code::E_DIMENSION_MISMATCH);
     const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
-    if (!lhs.zero && !rhs.zero && da.spelling != db.spelling) out.type.dim.spelling.clear();
+    keep_shared_spelling(out.type.dim, {da, db});
     out.type.from = space;
     if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
       out.type.geometry = Geometry::vector;  // point - point
