@@ -230,9 +230,14 @@ Value Checker::assign(const ast::AssignExpr& e) {
   if (lhs.lvalue && !lhs.read_only && !validate_assignment(e.lhs, lhs)) return error_value(e.range);
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
-    if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";
+    const std::string target = member_path(e.lhs, lhs.name);
+    if (lhs.lvalue)
+      message = target == lhs.name ? "cannot assign to read-only variable '" + lhs.name + "'"
+                                   : "cannot assign to '" + target + "': '" + lhs.name + "' is a read-only variable";
     Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code(code::E_NOT_ASSIGNABLE);
-    if (lhs.origin && lhs.lvalue) d.with_note(Diagnostic::note(lhs.origin->range, lhs.origin->text));
+    std::optional<Origin> origin = lhs.origin;  // a member's value has none: the note is the instance's declaration
+    if (const Variable* var = origin || target == lhs.name ? nullptr : lookup(lhs.name); var && var->range.valid()) origin = var->origin;
+    if (origin && lhs.lvalue) d.with_note(Diagnostic::note(origin->range, origin->text));
     report(std::move(d));
     return error_value(e.range);
   }
