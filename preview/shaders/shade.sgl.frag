@@ -117,12 +117,12 @@ void main() {
     spectrum<intensity> I = lightIntensity * spotFalloff(-wi);
 #endif
 
-    float<1> cosAlpha = max(2.0 * float<1>(dot(n, wo)) * float<1>(cosX) - float<1>(dot(wo, wi)), 0.0);
+    float<1> cosAlpha = max(2.0 * dot(n, wo) * cosX - dot(wo, wi), 0.0);
     spectrum<1> albedoTerms = Kd * INV_PI + Ks * ((phongExponent + 2.0) * 0.5 * INV_PI * pow(cosAlpha, phongExponent));
     spectrum<brdf> f = spectrum<brdf>(albedoTerms);
     // cos θx / r²: the solid angle the light sees per unit of receiving area.
     float<solid_angle / area> G = float<solid_angle / area>(cosX / (r * r));
-    float<1> cosXPlain = float<1>(cosX);
+    float<1> cosXPlain = cosX;
     float<1> tanTheta = sqrt(max(1.0 - cosXPlain * cosXPlain, 0.0)) / max(cosXPlain, 0.05);
     radiance = f * I * G * visibility(P - lightPosition, tanTheta);
 }

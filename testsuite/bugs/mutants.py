@@ -281,7 +281,7 @@ LIMITS = {
     "map_misuse": "the matrix itself: a wrong, transposed or stale matrix uploaded for a map<A, B> has the right type",
     "camera_transforms": "projection parameters (field of view, aspect, near/far, handedness) and the value of a matrix",
     "glsl_rules": "logic GLSL allows (a wrong loop bound, a swapped branch)",
-    "microfacet_environment": "projections onto the micro-normal h and onto n share the one proj dimension: the 1/(4 cos θi cos θo) normalisation is written with casts",
+    "microfacet_environment": "projections onto the micro-normal h and onto n share the one proj dimension: wi·h passes for wi·n",
 }
 
 

@@ -219,6 +219,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
 
   std::optional<Type> result = unify_call(name, shape, args, call_range);
   if (!result) return error_value(call_range);
+  std::vector<DimSlot> argument_dims;
+  for (const Value& a : args) argument_dims.push_back(value_dimension(a.type, result_.registry));
+  keep_shared_spelling(result->dim, argument_dims);  // max(k, 0.0) of a float<inv_length> is one
   // A spectrum through a component-wise built-in (min, max, mix, clamp, abs, …) stays a spectrum.
   if (result->geometry == Geometry::none && sig.result.size == SizeClass::gen && result->rows == 3) {
     bool all_spectra = false, other = false;

@@ -36,6 +36,23 @@ DimSlot from_term(DimTerm t) {
 
 }  // namespace
 
+void keep_scaled_spelling(DimSlot& product, const DimSlot& a, const DimSlot& b, bool divide) {
+  auto plain = [](const DimSlot& d) { return d.state == DimSlot::State::known && d.value.is_dimensionless(); };
+  if (product.state != DimSlot::State::known) return;
+  if (plain(b) && a.state == DimSlot::State::known) product.spelling = a.spelling;
+  else if (!divide && plain(a) && b.state == DimSlot::State::known) product.spelling = b.spelling;
+}
+
+void keep_shared_spelling(DimSlot& result, const std::vector<DimSlot>& sources) {
+  if (result.state != DimSlot::State::known) return;
+  std::optional<std::string> shared;  // "" once two sources disagree or one has no name
+  for (const DimSlot& d : sources) {
+    if (d.state != DimSlot::State::known || !(d.value == result.value)) continue;
+    shared = !shared || *shared == d.spelling ? d.spelling : std::string();
+  }
+  if (shared) result.spelling = *shared;
+}
+
 std::optional<DimSlot> combine(const DimSlot& a, const DimSlot& b, int sign) {
   if (a.state == DimSlot::State::unknown || b.state == DimSlot::State::unknown) return DimSlot::unknown();
   DimTerm ta = as_term(a), tb = as_term(b);

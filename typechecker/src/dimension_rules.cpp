@@ -52,7 +52,9 @@ DimSlot Checker::projected_component(const DimSlot& scale) const {
 
 // radians(x) of an angle in degrees is the angle (in radians); degrees(x) of
 // an angle is that angle in degrees. A plain number (radians(45.0)) takes the
-// signature; so does anything else, for its error.
+// signature; so does anything else, for its error. An angle already in the
+// target unit, or in a third one (arcminutes), is refused: the call scales by
+// π/180 or 180/π, right for its own source unit only.
 std::optional<Value> Checker::angle_conversion(const std::string& name, const Value& arg, const Type& result,
                                                SourceRange call_range) {
   const DimensionRegistry& reg = result_.registry;
@@ -61,26 +63,40 @@ std::optional<Value> Checker::angle_conversion(const std::string& name, const Va
   const DimSlot d = value_dimension(arg.type, reg);
   if (!degree || !angle || d.state != DimSlot::State::known) return std::nullopt;
   const Dimension in_degrees = reg.measured_in(*degree);
-  Value out;
-  out.range = call_range;
-  out.type = result;
-  out.type.geometry = arg.type.geometry == Geometry::spectrum ? Geometry::spectrum : Geometry::none;
-  if (name == "radians" && d.value == in_degrees) {
-    out.type.dim = DimSlot::known(*angle);
+  const bool to_radians = name == "radians";
+  const Dimension& source = to_radians ? in_degrees : *angle;
+  const Dimension& target = to_radians ? *angle : in_degrees;
+  if (d.value == source) {
+    Value out;
+    out.range = call_range;
+    out.type = result;
+    out.type.geometry = arg.type.geometry == Geometry::spectrum ? Geometry::spectrum : Geometry::none;
+    out.type.dim = DimSlot::known(target);
     return out;
   }
-  if (name == "degrees" && d.value == *angle) {
-    out.type.dim = DimSlot::known(in_degrees);
-    return out;
+  const Checked<Dimension> measured = reg.reference(d.value);
+  const bool another_unit = reg.has_unit_factors(d.value) && measured && *measured == *angle;
+  const bool already = d.value == target;
+  const bool plain_radians = !to_radians && d.value.is_dimensionless() && !arg.zero;
+  if (!already && !another_unit && !plain_radians) return std::nullopt;
+  const std::string argument = arg.name.empty() ? "x" : arg.name;
+  const std::string has_type = "argument 1 of '" + name + "' has type " + name_of(arg.type);
+  std::string message, hint;
+  if (already) {
+    message = has_type + ", which is already in " + name;
+    hint = to_radians ? "radians() converts degrees (a plain number or float<angle in degree>); use the angle as it is"
+                      : "degrees() converts radians; use the angle as it is";
+  } else if (another_unit) {
+    message = has_type + ", but '" + name + "' converts an angle in " + (to_radians ? "degrees (or a plain number of degrees)" : "radians");
+    hint = "an angle in " + reg.format_units(d.value) + " converts with in: " + argument + " in " + conversion_target(target) +
+           " (× " + DimensionRegistry::format_number(reg.scale(d.value) / reg.scale(target)) + ")";
+  } else {
+    message = has_type + ", but 'degrees' expects float<angle>";
+    hint = "degrees() converts an angle in radians: give a plain number of radians its unit, degrees(" + argument + " * " + conversion_target(*angle) + ")";
   }
-  const bool already = (name == "radians" && d.value == *angle) || (name == "degrees" && d.value == in_degrees);
-  if (!already) return std::nullopt;
-  Diagnostic e = Diagnostic::error(arg.range, "argument 1 of '" + name + "' has type " + name_of(arg.type) + ", which is already in " +
-                                                  (name == "radians" ? "radians" : "degrees"))
-                     .with_code(code::E_DIMENSION_MISMATCH);
+  Diagnostic e = Diagnostic::error(arg.range, message).with_code(code::E_DIMENSION_MISMATCH);
   add_origin_note(e, arg);
-  e.with_hint(name == "radians" ? "radians() converts degrees (a plain number or float<angle in degree>); use the angle as it is"
-                                : "degrees() converts radians; use the angle as it is");
+  e.with_hint(hint);
   report(std::move(e));
   return error_value(call_range);
 }

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <safegi/parser/printer.hpp>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -182,19 +184,43 @@ Value Checker::unary(const ast::UnaryExpr& e) {
   return error_value(e.range);
 }
 
-// `vs_out.TangentViewPos`, not the instance alone: the member is what has the
-// type. Swizzles and indices keep the variable's name.
-std::string Checker::member_path(const ast::Expr* target, const std::string& variable) const {
-  const auto* member = ast::dyn_cast<ast::MemberExpr>(target);
-  if (!member) return variable;
-  const auto base = result_.types.find(member->base);
-  if (base == result_.types.end() || base->second.shape != Shape::structure || base->second.is_array()) return variable;
-  if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(member->base)) return id->name + "." + member->member;
-  if (ast::isa<ast::MemberExpr>(member->base)) {
-    const std::string outer = member_path(member->base, variable);
-    return outer == variable ? variable : outer + "." + member->member;
+namespace {
+
+// The written name of an l-value made of a variable, indices and members, and
+// whether it selects a member of a block or struct; nothing for other forms.
+struct LvaluePath {
+  std::string text;
+  bool has_member = false;
+};
+
+std::optional<LvaluePath> lvalue_path(const ast::Expr* e, const std::unordered_map<const ast::Node*, Type>& types) {
+  if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e)) return LvaluePath{id->name};
+  if (const auto* index = ast::dyn_cast<ast::IndexExpr>(e)) {
+    std::optional<LvaluePath> base = lvalue_path(index->base, types);
+    if (!base || !index->index) return std::nullopt;
+    base->text += "[" + print_expression(*index->index) + "]";
+    return base;
   }
-  return variable;
+  if (const auto* member = ast::dyn_cast<ast::MemberExpr>(e)) {
+    std::optional<LvaluePath> base = lvalue_path(member->base, types);
+    const auto base_type = types.find(member->base);
+    if (!base || base_type == types.end()) return std::nullopt;
+    base->text += "." + member->member;
+    if (base_type->second.shape == Shape::structure && !base_type->second.is_array()) base->has_member = true;
+    return base;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+// `vs_out.TangentViewPos`, not the instance alone: the member is what has the
+// type. Once a member of a block or struct is selected, the indices and
+// swizzles after it are named too (`vs_out.arr[1]`, `vs_out.P.x`); an index
+// or a swizzle of a plain variable keeps the variable's name.
+std::string Checker::member_path(const ast::Expr* target, const std::string& variable) const {
+  std::optional<LvaluePath> path = lvalue_path(target, result_.types);
+  return path && path->has_member ? path->text : variable;
 }
 
 Value Checker::assign(const ast::AssignExpr& e) {
@@ -204,9 +230,14 @@ Value Checker::assign(const ast::AssignExpr& e) {
   if (lhs.lvalue && !lhs.read_only && !validate_assignment(e.lhs, lhs)) return error_value(e.range);
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
-    if (lhs.lvalue) message = "cannot assign to read-only variable '" + lhs.name + "'";
+    const std::string target = member_path(e.lhs, lhs.name);
+    if (lhs.lvalue)
+      message = target == lhs.name ? "cannot assign to read-only variable '" + lhs.name + "'"
+                                   : "cannot assign to '" + target + "': '" + lhs.name + "' is a read-only variable";
     Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code(code::E_NOT_ASSIGNABLE);
-    if (lhs.origin && lhs.lvalue) d.with_note(Diagnostic::note(lhs.origin->range, lhs.origin->text));
+    std::optional<Origin> origin = lhs.origin;  // a member's value has none: the note is the instance's declaration
+    if (const Variable* var = origin || target == lhs.name ? nullptr : lookup(lhs.name); var && var->range.valid()) origin = var->origin;
+    if (origin && lhs.lvalue) d.with_note(Diagnostic::note(origin->range, origin->text));
     report(std::move(d));
     return error_value(e.range);
   }

@@ -52,6 +52,7 @@ TEST_P(Hints, NameTheCauseAndTheirCodeCompiles) {
   EXPECT_EQ(right->errors(), 0u) << "suggested: " << fixed << "\n" << right->rendered();
 }
 
+const char* const kArcminutes = "unit arcminute : angle = degree / 60.0; uniform float<angle in arcminute> tilt;";
 const char* const kLight = "uniform spectrum<1> albedo; uniform spectrum<brdf> specular; uniform spectrum<irradiance> E;";
 
 INSTANTIATE_TEST_SUITE_P(
@@ -88,7 +89,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "spectrum<irradiance> E = @;", "I * c", "missing the inverse-square falloff", ""},
         HintCase{"solid_angle_of_the_sphere_as_a_number", "uniform spectrum<power> Phi;", "spectrum<intensity> I = @;",
                  "Phi / (4.0 * 3.14159265)", "written as a plain number", "x * steradian", "Phi / (4.0 * 3.14159265 * steradian)"},
-        HintCase{"plain_number_for_a_length", "", "float<length> bias = @;", "0.05", "give it its unit", "x * meter"}),
+        HintCase{"plain_number_for_a_length", "", "float<length> bias = @;", "0.05", "give it its unit", "x * meter"},
+        HintCase{"angle_in_a_third_unit_into_radians", kArcminutes, "float<angle> t = @;", "radians(tilt)",
+                 "an angle in arcminute converts with in", "tilt in radian", "tilt in radian"},
+        HintCase{"angle_in_a_third_unit_into_degrees", kArcminutes, "float<angle in degree> t = @;", "degrees(tilt)",
+                 "an angle in arcminute converts with in", "tilt in degree", "tilt in degree"},
+        HintCase{"plain_radians_into_degrees", "uniform float<1> turn;", "float<angle in degree> d = @;", "degrees(turn)",
+                 "give a plain number of radians its unit", "degrees(turn * radian)", "degrees(turn * radian)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
 
 TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {
@@ -99,6 +106,15 @@ TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {
   ASSERT_EQ(c->errors(), 1u);
   EXPECT_EQ(first_hint(*c), "argument 2 is vector<world> but the parameter is direction<S>: a vector becomes a direction only "
                             "through normalize()");
+}
+
+// normalize(name) is offered for a named vector only: an expression has no name to put in the code.
+TEST(Hints, AnUnnamedVectorBesideADirectionIsNotNormalizedByAPlaceholder) {
+  auto c = check_source(
+      "space world; uniform normal<world> n; uniform direction<world> wo; uniform vector<world> toL; out vec4 color;\n"
+      "void main() { direction<world> r = normalize(toL * dot(n, wo) - wo); color = vec4(r, 1.0); }\n");
+  ASSERT_EQ(c->errors(), 1u);
+  EXPECT_EQ(first_hint(*c), "a direction has unit length, the other operand is a vector of dimension length·proj: normalize it first");
 }
 
 }  // namespace

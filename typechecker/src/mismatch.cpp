@@ -238,9 +238,11 @@ std::string Checker::unit_vector_sum_hint(const Value& lhs, const Value& rhs, co
     const Value& v = ga == Geometry::vector ? lhs : rhs;
     const DimSlot& d = ga == Geometry::vector ? left : right;
     if (d.state == DimSlot::State::known && !d.value.is_dimensionless()) {
-      const std::string name = v.name.empty() ? "v" : v.name;
-      return "a " + std::string(geometry_name(unit(ga) ? ga : gb)) + " has unit length, '" + name + "' is a vector of dimension " +
-             result_.registry.format(d.value) + ": normalize it first, normalize(" + name + ")";
+      // Code only for a named vector: an expression has no name to write normalize() around.
+      const std::string said = "a " + std::string(geometry_name(unit(ga) ? ga : gb)) + " has unit length, ";
+      const std::string dimension = result_.registry.format(d.value);
+      if (v.name.empty()) return said + "the other operand is a vector of dimension " + dimension + ": normalize it first";
+      return said + "'" + v.name + "' is a vector of dimension " + dimension + ": normalize it first, normalize(" + v.name + ")";
     }
   }
   return operand_hint(left, right, rhs.range);

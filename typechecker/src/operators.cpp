@@ -209,7 +209,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
     else if (!lhs.zero && !rhs.zero && (cosine_a || cosine_b)) out.type.dim = cosine_a ? db : da;
     else out.type.dim = lhs.zero ? db : da;
-    out.type.dim.spelling.clear();
+    keep_shared_spelling(out.type.dim, {da, db});  // k + k keeps k's name
     out.zero = lhs.zero && rhs.zero;
   } else {
     std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
@@ -218,6 +218,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       return error_value(range);
     }
     out.type.dim = *d;
+    keep_scaled_spelling(out.type.dim, da, db, op == ast::BinaryOp::Div);
     out.zero = op == ast::BinaryOp::Mul && (lhs.zero || rhs.zero);
     if (out.zero) out.type.dim = DimSlot::zero();
   }
@@ -287,7 +288,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), code::E_DIMENSION_MISMATCH);
     const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
     out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
-    out.type.dim.spelling.clear();
+    keep_shared_spelling(out.type.dim, {da, db});
     out.type.from = space;
     if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
       out.type.geometry = Geometry::vector;  // point - point
@@ -318,10 +319,15 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
   if (!d) return reject("dimension exponent overflows in this product", "", code::E_DIMENSION_OVERFLOW);
   out.type.dim = *d;
+  keep_scaled_spelling(out.type.dim, da, db, op == ast::BinaryOp::Div);
   const Geometry g = a_scalar ? gb : ga;
   const Type& geo = a_scalar ? b : a;
   if (a_scalar || b_scalar) {
-    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal)) out.type.dim = projected_component(*d);
+    // A cosine scaling a unit vector, or a plain multiple of one (`2.0 * n * dot(n, wo)`), is a component along it.
+    const DimSlot& geo_dim = a_scalar ? db : da;
+    const bool plain_multiple = g == Geometry::vector && geo_dim.state == DimSlot::State::known && geo_dim.value.is_dimensionless();
+    if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal || plain_multiple))
+      out.type.dim = projected_component(*d);
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;

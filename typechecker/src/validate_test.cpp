@@ -398,8 +398,11 @@ TEST(Validate, Lvalues) {
   EXPECT_EQ(vert("void main() { float a[2]; float b[2]; a = b; }", {120}), Messages{});
   EXPECT_EQ(vert("buffer B { readonly float f; } b; void main() { b.f = 1.0; }", {430}),
             Messages{"error: cannot assign to readonly member 'f'"});
+  // The member assigned and the read-only instance it belongs to are both named.
   EXPECT_EQ(vert("readonly buffer B { float f; } b; void main() { b.f = 1.0; }", {430}),
-            Messages{"error: cannot assign to read-only variable 'b'"});
+            Messages{"error: cannot assign to 'b.f': 'b' is a read-only variable"});
+  EXPECT_EQ(frag("in Surface { vec3 P[2]; } fs_in; void main() { fs_in.P[1] = vec3(0.0); }", {330}),
+            Messages{"error: cannot assign to 'fs_in.P[1]': 'fs_in' is a read-only variable"});
   EXPECT_EQ(frag("void main() { gl_ClipDistance[0] = 1.0; }", {130}),
             Messages{"error: cannot assign to read-only variable 'gl_ClipDistance'"});
   EXPECT_EQ(vert("void main() { gl_MultiTexCoord4 = vec4(1.0); }", {110}),

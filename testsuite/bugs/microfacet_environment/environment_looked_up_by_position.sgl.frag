@@ -38,13 +38,13 @@ void main() {
     float<1> t = cosH2 * (a2 - 1.0) + 1.0;
     float<pdf_projected_solid_angle> D = float<pdf_projected_solid_angle>(a2 / (PI * t * t));
     // pdf of h per solid angle is D·cos θh; the reflection's Jacobian dωh/dωi is 1/(4 wo·h).
-    float<1> oDotH = float<1>(dot(wo, h));
+    float<1> oDotH = dot(wo, h);
     float<pdf_solid_angle> pdfH = D * float<proj>(cosH);
     float<pdf_solid_angle> pdfWi = pdfH / (4.0 * oDotH);
     // Cook-Torrance: D F G / (4 cos θi cos θo); the cosines here normalise, they do not project.
     spectrum<1> F = F0 + (1.0 - F0) * pow(1.0 - oDotH, 5);
-    float<1> G = smithG1(float<1>(cosI), a2) * smithG1(float<1>(cosO), a2);
-    spectrum<brdf> fr = F * G * D / (4.0 * float<1>(cosI) * float<1>(cosO) + 1e-4);
+    float<1> G = smithG1(cosI, a2) * smithG1(cosO, a2);
+    spectrum<brdf> fr = F * G * D / (4.0 * cosI * cosO + 1e-4);
     spectrum<radiance> Li = spectrum<radiance>(texture(environment, P).rgb);
     spectrum<radiance> L = fr * Li * cosI / pdfWi;
     fragColor = vec4(L, 1.0);

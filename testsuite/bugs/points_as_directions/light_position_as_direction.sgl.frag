@@ -26,7 +26,7 @@ void main() {
     float<proj> cosTheta = max(dot(n, wi), 0.0);
     float spot = step(cosCutoff, dot(-wi, spotAxis));
     direction<world> h = normalize(wi + wo);
-    float highlight = pow(max(float<1>(dot(n, h)), 0.0), shininess);  // a lobe, not a projection
+    float highlight = pow(max(dot(n, h), 0.0), shininess);  // a lobe, not a projection
     float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
     spectrum<radiance> L = (Kd + Ks * highlight) * lightI * cosTheta * falloff * spot;
     fragColor = vec4(L, 1.0);
