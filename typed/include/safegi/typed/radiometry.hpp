@@ -39,6 +39,10 @@ constexpr real abs_cosine(basic_normal<S> n, basic_direction<S2> w) {
 /// distance r², as a pdf per unit solid angle. cos θ_l is between the light's normal and
 /// w, the direction between the two points (either way round).
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2>
+pdf_area_to_solid_angle(quantity<dim::pdf_area>, quantity<dim::area>, basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::pdf_solid_angle> pdf_area_to_solid_angle(quantity<dim::pdf_area> pdf,
                                                                 quantity<dim::area> distance_squared,
                                                                 basic_normal<S> light_normal, basic_direction<S2> w) {
@@ -47,6 +51,10 @@ constexpr quantity<dim::pdf_solid_angle> pdf_area_to_solid_angle(quantity<dim::p
 
 /// p_A = p_ω |cos θ_l| / r²: the inverse change of measure.
 template <class S, class S2>
+diagnose::space_mismatch<diagnose::op::dot, S, S2>
+pdf_solid_angle_to_area(quantity<dim::pdf_solid_angle>, quantity<dim::area>, basic_normal<S>, basic_direction<S2>);
+template <class S, class S2>
+  requires rules::same_space<S, S2>
 constexpr quantity<dim::pdf_area> pdf_solid_angle_to_area(quantity<dim::pdf_solid_angle> pdf,
                                                          quantity<dim::area> distance_squared,
                                                          basic_normal<S> light_normal, basic_direction<S2> w) {
