@@ -106,20 +106,8 @@ template <class Space>
 struct argument_in;
 }  // namespace safegi::diagnose
 
-// The vocabulary's dimensions as types, so reports name them in words.
-namespace safegi::named {
-#define VOCABULARY_BASE(name) struct name;
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) struct name;
-#include "safegi/typed/vocabulary.def"
-/// A dimension the vocabulary names more than once (brdf and pdf_projected_solid_angle).
-template <class... Names>
-struct one_of;
-}  // namespace safegi::named
-
 namespace safegi {
 namespace detail {
-template <class D, class Name>
-struct word_entry {};
 template <class... Names>
 struct word_list {};
 
@@ -127,9 +115,9 @@ template <class D, class Entry>
 struct word_if_same {
   using type = word_list<>;
 };
-template <class D, class Name>
-struct word_if_same<D, word_entry<D, Name>> {
-  using type = word_list<Name>;
+template <class D, fixed_string Name, class Tag>
+struct word_if_same<D, named_dimension<D, Name, Tag>> {
+  using type = word_list<Tag>;
 };
 template <class... Lists>
 struct join_words;
@@ -161,19 +149,18 @@ struct words_or_formula<D, word_list<First, Second, Rest...>> {
   using type = named::one_of<First, Second, Rest...>;
 };
 
+template <class D, class Vocabulary>
+struct words_in;
 template <class D, class... Entries>
-using vocabulary_words = typename join_words<typename word_if_same<D, Entries>::type...>::type;
-template <class D>
-using words_of = typename words_or_formula<D, vocabulary_words<D,
-#define VOCABULARY_BASE(name) word_entry<dim::name, named::name>,
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) word_entry<dim::name, named::name>,
-#include "safegi/typed/vocabulary.def"
-                                                                                    word_entry<void, void>>>::type;
+struct words_in<D, vocabulary_list<Entries...>> {
+  using type =
+      typename words_or_formula<D, typename join_words<typename word_if_same<D, Entries>::type...>::type>::type;
+};
 }  // namespace detail
 
 /// A dimension as a report names it: named::radiance, or its canonical form.
 template <dimension_type D>
-using in_words = detail::words_of<D>;
+using in_words = typename detail::words_in<D, detail::vocabulary>::type;
 
 /// The factor by which dimension L exceeds R (L/R), as a report names it: proj^-1 is a
 /// missing cosine, solid_angle or length^2 a pdf in another measure.

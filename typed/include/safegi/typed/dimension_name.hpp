@@ -1,12 +1,24 @@
 // Dimensions in words: "radiance" for a dimension of the vocabulary, otherwise the
-// canonical product of base powers, e.g. "energy*length^-1*time^-1". Used by compile
-// errors (as fixed_string template arguments g++ prints verbatim) and by reflection.
+// canonical product of base powers, e.g. "energy*length^-1*time^-1", for printing and
+// reflection; and the vocabulary as types (named::radiance), by which compile errors
+// name dimensions (diagnose.hpp).
 #pragma once
 
 #include <string>
 #include <string_view>
 
 #include "safegi/typed/dimension.hpp"
+
+// The vocabulary's dimensions as types: compile errors name dimensions by these
+// (diagnose.hpp), since clang 14 prints string template arguments as character codes.
+namespace safegi::named {
+#define VOCABULARY_BASE(name) struct name;
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) struct name;
+#include "safegi/typed/vocabulary.def"
+/// A dimension the vocabulary names more than once (brdf and pdf_projected_solid_angle).
+template <class... Names>
+struct one_of;
+}  // namespace safegi::named
 
 namespace safegi {
 
@@ -18,7 +30,8 @@ struct dimension_label {};
 
 namespace detail {
 
-template <class D, fixed_string Name>
+/// A vocabulary entry: the dimension, its name as text, and as a type (named::).
+template <class D, fixed_string Name, class Tag>
 struct named_dimension {};
 
 template <class... Entries>
@@ -29,15 +42,16 @@ struct no_dimension {};
 // vocabulary.def's bases and dimensions; several names of one dimension are all listed
 // ("brdf or pdf_projected_solid_angle"); synonyms are not.
 using vocabulary = vocabulary_list<
-#define VOCABULARY_BASE(name) named_dimension<dim::name, #name>,
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) named_dimension<dim::name, #name>,
+#define VOCABULARY_BASE(name) named_dimension<dim::name, #name, named::name>,
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+  named_dimension<dim::name, #name, named::name>,
 #include "safegi/typed/vocabulary.def"
-    named_dimension<no_dimension, "">>;
+    named_dimension<no_dimension, "", void>>;
 
 template <class D, class Entry>
 constexpr void append_if_named(text_buffer&, Entry) {}
-template <class D, fixed_string Name>
-constexpr void append_if_named(text_buffer& names, named_dimension<D, Name>) {
+template <class D, fixed_string Name, class Tag>
+constexpr void append_if_named(text_buffer& names, named_dimension<D, Name, Tag>) {
   if (!names.empty()) names += " or ";
   names += Name.view();
 }
@@ -95,11 +109,11 @@ constexpr std::string_view dimension_name() {
   return detail::frozen_name<D>.view();
 }
 
-/// dimension_formula<D>() as a fixed_string, for compile-time diagnostics.
+/// dimension_formula<D>() as a fixed_string (compile-time text).
 template <dimension_type D>
 inline constexpr auto formula_text = detail::frozen_formula<D>;
 
-/// dimension_name<D>() as a fixed_string, for compile-time diagnostics.
+/// dimension_name<D>() as a fixed_string (compile-time text).
 template <dimension_type D>
 inline constexpr auto dimension_text = detail::frozen_name<D>;
 

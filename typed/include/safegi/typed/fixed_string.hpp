@@ -70,12 +70,4 @@ constexpr auto freeze(Producer produce) {
 }
 }  // namespace detail
 
-/// The pieces joined into one fixed_string: joined_text<"map<", A::name, ">">.
-template <fixed_string... Parts>
-inline constexpr auto joined_text = detail::freeze([] {
-  detail::text_buffer text;
-  ((text += Parts.view()), ...);
-  return text;
-});
-
 }  // namespace safegi
