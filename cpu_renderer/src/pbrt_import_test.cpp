@@ -490,6 +490,8 @@ PbrtImportOptions with_images() {
       image.width = 1, image.height = 2, image.rgb = {0.2f, 0.2f, 0.2f, 0.8f, 0.8f, 0.8f};
     } else if (name == "paint.png" || name == "paint.tga") {
       image.width = 1, image.height = 1, image.rgb = {0.5f, 0.5f, 0.5f};
+    } else if (name == "sky.hdr") {
+      image.width = 2, image.height = 1, image.rgb = {3, 3, 3, 5, 5, 5};
     } else if (name == "hot.exr") {
       image.width = 1, image.height = 1, image.rgb = {4, 4, 4};
     } else {
@@ -555,11 +557,11 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
             "scene.pbrt:3:20: error: an image texture as \"Ks\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture Ks\" \"h\"\n                   ^~~~~~~~~~~~\n"
             "help: only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here\n");
+  // A format pbrt-v3 does not read is read all the same (the reader decides), with a warning.
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"")), with_images()),
-            "scene.pbrt:2:50: error: pbrt-v3 reads no image format \".jpg\"\n"
+            "scene.pbrt:2:50: error: cannot read image 'dir/photo.jpg': no such file\n"
             "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"\n"
-            "                                                 ^~~~~~~~~~~\n"
-            "help: it reads .exr, .png, .tga and .pfm files (and would render a grey texture or a missing map instead)\n");
+            "                                                 ^~~~~~~~~~~\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"gone.png\"")), with_images()),
             "scene.pbrt:2:50: error: cannot read image 'dir/gone.png': no such file\n"
             "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"gone.png\"\n"
@@ -615,6 +617,17 @@ TEST(PbrtImport, InfiniteLightAsPbrtV3DefinesIt) {
   EXPECT_NEAR(pole.y, 1, 1e-6);
   EXPECT_NEAR(x.x, -1, 1e-6);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings;
+
+  // A .hdr map (pbrt-v3 reads none, and would light the scene with L alone) is read, with a warning, once.
+  PbrtScene hdr = import(world("LightSource \"infinite\" \"string mapname\" \"sky.hdr\""), with_images());
+  ASSERT_TRUE(hdr.scene.environment->map);
+  EXPECT_EQ(sg::raw(hdr.scene.environment->map->texel(0, 1, 0)), glm::vec3(5));
+  EXPECT_EQ(hdr.warnings,
+            "scene.pbrt:2:41: warning: pbrt-v3 reads no image format \".hdr\"; read here as the file says\n"
+            "LightSource \"infinite\" \"string mapname\" \"sky.hdr\"\n"
+            "                                        ^~~~~~~~~\n"
+            "help: pbrt-v3 reads .exr, .png, .tga and .pfm files: it would render a grey texture, or an infinite "
+            "light's constant radiance without its map\n");
 
   EXPECT_EQ(sg::raw(import(world("LightSource \"infinite\"")).scene.environment->radiance), glm::vec3(1));
   EXPECT_EQ(import_error(world("LightSource \"infinite\"\nLightSource \"infinite\" \"rgb L\" [1 1 1]")),

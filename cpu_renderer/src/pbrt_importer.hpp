@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -184,6 +185,7 @@ class Importer {
   std::vector<Diagnostic> warnings_;
   int normals_warned_ = 0;
   int filter_warned_ = 0;
+  std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
 
   GraphicsState state_;

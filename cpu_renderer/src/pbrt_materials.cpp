@@ -466,7 +466,10 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
   texture.name = name;
   texture.file = filename->strings[0];
   std::string extension = lower_extension(texture.file);
-  bool eight_bit = extension == ".png" || extension == ".tga";
+  // pbrt-v3 decodes .png and .tga; the other 8-bit formats read here beyond
+  // pbrt-v3's are sRGB-encoded as well.
+  bool eight_bit = extension == ".png" || extension == ".tga" || extension == ".jpg" || extension == ".jpeg" ||
+                   extension == ".bmp" || extension == ".gif";
   texture.colour_space = params.one_bool("gamma", eight_bit) ? ColourSpace::srgb : ColourSpace::linear;
   double scale = params.one_float("scale", 1);
   if (!(scale >= 0 && scale <= 1e6)) fail(at, "\"float scale\" of " + params.context() + " must lie in [0, 1e6]");
@@ -498,15 +501,20 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
   return static_cast<int>(result_.scene.textures.size()) - 1;
 }
 
-// An image file named by `filename` (a texture's or an infinite light's map):
-// in the formats pbrt-v3 reads, resolved as pbrt-v3 resolves it (against the
-// main file's directory), through PbrtImportOptions::read_image.
+// An image file named by `filename` (a texture's or an infinite light's map),
+// resolved as pbrt-v3 resolves it (against the main file's directory), through
+// PbrtImportOptions::read_image. A format pbrt-v3 does not read (.hdr maps are
+// common in scene collections) is read all the same: pbrt-v3 would render a
+// grey texture or the light's constant radiance, which is not what the scene's
+// author meant; the warning says so, once per format.
 Image Importer::read_image(const Param& filename) {
   const std::string& file = filename.strings[0];
   std::string extension = lower_extension(file);
-  if (extension != ".exr" && extension != ".png" && extension != ".tga" && extension != ".pfm")
-    fail(filename.values, "pbrt-v3 reads no image format \"" + extension + "\"",
-         "it reads .exr, .png, .tga and .pfm files (and would render a grey texture or a missing map instead)");
+  if (extension != ".exr" && extension != ".png" && extension != ".tga" && extension != ".pfm" &&
+      formats_beyond_pbrt_warned_.insert(extension).second)
+    warn(filename.values, "pbrt-v3 reads no image format \"" + extension + "\"; read here as the file says",
+         "pbrt-v3 reads .exr, .png, .tga and .pfm files: it would render a grey texture, or an infinite light's "
+         "constant radiance without its map");
   std::filesystem::path path = file;
   if (path.is_relative()) path = search_directory_ / path;
   try {
