@@ -20,7 +20,7 @@ Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuris
 // light_samples_ light samples.
 template <bool area_lights, bool one_light_sample>
 Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
-                                   DirectionShading wo, Sampler& sampler, Time time, bool mis,
+                                   DirectionShading wo, Sampler& sampler, Time time, bool mis, bool bumped,
                                    RayCounters& counters) const {
   Radiance sum;
   const int samples = one_light_sample ? 1 : light_samples_;
@@ -32,6 +32,7 @@ Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, cons
     if (!light) continue;
     DirectionShading wi = frame.to_local(light->wi);
     if (wi.z() <= 0) continue;
+    if (bumped && sg::dot(hit.normal, light->wi) <= sg::zero) continue;  // the shading hemisphere reaches below the surface
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) continue;
     Length t_max = sg::zero;
@@ -124,9 +125,17 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     // Shade on the side the ray arrives from: materials are two-sided (glass
     // tells the sides apart by the geometric normal, which points out).
     const bool from_inside = sg::dot(hit->normal, ray.d) > sg::zero;
+    NormalWorld shading_normal = hit->normal;
+    bool bumped = false;
+    if constexpr (textured) {
+      if (material.bump) {
+        shading_normal = textures_.bumped_normal(*material.bump, *hit, ray.time);
+        bumped = true;
+      }
+    }
     hit->normal = from_inside ? -hit->normal : hit->normal;
     Bsdf bsdf(material, *diffuse, from_inside);
-    ShadingFrame frame = ShadingFrame::from_normal(hit->normal);
+    ShadingFrame frame = ShadingFrame::from_normal(from_inside ? -shading_normal : shading_normal);
     DirectionShading wo = frame.to_local(-ray.d);
 
     // Photon integrator: the caustics arriving at every non-specular vertex.
@@ -134,12 +143,20 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       if (!bsdf.is_specular()) radiance += throughput * photons_->estimate(*hit, frame, bsdf, wo);
     if (!bsdf.is_specular() && !lights_.empty())
       radiance += throughput *
-                  sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, mis_, counters);
+                  sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, mis_, bumped, counters);
 
     Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
     std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     if (!scattered) break;
+    // A bumped normal can send a reflection below the real surface (or a
+    // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
+    // side it reaches, which have nothing there.
+    if (bumped) {
+      const bool reflected_geometrically = sg::dot(hit->normal, frame.from_local(scattered->wi)) > sg::zero;
+      const bool reflected_in_shading = (scattered->wi.z() > 0) == (wo.z() > 0);
+      if (reflected_geometrically != reflected_in_shading) break;
+    }
     // Direct lighting follows mirrors but stops after one diffuse bounce, once
     // the BSDF-sampled ray has collected its (MIS-weighted) emission.
     if (direct_only_ && !scattered->specular) {

@@ -71,9 +71,12 @@ class Integrator {
   Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
   // `mis`: weigh area lights against BSDF sampling (false: light sampling is the only strategy).
+  // `bumped`: the frame's normal is a bump map's, not the hit's geometric one
+  // (then light from below the geometric surface does not count).
   template <bool area_lights, bool one_light_sample>
   Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
-                         DirectionShading wo, Sampler& sampler, Time time, bool mis, RayCounters& counters) const;
+                         DirectionShading wo, Sampler& sampler, Time time, bool mis, bool bumped,
+                         RayCounters& counters) const;
 
   const Scene& scene_;
   const Geometry& geometry_;

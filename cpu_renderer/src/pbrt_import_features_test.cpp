@@ -355,7 +355,7 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
                                           used("Material \"metal\" \"texture roughness\" \"r\"")))),
             "scene.pbrt:2:21: error: float procedural textures are not supported");  // textured roughness
   EXPECT_EQ(error_of("Material \"metal\" \"texture bumpmap\" \"b\""),
-            "scene.pbrt:2:18: error: \"texture bumpmap\" of Material \"metal\" is not supported: bump mapping");
+            "scene.pbrt:2:36: error: no float texture named \"b\"");
 }
 
 // pbrt-v3's spectrum files (.spd, as pbrt-v3-scenes ship them for metals):
@@ -489,7 +489,7 @@ TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
   EXPECT_EQ(import_error(world(used_float_texture("Texture \"t\" \"float\" \"fbm\""))),
             "scene.pbrt:2:21: error: float procedural textures are not supported\n"
             "Texture \"t\" \"float\" \"fbm\"\n                    ^~~~~\n"
-            "help: nothing here reads a textured number: roughness, bump maps and alpha masks take constants\n");
+            "help: only bump maps read a textured number here, and only an image (times a constant)\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\""))),
             "scene.pbrt:2:28: error: texture mapping \"spherical\" is not supported\n"
             "Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\"\n"

@@ -481,6 +481,8 @@ TEST(PbrtImport, GlassKeepsPbrtsOutside) {
 
 // Images in memory, by file name: "grad.exr" is 1×2 linear (top row 0.2, bottom
 // row 0.8), "paint.png" 1×1 sRGB-encoded 0.5, "hot.exr" 1×1 of 4.
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
 PbrtImportOptions with_images() {
   PbrtImportOptions options = in_memory();
   options.read_image = [](const std::filesystem::path& path) {
@@ -567,9 +569,9 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
             "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"gone.png\"\n"
             "                                                 ^~~~~~~~~~\n");
   EXPECT_EQ(import_error(world(used_float_texture("Texture \"t\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"")), with_images()),
-            "scene.pbrt:2:21: error: float image textures are not supported\n"
-            "Texture \"t\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"\n                    ^~~~~~~~~~\n"
-            "help: nothing here reads a textured number: roughness, bump maps and alpha masks take constants\n");
+            "scene.pbrt:3:20: error: an image texture as \"roughness\" of Material \"plastic\" is not supported\n"
+            "Material \"plastic\" \"texture roughness\" \"t\"\n                   ^~~~~~~~~~~~~~~~~~~\n"
+            "help: only \"bumpmap\" reads a float image texture here; the others take numbers\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" "
                                             "\"string mapping\" \"spherical\"")),
                          with_images()),
@@ -596,6 +598,38 @@ TEST(PbrtImport, SpheresKeepTheirObjectFrame) {
   // Object +z (the sphere's pole, v = 1) is pbrt's world -y after Rotate 90 about x.
   glm::vec3 pole = sg::raw(sphere.render_from_object(direction<Object>(0, 0, 1)));
   EXPECT_NEAR(pole.y, -1, 1e-6);
+}
+
+// pbrt-v3's bump maps (bump-sphere.pbrt's): a float image texture, scaled by a
+// constant, displaces the surface by that many scene units; a constant one
+// changes no normal.
+TEST(PbrtImport, BumpMapsAsPbrtV3ReadsThem) {
+  PbrtScene scene = import(
+      world("Texture \"g\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"\n"
+            "Texture \"s\" \"float\" \"scale\" \"texture tex1\" \"g\" \"float tex2\" [-0.1]\n"
+            "Texture \"c\" \"float\" \"constant\" \"float value\" 0.5\n"
+            "Material \"uber\" \"rgb Kd\" [.8 .7 .4] \"rgb Ks\" [.05 .05 .05] \"float roughness\" .01 "
+            "\"texture bumpmap\" \"s\"\nShape \"sphere\"\n"
+            "Material \"matte\" \"texture bumpmap\" \"c\"\nShape \"sphere\""),
+      with_images());
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.materials.size(), 2u);
+  ASSERT_TRUE(s.materials[0].bump.has_value());
+  EXPECT_EQ(s.materials[0].bump->texture, 0);
+  EXPECT_FLOAT_EQ(sg::raw(s.materials[0].bump->scale), static_cast<float>(-0.1 * in_memory().metres_per_unit));
+  EXPECT_EQ(s.textures[0].colour_space, ColourSpace::linear);
+  EXPECT_FALSE(s.materials[1].bump.has_value());
+
+  EXPECT_EQ(import_error(world(used("Texture \"r\" \"color\" \"constant\"\nMaterial \"matte\" \"texture bumpmap\" \"r\""))),
+            "scene.pbrt:3:36: error: no float texture named \"r\"\n"
+            "Material \"matte\" \"texture bumpmap\" \"r\"\n                                   ^~~\n"
+            "help: Texture \"r\" \"float\" ... defines one\n");
+  EXPECT_EQ(first_line(import_error(
+                world(used("Texture \"a\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"\n"
+                           "Texture \"b\" \"float\" \"scale\" \"texture tex1\" \"a\" \"texture tex2\" \"a\"\n"
+                           "Material \"matte\" \"texture bumpmap\" \"b\"")),
+                with_images())),
+            "scene.pbrt:3:48: error: a product of two textures is not supported");
 }
 
 TEST(PbrtImport, InfiniteLightAsPbrtV3DefinesIt) {

@@ -147,6 +147,8 @@ class Importer {
   static Real checked_alpha(double alpha, const ParamSet& params, SourceRange at);
   std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<double> float_param(ParamSet& params, const char* name);
+  std::optional<TextureEntry> float_or_texture(ParamSet& params, const char* name, const Param*& param);
+  std::optional<BumpMap> bump_map(ParamSet& params);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
   TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image);
   Reflectance texture_maximum(int image, int pattern) const;

@@ -43,7 +43,7 @@ constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
 constexpr const char* kNoTexturedNumbers =
-    "nothing here reads a textured number: roughness, bump maps and alpha masks take constants";
+    "only bump maps read a textured number here, and only an image (times a constant)";
 
 bool reads_material_params(const std::string& type, const ParamSet& shape) {
   for (const MaterialParams& m : kMaterialParams)
@@ -124,19 +124,57 @@ std::optional<TextureEntry> Importer::spectrum_or_texture(ParamSet& params, cons
   return usable(found->second);
 }
 
-std::optional<double> Importer::float_param(ParamSet& params, const char* name) {
-  const Param* param = params.find(name, {ParamType::floating, ParamType::texture});
+// A float parameter: a number, or a float texture (a constant, or a constant
+// times an image).
+std::optional<TextureEntry> Importer::float_or_texture(ParamSet& params, const char* name, const Param*& param) {
+  param = params.find(name, {ParamType::floating, ParamType::texture});
   if (!param) return std::nullopt;
   size_t count = param->is_string ? param->strings.size() : param->numbers.size();
   if (count != 1)
     fail(param->values, "\"" + param->type_name + " " + param->name + "\" of " + params.context() + " takes 1 value, found " +
                             std::to_string(count));
-  if (param->type == ParamType::floating) return param->numbers[0];
+  if (param->type == ParamType::floating) {
+    TextureEntry entry;
+    entry.value = {param->numbers[0], param->numbers[0], param->numbers[0]};
+    return entry;
+  }
   auto found = state_.float_textures->find(param->strings[0]);
   if (found == state_.float_textures->end())
     fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
          "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
-  return usable(found->second).value[0];  // float textures are constants (image ones are refused at their definition)
+  return usable(found->second);
+}
+
+// A float parameter the renderer reads as a constant.
+std::optional<double> Importer::float_param(ParamSet& params, const char* name) {
+  const Param* param = nullptr;
+  std::optional<TextureEntry> entry = float_or_texture(params, name, param);
+  if (!entry) return std::nullopt;
+  if (entry->textured())
+    params.fail_at(*param, "an image texture as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
+                   "only \"bumpmap\" reads a float image texture here; the others take numbers");
+  return entry->value[0];
+}
+
+// pbrt-v3's "bumpmap": the displacement, in scene units, is the float texture's
+// value (a constant times an image's luminance). A constant displaces every
+// point alike and leaves the normals as they are.
+std::optional<BumpMap> Importer::bump_map(ParamSet& params) {
+  const Param* param = params.find("bumpmap", {ParamType::texture});
+  if (!param) return std::nullopt;
+  if (param->strings.size() != 1)
+    fail(param->values, "\"texture bumpmap\" of " + params.context() + " takes 1 value, found " +
+                            std::to_string(param->strings.size()));
+  auto found = state_.float_textures->find(param->strings[0]);
+  if (found == state_.float_textures->end())
+    fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
+         "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
+  const TextureEntry& entry = usable(found->second);
+  if (entry.image < 0) return std::nullopt;
+  double metres = entry.value[0] * options_.metres_per_unit;
+  if (!std::isfinite(static_cast<Real>(metres)))
+    params.fail_at(*param, "the bump map's displacement of " + params.context() + " is out of " + kRealName + " range");
+  return BumpMap{entry.image, static_cast<Real>(metres) * units::meter};
 }
 
 // The largest value (per channel) of an image texture or a pattern.
@@ -237,7 +275,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   Material material;
   material.name = type;
   if (type == "uber") return convert_uber(params, at);
-  params.reject("bumpmap", "bump mapping");
+  material.bump = bump_map(params);
   if (type == "matte") {
     params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
     material.model = lambert_or_black(textured_reflectance(params, "Kd", 0.5, true));
@@ -269,7 +307,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
 Material Importer::convert_uber(ParamSet& params, SourceRange at) {
   Material material;
   material.name = "uber";
-  params.reject("bumpmap", "bump mapping");
+  material.bump = bump_map(params);
   const Param* opacity_param = nullptr;
   if (std::optional<TextureEntry> opacity = spectrum_or_texture(params, "opacity", opacity_param))
     if (opacity->image >= 0 || opacity->value != Rgb{1, 1, 1})
@@ -423,7 +461,6 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
       entry.value = {value, value, value};
     }
   } else if (texture_class == "imagemap") {
-    if (!spectrum) fail(entry.at, "float image textures are not supported", kNoTexturedNumbers);
     entry.image = image_texture(name, params, d.range);
   } else if (texture_class == "scale") {
     // pbrt-v3's ScaleTexture: tex1 × tex2 (each 1 by default); a constant times
@@ -441,8 +478,16 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
         for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
       }
     } else {
-      double value = float_param(params, "tex1").value_or(1) * float_param(params, "tex2").value_or(1);
-      entry.value = {value, value, value};
+      const Param* param = nullptr;
+      for (const char* factor : {"tex1", "tex2"}) {
+        std::optional<TextureEntry> given = float_or_texture(params, factor, param);
+        if (!given) continue;
+        if (given->textured() && entry.textured())
+          params.fail_at(*param, "a product of two textures is not supported",
+                         "the renderer multiplies one image by a constant");
+        if (given->image >= 0) entry.image = given->image;
+        for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[0];
+      }
     }
   } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range)) {
     if (!spectrum) fail(entry.at, "float procedural textures are not supported", kNoTexturedNumbers);

@@ -105,6 +105,46 @@ TEST(RenderPhysics, DiffusePlaneUnderDistantLight) {
     }
 }
 
+// The same plane with pbrt-v3's bump map: a float image rising linearly along
+// v (x) displaces the surface by `scale` per unit of its value, so the
+// shading normal of a plane whose dp/dv is 20 m tilts away from the rise,
+// towards −x, by atan(slope / 20 m), slope = scale · N/(N−1) per unit v (N
+// rows, the texel centres 1/N apart and 1/(N−1) apart in value). The sun is
+// 30° off the plane's normal towards +x: a tilt of 30° towards +x faces it
+// (L = ρ/π · E), 20° towards −x turns away from it (ρ/π · E cos 50°). A sun
+// 100° off the normal lights nothing, although a tilt of 60° would face it
+// within 40°: light from below the real surface does not count.
+Scene bumped_plane(double sun_theta, double tilt) {
+  Scene scene = plane_under_the_sun(1, 3.0, sun_theta);
+  const int rows = 64;
+  Image ramp{1, rows, {}};
+  for (int y = 0; y < rows; ++y) ramp.rgb.insert(ramp.rgb.end(), 3, static_cast<float>(y) / (rows - 1));
+  ImageTexture texture;
+  texture.name = "ramp";
+  texture.mipmap = std::make_shared<MipMap>(std::move(ramp), TextureWrap::clamp);
+  scene.textures.push_back(std::move(texture));
+  const double slope = -20 * std::tan(tilt);  // metres of displacement per unit v; `tilt` towards +x
+  scene.materials[0].bump = BumpMap{0, static_cast<Real>(slope * (rows - 1) / rows) * units::meter};
+  return scene;
+}
+
+TEST(RenderPhysics, BumpMapTiltsTheShadingNormal) {
+  const double rho = 1, irradiance = 3.0, degree = kPiD / 180;
+  struct Case {
+    double sun, tilt, cosine;
+  } cases[] = {{30 * degree, 30 * degree, 1}, {30 * degree, -20 * degree, std::cos(50 * degree)},
+               {30 * degree, 0, std::cos(30 * degree)}, {100 * degree, 60 * degree, 0}};
+  for (const Case& c : cases)
+    for (IntegratorType integrator : {IntegratorType::direct, IntegratorType::path}) {
+      Scene scene = bumped_plane(c.sun, c.tilt);
+      scene.settings.integrator = integrator;
+      const double expected = rho / kPiD * irradiance * c.cosine;
+      Image image = render_scene(scene, 2);
+      for (float v : image.rgb)
+        ASSERT_NEAR(v, expected, 2e-4 * rho / kPiD * irradiance) << "sun " << c.sun / degree << "°, tilt " << c.tilt / degree << "°";
+    }
+}
+
 // The same plane with a box-filtered checkerboard of 1 m checks as its
 // albedo: a pixel whose footprint, widened by a pixel on every side, lies in
 // one check is that check's L = ρ/π · E cos θ exactly (but for rounding);

@@ -46,12 +46,15 @@ SurfaceTextures::SurfaceTextures(const Scene& scene) : scene_(scene) {
   }
 }
 
+RenderFromObject SurfaceTextures::render_from_object(const Shape& shape, uint32_t index, Time time) const {
+  return motions_[index] ? motions_[index]->render_from_object(time) : shape.render_from_object;
+}
+
 TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   const Shape& shape = scene_.shapes[hit.shape];
   if (shape.type == Shape::Type::sphere) {
     // pbrt's sphere: u = φ/2π about object-space z, v = 1 − θ/π (0 at −z).
-    RenderFromObject render_from_object = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
-    vector<Object> offset = sg::inverse(render_from_object)(hit.position) - shape.center;
+    vector<Object> offset = sg::inverse(render_from_object(shape, hit.shape, time))(hit.position) - shape.center;
     direction<Object> d = sg::normalize(offset);
     Real phi = std::atan2(d.y(), d.x());
     if (phi < 0) phi += 2 * kPi;
@@ -59,9 +62,9 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   }
   // The hit's barycentric weights on its triangle, where the triangle is at `time`.
   const size_t first = 3 * static_cast<size_t>(hit.face);
-  RenderFromObject render_from_object = motions_[hit.shape] ? motions_[hit.shape]->render_from_object(time) : shape.render_from_object;
-  PointWorld a = render_from_object(shape.positions[shape.indices[first]]), b = render_from_object(shape.positions[shape.indices[first + 1]]),
-             c = render_from_object(shape.positions[shape.indices[first + 2]]);
+  const RenderFromObject placed = render_from_object(shape, hit.shape, time);
+  PointWorld a = placed(shape.positions[shape.indices[first]]), b = placed(shape.positions[shape.indices[first + 1]]),
+             c = placed(shape.positions[shape.indices[first + 2]]);
   VectorWorld e1 = b - a, e2 = c - a, d = hit.position - a;
   quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
   quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
@@ -96,6 +99,86 @@ Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit&
     return diffuse->value * texture.mipmap->bilinear(0, s, t);
   const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(m.u_scale), std::abs(m.v_scale));
   return diffuse->value * texture.mipmap->trilinear(s, t, footprint);
+}
+
+namespace {
+
+// pbrt-v3's CoordinateSystem: two unit vectors perpendicular to n and to each other.
+std::pair<DirectionWorld, DirectionWorld> perpendiculars(DirectionWorld n) {
+  DirectionWorld first = std::abs(n.x()) > std::abs(n.y())
+                             ? sg::normalize(vector<World, dim::dimensionless>(-n.z(), 0, n.x()))
+                             : sg::normalize(vector<World, dim::dimensionless>(0, n.z(), -n.y()));
+  return {first, sg::normalize(sg::cross(n, first))};
+}
+
+// The luminance of a float image texture at (u, v), as pbrt-v3 converts an
+// image's RGB to a float texture (RGBSpectrum::y).
+Real luminance_at(const ImageTexture& texture, TexCoord at) {
+  const UvMapping& m = texture.mapping;
+  glm::vec3 rgb = sg::raw(texture.mipmap->bilinear(0, at.u * m.u_scale + m.u_offset, at.v * m.v_scale + m.v_offset));
+  return 0.212671f * rgb.x + 0.715160f * rgb.y + 0.072169f * rgb.z;
+}
+
+}  // namespace
+
+SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit, Time time) const {
+  const Shape& shape = scene_.shapes[hit.shape];
+  const RenderFromObject placed = render_from_object(shape, hit.shape, time);
+  Derivatives d{.uv = uv(hit, time)};
+  if (shape.type == Shape::Type::sphere) {
+    // pbrt-v3's Sphere::Intersect for the whole sphere (φmax = 2π, θ from π to 0);
+    // its normal is the radius direction, so dn/du = dp/du / r.
+    vector<Object> offset = sg::inverse(placed)(hit.position) - shape.center;
+    const Length x = offset.x(), y = offset.y(), z = offset.z(), r = sg::length(offset);
+    const Length ring = sg::sqrt(x * x + y * y);
+    const Real cos_phi = ring > sg::zero ? x / ring : Real(1), sin_phi = ring > sg::zero ? y / ring : Real(0);
+    const Real sin_theta = ring / r;
+    d.dp_du = placed(vector<Object>(-2 * kPi * y, 2 * kPi * x, sg::zero));
+    d.dp_dv = placed(vector<Object>(-kPi * z * cos_phi, -kPi * z * sin_phi, kPi * r * sin_theta));
+    const Length placed_r = placed_radius(placed, r);
+    d.dn_du = d.dp_du / placed_r;
+    d.dn_dv = d.dp_dv / placed_r;
+    return d;
+  }
+  // pbrt-v3's Triangle::Intersect: dp/du and dp/dv from the corners' (u, v),
+  // or any two perpendicular directions where those are degenerate. Flat
+  // triangles: the normal does not change.
+  const size_t first = 3 * static_cast<size_t>(hit.face);
+  PointWorld p0 = placed(shape.positions[shape.indices[first]]), p1 = placed(shape.positions[shape.indices[first + 1]]),
+             p2 = placed(shape.positions[shape.indices[first + 2]]);
+  TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
+  const Real du02 = t0.u - t2.u, dv02 = t0.v - t2.v, du12 = t1.u - t2.u, dv12 = t1.v - t2.v;
+  const VectorWorld dp02 = p0 - p2, dp12 = p1 - p2;
+  const Real determinant = du02 * dv12 - dv02 * du12;
+  bool degenerate = std::abs(determinant) < 1e-8f;
+  if (!degenerate) {
+    d.dp_du = (dv12 * dp02 - dv02 * dp12) / determinant;
+    d.dp_dv = (du02 * dp12 - du12 * dp02) / determinant;
+    degenerate = !(sg::length_squared(sg::cross(d.dp_du, d.dp_dv)) > sg::zero);
+  }
+  if (degenerate) {
+    auto [along_u, along_v] = perpendiculars(sg::to_direction(hit.normal));
+    const Length metre = Real(1) * units::meter;
+    d.dp_du = along_u * metre;
+    d.dp_dv = along_v * metre;
+  }
+  return d;
+}
+
+NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit& hit, Time time) const {
+  const Derivatives d = derivatives(hit, time);
+  const ImageTexture& texture = scene_.textures[bump.texture];
+  // pbrt-v3's step for rays without differentials; its camera rays step by
+  // their footprint over sqrt(spp), which also tends to the texel's own slope.
+  constexpr Real step = 0.0005f;
+  const Length displacement = bump.scale * luminance_at(texture, d.uv);
+  const Length along_u = bump.scale * luminance_at(texture, {d.uv.u + step, d.uv.v});
+  const Length along_v = bump.scale * luminance_at(texture, {d.uv.u, d.uv.v + step});
+  const VectorWorld dp_du = d.dp_du + hit.normal * ((along_u - displacement) / step) + d.dn_du * displacement;
+  const VectorWorld dp_dv = d.dp_dv + hit.normal * ((along_v - displacement) / step) + d.dn_dv * displacement;
+  const auto perpendicular = sg::cross(dp_du, dp_dv);
+  if (!(sg::length_squared(perpendicular) > sg::zero)) return hit.normal;
+  return sg::face_forward(sg::to_normal(sg::normalize(perpendicular)), sg::to_direction(hit.normal));
 }
 
 }  // namespace safegi::render

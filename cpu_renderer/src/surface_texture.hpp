@@ -32,7 +32,21 @@ class SurfaceTextures {
   // filtered over a footprint `width` across (zero: the finest level).
   Reflectance diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const;
 
+  // The normal of the surface `bump` displaces (pbrt-v3's Material::Bump), on
+  // the side of the hit's geometric normal; that normal where it is undefined.
+  NormalWorld bumped_normal(const BumpMap& bump, const SurfaceHit& hit, Time time) const;
+
  private:
+  // How the surface and its normal change along u and along v at a hit
+  // (pbrt-v3's dpdu, dpdv, dndu, dndv), with the hit's (u, v).
+  struct Derivatives {
+    TexCoord uv;
+    VectorWorld dp_du, dp_dv;
+    vector<World, dim::dimensionless> dn_du, dn_dv;
+  };
+  Derivatives derivatives(const SurfaceHit& hit, Time time) const;
+  RenderFromObject render_from_object(const Shape& shape, uint32_t index, Time time) const;
+
   const Scene& scene_;
   // Per shape, sqrt((u, v) area / world area): texture units per length.
   std::vector<quantity<dim::inverse<dim::length>>> uv_per_length_;

@@ -77,9 +77,18 @@ struct BlackMaterial {};  // absorbs everything
 using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
                                    GlassMaterial, ConductorMaterial>;
 
+// pbrt-v3's bump map: the surface displaced along its normal by `scale` times
+// the luminance of an image texture at (u, v). Only the shading normal changes
+// (the normal of the displaced surface); rays still leave the real one.
+struct BumpMap {
+  int texture = -1;         // index into Scene::textures
+  Length scale = sg::zero;  // the displacement per unit of the texture's value
+};
+
 struct Material {
   MaterialModel model;
   std::string name;
+  std::optional<BumpMap> bump;
 };
 
 // The diffuse part of a material that has one (Lambert, Phong, plastic), else nullptr.
