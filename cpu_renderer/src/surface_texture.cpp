@@ -170,12 +170,16 @@ NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit
   const ImageTexture& texture = scene_.textures[bump.texture];
   // pbrt-v3's step for rays without differentials; its camera rays step by
   // their footprint over sqrt(spp), which also tends to the texel's own slope.
+  // The steps actually taken (u + 0.0005 rounds): dividing by them keeps the
+  // slope's rounding error that of the texture's values.
   constexpr Real step = 0.0005f;
+  const Real u_next = d.uv.u + step, v_next = d.uv.v + step;
+  const Real u_step = u_next - d.uv.u, v_step = v_next - d.uv.v;
   const Length displacement = bump.scale * luminance_at(texture, d.uv);
-  const Length along_u = bump.scale * luminance_at(texture, {d.uv.u + step, d.uv.v});
-  const Length along_v = bump.scale * luminance_at(texture, {d.uv.u, d.uv.v + step});
-  const VectorWorld dp_du = d.dp_du + hit.normal * ((along_u - displacement) / step) + d.dn_du * displacement;
-  const VectorWorld dp_dv = d.dp_dv + hit.normal * ((along_v - displacement) / step) + d.dn_dv * displacement;
+  const Length along_u = bump.scale * luminance_at(texture, {u_next, d.uv.v});
+  const Length along_v = bump.scale * luminance_at(texture, {d.uv.u, v_next});
+  const VectorWorld dp_du = d.dp_du + hit.normal * ((along_u - displacement) / u_step) + d.dn_du * displacement;
+  const VectorWorld dp_dv = d.dp_dv + hit.normal * ((along_v - displacement) / v_step) + d.dn_dv * displacement;
   const auto perpendicular = sg::cross(dp_du, dp_dv);
   if (!(sg::length_squared(perpendicular) > sg::zero)) return hit.normal;
   return sg::face_forward(sg::to_normal(sg::normalize(perpendicular)), sg::to_direction(hit.normal));
