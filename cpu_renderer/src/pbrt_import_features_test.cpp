@@ -257,6 +257,38 @@ TEST(PbrtImport, LoopSubdivisionBoundariesFollowPbrtV3sRules) {
   }
 }
 
+// What pbrt-v3's own LoopSubdivide makes of an open fan of seven triangles
+// (its centre a boundary vertex of valence 8, where the general boundary
+// tangent applies; ends of valence 2 and 3), one level deep: values printed by
+// pbrt-v3's loopsubdiv.cpp compiled outside this repository with stand-ins for
+// its geometry types (in float; these are ours within 1e-6). The same harness
+// gave identical indices, positions within 2e-7 of the mesh's size and
+// normals within 2e-5 of pbrt-v3's direction for killeroo.pbrt at levels 0, 1
+// and 3.
+TEST(PbrtImport, LoopSubdivisionAgreesWithPbrtV3sOwnCode) {
+  const std::vector<glm::dvec3> fan = {{0, 0, 0.5},   {1, 0, 0},     {1, 1, 0.2},   {0, 1, 0.4},     {-1, 1, 0.2},
+                                       {-1, 0, 0},    {-1, -1, -0.2}, {0, -1, -0.4}, {1, -1, -0.2}};
+  std::vector<uint32_t> faces;
+  for (uint32_t k = 0; k < 7; ++k) faces.insert(faces.end(), {0, 1 + k, 2 + k});
+  const pbrt::SubdivisionSurface s = pbrt::loop_subdivide(fan, faces, 1, {});
+  ASSERT_EQ(s.positions.size(), 24u);
+  ASSERT_EQ(s.indices.size(), 84u);
+  EXPECT_EQ(std::vector<uint32_t>(s.indices.begin(), s.indices.begin() + 15),
+            std::vector<uint32_t>({0, 9, 11, 9, 1, 10, 11, 10, 2, 9, 10, 11, 0, 11, 13}));
+  struct Expected {
+    uint32_t vertex;
+    glm::dvec3 p, n;
+  };
+  for (const Expected& e : {Expected{0, {0.35, -0.175, 0.29}, {0.0309520178, 0.0718460083, -0.349493325}},
+                            Expected{1, {0.825, 0.175, 0.1225}, {-0.0730000064, 0.0257500131, -0.151249975}},
+                            Expected{2, {0.825, 0.825, 0.2}, {-0.0999166742, 0.0122083388, -0.308750063}},
+                            Expected{9, {0.525, 0, 0.2375}, {-0.305114627, 0.0807291493, -0.696562648}},
+                            Expected{11, {0.510416627, 0.489583343, 0.288541675}, {-0.530652583, 0.0746313557, -2.08346772}}}) {
+    EXPECT_NEAR(glm::distance(s.positions[e.vertex], e.p), 0.0, 1e-6) << e.vertex;
+    EXPECT_NEAR(glm::distance(s.normals[e.vertex], e.n), 0.0, 1e-6 * glm::length(e.n)) << e.vertex;
+  }
+}
+
 // SAFEGI_RENDER_MEMORY_LIMIT set for one test, restored after it.
 class MemoryLimit {
  public:
