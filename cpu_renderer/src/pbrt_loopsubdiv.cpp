@@ -5,10 +5,10 @@
 // (vertex and face order, the face each vertex's ring starts from), so it is
 // pbrt-v3's mesh vertex for vertex, computed in double where pbrt-v3 uses float.
 //
-// pbrt-v3 crashes or loops on some control meshes; those are refused here
-// with the reason: a vertex in no triangle, a triangle repeating a vertex, an
-// edge of more than two triangles, two triangles wound against each other
-// across their edge.
+// Control meshes pbrt-v3 crashes on (a vertex in no triangle), may loop on
+// or subdivides into nonsense (a triangle repeating a vertex, an edge of more
+// than two triangles, two triangles running along their shared edge the same
+// way: its walks around a vertex assume none of these) are refused here.
 #include <algorithm>
 #include <array>
 #include <cmath>
