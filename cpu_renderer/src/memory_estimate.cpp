@@ -25,10 +25,6 @@ namespace {
 // larger of the two.
 constexpr uint64_t kFilmBytesPerPixel = std::max(3 * sizeof(double) + 3 * sizeof(float),
                                                  3 * sizeof(float) + 3 * sizeof(uint8_t) + 3 * sizeof(float));
-// A render may take this share of the available memory: the estimate leaves
-// out the libraries' and the allocator's own use, and other processes go on
-// allocating while it runs.
-constexpr uint64_t kUsablePercent = 80;
 // Per primitive: what the BVH's build holds.
 constexpr uint64_t kBvhBytesPerPrimitive = kernel::Bvh::kPeakBytesPerPrimitive;
 // A primitive's record and face index twice: PrimitiveSet copies them into the BVH's order.
@@ -133,6 +129,8 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
   return estimate;
 }
 
+uint64_t render_bytes_per_triangle() { return kTriangleBytes; }
+
 std::optional<AvailableMemory> available_memory() {
   if (const char* forced = std::getenv(kLimitVariable.data()); forced && *forced)
     return AvailableMemory{parse_limit(forced), std::string(kLimitVariable)};
@@ -148,10 +146,10 @@ void check_render_memory(const Scene& scene, const RenderOptions& options, int t
   if (!available) return;  // not Linux, or /proc unreadable: nothing to compare with
   const MemoryEstimate e = estimate_render_memory(scene, options, thread_count);
   const uint64_t needed = e.total() * static_cast<uint64_t>(std::max(1, processes));
-  if (needed <= available->bytes / 100 * kUsablePercent) return;
+  if (needed <= available->bytes / 100 * kUsableMemoryPercent) return;
   std::string message = "this render needs about " + format_bytes(needed) + " of memory";
   if (processes > 1) message += " (" + std::to_string(processes) + " ranks on this machine, " + format_bytes(e.total()) + " each)";
-  message += ", more than " + std::to_string(kUsablePercent) + " % of the " + format_bytes(available->bytes) +
+  message += ", more than " + std::to_string(kUsableMemoryPercent) + " % of the " + format_bytes(available->bytes) +
              " available (" + available->source + "): the " +
              std::to_string(e.width) + "x" + std::to_string(e.height) + " image " + format_bytes(e.film) +
              ", geometry and BVH " + format_bytes(e.geometry) + " (" + std::to_string(e.triangles) + " triangles, " +

@@ -132,7 +132,7 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error(world("Shape \"curve\"")),
             "scene.pbrt:2:7: error: shape \"curve\" is not supported\nShape \"curve\"\n      ^~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
-            "\"paraboloid\", \"hyperboloid\", \"nurbs\"\n");
+            "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"\n");
   EXPECT_EQ(import_error(world(used("Material \"substrate\""))),
             "scene.pbrt:2:10: error: material \"substrate\" is not supported\nMaterial \"substrate\"\n"
             "         ^~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"\n");
@@ -373,7 +373,7 @@ TEST(PbrtImport, IncludeAndPlyMeshesResolveAgainstTheMainFile) {
   EXPECT_EQ(import_error(world("Include \"inc.pbrt\""), options),
             "In file included from scene.pbrt:2:1:\ndir/inc.pbrt:1:7: error: shape \"curve\" is not supported\n"
             "Shape \"curve\"\n      ^~~~~~~\nhelp: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", "
-            "\"cone\", \"paraboloid\", \"hyperboloid\", \"nurbs\"\n");
+            "\"cone\", \"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"\n");
   EXPECT_EQ(import_error(world("Shape \"plymesh\" \"string filename\" \"missing.ply\"")),
             "scene.pbrt:2:35: error: cannot read mesh 'dir/missing.ply': no such file\n"
             "Shape \"plymesh\" \"string filename\" \"missing.ply\"\n                                  ^~~~~~~~~~~~~\n");

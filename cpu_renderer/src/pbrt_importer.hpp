@@ -108,6 +108,23 @@ bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRang
 void triangulate_grid(int columns, int rows, ShapeSource& source);
 // pbrt-v3's "nurbs" as the mesh pbrt-v3 dices it into (pbrt_nurbs.cpp); false for any other type.
 bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+// pbrt-v3's "loopsubdiv" as the mesh its LoopSubdivide makes (pbrt_loopsubdiv.cpp),
+// its limit normals as "N"; false for any other type.
+bool loopsubdiv_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+struct SubdivisionSurface {
+  std::vector<glm::dvec3> positions;  // on the limit surface
+  std::vector<glm::dvec3> normals;    // pbrt-v3's limit normals, not normalised
+  std::vector<uint32_t> indices;
+};
+// pbrt-v3's LoopSubdivide of a control mesh whose indices are in range and
+// whose every vertex is in some triangle; a topology pbrt-v3 cannot subdivide
+// is an error at `at`.
+SubdivisionSurface loop_subdivide(std::vector<glm::dvec3> control_points, const std::vector<uint32_t>& indices, int levels,
+                                  SourceRange at);
+// What subdividing, importing and rendering a triangle of it takes, about: a
+// "loopsubdiv" whose levels make more triangles than fit in the memory a
+// render may take (memory_estimate.hpp) is refused.
+uint64_t loop_subdivision_bytes_per_triangle();
 
 class Importer {
  public:

@@ -326,12 +326,13 @@ void Importer::shape(const Directive& d) {
       source.kind = ShapeSource::Kind::sphere;
       source.radius = radius;
     }
-  } else if (quadric_mesh(type, params, d.string_ranges[0], source) || nurbs_mesh(type, params, d.string_ranges[0], source)) {
+  } else if (quadric_mesh(type, params, d.string_ranges[0], source) || nurbs_mesh(type, params, d.string_ranges[0], source) ||
+             loopsubdiv_mesh(type, params, d.string_ranges[0], source)) {
     source.kind = ShapeSource::Kind::mesh;
   } else {
     fail(d.string_ranges[0], "shape \"" + type + "\" is not supported",
          "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
-         "\"paraboloid\", \"hyperboloid\", \"nurbs\"");
+         "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"");
   }
   source.material = material_index(*state_.material, params);
   source.emission = state_.area_light;

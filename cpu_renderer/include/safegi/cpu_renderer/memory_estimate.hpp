@@ -45,8 +45,17 @@ class RenderMemoryError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A render may take this share of the available memory: the estimate leaves
+// out the libraries' and the allocator's own use, and other processes go on
+// allocating while it runs.
+inline constexpr uint64_t kUsableMemoryPercent = 80;
+
+// What a render holds per triangle of its scene (its world-space record, and
+// the BVH while built): what an importer that makes triangles weighs them by.
+uint64_t render_bytes_per_triangle();
+
 // Throws RenderMemoryError when the estimate times `processes` (the ranks
-// sharing this machine) exceeds 80 % of the available memory.
+// sharing this machine) exceeds kUsableMemoryPercent of the available memory.
 void check_render_memory(const Scene& scene, const RenderOptions& options, int thread_count, int processes = 1);
 
 // What main() says when an allocation failed anyway: what was being done and
