@@ -464,30 +464,19 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
     entry.image = image_texture(name, params, d.range);
   } else if (texture_class == "scale") {
     // pbrt-v3's ScaleTexture: tex1 × tex2 (each 1 by default); a constant times
-    // at most one image is a value times an image.
-    if (spectrum) {
-      const Param* param = nullptr;
-      for (const char* factor : {"tex1", "tex2"}) {
-        std::optional<TextureEntry> given = spectrum_or_texture(params, factor, param);
-        if (!given) continue;
-        if (given->textured() && entry.textured())
-          params.fail_at(*param, "a product of two textures is not supported",
-                         "the renderer multiplies one image or pattern by a constant");
-        if (given->image >= 0) entry.image = given->image;
-        if (given->pattern >= 0) entry.pattern = given->pattern;
-        for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
-      }
-    } else {
-      const Param* param = nullptr;
-      for (const char* factor : {"tex1", "tex2"}) {
-        std::optional<TextureEntry> given = float_or_texture(params, factor, param);
-        if (!given) continue;
-        if (given->textured() && entry.textured())
-          params.fail_at(*param, "a product of two textures is not supported",
-                         "the renderer multiplies one image by a constant");
-        if (given->image >= 0) entry.image = given->image;
-        for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[0];
-      }
+    // at most one image is a value times an image. A float's value is its
+    // number in every channel.
+    const Param* param = nullptr;
+    for (const char* factor : {"tex1", "tex2"}) {
+      std::optional<TextureEntry> given =
+          spectrum ? spectrum_or_texture(params, factor, param) : float_or_texture(params, factor, param);
+      if (!given) continue;
+      if (given->textured() && entry.textured())
+        params.fail_at(*param, "a product of two textures is not supported",
+                       "the renderer multiplies one image or pattern by a constant");
+      if (given->image >= 0) entry.image = given->image;
+      if (given->pattern >= 0) entry.pattern = given->pattern;
+      for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
     }
   } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range)) {
     if (!spectrum) fail(entry.at, "float procedural textures are not supported", kNoTexturedNumbers);
