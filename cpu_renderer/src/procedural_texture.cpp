@@ -138,7 +138,7 @@ Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) {
       [&](const auto& p) {
         if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
           const UvMapping& m = p.mapping;
-          return sample(p, at.u * m.u_scale + m.u_offset, at.v * m.v_scale + m.v_offset,
+          return sample(p, m.s(at.u), m.t(at.v),
                         at.uv_footprint * std::abs(m.u_scale), at.uv_footprint * std::abs(m.v_scale));
         } else {
           const Real footprint = at.width * p.mapping.stretch / p.mapping.unit;

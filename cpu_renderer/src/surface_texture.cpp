@@ -1,5 +1,6 @@
 #include "surface_texture.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "safegi/cpu_renderer/sampling.hpp"
@@ -15,6 +16,34 @@ TexCoord vertex_uv(const Shape& shape, size_t corner) {
   return shape.uvs.empty() ? kDefaultUv[corner % 3] : shape.uvs[shape.indices[corner]];
 }
 
+// A triangle's corners where `placed` puts its shape; `first` is its first index.
+std::array<PointWorld, 3> placed_corners(const Shape& shape, const RenderFromObject& placed, size_t first) {
+  return {placed(shape.positions[shape.indices[first]]), placed(shape.positions[shape.indices[first + 1]]),
+          placed(shape.positions[shape.indices[first + 2]])};
+}
+
+// pbrt's sphere: u = φ/2π about object-space z, v = 1 − θ/π (0 at −z), of a
+// point `offset` from the centre.
+TexCoord sphere_uv(vector<Object> offset) {
+  direction<Object> d = sg::normalize(offset);
+  Real phi = std::atan2(d.y(), d.x());
+  if (phi < 0) phi += 2 * kPi;
+  return {phi / (2 * kPi), 1 - std::acos(std::clamp(d.z(), Real(-1), Real(1))) / kPi};
+}
+
+// The (u, v) at `position` on the triangle with corners `p`, by its barycentric weights.
+TexCoord triangle_uv(const Shape& shape, size_t first, const std::array<PointWorld, 3>& p, PointWorld position) {
+  VectorWorld e1 = p[1] - p[0], e2 = p[2] - p[0], d = position - p[0];
+  quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
+  quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
+  auto determinant = d11 * d22 - d12 * d12;
+  if (!(determinant > sg::zero)) return vertex_uv(shape, first);
+  const Real b1 = (d22 * d1 - d12 * d2) / determinant, b2 = (d11 * d2 - d12 * d1) / determinant;
+  const Real b0 = 1 - b1 - b2;
+  TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
+  return {b0 * t0.u + b1 * t1.u + b2 * t2.u, b0 * t0.v + b1 * t1.v + b2 * t2.v};
+}
+
 // How much texture a length of the surface spans: the square root of the
 // shape's total (u, v) area (a number) over its total world area.
 quantity<dim::inverse<dim::length>> uv_per_length(const Shape& shape) {
@@ -26,8 +55,7 @@ quantity<dim::inverse<dim::length>> uv_per_length(const Shape& shape) {
   Real uv_area = 0;
   quantity<dim::area> world_area = sg::zero;
   for (size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
-    PointWorld a = render_from_object(shape.positions[shape.indices[i]]), b = render_from_object(shape.positions[shape.indices[i + 1]]),
-               c = render_from_object(shape.positions[shape.indices[i + 2]]);
+    auto [a, b, c] = placed_corners(shape, render_from_object, i);
     world_area += 0.5f * sg::length(sg::cross(b - a, c - a));
     TexCoord ta = vertex_uv(shape, i), tb = vertex_uv(shape, i + 1), tc = vertex_uv(shape, i + 2);
     uv_area += std::abs((tb.u - ta.u) * (tc.v - ta.v) - (tc.u - ta.u) * (tb.v - ta.v)) / 2;
@@ -52,28 +80,11 @@ RenderFromObject SurfaceTextures::render_from_object(const Shape& shape, uint32_
 
 TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   const Shape& shape = scene_.shapes[hit.shape];
-  if (shape.type == Shape::Type::sphere) {
-    // pbrt's sphere: u = φ/2π about object-space z, v = 1 − θ/π (0 at −z).
-    vector<Object> offset = sg::inverse(render_from_object(shape, hit.shape, time))(hit.position) - shape.center;
-    direction<Object> d = sg::normalize(offset);
-    Real phi = std::atan2(d.y(), d.x());
-    if (phi < 0) phi += 2 * kPi;
-    return {phi / (2 * kPi), 1 - std::acos(std::clamp(d.z(), Real(-1), Real(1))) / kPi};
-  }
-  // The hit's barycentric weights on its triangle, where the triangle is at `time`.
-  const size_t first = 3 * static_cast<size_t>(hit.face);
   const RenderFromObject placed = render_from_object(shape, hit.shape, time);
-  PointWorld a = placed(shape.positions[shape.indices[first]]), b = placed(shape.positions[shape.indices[first + 1]]),
-             c = placed(shape.positions[shape.indices[first + 2]]);
-  VectorWorld e1 = b - a, e2 = c - a, d = hit.position - a;
-  quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
-  quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
-  auto determinant = d11 * d22 - d12 * d12;
-  if (!(determinant > sg::zero)) return vertex_uv(shape, first);
-  const Real b1 = (d22 * d1 - d12 * d2) / determinant, b2 = (d11 * d2 - d12 * d1) / determinant;
-  const Real b0 = 1 - b1 - b2;
-  TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
-  return {b0 * t0.u + b1 * t1.u + b2 * t2.u, b0 * t0.v + b1 * t1.v + b2 * t2.v};
+  if (shape.type == Shape::Type::sphere) return sphere_uv(sg::inverse(placed)(hit.position) - shape.center);
+  // Where the triangle is at `time`.
+  const size_t first = 3 * static_cast<size_t>(hit.face);
+  return triangle_uv(shape, first, placed_corners(shape, placed, first), hit.position);
 }
 
 Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {
@@ -94,7 +105,7 @@ Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit&
   const ImageTexture& texture = scene_.textures[diffuse->texture];
   TexCoord at = uv(hit, time);
   const UvMapping& m = texture.mapping;
-  const Real s = at.u * m.u_scale + m.u_offset, t = at.v * m.v_scale + m.v_offset;
+  const Real s = m.s(at.u), t = m.t(at.v);
   if (texture.filter == TextureFilter::bilinear || !(width > sg::zero))
     return diffuse->value * texture.mipmap->bilinear(0, s, t);
   const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(m.u_scale), std::abs(m.v_scale));
@@ -115,7 +126,7 @@ std::pair<DirectionWorld, DirectionWorld> perpendiculars(DirectionWorld n) {
 // image's RGB to a float texture (RGBSpectrum::y).
 Real luminance_at(const ImageTexture& texture, TexCoord at) {
   const UvMapping& m = texture.mapping;
-  glm::vec3 rgb = sg::raw(texture.mipmap->bilinear(0, at.u * m.u_scale + m.u_offset, at.v * m.v_scale + m.v_offset));
+  glm::vec3 rgb = sg::raw(texture.mipmap->bilinear(0, m.s(at.u), m.t(at.v)));
   return 0.212671f * rgb.x + 0.715160f * rgb.y + 0.072169f * rgb.z;
 }
 
@@ -124,11 +135,12 @@ Real luminance_at(const ImageTexture& texture, TexCoord at) {
 SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit, Time time) const {
   const Shape& shape = scene_.shapes[hit.shape];
   const RenderFromObject placed = render_from_object(shape, hit.shape, time);
-  Derivatives d{.uv = uv(hit, time)};
+  Derivatives d;
   if (shape.type == Shape::Type::sphere) {
     // pbrt-v3's Sphere::Intersect for the whole sphere (φmax = 2π, θ from π to 0);
     // its normal is the radius direction, so dn/du = dp/du / r.
     vector<Object> offset = sg::inverse(placed)(hit.position) - shape.center;
+    d.uv = sphere_uv(offset);
     const Length x = offset.x(), y = offset.y(), z = offset.z(), r = sg::length(offset);
     const Length ring = sg::sqrt(x * x + y * y);
     const Real cos_phi = ring > sg::zero ? x / ring : Real(1), sin_phi = ring > sg::zero ? y / ring : Real(0);
@@ -144,8 +156,9 @@ SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit,
   // or any two perpendicular directions where those are degenerate. Flat
   // triangles: the normal does not change.
   const size_t first = 3 * static_cast<size_t>(hit.face);
-  PointWorld p0 = placed(shape.positions[shape.indices[first]]), p1 = placed(shape.positions[shape.indices[first + 1]]),
-             p2 = placed(shape.positions[shape.indices[first + 2]]);
+  const std::array<PointWorld, 3> corners = placed_corners(shape, placed, first);
+  const auto& [p0, p1, p2] = corners;
+  d.uv = triangle_uv(shape, first, corners, hit.position);
   TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
   const Real du02 = t0.u - t2.u, dv02 = t0.v - t2.v, du12 = t1.u - t2.u, dv12 = t1.v - t2.v;
   const VectorWorld dp02 = p0 - p2, dp12 = p1 - p2;

@@ -22,6 +22,9 @@ using TextureFromRender = map<World, TextureSpace>;
 // pbrt-v3's "uv" mapping: (s, t) = (u · u_scale + u_offset, v · v_scale + v_offset).
 struct UvMapping {
   Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+  // The texture coordinates (s, t) of a surface's (u, v).
+  Real s(Real u) const { return u * u_scale + u_offset; }
+  Real t(Real v) const { return v * v_scale + v_offset; }
 };
 
 // Where a solid pattern reads a point: its texture-space position over `unit`.
