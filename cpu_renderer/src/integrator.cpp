@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bsdf.hpp"
+#include "medium.hpp"
 #include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
@@ -14,61 +15,116 @@ namespace {
 // (Veach's power heuristic with sample counts).
 Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuristic(sg::raw(chosen), sg::raw(other)); }
 
+// Invisible boundaries a shadow ray crosses at most (each one is a BVH query).
+constexpr int kMaxCrossings = 256;
+
+// A surface point's scattering towards a light: its BSDF in its shading frame.
+struct SurfaceScatter {
+  const Bsdf& bsdf;
+  const ShadingFrame& frame;
+  DirectionShading wo;
+  NormalWorld normal;  // the geometric one, on wo's side
+  bool bumped;         // the frame's normal is a bump map's: light from below the geometric surface does not count
+
+  std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
+    DirectionShading wi = frame.to_local(wi_world);
+    if (wi.z() <= 0) return std::nullopt;
+    if (bumped && sg::dot(normal, wi_world) <= sg::zero) return std::nullopt;  // the shading hemisphere reaches below the surface
+    Brdf f = bsdf.eval(wo, wi);
+    if (sg::is_black(f)) return std::nullopt;
+    return f * sg::cos_theta(wi);
+  }
+  PdfSolidAngle pdf(DirectionWorld wi) const { return bsdf.pdf(wo, frame.to_local(wi)); }
+};
+
+// A point inside a medium: Henyey–Greenstein's phase function about the
+// direction the light was travelling.
+struct MediumScatter {
+  Real asymmetry;
+  DirectionWorld travelling;
+
+  std::optional<ScatteringDensity> towards(DirectionWorld wi) const {
+    return ScatteringDensity(henyey_greenstein(asymmetry, travelling, wi));
+  }
+  PdfSolidAngle pdf(DirectionWorld wi) const { return henyey_greenstein(asymmetry, travelling, wi); }
+};
+
 }  // namespace
 
-// Next-event estimation: radiance reflected towards wo, averaged over
-// light_samples_ light samples.
-template <bool area_lights, bool one_light_sample>
-Radiance Integrator::sample_direct(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame,
-                                   DirectionShading wo, Sampler& sampler, Time time, bool mis, bool bumped,
-                                   RayCounters& counters) const {
+template <bool area_lights>
+Radiance Integrator::light_contribution(const LightSample& light, ScatteringDensity scattering,
+                                        PdfSolidAngle scattering_pdf, Real count, bool mis) const {
+  if constexpr (area_lights) {
+    if (!light.delta) {
+      PdfSolidAngle light_pdf = light.pdf * count;
+      Real weight = mis ? mis_weight(light_pdf, scattering_pdf) : 1.0f;
+      return scattering * light.radiance * (weight / light_pdf);
+    }
+  }
+  // A distant light's irradiance on the area that faces its beam (a
+  // projected area: the receiver's own cosine is in `scattering`).
+  if (light.directional) return scattering * light.irradiance / units::proj / (light.probability * count);
+  // A point light's: its intensity times the inverse-square law (per projected area).
+  return scattering * light.intensity * sg::solid_angle_per_projected_area(light.distance) / (light.probability * count);
+}
+
+template <bool media>
+Reflectance Integrator::visibility(const TimedRay& shadow, Length t_max, int medium, RayCounters& counters) const {
+  ++counters.shadow;
+  if constexpr (!media) {
+    return geometry_.occluded(shadow, t_max) ? Reflectance{} : Reflectance(1.0f);
+  } else {
+    // pbrt-v3's VisibilityTester::Tr: from boundary to boundary, each
+    // medium's transmittance over its stretch, until a visible surface.
+    const PointWorld target = shadow(t_max);
+    TimedRay ray = shadow;
+    Reflectance through(1.0f);
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+      std::optional<SurfaceHit> hit = geometry_.intersect(ray);
+      const bool blocked = hit && hit->distance < t_max;
+      if (medium >= 0) through *= transmittance(scene_.media[medium], blocked ? hit->distance : t_max);
+      if (!blocked) return through;
+      const Shape& shape = scene_.shapes[hit->shape];
+      if (!shape.invisible) return Reflectance{};
+      medium = medium_beyond(shape, hit->normal, ray.d, medium);
+      ray = spawn_ray(*hit, ray.d, ray.time);
+      t_max = sg::dot(target - ray.o, ray.d);
+      if (!(t_max > sg::zero)) return through;
+    }
+    return Reflectance{};  // more boundaries than any scene has: taken as blocked
+  }
+}
+
+template <bool area_lights, bool one_light_sample, bool media, class Scatter>
+Radiance Integrator::sample_direct(const SurfaceHit& from, const Scatter& scatter, MediaAround from_medium,
+                                   Sampler& sampler, Time time, bool mis, RayCounters& counters) const {
   Radiance sum;
   const int samples = one_light_sample ? 1 : light_samples_;
   const Real count = static_cast<Real>(samples);
   for (int i = 0; i < samples; ++i) {
     Real u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
-    std::optional<LightSample> light = lights_.sample(hit.position, time, u_light, u_point.u, u_point.v);
+    std::optional<LightSample> light = lights_.sample(from.position, time, u_light, u_point.u, u_point.v);
     if (!light) continue;
-    DirectionShading wi = frame.to_local(light->wi);
-    if (wi.z() <= 0) continue;
-    if (bumped && sg::dot(hit.normal, light->wi) <= sg::zero) continue;  // the shading hemisphere reaches below the surface
-    Brdf f = bsdf.eval(wo, wi);
-    if (sg::is_black(f)) continue;
+    std::optional<ScatteringDensity> scattering = scatter.towards(light->wi);
+    if (!scattering) continue;
     Length t_max = sg::zero;
-    TimedRay shadow = spawn_ray_to(hit, light->position, light->position_error, light->emitter_normal, time, t_max);
-    ++counters.shadow;
-    if (geometry_.occluded(shadow, t_max)) continue;
-    if constexpr (area_lights) {
-      if (!light->delta) {
-        PdfSolidAngle light_pdf = light->pdf * count;
-        Real weight = mis ? mis_weight(light_pdf, bsdf.pdf(wo, wi)) : 1.0f;
-        sum += f * light->radiance * sg::cos_theta(wi) * (weight / light_pdf);
-        continue;
-      }
-    }
-    if (light->directional) {
-      // A distant light's irradiance on the surface: its beam's, times the
-      // beam's cross-section per unit of surface (cos θ, a ratio of areas here,
-      // not a projected solid angle: hence the explicit cast).
-      Real cross_section = sg::dimension_cast<dim::dimensionless>(sg::cos_theta(wi));
-      sum += f * light->irradiance * (cross_section / (light->probability * count));
-      continue;
-    }
-    // A point light's irradiance: its intensity times the inverse-square law (per
-    // projected area) times the receiver's cosine.
-    sum += f * light->intensity * sg::solid_angle_per_projected_area(light->distance) * sg::cos_theta(wi) /
-           (light->probability * count);
+    TimedRay shadow = spawn_ray_to(from, light->position, light->position_error, light->emitter_normal, time, t_max);
+    const int medium = sg::dot(from.normal, light->wi) >= sg::zero ? from_medium.front : from_medium.back;
+    Reflectance through = visibility<media>(shadow, t_max, medium, counters);
+    if (sg::is_black(through)) continue;
+    PdfSolidAngle scattering_pdf = area_lights && mis && !light->delta ? scatter.pdf(light->wi) : PdfSolidAngle(sg::zero);
+    sum += through * light_contribution<area_lights>(*light, *scattering, scattering_pdf, count, mis);
   }
   return sum;
 }
 
-template <bool area_lights, bool one_light_sample, bool gather, bool textured>
+template <bool area_lights, bool one_light_sample, bool gather, bool textured, bool media>
 Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
   Radiance radiance;
   Reflectance throughput(1.0f);
   bool specular_bounce = true;  // emission seen directly counts in full
-  PdfSolidAngle previous_bsdf_pdf = sg::zero;
+  PdfSolidAngle previous_pdf = sg::zero;  // of the direction the last scattering chose
   PointWorld previous_position;
   bool last_vertex = false;
   // The camera ray cone's length so far (textures' footprint), while every bounce was specular.
@@ -79,8 +135,64 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   bool after_diffuse = false;
   Real compression = 1;  // the radiance compression by refraction so far (for Russian roulette)
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
+  int medium = scene_.camera.medium;  // the one the ray travels in (media only)
+  int crossings = 0;                  // invisible boundaries crossed (media only)
+
+  // After a scattering event that chose a non-specular direction: direct
+  // lighting follows mirrors but stops after one such event, once the
+  // sampled ray has collected its (MIS-weighted) emission. False: the path ends.
+  auto direct_lighting_goes_on = [&] {
+    if (!direct_only_) return true;
+    if (!area_lights || !mis_) return false;
+    last_vertex = true;
+    return true;
+  };
+  // Russian roulette, once the path is long enough. False: the path ends.
+  auto survives_roulette = [&](int depth) {
+    if (depth < roulette_depth_ || last_vertex) return true;
+    Real survival = std::min(Real(0.95), sg::max_component(throughput) / compression);
+    if (sampler.next_1d() >= survival) return false;
+    throughput = throughput / survival;
+    return true;
+  };
+
   for (int depth = 0;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
+    if constexpr (media) {
+      if (medium >= 0) {
+        // pbrt-v3's volpath: a free flight through the medium, which may end
+        // before the surface (or the sky) in a scattering event.
+        const Medium& participating = scene_.media[medium];
+        const Length reach = hit ? hit->distance : sg::from_raw<Length>(std::numeric_limits<Real>::infinity());
+        Real u_channel = sampler.next_1d(), u_distance = sampler.next_1d();
+        FreeFlight flight = sample_free_flight(participating, reach, u_channel, u_distance);
+        throughput *= flight.weight;
+        if (sg::is_black(throughput)) break;
+        if (flight.scattered_at) {
+          if (last_vertex || depth >= max_depth_) break;
+          SurfaceHit point;  // no surface: no offset for the rays that leave it
+          point.position = ray(*flight.scattered_at);
+          point.position_error = Real3{0, 0, 0};
+          point.normal = sg::to_normal(ray.d);
+          const MediumScatter phase{participating.asymmetry, ray.d};
+          if (!lights_.empty())
+            radiance += throughput * sample_direct<area_lights, one_light_sample, true>(
+                                         point, phase, MediaAround{medium, medium}, sampler, ray.time, mis_, counters);
+          Sample2 u_direction = sampler.next_2d();
+          DirectionWorld wi = sample_henyey_greenstein(participating.asymmetry, ray.d, u_direction.u, u_direction.v);
+          if (!direct_lighting_goes_on()) break;
+          // The phase function is its own density: the throughput stays.
+          specular_bounce = false;
+          if constexpr (textured) sharp_cone = false;
+          previous_pdf = phase.pdf(wi);
+          previous_position = point.position;
+          ray = TimedRay{sg::ray<World>{point.position, wi}, ray.time};
+          ++counters.extension;
+          if (!survives_roulette(depth)) break;
+          continue;
+        }
+      }
+    }
     if (!hit) {
       if constexpr (area_lights) {
         if (lights_.has_environment()) {
@@ -89,7 +201,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
             if (!(gather && after_diffuse)) radiance += throughput * sky;
           }
           else if (mis_)
-            radiance += throughput * sky * mis_weight(previous_bsdf_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
+            radiance += throughput * sky * mis_weight(previous_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
         }
       }
       break;
@@ -101,12 +213,23 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
           if (!(gather && after_diffuse)) radiance += throughput * emitted;
         } else if (mis_) {
           PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * light_sample_count;
-          radiance += throughput * emitted * mis_weight(previous_bsdf_pdf, light_pdf);
+          radiance += throughput * emitted * mis_weight(previous_pdf, light_pdf);
         }
       }
     }
-    if (last_vertex || depth >= max_depth_) break;
     const Shape& shape = scene_.shapes[hit->shape];
+    MediaAround around;  // media only
+    if constexpr (media) {
+      if (shape.invisible) {  // no surface: the ray goes on, into the medium beyond
+        if (++crossings > kMaxCrossings) break;
+        medium = medium_beyond(shape, hit->normal, ray.d, medium);
+        ray = spawn_ray(*hit, ray.d, ray.time);
+        --depth;
+        continue;
+      }
+      around = {medium_beyond(shape, hit->normal, -ray.d, medium), medium_beyond(shape, hit->normal, ray.d, medium)};
+    }
+    if (last_vertex || depth >= max_depth_) break;
     if (shape.material < 0) break;
     const Material& material = scene_.materials[shape.material];
     Reflectance texel{};  // the textured diffuse reflectance, when there is one (black: no diffuse part)
@@ -142,57 +265,56 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if constexpr (gather)
       if (!bsdf.is_specular()) radiance += throughput * photons_->estimate(*hit, frame, bsdf, wo);
     if (!bsdf.is_specular() && !lights_.empty())
-      radiance += throughput *
-                  sample_direct<area_lights, one_light_sample>(*hit, bsdf, frame, wo, sampler, ray.time, mis_, bumped, counters);
+      radiance += throughput * sample_direct<area_lights, one_light_sample, media>(
+                                   *hit, SurfaceScatter{bsdf, frame, wo, hit->normal, bumped}, around, sampler, ray.time,
+                                   mis_, counters);
 
     Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
     std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     if (!scattered) break;
+    const DirectionWorld wi = frame.from_local(scattered->wi);
     // A bumped normal can send a reflection below the real surface (or a
     // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
     // side it reaches, which have nothing there.
+    const bool reflected_geometrically = sg::dot(hit->normal, wi) > sg::zero;
     if (bumped) {
-      const bool reflected_geometrically = sg::dot(hit->normal, frame.from_local(scattered->wi)) > sg::zero;
       const bool reflected_in_shading = (scattered->wi.z() > 0) == (wo.z() > 0);
       if (reflected_geometrically != reflected_in_shading) break;
     }
-    // Direct lighting follows mirrors but stops after one diffuse bounce, once
-    // the BSDF-sampled ray has collected its (MIS-weighted) emission.
-    if (direct_only_ && !scattered->specular) {
-      if (!area_lights || !mis_) break;
-      last_vertex = true;
-    }
+    if (!scattered->specular && !direct_lighting_goes_on()) break;
     throughput *= scattered->weight;
     compression *= scattered->compression;
     if (sg::is_black(throughput)) break;
     specular_bounce = scattered->specular;
     if constexpr (textured) sharp_cone = sharp_cone && scattered->specular;
     if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
-    previous_bsdf_pdf = scattered->pdf;
+    previous_pdf = scattered->pdf;
     previous_position = hit->position;
-    ray = spawn_ray(*hit, frame.from_local(scattered->wi), ray.time);
+    ray = spawn_ray(*hit, wi, ray.time);
+    if constexpr (media) medium = reflected_geometrically ? around.front : around.back;
     ++counters.extension;
-    if (depth >= roulette_depth_ && !last_vertex) {
-      Real survival = std::min(Real(0.95), sg::max_component(throughput) / compression);
-      if (sampler.next_1d() >= survival) break;
-      throughput = throughput / survival;
-    }
+    if (!survives_roulette(depth)) break;
   }
   return radiance;
 }
 
-#define SAFEGI_TRACE(area_lights, one_light_sample, gather)                                                  \
-  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false>(TimedRay, Sampler&, RayCounters&) \
-      const;                                                                                                    \
-  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true>(TimedRay, Sampler&, RayCounters&) \
-      const
-SAFEGI_TRACE(true, true, false);
-SAFEGI_TRACE(true, false, false);
-SAFEGI_TRACE(false, true, false);
-SAFEGI_TRACE(false, false, false);
-SAFEGI_TRACE(true, true, true);
-SAFEGI_TRACE(true, false, true);
+#define SAFEGI_TRACE_TEXTURED(area_lights, one_light_sample, gather, media)                                       \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false, media>(TimedRay, Sampler&, \
+                                                                                          RayCounters&) const; \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true, media>(TimedRay, Sampler&,  \
+                                                                                         RayCounters&) const
+// Media only without gathering: the photon integrator refuses them.
+#define SAFEGI_TRACE(area_lights, one_light_sample)                    \
+  SAFEGI_TRACE_TEXTURED(area_lights, one_light_sample, false, false); \
+  SAFEGI_TRACE_TEXTURED(area_lights, one_light_sample, false, true)
+SAFEGI_TRACE(true, true);
+SAFEGI_TRACE(true, false);
+SAFEGI_TRACE(false, true);
+SAFEGI_TRACE(false, false);
+SAFEGI_TRACE_TEXTURED(true, true, true, false);
+SAFEGI_TRACE_TEXTURED(true, false, true, false);
 #undef SAFEGI_TRACE
+#undef SAFEGI_TRACE_TEXTURED
 
 }  // namespace safegi::render

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 
 #include "geometry.hpp"
 #include "lights.hpp"
@@ -18,6 +19,17 @@
 #include "surface_texture.hpp"
 
 namespace safegi::render {
+
+// f·cos θ of a surface, or the phase function of a medium: what scatters
+// radiance from one direction into another, per solid angle.
+using ScatteringDensity = spectrum<dim::pdf_solid_angle>;
+
+// The media on the two sides of a scattering point, `front` the one its normal
+// points to (the same medium on both sides of a point inside one).
+struct MediaAround {
+  int front = -1;
+  int back = -1;
+};
 
 struct RayCounters {
   uint64_t camera = 0;
@@ -34,7 +46,11 @@ class Integrator {
         textures_(scene),
         // The angle one pixel subtends at the image centre: the camera ray cone's spread.
         pixel_spread_(2 * sg::tan(0.5f * scene.camera.fov) / static_cast<Real>(std::min(settings.width, settings.height)) *
-                      units::radian) {
+                      units::radian),
+        media_(scene.has_media()) {
+    if (media_ && settings.integrator == IntegratorType::photon)
+      throw std::invalid_argument(
+          "the photon integrator does not trace participating media or invisible surfaces: render with \"path\"");
     // The photons are traced once, before any pixel, from a fixed seed.
     if (settings.integrator == IntegratorType::photon)
       photons_ = std::make_unique<PhotonMap>(scene, geometry, lights, textures_, settings, 0);
@@ -46,8 +62,9 @@ class Integrator {
   // Radiance arriving at the camera along `camera_ray`.
   Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
     // MIS bookkeeping exists only in the instantiations for scenes with area
-    // lights; the light-sample loop only in those for several light samples.
-    // The texture footprint's bookkeeping exists only in those for scenes with textures.
+    // lights; the light-sample loop only in those for several light samples;
+    // the texture footprint's bookkeeping only in those for scenes with
+    // textures; media tracking only in those for scenes with media.
     bool one = light_samples_ == 1;
     if (photons_)
       return one ? with_textures<true, true, true>(camera_ray, sampler, counters)
@@ -62,21 +79,39 @@ class Integrator {
  private:
   template <bool area_lights, bool one_light_sample, bool gather>
   Radiance with_textures(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    return textures_.any() ? trace<area_lights, one_light_sample, gather, true>(camera_ray, sampler, counters)
-                           : trace<area_lights, one_light_sample, gather, false>(camera_ray, sampler, counters);
+    return textures_.any() ? with_media<area_lights, one_light_sample, gather, true>(camera_ray, sampler, counters)
+                           : with_media<area_lights, one_light_sample, gather, false>(camera_ray, sampler, counters);
+  }
+  template <bool area_lights, bool one_light_sample, bool gather, bool textured>
+  Radiance with_media(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
+    // The photon integrator refuses scenes with media (see the constructor).
+    if constexpr (!gather)
+      if (media_) return trace<area_lights, one_light_sample, false, textured, true>(camera_ray, sampler, counters);
+    return trace<area_lights, one_light_sample, gather, textured, false>(camera_ray, sampler, counters);
   }
 
-  // gather: the photon integrator's camera pass (see PhotonMap); textured: the scene has textures.
-  template <bool area_lights, bool one_light_sample, bool gather, bool textured>
+  // gather: the photon integrator's camera pass (see PhotonMap); textured: the
+  // scene has textures; media: it has participating media or invisible surfaces.
+  template <bool area_lights, bool one_light_sample, bool gather, bool textured, bool media>
   Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
 
-  // `mis`: weigh area lights against BSDF sampling (false: light sampling is the only strategy).
-  // `bumped`: the frame's normal is a bump map's, not the hit's geometric one
-  // (then light from below the geometric surface does not count).
-  template <bool area_lights, bool one_light_sample>
-  Radiance sample_direct(const SurfaceHit& hit, const class Bsdf& bsdf, const ShadingFrame& frame,
-                         DirectionShading wo, Sampler& sampler, Time time, bool mis, bool bumped,
-                         RayCounters& counters) const;
+  // Next-event estimation at a point that scatters as `scatter` says (a
+  // surface's BSDF or a medium's phase function): light samples, each weighed
+  // against `scatter`'s own sampling when `mis`, through shadow rays that start
+  // in `from_medium.front` or `from_medium.back` (the side of `from.normal` they leave by).
+  template <bool area_lights, bool one_light_sample, bool media, class Scatter>
+  Radiance sample_direct(const SurfaceHit& from, const Scatter& scatter, MediaAround from_medium, Sampler& sampler,
+                         Time time, bool mis, RayCounters& counters) const;
+  // What one light sample adds through a scattering density (f·cos θ, or a
+  // phase function) that is `scattering` towards it and samples it with `scattering_pdf`.
+  template <bool area_lights>
+  Radiance light_contribution(const LightSample& light, ScatteringDensity scattering, PdfSolidAngle scattering_pdf,
+                              Real light_sample_count, bool mis) const;
+  // The fraction of light that gets from `shadow`'s origin to t_max along it:
+  // 0 or 1 without media; with them, the media's transmittance, through
+  // invisible surfaces (a visible one blocks it). The ray starts in `medium`.
+  template <bool media>
+  Reflectance visibility(const TimedRay& shadow, Length t_max, int medium, RayCounters& counters) const;
 
   const Scene& scene_;
   const Geometry& geometry_;
@@ -88,6 +123,7 @@ class Integrator {
   int roulette_depth_;
   SurfaceTextures textures_;
   Angle pixel_spread_;
+  bool media_;  // the scene has participating media or invisible surfaces
   std::unique_ptr<PhotonMap> photons_;
 };
 

@@ -103,9 +103,6 @@ constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
     {"mlt", IntegratorType::path, "path",
      "the path tracer converges to the same image; Metropolis sampling only spreads its noise differently",
      {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
-    {"volpath", IntegratorType::path, "path",
-     "without participating media (not supported here) pbrt-v3's volpath is its path tracer",
-     {"rrthreshold", "lightsamplestrategy"}},
     {"sppm", IntegratorType::photon, "photon",
      "the photon integrator renders the caustics SPPM is chosen for, from a photon map of its own fixed radius",
      {"numiterations", "photonsperiteration", "imagewritefrequency", "radius", "seed"}},
@@ -200,10 +197,9 @@ void Importer::transform_directive(const Directive& d) {
     state_.transform.start_active = d.strings[0] != "EndTime";
     state_.transform.end_active = d.strings[0] != "StartTime";
   } else if (d.name == "MediumInterface") {
-    for (size_t i = 0; i < d.strings.size(); ++i)
-      if (!d.strings[i].empty()) fail(d.string_ranges[i], "participating media are not supported");
+    medium_interface(d);
   } else if (d.name == "MakeNamedMedium") {
-    fail(span(d), "participating media (MakeNamedMedium) are not supported");
+    make_named_medium(d);
   } else {
     if (state_.transform.start_active) state_.transform.start = transformed(d, state_.transform.start);
     if (state_.transform.end_active) state_.transform.end = transformed(d, state_.transform.end);
@@ -363,7 +359,10 @@ void Importer::integrator(const Directive& d) {
   const std::string& type = d.strings[0];
   ParamSet params(d.params, "Integrator \"" + type + "\"");
   RenderSettings& settings = result_.scene.settings;
-  if (type == "path") {
+  integrator_name_ = type;
+  integrator_at_ = d.string_ranges[0];
+  integrator_traces_media_ = type == "volpath" || type == "bdpt" || type == "mlt";
+  if (type == "path" || type == "volpath") {  // volpath: the path tracer, which traces media
     settings.integrator = IntegratorType::path;
     // Russian roulette: pbrt-v3's starts after 3 bounces below a throughput
     // threshold, ours after 3 bounces; both are unbiased. A threshold of 0 turns it off.
@@ -384,8 +383,8 @@ void Importer::integrator(const Directive& d) {
          std::string(substitute->why));
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
-         "supported: \"path\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", \"mlt\", "
-         "\"volpath\" (as path) and \"sppm\" (as photon)");
+         "supported: \"path\", \"volpath\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", "
+         "\"mlt\" (as path) and \"sppm\" (as photon)");
   }
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");

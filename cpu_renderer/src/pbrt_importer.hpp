@@ -31,6 +31,7 @@ struct MaterialInstance {
   std::vector<Param> params;
   SourceRange at;                // the directive's type name
   mutable int index = -2;        // its Scene material without overrides; -2: not made yet
+  bool invisible = false;        // "" or "none": no surface, only a boundary of media
   // What is wrong with it, reported only when a shape uses it: pbrt-v3 makes a
   // material for its shapes, so one that is overridden before any shape is harmless.
   std::optional<Diagnostic> error;
@@ -69,6 +70,12 @@ struct TransformSet {
   bool animated() const { return start != end; }
 };
 
+// A medium as MediumInterface names it ("": vacuum), and where.
+struct NamedMedium {
+  std::string name;
+  SourceRange at;
+};
+
 struct GraphicsState {
   TransformSet transform;
   bool reverse_orientation = false;
@@ -76,6 +83,7 @@ struct GraphicsState {
   std::optional<AreaLight> area_light;
   SharedMap<std::shared_ptr<const MaterialInstance>> named_materials;
   SharedMap<TextureEntry> spectrum_textures, float_textures;
+  NamedMedium inside_medium, outside_medium;  // MediumInterface's
 };
 
 // A shape as pbrt-v3 made it: object-space data, its transform and
@@ -92,6 +100,8 @@ struct ShapeSource {
   std::optional<Matrix> pbrt_world_from_object_at_end;  // an animated transform (motion blur)
   bool reverse_orientation = false;
   int material = -1;
+  bool invisible = false;                 // material "" or "none": no surface
+  std::optional<MediumInterface> media;  // where the two sides' differ
   std::optional<AreaLight> emission;
   SourceRange at;
 };
@@ -181,6 +191,15 @@ class Importer {
   std::optional<Pattern> pattern(const std::string& texture_class, ParamSet& params, SourceRange at);
   Image read_image(const Param& filename);
 
+  // Participating media (pbrt_media.cpp).
+  void make_named_medium(const Directive& d);
+  spectrum<dim::inv_length> coefficients(ParamSet& params, const char* name, const Rgb& fallback, double scale,
+                                         const Param* scale_param);
+  void medium_interface(const Directive& d);
+  int medium_index(const NamedMedium& medium);
+  std::optional<MediumInterface> shape_media();
+  void finish_media(SourceRange world_end);
+
   // World block (pbrt_world.cpp).
   void light_source(const Directive& d);
   void infinite_light(const Directive& d, ParamSet& params);
@@ -206,6 +225,11 @@ class Importer {
   int filter_warned_ = 0;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
+  std::map<std::string, int> named_media_;     // into Scene::media
+  bool media_used_ = false;                    // by a shape or the camera
+  std::string integrator_name_ = "path";       // pbrt-v3's default
+  std::optional<SourceRange> integrator_at_;
+  bool integrator_traces_media_ = false;       // volpath, bdpt, mlt
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;

@@ -398,12 +398,13 @@ void Importer::make_material(MaterialInstance& instance, ParamSet& params) {
   const std::string& type = instance.type;
   bool supported = false;
   for (const MaterialParams& m : kMaterialParams) supported = supported || m.type == type;
-  if (!supported) {
-    if (type.empty() || type == "none")
-      fail(instance.at, "an invisible interface material (\"" + type + "\") is not supported",
-           "it only bounds participating media, which are not supported either");
-    fail(instance.at, "material \"" + type + "\" is not supported", kSupportedMaterials);
+  if (type.empty() || type == "none") {  // no surface: pbrt-v3 makes no material, rays pass
+    report_unused(params);
+    instance.invisible = true;
+    instance.index = -1;
+    return;
   }
+  if (!supported) fail(instance.at, "material \"" + type + "\" is not supported", kSupportedMaterials);
   Material converted = convert_material(type, params, instance.at);
   report_unused(params);
   if (std::holds_alternative<BlackMaterial>(converted.model)) {

@@ -86,6 +86,7 @@ void Importer::world_directive(const Directive& d) {
   } else if (name == "WorldEnd") {
     if (current_object_) fail(d.range, "WorldEnd inside the definition of object \"" + current_object_name_ + "\"");
     if (!attribute_stack_.empty()) warn(d.range, "WorldEnd with an AttributeBegin still open");
+    finish_media(d.range);
     block_ = Block::ended;
   } else if (name == "WorldBegin") {
     fail(d.range, "a second WorldBegin", "a scene file renders one image: one WorldBegin ... WorldEnd block");
@@ -335,6 +336,8 @@ void Importer::shape(const Directive& d) {
          "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"");
   }
   source.material = material_index(*state_.material, params);
+  source.invisible = state_.material->invisible;
+  source.media = shape_media();
   source.emission = state_.area_light;
   report_unused(params);
   if (source.pbrt_world_from_object_at_end) {
@@ -384,6 +387,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   Matrix world_from_object = world_from_pbrt_world * source.pbrt_world_from_object;
   Shape shape;
   shape.material = source.material;
+  shape.invisible = source.invisible;
+  shape.media = source.media;
   if (source.emission) {
     const Rgb& l = source.emission->radiance;
     if (l[0] > 0 || l[1] > 0 || l[2] > 0)
@@ -402,6 +407,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     if (glass && source.reverse_orientation)
       fail(source.at, "a glass sphere turned inside out (ReverseOrientation) is not supported",
            "its outside would be the inside of the sphere");
+    // Our sphere's normal points out; pbrt-v3's, in, under ReverseOrientation.
+    if (shape.media && source.reverse_orientation) std::swap(shape.media->inside, shape.media->outside);
     // Centre and radius in world metres; the object frame's rotation (and
     // mirroring) kept in render_from_object, where the sphere's (u, v) are pbrt's.
     shape.type = Shape::Type::sphere;
@@ -423,9 +430,10 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     shape.positions.push_back(sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, p, source.at)))));
   shape.indices = source.indices;
   shape.uvs = source.uvs;
-  if (shape.emission || glass) {
+  if (shape.emission || glass || shape.media) {
     // pbrt-v3 emits on the side of its geometric normal, and has glass's
-    // outside there (our glass: on the winding's side): the winding's
+    // outside there (our glass: on the winding's side), and a medium
+    // interface's outside medium: the winding's
     // (right-handed in its world), flipped by ReverseOrientation and by a
     // mirroring object transform; with vertex normals, the side they point to.
     bool mirrored_object = determinant3(source.pbrt_world_from_object) < 0;

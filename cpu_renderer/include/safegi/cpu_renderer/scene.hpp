@@ -122,6 +122,24 @@ struct TexCoord {
   Real u = 0.0f, v = 0.0f;
 };
 
+// The media a shape separates (indices into Scene::media; -1: vacuum). As in
+// pbrt-v3, "outside" is the side the geometric normal points to.
+struct MediumInterface {
+  int inside = -1;
+  int outside = -1;
+};
+
+// A homogeneous participating medium (pbrt-v3's "homogeneous"): light is
+// absorbed and scattered at rates per length, and scatters by
+// Henyey–Greenstein's phase function of asymmetry g.
+struct Medium {
+  std::string name;
+  spectrum<dim::inv_length> absorption;  // σa
+  spectrum<dim::inv_length> scattering;  // σs
+  Real asymmetry = 0;                    // g, in (-1, 1): > 0 scatters forwards
+  spectrum<dim::inv_length> extinction() const { return absorption + scattering; }  // σt
+};
+
 struct Shape {
   enum class Type { mesh, sphere };
   Type type = Type::mesh;
@@ -135,6 +153,12 @@ struct Shape {
   Length radius = sg::zero;
 
   int material = -1;  // index into Scene::materials; -1: absorbs everything
+  // No surface at all (pbrt-v3's material "" or "none"): rays pass through it,
+  // which only matters where it bounds a participating medium (or emits).
+  bool invisible = false;
+  // The media on either side, where they differ (absent: the side a ray is on
+  // is whatever medium it was already in).
+  std::optional<MediumInterface> media;
   std::optional<Radiance> emission;
   bool two_sided_emission = false;
 
@@ -202,6 +226,7 @@ struct Camera {
   Length focus_distance = sg::zero;
   Time shutter_open = sg::zero;
   Time shutter_close = sg::zero;
+  int medium = -1;  // the medium the camera is in (index into Scene::media; -1: vacuum)
 };
 
 enum class IntegratorType { direct, path, photon };
@@ -237,8 +262,16 @@ struct Scene {
   std::vector<SpotLight> spot_lights;
   std::vector<DistantLight> distant_lights;
   std::optional<EnvironmentLight> environment;
+  std::vector<Medium> media;
 
   bool textured() const { return !textures.empty() || !patterns.empty(); }
+  // Rays must track media and cross invisible boundaries.
+  bool has_media() const {
+    if (!media.empty()) return true;
+    for (const Shape& shape : shapes)
+      if (shape.invisible) return true;
+    return false;
+  }
 };
 
 }  // namespace safegi::render
