@@ -82,8 +82,8 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "plastic", "diffuse": 0.5, "specular": 0.5, "alpha": 0}})j")),
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
-            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\" or "
-            "\"conductor\", got \"wood\"");
+            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
+            "\"conductor\" or \"substrate\", got \"wood\"");
 }
 
 TEST_F(LoaderFiles, Conductor) {
