@@ -107,7 +107,8 @@ class Bsdf {
                    },
                    [&](const SubstrateMaterial& m) -> Sampled {
                      // pbrt-v3's FresnelBlend::Sample_f: the cosine hemisphere or the
-                     // coat's visible normals, reflected, each half the time.
+                     // coat's visible normals, reflected, each half the time (u_lobe is
+                     // its own number here: pbrt-v3 rescales u[0] instead).
                      DirectionShading wi = u_lobe < 0.5f ? from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2))
                                                          : TrowbridgeReitz(m.alpha).sample_visible_reflection(wo, u1, u2);
                      if (wi.z() <= 0) return std::nullopt;  // before substrate(), which divides by cos θi
@@ -209,8 +210,8 @@ class Bsdf {
   }
 
   // Substrate: pbrt-v3's FresnelBlend::f. The base, 28/(23π) ρd (1 − ρs)
-  // (1 − (1 − cos θi/2)⁵) (1 − (1 − cos θo/2)⁵), is Lambert's ρd/π scaled by
-  // what the coat lets through both ways; the coat, D(h) / (4 |ωi·h|
+  // (1 − (1 − cos θi/2)⁵) (1 − (1 − cos θo/2)⁵), is Lambert's ρd/π times what
+  // the coat lets through both ways (28/23 normalises that); the coat, D(h) / (4 |ωi·h|
   // max(cos θi, cos θo)) times Schlick's F(ωi·h) = ρs + (1 − ρs)(1 − ωi·h)⁵,
   // has no masking term: Ashikhmin and Shirley's max() stands for it. The
   // denominators are plain ratios, as in TrowbridgeReitz::reflection.
