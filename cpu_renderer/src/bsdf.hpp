@@ -1,12 +1,14 @@
 // Materials as BSDFs in the local shading space (normal = +z, on the side the
 // light leaves towards): Lambert, energy-conserving Phong, perfect mirror,
 // smooth glass (Fresnel reflection and refraction), pbrt's plastic (Lambert
-// plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe) and rough metal
-// (the same lobe weighted by the conductor's Fresnel term).
+// plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe), rough metal
+// (the same lobe weighted by the conductor's Fresnel term) and pbrt-v3's
+// substrate (Ashikhmin and Shirley's FresnelBlend).
 #pragma once
 
 #include <cmath>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 #include "safegi/cpu_renderer/sampling.hpp"
@@ -44,7 +46,9 @@ class Bsdf {
       : model_(material.model), diffuse_(diffuse), from_inside_(from_inside) {
     std::visit(
         [&](const auto& model) {
-          if constexpr (requires { model.diffuse; model.specular; }) {
+          // Substrate has both parts too but picks its strategy half and half, as pbrt-v3 does.
+          using Model = std::decay_t<decltype(model)>;
+          if constexpr (std::is_same_v<Model, PhongMaterial> || std::is_same_v<Model, PlasticMaterial>) {
             Real d = sg::average(diffuse), s = sg::average(model.specular);
             specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
           }
@@ -62,6 +66,7 @@ class Bsdf {
                                  [&](const PhongMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
+                                 [&](const SubstrateMaterial& m) { return substrate(m, wo, wi); },
                                  [](const MirrorMaterial&) { return Brdf{}; },
                                  [](const GlassMaterial&) { return Brdf{}; },
                                  [](const BlackMaterial&) { return Brdf{}; }},
@@ -74,6 +79,7 @@ class Bsdf {
                                  [&](const PhongMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor_pdf(m, wo, wi); },
+                                 [&](const SubstrateMaterial& m) { return substrate_pdf(m, wo, wi); },
                                  [](const MirrorMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const GlassMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const BlackMaterial&) { return PdfSolidAngle(sg::zero); }},
@@ -98,6 +104,15 @@ class Bsdf {
                      DirectionShading wi = TrowbridgeReitz(m.alpha).sample_reflection(wo, u1, u2);
                      if (wi.z() <= 0) return std::nullopt;  // before conductor(), which divides by cos θi
                      return weighted(wi, conductor(m, wo, wi), conductor_pdf(m, wo, wi));
+                   },
+                   [&](const SubstrateMaterial& m) -> Sampled {
+                     // pbrt-v3's FresnelBlend::Sample_f: the cosine hemisphere or the
+                     // coat's visible normals, reflected, each half the time (u_lobe is
+                     // its own number here: pbrt-v3 rescales u[0] instead).
+                     DirectionShading wi = u_lobe < 0.5f ? from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2))
+                                                         : TrowbridgeReitz(m.alpha).sample_visible_reflection(wo, u1, u2);
+                     if (wi.z() <= 0) return std::nullopt;  // before substrate(), which divides by cos θi
+                     return weighted(wi, substrate(m, wo, wi), substrate_pdf(m, wo, wi));
                    },
                    [](const BlackMaterial&) -> Sampled { return std::nullopt; }},
         model_);
@@ -192,6 +207,31 @@ class Bsdf {
   }
   static PdfSolidAngle conductor_pdf(const ConductorMaterial& metal, DirectionShading wo, DirectionShading wi) {
     return TrowbridgeReitz(metal.alpha).reflection_pdf(wo, half_vector(wo, wi));
+  }
+
+  // Substrate: pbrt-v3's FresnelBlend::f. The base, 28/(23π) ρd (1 − ρs)
+  // (1 − (1 − cos θi/2)⁵) (1 − (1 − cos θo/2)⁵), is Lambert's ρd/π times what
+  // the coat lets through both ways (28/23 normalises that); the coat, D(h) / (4 |ωi·h|
+  // max(cos θi, cos θo)) times Schlick's F(ωi·h) = ρs + (1 − ρs)(1 − ωi·h)⁵,
+  // has no masking term: Ashikhmin and Shirley's max() stands for it. The
+  // denominators are plain ratios, as in TrowbridgeReitz::reflection.
+  Brdf substrate(const SubstrateMaterial& substrate, DirectionShading wo, DirectionShading wi) const {
+    auto pow5 = [](Real v) { return (v * v) * (v * v) * v; };
+    const Reflectance transmitted = Reflectance(1.0f) - substrate.specular;
+    const Brdf base = diffuse_ * transmitted *
+                      ((28 / (23 * kPi)) * (1 - pow5(1 - wi.z() / 2)) * (1 - pow5(1 - wo.z() / 2))) /
+                      units::steradian / units::proj;
+    const DirectionShading h = half_vector(wo, wi);
+    const Real cos_h = sg::dot(wi, h);
+    const Reflectance schlick = substrate.specular + pow5(1 - cos_h) * transmitted;
+    return base + schlick * (TrowbridgeReitz(substrate.alpha).density(h) /
+                             (4 * std::abs(cos_h) * std::max(wi.z(), wo.z())));
+  }
+  // pbrt-v3's FresnelBlend::Pdf, ½ (cos θi/π + p(h)/(4 ωo·h)), with p(h) its
+  // TrowbridgeReitzDistribution's Pdf for visible-normal sampling (the
+  // default it constructs): D(h) G1(ωo) |ωo·h| / cos θo.
+  static PdfSolidAngle substrate_pdf(const SubstrateMaterial& substrate, DirectionShading wo, DirectionShading wi) {
+    return 0.5f * (cosine_pdf(wi) + TrowbridgeReitz(substrate.alpha).visible_reflection_pdf(wo, half_vector(wo, wi)));
   }
 
   // Reflection by the smooth interface or refraction through it, chosen with

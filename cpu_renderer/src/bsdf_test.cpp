@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <random>
+#include <vector>
 
 namespace safegi::render {
 namespace {
@@ -160,6 +161,36 @@ TEST(TrowbridgeReitz, SampledNormalsFollowTheirDensity) {
   }
 }
 
+// The normals a direction sees: their density integrates to 1 over the
+// normals (Smith's masking is what normalises it: ∫ D(h) max(0, ωo·h) dωh =
+// cos θo (1 + Λ(ωo))), and sampled ones follow it, about the normal and about ωo.
+TEST(TrowbridgeReitz, VisibleNormalsIntegrateToOneAndFollowTheirDensity) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(0, 1);
+  const int n = 200000;
+  for (Real alpha : {0.05f, 0.3f, 1.0f}) {
+    TrowbridgeReitz distribution(alpha);
+    for (double theta_o : {0.0, 0.7, 1.4}) {
+      DirectionShading wo = spherical(theta_o, 0.5);
+      auto pdf = [&](DirectionShading h) { return sg::raw(distribution.visible_normal_pdf(wo, h)); };
+      EXPECT_NEAR(hemisphere_integral(pdf, alpha < 0.1f ? 6000 : 1500), 1.0, 3e-3) << alpha << " at " << theta_o;
+      std::vector<DirectionShading> normals;
+      for (int i = 0; i < n; ++i) normals.push_back(distribution.sample_visible_normal(wo, u(rng), u(rng)));
+      for (double theta0 : {0.1, 0.3, 0.6, 1.0}) {
+        int near_normal = 0, near_wo = 0;
+        for (DirectionShading h : normals) {
+          near_normal += std::acos(h.z()) < theta0;
+          near_wo += sg::dot(h, wo) > std::cos(theta0);
+        }
+        double cap_normal = hemisphere_integral([&](DirectionShading h) { return std::acos(h.z()) < theta0 ? pdf(h) : 0.0; });
+        double cap_wo = hemisphere_integral([&](DirectionShading h) { return sg::dot(h, wo) > std::cos(theta0) ? pdf(h) : 0.0; });
+        EXPECT_NEAR(static_cast<double>(near_normal) / n, cap_normal, 5e-3) << alpha << " at " << theta_o << ", " << theta0;
+        EXPECT_NEAR(static_cast<double>(near_wo) / n, cap_wo, 5e-3) << alpha << " at " << theta_o << ", " << theta0;
+      }
+    }
+  }
+}
+
 // The lobed materials the tests compare, with the same diffuse and specular parts.
 const TexturedReflectance kTestDiffuse{Reflectance(0.5f, 0.4f, 0.3f)};
 const Reflectance kTestSpecular(0.4f);
@@ -171,6 +202,8 @@ Material plastic_material() { return {plastic_parameters()}; }
 Material copper_material(Real alpha = 0.2f) {
   return {ConductorMaterial{IndexSpectrum(0.2f, 0.92f, 1.1f), IndexSpectrum(3.9f, 2.45f, 2.14f), alpha}};
 }
+SubstrateMaterial substrate_parameters() { return SubstrateMaterial{kTestDiffuse, kTestSpecular, 0.2f}; }
+Material substrate_material() { return {substrate_parameters()}; }
 
 struct SampledEstimate {
   double mean_weight, pdf_mismatch;
@@ -194,8 +227,9 @@ SampledEstimate estimate_albedo(const Bsdf& bsdf, DirectionShading wo, int n) {
 }
 
 TEST(Bsdf, SamplingAgreesWithEvaluation) {
-  const Material materials[] = {lambert_material(), phong_material(), plastic_material(), copper_material()};
-  for (int type = 0; type < 4; ++type) {
+  const Material materials[] = {lambert_material(), phong_material(), plastic_material(), copper_material(),
+                                substrate_material()};
+  for (int type = 0; type < 5; ++type) {
     const Material& m = materials[type];
     Bsdf bsdf(m);
     for (double theta : {0.0, 0.5, 1.0, 1.4}) {
@@ -284,6 +318,88 @@ TEST(Bsdf, RoughMetalLobeNeverGainsEnergy) {
         EXPECT_NEAR(mean, 1 - std::log(2.0), 4 * standard_error);
       }
     }
+  }
+}
+
+// pbrt-v3's FresnelBlend (Ashikhmin and Shirley) and its Pdf, written out
+// here in double from their formulas, at one pair of directions and per
+// channel (a coloured ρs too): f = 28/(23π) ρd (1 − ρs) (1 − (1 − cos θi/2)⁵)
+// (1 − (1 − cos θo/2)⁵) + D(h) / (4 |ωi·h| max(cos θi, cos θo)) (ρs + (1 − ρs)
+// (1 − ωi·h)⁵); pdf = ½ (cos θi/π + D(h) G1(ωo) |ωo·h| / cos θo / (4 ωo·h)),
+// the visible-normal density pbrt-v3's TrowbridgeReitzDistribution samples.
+TEST(Bsdf, SubstrateIsPbrtV3FresnelBlend) {
+  const double alpha = 0.3, kd[3] = {0.5, 0.4, 0.3}, ks[3] = {0.4, 0.2, 0.05};
+  const Material substrate{SubstrateMaterial{TexturedReflectance{Reflectance(0.5f, 0.4f, 0.3f)},
+                                             Reflectance(0.4f, 0.2f, 0.05f), static_cast<Real>(alpha)}};
+  Bsdf bsdf(substrate);
+  const double theta_o = 0.6, phi_o = 0.2, theta_i = 1.1, phi_i = 2.5;
+  const double o[3] = {std::sin(theta_o) * std::cos(phi_o), std::sin(theta_o) * std::sin(phi_o), std::cos(theta_o)};
+  const double i[3] = {std::sin(theta_i) * std::cos(phi_i), std::sin(theta_i) * std::sin(phi_i), std::cos(theta_i)};
+  double h[3] = {o[0] + i[0], o[1] + i[1], o[2] + i[2]};
+  const double h_length = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  for (double& c : h) c /= h_length;
+  const double cos_h = i[0] * h[0] + i[1] * h[1] + i[2] * h[2], a2 = alpha * alpha;
+  const double d = a2 / (kPiD * std::pow(h[2] * h[2] * (a2 - 1) + 1, 2));
+  auto pow5 = [](double v) { return std::pow(v, 5); };
+  DirectionShading wo = spherical(theta_o, phi_o), wi = spherical(theta_i, phi_i);
+  glm::vec3 f = sg::raw(bsdf.eval(wo, wi));
+  for (int c = 0; c < 3; ++c) {
+    double diffuse = 28 / (23 * kPiD) * kd[c] * (1 - ks[c]) * (1 - pow5(1 - i[2] / 2)) * (1 - pow5(1 - o[2] / 2));
+    double specular = d / (4 * cos_h * std::max(i[2], o[2])) * (ks[c] + (1 - ks[c]) * pow5(1 - cos_h));
+    EXPECT_NEAR(f[c], diffuse + specular, 1e-5 * (diffuse + specular)) << c;
+  }
+  EXPECT_NEAR(f[0], 0.13820, 1e-4);  // the value itself, for a reader to check
+  const double g1 = 2 / (1 + std::sqrt(1 + a2 * std::pow(std::tan(theta_o), 2)));
+  const double pdf = 0.5 * (i[2] / kPiD + d * g1 * cos_h / o[2] / (4 * cos_h));
+  EXPECT_NEAR(sg::raw(bsdf.pdf(wo, wi)), pdf, 1e-5 * pdf);
+  // Reciprocal: both parts are symmetric in ωo and ωi (ωi·h = ωo·h).
+  glm::vec3 backward = sg::raw(bsdf.eval(wi, wo));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(backward[c], f[c], 1e-5 * f[c]) << c;
+  EXPECT_FALSE(bsdf.is_specular());
+}
+
+// The substrate's diffuse part is the Bsdf's given diffuse value (a texel,
+// where Kd is textured), and it samples half and half whatever its parts'
+// sizes, as pbrt-v3 does: plastic's lobe choice by ρs / (ρd + ρs) does not
+// apply. ∫ pdf is the share of samples that stay above the surface: all the
+// cosine half's, and the reflections of visible normals that do.
+TEST(Bsdf, SubstrateTakesTheTexelAndSamplesHalfAndHalf) {
+  const Reflectance texel(0.1f, 0.2f, 0.9f);
+  SubstrateMaterial given = substrate_parameters(), textured = given;
+  textured.diffuse.value = texel;
+  const Material substrate{given}, expected{textured};
+  Bsdf with_texel(substrate, texel, false), as_expected(expected);
+  DirectionShading wo = spherical(0.4, 0.1), wi = spherical(0.9, 2.0);
+  EXPECT_EQ(sg::raw(with_texel.eval(wo, wi)), sg::raw(as_expected.eval(wo, wi)));
+  EXPECT_NE(sg::raw(with_texel.eval(wo, wi)), sg::raw(Bsdf(substrate).eval(wo, wi)));
+
+  SubstrateMaterial diffuse_only = given, glossy_only = given;
+  diffuse_only.specular = Reflectance{};
+  glossy_only.diffuse = TexturedReflectance{};
+  const Material a{diffuse_only}, b{glossy_only};
+  for (double theta : {0.2, 1.2}) {
+    DirectionShading w = spherical(theta, 0.7);
+    EXPECT_EQ(sg::raw(Bsdf(a).pdf(w, wi)), sg::raw(Bsdf(substrate).pdf(w, wi)));
+    EXPECT_EQ(sg::raw(Bsdf(b).pdf(w, wi)), sg::raw(Bsdf(substrate).pdf(w, wi)));
+  }
+  // Below u_lobe = 1/2 the cosine-weighted hemisphere, whatever the parts.
+  for (const Material* m : {&a, &b, &substrate}) {
+    std::optional<BsdfSample> s = Bsdf(*m).sample(wo, 0.49f, 0.3f, 0.8f);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(sg::raw(s->wi), sg::raw(from_kernel<DirectionShading>(sample_cosine_hemisphere(0.3f, 0.8f))));
+  }
+
+  Bsdf bsdf(substrate);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (double theta : {0.0, 0.7, 1.4}) {
+    DirectionShading w = spherical(theta, 0.3);
+    const int n = 200000;
+    int above = 0;
+    for (int k = 0; k < n; ++k) above += bsdf.sample(w, u(rng), u(rng), u(rng)).has_value();
+    double pdf_total = hemisphere_integral([&](DirectionShading v) { return sg::raw(bsdf.pdf(w, v)); }, 1500, 180);
+    EXPECT_NEAR(pdf_total, static_cast<double>(above) / n, 4e-3) << theta;
+    EXPECT_GE(pdf_total, 0.5 - 2e-3) << theta;
   }
 }
 

@@ -159,9 +159,17 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     metal.k = index_spectrum(required(value, path, "k"), path.field("k"), true);
     metal.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
     material.model = metal;
+  } else if (type == "substrate") {
+    // No energy check: FresnelBlend weights the diffuse part by 1 − specular.
+    object(value, path, {"type", "diffuse", "specular", "alpha"});
+    SubstrateMaterial substrate;
+    substrate.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    substrate.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    substrate.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    material.model = substrate;
   } else {
     fail(path.field("type"),
-         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\" or \"conductor\", got " +
+         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\" or \"substrate\", got " +
              short_dump(value["type"]));
   }
   return material;

@@ -554,6 +554,56 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
             "scene.pbrt:2:36: error: no float texture named \"b\"");
 }
 
+// pbrt-v3's substrate (src/materials/substrate.cpp): "Kd" and "Ks" 0.5,
+// "uroughness" and "vroughness" 0.1 each (no "roughness"), remapped by
+// default; "Kd" textured as matte's; black when both reflectances are.
+TEST(PbrtImport, SubstrateAsPbrtV3DefinesIt) {
+  PbrtScene scene = import(world(
+      "Material \"substrate\"\nShape \"sphere\"\n"  // 0: pbrt-v3's defaults
+      // 1: as given; Kd + Ks above 1 is no warning (FresnelBlend weights Kd by 1 - Ks)
+      "Material \"substrate\" \"rgb Kd\" [0.2 0.3 0.4] \"rgb Ks\" [0.9 0.8 0.7] \"float uroughness\" 0.3 "
+      "\"float vroughness\" 0.3 \"bool remaproughness\" \"false\"\nShape \"sphere\"\n"
+      "Material \"substrate\" \"float uroughness\" 0.2 \"float vroughness\" 0.2\nShape \"sphere\"\n"  // 2: remapped
+      "Material \"substrate\" \"float uroughness\" 0 \"float vroughness\" 0 \"bool remaproughness\" \"false\"\n"
+      "Shape \"sphere\"\n"  // 3: TrowbridgeReitzDistribution's floor
+      // 4: a textured Kd; a black Ks still leaves FresnelBlend (its Schlick term is not 0 at grazing angles)
+      "Texture \"t\" \"color\" \"checkerboard\"\nMaterial \"substrate\" \"texture Kd\" \"t\" \"rgb Ks\" [0 0 0]\n"
+      "Shape \"sphere\"\n"
+      "Material \"substrate\" \"rgb Kd\" [0 0 0] \"rgb Ks\" [0 0 0]\nShape \"sphere\""));  // 5: no BxDF: black
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.shapes.size(), 6u);
+  auto substrate = [&](size_t shape) { return as<SubstrateMaterial>(s.materials.at(s.shapes[shape].material)); };
+  EXPECT_EQ(sg::raw(substrate(0).diffuse.value), glm::vec3(0.5f));
+  EXPECT_FALSE(substrate(0).diffuse.textured());
+  EXPECT_EQ(sg::raw(substrate(0).specular), glm::vec3(0.5f));
+  EXPECT_NEAR(substrate(0).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_EQ(sg::raw(substrate(1).diffuse.value), glm::vec3(0.2f, 0.3f, 0.4f));
+  EXPECT_EQ(sg::raw(substrate(1).specular), glm::vec3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(substrate(1).alpha, 0.3f);
+  EXPECT_NEAR(substrate(2).alpha, pbrt_alpha(0.2), 1e-6);
+  EXPECT_EQ(substrate(3).alpha, 0.001f);
+  EXPECT_EQ(substrate(4).diffuse.pattern, 0);
+  EXPECT_EQ(sg::raw(substrate(4).specular), glm::vec3(0));
+  EXPECT_EQ(diffuse(s.materials.at(s.shapes[4].material)).pattern, 0);  // what the integrator's textures look up
+  EXPECT_EQ(s.shapes[5].material, -1);
+  EXPECT_EQ(scene.warnings, "");
+
+  EXPECT_EQ(import_error(world(used("Material \"substrate\" \"float uroughness\" 0.2"))),
+            "scene.pbrt:2:10: error: an anisotropic Material \"substrate\" (\"uroughness\" 0.2, \"vroughness\" 0.1) is "
+            "not supported\nMaterial \"substrate\" \"float uroughness\" 0.2\n         ^~~~~~~~~~~\n"
+            "help: the microfacet lobe here is isotropic: give \"uroughness\" and \"vroughness\" one value\n");
+  auto error_of = [](const std::string& material) { return first_line(import_error(world(used(material)))); };
+  EXPECT_EQ(error_of("Material \"substrate\" \"rgb Ks\" [1.2 0.5 0.5]"),
+            "scene.pbrt:2:22: error: \"Ks\" of Material \"substrate\" must lie in [0, 1] in every channel");
+  EXPECT_EQ(error_of("Texture \"t\" \"color\" \"checkerboard\"\nMaterial \"substrate\" \"texture Ks\" \"t\""),
+            "scene.pbrt:3:22: error: a procedural texture as \"Ks\" of Material \"substrate\" is not supported");
+  // pbrt-v3's substrate reads no "roughness": the parameter is reported unused, as pbrt-v3 ignores it.
+  PbrtScene rough = import(world(used("Material \"substrate\" \"float roughness\" 0.5")));
+  EXPECT_NEAR(as<SubstrateMaterial>(rough.scene.materials.at(rough.scene.shapes[0].material)).alpha, pbrt_alpha(0.1), 1e-6);
+  EXPECT_NE(rough.warnings.find("parameter \"float roughness\" of Material \"substrate\" is not used"), std::string::npos)
+      << rough.warnings;
+}
+
 // pbrt-v3's spectrum files (.spd, as pbrt-v3-scenes ship them for metals):
 // [wavelength value ...] pairs with '#' comments, resolved against the main
 // file's directory, read as its ReadFloatFile reads them, then converted as
@@ -607,7 +657,7 @@ TEST(PbrtImport, MissingIntegratorsAreSubstitutedByName) {
 TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   PbrtScene scene = import(world(
       "Texture \"odd\" \"spectrum\" \"ptex\"\n"
-      "Material \"substrate\"\n"
+      "Material \"translucent\"\n"
       "Material \"matte\" \"texture Kd\" \"odd\"\n"
       "MakeNamedMaterial \"m\" \"string type\" \"fourier\"\n"
       "MakeNamedMaterial \"m\" \"string type\" \"matte\" \"rgb Kd\" [0.2 0.3 0.4]\n"
@@ -615,9 +665,10 @@ TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   ASSERT_EQ(scene.scene.shapes.size(), 1u);
   EXPECT_EQ(sg::raw(diffuse(scene.scene.materials.at(scene.scene.shapes[0].material)).value),
             glm::vec3(0.2f, 0.3f, 0.4f));
-  EXPECT_EQ(import_error(world("Material \"substrate\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
-            "scene.pbrt:2:10: error: material \"substrate\" is not supported\nMaterial \"substrate\"\n"
-            "         ^~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"\n");
+  EXPECT_EQ(import_error(world("Material \"translucent\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
+            "scene.pbrt:2:10: error: material \"translucent\" is not supported\nMaterial \"translucent\"\n"
+            "         ^~~~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
+            "\"uber\"\n");
   EXPECT_EQ(import_error(world("Texture \"odd\" \"spectrum\" \"ptex\"\nMaterial \"plastic\" \"texture Kd\" \"odd\"\n"
                                "Shape \"sphere\"")),
             "scene.pbrt:2:26: error: texture \"ptex\" is not supported\nTexture \"odd\" \"spectrum\" \"ptex\"\n"
@@ -702,7 +753,7 @@ TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
   EXPECT_EQ(import_error(world(used("Texture \"t\" \"color\" \"fbm\"\nMaterial \"mirror\" \"texture Kr\" \"t\""))),
             "scene.pbrt:3:19: error: a procedural texture as \"Kr\" of Material \"mirror\" is not supported\n"
             "Material \"mirror\" \"texture Kr\" \"t\"\n                  ^~~~~~~~~~~~\n"
-            "help: only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here\n");
+            "help: only diffuse reflectances (\"Kd\" of matte, plastic, substrate and uber) take textures here\n");
 }
 
 }  // namespace

@@ -169,8 +169,10 @@ class Importer {
                         const ParamSet& params, SourceRange at);
   static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
   MaterialModel metal(ParamSet& params, SourceRange at);
+  MaterialModel substrate(ParamSet& params, SourceRange at);
   IndexSpectrum index_spectrum(ParamSet& params, const char* name, const Rgb& fallback, bool zero_allowed);
-  static double isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at);
+  static double isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at,
+                                    bool reads_roughness = true);
   static Real checked_alpha(double alpha, const ParamSet& params, SourceRange at);
   std::optional<TextureEntry> spectrum_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<double> float_param(ParamSet& params, const char* name);

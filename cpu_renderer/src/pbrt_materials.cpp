@@ -1,5 +1,5 @@
 // The importer's materials and textures: pbrt-v3's matte, mirror, plastic,
-// glass, metal and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
+// glass, metal, substrate and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
 // its constant, imagemap and scale textures (src/textures/*.cpp), mapped onto
 // the Scene's materials and image textures. What the Scene cannot represent
 // is an error at the parameter or name that asks for it.
@@ -33,12 +33,13 @@ constexpr MaterialParams kMaterialParams[] = {
     {"plastic", {"Kd", "Ks", "roughness", "remaproughness", "bumpmap"}},
     {"glass", {"Kr", "Kt", "eta", "index", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
     {"metal", {"eta", "k", "roughness", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
+    {"substrate", {"Kd", "Ks", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
     {"uber",
      {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
       "bumpmap"}},
 };
 constexpr const char* kSupportedMaterials =
-    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"uber\"";
+    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"uber\"";
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
@@ -191,7 +192,7 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   if (entry.textured()) {
     if (!allow_image)
       refuse_texture(params, *param, entry, name,
-                     "only diffuse reflectances (\"Kd\" of matte, plastic and uber) take textures here");
+                     "only diffuse reflectances (\"Kd\" of matte, plastic, substrate and uber) take textures here");
     sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
     for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
   }
@@ -241,12 +242,14 @@ IndexSpectrum Importer::index_spectrum(ParamSet& params, const char* name, const
 }
 
 // pbrt-v3 reads "uroughness" and "vroughness" for an anisotropic lobe; the one
-// here is isotropic, so they must agree.
-double Importer::isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at) {
+// here is isotropic, so they must agree. `reads_roughness`: the material also
+// reads one "roughness" for both (substrate does not).
+double Importer::isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at, bool reads_roughness) {
   if (u != v)
     fail(at, "an anisotropic " + params.context() + " (\"uroughness\" " + format_number(u) + ", \"vroughness\" " +
                  format_number(v) + ") is not supported",
-         "the microfacet lobe here is isotropic: give one \"roughness\"");
+         reads_roughness ? "the microfacet lobe here is isotropic: give one \"roughness\""
+                         : "the microfacet lobe here is isotropic: give \"uroughness\" and \"vroughness\" one value");
   return u;
 }
 
@@ -296,6 +299,8 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     material.model = glass(kr, kt, index_of_refraction(params, at));
   } else if (type == "metal") {
     material.model = metal(params, at);
+  } else if (type == "substrate") {
+    material.model = substrate(params, at);
   }
   return material;
 }
@@ -362,6 +367,21 @@ MaterialModel Importer::metal(ParamSet& params, SourceRange at) {
   u = isotropic_roughness(u, v, params, at);
   metal.alpha = checked_alpha(microfacet_alpha(u, remap), params, at);
   return metal;
+}
+
+// pbrt-v3's substrate (src/materials/substrate.cpp): a FresnelBlend of "Kd"
+// (0.5, textured as matte's) and "Ks" (0.5) over a Trowbridge–Reitz
+// distribution of "uroughness" and "vroughness" (0.1 each; no "roughness"),
+// remapped by default; no BxDF, so black, when both are black. Kd + Ks above
+// 1 is no warning, unlike plastic's: FresnelBlend weights Kd by 1 − Ks.
+MaterialModel Importer::substrate(ParamSet& params, SourceRange at) {
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
+  Reflectance ks = reflectance(params, "Ks", 0.5);
+  bool remap = params.one_bool("remaproughness", true);
+  double u = float_param(params, "uroughness").value_or(0.1), v = float_param(params, "vroughness").value_or(0.1);
+  u = isotropic_roughness(u, v, params, at, false);
+  if (black(kd) && sg::is_black(ks)) return BlackMaterial{};
+  return SubstrateMaterial{kd, ks, checked_alpha(microfacet_alpha(u, remap), params, at)};
 }
 
 MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {

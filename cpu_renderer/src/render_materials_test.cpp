@@ -193,6 +193,15 @@ TEST(RenderMaterials, PlasticAndRoughMetalReflectTheirDirectionalAlbedo) {
   }
 }
 
+// pbrt-v3's substrate likewise: FresnelBlend is not energy conserving (no
+// white furnace), so the pixel is checked against the quadrature of its BRDF.
+TEST(RenderMaterials, SubstrateReflectsItsDirectionalAlbedo) {
+  const Material substrate{SubstrateMaterial{TexturedReflectance{Reflectance(0.5f, 0.3f, 0.2f)}, Reflectance(0.4f), 0.15f}};
+  for (double view_degrees : {0.0, 60.0})
+    expect_floor_reflects(R"j({"type": "substrate", "diffuse": [0.5, 0.3, 0.2], "specular": 0.4, "alpha": 0.15})j",
+                          view_degrees, directional_albedo(substrate, view_degrees * kPiD / 180));
+}
+
 // A nearly smooth metal (α = 0.001, pbrt-v3's floor) reflects the
 // environment with its Fresnel reflectance at the viewing angle: masking
 // takes less than 1e-5 there, so the pixel is F(θ; η, k) per channel; at

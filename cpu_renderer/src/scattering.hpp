@@ -1,7 +1,8 @@
 // The physics under the materials: Fresnel reflectance of a smooth dielectric
 // or conductor interface, refraction, and the Trowbridge–Reitz (GGX)
-// microfacet distribution with Smith's masking and the Torrance–Sparrow
-// reflection it gives, in the local shading space (normal = +z).
+// microfacet distribution with Smith's masking, the sampling of its normals
+// (all, or those a direction sees) and the Torrance–Sparrow reflection it
+// gives, in the local shading space (normal = +z).
 #pragma once
 
 #include <algorithm>
@@ -109,6 +110,51 @@ class TrowbridgeReitz {
   // The density of sample_reflection per solid angle of ωi, h their half vector.
   PdfSolidAngle reflection_pdf(DirectionShading wo, DirectionShading h) const;
 
+  // Smith's masking of one direction (cos θ > 0): G1(ω) = 1 / (1 + Λ(ω)).
+  Real masking(DirectionShading w) const { return 1 / (1 + lambda(w)); }
+
+  // A normal drawn from those ωo (cos θo > 0) sees, the visible normals:
+  // density D(h) G1(ωo) |ωo·h| / cos θo per solid angle of normals. That is
+  // the density pbrt-v3's TrowbridgeReitzDistribution samples (its
+  // sampleVisibleArea, on by default), which it draws by Heitz and d'Eon's
+  // 2014 slopes; this draws it by Heitz's 2018 construction ("Sampling the
+  // GGX Distribution of Visible Normals"): the same density, another map of (u1, u2).
+  DirectionShading sample_visible_normal(DirectionShading wo, Real u1, Real u2) const {
+    // ωo stretched to the configuration where alpha is 1 and the visible
+    // normals are a hemisphere's, projected onto the disk across it.
+    const Real vx0 = alpha_ * wo.x(), vy0 = alpha_ * wo.y();
+    const Real v_length = std::sqrt(vx0 * vx0 + vy0 * vy0 + wo.z() * wo.z());
+    const Real vx = vx0 / v_length, vy = vy0 / v_length, vz = wo.z() / v_length;
+    const Real across = std::sqrt(vx * vx + vy * vy);
+    const Real t1x = across > 0 ? -vy / across : Real(1), t1y = across > 0 ? vx / across : Real(0);
+    const Real t2x = -vz * t1y, t2y = vz * t1x, t2z = vx * t1y - vy * t1x;  // V × T1
+    // A uniform point on the disk, its half hidden behind the hemisphere squeezed by cos θ of V.
+    const Real r = std::sqrt(u1), phi = 2 * kPi * u2;
+    const Real p1 = r * std::cos(phi);
+    const Real s = (1 + vz) / 2;
+    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
+    const Real p3 = std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
+    // Lifted onto the hemisphere, then unstretched.
+    const Real nx = p1 * t1x + p2 * t2x + p3 * vx, ny = p1 * t1y + p2 * t2y + p3 * vy, nz = p2 * t2z + p3 * vz;
+    return sg::from_raw<DirectionShading>(glm::normalize(sg::vec3_rep(alpha_ * nx, alpha_ * ny, std::max(Real(1e-6), nz))));
+  }
+  // The density of sample_visible_normal, per solid angle of normals. The
+  // facet's area seen from ωo (ωo·h of it, G1 unmasked) over the surface's
+  // (cos θo) stands where normal_pdf has cos θh: the projection that turns
+  // D's projected measure into solid angle. Facets turned away (ωo·h < 0) are
+  // never drawn: 0, where pbrt-v3's Pdf takes |ωo·h| (the same on the half
+  // vectors of reflections, the only normals it is asked about).
+  PdfSolidAngle visible_normal_pdf(DirectionShading wo, DirectionShading h) const {
+    return density(h) * (masking(wo) * std::max(Real(0), sg::dot(wo, h)) / wo.z() * units::proj);
+  }
+  // ωo reflected about a visible normal; its density per solid angle of ωi,
+  // h their half vector (pbrt-v3's Pdf(wo, wh) / (4 ωo·h)).
+  DirectionShading sample_visible_reflection(DirectionShading wo, Real u1, Real u2) const {
+    DirectionShading h = sample_visible_normal(wo, u1, u2);
+    return sg::from_raw<DirectionShading>(sg::raw(sg::reflect(wo, sg::to_normal(h))));
+  }
+  PdfSolidAngle visible_reflection_pdf(DirectionShading wo, DirectionShading h) const;
+
  private:
   Real lambda(DirectionShading w) const {
     const Real cos2 = w.z() * w.z();
@@ -133,6 +179,9 @@ inline Real reflection_jacobian(DirectionShading wo, DirectionShading h) {
 
 inline PdfSolidAngle TrowbridgeReitz::reflection_pdf(DirectionShading wo, DirectionShading h) const {
   return normal_pdf(h) * reflection_jacobian(wo, h);
+}
+inline PdfSolidAngle TrowbridgeReitz::visible_reflection_pdf(DirectionShading wo, DirectionShading h) const {
+  return visible_normal_pdf(wo, h) * reflection_jacobian(wo, h);
 }
 
 }  // namespace safegi::render

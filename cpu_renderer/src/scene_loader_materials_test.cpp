@@ -82,8 +82,8 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "plastic", "diffuse": 0.5, "specular": 0.5, "alpha": 0}})j")),
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
-            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\" or "
-            "\"conductor\", got \"wood\"");
+            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
+            "\"conductor\" or \"substrate\", got \"wood\"");
 }
 
 TEST_F(LoaderFiles, Conductor) {
@@ -124,6 +124,26 @@ TEST_F(LoaderFiles, Conductor) {
             "\"metal-Cu-k\", \"metal-CuZn-eta\", \"metal-CuZn-k\"), got \"metal-Xx-eta\"");
   EXPECT_EQ(conductor_error(R"j("eta": 1, "k": 1, "alpha": 0.1, "roughness": 0.1)j"),
             "test.json: materials.m.roughness: unknown field (expected one of: type, eta, k, alpha)");
+}
+
+// pbrt-v3's substrate: diffuse + specular above 1 is accepted (FresnelBlend
+// weights the diffuse part by 1 - specular), unlike plastic's.
+TEST_F(LoaderFiles, Substrate) {
+  Scene scene = load(with_camera(R"j("materials": {
+      "s": {"type": "substrate", "diffuse": [0.7, 0.5, 0.3], "specular": 0.6, "alpha": 0.05}})j"));
+  ASSERT_EQ(scene.materials.size(), 1u);
+  const SubstrateMaterial& substrate = std::get<SubstrateMaterial>(scene.materials[0].model);
+  EXPECT_EQ(sg::raw(substrate.diffuse.value), glm::vec3(0.7f, 0.5f, 0.3f));
+  EXPECT_EQ(sg::raw(substrate.specular), glm::vec3(0.6f));
+  EXPECT_FLOAT_EQ(substrate.alpha, 0.05f);
+  auto substrate_error = [&](const std::string& fields) {
+    return error(with_camera(R"j("materials": {"m": {"type": "substrate", )j" + fields + "}}"));
+  };
+  EXPECT_EQ(substrate_error(R"j("diffuse": 0.5, "alpha": 0.1)j"), "test.json: materials.m: missing field 'specular'");
+  EXPECT_EQ(substrate_error(R"j("diffuse": 0.5, "specular": 0.5, "alpha": 2)j"),
+            "test.json: materials.m.alpha: expected a number in [0.0001, 1], got 2");
+  EXPECT_EQ(substrate_error(R"j("diffuse": 0.5, "specular": 0.5, "alpha": 0.1, "ior": 1.5)j"),
+            "test.json: materials.m.ior: unknown field (expected one of: type, diffuse, specular, alpha)");
 }
 
 TEST_F(LoaderFiles, ImageTextures) {

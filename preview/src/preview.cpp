@@ -275,6 +275,8 @@ struct Preview::Impl {
         "metal is not previewed and appears black");
     add(names_of([](const Material& m) { return std::holds_alternative<PlasticMaterial>(m.model); }),
         "plastic is drawn as its diffuse layer, without its coating's reflection");
+    add(names_of([](const Material& m) { return std::holds_alternative<SubstrateMaterial>(m.model); }),
+        "substrate is drawn as its diffuse layer (Kd), without its coating's reflection");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
@@ -302,6 +304,7 @@ struct Preview::Impl {
                                    return LitSurface{preview_diffuse(m.diffuse), m.specular, m.exponent};
                                  },
                                  [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const SubstrateMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [](const MirrorMaterial&) -> Lit { return std::nullopt; },
                                  [](const GlassMaterial&) -> Lit { return std::nullopt; },
                                  [](const ConductorMaterial&) -> Lit { return std::nullopt; },

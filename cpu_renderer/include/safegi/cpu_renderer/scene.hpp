@@ -72,10 +72,20 @@ struct ConductorMaterial {
   IndexSpectrum k{};    // the extinction coefficient k (>= 0): the index's imaginary part
   Real alpha = 0.001f;  // the lobe's GGX roughness alpha (pbrt-v3's floor: 0.001)
 };
+// pbrt-v3's substrate: Ashikhmin and Shirley's FresnelBlend, a diffuse base
+// under a glossy coat whose Schlick Fresnel term takes what the base gets
+// (the base is weighted by 1 − ρs), so ρd + ρs above 1 gains no energy, unlike
+// plastic's sum. Sampled half and half as pbrt-v3 does, not by the two parts'
+// sizes: the Bsdf does not give it plastic's lobe choice.
+struct SubstrateMaterial {
+  TexturedReflectance diffuse;  // pbrt's Kd
+  Reflectance specular{};       // pbrt's Ks: the coat's reflectance at normal incidence
+  Real alpha = 0.001f;          // the coat's GGX roughness alpha (pbrt-v3's floor: 0.001)
+};
 struct BlackMaterial {};  // absorbs everything
 
 using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
-                                   GlassMaterial, ConductorMaterial>;
+                                   GlassMaterial, ConductorMaterial, SubstrateMaterial>;
 
 // pbrt-v3's bump map: the surface displaced along its normal by `scale` times
 // the luminance of an image texture at (u, v). Only the shading normal changes
@@ -91,7 +101,7 @@ struct Material {
   std::optional<BumpMap> bump;
 };
 
-// The diffuse part of a material that has one (Lambert, Phong, plastic), else nullptr.
+// The diffuse part of a material that has one (Lambert, Phong, plastic, substrate), else nullptr.
 inline const TexturedReflectance* diffuse_of(const Material& material) {
   return std::visit(
       [](const auto& model) -> const TexturedReflectance* {
