@@ -106,10 +106,7 @@ void Importer::finish_media(SourceRange world_end) {
        "the scene has participating media, which pbrt-v3's integrator \"" + integrator_name_ +
            "\" does not trace: rendering without them, as pbrt-v3 does",
        "\"volpath\", \"bdpt\" or \"mlt\" render them (here: the path tracer, which traces them)");
-  scene.camera.medium = -1;
-  scene.media.clear();
-  for (Shape& shape : scene.shapes) shape.media.reset();
-  std::erase_if(scene.shapes, [](const Shape& shape) { return shape.invisible && !shape.emission; });
+  scene.drop_media();
 }
 
 }  // namespace safegi::render::pbrt

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "render_test_support.hpp"
@@ -117,6 +118,22 @@ TEST(RenderMedia, ScatteringFogInAUniformSkyIsAWhiteFurnace) {
     for (const Knobs& knobs : estimator_knobs())
       expect_channels(render_scene(scene, 1024, 2, std::nullopt, knobs.apply), expected, 1e-3,
                       "g " + std::to_string(g) + ", " + knobs.name);
+  }
+}
+
+// The photon map is traced as if in vacuum: a scene with media is refused,
+// not rendered without them.
+TEST(RenderMedia, PhotonMappingRefusesMedia) {
+  Scene scene = fog_scene({{0, 0, 0}, {1, 1, 1}, 0}, "1 0 0", "LightSource \"infinite\"", 5);
+  scene.settings.integrator = IntegratorType::photon;
+  RenderOptions options;
+  options.settings = scene.settings;
+  try {
+    render(scene, options);
+    ADD_FAILURE() << "rendered";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "the photon integrator does not trace participating media or invisible surfaces: render with \"path\"");
   }
 }
 

@@ -99,6 +99,11 @@ int main(int argc, char** argv) {
         throw safegi::render::CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
       scene = safegi::render::load_scene(scene_file, safegi::render::SceneLoadOptions{safegi::render::read_image});
     }
+    if (scene.has_media()) {
+      std::cerr << "warning: the preview draws no participating media and no invisible surfaces: previewing the "
+                   "scene without them\n";
+      scene.drop_media();
+    }
     if (!resolution.empty()) {
       const safegi::render::ImageSize size = safegi::render::parse_resolution(resolution);
       options.width = size.width;

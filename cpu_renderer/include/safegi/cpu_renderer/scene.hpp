@@ -282,6 +282,14 @@ struct Scene {
       if (shape.invisible) return true;
     return false;
   }
+  // The scene in vacuum: no media, and no invisible surface that emits nothing
+  // (it would change no ray), as pbrt-v3's integrators without media render it.
+  void drop_media() {
+    camera.medium = -1;
+    media.clear();
+    for (Shape& shape : shapes) shape.media.reset();
+    std::erase_if(shapes, [](const Shape& shape) { return shape.invisible && !shape.emission; });
+  }
 };
 
 }  // namespace safegi::render
