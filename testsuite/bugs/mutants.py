@@ -34,7 +34,8 @@ MUTANTS = {
         ("angle_compared_with_cosine", "if (cosToAxis > c)", "if (cosToAxis > halfAngle)"),
     ],
     "space_mismatch": [
-        ("object_light_world_point", "vector<world> toLight = lightPos - P;", "vector<world> toLight = lightPosObject - P;"),
+        ("object_light_world_point", "vector<world, away> toLight = lightPos - P;", "vector<world, away> toLight = lightPosObject - P;"),
+        ("direction_away_from_the_light", "vector<world, away> toLight = lightPos - P;", "vector<world, away> toLight = P - lightPos;"),
         ("object_normal_world_direction", "float<proj> cosTheta = max(dot(n, wi), 0.0);", "float<proj> cosTheta = max(dot(nObject, wi), 0.0);"),
         ("object_point_into_world_function", "float<length> d = distanceTo(lightPos, P);", "float<length> d = distanceTo(lightPosObject, P);"),
     ],
@@ -44,9 +45,10 @@ MUTANTS = {
         ("vector_minus_point", "vector<world> toLight = lightPos - P;", "vector<world> toLight = n * meter - P;"),
     ],
     "direction_normalisation": [
-        ("vector_as_direction", "direction<world> wi = normalize(toLight);", "direction<world> wi = toLight;"),
+        ("vector_as_direction", "direction<world, away> wi = normalize(toLight);", "direction<world, away> wi = toLight;"),
         ("half_vector_not_normalised", "direction<world> h = normalize(wi + wo);", "direction<world> h = wi + wo;"),
-        ("reflect_of_a_vector", "direction<world> r = reflect(-wi, n);", "direction<world> r = reflect(-toLight, n);"),
+        ("reflect_of_a_vector", "direction<world, away> r = reflect(-wi, n);", "direction<world, away> r = reflect(-toLight, n);"),
+        ("reflect_of_the_outgoing_direction", "direction<world, away> r = reflect(-wi, n);", "direction<world, away> r = reflect(wi, n);"),
     ],
     "map_misuse": [
         ("map_applied_to_wrong_space", "point<world> P = worldFromObject * position;", "point<world> P = worldFromObject * lightInWorld;"),
@@ -87,9 +89,10 @@ MUTANTS = {
          "lightClipFromLightView * viewFromWorld * worldFromObject;"),
     ],
     "points_as_directions": [  # only a difference of points is a vector
-        ("light_position_as_direction", "direction<world> wi = normalize(toLight);", "direction<world> wi = normalize(lightPos);"),
+        ("light_position_as_direction", "direction<world, away> wi = normalize(toLight);", "direction<world, away> wi = normalize(lightPos);"),
         ("length_of_a_position", "float<length> d = length(toLight);", "float<length> d = length(P);"),
         ("half_vector_from_the_eye_position", "direction<world> h = normalize(wi + wo);", "direction<world> h = normalize(wi + normalize(eyePos));"),
+        ("view_direction_reversed", "direction<world, away> wo = normalize(eyePos - P);", "direction<world, away> wo = normalize(P - eyePos);"),
     ],
     "unit_scales": [  # the right dimension in the wrong unit
         ("centimetres_read_as_metres", "float<length> radius = lightRadiusCm in meter;", "float<length> radius = lightRadiusCm;"),
@@ -109,7 +112,8 @@ MUTANTS = {
     "microfacet_environment": [  # GGX importance sampling of an environment map
         ("environment_looked_up_by_position", "texture(environment, wi)", "texture(environment, P)"),
         ("no_cosine_of_incidence", "spectrum<radiance> L = fr * Li * cosI / pdfWi;", "spectrum<radiance> L = fr * Li / pdfWi;"),
-        ("half_vector_in_tangent_space", "direction<world> wi = reflect(-wo, h);", "direction<world> wi = reflect(-wo, hT);"),
+        ("half_vector_in_tangent_space", "direction<world, away> wi = reflect(-wo, h);", "direction<world, away> wi = reflect(-wo, hT);"),
+        ("reflect_of_the_outgoing_direction", "direction<world, away> wi = reflect(-wo, h);", "direction<world, away> wi = reflect(wo, h);"),
     ],
     "pbr_light_arrays": [  # shapes of outside programs (issue #21): LearnOpenGL PBR, a spot light, a normal map
         ("lambert_without_pi", "Lo += (kD * albedo * INV_PI + specular) * E;", "Lo += (kD * albedo + specular) * E;"),
@@ -120,6 +124,7 @@ MUTANTS = {
         ("half_vector_of_a_light_vector", "direction<world> H = normalize(V + L);", "direction<world> H = normalize(V + toL);"),
         ("vector_for_a_generic_direction", "float<proj> cosL = cosineTo(N, L);", "float<proj> cosL = cosineTo(N, toL);"),
         ("normal_map_left_in_tangent_space", "normal<world> N = normalize(worldFromTangent * nT);", "normal<world> N = normalize(nT);"),
+        ("light_vector_reversed", "vector<world, away> toL = lightPositions[i] - WorldPos;", "vector<world, away> toL = WorldPos - lightPositions[i];"),
     ],
     "sampling_and_media": [  # shapes of outside programs (issue #21): light sampling, fog, shadows, TAA
         ("cone_without_steradian", "float<solid_angle> cone = 2.0 * PI * (1.0 - cosMax) * steradian;",
@@ -157,10 +162,6 @@ ESCAPES = {
         ("full_angle_as_half_angle", "float<angle> halfAngle = 0.5 * spotAngle;", "float<angle> halfAngle = spotAngle;",
          "which angle of the right dimension (the cone's full or half angle)"),
     ],
-    "space_mismatch": [
-        ("direction_away_from_the_light", "vector<world> toLight = lightPos - P;", "vector<world> toLight = P - lightPos;",
-         "the sign of a difference of points: p - q and q - p are both vector<S>"),
-    ],
     "affine_points": [
         ("midpoint_weight", "point<world> mid = P + 0.5 * (lightPos - P);", "point<world> mid = P + 0.25 * (lightPos - P);",
          "the weights of an affine combination"),
@@ -189,10 +190,6 @@ ESCAPES = {
         ("wrong_unit_at_a_literal", "float<length> radius = 5.0 * centimeter;", "float<length> radius = 5.0 * millimeter;",
          "the unit written at a number: 5.0 * millimeter is a correct length, just not the intended one"),
     ],
-    "points_as_directions": [
-        ("view_direction_reversed", "direction<world> wo = normalize(eyePos - P);", "direction<world> wo = normalize(P - eyePos);",
-         "the sign of a direction built from two points"),
-    ],
     "unit_scales": [
         ("azimuth_in_degrees", "float<angle> phi = 2.0 * PI * xi.y * radian;", "float<angle> phi = 2.0 * PI * xi.y * degree;",
          "the unit a plain number is given: 2π·ξ * degree is an angle, the checker trusts the unit written"),
@@ -204,10 +201,6 @@ ESCAPES = {
     "space_conversions": [
         ("motion_from_the_current_frame", "motion = P - prevWorldFromObject * position;", "motion = P - worldFromObject * position;",
          "two maps of the same type (this frame's and last frame's model matrix) are interchangeable"),
-    ],
-    "pbr_light_arrays": [
-        ("light_vector_reversed", "vector<world> toL = lightPositions[i] - WorldPos;", "vector<world> toL = WorldPos - lightPositions[i];",
-         "the sign of a vector between two points (toward the light or away from it)"),
     ],
     "sampling_and_media": [
         ("phase_angle_reversed", "float<1> cosPhase = dot(wc, -wo);", "float<1> cosPhase = dot(wc, wo);",
@@ -236,11 +229,13 @@ CAUSES = {
                     "cosine_of_degrees": "degree where radian is expected", "angle_compared_with_cosine": "its sine or cosine"},
     "space_mismatch": {"object_light_world_point": "missing transform by map<world, object>",
                        "object_normal_world_direction": "missing transform by map<world, object>",
-                       "object_point_into_world_function": "missing transform by map<object, world>"},
+                       "object_point_into_world_function": "missing transform by map<object, world>",
+                       "direction_away_from_the_light": "the one away from it is lightPos - P"},
     "affine_points": {"point_plus_point": "subtract them to get a vector", "scaled_point": "a point cannot be scaled",
                       "vector_minus_point": "only point - point and point - vector"},
     "direction_normalisation": {"vector_as_direction": "only through normalize()", "half_vector_not_normalised": "only through normalize()",
-                                "reflect_of_a_vector": "only through normalize()"},
+                                "reflect_of_a_vector": "only through normalize()",
+                                "reflect_of_the_outgoing_direction": "reflect(-wi, n)"},
     "map_misuse": {"map_applied_to_wrong_space": "is already in world, where the map leads",
                    "maps_that_do_not_meet": "its inverse", "composition_in_wrong_order": "apply the projective map last"},
     "geometric_kinds": {"vector_transformed_as_normal": "transform the normal itself", "normal_used_as_vector": "a normal is not a vector",
@@ -256,7 +251,8 @@ CAUSES = {
     "camera_transforms": {"mvp_in_wrong_order": "wrong order", "view_matrix_skipped": "must end in view",
                           "shadow_chain_through_the_camera": "must end in light_view"},
     "points_as_directions": {"light_position_as_direction": "normalize(lightPos - p)", "length_of_a_position": "distance(P, p)",
-                             "half_vector_from_the_eye_position": "normalize(eyePos - p)"},
+                             "half_vector_from_the_eye_position": "normalize(eyePos - p)",
+                             "view_direction_reversed": "the one away from it is normalize(eyePos - P)"},
     "unit_scales": {"centimetres_read_as_metres": "centimeter where meter", "degrees_into_cosine": "degree where radian",
                     "azimuth_declared_in_degrees": "radian where degree"},
     "perspective_divide": {"screen_uv_without_divide": "divide by w", "shadow_ndc_without_divide": "divide by w",
@@ -264,11 +260,13 @@ CAUSES = {
     "space_conversions": {"ambiguous_object_to_world": "two maps lead there", "normal_through_the_projection": "a projmap applies only to points",
                           "light_map_the_other_way": "goes the other way"},
     "microfacet_environment": {"environment_looked_up_by_position": "looked up by direction",
-                               "no_cosine_of_incidence": "missing cosine", "half_vector_in_tangent_space": "map<tangent, world>"},
+                               "no_cosine_of_incidence": "missing cosine", "half_vector_in_tangent_space": "map<tangent, world>",
+                               "reflect_of_the_outgoing_direction": "reflect(-wo, h)"},
     "pbr_light_arrays": {"lambert_without_pi": "missing 1/π", "ggx_without_pi": "missing 1/π", "blinn_phong_without_pi": "and 'blinn' are plain numbers",
                          "cone_angle_given_its_unit_twice": "already is angle", "reach_left_in_centimetres": "spotReachCm in meter",
                          "half_vector_of_a_light_vector": "normalize(toL)", "vector_for_a_generic_direction": "only through normalize()",
-                         "normal_map_left_in_tangent_space": "missing transform by map<tangent, world>"},
+                         "normal_map_left_in_tangent_space": "missing transform by map<tangent, world>",
+                         "light_vector_reversed": "the one away from it is lightPositions[i] - WorldPos"},
     "sampling_and_media": {"cone_without_steradian": "x * steradian", "jacobian_without_light_cosine": "light-side cos",
                            "phase_without_steradian": "x / steradian", "shadow_depth_before_the_divide": "divide by w",
                            "motion_without_the_divide": "divide each by its own w"},
@@ -282,6 +280,9 @@ LIMITS = {
     "camera_transforms": "projection parameters (field of view, aspect, near/far, handedness) and the value of a matrix",
     "glsl_rules": "logic GLSL allows (a wrong loop bound, a swapped branch)",
     "microfacet_environment": "projections onto the micro-normal h and onto n share the one proj dimension: wi·h passes for wi·n",
+    "space_mismatch": "the orientation of a vector the program leaves unoriented (vector<S> without away or toward)",
+    "points_as_directions": "the sign of a direction between two points neither of which is the shaded one (the light's axis)",
+    "pbr_light_arrays": "the sign of a direction not anchored at the shaded point: dot(Ls, spotAxis) for dot(-Ls, spotAxis)",
 }
 
 

@@ -273,6 +273,34 @@ std::optional<long long> Checker::array_size(const ast::ArrayDim& dim) {
   return std::nullopt;
 }
 
+std::optional<Orientation> Checker::orientation_word(const ast::Node* arg) const {
+  const auto* name = ast::dyn_cast<ast::DimName>(arg);
+  if (!name) return std::nullopt;
+  for (Orientation o : {Orientation::away, Orientation::toward, Orientation::shaded})
+    if (name->name == orientation_name(o)) return o;
+  return std::nullopt;
+}
+
+bool Checker::orientation_fits(Geometry g, Orientation o, SourceRange where) {
+  const bool directed = g == Geometry::vector || g == Geometry::direction;
+  if (directed && o != Orientation::shaded) return true;
+  if (g == Geometry::point && o == Orientation::shaded) return true;
+  std::string message, hint;
+  if (directed) {
+    message = "'shaded' marks a point; a " + std::string(geometry_name(g)) + " points away from the shaded point or toward it";
+    hint = std::string(geometry_name(g)) + "<S, away> or " + geometry_name(g) + "<S, toward>";
+  } else if (g == Geometry::point) {
+    message = "a point has no orientation; 'shaded' marks the point being shaded";
+    hint = "point<S, shaded> for the shaded point; orient the vector from it (vector<S, away>) instead";
+  } else {
+    message = "'" + std::string(geometry_name(g)) + "' takes no orientation; only vectors and directions point away or toward";
+  }
+  Diagnostic d = Diagnostic::error(where, message).with_code(code::E_ORIENTATION);
+  if (!hint.empty()) d.with_hint(hint);
+  report(std::move(d));
+  return false;
+}
+
 Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast::ArrayDim>* declarator_dims) {
   if (!spec) return Type::error();
   const DimensionRegistry& reg = result_.registry;
@@ -309,8 +337,9 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
     report(Diagnostic::error(arg->range, "expected a dimension").with_code(code::E_EXPECTED_DIMENSION));
     return std::nullopt;
   };
+  std::size_t annotation_args = spec->annotation ? spec->annotation->args.size() : 0;  // without an orientation word
   auto arity = [&](std::size_t lo, std::size_t hi, const char* what) -> bool {
-    const std::size_t n = spec->annotation->args.size();
+    const std::size_t n = annotation_args;
     if (n >= lo && n <= hi) return true;
     report(Diagnostic::error(spec->annotation->range, "'" + spec->name + "' takes " + what).with_code(code::E_ANNOTATION_ARITY));
     return false;
@@ -368,6 +397,14 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       t = is_map(g) ? Type::matrix_of(Scalar::float_, 4, 4) : Type::vector_of(Scalar::float_, g == Geometry::hpoint ? 4 : 3);
       t.geometry = g;
       const auto& args = spec->annotation->args;
+      if (args.size() >= 2) {
+        std::optional<Orientation> o = orientation_word(args.back());
+        if (o && !orientation_fits(g, *o, args.back()->range)) return Type::error();
+        if (o) {
+          t.orientation = *o;
+          --annotation_args;
+        }
+      }
       const std::optional<Dimension> length = reg.find_dimension("length");
       switch (g) {
         case Geometry::spectrum: {
@@ -380,7 +417,7 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
         case Geometry::vector:
           if (!arity(1, 2, "a space and optionally a dimension")) return Type::error();
           if (!space_arg(args[0], t.from)) return Type::error();
-          if (args.size() == 2) {
+          if (annotation_args == 2) {
             std::optional<DimSlot> d = dim_arg(args[1]);
             if (!d) return Type::error();
             t.dim = *d;

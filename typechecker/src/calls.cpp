@@ -219,6 +219,11 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
 
   std::optional<Type> result = unify_call(name, shape, args, call_range);
   if (!result) return error_value(call_range);
+  std::optional<Orientation> orientation = builtin_orientation(name, args, call_range);
+  if (!orientation) return error_value(call_range);
+  if (result->geometry == Geometry::vector || result->geometry == Geometry::direction ||
+      (result->geometry == Geometry::point && *orientation == Orientation::shaded))
+    result->orientation = *orientation;
   std::vector<DimSlot> argument_dims;
   for (const Value& a : args) argument_dims.push_back(value_dimension(a.type, result_.registry));
   keep_shared_spelling(result->dim, argument_dims);  // max(k, 0.0) of a float<inv_length> is one
@@ -381,6 +386,12 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
         arg_error(i, message, hint, code::E_SPACE_MISMATCH);
         return std::nullopt;
       }
+    }
+    if (orientations_clash(p.orientation, a.type.orientation)) {
+      arg_error(i, "argument " + std::to_string(i + 1) + " of " + fn + " has type " + name_of(a.type) + ", but " + fn +
+                       " expects " + name_of(p, shape),
+                orientation_hint(a, p.orientation), code::E_ORIENTATION);
+      return std::nullopt;
     }
     // Dimensions.
     if (a.zero) continue;

@@ -30,6 +30,12 @@ struct Origin {
   bool inferred = false;  // the type is not written at `range`: notes print it
 };
 
+struct Value;
+// orientation.cpp: q - p of two points, one of them the shaded one; a ± b of oriented vectors; s * v.
+Orientation point_difference_orientation(const Type& a, const Type& b);
+Orientation sum_orientation(bool add, Orientation a, Orientation b);
+Orientation scaled_orientation(Orientation o, const Value& scale);
+
 // The result of checking an expression.
 struct Value {
   Type type;
@@ -91,6 +97,9 @@ class Checker {
   std::optional<Dimension> resolve_unit(const ast::DimExpr* e);
   Type resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast::ArrayDim>* declarator_dims = nullptr);
   Type with_array_dims(Type base, const std::vector<ast::ArrayDim>& outer);
+  // `away`, `toward` or `shaded` as an annotation's last argument; false after reporting one that `g` does not take.
+  std::optional<Orientation> orientation_word(const ast::Node* arg) const;
+  bool orientation_fits(Geometry g, Orientation o, SourceRange where);
   std::optional<long long> array_size(const ast::ArrayDim& dim);
 
   // declarations.cpp
@@ -220,6 +229,13 @@ class Checker {
   bool cosine_as_number(const DimSlot& expected, const DimSlot& found) const;
   DimSlot projected_component(const DimSlot& scale) const;
   std::optional<Value> angle_conversion(const std::string& name, const Value& arg, const Type& result, SourceRange call_range);
+
+  // orientation.cpp: the expression checked at `range`; the same expression oriented the other way, as code.
+  const ast::Expr* expression_at(SourceRange range) const;
+  std::string reversed_expression(const ast::Expr* e) const;
+  std::string orientation_hint(const Value& value, Orientation expected) const;
+  // The orientation of a built-in's result; nothing after reporting an away direction passed as GLSL's incident I.
+  std::optional<Orientation> builtin_orientation(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
 
   // mismatch.cpp. Hints read the found value's expression (its factors) when given its range.
   struct ProductFactor {

@@ -140,6 +140,7 @@ Value Checker::unary(const ast::UnaryExpr& e) {
                    .with_hint("subtract it from another point to get a vector"));
         return error_value(e.range);
       }
+      if (e.op == ast::UnaryOp::Minus) out.type.orientation = flipped(out.type.orientation);
       if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = -*out.constant;
       if (out.number && e.op == ast::UnaryOp::Minus) *out.number = -*out.number;
       return out;
@@ -297,6 +298,8 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
     return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
+  if (orientations_clash(target.orientation, v.orientation))
+    return fail(sentence, orientation_hint(value, target.orientation), code::E_ORIENTATION);
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
                                    consistent(target.texel->dim, v.texel->dim)))
     return fail(sentence, "", code::E_TEXEL_MISMATCH);
@@ -339,6 +342,7 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   if (ta.geometry != tb.geometry && is_map(ta.geometry) && is_map(tb.geometry)) out.type.geometry = Geometry::map;  // rigid or affine
   if (implicitly_converts(ta.scalar, tb.scalar) && ta.scalar != tb.scalar) out.type.scalar = tb.scalar;
   if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
+  if (ta.orientation != tb.orientation) out.type.orientation = Orientation::none;  // `front ? wo : -wo`
   out.zero = a.zero && b.zero;
   return out;
 }

@@ -53,6 +53,9 @@ TEST_P(Hints, NameTheCauseAndTheirCodeCompiles) {
 }
 
 const char* const kArcminutes = "unit arcminute : angle = degree / 60.0; uniform float<angle in arcminute> tilt;";
+const char* const kShaded =
+    "uniform point<world> lightPos; uniform point<world> eyePos; in point<world, shaded> P; uniform normal<world> n;"
+    " uniform direction<world, away> wo;";
 const char* const kLight = "uniform spectrum<1> albedo; uniform spectrum<brdf> specular; uniform spectrum<irradiance> E;";
 
 INSTANTIATE_TEST_SUITE_P(
@@ -95,7 +98,17 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"angle_in_a_third_unit_into_degrees", kArcminutes, "float<angle in degree> t = @;", "degrees(tilt)",
                  "an angle in arcminute converts with in", "tilt in degree", "tilt in degree"},
         HintCase{"plain_radians_into_degrees", "uniform float<1> turn;", "float<angle in degree> d = @;", "degrees(turn)",
-                 "give a plain number of radians its unit", "degrees(turn * radian)", "degrees(turn * radian)"}),
+                 "give a plain number of radians its unit", "degrees(turn * radian)", "degrees(turn * radian)"},
+        HintCase{"points_subtracted_the_wrong_way_round", kShaded, "vector<world, away> toLight = @;", "P - lightPos",
+                 "this one points toward the shaded point P", "lightPos - P", "lightPos - P"},
+        HintCase{"view_direction_reversed", kShaded, "direction<world, away> wo = @;", "normalize(P - eyePos)",
+                 "the one away from it is", "normalize(eyePos - P)", "normalize(eyePos - P)"},
+        HintCase{"incident_direction_stored_as_outgoing", "uniform direction<world, toward> I;", "direction<world, away> w = @;",
+                 "I", "negate it to point away from the shaded point", "-I", "-I"},
+        HintCase{"reflect_of_an_outgoing_direction", kShaded, "direction<world, away> wi = @;", "reflect(wo, n)",
+                 "reflect(I, N) takes I toward the surface", "reflect(-wo, n)", "reflect(-wo, n)"},
+        HintCase{"faceforward_by_an_outgoing_direction", kShaded, "normal<world> front = @;", "faceforward(n, wo, n)",
+                 "faceforward(N, I, Nref) takes I toward the surface", "faceforward(n, -wo, n)", "faceforward(n, -wo, n)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
 
 TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {

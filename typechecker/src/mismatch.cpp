@@ -47,12 +47,7 @@ std::string Checker::unit_hint(const Dimension& expected, const Dimension& found
 std::vector<Checker::ProductFactor> Checker::product_factors(SourceRange range) const {
   std::vector<ProductFactor> out;
   if (!range.valid()) return out;
-  const ast::Expr* root = nullptr;
-  for (const auto& [node, type] : result_.types)
-    if (node->range == range && dynamic_cast<const ast::Expr*>(node)) {
-      root = static_cast<const ast::Expr*>(node);
-      if (!ast::isa<ast::ParenExpr>(node)) break;
-    }
+  const ast::Expr* root = expression_at(range);
   std::vector<std::pair<const ast::Expr*, int>> todo;
   if (root) todo.emplace_back(root, 1);
   while (!todo.empty() && out.size() < 64) {

@@ -292,8 +292,10 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     out.type.from = space;
     if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
       out.type.geometry = Geometry::vector;  // point - point
+      out.type.orientation = point_difference_orientation(a, b);
     } else if (ga == Geometry::point || gb == Geometry::point) {
-      out.type.geometry = Geometry::point;   // point ± displacement
+      out.type.geometry = Geometry::point;   // point ± displacement: an offset shaded point is still the shaded one
+      out.type.orientation = (ga == Geometry::point ? a : b).orientation;
     } else if (ga == Geometry::spectrum || gb == Geometry::spectrum) {
       out.type.geometry = (ga == Geometry::spectrum || ga == Geometry::none) && (gb == Geometry::spectrum || gb == Geometry::none)
                               ? Geometry::spectrum : Geometry::none;
@@ -304,6 +306,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       out.type.weight = ga == Geometry::hpoint ? a.weight : b.weight;
     } else if (vectorish(ga) || vectorish(gb)) {
       out.type.geometry = Geometry::vector;  // a sum of directions is no longer unit length
+      out.type.orientation = sum_orientation(add, a.orientation, b.orientation);  // wo + wi is away, like both
     }
     return out;
   }
@@ -331,6 +334,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;
+      out.type.orientation = scaled_orientation(geo.orientation, a_scalar ? lhs : rhs);
     } else if (g == Geometry::hpoint) {
       out.type.geometry = Geometry::hpoint;
       out.type.from = geo.from;

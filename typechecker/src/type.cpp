@@ -18,6 +18,22 @@ const char* geometry_name(Geometry g) {
   return "";
 }
 
+const char* orientation_name(Orientation o) {
+  switch (o) {
+    case Orientation::none: return "";
+    case Orientation::away: return "away";
+    case Orientation::toward: return "toward";
+    case Orientation::shaded: return "shaded";
+  }
+  return "";
+}
+
+Orientation flipped(Orientation o) {
+  if (o == Orientation::away) return Orientation::toward;
+  if (o == Orientation::toward) return Orientation::away;
+  return o;
+}
+
 bool has_space(Geometry g) {
   return g == Geometry::point || g == Geometry::vector || g == Geometry::direction || g == Geometry::normal ||
          g == Geometry::hpoint || is_map(g);
@@ -35,6 +51,7 @@ Type Type::plain() const {
   t.dim = DimSlot::unknown();
   t.from = t.to = SpaceSlot::unknown();
   t.texel = nullptr;
+  t.orientation = Orientation::none;
   return t;
 }
 
@@ -172,6 +189,7 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
         if (!(t.dim.is_known() && length && t.dim.value == *length))
           out += ", " + dim_name(t.dim, registry, dim_params);
       }
+      if (t.orientation != Orientation::none) out += std::string(", ") + orientation_name(t.orientation);
     }
     return out + ">" + suffix;
   }

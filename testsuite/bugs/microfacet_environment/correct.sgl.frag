@@ -12,7 +12,7 @@ uniform float<1> alpha;                                // GGX roughness
 uniform spectrum<1> F0;                                // Fresnel reflectance at normal incidence
 uniform vec2<1> xi;                                    // two uniform random numbers
 
-in point<world> P;
+in point<world, shaded> P;
 in normal<world> N;
 out vec4 fragColor;
 
@@ -23,7 +23,7 @@ float<1> smithG1(float<1> c, float<1> a2) { return 2.0 * c / (c + sqrt(a2 + (1.0
 
 void main() {
     normal<world> n = normalize(N);
-    direction<world> wo = normalize(eyePos - P);
+    direction<world, away> wo = normalize(eyePos - P);
     float<proj> cosO = max(dot(n, wo), 0.0);
     // A micro-normal h from the GGX distribution D (∫ D cos θh dω = 1).
     float<1> a2 = alpha * alpha;
@@ -33,7 +33,7 @@ void main() {
     float<angle> phi = 2.0 * PI * xi.y * radian;
     normal<tangent> hT = normal<tangent>(vec3(sinH * cos(phi), sinH * sin(phi), cosH));
     normal<world> h = worldFromTangent * hT;
-    direction<world> wi = reflect(-wo, h);
+    direction<world, away> wi = reflect(-wo, h);
     float<proj> cosI = max(dot(n, wi), 0.0);
     float<1> t = cosH2 * (a2 - 1.0) + 1.0;
     float<pdf_projected_solid_angle> D = float<pdf_projected_solid_angle>(a2 / (PI * t * t));

@@ -24,7 +24,7 @@ uniform float<angle in degree> outerConeDeg;
 uniform float<length in centimeter> spotReachCm;
 uniform float<1> shininess;
 
-in point<world> WorldPos;
+in point<world, shaded> WorldPos;              // the point being shaded
 in vec2 TexCoords;
 out vec4 FragColor;
 
@@ -42,7 +42,7 @@ float<1> smithG1(float<1> c, float<1> k) { return c / (c * (1.0 - k) + k); }
 void main() {
     normal<tangent> nT = normal<tangent>(texture(normalMap, TexCoords).rgb * 2.0 - 1.0);
     normal<world> N = normalize(worldFromTangent * nT);
-    direction<world> V = normalize(camPos - WorldPos);
+    direction<world, away> V = normalize(camPos - WorldPos);
     float<1> NdotV = max(dot(N, V), 0.0);               // a cosine used as a number
     direction<world> R = normalize(2.0 * dot(N, V) * N - V);
     spectrum<1> F0 = mix(vec3(0.04), albedo, metallic);
@@ -51,9 +51,9 @@ void main() {
 
     spectrum<radiance> Lo = spectrum<radiance>(0.0);
     for (int i = 0; i < NUM_LIGHTS; ++i) {
-        vector<world> toL = lightPositions[i] - WorldPos;
+        vector<world, away> toL = lightPositions[i] - WorldPos;
         float<length> d = length(toL);
-        direction<world> L = normalize(toL);
+        direction<world, away> L = normalize(toL);
         direction<world> H = normalize(V + toL);
         float<proj> cosL = cosineTo(N, L);
         float<1> NdotL = cosL;
@@ -70,9 +70,9 @@ void main() {
     }
 
     // The spot light: a smooth cone between the inner and outer angles.
-    vector<world> toS = spotPos - WorldPos;
+    vector<world, away> toS = spotPos - WorldPos;
     float<length> ds = length(toS);
-    direction<world> Ls = normalize(toS);
+    direction<world, away> Ls = normalize(toS);
     float<1> cosInner = cos(radians(innerConeDeg));
     float<1> cosOuter = cos(outerConeDeg in radian);
     float<1> cone = clamp((dot(-Ls, spotAxis) - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);

@@ -13,16 +13,16 @@ uniform spectrum<brdf> Kd;
 uniform spectrum<brdf> Ks;
 uniform float shininess;
 
-in point<world> P;
+in point<world, shaded> P;                     // the point being shaded
 in normal<world> N;
 out vec4 fragColor;
 
 void main() {
     normal<world> n = normalize(N);
-    vector<world> toLight = lightPos - P;
+    vector<world, away> toLight = lightPos - P;
     float<length> d = length(toLight);
-    direction<world> wi = normalize(lightPos);
-    direction<world> wo = normalize(eyePos - P);
+    direction<world, away> wi = normalize(lightPos);
+    direction<world, away> wo = normalize(eyePos - P);
     float<proj> cosTheta = max(dot(n, wi), 0.0);
     float spot = step(cosCutoff, dot(-wi, spotAxis));
     direction<world> h = normalize(wi + wo);

@@ -9,7 +9,7 @@ uniform point<object> lightPosObject;
 uniform spectrum<intensity> lightI;
 uniform spectrum<brdf> Kd;
 
-in point<world> P;
+in point<world, shaded> P;                   // the point being shaded
 in normal<world> N;
 in normal<object> nObject;
 out vec4 fragColor;
@@ -18,8 +18,8 @@ float<length> distanceTo(point<world> a, point<world> b) { return length(a - b);
 
 void main() {
     normal<world> n = normalize(N);
-    vector<world> toLight = lightPosObject - P;
-    direction<world> wi = normalize(toLight);
+    vector<world, away> toLight = lightPosObject - P;
+    direction<world, away> wi = normalize(toLight);
     float<proj> cosTheta = max(dot(n, wi), 0.0);
     float<length> d = distanceTo(lightPos, P);
     float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));

@@ -33,6 +33,21 @@ enum class Geometry : std::uint8_t {
   projmap,    // mat4, projective, A -> hpoint in B
 };
 
+// Which way a vector or direction points, relative to the point being shaded
+// (docs/language.md, "Orientation"): `away` from it, as renderers' wi and wo,
+// or `toward` it, as GLSL's incident I. A point may be marked as that point
+// itself (`shaded`), which orients a difference of it and another point.
+// `none` (unwritten) is consistent with every orientation.
+enum class Orientation : std::uint8_t { none, away, toward, shaded };
+
+const char* orientation_name(Orientation o);
+// away <-> toward (negation); none and shaded stay.
+Orientation flipped(Orientation o);
+// Both known and different: a direction toward the shaded point where one away from it is expected.
+inline bool orientations_clash(Orientation a, Orientation b) {
+  return a != Orientation::none && b != Orientation::none && a != b;
+}
+
 const char* geometry_name(Geometry g);
 bool has_space(Geometry g);
 bool is_map(Geometry g);
@@ -85,6 +100,8 @@ struct Type {
   // swizzles (h.xy, h.w) have 1, 1.0 / h.w has -1; a value of weight 0 is no
   // longer homogeneous (h.xy / h.w), so it loses the kind.
   std::int8_t weight = 1;
+  // Geometry::vector and direction: away or toward; Geometry::point: shaded.
+  Orientation orientation = Orientation::none;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }

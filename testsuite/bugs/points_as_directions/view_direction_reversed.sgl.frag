@@ -13,16 +13,16 @@ uniform spectrum<brdf> Kd;
 uniform spectrum<brdf> Ks;
 uniform float shininess;
 
-in point<world> P;
+in point<world, shaded> P;                     // the point being shaded
 in normal<world> N;
 out vec4 fragColor;
 
 void main() {
     normal<world> n = normalize(N);
-    vector<world> toLight = lightPos - P;
+    vector<world, away> toLight = lightPos - P;
     float<length> d = length(toLight);
-    direction<world> wi = normalize(toLight);
-    direction<world> wo = normalize(P - eyePos);
+    direction<world, away> wi = normalize(toLight);
+    direction<world, away> wo = normalize(P - eyePos);
     float<proj> cosTheta = max(dot(n, wi), 0.0);
     float spot = step(cosCutoff, dot(-wi, spotAxis));
     direction<world> h = normalize(wi + wo);

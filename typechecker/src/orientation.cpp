@@ -1,0 +1,129 @@
+// Orientation of vectors and directions relative to the shaded point
+// (docs/language.md, "Orientation"; issue #21, item 4). A difference of the
+// shaded point and another point is oriented; negation, sums and built-ins
+// carry or check the orientation; a stored, passed or returned value whose
+// orientation clashes with the declared one is E-ORIENTATION.
+
+#include <safegi/parser/printer.hpp>
+
+#include "checker_impl.hpp"
+
+namespace safegi::detail {
+namespace {
+
+const ast::Expr* without_parens(const ast::Expr* e) {
+  while (const auto* paren = ast::dyn_cast<ast::ParenExpr>(e)) e = paren->inner;
+  return e;
+}
+
+// `x` as an operand of unary minus: names, members, indices and calls need no parentheses.
+std::string negated(const ast::Expr* e) {
+  const bool simple = ast::isa<ast::IdentifierExpr>(e) || ast::isa<ast::MemberExpr>(e) || ast::isa<ast::IndexExpr>(e) ||
+                      ast::isa<ast::CallExpr>(e);
+  return simple ? "-" + print_expression(*e) : "-(" + print_expression(*e) + ")";
+}
+
+}  // namespace
+
+Orientation point_difference_orientation(const Type& a, const Type& b) {
+  if (a.geometry != Geometry::point || b.geometry != Geometry::point) return Orientation::none;
+  const bool a_shaded = a.orientation == Orientation::shaded, b_shaded = b.orientation == Orientation::shaded;
+  if (a_shaded == b_shaded) return Orientation::none;  // neither (or both) is the shaded point
+  return b_shaded ? Orientation::away : Orientation::toward;
+}
+
+Orientation sum_orientation(bool add, Orientation a, Orientation b) {
+  if (a == Orientation::none || a == Orientation::shaded) return Orientation::none;
+  return (add ? b == a : b == flipped(a)) ? a : Orientation::none;
+}
+
+Orientation scaled_orientation(Orientation o, const Value& scale) {
+  if (!scale.number) return o;  // a length, a cosine, a weight: taken as positive
+  if (*scale.number == 0.0) return Orientation::none;
+  return *scale.number < 0.0 ? flipped(o) : o;
+}
+
+const ast::Expr* Checker::expression_at(SourceRange range) const {
+  if (!range.valid()) return nullptr;
+  const ast::Expr* found = nullptr;
+  for (const auto& [node, type] : result_.types)
+    if (node->range == range && dynamic_cast<const ast::Expr*>(node)) {
+      found = static_cast<const ast::Expr*>(node);
+      if (!ast::isa<ast::ParenExpr>(node)) break;
+    }
+  return found;
+}
+
+std::string Checker::reversed_expression(const ast::Expr* e) const {
+  e = without_parens(e);
+  if (const auto* u = ast::dyn_cast<ast::UnaryExpr>(e); u && u->op == ast::UnaryOp::Minus) return print_expression(*u->operand);
+  if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(e); b && b->op == ast::BinaryOp::Sub) {
+    const auto lhs = result_.types.find(b->lhs), rhs = result_.types.find(b->rhs);
+    if (lhs != result_.types.end() && rhs != result_.types.end() &&
+        point_difference_orientation(lhs->second, rhs->second) != Orientation::none)
+      return print_expression(*b->rhs) + " - " + print_expression(*b->lhs);
+  }
+  if (const auto* call = ast::dyn_cast<ast::CallExpr>(e)) {
+    if (call->callee == "normalize" && call->args.size() == 1) return "normalize(" + reversed_expression(call->args[0]) + ")";
+  }
+  return negated(e);
+}
+
+std::string Checker::orientation_hint(const Value& value, Orientation expected) const {
+  const ast::Expr* e = expression_at(value.range);
+  if (!e) return {};
+  const ast::Expr* inner = without_parens(e);
+  if (const auto* call = ast::dyn_cast<ast::CallExpr>(inner)) {
+    if (call->callee == "normalize" && call->args.size() == 1) inner = without_parens(call->args[0]);
+  }
+  const std::string fix = reversed_expression(e);
+  const std::string way = expected == Orientation::away ? "away from" : "toward";
+  if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(inner); b && b->op == ast::BinaryOp::Sub && fix.find(" - ") != std::string::npos) {
+    const auto lhs = result_.types.find(b->lhs);
+    const bool lhs_shaded = lhs != result_.types.end() && lhs->second.orientation == Orientation::shaded;
+    const std::string shaded = print_expression(lhs_shaded ? *b->lhs : *b->rhs);
+    return "q - p points from p to q: this one points " + std::string(lhs_shaded ? "toward" : "away from") +
+           " the shaded point " + shaded + "; the one " + way + " it is " + fix;
+  }
+  return "negate it to point " + way + " the shaded point: " + fix;
+}
+
+std::optional<Orientation> Checker::builtin_orientation(const std::string& name, const std::vector<Value>& args,
+                                                        SourceRange call_range) {
+  // The built-ins that read an orientation: GLSL's incident vector I points toward the surface.
+  struct Incident {
+    const char* name;
+    std::size_t param;
+  };
+  static const Incident kIncident[] = {{"reflect", 0}, {"refract", 0}, {"faceforward", 1}};
+  for (const Incident& rule : kIncident) {
+    if (name != rule.name || args.size() <= rule.param) continue;
+    const Value& incident = args[rule.param];
+    if (incident.type.orientation == Orientation::away) {
+      Diagnostic d = Diagnostic::error(incident.range, "argument " + std::to_string(rule.param + 1) + " of '" + name + "' has type " +
+                                                           name_of(incident.type) + ", but '" + name +
+                                                           "' takes the incident direction, which points toward the surface")
+                         .with_code(code::E_ORIENTATION)
+                         .with_highlight(call_range);
+      add_origin_note(d, incident);
+      // The call again with the incident direction reversed, when every argument has its expression.
+      std::string fixed = name + "(";
+      for (std::size_t i = 0; i < args.size() && !fixed.empty(); ++i) {
+        const ast::Expr* e = expression_at(args[i].range);
+        if (!e) fixed.clear();
+        else fixed += (i ? ", " : "") + (i == rule.param ? reversed_expression(e) : print_expression(*e));
+      }
+      d.with_hint(std::string(name == "faceforward" ? "faceforward(N, I, Nref)" : name + "(I, N)") +
+                  " takes I toward the surface" + (fixed.empty() ? std::string() : ": " + fixed + ")"));
+      report(std::move(d));
+      return std::nullopt;
+    }
+    if (name == "faceforward") return Orientation::none;
+    return incident.type.orientation == Orientation::toward ? Orientation::away : Orientation::none;
+  }
+  if (name == "normalize" && args.size() == 1) return args[0].type.orientation;
+  if (name == "transform" && args.size() == 2) return args[1].type.orientation;  // the shaded point moves with its space
+  return Orientation::none;
+}
+
+}  // namespace safegi::detail
