@@ -24,12 +24,12 @@ struct SurfaceScatter {
   const ShadingFrame& frame;
   DirectionShading wo;
   NormalWorld normal;  // the geometric one, on wo's side
-  bool bumped;         // the frame's normal is a bump map's: light from below the geometric surface does not count
+  bool perturbed;      // the frame's normal is a bump map's or interpolated: light from below the geometric surface does not count
 
   std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
     DirectionShading wi = frame.to_local(wi_world);
     if (wi.z() <= 0) return std::nullopt;
-    if (bumped && sg::dot(normal, wi_world) <= sg::zero) return std::nullopt;  // the shading hemisphere reaches below the surface
+    if (perturbed && sg::dot(normal, wi_world) <= sg::zero) return std::nullopt;  // the shading hemisphere reaches below the surface
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) return std::nullopt;
     return f * sg::cos_theta(wi);
@@ -249,11 +249,14 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     // tells the sides apart by the geometric normal, which points out).
     const bool from_inside = sg::dot(hit->normal, ray.d) > sg::zero;
     NormalWorld shading_normal = hit->normal;
-    bool bumped = false;
+    bool perturbed = false;
     if constexpr (textured) {
       if (material.bump) {
         shading_normal = textures_.bumped_normal(*material.bump, *hit, ray.time);
-        bumped = true;
+        perturbed = true;
+      } else if (!scene_.shapes[hit->shape].normals.empty()) {
+        shading_normal = textures_.interpolated_normal(*hit, ray.time);  // a smooth mesh
+        perturbed = true;
       }
     }
     hit->normal = from_inside ? -hit->normal : hit->normal;
@@ -266,7 +269,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       if (!bsdf.is_specular()) radiance += throughput * photons_->estimate(*hit, frame, bsdf, wo);
     if (!bsdf.is_specular() && !lights_.empty())
       radiance += throughput * sample_direct<area_lights, one_light_sample, media>(
-                                   *hit, SurfaceScatter{bsdf, frame, wo, hit->normal, bumped}, around, sampler, ray.time,
+                                   *hit, SurfaceScatter{bsdf, frame, wo, hit->normal, perturbed}, around, sampler, ray.time,
                                    mis_, counters);
 
     Real u_lobe = sampler.next_1d();
@@ -274,11 +277,11 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     if (!scattered) break;
     const DirectionWorld wi = frame.from_local(scattered->wi);
-    // A bumped normal can send a reflection below the real surface (or a
+    // A perturbed normal can send a reflection below the real surface (or a
     // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
     // side it reaches, which have nothing there.
     const bool reflected_geometrically = sg::dot(hit->normal, wi) > sg::zero;
-    if (bumped) {
+    if (perturbed) {
       const bool reflected_in_shading = (scattered->wi.z() > 0) == (wo.z() > 0);
       if (reflected_geometrically != reflected_in_shading) break;
     }

@@ -211,6 +211,7 @@ class Importer {
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
   void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
   void animate(const ShapeSource& source, const Matrix& world_from_pbrt_world, Shape& shape);
+  std::vector<normal<Object>> shading_normals(const ShapeSource& source, const glm::dmat3& normals_from_object);
   void object_instance(const Directive& d);
 
   void warn(SourceRange at, std::string message, std::string hint = {});
@@ -223,7 +224,6 @@ class Importer {
   Block block_ = Block::options;
   PbrtScene result_;
   std::vector<Diagnostic> warnings_;
-  int normals_warned_ = 0;
   int filter_warned_ = 0;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one

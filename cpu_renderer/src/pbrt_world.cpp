@@ -430,6 +430,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     shape.positions.push_back(sg::from_raw<PointObject>(sg::vec3_rep(sg::raw(to_world_point(world_from_object, p, source.at)))));
   shape.indices = source.indices;
   shape.uvs = source.uvs;
+  const glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
+  shape.normals = shading_normals(source, world_from_object_normals);
   if (shape.emission || glass || shape.media) {
     // pbrt-v3 emits on the side of its geometric normal, and has glass's
     // outside there (our glass: on the winding's side), and a medium
@@ -439,7 +441,6 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     bool mirrored_object = determinant3(source.pbrt_world_from_object) < 0;
     bool mirrored_world = determinant3(world_from_pbrt_world) < 0;
     bool flip_all = mirrored_world != (source.reverse_orientation != mirrored_object);
-    glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
     for (size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
       bool flip = flip_all;
       if (!source.normals.empty()) {
@@ -451,11 +452,27 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
       if (flip) std::swap(shape.indices[t + 1], shape.indices[t + 2]);
     }
   }
-  if (!source.normals.empty() && normals_warned_++ == 0)
-    warn(source.at, "vertex normals \"N\" only orient emitters here: surfaces are shaded with their geometric normals",
-         "pbrt-v3 interpolates them for shading: smooth meshes look faceted by comparison");
   if (source.pbrt_world_from_object_at_end) animate(source, world_from_pbrt_world, shape);
   result_.scene.shapes.push_back(std::move(shape));
+}
+
+// The mesh's vertex normals "N" through `normals_from_object` (an inverse
+// transpose), unit length; none when the mesh has none, or when one of them is
+// zero (pbrt-v3 would shade with NaNs there: the geometric normals shade instead).
+std::vector<normal<Object>> Importer::shading_normals(const ShapeSource& source, const glm::dmat3& normals_from_object) {
+  std::vector<normal<Object>> out;
+  out.reserve(source.normals.size());
+  for (size_t i = 0; i < source.normals.size(); ++i) {
+    const glm::dvec3 n = normals_from_object * source.normals[i];
+    const double length = glm::length(n);
+    if (!(length > 0) || !std::isfinite(length)) {
+      warn(source.at, "vertex normal " + std::to_string(i) + " of \"normal N\" is zero: the mesh is shaded with its geometric normals");
+      return {};
+    }
+    const glm::dvec3 unit = n / length;
+    out.push_back(sg::from_raw<normal<Object>>(sg::vec3_rep(static_cast<Real>(unit.x), static_cast<Real>(unit.y), static_cast<Real>(unit.z))));
+  }
+  return out;
 }
 
 // A shape that moves (ActiveTransform): kept in object space with its poses at
@@ -494,6 +511,7 @@ void Importer::animate(const ShapeSource& source, const Matrix& world_from_pbrt_
     const glm::dvec3 p = glm::dvec3(mirror * glm::dvec4(source.positions[i], 1));
     shape.positions[i] = sg::from_raw<PointObject>(sg::vec3_rep(static_cast<Real>(p.x), static_cast<Real>(p.y), static_cast<Real>(p.z)));
   }
+  if (!shape.normals.empty()) shape.normals = shading_normals(source, glm::dmat3(mirror));  // a mirror is its own inverse transpose
 }
 
 void Importer::object_instance(const Directive& d) {

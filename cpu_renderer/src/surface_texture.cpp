@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "safegi/cpu_renderer/sampling.hpp"
 
@@ -31,17 +32,24 @@ TexCoord sphere_uv(vector<Object> offset) {
   return {phi / (2 * kPi), 1 - std::acos(std::clamp(d.z(), Real(-1), Real(1))) / kPi};
 }
 
-// The (u, v) at `position` on the triangle with corners `p`, by its barycentric weights.
-TexCoord triangle_uv(const Shape& shape, size_t first, const std::array<PointWorld, 3>& p, PointWorld position) {
+// The barycentric weights of `position` on the triangle with corners `p`;
+// nothing for a degenerate triangle.
+std::optional<std::array<Real, 3>> barycentrics(const std::array<PointWorld, 3>& p, PointWorld position) {
   VectorWorld e1 = p[1] - p[0], e2 = p[2] - p[0], d = position - p[0];
   quantity<dim::area> d11 = sg::dot(e1, e1), d12 = sg::dot(e1, e2), d22 = sg::dot(e2, e2);
   quantity<dim::area> d1 = sg::dot(d, e1), d2 = sg::dot(d, e2);
   auto determinant = d11 * d22 - d12 * d12;
-  if (!(determinant > sg::zero)) return vertex_uv(shape, first);
+  if (!(determinant > sg::zero)) return std::nullopt;
   const Real b1 = (d22 * d1 - d12 * d2) / determinant, b2 = (d11 * d2 - d12 * d1) / determinant;
-  const Real b0 = 1 - b1 - b2;
+  return std::array<Real, 3>{1 - b1 - b2, b1, b2};
+}
+
+// The (u, v) at `position` on the triangle with corners `p`, by its barycentric weights.
+TexCoord triangle_uv(const Shape& shape, size_t first, const std::array<PointWorld, 3>& p, PointWorld position) {
+  const std::optional<std::array<Real, 3>> b = barycentrics(p, position);
+  if (!b) return vertex_uv(shape, first);
   TexCoord t0 = vertex_uv(shape, first), t1 = vertex_uv(shape, first + 1), t2 = vertex_uv(shape, first + 2);
-  return {b0 * t0.u + b1 * t1.u + b2 * t2.u, b0 * t0.v + b1 * t1.v + b2 * t2.v};
+  return {(*b)[0] * t0.u + (*b)[1] * t1.u + (*b)[2] * t2.u, (*b)[0] * t0.v + (*b)[1] * t1.v + (*b)[2] * t2.v};
 }
 
 // How much texture a length of the surface spans: the square root of the
@@ -196,6 +204,22 @@ NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit
   const auto perpendicular = sg::cross(dp_du, dp_dv);
   if (!(sg::length_squared(perpendicular) > sg::zero)) return hit.normal;
   return sg::face_forward(sg::to_normal(sg::normalize(perpendicular)), sg::to_direction(hit.normal));
+}
+
+NormalWorld SurfaceTextures::interpolated_normal(const SurfaceHit& hit, Time time) const {
+  const Shape& shape = scene_.shapes[hit.shape];
+  if (shape.type != Shape::Type::mesh || shape.normals.empty()) return hit.normal;
+  const RenderFromObject placed = render_from_object(shape, hit.shape, time);
+  const size_t first = 3 * static_cast<size_t>(hit.face);
+  const std::optional<std::array<Real, 3>> b = barycentrics(placed_corners(shape, placed, first), hit.position);
+  if (!b) return hit.normal;
+  const vector<Object, dim::dimensionless> sum = (*b)[0] * shape.normals[shape.indices[first]] +
+                                                 (*b)[1] * shape.normals[shape.indices[first + 1]] +
+                                                 (*b)[2] * shape.normals[shape.indices[first + 2]];
+  if (!(sg::length_squared(sum) > Real(1e-12))) return hit.normal;
+  // Normals transform by the placement's inverse transpose (an animated pose may scale).
+  const NormalWorld n = placed(sg::to_normal(sg::normalize(sum)));
+  return sg::face_forward(n, sg::to_direction(hit.normal));
 }
 
 }  // namespace safegi::render

@@ -36,6 +36,11 @@ class SurfaceTextures {
   // the side of the hit's geometric normal; that normal where it is undefined.
   NormalWorld bumped_normal(const BumpMap& bump, const SurfaceHit& hit, Time time) const;
 
+  // The shape's vertex normals interpolated at the hit (pbrt-v3's shading
+  // normal), on the side of the hit's geometric normal; that normal where the
+  // shape has none or they cancel.
+  NormalWorld interpolated_normal(const SurfaceHit& hit, Time time) const;
+
  private:
   // How the surface and its normal change along u and along v at a hit
   // (pbrt-v3's dpdu, dpdv, dndu, dndv), with the hit's (u, v).

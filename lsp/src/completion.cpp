@@ -30,12 +30,20 @@ Expected annotation_argument(std::string_view word, int index) {
                                                       "dvec2", "dvec3", "dvec4", "spectrum"};
   static constexpr std::string_view kSpaced[] = {"point", "direction", "normal", "hpoint", "map", "rigidmap", "projmap"};
   if (std::find(std::begin(kDimensioned), std::end(kDimensioned), word) != std::end(kDimensioned)) return Expected::dimension;
+  if ((word == "point" || word == "direction") && index == 1) return Expected::orientation;
   if (std::find(std::begin(kSpaced), std::end(kSpaced), word) != std::end(kSpaced)) return Expected::space;
-  if (word == "vector") return index == 0 ? Expected::space : Expected::dimension;
+  if (word == "vector") return index == 0 ? Expected::space : index == 1 ? Expected::dimension : Expected::orientation;
   if (word == "template") return Expected::template_parameter_kind;
   for (std::string_view sampler : {"sampler", "isampler", "usampler", "texture", "itexture", "utexture"})
     if (word.substr(0, sampler.size()) == sampler && word.size() > sampler.size()) return Expected::type;
   return Expected::nothing;
+}
+
+// The orientation words that may end the annotation of `word` at argument `index` (docs/language.md, "Orientation").
+std::vector<std::string> orientation_words(std::string_view word, int index) {
+  if (word == "point" && index == 1) return {"shaded"};
+  if ((word == "direction" && index == 1) || (word == "vector" && (index == 1 || index == 2))) return {"away", "toward"};
+  return {};
 }
 
 // The first word of the statement that ends before `end`.
@@ -82,7 +90,9 @@ CompletionContext completion_context(std::string_view text, std::size_t offset) 
         continue;
       }
       std::size_t end = i - 1;
-      context.expected = annotation_argument(word_before(text, end), index);
+      const std::string_view word = word_before(text, end);
+      context.expected = annotation_argument(word, index);
+      context.orientations = orientation_words(word, index);
       return context;
     }
   }
@@ -171,7 +181,10 @@ json completion(const std::string& path, const std::string& text, std::size_t of
                 const DimensionRegistry* registry) {
   const CompletionContext context = completion_context(text, offset);
   json items = json::array();
-  if (context.expected == Expected::nothing) return {{"isIncomplete", false}, {"items", items}};
+  for (const std::string& o : context.orientations)
+    items.push_back(item(o, completion_kind::keyword, o == "shaded" ? "the point being shaded" : "orientation relative to the shaded point"));
+  if (context.expected == Expected::nothing || context.expected == Expected::orientation)
+    return {{"isIncomplete", false}, {"items", items}};
   if (context.expected == Expected::template_parameter_kind) {
     items.push_back(item("dimension", completion_kind::keyword, "a dimension parameter"));
     items.push_back(item("space", completion_kind::keyword, "a space parameter"));

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 #include <string_view>
 
 #include <safegi/compiler/compile.hpp>
@@ -20,10 +21,11 @@
 
 namespace safegi::lsp {
 
-enum class Expected { nothing, dimension, space, type, template_parameter_kind, unit };
+enum class Expected { nothing, dimension, space, type, template_parameter_kind, unit, orientation };
 
 struct CompletionContext {
   Expected expected = Expected::nothing;
+  std::vector<std::string> orientations;  // away, toward or shaded, where one may end the annotation
   std::string prefix;  // the part of a name already typed before the cursor
 };
 

@@ -33,6 +33,9 @@ TEST(CompletionContext, KindAwareInsideAnnotations) {
       {"projmap<object, cl|", Expected::space},
       {"vector<|", Expected::space},
       {"vector<world, |", Expected::dimension},
+      {"vector<world, length, |", Expected::orientation},
+      {"in point<world, |", Expected::orientation},
+      {"direction<world, aw|", Expected::orientation},
       {"uniform sampler2D<|", Expected::type},
       {"uniform sampler2D<float<|", Expected::dimension},
       {"template<|", Expected::template_parameter_kind},
@@ -97,6 +100,15 @@ TEST_F(Completion, SpacesWhereASpaceIsExpected) {
   const json list = complete("#include <safegi/prelude.sgl>\nspace world;\nspace object;\nuniform map<object, |");
   EXPECT_EQ(labels(list), (std::set<std::string>{"object", "world"}));
   EXPECT_EQ(list["items"][0]["kind"], 9);
+}
+
+TEST_F(Completion, OrientationWordsWhereOneMayEndTheAnnotation) {
+  const std::string head = "#include <safegi/prelude.sgl>\nspace world;\n";
+  EXPECT_EQ(labels(complete(head + "in point<world, |")), (std::set<std::string>{"shaded"}));
+  EXPECT_EQ(labels(complete(head + "uniform direction<world, |")), (std::set<std::string>{"away", "toward"}));
+  const std::set<std::string> vector = labels(complete(head + "uniform vector<world, |"));  // a dimension or the orientation
+  EXPECT_TRUE(vector.count("away") && vector.count("toward") && vector.count("length"));
+  EXPECT_FALSE(labels(complete(head + "uniform normal<world, |")).count("away"));
 }
 
 TEST_F(Completion, DetailsFromTheLastCheckedText) {

@@ -158,6 +158,9 @@ struct Shape {
   std::vector<PointObject> positions;
   std::vector<uint32_t> indices;
   std::vector<TexCoord> uvs;  // empty, or one per position (absent: each triangle's (0,0), (1,0), (1,1))
+  // Empty, or one per position: pbrt-v3's "N", interpolated across each
+  // triangle as the shading normal (the geometric one still decides sides).
+  std::vector<normal<Object>> normals;
   // sphere, in object space
   PointObject center;
   Length radius = sg::zero;
@@ -274,7 +277,13 @@ struct Scene {
   std::optional<EnvironmentLight> environment;
   std::vector<Medium> media;
 
-  bool textured() const { return !textures.empty() || !patterns.empty(); }
+  // Hits need their surface detail (texture coordinates, bumps, interpolated normals).
+  bool textured() const {
+    if (!textures.empty() || !patterns.empty()) return true;
+    for (const Shape& shape : shapes)
+      if (!shape.normals.empty()) return true;
+    return false;
+  }
   // Rays must track media and cross invisible boundaries.
   bool has_media() const {
     if (!media.empty()) return true;
