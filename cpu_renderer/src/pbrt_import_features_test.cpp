@@ -147,6 +147,15 @@ TEST(PbrtImport, NurbsAreDicedAsPbrtDoes) {
   }
   // The quarter cylinder's area π/2, as a polygon of 29 chords: within 1e-3.
   EXPECT_NEAR(measure(arc).area, std::numbers::pi / 2, 1e-3);
+  // pbrt-v3's vertex normals dp/du × dp/dv: the square's +z (the emitter's side), the arc's the exact
+  // cylinder's, radial (the rational derivative included), where the chords' would be off by up to 1.6°.
+  ASSERT_EQ(square.normals.size(), 900u);
+  for (const normal<Object>& n : square.normals) EXPECT_NEAR(sg::raw(n).z, 1.0f, 1e-6f);
+  ASSERT_EQ(arc.normals.size(), arc.positions.size());
+  for (size_t i = 0; i < arc.positions.size(); ++i) {
+    const glm::vec3 p = sg::raw(arc.positions[i]), n = sg::raw(arc.normals[i]);
+    EXPECT_NEAR(std::abs(glm::dot(n, glm::normalize(glm::vec3(p.x, p.y, 0)))), 1.0f, 1e-5f) << i;
+  }
 
   EXPECT_EQ(first_line(import_error(world(patch + "\"point P\" [0 0 0  1 0 0  0 1 0]"))),
             "scene.pbrt:2:143: error: \"point P\" of Shape \"nurbs\" needs nu × nv = 4 points, found 9 numbers");

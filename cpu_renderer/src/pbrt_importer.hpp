@@ -92,7 +92,7 @@ struct GraphicsState {
 struct ShapeSource {
   enum class Kind { mesh, sphere } kind = Kind::mesh;
   std::vector<glm::dvec3> positions;  // object space, pbrt units
-  std::vector<glm::dvec3> normals;    // "N": only orient emitters
+  std::vector<glm::dvec3> normals;    // "N": shading normals, and the side emitters emit on
   std::vector<uint32_t> indices;
   std::vector<TexCoord> uvs;         // "uv"/"st": empty or one per position
   double radius = 0;                 // sphere

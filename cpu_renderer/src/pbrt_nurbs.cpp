@@ -2,11 +2,13 @@
 // itself renders: the surface evaluated on a 30 × 30 grid over [u0, u1] ×
 // [v0, v1] (its fixed dicing rate), two triangles per grid cell wound as pbrt's
 // (so the winding normal is ∂p/∂u × ∂p/∂v, the side an area light emits on),
-// texture coordinates (u, v). Control points are "point P" (nu × nv, u
+// texture coordinates (u, v), and pbrt-v3's vertex normals ∂p/∂u × ∂p/∂v,
+// which shade. Control points are "point P" (nu × nv, u
 // fastest) or homogeneous "float Pw" (x·w, y·w, z·w, w each), evaluated by
 // de Boor's algorithm in homogeneous coordinates as pbrt-v3 does.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -25,8 +27,10 @@ int knot_offset(std::span<const double> knot, int order, int np, double t) {
   return offset;
 }
 
-// A B-spline curve of `order` over homogeneous control points cp[i * stride], at t.
-glm::dvec4 evaluate_curve(int order, std::span<const double> knot, const glm::dvec4* cp, int np, int stride, double t) {
+// A B-spline curve of `order` over homogeneous control points cp[i * stride], at
+// t; with `derivative`, also d(xyz / w)/dt there (pbrt-v3's NURBSEvaluate).
+glm::dvec4 evaluate_curve(int order, std::span<const double> knot, const glm::dvec4* cp, int np, int stride, double t,
+                          glm::dvec3* derivative = nullptr) {
   const int offset = knot_offset(knot, order, np, t);
   const int first = offset - order + 1;
   std::vector<glm::dvec4> work(order);
@@ -40,17 +44,42 @@ glm::dvec4 evaluate_curve(int order, std::span<const double> knot, const glm::dv
     }
   const double span = k[1] - k[0];
   const double alpha = span > 0 ? (k[1] - t) / span : 0.0;
-  return work[0] * alpha + work[1] * (1 - alpha);
+  const glm::dvec4 value = work[0] * alpha + work[1] * (1 - alpha);
+  if (derivative) {
+    const glm::dvec4 delta = span > 0 ? (work[1] - work[0]) * ((order - 1) / span) : glm::dvec4(0.0);
+    *derivative = glm::dvec3(delta) / value.w - glm::dvec3(value) * (delta.w / (value.w * value.w));
+  }
+  return value;
 }
 
-glm::dvec3 evaluate_surface(int u_order, std::span<const double> u_knot, int nu, double u, int v_order,
-                            std::span<const double> v_knot, int nv, double v, const std::vector<glm::dvec4>& cp) {
-  // The v-curves through the u-interval's control columns, then the u-curve through them.
+struct SurfacePoint {
+  glm::dvec3 position, dp_du, dp_dv;
+};
+
+SurfacePoint evaluate_surface(int u_order, std::span<const double> u_knot, int nu, double u, int v_order,
+                              std::span<const double> v_knot, int nv, double v, const std::vector<glm::dvec4>& cp) {
+  SurfacePoint out;
+  // The v-curves through the u-interval's control columns, then the u-curve through them; for ∂p/∂v the other way round.
   const int u_first = knot_offset(u_knot, u_order, nu, u) - u_order + 1;
-  std::vector<glm::dvec4> iso(u_order);
+  const int v_first = knot_offset(v_knot, v_order, nv, v) - v_order + 1;
+  std::vector<glm::dvec4> iso(std::max(u_order, v_order));
   for (int i = 0; i < u_order; ++i) iso[i] = evaluate_curve(v_order, v_knot, &cp[u_first + i], nv, nu, v);
-  const glm::dvec4 p = evaluate_curve(u_order, u_knot, iso.data() - u_first, nu, 1, u);
-  return glm::dvec3(p) / p.w;
+  const glm::dvec4 p = evaluate_curve(u_order, u_knot, iso.data() - u_first, nu, 1, u, &out.dp_du);
+  for (int i = 0; i < v_order; ++i)
+    iso[i] = evaluate_curve(u_order, u_knot, &cp[static_cast<size_t>(v_first + i) * nu], nu, 1, u);
+  (void)evaluate_curve(v_order, v_knot, iso.data() - v_first, nv, 1, v, &out.dp_dv);
+  out.position = glm::dvec3(p) / p.w;
+  return out;
+}
+
+// pbrt-v3's vertex normal ∂p/∂u × ∂p/∂v; where a derivative vanishes (a
+// pole), the normal a step inside the parameter range, its limit there.
+glm::dvec3 surface_normal(const SurfacePoint& at, const std::function<SurfacePoint(double, double)>& nudged) {
+  const glm::dvec3 n = glm::cross(at.dp_du, at.dp_dv);
+  const double size = glm::length(at.dp_du) * glm::length(at.dp_dv);
+  if (glm::length(n) > 1e-9 * size && size > 0) return n;
+  const SurfacePoint inside = nudged(1e-4, 1e-4);
+  return glm::cross(inside.dp_du, inside.dp_dv);
 }
 
 struct Direction {
@@ -120,7 +149,13 @@ bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, Shape
   for (int j = 0; j < kDice; ++j)
     for (int i = 0; i < kDice; ++i) {
       const double s = u.t0 + (u.t1 - u.t0) * i / (kDice - 1), t = v.t0 + (v.t1 - v.t0) * j / (kDice - 1);
-      source.positions.push_back(evaluate_surface(u.order, u.knots, u.count, s, v.order, v.knots, v.count, t, cp));
+      auto at = [&](double ds, double dt) {  // ds, dt: steps towards the middle, as fractions of the range
+        const double su = s + (i < kDice / 2 ? ds : -ds) * (u.t1 - u.t0), tv = t + (j < kDice / 2 ? dt : -dt) * (v.t1 - v.t0);
+        return evaluate_surface(u.order, u.knots, u.count, su, v.order, v.knots, v.count, tv, cp);
+      };
+      const SurfacePoint point = at(0, 0);
+      source.positions.push_back(point.position);
+      source.normals.push_back(surface_normal(point, at));
       source.uvs.push_back({static_cast<Real>(s), static_cast<Real>(t)});
     }
   triangulate_grid(kDice, kDice, source);
