@@ -1,13 +1,16 @@
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <optional>
+#include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
 #include "json_loader.hpp"
+#include "mesh_normals.hpp"
 #include "ply.hpp"
 
 namespace safegi::render::json {
@@ -50,7 +53,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     allow({"file", "unit"});
     load_mesh_file(value, path, shape);
   } else if (type == "triangles") {
-    allow({"positions", "indices", "uvs"});
+    allow({"positions", "indices", "uvs", "normals"});
     load_triangles(value, path, shape);
   } else {
     fail(path.field("type"),
@@ -121,40 +124,49 @@ void Loader::load_mesh_file(const Json& value, const JsonPath& path, Shape& shap
       fail(path.field("file"), "mesh '" + file + "' has a non-finite vertex");
     shape.positions.push_back(sg::from_raw<PointObject>(p));
   }
-  // Texture coordinates have their own indices in OBJ: with them, each distinct
-  // (position, texcoord) pair becomes one vertex.
+  // Texture coordinates and normals have their own indices in OBJ: with
+  // either, each distinct (position, texcoord, normal) triple becomes one
+  // vertex. Each is used only when every corner of every face has one.
   const auto& texcoords = reader.GetAttrib().texcoords;
-  bool textured = !texcoords.empty();
+  const auto& obj_normals = reader.GetAttrib().normals;
+  bool textured = !texcoords.empty(), smooth = !obj_normals.empty();
   for (const tinyobj::shape_t& obj_shape : reader.GetShapes())
-    for (const tinyobj::index_t& index : obj_shape.mesh.indices)
+    for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
       textured = textured && index.texcoord_index >= 0 && 2 * static_cast<size_t>(index.texcoord_index) + 1 < texcoords.size();
+      smooth = smooth && index.normal_index >= 0 && 3 * static_cast<size_t>(index.normal_index) + 2 < obj_normals.size();
+    }
   std::vector<PointObject> obj_positions;
-  if (textured) obj_positions.swap(shape.positions);
-  std::map<std::pair<int, int>, uint32_t> vertex_of;
+  if (textured || smooth) obj_positions.swap(shape.positions);
+  std::vector<glm::dvec3> normals;
+  std::map<std::array<int, 3>, uint32_t> vertex_of;
   for (const tinyobj::shape_t& obj_shape : reader.GetShapes()) {
     for (const tinyobj::index_t& index : obj_shape.mesh.indices) {
-      size_t count = textured ? obj_positions.size() : shape.positions.size();
+      size_t count = textured || smooth ? obj_positions.size() : shape.positions.size();
       if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= count)
         fail(path.field("file"), "mesh '" + file + "' has a face with a vertex index out of range");
-      if (!textured) {
+      if (!textured && !smooth) {
         shape.indices.push_back(static_cast<uint32_t>(index.vertex_index));
         continue;
       }
-      auto [found, inserted] = vertex_of.try_emplace({index.vertex_index, index.texcoord_index},
-                                                     static_cast<uint32_t>(shape.positions.size()));
+      const std::array<int, 3> key{index.vertex_index, textured ? index.texcoord_index : -1, smooth ? index.normal_index : -1};
+      auto [found, inserted] = vertex_of.try_emplace(key, static_cast<uint32_t>(shape.positions.size()));
       if (inserted) {
         shape.positions.push_back(obj_positions[index.vertex_index]);
-        shape.uvs.push_back({texcoords[2 * index.texcoord_index], texcoords[2 * index.texcoord_index + 1]});
+        if (textured) shape.uvs.push_back({texcoords[2 * index.texcoord_index], texcoords[2 * index.texcoord_index + 1]});
+        if (smooth) {
+          const float* n = &obj_normals[3 * static_cast<size_t>(index.normal_index)];
+          normals.emplace_back(n[0], n[1], n[2]);
+        }
       }
       shape.indices.push_back(found->second);
     }
   }
   if (shape.indices.empty() || shape.indices.size() % 3 != 0)
     fail(path.field("file"), "mesh '" + file + "' has no triangles");
+  if (smooth) shape.normals = unit_vertex_normals(normals, shape.positions, shape.indices);
 }
 
-// PLY: positions and faces; vertex normals are read but not used (the renderer
-// shades with geometric normals).
+// PLY: positions, faces, and the vertex normals and texture coordinates it has.
 void Loader::load_ply_file(const std::filesystem::path& full, const std::string& file, Real scale,
                            const JsonPath& path, Shape& shape) {
   std::ifstream in(full, std::ios::binary);
@@ -178,6 +190,11 @@ void Loader::load_ply_file(const std::filesystem::path& full, const std::string&
   }
   shape.indices = std::move(mesh.indices);
   if (shape.indices.empty()) fail(path.field("file"), "mesh '" + file + "' has no triangles");
+  if (!mesh.normals.empty()) {
+    std::vector<glm::dvec3> normals;
+    for (const std::array<float, 3>& n : mesh.normals) normals.emplace_back(n[0], n[1], n[2]);
+    shape.normals = unit_vertex_normals(normals, shape.positions, shape.indices);
+  }
 }
 
 void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shape) {
@@ -220,6 +237,21 @@ void Loader::load_triangles(const Json& value, const JsonPath& path, Shape& shap
       shape.uvs.push_back({number(uvs[i][0], uvs_path.index(i).index(0), -1e6, 1e6),
                            number(uvs[i][1], uvs_path.index(i).index(1), -1e6, 1e6)});
     }
+  }
+  if (value.contains("normals")) {
+    const Json& list = value["normals"];
+    JsonPath normals_path = path.field("normals");
+    if (!list.is_array() || list.size() != shape.positions.size())
+      fail(normals_path, "expected one [x, y, z] per position (" + std::to_string(shape.positions.size()) + ")");
+    std::vector<glm::dvec3> normals;
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_array() || list[i].size() != 3) fail(normals_path.index(i), "expected [x, y, z], got " + short_dump(list[i]));
+      glm::dvec3 n;
+      for (int axis = 0; axis < 3; ++axis) n[axis] = number(list[i][axis], normals_path.index(i).index(axis), -1e6, 1e6);
+      if (!(glm::length(n) > 0)) fail(normals_path.index(i), "a normal needs a direction, got [0, 0, 0]");
+      normals.push_back(n);
+    }
+    shape.normals = unit_vertex_normals(normals, shape.positions, shape.indices);
   }
 }
 

@@ -211,7 +211,6 @@ class Importer {
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
   void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
   void animate(const ShapeSource& source, const Matrix& world_from_pbrt_world, Shape& shape);
-  std::vector<normal<Object>> shading_normals(const ShapeSource& source, const glm::dmat3& normals_from_object);
   void object_instance(const Directive& d);
 
   void warn(SourceRange at, std::string message, std::string hint = {});

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "mesh_normals.hpp"
 #include "pbrt_importer.hpp"
 #include "ply.hpp"
 
@@ -157,6 +158,15 @@ void Importer::light_source(const Directive& d) {
 }
 
 namespace {
+
+// The mesh's vertex normals "N" through `normals_from_object` (an inverse
+// transpose) beside the shape's positions in its object space.
+std::vector<normal<Object>> shading_normals(const ShapeSource& source, const glm::dmat3& normals_from_object, const Shape& shape) {
+  std::vector<glm::dvec3> placed;
+  placed.reserve(source.normals.size());
+  for (const glm::dvec3& n : source.normals) placed.push_back(normals_from_object * n);
+  return unit_vertex_normals(placed, shape.positions, shape.indices);
+}
 
 // A distant or infinite light's "L" × "scale" (each 1 by default), none negative.
 Rgb scaled_output(ParamSet& params) {
@@ -431,7 +441,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   shape.indices = source.indices;
   shape.uvs = source.uvs;
   const glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
-  shape.normals = shading_normals(source, world_from_object_normals);
+  shape.normals = shading_normals(source, world_from_object_normals, shape);
   if (shape.emission || glass || shape.media) {
     // pbrt-v3 emits on the side of its geometric normal, and has glass's
     // outside there (our glass: on the winding's side), and a medium
@@ -454,25 +464,6 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   }
   if (source.pbrt_world_from_object_at_end) animate(source, world_from_pbrt_world, shape);
   result_.scene.shapes.push_back(std::move(shape));
-}
-
-// The mesh's vertex normals "N" through `normals_from_object` (an inverse
-// transpose), unit length; none when the mesh has none, or when one of them is
-// zero (pbrt-v3 would shade with NaNs there: the geometric normals shade instead).
-std::vector<normal<Object>> Importer::shading_normals(const ShapeSource& source, const glm::dmat3& normals_from_object) {
-  std::vector<normal<Object>> out;
-  out.reserve(source.normals.size());
-  for (size_t i = 0; i < source.normals.size(); ++i) {
-    const glm::dvec3 n = normals_from_object * source.normals[i];
-    const double length = glm::length(n);
-    if (!(length > 0) || !std::isfinite(length)) {
-      warn(source.at, "vertex normal " + std::to_string(i) + " of \"normal N\" is zero: the mesh is shaded with its geometric normals");
-      return {};
-    }
-    const glm::dvec3 unit = n / length;
-    out.push_back(sg::from_raw<normal<Object>>(sg::vec3_rep(static_cast<Real>(unit.x), static_cast<Real>(unit.y), static_cast<Real>(unit.z))));
-  }
-  return out;
 }
 
 // A shape that moves (ActiveTransform): kept in object space with its poses at
@@ -511,7 +502,7 @@ void Importer::animate(const ShapeSource& source, const Matrix& world_from_pbrt_
     const glm::dvec3 p = glm::dvec3(mirror * glm::dvec4(source.positions[i], 1));
     shape.positions[i] = sg::from_raw<PointObject>(sg::vec3_rep(static_cast<Real>(p.x), static_cast<Real>(p.y), static_cast<Real>(p.z)));
   }
-  if (!shape.normals.empty()) shape.normals = shading_normals(source, glm::dmat3(mirror));  // a mirror is its own inverse transpose
+  if (!shape.normals.empty()) shape.normals = shading_normals(source, glm::dmat3(mirror), shape);  // a mirror is its own inverse transpose
 }
 
 void Importer::object_instance(const Directive& d) {

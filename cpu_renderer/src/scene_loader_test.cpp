@@ -112,6 +112,8 @@ TEST(SceneLoader, PlyMeshes) {
   const Shape& torus = scene.shapes[1];
   EXPECT_EQ(torus.positions.size(), 32u * 16u);
   EXPECT_EQ(torus.indices.size(), 32u * 16u * 2u * 3u);  // quads become two triangles
+  ASSERT_EQ(torus.normals.size(), torus.positions.size());  // its nx ny nz shade
+  for (const normal<Object>& n : torus.normals) EXPECT_NEAR(glm::length(glm::vec3(sg::raw(n))), 1.0f, 1e-5f);
   // A damaged PLY file: the JSON path, the file and what is wrong with it.
   std::filesystem::path directory = std::filesystem::temp_directory_path() / ("safegi-ply-" + std::to_string(::getpid()));
   std::filesystem::create_directories(directory);
@@ -127,6 +129,39 @@ TEST(SceneLoader, PlyMeshes) {
               "test.json: shapes[0].file: cannot read mesh 'bad.ply': the vertex element needs a scalar property 'y'");
   }
   std::filesystem::remove_all(directory);
+}
+
+// Vertex normals: an OBJ's vn (by their own indices: a corner is a position, texcoord and normal triple) and a
+// "triangles" list's "normals" shade; a zero one in a file becomes its triangles' normal, a zero one written in
+// the scene is an error.
+TEST(SceneLoader, VertexNormals) {
+  std::filesystem::path directory = std::filesystem::temp_directory_path() / ("safegi-normals-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  {
+    std::ofstream out(directory / "tent.obj");
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 1\nvn 0 0 2\nvn 1 0 1\nvn 0 0 0\nf 1//1 2//1 3//2\nf 1//1 3//3 4//1\n";
+  }
+  Scene scene = parse_scene(with_camera(R"("shapes": [{"type": "mesh", "file": "tent.obj", "unit": "m"}])"), "test.json", directory);
+  const Shape& tent = scene.shapes.at(0);
+  ASSERT_EQ(tent.positions.size(), 5u);  // position 3 twice: with normal 2 and with normal 3
+  ASSERT_EQ(tent.normals.size(), 5u);
+  auto raw = [](const normal<Object>& n) { return glm::vec3(sg::raw(n)); };
+  EXPECT_NEAR(glm::distance(raw(tent.normals[0]), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(raw(tent.normals[2]), glm::normalize(glm::vec3(1, 0, 1))), 0.0f, 1e-6f);
+  // The zero vn at position 3 of the second triangle: that triangle's winding normal, (1,0,0)×(... ) normalised.
+  const glm::vec3 a(0, 0, 0), c(1, 1, 0), d(0, 1, 1);
+  EXPECT_NEAR(glm::distance(raw(tent.normals[3]), glm::normalize(glm::cross(c - a, d - a))), 0.0f, 1e-6f);
+  EXPECT_TRUE(scene.textured());  // hits need their normals interpolated
+  std::filesystem::remove_all(directory);
+
+  const std::string triangles =
+      R"("shapes": [{"type": "triangles", "positions": {"value": [[0,0,0],[1,0,0],[0,1,0]], "unit": "m"}, "indices": [0,1,2], )";
+  Scene listed = parse_scene(with_camera(triangles + R"("normals": [[0,0,3],[0,0,1],[0,1,1]]}])"), "test.json", ".");
+  EXPECT_NEAR(glm::distance(raw(listed.shapes[0].normals[2]), glm::normalize(glm::vec3(0, 1, 1))), 0.0f, 1e-6f);
+  EXPECT_EQ(load_error(with_camera(triangles + R"("normals": [[0,0,1],[0,0,1]]}])")),
+            "test.json: shapes[0].normals: expected one [x, y, z] per position (3)");
+  EXPECT_EQ(load_error(with_camera(triangles + R"("normals": [[0,0,1],[0,0,0],[0,0,1]]}])")),
+            "test.json: shapes[0].normals[1]: a normal needs a direction, got [0, 0, 0]");
 }
 
 TEST(SceneLoader, BundledScenesLoad) {
