@@ -15,9 +15,11 @@ void add_mesh(SceneMeshes& meshes, const Shape& shape) {
     PointObject b = shape.positions[shape.indices[i + 1]];
     PointObject c = shape.positions[shape.indices[i + 2]];
     auto facet = sg::to_normal(sg::normalize(sg::cross(b - a, c - a)));
-    for (PointObject p : {a, b, c}) {
-      meshes.positions.push_back(p);
-      meshes.normals.push_back(facet);
+    for (size_t k = 0; k < 3; ++k) {
+      meshes.positions.push_back(shape.positions[shape.indices[i + k]]);
+      // A mesh's own vertex normals shade it smoothly, as in the CPU renderer, on the facet's side.
+      meshes.normals.push_back(shape.normals.empty() ? facet
+                                                     : sg::face_forward(shape.normals[shape.indices[i + k]], sg::to_direction(facet)));
     }
   }
 }

@@ -21,7 +21,7 @@ struct DrawRange {
 
 struct SceneMeshes {
   std::vector<PointObject> positions;  // non-indexed triangles, every shape after the other
-  std::vector<normal<Object>> normals; // flat for meshes, smooth for spheres
+  std::vector<normal<Object>> normals; // a mesh's vertex normals (else flat), smooth for spheres
   std::vector<DrawRange> ranges;       // one per Scene::shapes entry
 };
 

@@ -18,6 +18,19 @@ TEST(SceneMeshes, EveryShapeGetsItsTriangles) {
   EXPECT_EQ(meshes.positions.size(), meshes.normals.size());
 }
 
+TEST(SceneMeshes, AMeshsVertexNormalsShadeIt) {
+  Scene scene = parse_scene(
+      R"({"camera": {"position": {"value": [0, 0, 5], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"},
+          "up": [0, 1, 0], "fov": "40 deg"},
+          "shapes": [{"type": "triangles", "positions": {"value": [[0,0,0],[1,0,0],[0,1,0]], "unit": "m"},
+                      "indices": [0, 1, 2], "normals": [[0,0,1],[1,0,1],[0,0,-1]]}]})",
+      "test.json", ".");
+  SceneMeshes meshes = tessellate(scene);
+  ASSERT_EQ(meshes.normals.size(), 3u);
+  EXPECT_NEAR(glm::distance(glm::vec3(sg::raw(meshes.normals[1])), glm::normalize(glm::vec3(1, 0, 1))), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(glm::vec3(sg::raw(meshes.normals[2])), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);  // turned to the facet's side
+}
+
 TEST(SceneMeshes, SpheresAreTessellatedOnTheirSurface) {
   Scene scene = load_scene(SAFEGI_SCENES_DIR "/phong.json");
   SceneMeshes meshes = tessellate(scene, 16);
