@@ -558,7 +558,7 @@ TEST(PbrtImport, MetalAsPbrtV3DefinesIt) {
             "help: a metal's \"eta\" and \"k\" are constants here: rgb, a named spectrum or [wavelength value ...] pairs\n");
   EXPECT_EQ(first_line(import_error(world("Texture \"r\" \"float\" \"fbm\"\n" +
                                           used("Material \"metal\" \"texture roughness\" \"r\"")))),
-            "scene.pbrt:2:21: error: float procedural textures are not supported");  // textured roughness
+            "scene.pbrt:3:18: error: a procedural texture as \"roughness\" of Material \"metal\" is not supported");
   EXPECT_EQ(error_of("Material \"metal\" \"texture bumpmap\" \"b\""),
             "scene.pbrt:2:36: error: no float texture named \"b\"");
 }
@@ -745,10 +745,11 @@ TEST(PbrtImport, SolidTexturesFollowTheirTransformAndTheLengthUnit) {
 }
 
 TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
+  // A float pattern is a bump map's; as a roughness, it is refused where the material reads it.
   EXPECT_EQ(import_error(world(used_float_texture("Texture \"t\" \"float\" \"fbm\""))),
-            "scene.pbrt:2:21: error: float procedural textures are not supported\n"
-            "Texture \"t\" \"float\" \"fbm\"\n                    ^~~~~\n"
-            "help: only bump maps read a textured number here, and only an image (times a constant)\n");
+            "scene.pbrt:3:20: error: a procedural texture as \"roughness\" of Material \"plastic\" is not supported\n"
+            "Material \"plastic\" \"texture roughness\" \"t\"\n                   ^~~~~~~~~~~~~~~~~~~\n"
+            "help: only \"bumpmap\" reads a float texture here; the others take numbers\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\""))),
             "scene.pbrt:2:28: error: texture mapping \"spherical\" is not supported\n"
             "Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\"\n"

@@ -573,7 +573,7 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(import_error(world(used_float_texture("Texture \"t\" \"float\" \"imagemap\" \"string filename\" \"grad.exr\"")), with_images()),
             "scene.pbrt:3:20: error: an image texture as \"roughness\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture roughness\" \"t\"\n                   ^~~~~~~~~~~~~~~~~~~\n"
-            "help: only \"bumpmap\" reads a float image texture here; the others take numbers\n");
+            "help: only \"bumpmap\" reads a float texture here; the others take numbers\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" "
                                             "\"string mapping\" \"spherical\"")),
                          with_images()),
@@ -632,6 +632,35 @@ TEST(PbrtImport, BumpMapsAsPbrtV3ReadsThem) {
                            "Material \"matte\" \"texture bumpmap\" \"b\"")),
                 with_images())),
             "scene.pbrt:3:48: error: a product of two textures is not supported");
+}
+
+// Float procedural textures (pbrt-v3's FBmTexture<Float>, a float checkerboard, ...) are bump maps too:
+// their numbers are displacements, any finite value, a "scale" of one by a constant included.
+TEST(PbrtImport, ProceduralBumpMaps) {
+  PbrtScene scene = import(world(
+      "Texture \"n\" \"float\" \"wrinkled\" \"float roughness\" 0.6 \"integer octaves\" 4\n"
+      "Texture \"s\" \"float\" \"scale\" \"texture tex1\" \"n\" \"float tex2\" 0.02\n"
+      "Texture \"c\" \"float\" \"checkerboard\" \"float tex1\" -2 \"float tex2\" 3 \"float uscale\" 8\n"
+      "Material \"matte\" \"texture bumpmap\" \"s\"\nShape \"sphere\"\n"
+      "Material \"plastic\" \"texture bumpmap\" \"c\"\nShape \"sphere\""));
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.materials.size(), 2u);
+  ASSERT_EQ(s.patterns.size(), 2u);
+  ASSERT_TRUE(s.materials[0].bump && s.materials[1].bump);
+  EXPECT_EQ(s.materials[0].bump->texture, -1);
+  EXPECT_EQ(s.materials[0].bump->pattern, 0);
+  EXPECT_FLOAT_EQ(sg::raw(s.materials[0].bump->scale), static_cast<float>(0.02 * in_memory().metres_per_unit));
+  const auto& noise = std::get<FbmPattern>(s.patterns[0].pattern);
+  EXPECT_TRUE(noise.turbulence);
+  EXPECT_EQ(noise.octaves, 4);
+  const auto& board = std::get<CheckerboardPattern>(s.patterns[1].pattern);
+  EXPECT_EQ(sg::raw(board.even)[0], -2.0f);  // a displacement: not clamped to [0, 1]
+  EXPECT_EQ(sg::raw(board.odd)[0], 3.0f);
+  PatternLookup at{.u = 0.01f, .v = 0.01f};
+  EXPECT_EQ(evaluate_number(s.patterns[1].pattern, at), -2.0f);
+  EXPECT_EQ(first_line(import_error(world(used("Texture \"c\" \"float\" \"checkerboard\" \"float tex1\" 1e7\n"
+                                                "Material \"matte\" \"texture bumpmap\" \"c\"")))),
+            "scene.pbrt:2:36: error: \"tex1\" of Texture \"c\" must lie in [-1e6, 1e6]");
 }
 
 TEST(PbrtImport, InfiniteLightAsPbrtV3DefinesIt) {

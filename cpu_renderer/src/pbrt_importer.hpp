@@ -189,8 +189,8 @@ class Importer {
   // Mappings and procedural textures (pbrt_patterns.cpp).
   UvMapping uv_mapping(ParamSet& params, SourceRange at);
   SolidMapping solid_mapping(SourceRange at);
-  Reflectance pattern_colour(ParamSet& params, const char* name, double fallback);
-  std::optional<Pattern> pattern(const std::string& texture_class, ParamSet& params, SourceRange at);
+  Reflectance pattern_colour(ParamSet& params, const char* name, double fallback, bool spectrum);
+  std::optional<Pattern> pattern(const std::string& texture_class, ParamSet& params, SourceRange at, bool spectrum);
   Image read_image(const Param& filename);
 
   // Participating media (pbrt_media.cpp).

@@ -43,8 +43,6 @@ constexpr const char* kSupportedMaterials =
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
-constexpr const char* kNoTexturedNumbers =
-    "only bump maps read a textured number here, and only an image (times a constant)";
 
 bool reads_material_params(const std::string& type, const ParamSet& shape) {
   for (const MaterialParams& m : kMaterialParams)
@@ -152,14 +150,15 @@ std::optional<double> Importer::float_param(ParamSet& params, const char* name) 
   std::optional<TextureEntry> entry = float_or_texture(params, name, param);
   if (!entry) return std::nullopt;
   if (entry->textured())
-    params.fail_at(*param, "an image texture as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
-                   "only \"bumpmap\" reads a float image texture here; the others take numbers");
+    params.fail_at(*param, std::string(entry->image >= 0 ? "an image" : "a procedural") + " texture as \"" + name + "\" of " +
+                               params.context() + " is not supported",
+                   "only \"bumpmap\" reads a float texture here; the others take numbers");
   return entry->value[0];
 }
 
 // pbrt-v3's "bumpmap": the displacement, in scene units, is the float texture's
-// value (a constant times an image's luminance). A constant displaces every
-// point alike and leaves the normals as they are.
+// value (a constant times an image's luminance or a pattern's value). A
+// constant displaces every point alike and leaves the normals as they are.
 std::optional<BumpMap> Importer::bump_map(ParamSet& params) {
   const Param* param = params.find("bumpmap", {ParamType::texture});
   if (!param) return std::nullopt;
@@ -171,11 +170,11 @@ std::optional<BumpMap> Importer::bump_map(ParamSet& params) {
     fail(param->values, "no float texture named \"" + param->strings[0] + "\"",
          "Texture \"" + param->strings[0] + "\" \"float\" ... defines one");
   const TextureEntry& entry = usable(found->second);
-  if (entry.image < 0) return std::nullopt;
+  if (!entry.textured()) return std::nullopt;
   double metres = entry.value[0] * options_.metres_per_unit;
   if (!std::isfinite(static_cast<Real>(metres)))
     params.fail_at(*param, "the bump map's displacement of " + params.context() + " is out of " + kRealName + " range");
-  return BumpMap{entry.image, static_cast<Real>(metres) * units::meter};
+  return BumpMap{.texture = entry.image, .pattern = entry.pattern, .scale = static_cast<Real>(metres) * units::meter};
 }
 
 // The largest value (per channel) of an image texture or a pattern.
@@ -499,8 +498,7 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
       if (given->pattern >= 0) entry.pattern = given->pattern;
       for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
     }
-  } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range)) {
-    if (!spectrum) fail(entry.at, "float procedural textures are not supported", kNoTexturedNumbers);
+  } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range, spectrum)) {
     result_.scene.patterns.push_back({name, std::move(*made)});
     entry.pattern = static_cast<int>(result_.scene.patterns.size()) - 1;
   } else {

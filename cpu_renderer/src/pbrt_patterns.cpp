@@ -58,30 +58,35 @@ SolidMapping Importer::solid_mapping(SourceRange at) {
   return mapping;
 }
 
-// One of a pattern's two colours: a colour (or a constant texture) in [0, 1].
-Reflectance Importer::pattern_colour(ParamSet& params, const char* name, double fallback) {
+// One of a pattern's two values: a colour (or a constant texture) in [0, 1];
+// of a float texture, a number (a displacement: any finite one), grey.
+Reflectance Importer::pattern_colour(ParamSet& params, const char* name, double fallback, bool spectrum) {
   const Param* param = nullptr;
-  std::optional<TextureEntry> given = spectrum_or_texture(params, name, param);
+  std::optional<TextureEntry> given = spectrum ? spectrum_or_texture(params, name, param) : float_or_texture(params, name, param);
   if (!given) return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(fallback)));
   if (given->textured())
     params.fail_at(*param, "a texture as \"" + std::string(name) + "\" of " + params.context() + " is not supported",
-                   "give it as a colour (\"rgb " + std::string(name) + "\" [r g b])");
-  for (double c : given->value)
-    if (!(c >= 0 && c <= 1))
+                   spectrum ? "give it as a colour (\"rgb " + std::string(name) + "\" [r g b])"
+                            : "give it as a number (\"float " + std::string(name) + "\" 0.5)");
+  for (double c : given->value) {
+    if (spectrum && !(c >= 0 && c <= 1))
       params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " must lie in [0, 1] in every channel",
                      "above 1 a surface reflects more light than it receives");
+    if (!spectrum && !(std::fabs(c) <= 1e6))
+      params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " must lie in [-1e6, 1e6]");
+  }
   return sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(given->value[0]), static_cast<Real>(given->value[1]),
                                                 static_cast<Real>(given->value[2])));
 }
 
-std::optional<Pattern> Importer::pattern(const std::string& texture_class, ParamSet& params, SourceRange at) {
+std::optional<Pattern> Importer::pattern(const std::string& texture_class, ParamSet& params, SourceRange at, bool spectrum) {
+  auto value = [&](const char* name, double fallback) { return pattern_colour(params, name, fallback, spectrum); };
   auto octaves = [&] { return params.one_int("octaves", 8, 0, 32); };
   auto roughness = [&] { return static_cast<Real>(bounded(params, "roughness", 0.5, 0, 16)); };
   if (texture_class == "checkerboard") {
     const int dimension = params.one_int("dimension", 2, 2, 3);
-    if (dimension == 3) return SolidCheckerboardPattern{solid_mapping(at), pattern_colour(params, "tex1", 1),
-                                                        pattern_colour(params, "tex2", 0)};
-    CheckerboardPattern board{uv_mapping(params, at), pattern_colour(params, "tex1", 1), pattern_colour(params, "tex2", 0)};
+    if (dimension == 3) return SolidCheckerboardPattern{solid_mapping(at), value("tex1", 1), value("tex2", 0)};
+    CheckerboardPattern board{uv_mapping(params, at), value("tex1", 1), value("tex2", 0)};
     std::string mode = params.one_string("aamode", "closedform");
     board.box_filtered = mode != "none";
     if (mode != "none" && mode != "closedform")
@@ -90,7 +95,7 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
     return board;
   }
   if (texture_class == "dots")
-    return DotsPattern{uv_mapping(params, at), pattern_colour(params, "inside", 1), pattern_colour(params, "outside", 0)};
+    return DotsPattern{uv_mapping(params, at), value("inside", 1), value("outside", 0)};
   if (texture_class == "fbm" || texture_class == "wrinkled")
     return FbmPattern{solid_mapping(at), roughness(), octaves(), texture_class == "wrinkled"};
   if (texture_class == "windy") return WindyPattern{solid_mapping(at)};

@@ -133,8 +133,12 @@ bool reads_uv(const Pattern& pattern) {
   return std::visit([](const auto& p) { return PlanarPattern<std::remove_cvref_t<decltype(p)>>; }, pattern);
 }
 
-Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) {
-  return clamped(std::visit(
+Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) { return clamped(evaluate_unclamped(pattern, at)); }
+
+Real evaluate_number(const Pattern& pattern, const PatternLookup& at) { return sg::raw(evaluate_unclamped(pattern, at))[0]; }
+
+Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) {
+  return (std::visit(
       [&](const auto& p) {
         if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
           const UvMapping& m = p.mapping;

@@ -124,7 +124,7 @@ Scene bumped_plane(double sun_theta, double tilt) {
   texture.mipmap = std::make_shared<MipMap>(std::move(ramp), TextureWrap::clamp);
   scene.textures.push_back(std::move(texture));
   const double slope = -20 * std::tan(tilt);  // metres of displacement per unit v; `tilt` towards +x
-  scene.materials[0].bump = BumpMap{0, static_cast<Real>(slope * (rows - 1) / rows) * units::meter};
+  scene.materials[0].bump = BumpMap{.texture = 0, .scale = static_cast<Real>(slope * (rows - 1) / rows) * units::meter};
   return scene;
 }
 
@@ -143,6 +143,38 @@ TEST(RenderPhysics, BumpMapTiltsTheShadingNormal) {
       for (float v : image.rgb)
         ASSERT_NEAR(v, expected, 2e-4 * rho / kPiD * irradiance) << "sun " << c.sun / degree << "°, tilt " << c.tilt / degree << "°";
     }
+}
+
+// A procedural bump map: a float checkerboard of 1 m checks (values 0 and
+// `step`) on the same plane. pbrt-v3's Bump takes forward differences 0.0005
+// of u and v apart, 1 cm here (dp/du = dp/dv = 20 m): inside a check the
+// normal is the plane's, and where a step into the next check lies within
+// that 1 cm, the surface seems to rise by `step` over 1 cm, so the normal
+// tilts by atan(step / 1 cm) — towards −x for a rise along +x (v). The sun
+// straight above: L = ρ/π · E cos(tilt) there, ρ/π · E elsewhere.
+TEST(RenderPhysics, ProceduralBumpMapTiltsAtTheChecksEdges) {
+  const double irradiance = 3.0, step = 0.01;  // metres: a 45° tilt
+  Scene scene = plane_under_the_sun(1, irradiance, 0);
+  CheckerboardPattern board;
+  board.mapping.u_scale = board.mapping.v_scale = 20;  // s = z + 10, t = x + 10
+  board.even = Reflectance(Real(0));
+  board.odd = Reflectance(Real(1));
+  board.box_filtered = false;
+  scene.patterns.push_back({"checks", board});
+  scene.materials[0].bump = BumpMap{.pattern = 0, .scale = static_cast<Real>(step) * units::meter};
+  const double flat = irradiance / kPiD;
+  Image image = render_scene(scene, 64);
+  int tilted = 0, level = 0;
+  for (float v : image.rgb) {
+    // A pixel is a mix of level points (flat) and points 1 cm before an edge along x or z (cos 45°, or
+    // cos(atan √2) where both are): no value outside [cos(atan √2), 1] · flat, and both kinds are seen.
+    ASSERT_GE(v, flat / std::sqrt(3.0) - 1e-4 * flat);
+    ASSERT_LE(v, flat * (1 + 1e-4));
+    level += v > flat * (1 - 1e-4);
+    tilted += v < flat * 0.99;
+  }
+  EXPECT_GT(level, 0);
+  EXPECT_GT(tilted, 0);
 }
 
 // The same plane with a box-filtered checkerboard of 1 m checks as its

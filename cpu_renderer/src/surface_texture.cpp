@@ -188,7 +188,13 @@ SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit,
 
 NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit& hit, Time time) const {
   const Derivatives d = derivatives(hit, time);
-  const ImageTexture& texture = scene_.textures[bump.texture];
+  // The displacement where the surface's (u, v) is `uv` and its point `p`
+  // (pbrt-v3 shifts both: a solid pattern reads the point).
+  auto displacement_at = [&](TexCoord uv, PointWorld p) -> Length {
+    if (bump.texture >= 0) return bump.scale * luminance_at(scene_.textures[bump.texture], uv);
+    const PatternLookup lookup{.u = uv.u, .v = uv.v, .position = p};
+    return bump.scale * evaluate_number(scene_.patterns[bump.pattern].pattern, lookup);
+  };
   // pbrt-v3's step for rays without differentials; its camera rays step by
   // their footprint over sqrt(spp), which also tends to the texel's own slope.
   // The steps actually taken (u + 0.0005 rounds): dividing by them keeps the
@@ -196,9 +202,9 @@ NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit
   constexpr Real step = 0.0005f;
   const Real u_next = d.uv.u + step, v_next = d.uv.v + step;
   const Real u_step = u_next - d.uv.u, v_step = v_next - d.uv.v;
-  const Length displacement = bump.scale * luminance_at(texture, d.uv);
-  const Length along_u = bump.scale * luminance_at(texture, {u_next, d.uv.v});
-  const Length along_v = bump.scale * luminance_at(texture, {d.uv.u, v_next});
+  const Length displacement = displacement_at(d.uv, hit.position);
+  const Length along_u = displacement_at({u_next, d.uv.v}, hit.position + d.dp_du * u_step);
+  const Length along_v = displacement_at({d.uv.u, v_next}, hit.position + d.dp_dv * v_step);
   const VectorWorld dp_du = d.dp_du + hit.normal * ((along_u - displacement) / u_step) + d.dn_du * displacement;
   const VectorWorld dp_dv = d.dp_dv + hit.normal * ((along_v - displacement) / v_step) + d.dn_dv * displacement;
   const auto perpendicular = sg::cross(dp_du, dp_dv);

@@ -93,6 +93,10 @@ struct PatternLookup {
 bool reads_uv(const Pattern& pattern);
 // The reflectance at a lookup, in [0, 1].
 Reflectance evaluate(const Pattern& pattern, const PatternLookup& at);
+// The value of a float texture's pattern (its colours grey): unclamped, since
+// a bump map's displacement may be negative (fbm's noise is) or above 1.
+Real evaluate_number(const Pattern& pattern, const PatternLookup& at);
+Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at);
 // Bounds for the importer's checks and the preview's colour: the largest value
 // the pattern takes (per channel), and its mean over many cells.
 Reflectance largest_value(const Pattern& pattern);

@@ -88,10 +88,12 @@ using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial
                                    GlassMaterial, ConductorMaterial, SubstrateMaterial>;
 
 // pbrt-v3's bump map: the surface displaced along its normal by `scale` times
-// the luminance of an image texture at (u, v). Only the shading normal changes
-// (the normal of the displaced surface); rays still leave the real one.
+// the luminance of an image texture at (u, v), or a float pattern's value at
+// the hit. Only the shading normal changes (the normal of the displaced
+// surface); rays still leave the real one.
 struct BumpMap {
-  int texture = -1;         // index into Scene::textures
+  int texture = -1;         // index into Scene::textures, or -1 and
+  int pattern = -1;         // index into Scene::patterns
   Length scale = sg::zero;  // the displacement per unit of the texture's value
 };
 
