@@ -744,17 +744,56 @@ TEST(PbrtImport, SolidTexturesFollowTheirTransformAndTheLengthUnit) {
   EXPECT_EQ(at(0.01f, 0.021f), 1 - first);
 }
 
+// The other 2D mappings read the point where pbrt-v3 has it: spherical and cylindrical in the space of the
+// Texture's transform (here translated by +1 along pbrt's z), planar in pbrt's world, both un-mirrored from
+// ours (see Handedness) and in scene units. Spheres mark pbrt-world points (1, 0, 0), (0, 3, 0), (0, 0, 2).
+TEST(PbrtImport, TwoDimensionalMappingsReadThePointAsPbrtV3Does) {
+  auto marker = [](const char* at) {
+    return "AttributeBegin\nTranslate " + std::string(at) + "\nShape \"sphere\" \"float radius\" 0.1\nAttributeEnd\n";
+  };
+  PbrtScene scene = import(world(
+      "TransformBegin\nTranslate 0 0 1\n"
+      "Texture \"s\" \"color\" \"checkerboard\" \"string mapping\" \"spherical\"\n"
+      "Texture \"c\" \"color\" \"dots\" \"string mapping\" \"cylindrical\"\nTransformEnd\n"
+      "Texture \"p\" \"color\" \"checkerboard\" \"string mapping\" \"planar\" \"vector v2\" [0 0 1] \"float udelta\" 0.25\n"
+      "Material \"matte\" \"texture Kd\" \"s\"\n" +
+      marker("1 0 0") + marker("0 3 0") + marker("0 0 2") +
+      "Material \"matte\" \"texture Kd\" \"c\"\nShape \"sphere\"\nMaterial \"matte\" \"texture Kd\" \"p\"\nShape \"sphere\""));
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.patterns.size(), 3u);
+  auto centre = [&](int shape) { return s.shapes[shape].render_from_object(s.shapes[shape].center); };
+  auto st = [&](int pattern, int shape) {
+    const Mapping2D& m = std::visit([](const auto& p) -> const Mapping2D& {
+      if constexpr (requires { p.mapping.kind; }) return p.mapping;
+      else throw std::logic_error("a solid pattern");
+    }, s.patterns[pattern].pattern);
+    return m.at(0, 0, centre(shape));
+  };
+  // Spherical about pbrt's (0, 0, 1): (1, 0, -1) is θ = 3π/4, φ = 0; (0, 3, -1) is φ = π/2; (0, 0, 1) is the pole.
+  EXPECT_NEAR(st(0, 0).s, 0.75f, 1e-5f);
+  EXPECT_NEAR(st(0, 0).t, 0.0f, 1e-5f);
+  EXPECT_NEAR(st(0, 1).t, 0.25f, 1e-5f);
+  EXPECT_NEAR(st(0, 2).s, 0.0f, 1e-5f);
+  // Cylindrical about the same: (1, 0, -1)/√2 gives s = (π + 0)/2π, t = -1/√2.
+  EXPECT_NEAR(st(1, 0).s, 0.5f, 1e-5f);
+  EXPECT_NEAR(st(1, 0).t, -std::sqrt(0.5f), 1e-5f);
+  // Planar in pbrt's world: (0.25 + x, z).
+  EXPECT_NEAR(st(2, 0).s, 1.25f, 1e-5f);
+  EXPECT_NEAR(st(2, 1).s, 0.25f, 1e-5f);
+  EXPECT_NEAR(st(2, 2).t, 2.0f, 1e-5f);
+}
+
 TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
   // A float pattern is a bump map's; as a roughness, it is refused where the material reads it.
   EXPECT_EQ(import_error(world(used_float_texture("Texture \"t\" \"float\" \"fbm\""))),
             "scene.pbrt:3:20: error: a procedural texture as \"roughness\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture roughness\" \"t\"\n                   ^~~~~~~~~~~~~~~~~~~\n"
             "help: only \"bumpmap\" reads a float texture here; the others take numbers\n");
-  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\""))),
-            "scene.pbrt:2:28: error: texture mapping \"spherical\" is not supported\n"
-            "Texture \"t\" \"color\" \"dots\" \"string mapping\" \"spherical\"\n"
+  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"dots\" \"string mapping\" \"cubic\""))),
+            "scene.pbrt:2:28: error: texture mapping \"cubic\" is unknown\n"
+            "Texture \"t\" \"color\" \"dots\" \"string mapping\" \"cubic\"\n"
             "                           ^~~~~~~~~~~~~~~~\n"
-            "help: supported: \"uv\" (the shape's own (u, v))\n");
+            "help: pbrt-v3 has \"uv\", \"spherical\", \"cylindrical\" and \"planar\" (and would use \"uv\")\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"checkerboard\" \"rgb tex1\" [2 0 0]"))),
             "scene.pbrt:2:36: error: \"tex1\" of Texture \"t\" must lie in [0, 1] in every channel\n"
             "Texture \"t\" \"color\" \"checkerboard\" \"rgb tex1\" [2 0 0]\n"

@@ -575,12 +575,12 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
             "Material \"plastic\" \"texture roughness\" \"t\"\n                   ^~~~~~~~~~~~~~~~~~~\n"
             "help: only \"bumpmap\" reads a float texture here; the others take numbers\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" "
-                                            "\"string mapping\" \"spherical\"")),
+                                            "\"string mapping\" \"sphere\"")),
                          with_images()),
-            "scene.pbrt:2:61: error: texture mapping \"spherical\" is not supported\n"
-            "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" \"string mapping\" \"spherical\"\n"
+            "scene.pbrt:2:61: error: texture mapping \"sphere\" is unknown\n"
+            "Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"grad.exr\" \"string mapping\" \"sphere\"\n"
             "                                                            ^~~~~~~~~~~~~~~~\n"
-            "help: supported: \"uv\" (the shape's own (u, v))\n");
+            "help: pbrt-v3 has \"uv\", \"spherical\", \"cylindrical\" and \"planar\" (and would use \"uv\")\n");
   EXPECT_EQ(import_error(world("Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"float uv\" [0 0 1 0]")),
             "scene.pbrt:2:63: error: \"float uv\" needs one (u, v) pair per vertex of \"point P\": 4 values for 3 "
             "vertices\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"float uv\" [0 0 1 0]\n"

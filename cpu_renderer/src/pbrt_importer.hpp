@@ -187,8 +187,8 @@ class Importer {
   TextureEntry convert_texture(const Directive& d, bool spectrum);
   int image_texture(const std::string& name, ParamSet& params, SourceRange at);
   // Mappings and procedural textures (pbrt_patterns.cpp).
-  UvMapping uv_mapping(ParamSet& params, SourceRange at);
-  SolidMapping solid_mapping(SourceRange at);
+  Mapping2D mapping_2d(ParamSet& params, SourceRange at);
+  SolidMapping solid_mapping(SourceRange at, bool in_texture_space = true);
   Reflectance pattern_colour(ParamSet& params, const char* name, double fallback, bool spectrum);
   std::optional<Pattern> pattern(const std::string& texture_class, ParamSet& params, SourceRange at, bool spectrum);
   Image read_image(const Param& filename);

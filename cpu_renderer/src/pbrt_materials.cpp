@@ -527,7 +527,7 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
   double scale = params.one_float("scale", 1);
   if (!(scale >= 0 && scale <= 1e6)) fail(at, "\"float scale\" of " + params.context() + " must lie in [0, 1e6]");
   texture.scale = static_cast<Real>(scale);
-  texture.mapping = uv_mapping(params, at);
+  texture.mapping = mapping_2d(params, at);
   std::string wrap_name = params.one_string("wrap", "repeat");
   TextureWrap wrap = TextureWrap::repeat;
   if (wrap_name == "black") wrap = TextureWrap::black;

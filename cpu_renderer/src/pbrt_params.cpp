@@ -100,6 +100,12 @@ std::optional<Triple> ParamSet::one_point(std::string_view name) {
   return Triple{param->numbers[0], param->numbers[1], param->numbers[2]};
 }
 
+std::optional<Triple> ParamSet::one_vector(std::string_view name) {
+  const Param* param = single(name, {ParamType::vector3}, 3);
+  if (!param) return std::nullopt;
+  return Triple{param->numbers[0], param->numbers[1], param->numbers[2]};
+}
+
 std::vector<double> ParamSet::floats(std::string_view name) {
   const Param* param = find(name, {ParamType::floating});
   return param ? param->numbers : std::vector<double>{};

@@ -40,6 +40,7 @@ class ParamSet {
   bool one_bool(std::string_view name, bool fallback);
   std::string one_string(std::string_view name, const std::string& fallback);
   std::optional<Triple> one_point(std::string_view name);
+  std::optional<Triple> one_vector(std::string_view name);
   std::vector<double> floats(std::string_view name);              // every value, any count
   // rgb/color, xyz, blackbody [temperature scale] and spectrum ([wavelength
   // value ...] pairs, or one of pbrt-v4's named metal spectra), converted as

@@ -21,33 +21,53 @@ double bounded(ParamSet& params, const char* name, double fallback, double low, 
 
 }  // namespace
 
-UvMapping Importer::uv_mapping(ParamSet& params, SourceRange at) {
-  std::string mapping = params.one_string("mapping", "uv");
-  if (mapping != "uv")
-    params.fail_at(*params.find("mapping", {ParamType::string}), "texture mapping \"" + mapping + "\" is not supported",
-                   "supported: \"uv\" (the shape's own (u, v))");
-  auto uv_number = [&](const char* parameter, double fallback) {
+// pbrt-v3's TextureMapping2D as its textures read it ("mapping", default "uv").
+Mapping2D Importer::mapping_2d(ParamSet& params, SourceRange at) {
+  auto number = [&](const char* parameter, double fallback) {
     double value = params.one_float(parameter, fallback);
     if (!(std::fabs(value) <= 1e6))
       fail(at, "\"float " + std::string(parameter) + "\" of " + params.context() + " must lie in [-1e6, 1e6]");
     return static_cast<Real>(value);
   };
-  UvMapping result;
-  result.u_scale = uv_number("uscale", 1);
-  result.v_scale = uv_number("vscale", 1);
-  result.u_offset = uv_number("udelta", 0);
-  result.v_offset = uv_number("vdelta", 0);
+  Mapping2D result;
+  const std::string kind = params.one_string("mapping", "uv");
+  if (kind == "uv") {
+    result.u_scale = number("uscale", 1);
+    result.v_scale = number("vscale", 1);
+  } else if (kind == "spherical" || kind == "cylindrical") {
+    result.kind = kind == "spherical" ? Mapping2D::Kind::spherical : Mapping2D::Kind::cylindrical;
+    result.space = solid_mapping(at);  // pbrt-v3's WorldToTexture: the inverse of the transform at the Texture
+    return result;
+  } else if (kind == "planar") {
+    result.kind = Mapping2D::Kind::planar;
+    result.space = solid_mapping(at, false);  // pbrt-v3 reads the point in its world
+    auto axis = [&](const char* parameter, Triple fallback) {
+      const Triple given = params.one_vector(parameter).value_or(fallback);
+      const glm::dvec3 v(given[0], given[1], given[2]);
+      if (!(glm::length(v) <= 1e6))
+        fail(at, "\"vector " + std::string(parameter) + "\" of " + params.context() + " must lie within 1e6 of 0");
+      return sg::vec3_rep(v);
+    };
+    result.s_axis = axis("v1", {1, 0, 0});
+    result.t_axis = axis("v2", {0, 1, 0});
+  } else {
+    params.fail_at(*params.find("mapping", {ParamType::string}), "texture mapping \"" + kind + "\" is unknown",
+                   "pbrt-v3 has \"uv\", \"spherical\", \"cylindrical\" and \"planar\" (and would use \"uv\")");
+  }
+  result.u_offset = number("udelta", 0);
+  result.v_offset = number("vdelta", 0);
   return result;
 }
 
 // pbrt-v3's IdentityMapping3D: a point in the space the transform stood for
-// at the Texture directive, in the scene file's length unit.
-SolidMapping Importer::solid_mapping(SourceRange at) {
-  const double determinant = glm::determinant(state_.transform.start);
-  if (!std::isnormal(determinant))
+// at the Texture directive (or, `in_texture_space` false, in pbrt's world), in
+// the scene file's length unit.
+SolidMapping Importer::solid_mapping(SourceRange at, bool in_texture_space) {
+  const Matrix texture_from_pbrt_world = in_texture_space ? glm::inverse(state_.transform.start) : Matrix(1.0);
+  if (in_texture_space && !std::isnormal(glm::determinant(state_.transform.start)))
     fail(at, "the transform in effect at this Texture is singular", "pbrt-v3 maps points into texture space by its inverse");
   // From our world (metres) to pbrt's world, then to texture space: pbrt units.
-  const Matrix texture_from_render_units = glm::inverse(state_.transform.start) * glm::inverse(world_from_pbrt_world_);
+  const Matrix texture_from_render_units = texture_from_pbrt_world * glm::inverse(world_from_pbrt_world_);
   const double unit = options_.metres_per_unit;
   const Matrix texture_from_render = Matrix(glm::dmat3(unit)) * texture_from_render_units;  // the same, in metres
   SolidMapping mapping;
@@ -86,7 +106,7 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
   if (texture_class == "checkerboard") {
     const int dimension = params.one_int("dimension", 2, 2, 3);
     if (dimension == 3) return SolidCheckerboardPattern{solid_mapping(at), value("tex1", 1), value("tex2", 0)};
-    CheckerboardPattern board{uv_mapping(params, at), value("tex1", 1), value("tex2", 0)};
+    CheckerboardPattern board{mapping_2d(params, at), value("tex1", 1), value("tex2", 0)};
     std::string mode = params.one_string("aamode", "closedform");
     board.box_filtered = mode != "none";
     if (mode != "none" && mode != "closedform")
@@ -95,7 +115,7 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
     return board;
   }
   if (texture_class == "dots")
-    return DotsPattern{uv_mapping(params, at), value("inside", 1), value("outside", 0)};
+    return DotsPattern{mapping_2d(params, at), value("inside", 1), value("outside", 0)};
   if (texture_class == "fbm" || texture_class == "wrinkled")
     return FbmPattern{solid_mapping(at), roughness(), octaves(), texture_class == "wrinkled"};
   if (texture_class == "windy") return WindyPattern{solid_mapping(at)};

@@ -6,6 +6,7 @@
 #include <concepts>
 
 #include "noise.hpp"
+#include "safegi/cpu_renderer/sampling.hpp"
 
 namespace safegi::render {
 namespace {
@@ -114,11 +115,10 @@ Reflectance sample(const MarblePattern& marble, NoisePoint p, Real footprint) {
 }
 
 template <class P>
-concept PlanarPattern = std::same_as<std::remove_cvref_t<decltype(P::mapping)>, UvMapping>;
+concept PlanarPattern = std::same_as<std::remove_cvref_t<decltype(P::mapping)>, Mapping2D>;
 
 NoisePoint solid_point(const SolidMapping& mapping, PointWorld position) {
-  const point<TextureSpace> origin = sg::from_raw<point<TextureSpace>>(sg::vec3_rep(0));
-  const sg::vec3_rep v = sg::raw((mapping.texture_from_render(position) - origin) / mapping.unit);
+  const sg::vec3_rep v = mapping.coordinates(position);
   return {v.x, v.y, v.z};
 }
 
@@ -128,6 +128,27 @@ Reflectance largest(Reflectance a, Reflectance b) {
 }
 
 }  // namespace
+
+sg::vec3_rep SolidMapping::coordinates(PointWorld position) const {
+  const point<TextureSpace> origin = sg::from_raw<point<TextureSpace>>(sg::vec3_rep(0));
+  return sg::raw((texture_from_render(position) - origin) / unit);
+}
+
+TextureCoordinates Mapping2D::at(Real u, Real v, PointWorld position) const {
+  if (kind == Kind::uv) return {u * u_scale + u_offset, v * v_scale + v_offset};
+  const sg::vec3_rep p = space.coordinates(position);
+  if (kind == Kind::planar) return {u_offset + glm::dot(p, s_axis), v_offset + glm::dot(p, t_axis)};
+  const Real length = glm::length(p);
+  const sg::vec3_rep d = length > 0 ? p / length : sg::vec3_rep(0, 0, 1);
+  if (kind == Kind::spherical) {
+    Real phi = std::atan2(d.y, d.x);
+    if (phi < 0) phi += 2 * kPi;
+    return {std::acos(std::clamp(d.z, Real(-1), Real(1))) / kPi, phi / (2 * kPi)};
+  }
+  return {(kPi + std::atan2(d.y, d.x)) / (2 * kPi), d.z};
+}
+
+Real Mapping2D::uv_scale() const { return kind == Kind::uv ? std::max(std::abs(u_scale), std::abs(v_scale)) : Real(0); }
 
 bool reads_uv(const Pattern& pattern) {
   return std::visit([](const auto& p) { return PlanarPattern<std::remove_cvref_t<decltype(p)>>; }, pattern);
@@ -141,9 +162,10 @@ Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) 
   return (std::visit(
       [&](const auto& p) {
         if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
-          const UvMapping& m = p.mapping;
-          return sample(p, m.s(at.u), m.t(at.v),
-                        at.uv_footprint * std::abs(m.u_scale), at.uv_footprint * std::abs(m.v_scale));
+          const Mapping2D& m = p.mapping;
+          const TextureCoordinates st = m.at(at.u, at.v, at.position);
+          const Real footprint = m.kind == Mapping2D::Kind::uv ? at.uv_footprint : Real(0);
+          return sample(p, st.s, st.t, footprint * std::abs(m.u_scale), footprint * std::abs(m.v_scale));
         } else {
           const Real footprint = at.width * p.mapping.stretch / p.mapping.unit;
           return sample(p, solid_point(p.mapping, at.position), footprint);

@@ -58,7 +58,38 @@ TEST(Noise, FootprintsDropTheOctavesFinerThanThem) {
 }
 
 CheckerboardPattern board(bool box_filtered) {
-  return CheckerboardPattern{UvMapping{}, grey(0.8f), grey(0.1f), box_filtered};
+  return CheckerboardPattern{Mapping2D{}, grey(0.8f), grey(0.1f), box_filtered};
+}
+
+// pbrt-v3's TextureMapping2D formulas (texture.cpp), at points whose answers are known: a texture space
+// that is the render world itself, in metres.
+TEST(ProceduralTexture, MappingsAsPbrtV3MapsPoints) {
+  auto at = [](const Mapping2D& m, float x, float y, float z) {
+    return m.at(0.3f, 0.7f, sg::from_raw<PointWorld>(sg::vec3_rep(x, y, z)));
+  };
+  auto expect_st = [](TextureCoordinates st, float s, float t, const char* what) {
+    EXPECT_NEAR(st.s, s, 1e-6f) << what;
+    EXPECT_NEAR(st.t, t, 1e-6f) << what;
+  };
+  Mapping2D uv;
+  uv.u_scale = 2;
+  uv.v_offset = 0.5f;
+  expect_st(at(uv, 9, 9, 9), 0.6f, 1.2f, "uv: (u·2, v + 0.5), whatever the point");
+  Mapping2D sphere;
+  sphere.kind = Mapping2D::Kind::spherical;
+  expect_st(at(sphere, 0, 0, 2), 0, 0, "spherical: the +z pole");
+  expect_st(at(sphere, 0, 3, 0), 0.5f, 0.25f, "spherical: θ = π/2, φ = π/2");
+  expect_st(at(sphere, -1, -1, 0), 0.5f, 0.625f, "spherical: φ = 5π/4, past 2π's wrap");
+  Mapping2D cylinder;
+  cylinder.kind = Mapping2D::Kind::cylindrical;
+  expect_st(at(cylinder, 0, 2, 1), 0.75f, 1 / std::sqrt(5.0f), "cylindrical: (π + π/2)/2π, d.z");
+  Mapping2D plane;
+  plane.kind = Mapping2D::Kind::planar;
+  plane.t_axis = sg::vec3_rep(0, 0, 1);
+  plane.u_offset = 0.5f;
+  expect_st(at(plane, 2, 3, 4), 2.5f, 4, "planar: udelta + p·v1, vdelta + p·v2");
+  EXPECT_EQ(plane.uv_scale(), 0.0f);  // not following (u, v): unfiltered
+  EXPECT_EQ(uv.uv_scale(), 2.0f);
 }
 
 TEST(ProceduralTexture, CheckerboardCellsAlternateOnBothSidesOfZero) {
@@ -96,7 +127,7 @@ TEST(ProceduralTexture, BoundsAndMeans) {
   EXPECT_NEAR(channel(mean_value(checks), 0), 0.45f, 1e-6);
   EXPECT_EQ(channel(largest_value(checks), 0), 0.8f);
   // Dots cover about half the cells, each a disc of radius 0.35: π·0.35²/2 ≈ 0.19.
-  const Pattern dots = DotsPattern{UvMapping{}, grey(1), grey(0)};
+  const Pattern dots = DotsPattern{Mapping2D{}, grey(1), grey(0)};
   EXPECT_NEAR(channel(mean_value(dots), 0), 0.19f, 0.06f);
   // Marble's spline stays inside its control points' hull, times 1.5.
   MarblePattern marble;

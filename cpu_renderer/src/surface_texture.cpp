@@ -112,12 +112,10 @@ Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit&
   }
   const ImageTexture& texture = scene_.textures[diffuse->texture];
   TexCoord at = uv(hit, time);
-  const UvMapping& m = texture.mapping;
-  const Real s = m.s(at.u), t = m.t(at.v);
-  if (texture.filter == TextureFilter::bilinear || !(width > sg::zero))
-    return diffuse->value * texture.mipmap->bilinear(0, s, t);
-  const Real footprint = width * uv_per_length_[hit.shape] * std::max(std::abs(m.u_scale), std::abs(m.v_scale));
-  return diffuse->value * texture.mipmap->trilinear(s, t, footprint);
+  const TextureCoordinates st = texture.mapping.at(at.u, at.v, hit.position);
+  const Real footprint = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();
+  if (texture.filter == TextureFilter::bilinear || !(footprint > 0)) return diffuse->value * texture.mipmap->bilinear(0, st.s, st.t);
+  return diffuse->value * texture.mipmap->trilinear(st.s, st.t, footprint);
 }
 
 namespace {
@@ -130,11 +128,11 @@ std::pair<DirectionWorld, DirectionWorld> perpendiculars(DirectionWorld n) {
   return {first, sg::normalize(sg::cross(n, first))};
 }
 
-// The luminance of a float image texture at (u, v), as pbrt-v3 converts an
-// image's RGB to a float texture (RGBSpectrum::y).
-Real luminance_at(const ImageTexture& texture, TexCoord at) {
-  const UvMapping& m = texture.mapping;
-  glm::vec3 rgb = sg::raw(texture.mipmap->bilinear(0, m.s(at.u), m.t(at.v)));
+// The luminance of a float image texture at (u, v) and `position`, as pbrt-v3
+// converts an image's RGB to a float texture (RGBSpectrum::y).
+Real luminance_at(const ImageTexture& texture, TexCoord at, PointWorld position) {
+  const TextureCoordinates st = texture.mapping.at(at.u, at.v, position);
+  glm::vec3 rgb = sg::raw(texture.mipmap->bilinear(0, st.s, st.t));
   return 0.212671f * rgb.x + 0.715160f * rgb.y + 0.072169f * rgb.z;
 }
 
@@ -191,7 +189,7 @@ NormalWorld SurfaceTextures::bumped_normal(const BumpMap& bump, const SurfaceHit
   // The displacement where the surface's (u, v) is `uv` and its point `p`
   // (pbrt-v3 shifts both: a solid pattern reads the point).
   auto displacement_at = [&](TexCoord uv, PointWorld p) -> Length {
-    if (bump.texture >= 0) return bump.scale * luminance_at(scene_.textures[bump.texture], uv);
+    if (bump.texture >= 0) return bump.scale * luminance_at(scene_.textures[bump.texture], uv, p);
     const PatternLookup lookup{.u = uv.u, .v = uv.v, .position = p};
     return bump.scale * evaluate_number(scene_.patterns[bump.pattern].pattern, lookup);
   };

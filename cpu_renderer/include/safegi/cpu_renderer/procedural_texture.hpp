@@ -9,6 +9,7 @@
 // below 0; above 1 a surface would reflect more than it receives).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <variant>
 
@@ -19,26 +20,44 @@ namespace safegi::render {
 struct TextureSpace : space_tag<"texture"> {};
 using TextureFromRender = map<World, TextureSpace>;
 
-// pbrt-v3's "uv" mapping: (s, t) = (u · u_scale + u_offset, v · v_scale + v_offset).
-struct UvMapping {
-  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
-  // The texture coordinates (s, t) of a surface's (u, v).
-  Real s(Real u) const { return u * u_scale + u_offset; }
-  Real t(Real v) const { return v * v_scale + v_offset; }
-};
-
 // Where a solid pattern reads a point: its texture-space position over `unit`.
 struct SolidMapping {
   TextureFromRender texture_from_render;
   Length unit = Real(1) * units::metre;  // one texture-space unit: the scene file's length unit
   Real stretch = 1.0f;                // how the map scales lengths (∛|det|), for footprints
+  // The point's texture-space coordinates, in `unit`s.
+  sg::vec3_rep coordinates(PointWorld position) const;
+};
+
+// A 2D texture's coordinates.
+struct TextureCoordinates {
+  Real s = 0.0f, t = 0.0f;
+};
+
+// pbrt-v3's TextureMapping2D: where a surface point reads a 2D texture.
+//   uv:          (s, t) = (u · u_scale + u_offset, v · v_scale + v_offset)
+//   spherical:   the direction d of the point from texture space's origin: (θ/π, φ/2π)
+//   cylindrical: (π + atan2(d.y, d.x)) / 2π, d.z
+//   planar:      (u_offset + p · s_axis, v_offset + p · t_axis), p the point in the
+//                scene file's world, in its length unit (pbrt-v3's PlanarMapping2D)
+struct Mapping2D {
+  enum class Kind : std::uint8_t { uv, spherical, cylindrical, planar };
+  Kind kind = Kind::uv;
+  Real u_scale = 1.0f, v_scale = 1.0f, u_offset = 0.0f, v_offset = 0.0f;
+  SolidMapping space;  // spherical, cylindrical: texture space; planar: the scene file's world
+  sg::vec3_rep s_axis{1, 0, 0}, t_axis{0, 1, 0};
+
+  TextureCoordinates at(Real u, Real v, PointWorld position) const;
+  // How far (s, t) moves per unit of the surface's (u, v), for footprints;
+  // zero where it does not follow (u, v): those lookups are unfiltered.
+  Real uv_scale() const;
 };
 
 // Alternating squares of side 1 in (s, t): `even` where ⌊s⌋ + ⌊t⌋ is even.
 // Box-filtered over the footprint in closed form (pbrt-v3's "closedform"), or
 // point-sampled (its "none").
 struct CheckerboardPattern {
-  UvMapping mapping;
+  Mapping2D mapping;
   Reflectance even{}, odd{};
   bool box_filtered = true;
 };
@@ -49,7 +68,7 @@ struct SolidCheckerboardPattern {
 };
 // A dot of radius 0.35 in about half the unit cells of (s, t), placed by noise.
 struct DotsPattern {
-  UvMapping mapping;
+  Mapping2D mapping;
   Reflectance inside{}, outside{};
 };
 // Grey of fractional Brownian motion (`fbm`) or turbulence (`wrinkled`).

@@ -24,7 +24,7 @@ struct ImageTexture {
   ColourSpace colour_space = ColourSpace::srgb;  // how the file encoded its values (decoded at load)
   TextureFilter filter = TextureFilter::trilinear;
   Real scale = 1.0f;  // multiplies every texel (pbrt's "scale")
-  UvMapping mapping;  // (u, v) to the lookup's (s, t)
+  Mapping2D mapping;  // the surface point to the lookup's (s, t)
   std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included
 };
 
