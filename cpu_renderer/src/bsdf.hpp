@@ -2,8 +2,9 @@
 // light leaves towards): Lambert, energy-conserving Phong, perfect mirror,
 // smooth glass (Fresnel reflection and refraction), pbrt's plastic (Lambert
 // plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe), rough metal
-// (the same lobe weighted by the conductor's Fresnel term) and pbrt-v3's
-// substrate (Ashikhmin and Shirley's FresnelBlend).
+// (the same lobe weighted by the conductor's Fresnel term), pbrt-v3's
+// substrate (Ashikhmin and Shirley's FresnelBlend) and pbrt-v3's translucent
+// (Lambert and a rough dielectric interface, reflecting and transmitting).
 #pragma once
 
 #include <cmath>
@@ -24,6 +25,9 @@ struct PhongLobe : space_tag<"phong_lobe"> {};
 // the lights: photons). Refraction compresses radiance by 1/η² but not flux.
 enum class Transport { radiance, importance };
 
+// pbrt-v3's translucent material's BxDFs, in the order it adds them.
+enum class TranslucentLobe { diffuse_reflection, diffuse_transmission, glossy_reflection, glossy_transmission };
+
 struct BsdfSample {
   DirectionShading wi;
   Reflectance weight;            // f · cos θ / pdf: what the path throughput is multiplied by
@@ -41,7 +45,7 @@ class Bsdf {
   // texture already applied; referenced, not copied: it must outlive the
   // Bsdf; ignored by materials without a diffuse part); `from_inside`: the
   // light leaves towards the side the geometric normal points away from
-  // (glass: the inside, so η is 1/ior there).
+  // (glass and translucent: the inside, so η is 1/ior there).
   Bsdf(const Material& material, const Reflectance& diffuse, bool from_inside)
       : model_(material.model), diffuse_(diffuse), from_inside_(from_inside) {
     std::visit(
@@ -51,6 +55,8 @@ class Bsdf {
           if constexpr (std::is_same_v<Model, PhongMaterial> || std::is_same_v<Model, PlasticMaterial>) {
             Real d = sg::average(diffuse), s = sg::average(model.specular);
             specular_probability_ = d + s > 0 ? s / (d + s) : 0.0f;
+          } else if constexpr (std::is_same_v<Model, TranslucentMaterial>) {
+            choose_translucent_lobes(model);
           }
         },
         model_);
@@ -59,14 +65,18 @@ class Bsdf {
   explicit Bsdf(const Material& material) : Bsdf(material, untextured_diffuse(material), false) {}
 
   bool is_specular() const { return render::is_specular(model_); }
+  // Non-specular light through the surface: eval() and pdf() have values
+  // below it (wi.z < 0), which light samples there must ask for.
+  bool transmits() const { return std::holds_alternative<TranslucentMaterial>(model_); }
 
   Brdf eval(DirectionShading wo, DirectionShading wi) const {
-    if (wo.z() <= 0 || wi.z() <= 0) return Brdf{};
+    if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return Brdf{};
     return std::visit(Overloaded{[&](const LambertMaterial&) { return lambert(diffuse_); },
                                  [&](const PhongMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
                                  [&](const SubstrateMaterial& m) { return substrate(m, wo, wi); },
+                                 [&](const TranslucentMaterial& m) { return translucent(m, wo, wi, Transport::radiance); },
                                  [](const MirrorMaterial&) { return Brdf{}; },
                                  [](const GlassMaterial&) { return Brdf{}; },
                                  [](const BlackMaterial&) { return Brdf{}; }},
@@ -74,12 +84,13 @@ class Bsdf {
   }
 
   PdfSolidAngle pdf(DirectionShading wo, DirectionShading wi) const {
-    if (wo.z() <= 0 || wi.z() <= 0) return sg::zero;
+    if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return sg::zero;
     return std::visit(Overloaded{[&](const LambertMaterial&) { return cosine_pdf(wi); },
                                  [&](const PhongMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor_pdf(m, wo, wi); },
                                  [&](const SubstrateMaterial& m) { return substrate_pdf(m, wo, wi); },
+                                 [&](const TranslucentMaterial& m) { return translucent_pdf(m, wo, wi); },
                                  [](const MirrorMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const GlassMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const BlackMaterial&) { return PdfSolidAngle(sg::zero); }},
@@ -114,6 +125,7 @@ class Bsdf {
                      if (wi.z() <= 0) return std::nullopt;  // before substrate(), which divides by cos θi
                      return weighted(wi, substrate(m, wo, wi), substrate_pdf(m, wo, wi));
                    },
+                   [&](const TranslucentMaterial& m) { return sample_translucent(m, wo, u_lobe, u1, u2, transport); },
                    [](const BlackMaterial&) -> Sampled { return std::nullopt; }},
         model_);
   }
@@ -155,10 +167,11 @@ class Bsdf {
 
   // The sample of a direction `wi` drawn with `density` (the whole strategy's,
   // per solid angle), the BSDF being `value` there: the path's throughput is
-  // multiplied by f cos θ / pdf. None below the surface or where the density vanishes.
+  // multiplied by f |cos θ| / pdf. None along the surface or where the density
+  // vanishes (the reflecting materials' callers turn away those below it).
   static std::optional<BsdfSample> weighted(DirectionShading wi, Brdf value, PdfSolidAngle density) {
-    if (wi.z() <= 0 || !(density > sg::zero)) return std::nullopt;
-    return BsdfSample{wi, value * sg::cos_theta(wi) / density, density, false};
+    if (wi.z() == 0 || !(density > sg::zero)) return std::nullopt;
+    return BsdfSample{wi, value * sg::abs_cos_theta(wi) / density, density, false};
   }
 
   // Phong: Lafortune & Willems' normalisation keeps the lobe's albedo <= specular.
@@ -234,6 +247,107 @@ class Bsdf {
     return 0.5f * (cosine_pdf(wi) + TrowbridgeReitz(substrate.alpha).visible_reflection_pdf(wo, half_vector(wo, wi)));
   }
 
+  // Translucent: pbrt-v3's TranslucentMaterial, its BSDF's lobes those with
+  // non-black factors (Kd, Ks, reflect, transmit: each checked alone, as
+  // pbrt-v3 does), so a texel of black Kd drops the diffuse lobes there.
+  void choose_translucent_lobes(const TranslucentMaterial& m) {
+    const bool diffuse = !sg::is_black(diffuse_), glossy = !sg::is_black(m.specular);
+    const bool back = !sg::is_black(m.reflect), through = !sg::is_black(m.transmit);
+    auto add = [&](bool present, TranslucentLobe lobe) {
+      if (present) lobes_[lobe_count_++] = lobe;
+    };
+    add(diffuse && back, TranslucentLobe::diffuse_reflection);
+    add(diffuse && through, TranslucentLobe::diffuse_transmission);
+    add(glossy && back, TranslucentLobe::glossy_reflection);
+    add(glossy && through, TranslucentLobe::glossy_transmission);
+  }
+  bool has_lobe(TranslucentLobe lobe) const {
+    for (int i = 0; i < lobe_count_; ++i)
+      if (lobes_[i] == lobe) return true;
+    return false;
+  }
+  // The interface's index on the far side over the near side's.
+  Real translucent_eta(const TranslucentMaterial& m) const { return from_inside_ ? 1 / m.ior : m.ior; }
+
+  // Above the surface reflect·(Kd/π + Ks F(ωi·h) D G / (4 cos θo cos θi)),
+  // pbrt-v3's FresnelDielectric reflection; below it transmit·(Kd/π + Ks (1 −
+  // F(ωo·h)) times Walter's refraction), times η² for importance, as pbrt-v3's
+  // MicrofacetTransmission in TransportMode::Importance.
+  Brdf translucent(const TranslucentMaterial& m, DirectionShading wo, DirectionShading wi, Transport transport) const {
+    const Real eta = translucent_eta(m);
+    const TrowbridgeReitz facets(m.alpha);
+    Brdf f{};
+    if (wi.z() > 0) {
+      f = lambert(diffuse_ * m.reflect);
+      if (has_lobe(TranslucentLobe::glossy_reflection)) {
+        const DirectionShading h = half_vector(wo, wi);
+        f += m.reflect * m.specular * fresnel_dielectric(sg::dot(wi, h), eta) * facets.reflection(wo, wi, h);
+      }
+      return f;
+    }
+    f = lambert(diffuse_ * m.transmit);
+    if (has_lobe(TranslucentLobe::glossy_transmission)) {
+      const DirectionShading h = transmission_half_vector(wo, wi, eta);
+      const Real importance = transport == Transport::importance ? eta * eta : Real(1);
+      f += m.transmit * m.specular * ((1 - fresnel_dielectric(sg::dot(wo, h), eta)) * importance) *
+           facets.transmission(wo, wi, h, eta);
+    }
+    return f;
+  }
+  // pbrt-v3's BSDF::Pdf: the lobes' densities averaged (a lobe of the other
+  // side has none), since one is chosen uniformly.
+  PdfSolidAngle translucent_pdf(const TranslucentMaterial& m, DirectionShading wo, DirectionShading wi) const {
+    if (lobe_count_ == 0) return sg::zero;
+    const TrowbridgeReitz facets(m.alpha);
+    const bool above = wi.z() > 0;
+    const DirectionShading h = above ? half_vector(wo, wi) : transmission_half_vector(wo, wi, translucent_eta(m));
+    PdfSolidAngle sum = sg::zero;
+    for (int i = 0; i < lobe_count_; ++i) {
+      switch (lobes_[i]) {
+        case TranslucentLobe::diffuse_reflection:
+          if (above) sum += cosine_pdf(wi);
+          break;
+        case TranslucentLobe::diffuse_transmission:
+          if (!above) sum += cosine_pdf(-wi);
+          break;
+        case TranslucentLobe::glossy_reflection:
+          if (above) sum += facets.visible_reflection_pdf(wo, h);
+          break;
+        case TranslucentLobe::glossy_transmission:
+          if (!above) sum += facets.visible_transmission_pdf(wo, wi, h, translucent_eta(m));
+          break;
+      }
+    }
+    return sum / static_cast<Real>(lobe_count_);
+  }
+  // pbrt-v3's BSDF::Sample_f: a lobe chosen uniformly by u_lobe, its
+  // direction drawn as its BxDF draws it (visible normals for both glossy
+  // ones), weighed by the whole f and the averaged pdf.
+  std::optional<BsdfSample> sample_translucent(const TranslucentMaterial& m, DirectionShading wo, Real u_lobe, Real u1,
+                                               Real u2, Transport transport) const {
+    if (lobe_count_ == 0) return std::nullopt;
+    const TrowbridgeReitz facets(m.alpha);
+    const int chosen = std::min(static_cast<int>(u_lobe * static_cast<Real>(lobe_count_)), lobe_count_ - 1);
+    std::optional<DirectionShading> wi;
+    switch (lobes_[chosen]) {
+      case TranslucentLobe::diffuse_reflection:
+        wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+        break;
+      case TranslucentLobe::diffuse_transmission:
+        wi = -from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+        break;
+      case TranslucentLobe::glossy_reflection:
+        wi = facets.sample_visible_reflection(wo, u1, u2);
+        if (wi->z() <= 0) return std::nullopt;  // reflected below the surface
+        break;
+      case TranslucentLobe::glossy_transmission:
+        wi = facets.sample_visible_transmission(wo, translucent_eta(m), u1, u2);
+        if (!wi || wi->z() >= 0) return std::nullopt;  // totally reflected, or refracted above the surface
+        break;
+    }
+    return weighted(*wi, translucent(m, wo, *wi, transport), translucent_pdf(m, wo, *wi));
+  }
+
   // Reflection by the smooth interface or refraction through it, chosen with
   // the Fresnel probability, so that the weight is the tint alone (and 1/η²
   // for radiance crossing into a denser medium).
@@ -253,6 +367,8 @@ class Bsdf {
   const Reflectance& diffuse_;
   bool from_inside_;
   Real specular_probability_ = 0;
+  TranslucentLobe lobes_[4] = {};  // translucent: its lobes, lobe_count_ of them
+  int lobe_count_ = 0;
 };
 
 }  // namespace safegi::render

@@ -11,27 +11,12 @@
 #include <random>
 #include <vector>
 
+#include "bsdf_test_support.hpp"
+
 namespace safegi::render {
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
-
-DirectionShading spherical(double theta, double phi) {
-  return DirectionShading(static_cast<Real>(std::sin(theta) * std::cos(phi)),
-                          static_cast<Real>(std::sin(theta) * std::sin(phi)), static_cast<Real>(std::cos(theta)));
-}
-
-// ∫ g(ω) dω over the upper hemisphere by the midpoint rule in (θ, φ).
-template <class G>
-double hemisphere_integral(G g, int theta_steps = 1500, int phi_steps = 240) {
-  double sum = 0;
-  const double dtheta = kPiD / 2 / theta_steps, dphi = 2 * kPiD / phi_steps;
-  for (int i = 0; i < theta_steps; ++i) {
-    double theta = (i + 0.5) * dtheta;
-    for (int j = 0; j < phi_steps; ++j) sum += g(spherical(theta, (j + 0.5) * dphi)) * std::sin(theta) * dtheta * dphi;
-  }
-  return sum;
-}
+using namespace bsdf_test;
 
 TEST(Fresnel, NormalIncidenceIsTheSquaredIndexContrast) {
   for (double n : {1.33, 1.5, 2.42}) {

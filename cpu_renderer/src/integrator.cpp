@@ -24,15 +24,22 @@ struct SurfaceScatter {
   const ShadingFrame& frame;
   DirectionShading wo;
   NormalWorld normal;  // the geometric one, on wo's side
-  bool perturbed;      // the frame's normal is a bump map's or interpolated: light from below the geometric surface does not count
+  // The frame's normal is a bump map's or interpolated: light whose side of
+  // the geometric surface is not its side of the shading one does not count.
+  bool perturbed;
 
   std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
     DirectionShading wi = frame.to_local(wi_world);
-    if (wi.z() <= 0) return std::nullopt;
-    if (perturbed && sg::dot(normal, wi_world) <= sg::zero) return std::nullopt;  // the shading hemisphere reaches below the surface
+    const bool above = wi.z() > 0;
+    if (!above && !bsdf.transmits()) return std::nullopt;
+    // Reflection or transmission is the geometric normal's to say, as in
+    // pbrt-v3; where the shading frame puts the light on the other side nothing
+    // counts (pbrt-v3's microfacet lobes have nothing there; its Lambertian
+    // ones, with no hemisphere of their own, would count it).
+    if (perturbed && (sg::dot(normal, wi_world) > sg::zero) != above) return std::nullopt;
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) return std::nullopt;
-    return f * sg::cos_theta(wi);
+    return f * sg::abs_cos_theta(wi);
   }
   PdfSolidAngle pdf(DirectionWorld wi) const { return bsdf.pdf(wo, frame.to_local(wi)); }
 };

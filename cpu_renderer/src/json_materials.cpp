@@ -167,9 +167,24 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     substrate.specular = reflectance(required(value, path, "specular"), path.field("specular"));
     substrate.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
     material.model = substrate;
+  } else if (type == "translucent") {
+    object(value, path, {"type", "diffuse", "specular", "reflect", "transmit", "alpha"});
+    TranslucentMaterial translucent;
+    translucent.diffuse = textured_reflectance(required(value, path, "diffuse"), path.field("diffuse"));
+    translucent.specular = reflectance(required(value, path, "specular"), path.field("specular"));
+    translucent.reflect = reflectance(required(value, path, "reflect"), path.field("reflect"));
+    translucent.transmit = reflectance(required(value, path, "transmit"), path.field("transmit"));
+    translucent.alpha = number(required(value, path, "alpha"), path.field("alpha"), 1e-4, 1);
+    // Both parts send reflect + transmit of what they scatter: seen from the
+    // outside, the surface scatters at most this product.
+    if (sg::max_component((largest_diffuse(translucent.diffuse) + translucent.specular) *
+                          (translucent.reflect + translucent.transmit)) > 1.0f)
+      fail(path, "(diffuse + specular) * (reflect + transmit) must not exceed 1 in any channel (energy conservation)");
+    material.model = translucent;
   } else {
     fail(path.field("type"),
-         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\" or \"substrate\", got " +
+         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\", \"substrate\" or "
+         "\"translucent\", got " +
              short_dump(value["type"]));
   }
   return material;

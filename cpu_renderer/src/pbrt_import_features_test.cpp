@@ -18,8 +18,6 @@ namespace {
 
 using namespace pbrt_test;
 
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
-
 // A mesh's area and its area-weighted winding normal (world space, metres).
 struct MeshMeasure {
   double area = 0;
@@ -666,7 +664,7 @@ TEST(PbrtImport, MissingIntegratorsAreSubstitutedByName) {
 TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   PbrtScene scene = import(world(
       "Texture \"odd\" \"spectrum\" \"ptex\"\n"
-      "Material \"translucent\"\n"
+      "Material \"disney\"\n"
       "Material \"matte\" \"texture Kd\" \"odd\"\n"
       "MakeNamedMaterial \"m\" \"string type\" \"fourier\"\n"
       "MakeNamedMaterial \"m\" \"string type\" \"matte\" \"rgb Kd\" [0.2 0.3 0.4]\n"
@@ -674,10 +672,10 @@ TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   ASSERT_EQ(scene.scene.shapes.size(), 1u);
   EXPECT_EQ(sg::raw(diffuse(scene.scene.materials.at(scene.scene.shapes[0].material)).value),
             glm::vec3(0.2f, 0.3f, 0.4f));
-  EXPECT_EQ(import_error(world("Material \"translucent\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
-            "scene.pbrt:2:10: error: material \"translucent\" is not supported\nMaterial \"translucent\"\n"
-            "         ^~~~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
-            "\"uber\"\n");
+  EXPECT_EQ(import_error(world("Material \"disney\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
+            "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
+            "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
+            "\"translucent\", \"uber\"\n");
   EXPECT_EQ(import_error(world("Texture \"odd\" \"spectrum\" \"ptex\"\nMaterial \"plastic\" \"texture Kd\" \"odd\"\n"
                                "Shape \"sphere\"")),
             "scene.pbrt:2:26: error: texture \"ptex\" is not supported\nTexture \"odd\" \"spectrum\" \"ptex\"\n"
@@ -802,7 +800,7 @@ TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
   EXPECT_EQ(import_error(world(used("Texture \"t\" \"color\" \"fbm\"\nMaterial \"mirror\" \"texture Kr\" \"t\""))),
             "scene.pbrt:3:19: error: a procedural texture as \"Kr\" of Material \"mirror\" is not supported\n"
             "Material \"mirror\" \"texture Kr\" \"t\"\n                  ^~~~~~~~~~~~\n"
-            "help: only diffuse reflectances (\"Kd\" of matte, plastic, substrate and uber) take textures here\n");
+            "help: only diffuse reflectances (\"Kd\" of matte, plastic, substrate, translucent and uber) take textures here\n");
 }
 
 }  // namespace

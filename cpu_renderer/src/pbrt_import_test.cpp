@@ -134,10 +134,10 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:7: error: shape \"curve\" is not supported\nShape \"curve\"\n      ^~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
             "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"\n");
-  EXPECT_EQ(import_error(world(used("Material \"translucent\""))),
-            "scene.pbrt:2:10: error: material \"translucent\" is not supported\nMaterial \"translucent\"\n"
-            "         ^~~~~~~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
-            "\"uber\"\n");
+  EXPECT_EQ(import_error(world(used("Material \"disney\""))),
+            "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
+            "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
+            "\"translucent\", \"uber\"\n");
   EXPECT_EQ(import_error(world(used("Material \"matte\" \"float sigma\" [20]"))),
             "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
             "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");
@@ -483,8 +483,6 @@ TEST(PbrtImport, GlassKeepsPbrtsOutside) {
 
 // Images in memory, by file name: "grad.exr" is 1×2 linear (top row 0.2, bottom
 // row 0.8), "paint.png" 1×1 sRGB-encoded 0.5, "hot.exr" 1×1 of 4.
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
-
 PbrtImportOptions with_images() {
   PbrtImportOptions options = in_memory();
   options.read_image = [](const std::filesystem::path& path) {
@@ -560,7 +558,7 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(import_error(world(used(hot + "Material \"plastic\" \"texture Ks\" \"h\"")), with_images()),
             "scene.pbrt:3:20: error: an image texture as \"Ks\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture Ks\" \"h\"\n                   ^~~~~~~~~~~~\n"
-            "help: only diffuse reflectances (\"Kd\" of matte, plastic, substrate and uber) take textures here\n");
+            "help: only diffuse reflectances (\"Kd\" of matte, plastic, substrate, translucent and uber) take textures here\n");
   // A format pbrt-v3 does not read is read all the same (the reader decides), with a warning.
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"color\" \"imagemap\" \"string filename\" \"photo.jpg\"")), with_images()),
             "scene.pbrt:2:50: error: cannot read image 'dir/photo.jpg': no such file\n"

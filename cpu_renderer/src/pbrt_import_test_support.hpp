@@ -64,6 +64,8 @@ inline std::string import_error(const std::string& text, const PbrtImportOptions
   return "(no error)";
 }
 
+inline std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
 // The smallest complete scene around some world-block text.
 inline std::string world(const std::string& body) { return "WorldBegin\n" + body + "\nWorldEnd\n"; }
 

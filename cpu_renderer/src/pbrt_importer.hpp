@@ -170,6 +170,7 @@ class Importer {
   static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
   MaterialModel metal(ParamSet& params, SourceRange at);
   MaterialModel substrate(ParamSet& params, SourceRange at);
+  MaterialModel translucent(ParamSet& params, SourceRange at);
   IndexSpectrum index_spectrum(ParamSet& params, const char* name, const Rgb& fallback, bool zero_allowed);
   static double isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at,
                                     bool reads_roughness = true);

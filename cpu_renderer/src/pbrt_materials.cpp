@@ -1,5 +1,6 @@
 // The importer's materials and textures: pbrt-v3's matte, mirror, plastic,
-// glass, metal, substrate and the matte/plastic/glass subsets of uber (src/materials/*.cpp), and
+// glass, metal, substrate, translucent and the matte/plastic/glass subsets of
+// uber (src/materials/*.cpp), and
 // its constant, imagemap and scale textures (src/textures/*.cpp), mapped onto
 // the Scene's materials and image textures. What the Scene cannot represent
 // is an error at the parameter or name that asks for it.
@@ -34,12 +35,13 @@ constexpr MaterialParams kMaterialParams[] = {
     {"glass", {"Kr", "Kt", "eta", "index", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
     {"metal", {"eta", "k", "roughness", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
     {"substrate", {"Kd", "Ks", "uroughness", "vroughness", "remaproughness", "bumpmap"}},
+    {"translucent", {"Kd", "Ks", "reflect", "transmit", "roughness", "remaproughness", "bumpmap"}},
     {"uber",
      {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
       "bumpmap"}},
 };
 constexpr const char* kSupportedMaterials =
-    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"uber\"";
+    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"translucent\", \"uber\"";
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
@@ -191,7 +193,7 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   if (entry.textured()) {
     if (!allow_image)
       refuse_texture(params, *param, entry, name,
-                     "only diffuse reflectances (\"Kd\" of matte, plastic, substrate and uber) take textures here");
+                     "only diffuse reflectances (\"Kd\" of matte, plastic, substrate, translucent and uber) take textures here");
     sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
     for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
   }
@@ -300,6 +302,8 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     material.model = metal(params, at);
   } else if (type == "substrate") {
     material.model = substrate(params, at);
+  } else if (type == "translucent") {
+    material.model = translucent(params, at);
   }
   return material;
 }
@@ -381,6 +385,33 @@ MaterialModel Importer::substrate(ParamSet& params, SourceRange at) {
   u = isotropic_roughness(u, v, params, at, false);
   if (black(kd) && sg::is_black(ks)) return BlackMaterial{};
   return SubstrateMaterial{kd, ks, checked_alpha(microfacet_alpha(u, remap), params, at)};
+}
+
+// pbrt-v3's translucent (src/materials/translucent.cpp): "Kd" 0.25 (textured
+// as matte's) and "Ks" 0.25, each split by "reflect" and "transmit" (0.5
+// each) into lobes back and through, the glossy ones a Trowbridge–Reitz
+// distribution of "roughness" 0.1, remapped by default, on an interface of
+// index 1.5. No BxDF, so black, when reflect and transmit are both black, or
+// Kd and Ks are.
+MaterialModel Importer::translucent(ParamSet& params, SourceRange at) {
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+  Reflectance ks = reflectance(params, "Ks", 0.25);
+  Reflectance reflect = reflectance(params, "reflect", 0.5), transmit = reflectance(params, "transmit", 0.5);
+  bool remap = params.one_bool("remaproughness", true);
+  Real alpha = checked_alpha(roughness_alpha(params, "roughness", 0.1, remap), params, at);
+  if ((black(kd) && sg::is_black(ks)) || (sg::is_black(reflect) && sg::is_black(transmit))) return BlackMaterial{};
+  // Each part sends reflect + transmit of what it scatters, so that bounds the
+  // whole from the outside (from the inside, refraction concentrates radiance
+  // by up to 1.5², as at any interface into a denser medium).
+  sg::vec3_rep largest = sg::raw(kd.value);
+  if (kd.textured()) largest *= sg::raw(texture_maximum(kd.texture, kd.pattern));
+  const sg::vec3_rep bound = (largest + sg::raw(ks)) * (sg::raw(reflect) + sg::raw(transmit));
+  if (std::max({bound.x, bound.y, bound.z}) > 1)  // pbrt-v3 renders it as it is: so do we
+    warn(at, "(\"Kd\" + \"Ks\") * (\"reflect\" + \"transmit\") of " + params.context() + " exceeds 1 in a channel (" +
+                 format_number(std::max({bound.x, bound.y, bound.z})) +
+                 "): the surface may scatter more light than it receives",
+         "rendered as pbrt-v3 renders it; lower them for a surface that conserves energy");
+  return TranslucentMaterial{kd, ks, reflect, transmit, alpha, 1.5f};
 }
 
 MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {

@@ -144,6 +144,7 @@ Radiance PhotonMap::estimate(const SurfaceHit& hit, const ShadingFrame& frame, c
   const int64_t cx = static_cast<int64_t>(std::floor(p.x)), cy = static_cast<int64_t>(std::floor(p.y)),
                 cz = static_cast<int64_t>(std::floor(p.z));
   const quantity<dim::area> radius2 = radius_ * radius_;
+  const bool transmits = bsdf.transmits();
   int64_t visited[27];
   int visited_count = 0;
   for (int dz = -1; dz <= 1; ++dz)
@@ -157,9 +158,16 @@ Radiance PhotonMap::estimate(const SurfaceHit& hit, const ShadingFrame& frame, c
           const Photon& photon = photons_[i];
           quantity<dim::area> d2 = sg::distance_squared(photon.position, hit.position);
           if (!(d2 < radius2)) continue;
-          // Photons of another surface orientation (a corner, the far side of a thin wall) do not count.
-          if (sg::dot(photon.normal, frame.normal()) < Real(0.5)) continue;
-          Brdf f = bsdf.eval(wo, frame.to_local(photon.towards_light));
+          // Photons of another surface orientation (a corner) do not count,
+          // nor those on the far side (of a thin wall) unless the surface lets
+          // light through; a photon counts on the side it arrived from, which
+          // a perturbed shading frame must agree with.
+          const Real facing = sg::dot(photon.normal, frame.normal());
+          const bool near_side = facing >= Real(0.5);
+          if (!near_side && !(transmits && facing <= Real(-0.5))) continue;
+          const DirectionShading wi = frame.to_local(photon.towards_light);
+          if ((wi.z() > 0) != near_side) continue;
+          Brdf f = bsdf.eval(wo, wi);
           reflected += f * photon.flux * cone_kernel(sg::sqrt(d2), radius_);
         }
       }

@@ -48,8 +48,9 @@ class PhotonMap {
   PhotonMap(const Scene& scene, const Geometry& geometry, const Lights& lights, const SurfaceTextures& textures,
             const RenderSettings& settings, uint32_t seed);
 
-  // Radiance reflected towards wo at `hit` (its normal facing wo) by the
-  // photons within the radius, through `bsdf` in `frame`.
+  // Radiance scattered towards wo at `hit` (its normal facing wo) by the
+  // photons within the radius, through `bsdf` in `frame`: those that landed on
+  // wo's side, and where the BSDF transmits (translucent) those on the other.
   Radiance estimate(const SurfaceHit& hit, const ShadingFrame& frame, const Bsdf& bsdf, DirectionShading wo) const;
 
   size_t size() const { return photons_.size(); }

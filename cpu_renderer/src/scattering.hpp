@@ -1,8 +1,8 @@
 // The physics under the materials: Fresnel reflectance of a smooth dielectric
 // or conductor interface, refraction, and the Trowbridge–Reitz (GGX)
 // microfacet distribution with Smith's masking, the sampling of its normals
-// (all, or those a direction sees) and the Torrance–Sparrow reflection it
-// gives, in the local shading space (normal = +z).
+// (all, or those a direction sees) and the Torrance–Sparrow reflection and
+// Walter et al.'s refraction it gives, in the local shading space (normal = +z).
 #pragma once
 
 #include <algorithm>
@@ -63,6 +63,15 @@ inline std::optional<DirectionShading> refract(DirectionShading wo, Real eta) {
   if (sin2_t >= 1) return std::nullopt;
   const Real cos_t = std::sqrt(std::max(Real(0), 1 - sin2_t));
   return DirectionShading(-wo.x() / eta, -wo.y() / eta, -cos_t);
+}
+// The same through a microfacet of normal h (ωo·h > 0): the tangential part
+// shrinks by 1/η, the rest goes on along −h.
+inline std::optional<DirectionShading> refract(DirectionShading wo, DirectionShading h, Real eta) {
+  const Real along = sg::dot(wo, h);
+  const Real sin2_t = std::max(Real(0), 1 - along * along) / (eta * eta);
+  if (sin2_t >= 1) return std::nullopt;
+  const Real depth = std::sqrt(std::max(Real(0), 1 - sin2_t));
+  return sg::normalize(wo * (-1 / eta) + h * (along / eta - depth));
 }
 
 // The isotropic Trowbridge–Reitz (GGX) distribution of microfacet normals h
@@ -155,6 +164,34 @@ class TrowbridgeReitz {
   }
   PdfSolidAngle visible_reflection_pdf(DirectionShading wo, DirectionShading h) const;
 
+  // Walter et al.'s refraction by facets that let everything through, for
+  // radiance: D(h) G(ωo, ωi) |ωo·h| |ωi·h| / (|cos θo cos θi| (ωo·h + η ωi·h)²),
+  // h the refraction's half vector, η = n_far / n_near (ωo's side is near);
+  // a material multiplies it by 1 − F(ωo·h). Only facets ωo sees and ωi
+  // leaves from behind count (ωo·h > 0 > ωi·h): the ones sampling draws. The
+  // η² by which pbrt-v3's MicrofacetTransmission and Walter's BTDF start
+  // cancels against the 1/η² of radiance crossing into the far side, so that
+  // only importance (photons' flux) carries it: there the caller multiplies by η².
+  quantity<dim::brdf> transmission(DirectionShading wo, DirectionShading wi, DirectionShading h, Real eta) const {
+    const Real o_h = sg::dot(wo, h), i_h = sg::dot(wi, h);
+    if (!(o_h > 0 && i_h < 0)) return sg::zero;
+    const Real across = o_h + eta * i_h;
+    return masking_shadowing(wo, wi) * std::abs(o_h * i_h / (wo.z() * wi.z() * across * across)) * density(h);
+  }
+  // ωo refracted through a visible normal (pbrt-v3's
+  // MicrofacetTransmission::Sample_f); nothing under total internal reflection.
+  std::optional<DirectionShading> sample_visible_transmission(DirectionShading wo, Real eta, Real u1, Real u2) const {
+    return refract(wo, sample_visible_normal(wo, u1, u2), eta);
+  }
+  // Its density per solid angle of ωi: the visible normal's density times
+  // dω_h/dω_i = η² |ωi·h| / (ωo·h + η ωi·h)².
+  PdfSolidAngle visible_transmission_pdf(DirectionShading wo, DirectionShading wi, DirectionShading h, Real eta) const {
+    const Real o_h = sg::dot(wo, h), i_h = sg::dot(wi, h);
+    if (!(o_h > 0 && i_h < 0)) return sg::zero;
+    const Real across = o_h + eta * i_h;
+    return visible_normal_pdf(wo, h) * std::abs(eta * eta * i_h / (across * across));
+  }
+
  private:
   Real lambda(DirectionShading w) const {
     const Real cos2 = w.z() * w.z();
@@ -169,6 +206,13 @@ class TrowbridgeReitz {
 // The half vector of a reflection, on the normal's side.
 inline DirectionShading half_vector(DirectionShading wo, DirectionShading wi) {
   return sg::normalize(wo + wi);
+}
+
+// The microfacet normal that refracts ωo into ωi on the other side, eta =
+// n_far / n_near: pbrt-v3's ωo + η ωi, turned to the normal's side.
+inline DirectionShading transmission_half_vector(DirectionShading wo, DirectionShading wi, Real eta) {
+  const DirectionShading h = sg::normalize(wo * Real(1) + wi * eta);
+  return h.z() < 0 ? -h : h;
 }
 
 // dω_h / dω_i for reflection about h: 1 / (4 |ωo·h|). Both measures are solid

@@ -83,7 +83,7 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
             "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
-            "\"conductor\" or \"substrate\", got \"wood\"");
+            "\"conductor\", \"substrate\" or \"translucent\", got \"wood\"");
 }
 
 TEST_F(LoaderFiles, Conductor) {
@@ -144,6 +144,41 @@ TEST_F(LoaderFiles, Substrate) {
             "test.json: materials.m.alpha: expected a number in [0.0001, 1], got 2");
   EXPECT_EQ(substrate_error(R"j("diffuse": 0.5, "specular": 0.5, "alpha": 0.1, "ior": 1.5)j"),
             "test.json: materials.m.ior: unknown field (expected one of: type, diffuse, specular, alpha)");
+}
+
+// pbrt-v3's translucent, every parameter given (the loader has no defaults);
+// seen from outside it scatters at most (diffuse + specular) * (reflect +
+// transmit), which must not exceed 1. A texture may stand for the diffuse part.
+TEST_F(LoaderFiles, Translucent) {
+  Scene scene = load(with_camera(R"j("materials": {
+      "t": {"type": "translucent", "diffuse": [0.7, 0.5, 0.3], "specular": 0.2, "reflect": [0.3, 0.4, 0.5],
+            "transmit": 0.6, "alpha": 0.05}})j"));
+  ASSERT_EQ(scene.materials.size(), 1u);
+  const TranslucentMaterial& translucent = std::get<TranslucentMaterial>(scene.materials[0].model);
+  EXPECT_EQ(sg::raw(translucent.diffuse.value), glm::vec3(0.7f, 0.5f, 0.3f));
+  EXPECT_FALSE(translucent.diffuse.textured());
+  EXPECT_EQ(sg::raw(translucent.specular), glm::vec3(0.2f));
+  EXPECT_EQ(sg::raw(translucent.reflect), glm::vec3(0.3f, 0.4f, 0.5f));
+  EXPECT_EQ(sg::raw(translucent.transmit), glm::vec3(0.6f));
+  EXPECT_FLOAT_EQ(translucent.alpha, 0.05f);
+  EXPECT_FLOAT_EQ(translucent.ior, 1.5f);  // pbrt-v3's, not a parameter
+  auto translucent_error = [&](const std::string& fields) {
+    return error(with_camera(R"j("materials": {"m": {"type": "translucent", )j" + fields + "}}"));
+  };
+  EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "transmit": 0.5, "alpha": 0.1)j"),
+            "test.json: materials.m: missing field 'reflect'");
+  EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "alpha": 0.1)j"),
+            "test.json: materials.m: missing field 'transmit'");
+  EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "transmit": 1.5, "alpha": 0.1)j"),
+            "test.json: materials.m.transmit: reflectance must lie in [0, 1], got 1.5");
+  EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "transmit": 0.5, "alpha": 0)j"),
+            "test.json: materials.m.alpha: expected a number in [0.0001, 1], got 0");
+  // 0.8 * (0.7 + 0.6) = 1.04 in the red channel.
+  EXPECT_EQ(translucent_error(R"j("diffuse": [0.7, 0.1, 0.1], "specular": 0.1, "reflect": 0.7, "transmit": 0.6, "alpha": 0.1)j"),
+            "test.json: materials.m: (diffuse + specular) * (reflect + transmit) must not exceed 1 in any channel "
+            "(energy conservation)");
+  EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "transmit": 0.5, "alpha": 0.1, "ior": 1.3)j"),
+            "test.json: materials.m.ior: unknown field (expected one of: type, diffuse, specular, reflect, transmit, alpha)");
 }
 
 TEST_F(LoaderFiles, ImageTextures) {

@@ -277,6 +277,9 @@ struct Preview::Impl {
         "plastic is drawn as its diffuse layer, without its coating's reflection");
     add(names_of([](const Material& m) { return std::holds_alternative<SubstrateMaterial>(m.model); }),
         "substrate is drawn as its diffuse layer (Kd), without its coating's reflection");
+    add(names_of([](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model); }),
+        "translucent is drawn as its diffuse reflection (reflect times Kd), without its glossy lobes or the light it "
+        "lets through");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
@@ -305,6 +308,9 @@ struct Preview::Impl {
                                  },
                                  [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [&](const SubstrateMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const TranslucentMaterial& m) -> Lit {
+                                   return LitSurface{preview_diffuse(m.diffuse) * m.reflect, {}};
+                                 },
                                  [](const MirrorMaterial&) -> Lit { return std::nullopt; },
                                  [](const GlassMaterial&) -> Lit { return std::nullopt; },
                                  [](const ConductorMaterial&) -> Lit { return std::nullopt; },

@@ -82,10 +82,24 @@ struct SubstrateMaterial {
   Reflectance specular{};       // pbrt's Ks: the coat's reflectance at normal incidence
   Real alpha = 0.001f;          // the coat's GGX roughness alpha (pbrt-v3's floor: 0.001)
 };
+// pbrt-v3's translucent: a surface that scatters to both sides, Lambert's
+// and a rough dielectric interface's (Trowbridge–Reitz; index 1.5 on the side
+// the geometric normal points away from, as glass's inside), each lobe
+// weighted by `reflect` or `transmit`: reflect·Kd and transmit·Kd diffusely,
+// reflect·Ks·F and transmit·Ks·(1 − F) through the microfacets. Sampled as
+// pbrt-v3 samples it: one of its non-black lobes, each as likely.
+struct TranslucentMaterial {
+  TexturedReflectance diffuse;  // pbrt's Kd
+  Reflectance specular{};       // pbrt's Ks
+  Reflectance reflect{};        // the share of either part that goes back
+  Reflectance transmit{};       // the share of either part that goes through
+  Real alpha = 0.001f;          // the microfacets' GGX roughness alpha (pbrt-v3's floor: 0.001)
+  Real ior = 1.5f;              // the interface's index, inside over outside (pbrt-v3 fixes 1.5)
+};
 struct BlackMaterial {};  // absorbs everything
 
 using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
-                                   GlassMaterial, ConductorMaterial, SubstrateMaterial>;
+                                   GlassMaterial, ConductorMaterial, SubstrateMaterial, TranslucentMaterial>;
 
 // pbrt-v3's bump map: the surface displaced along its normal by `scale` times
 // the luminance of an image texture at (u, v), or a float pattern's value at
@@ -103,7 +117,7 @@ struct Material {
   std::optional<BumpMap> bump;
 };
 
-// The diffuse part of a material that has one (Lambert, Phong, plastic, substrate), else nullptr.
+// The diffuse part of a material that has one (Lambert, Phong, plastic, substrate, translucent), else nullptr.
 inline const TexturedReflectance* diffuse_of(const Material& material) {
   return std::visit(
       [](const auto& model) -> const TexturedReflectance* {
