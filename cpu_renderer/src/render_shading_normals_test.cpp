@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "render_test_support.hpp"
 #include "safegi/cpu_renderer/pbrt_import.hpp"
@@ -27,13 +28,14 @@ std::string vec(double x, double y, double z) {
 
 // The 2 m quad at z = 0 under a sun from `from`, seen from 1 m above; `normals`: the "N" of its four
 // corners (-1,-1), (1,-1), (1,1), (-1,1), or none.
-Scene quad_scene(const std::string& from, const std::string& normals) {
+Scene quad_scene(const std::string& from, const std::string& normals,
+                 const std::string& material = "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]") {
   const std::string text =
       "LookAt 0 0 1  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 20\n"
       "Film \"image\" \"integer xresolution\" " + std::to_string(kSize) + " \"integer yresolution\" " + std::to_string(kSize) +
       "\nIntegrator \"path\" \"integer maxdepth\" 1\nWorldBegin\n"
-      "LightSource \"distant\" \"point from\" [" + from + "] \"point to\" [0 0 0] \"rgb L\" [2 2 2]\n"
-      "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+      "LightSource \"distant\" \"point from\" [" + from + "] \"point to\" [0 0 0] \"rgb L\" [2 2 2]\n" +
+      material + "\n"
       "Shape \"trianglemesh\" \"point P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] \"integer indices\" [0 1 2 0 2 3]" +
       (normals.empty() ? std::string() : " \"normal N\" [" + normals + "]") + "\nWorldEnd\n";
   PbrtImportOptions options;
@@ -60,6 +62,42 @@ TEST(RenderShadingNormals, ATiltedNormalIsLitByItsOwnCosine) {
   for (const Knobs& knobs : estimator_knobs()) {
     expect_uniform(render_scene(flat, 4, 2, std::nullopt, knobs.apply), lit(std::cos(sun)), std::string("no N, ") + knobs.name);
     expect_uniform(render_scene(smooth, 4, 2, std::nullopt, knobs.apply), lit(std::cos(tilt - sun)), std::string("tilted N, ") + knobs.name);
+  }
+}
+
+// A translucent quad that only transmits (Kd 0.5, transmit 1), the sun below
+// it: lit through the surface by the cosine to its shading normal, where
+// that puts the sun below as well. Where the tilted normal puts the sun above
+// (the geometric normal still below), it counts nothing, the rule for light
+// on the two sides of a tilted normal that reflection follows too (pbrt-v3's
+// LambertianTransmission, with no hemisphere of its own, would count it).
+// Nor does a sun above the surface that the tilted normal puts below: the
+// geometric normal says reflection, which this material has none of.
+TEST(RenderShadingNormals, ATiltedNormalTransmitsByItsOwnCosine) {
+  const std::string paper = "Material \"translucent\" \"rgb Kd\" [0.5 0.5 0.5] \"rgb Ks\" [0 0 0] \"rgb reflect\" [0 0 0] "
+                            "\"rgb transmit\" [1 1 1]";
+  const double tilt = 40 * kPiD / 180, d30 = 30 * kPiD / 180, d60 = 60 * kPiD / 180;
+  const std::string tilted = vec(std::sin(tilt), 0, std::cos(tilt));
+  const std::string normals = tilted + " " + tilted + " " + tilted + " " + tilted;
+  struct Sun {
+    const char* where;
+    std::string from;
+    double flat, smooth;
+  };
+  const Sun suns[] = {{"below, 30 deg", vec(std::sin(d30), 0, -std::cos(d30)), lit(std::cos(d30)), lit(std::cos(d30 + tilt))},
+                      {"below, 60 deg", vec(std::sin(d60), 0, -std::cos(d60)), lit(std::cos(d60)), 0},
+                      {"above, -60 deg", vec(-std::sin(d60), 0, std::cos(d60)), 0, 0}};
+  for (const Sun& sun : suns) {
+    const Scene flat = quad_scene(sun.from, "", paper), smooth = quad_scene(sun.from, normals, paper);
+    for (const Knobs& knobs : estimator_knobs()) {
+      const std::string what = std::string(sun.where) + ", " + knobs.name;
+      for (const auto& [scene, expected, name] : {std::tuple{&flat, sun.flat, "no N, "}, std::tuple{&smooth, sun.smooth, "tilted N, "}}) {
+        const Image image = render_scene(*scene, 4, 2, std::nullopt, knobs.apply);
+        if (expected > 0) expect_uniform(image, expected, name + what);
+        for (float v : image.rgb)
+          if (expected == 0) ASSERT_EQ(v, 0.0f) << name << what;
+      }
+    }
   }
 }
 

@@ -148,7 +148,7 @@ TEST_F(CrossValidation, CurvedMirrorsAreNamedPlanarOnesReflect) {
 
 // What the preview does not model is named, shape by shape, for main() to
 // say on stderr and in the image files; the plastic ball is drawn (its
-// diffuse layer), the glass ball is not.
+// diffuse layer), the glass ball is not, a translucent sheet by its diffuse reflection.
 TEST_F(CrossValidation, ApproximationsAreNamed) {
   Scene scene = render::load_scene(bundled("environment.json"));
   PreviewOptions options;
@@ -177,6 +177,17 @@ TEST_F(CrossValidation, ApproximationsAreNamed) {
   EXPECT_EQ(Preview(textured, options).approximations(),
             std::vector<std::string>{"textures are drawn as their mean colour (floor)"});
   EXPECT_TRUE(Preview(render::load_scene(bundled("cornell-box/cornell-box.json")), options).approximations().empty());
+  Scene translucent = render::parse_scene(R"({"camera": {"position": ["0 m", "1 m", "3 m"], "look_at": ["0 m", "0 m", "0 m"],
+      "up": [0, 1, 0], "fov": "40 deg"},
+    "materials": {"paper": {"type": "translucent", "diffuse": 0.8, "specular": 0.1, "reflect": 0.4, "transmit": 0.6,
+                            "alpha": 0.2}},
+    "shapes": [{"name": "sheet", "type": "quad", "material": "paper", "origin": ["-1 m", "0 m", "-1 m"],
+                "edge_u": ["0 m", "0 m", "2 m"], "edge_v": ["2 m", "0 m", "0 m"]}],
+    "lights": [{"type": "point", "position": ["0 m", "2 m", "0 m"], "power": "10 W"}]})",
+                                          "translucent.json", ".");
+  EXPECT_EQ(Preview(translucent, options).approximations(),
+            std::vector<std::string>{"translucent is drawn as its diffuse reflection (reflect times Kd), without its "
+                                     "glossy lobes or the light it lets through (sheet)"});
 }
 
 }  // namespace
