@@ -469,15 +469,21 @@ TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
 }
 
 // Glass has an outside, as emitters have a side: pbrt-v3's is its geometric
-// normal's side, ours the winding's, so glass meshes are re-wound like emitters.
+// normal's side, ours the winding's, so glass meshes are re-wound like
+// emitters; so are translucent ones with glossy lobes (their interface's).
 TEST(PbrtImport, GlassKeepsPbrtsOutside) {
-  PbrtScene scene = import(world("Material \"glass\"\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]\n"
-                                 "Material \"matte\"\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]"),
+  const std::string triangle = "Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]\n";
+  PbrtScene scene = import(world("Material \"glass\"\n" + triangle + "Material \"matte\"\n" + triangle +
+                                 "Material \"translucent\"\n" + triangle + "Material \"translucent\" \"rgb Ks\" [0 0 0]\n" +
+                                 triangle + "Material \"translucent\"\nReverseOrientation\n" + triangle),
                            in_memory());
   EXPECT_EQ(scene.scene.shapes.at(0).indices, (std::vector<uint32_t>{0, 2, 1}));  // mirrored world: re-wound
   EXPECT_EQ(scene.scene.shapes.at(1).indices, (std::vector<uint32_t>{0, 1, 2}));  // two-sided: left as written
+  EXPECT_EQ(scene.scene.shapes.at(2).indices, (std::vector<uint32_t>{0, 2, 1}));  // translucent, as glass
+  EXPECT_EQ(scene.scene.shapes.at(3).indices, (std::vector<uint32_t>{0, 1, 2}));  // diffuse lobes only: two-sided
+  EXPECT_EQ(scene.scene.shapes.at(4).indices, (std::vector<uint32_t>{0, 1, 2}));  // mirrored and reversed
   EXPECT_EQ(import_error(world("Material \"glass\"\nReverseOrientation\nShape \"sphere\"")),
-            "scene.pbrt:4:7: error: a glass sphere turned inside out (ReverseOrientation) is not supported\n"
+            "scene.pbrt:4:7: error: a glass or translucent sphere turned inside out (ReverseOrientation) is not supported\n"
             "Shape \"sphere\"\n      ^~~~~~~~\nhelp: its outside would be the inside of the sphere\n");
 }
 

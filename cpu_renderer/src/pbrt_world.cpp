@@ -406,7 +406,12 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
-  const bool glass = shape.material >= 0 && std::holds_alternative<GlassMaterial>(result_.scene.materials[shape.material].model);
+  // A material with an outside (pbrt-v3's: its geometric normal's side; ours: the winding's): glass, and
+  // translucent's glossy lobes, whose interface has index 1.5 inside.
+  const bool sided = shape.material >= 0 && std::visit(Overloaded{[](const GlassMaterial&) { return true; },
+                                                                  [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
+                                                                  [](const auto&) { return false; }},
+                                                       result_.scene.materials[shape.material].model);
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
       fail(source.at, "a sphere under an object instance's transform that scales unevenly (an ellipsoid) is not supported",
@@ -414,8 +419,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     if (shape.emission && source.reverse_orientation && !shape.two_sided_emission)
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
-    if (glass && source.reverse_orientation)
-      fail(source.at, "a glass sphere turned inside out (ReverseOrientation) is not supported",
+    if (sided && source.reverse_orientation)
+      fail(source.at, "a glass or translucent sphere turned inside out (ReverseOrientation) is not supported",
            "its outside would be the inside of the sphere");
     // Our sphere's normal points out; pbrt-v3's, in, under ReverseOrientation.
     if (shape.media && source.reverse_orientation) std::swap(shape.media->inside, shape.media->outside);
@@ -442,7 +447,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   shape.uvs = source.uvs;
   const glm::dmat3 world_from_object_normals = glm::transpose(glm::inverse(glm::dmat3(world_from_object)));
   shape.normals = shading_normals(source, world_from_object_normals, shape);
-  if (shape.emission || glass || shape.media) {
+  if (shape.emission || sided || shape.media) {
     // pbrt-v3 emits on the side of its geometric normal, and has glass's
     // outside there (our glass: on the winding's side), and a medium
     // interface's outside medium: the winding's
