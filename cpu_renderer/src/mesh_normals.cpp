@@ -15,10 +15,12 @@ std::vector<normal<Object>> unit_vertex_normals(std::span<const glm::dvec3> give
   std::vector<glm::dvec3> sum(given.begin(), given.end());
   std::vector<bool> fill(sum.size(), false);
   bool any = false;
-  for (size_t i = 0; i < sum.size(); ++i) any = any || (fill[i] = !usable(sum[i]));
+  for (size_t i = 0; i < sum.size(); ++i) {
+    if (usable(sum[i])) continue;
+    fill[i] = any = true;
+    sum[i] = glm::dvec3(0.0);
+  }
   if (any) {
-    for (size_t i = 0; i < fill.size(); ++i)
-      if (fill[i]) sum[i] = glm::dvec3(0.0);
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       const glm::dvec3 a(sg::raw(positions[indices[t]])), b(sg::raw(positions[indices[t + 1]])), c(sg::raw(positions[indices[t + 2]]));
       const glm::dvec3 area_normal = glm::cross(b - a, c - a);  // twice the area, along the winding normal

@@ -159,7 +159,7 @@ Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) { return c
 Real evaluate_number(const Pattern& pattern, const PatternLookup& at) { return sg::raw(evaluate_unclamped(pattern, at))[0]; }
 
 Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) {
-  return (std::visit(
+  return std::visit(
       [&](const auto& p) {
         if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
           const Mapping2D& m = p.mapping;
@@ -171,7 +171,7 @@ Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) 
           return sample(p, solid_point(p.mapping, at.position), footprint);
         }
       },
-      pattern));
+      pattern);
 }
 
 Reflectance largest_value(const Pattern& pattern) {
