@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bsdf.hpp"
+#include "material_mix.hpp"
 #include "medium.hpp"
 #include "safegi/cpu_renderer/sampling.hpp"
 
@@ -238,17 +239,27 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     }
     if (last_vertex || depth >= max_depth_) break;
     if (shape.material < 0) break;
-    const Material& material = scene_.materials[shape.material];
+    // The cone's width across the surface, stretched by its tilt (a plain ratio).
+    auto footprint = [&] {
+      Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
+      return sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
+    };
+    if constexpr (textured) travelled += hit->distance;
+    const Material* chosen = &scene_.materials[shape.material];
+    if (chosen->mix) {
+      const MaterialChoice choice =
+          choose_material(scene_, textures_, shape.material, *hit, ray.d, textured ? footprint() : Length(sg::zero), ray.time);
+      if (!choice.material) break;
+      chosen = choice.material;
+      if (choice.weighted) throughput *= choice.weight;
+    }
+    const Material& material = *chosen;
     Reflectance texel{};  // the textured diffuse reflectance, when there is one (black: no diffuse part)
     const TexturedReflectance* diffuse_part = diffuse_of(material);
     const Reflectance* diffuse = diffuse_part ? &diffuse_part->value : &texel;
     if constexpr (textured) {
-      travelled += hit->distance;
       if (diffuse_part && diffuse_part->textured()) {
-        // The cone's width across the surface, stretched by its tilt (a plain ratio).
-        Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
-        Length width = sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
-        texel = textures_.diffuse(material, *hit, width, ray.time);
+        texel = textures_.diffuse(material, *hit, footprint(), ray.time);
         diffuse = &texel;
       }
     }

@@ -141,6 +141,9 @@ class Loader : public JsonFields {
   // A reflectance that may be textured: a number, RGB triple or {"texture": name}.
   TexturedReflectance textured_reflectance(const Json& value, const JsonPath& path);
   Material load_material(const std::string& name, const Json& value, const JsonPath& path);
+  // A mix's parts, by name (any order in the file); a mix that contains itself is an error.
+  void resolve_mix(Scene& scene, int index, const Json& value, const JsonPath& path,
+                   const std::map<std::string, int>& material_index);
   // A conductor's η (`zero_allowed` false: above 0) or k (at least 0), at most 1000, grey or RGB.
   IndexSpectrum index_spectrum(const Json& value, const JsonPath& path, bool zero_allowed);
   // The diffuse reflectance's largest value in each channel, texture included.

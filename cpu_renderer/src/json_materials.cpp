@@ -181,13 +181,45 @@ Material Loader::load_material(const std::string& name, const Json& value, const
                           (translucent.reflect + translucent.transmit)) > 1.0f)
       fail(path, "(diffuse + specular) * (reflect + transmit) must not exceed 1 in any channel (energy conservation)");
     material.model = translucent;
+  } else if (type == "mix") {
+    // Its parts are named; resolve_mix finds them once every material is loaded.
+    object(value, path, {"type", "first", "second", "amount"});
+    MaterialMix mix;
+    mix.amount = textured_reflectance(required(value, path, "amount"), path.field("amount"));
+    string(required(value, path, "first"), path.field("first"));
+    string(required(value, path, "second"), path.field("second"));
+    material.mix = mix;
   } else {
     fail(path.field("type"),
-         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\", \"substrate\" or "
-         "\"translucent\", got " +
+         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\", \"substrate\", "
+         "\"translucent\" or \"mix\", got " +
              short_dump(value["type"]));
   }
   return material;
+}
+
+void Loader::resolve_mix(Scene& scene, int index, const Json& value, const JsonPath& path,
+                         const std::map<std::string, int>& material_index) {
+  MaterialMix& mix = *scene.materials[index].mix;
+  for (auto [part, field] : {std::pair{&mix.first, "first"}, std::pair{&mix.second, "second"}}) {
+    auto found = material_index.find(string(value[field], path.field(field)));
+    if (found == material_index.end()) fail(path.field(field), "no material named " + short_dump(value[field]));
+    *part = found->second;
+  }
+  // Before this one, the resolved mixes formed no circle: a new one passes through it.
+  std::vector<bool> visited(scene.materials.size());
+  std::vector<int> reached{mix.first, mix.second};
+  while (!reached.empty()) {
+    const int at = reached.back();
+    reached.pop_back();
+    if (at == index) fail(path, "mix " + short_dump(scene.materials[index].name) + " contains itself");
+    if (at < 0 || visited[at]) continue;  // -1: a mix whose parts are not resolved yet
+    visited[at] = true;
+    if (const std::optional<MaterialMix>& part = scene.materials[at].mix) {
+      reached.push_back(part->first);
+      reached.push_back(part->second);
+    }
+  }
 }
 
 }  // namespace safegi::render::json

@@ -675,7 +675,7 @@ TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   EXPECT_EQ(import_error(world("Material \"disney\"\nAttributeBegin\nShape \"sphere\"\nAttributeEnd")),
             "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
             "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
-            "\"translucent\", \"uber\"\n");
+            "\"translucent\", \"uber\", \"mix\"\n");
   EXPECT_EQ(import_error(world("Texture \"odd\" \"spectrum\" \"ptex\"\nMaterial \"plastic\" \"texture Kd\" \"odd\"\n"
                                "Shape \"sphere\"")),
             "scene.pbrt:2:26: error: texture \"ptex\" is not supported\nTexture \"odd\" \"spectrum\" \"ptex\"\n"

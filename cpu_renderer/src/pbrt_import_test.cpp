@@ -137,7 +137,7 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error(world(used("Material \"disney\""))),
             "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
             "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
-            "\"translucent\", \"uber\"\n");
+            "\"translucent\", \"uber\", \"mix\"\n");
   EXPECT_EQ(import_error(world(used("Material \"matte\" \"float sigma\" [20]"))),
             "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
             "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");

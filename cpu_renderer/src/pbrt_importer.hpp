@@ -165,6 +165,8 @@ class Importer {
   int material_index(const MaterialInstance& material, ParamSet& shape_params);
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
+  Material convert_mix(ParamSet& params, SourceRange at);
+  int mixed_material(ParamSet& params, const char* name, SourceRange at);
   MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
                         const ParamSet& params, SourceRange at);
   static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);

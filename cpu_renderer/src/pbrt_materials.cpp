@@ -39,9 +39,11 @@ constexpr MaterialParams kMaterialParams[] = {
     {"uber",
      {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
       "bumpmap"}},
+    {"mix", {"amount", "namedmaterial1", "namedmaterial2"}},
 };
 constexpr const char* kSupportedMaterials =
-    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"translucent\", \"uber\"";
+    "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"translucent\", "
+    "\"uber\", \"mix\"";
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
     "\"windy\", \"marble\"";
@@ -60,6 +62,11 @@ bool black(const TexturedReflectance& r) { return sg::is_black(r.value); }
 const TextureEntry& usable(const TextureEntry& texture) {
   if (texture.error) throw PbrtError(*texture.error);
   return texture;
+}
+
+// A material that absorbs everything: pbrt-v3's black matte, as no material at all.
+bool absorbs_everything(const Material& material) {
+  return !material.mix && std::holds_alternative<BlackMaterial>(material.model);
 }
 
 MaterialModel lambert_or_black(const TexturedReflectance& kd) {
@@ -279,6 +286,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   Material material;
   material.name = type;
   if (type == "uber") return convert_uber(params, at);
+  if (type == "mix") return convert_mix(params, at);
   material.bump = bump_map(params);
   if (type == "matte") {
     params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
@@ -338,6 +346,47 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
     material.model = plastic(kd, ks, microfacet_alpha(u, remap), eta, false, params, at);
   }
   return material;
+}
+
+// pbrt-v3's MixMaterial: "namedmaterial1" weighted by "amount" (a spectrum,
+// default 0.5), "namedmaterial2" by 1 − amount, each as it was made; no bump
+// map of its own (each part keeps its own).
+Material Importer::convert_mix(ParamSet& params, SourceRange at) {
+  Material material;
+  material.name = "mix";
+  MaterialMix mix;
+  mix.amount = textured_reflectance(params, "amount", 0.5, true);
+  mix.first = mixed_material(params, "namedmaterial1", at);
+  mix.second = mixed_material(params, "namedmaterial2", at);
+  material.mix = mix;
+  return material;
+}
+
+// The Scene material of one of a mix's named materials. An undefined name is
+// pbrt-v3's error message and a default matte, so a warning and the same here.
+int Importer::mixed_material(ParamSet& params, const char* name, SourceRange at) {
+  const Param* param = params.find(name, {ParamType::string});
+  const std::string named = param && param->strings.size() == 1 ? param->strings[0] : "";
+  auto found = state_.named_materials->find(named);
+  if (found == state_.named_materials->end()) {
+    warn(param ? param->values : at,
+         "\"" + std::string(name) + "\" of " + params.context() +
+             (named.empty() ? " is not given" : " names no material (\"" + named + "\")") + ": rendered as matte",
+         "pbrt-v3 uses a default matte (Kd 0.5) there; MakeNamedMaterial defines one");
+    Material matte;
+    matte.name = "matte";
+    matte.model = LambertMaterial{TexturedReflectance{Reflectance(0.5f)}};
+    result_.scene.materials.push_back(matte);
+    return static_cast<int>(result_.scene.materials.size()) - 1;
+  }
+  const MaterialInstance& instance = *found->second;
+  if (instance.invisible)
+    params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " names a material \"" +
+                               instance.type + "\", which is no surface",
+                   "a mix of a surface and none would be a partly transparent surface, which pbrt-v3 does not make");
+  const std::vector<Param> none;
+  ParamSet no_overrides(none, params.context());
+  return material_index(instance, no_overrides);
 }
 
 MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior,
@@ -457,7 +506,7 @@ void Importer::make_material(MaterialInstance& instance, ParamSet& params) {
   if (!supported) fail(instance.at, "material \"" + type + "\" is not supported", kSupportedMaterials);
   Material converted = convert_material(type, params, instance.at);
   report_unused(params);
-  if (std::holds_alternative<BlackMaterial>(converted.model)) {
+  if (absorbs_everything(converted)) {
     instance.index = -1;  // absorbs everything, as pbrt-v3's black matte does
   } else {
     instance.index = static_cast<int>(result_.scene.materials.size());
@@ -473,7 +522,7 @@ int Importer::material_index(const MaterialInstance& material, ParamSet& shape_p
   shape_params.set_fallback(&material_params);
   Material converted = convert_material(material.type, shape_params, material.at);
   shape_params.set_fallback(nullptr);
-  if (std::holds_alternative<BlackMaterial>(converted.model)) return -1;
+  if (absorbs_everything(converted)) return -1;
   result_.scene.materials.push_back(converted);
   return static_cast<int>(result_.scene.materials.size()) - 1;
 }

@@ -12,6 +12,19 @@ namespace safegi::render::pbrt {
 
 namespace {
 
+// A material with an outside (pbrt-v3's: its geometric normal's side; ours:
+// the winding's): glass, and translucent's glossy lobes, whose interface has
+// index 1.5 inside; a mix with either among its parts.
+bool has_outside(const Scene& scene, int index) {
+  if (index < 0) return false;
+  const Material& material = scene.materials[index];
+  if (material.mix) return has_outside(scene, material.mix->first) || has_outside(scene, material.mix->second);
+  return std::visit(Overloaded{[](const GlassMaterial&) { return true; },
+                               [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
+                               [](const auto&) { return false; }},
+                    material.model);
+}
+
 double determinant3(const Matrix& m) { return glm::determinant(glm::dmat3(m)); }
 
 // Column lengths of the linear part equal and columns orthogonal: angles survive.
@@ -406,12 +419,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
   }
-  // A material with an outside (pbrt-v3's: its geometric normal's side; ours: the winding's): glass, and
-  // translucent's glossy lobes, whose interface has index 1.5 inside.
-  const bool sided = shape.material >= 0 && std::visit(Overloaded{[](const GlassMaterial&) { return true; },
-                                                                  [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
-                                                                  [](const auto&) { return false; }},
-                                                       result_.scene.materials[shape.material].model);
+  const bool sided = has_outside(result_.scene, shape.material);
   if (source.kind == ShapeSource::Kind::sphere) {
     if (!is_similarity(world_from_object, 1e-4))
       fail(source.at, "a sphere under an object instance's transform that scales unevenly (an ellipsoid) is not supported",

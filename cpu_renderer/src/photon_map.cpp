@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bsdf.hpp"
+#include "material_mix.hpp"
 #include "sampler.hpp"
 
 namespace safegi::render {
@@ -75,23 +76,25 @@ void PhotonMap::trace(const Scene& scene, const Geometry& geometry, const Lights
       if (!hit) break;
       const Shape& shape = scene.shapes[hit->shape];
       if (shape.material < 0) break;
-      const Material& material = scene.materials[shape.material];
       const bool from_inside = sg::dot(hit->normal, segment.d) > sg::zero;
-      const Reflectance diffuse = textures.diffuse(material, *hit, sg::zero, time);
-      Bsdf bsdf(material, diffuse, from_inside);
       NormalWorld facing = from_inside ? -hit->normal : hit->normal;
-      ShadingFrame frame = ShadingFrame::from_normal(facing);
-      DirectionShading wo = frame.to_local(-segment.d);
       // A caustic photon is one that reaches a non-specular surface through
       // specular bounces only; where it lands, its path ends (the path tracer
-      // has the rest, direct light included).
-      if (!bsdf.is_specular()) {
-        if (depth > 0) {
-          photons_.push_back({hit->position, -segment.d, facing, flux});
-          received[hit->shape] = true;
-        }
-        break;
+      // has the rest, direct light included). On a mix of a specular material
+      // and another it lands whichever the hit picks (the gather weighs it by
+      // the other's share) and goes on only through the specular one.
+      if (depth > 0 && scatters_non_specularly(scene, shape.material)) {
+        photons_.push_back({hit->position, -segment.d, facing, flux});
+        received[hit->shape] = true;
       }
+      const MaterialChoice choice = choose_material(scene, textures, shape.material, *hit, segment.d, sg::zero, time);
+      if (!choice.material || !is_specular(choice.material->model)) break;
+      if (choice.weighted) flux = flux * choice.weight;
+      const Material& material = *choice.material;
+      const Reflectance no_diffuse{};  // specular materials have none
+      Bsdf bsdf(material, no_diffuse, from_inside);
+      ShadingFrame frame = ShadingFrame::from_normal(facing);
+      DirectionShading wo = frame.to_local(-segment.d);
       Real u_lobe = sampler.next_1d();
       Sample2 u = sampler.next_2d();
       std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u.u, u.v, Transport::importance);

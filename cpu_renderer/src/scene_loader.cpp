@@ -39,6 +39,9 @@ Scene Loader::load(const Json& root) {
       material_index[name] = static_cast<int>(scene.materials.size());
       scene.materials.push_back(load_material(name, value, top.field("materials").field(name)));
     }
+    for (const auto& [name, value] : materials.items())
+      if (scene.materials[material_index[name]].mix)
+        resolve_mix(scene, material_index[name], value, top.field("materials").field(name), material_index);
   }
   if (root.contains("shapes")) {
     const Json& shapes = root["shapes"];

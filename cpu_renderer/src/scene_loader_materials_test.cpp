@@ -83,7 +83,7 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
             "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
-            "\"conductor\", \"substrate\" or \"translucent\", got \"wood\"");
+            "\"conductor\", \"substrate\", \"translucent\" or \"mix\", got \"wood\"");
 }
 
 TEST_F(LoaderFiles, Conductor) {
@@ -179,6 +179,37 @@ TEST_F(LoaderFiles, Translucent) {
             "(energy conservation)");
   EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "transmit": 0.5, "alpha": 0.1, "ior": 1.3)j"),
             "test.json: materials.m.ior: unknown field (expected one of: type, diffuse, specular, reflect, transmit, alpha)");
+}
+
+// A mix names its parts in any order of the file; it may contain mixes, not itself.
+TEST_F(LoaderFiles, Mix) {
+  Scene scene = load(with_camera(R"j("materials": {
+      "a_mix": {"type": "mix", "first": "paint", "second": "b_mix", "amount": [0.2, 0.5, 0.9]},
+      "b_mix": {"type": "mix", "first": "chrome", "second": "paint", "amount": 0.25},
+      "chrome": {"type": "mirror", "reflectance": 0.9},
+      "paint": {"type": "lambert", "reflectance": 0.5}})j"));
+  ASSERT_EQ(scene.materials.size(), 4u);  // in the file's (sorted) order: a_mix, b_mix, chrome, paint
+  ASSERT_TRUE(scene.materials[0].mix && scene.materials[1].mix);
+  EXPECT_EQ(scene.materials[0].mix->first, 3);
+  EXPECT_EQ(scene.materials[0].mix->second, 1);
+  EXPECT_EQ(sg::raw(scene.materials[0].mix->amount.value), glm::vec3(0.2f, 0.5f, 0.9f));
+  EXPECT_EQ(scene.materials[1].mix->first, 2);
+  EXPECT_EQ(scene.materials[1].mix->second, 3);
+  auto mix_error = [&](const std::string& materials) { return error(with_camera(R"j("materials": {)j" + materials + "}")); };
+  EXPECT_EQ(mix_error(R"j("m": {"type": "mix", "first": "m", "second": "m", "amount": 0.5})j"),
+            "test.json: materials.m: mix \"m\" contains itself");
+  EXPECT_EQ(mix_error(R"j("m": {"type": "mix", "first": "n", "second": "p", "amount": 0.5},
+                          "n": {"type": "mix", "first": "p", "second": "m", "amount": 0.5},
+                          "p": {"type": "lambert", "reflectance": 0.5})j"),
+            "test.json: materials.n: mix \"n\" contains itself");
+  EXPECT_EQ(mix_error(R"j("m": {"type": "mix", "first": "paint", "second": "p", "amount": 0.5},
+                          "p": {"type": "lambert", "reflectance": 0.5})j"),
+            "test.json: materials.m.first: no material named \"paint\"");
+  EXPECT_EQ(mix_error(R"j("m": {"type": "mix", "first": "p", "second": "p", "amount": 1.5},
+                          "p": {"type": "lambert", "reflectance": 0.5})j"),
+            "test.json: materials.m.amount: reflectance must lie in [0, 1], got 1.5");
+  EXPECT_EQ(mix_error(R"j("m": {"type": "mix", "first": "p", "amount": 0.5}, "p": {"type": "lambert", "reflectance": 0.5})j"),
+            "test.json: materials.m: missing field 'second'");
 }
 
 TEST_F(LoaderFiles, ImageTextures) {

@@ -97,7 +97,12 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
 
 Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {
   const TexturedReflectance* diffuse = diffuse_of(material);
-  if (!diffuse) return Reflectance{};
+  return diffuse ? reflectance_at(*diffuse, hit, width, time) : Reflectance{};
+}
+
+Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit, Length width,
+                                            Time time) const {
+  const TexturedReflectance* diffuse = &reflectance;
   if (!diffuse->textured()) return diffuse->value;
   if (diffuse->pattern >= 0) {
     const Pattern& pattern = scene_.patterns[diffuse->pattern].pattern;

@@ -31,6 +31,8 @@ class SurfaceTextures {
   // The diffuse reflectance of `material` at `hit`, its texture (if any)
   // filtered over a footprint `width` across (zero: the finest level).
   Reflectance diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const;
+  // Any textured reflectance at `hit`, filtered alike.
+  Reflectance reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit, Length width, Time time) const;
 
   // The normal of the surface `bump` displaces (pbrt-v3's Material::Bump), on
   // the side of the hit's geometric normal; that normal where it is undefined.

@@ -280,6 +280,9 @@ struct Preview::Impl {
     add(names_of([](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model); }),
         "translucent is drawn as its diffuse reflection (reflect times Kd), without its glossy lobes or the light it "
         "lets through");
+    add(names_of([](const Material& m) { return m.mix.has_value(); }),
+        "mix materials are drawn as their parts' diffuse and Phong colours weighted by the amount, mirrors, glass "
+        "and metal among them as black");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
@@ -300,8 +303,28 @@ struct Preview::Impl {
     Reflectance kd, ks;
     float exponent = 1.0f;
   };
+  // A mix: its parts' diffuse and Phong parts weighted by the amount (a
+  // texture's by its mean); the exponent of the glossier part.
+  std::optional<LitSurface> lit_mix(const MaterialMix& mix) const {
+    const Reflectance amount = preview_diffuse(mix.amount);
+    const Reflectance weights[2] = {amount, Reflectance(1.0f) - amount};
+    const int parts[2] = {mix.first, mix.second};
+    std::optional<LitSurface> sum;
+    for (int i = 0; i < 2; ++i) {
+      if (parts[i] < 0) continue;
+      const std::optional<LitSurface> part = lit_surface(scene.materials[parts[i]]);
+      if (!part) continue;
+      if (!sum) sum = LitSurface{Reflectance{}, Reflectance{}, part->exponent};
+      if (sg::max_component(weights[i] * part->ks) > sg::max_component(sum->ks)) sum->exponent = part->exponent;
+      sum->kd = sum->kd + weights[i] * part->kd;
+      sum->ks = sum->ks + weights[i] * part->ks;
+    }
+    return sum;
+  }
+
   std::optional<LitSurface> lit_surface(const Material& material) const {
     using Lit = std::optional<LitSurface>;
+    if (material.mix) return lit_mix(*material.mix);
     return std::visit(Overloaded{[&](const LambertMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [&](const PhongMaterial& m) -> Lit {
                                    return LitSurface{preview_diffuse(m.diffuse), m.specular, m.exponent};

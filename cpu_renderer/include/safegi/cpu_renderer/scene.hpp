@@ -111,10 +111,19 @@ struct BumpMap {
   Length scale = sg::zero;  // the displacement per unit of the texture's value
 };
 
+// pbrt-v3's MixMaterial: the first material's BSDF weighted by `amount` and
+// the second's by 1 − amount, per channel. Not a BSDF of its own: each hit
+// picks one of the two (material_mix.hpp), as pbrt-v4 does.
+struct MaterialMix {
+  int first = -1, second = -1;  // indices into Scene::materials; -1: black (absorbs)
+  TexturedReflectance amount;   // in [0, 1]
+};
+
 struct Material {
-  MaterialModel model;
+  MaterialModel model;  // unused where `mix` is set
   std::string name;
   std::optional<BumpMap> bump;
+  std::optional<MaterialMix> mix;
 };
 
 // The diffuse part of a material that has one (Lambert, Phong, plastic, substrate, translucent), else nullptr.
