@@ -679,8 +679,8 @@ TEST(PbrtImport, WhatNoShapeUsesIsNoError) {
   EXPECT_EQ(import_error(world("Texture \"odd\" \"spectrum\" \"ptex\"\nMaterial \"plastic\" \"texture Kd\" \"odd\"\n"
                                "Shape \"sphere\"")),
             "scene.pbrt:2:26: error: texture \"ptex\" is not supported\nTexture \"odd\" \"spectrum\" \"ptex\"\n"
-            "                         ^~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
-            "\"windy\", \"marble\"\n");
+            "                         ^~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\", \"mix\", \"checkerboard\", "
+            "\"dots\", \"fbm\", \"wrinkled\", \"windy\", \"marble\", \"uv\", \"bilerp\"\n");
 }
 
 // pbrt-v3's procedural textures become Scene patterns with their parameters;

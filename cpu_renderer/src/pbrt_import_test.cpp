@@ -144,11 +144,11 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error(world("LightSource \"goniometric\"")),
             "scene.pbrt:2:13: error: light \"goniometric\" is not supported\nLightSource \"goniometric\"\n"
             "            ^~~~~~~~~~~~~\nhelp: supported: \"point\", \"spot\", \"distant\", \"infinite\"\n");
-  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"spectrum\" \"mix\""))),
-            "scene.pbrt:2:24: error: texture \"mix\" is not supported\n"
-            "Texture \"t\" \"spectrum\" \"mix\"\n"
-            "                       ^~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", "
-            "\"fbm\", \"wrinkled\", \"windy\", \"marble\"\n");
+  EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"spectrum\" \"ptex\""))),
+            "scene.pbrt:2:24: error: texture \"ptex\" is not supported\n"
+            "Texture \"t\" \"spectrum\" \"ptex\"\n"
+            "                       ^~~~~~\nhelp: supported: \"constant\", \"imagemap\", \"scale\", \"mix\", \"checkerboard\", "
+            "\"dots\", \"fbm\", \"wrinkled\", \"windy\", \"marble\", \"uv\", \"bilerp\"\n");
   EXPECT_EQ(import_error("Integrator \"ambientocclusion\"\n" + world("")),
             "scene.pbrt:1:12: error: integrator \"ambientocclusion\" is not supported\nIntegrator \"ambientocclusion\"\n"
             "           ^~~~~~~~~~~~~~~~~~\n"
@@ -635,7 +635,56 @@ TEST(PbrtImport, BumpMapsAsPbrtV3ReadsThem) {
                            "Texture \"b\" \"float\" \"scale\" \"texture tex1\" \"a\" \"texture tex2\" \"a\"\n"
                            "Material \"matte\" \"texture bumpmap\" \"b\"")),
                 with_images())),
-            "scene.pbrt:3:48: error: a product of two textures is not supported");
+            "scene.pbrt:3:29: error: an image texture in a \"scale\" with another texture is not supported");
+}
+
+// pbrt-v3's MixTexture and ScaleTexture: constants fold, a constant times one
+// texture stays that (a mix whose other part weighs 0 too), two patterns (the
+// hackmad/pbrt-v3-rs scenes' windy × checkerboard) become a pattern of both;
+// uv and bilerp are patterns of their own.
+TEST(PbrtImport, MixAndScaleTextures) {
+  PbrtScene scene = import(world(
+      "Texture \"w\" \"color\" \"windy\"\n"                                                         // pattern 0
+      "Texture \"c\" \"color\" \"checkerboard\" \"float uscale\" -16\n"                            // pattern 1
+      "Texture \"k\" \"color\" \"mix\" \"rgb tex1\" [0.2 0.4 0.6] \"rgb tex2\" [1 1 1] \"float amount\" 0.25\n"
+      "Material \"matte\" \"texture Kd\" \"k\"\nShape \"sphere\"\n"                               // 0: constant
+      "Texture \"a\" \"color\" \"mix\" \"texture tex1\" \"w\" \"rgb tex2\" [0 0 0] \"float amount\" 0.4\n"
+      "Material \"matte\" \"texture Kd\" \"a\"\nShape \"sphere\"\n"                               // 1: 0.6 × windy
+      "Texture \"m\" \"color\" \"mix\" \"texture tex1\" \"w\" \"texture tex2\" \"c\" \"float amount\" 0.68\n"
+      "Material \"matte\" \"texture Kd\" \"m\"\nShape \"sphere\"\n"                               // 2: pattern 2
+      "Texture \"p\" \"color\" \"scale\" \"texture tex1\" \"w\" \"texture tex2\" \"c\"\n"
+      "Material \"matte\" \"texture Kd\" \"p\"\nShape \"sphere\"\n"                               // 3: pattern 3
+      "Texture \"uv\" \"color\" \"uv\" \"float uscale\" -1\n"
+      "Material \"matte\" \"texture Kd\" \"uv\"\nShape \"sphere\"\n"                              // 4: pattern 4
+      "Texture \"b\" \"color\" \"bilerp\" \"rgb v00\" [1 1 1] \"rgb v01\" [1 0 0]\n"
+      "Material \"matte\" \"texture Kd\" \"b\"\nShape \"sphere\""));                                // 5: pattern 5
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.shapes.size(), 6u);
+  auto kd = [&](size_t shape) { return diffuse(s.materials.at(s.shapes[shape].material)); };
+  EXPECT_FALSE(kd(0).textured());
+  const glm::vec3 folded = sg::raw(kd(0).value);  // (1 − 0.25) tex1 + 0.25 tex2, folded in double
+  EXPECT_NEAR(folded.x, 0.4f, 1e-6);
+  EXPECT_NEAR(folded.y, 0.55f, 1e-6);
+  EXPECT_NEAR(folded.z, 0.7f, 1e-6);
+  EXPECT_EQ(kd(1).pattern, 0);
+  EXPECT_NEAR(sg::raw(kd(1).value).x, 0.6f, 1e-6);
+  ASSERT_EQ(s.patterns.size(), 6u);
+  EXPECT_EQ(kd(2).pattern, 2);
+  const MixPattern& mix = std::get<MixPattern>(s.patterns[2].pattern);
+  EXPECT_TRUE(std::holds_alternative<WindyPattern>(mix.first.pattern->pattern));
+  EXPECT_TRUE(std::holds_alternative<CheckerboardPattern>(mix.second.pattern->pattern));
+  EXPECT_FALSE(mix.amount.pattern);
+  EXPECT_NEAR(sg::raw(mix.amount.value).x, 0.68f, 1e-6);
+  EXPECT_EQ(kd(3).pattern, 3);
+  EXPECT_TRUE(std::holds_alternative<ProductPattern>(s.patterns[3].pattern));
+  EXPECT_EQ(std::get<UvPattern>(s.patterns[4].pattern).mapping.u_scale, -1);
+  const BilerpPattern& bilerp = std::get<BilerpPattern>(s.patterns[5].pattern);
+  EXPECT_EQ(sg::raw(bilerp.v01), glm::vec3(1, 0, 0));
+  EXPECT_EQ(sg::raw(bilerp.v10), glm::vec3(0));  // pbrt-v3's defaults: v10 0, v11 1
+  EXPECT_EQ(sg::raw(bilerp.v11), glm::vec3(1));
+  EXPECT_EQ(scene.warnings, "");
+  EXPECT_EQ(first_line(import_error(world(used("Texture \"u\" \"float\" \"uv\"\nMaterial \"matte\" \"texture bumpmap\" \"u\"")))),
+            "scene.pbrt:2:21: error: texture \"uv\" is not supported");
 }
 
 // Float procedural textures (pbrt-v3's FBmTexture<Float>, a float checkerboard, ...) are bump maps too:

@@ -39,7 +39,7 @@ struct MaterialInstance {
 
 // A texture as the Scene can hold it: a value times, optionally, an image or
 // a pattern (pbrt's "constant", "imagemap", procedural textures, and "scale"
-// of a constant and one of those).
+// or "mix" of a constant and one of those; of two patterns, a pattern).
 struct TextureEntry {
   std::string texture_class;  // "constant", "imagemap", "checkerboard", "scale", ...
   Rgb value{1, 1, 1};         // a constant's value, or the factor on `image` or `pattern`
@@ -166,6 +166,8 @@ class Importer {
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
   Material convert_mix(ParamSet& params, SourceRange at);
+  TextureEntry combined_texture(const std::string& name, const std::string& texture_class, ParamSet& params,
+                                bool spectrum);
   int mixed_material(ParamSet& params, const char* name, SourceRange at);
   MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
                         const ParamSet& params, SourceRange at);

@@ -45,8 +45,8 @@ constexpr const char* kSupportedMaterials =
     "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"translucent\", "
     "\"uber\", \"mix\"";
 constexpr const char* kSupportedTextures =
-    "supported: \"constant\", \"imagemap\", \"scale\", \"checkerboard\", \"dots\", \"fbm\", \"wrinkled\", "
-    "\"windy\", \"marble\"";
+    "supported: \"constant\", \"imagemap\", \"scale\", \"mix\", \"checkerboard\", \"dots\", \"fbm\", "
+    "\"wrinkled\", \"windy\", \"marble\", \"uv\", \"bilerp\"";
 
 bool reads_material_params(const std::string& type, const ParamSet& shape) {
   for (const MaterialParams& m : kMaterialParams)
@@ -562,22 +562,10 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
     }
   } else if (texture_class == "imagemap") {
     entry.image = image_texture(name, params, d.range);
-  } else if (texture_class == "scale") {
-    // pbrt-v3's ScaleTexture: tex1 × tex2 (each 1 by default); a constant times
-    // at most one image is a value times an image. A float's value is its
-    // number in every channel.
-    const Param* param = nullptr;
-    for (const char* factor : {"tex1", "tex2"}) {
-      std::optional<TextureEntry> given =
-          spectrum ? spectrum_or_texture(params, factor, param) : float_or_texture(params, factor, param);
-      if (!given) continue;
-      if (given->textured() && entry.textured())
-        params.fail_at(*param, "a product of two textures is not supported",
-                       "the renderer multiplies one image or pattern by a constant");
-      if (given->image >= 0) entry.image = given->image;
-      if (given->pattern >= 0) entry.pattern = given->pattern;
-      for (int c = 0; c < 3; ++c) entry.value[c] *= given->value[c];
-    }
+  } else if (texture_class == "scale" || texture_class == "mix") {
+    entry = combined_texture(name, texture_class, params, spectrum);
+    entry.texture_class = texture_class;
+    entry.at = d.string_ranges[2];
   } else if (std::optional<Pattern> made = pattern(texture_class, params, d.range, spectrum)) {
     result_.scene.patterns.push_back({name, std::move(*made)});
     entry.pattern = static_cast<int>(result_.scene.patterns.size()) - 1;
@@ -585,6 +573,74 @@ TextureEntry Importer::convert_texture(const Directive& d, bool spectrum) {
     fail(entry.at, "texture \"" + texture_class + "\" is not supported", kSupportedTextures);
   }
   report_unused(params);
+  return entry;
+}
+
+// pbrt-v3's ScaleTexture, tex1 × tex2 (each 1 by default), and MixTexture,
+// (1 − amount) · tex1 + amount · tex2 (tex1 0, tex2 1, the float amount 0.5
+// by default). Constants fold into one, and a constant times one image or
+// pattern stays that; anything else becomes a pattern over its parts, which
+// may be patterns but not images. A float texture's values are grey.
+TextureEntry Importer::combined_texture(const std::string& name, const std::string& texture_class, ParamSet& params,
+                                        bool spectrum) {
+  const bool mix = texture_class == "mix";
+  struct Operand {
+    TextureEntry entry;
+    const Param* param = nullptr;
+  };
+  auto operand = [&](const char* parameter, double fallback, bool as_spectrum) {
+    Operand result;
+    std::optional<TextureEntry> given = as_spectrum ? spectrum_or_texture(params, parameter, result.param)
+                                                    : float_or_texture(params, parameter, result.param);
+    if (given) result.entry = *given;
+    else result.entry.value = {fallback, fallback, fallback};
+    return result;
+  };
+  const Operand first = operand("tex1", mix ? 0 : 1, spectrum), second = operand("tex2", 1, spectrum);
+  const Operand amount = mix ? operand("amount", 0.5, false) : Operand{};
+  TextureEntry entry;
+  const Operand* textured = nullptr;  // the one textured part, if only one is
+  int textured_count = 0;
+  for (const Operand* part : {&first, &second, &amount})
+    if (part->entry.textured()) textured = part, ++textured_count;
+  const double a = amount.entry.value[0];
+  if (textured_count == 0) {
+    for (int c = 0; c < 3; ++c)
+      entry.value[c] = mix ? (1 - a) * first.entry.value[c] + a * second.entry.value[c]
+                           : first.entry.value[c] * second.entry.value[c];
+    return entry;
+  }
+  if (textured_count == 1 && textured != &amount) {
+    // Linear in the textured part alone: a product, or a mix whose other part weighs 0.
+    const Operand& other = textured == &first ? second : first;
+    const double weight = textured == &first ? 1 - a : a;
+    bool alone = true;
+    for (int c = 0; c < 3; ++c) alone = alone && (!mix || (1 - weight) * other.entry.value[c] == 0);
+    if (alone) {
+      for (int c = 0; c < 3; ++c) entry.value[c] = textured->entry.value[c] * (mix ? weight : other.entry.value[c]);
+      entry.image = textured->entry.image;
+      entry.pattern = textured->entry.pattern;
+      return entry;
+    }
+  }
+  for (const Operand* part : {&first, &second, &amount})
+    if (part->entry.image >= 0)
+      params.fail_at(*part->param,
+                     "an image texture in a \"" + texture_class + "\" with another texture is not supported",
+                     "the renderer combines procedural textures (and constants), and multiplies one image by a "
+                     "constant");
+  auto pattern_operand = [&](const TextureEntry& e) {
+    PatternOperand result;
+    result.value = sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(e.value[0]), static_cast<Real>(e.value[1]),
+                                                           static_cast<Real>(e.value[2])));
+    if (e.pattern >= 0) result.pattern = std::make_shared<const ProceduralTexture>(result_.scene.patterns[e.pattern]);
+    return result;
+  };
+  Pattern combined = mix ? Pattern{MixPattern{pattern_operand(first.entry), pattern_operand(second.entry),
+                                              pattern_operand(amount.entry)}}
+                         : Pattern{ProductPattern{pattern_operand(first.entry), pattern_operand(second.entry)}};
+  result_.scene.patterns.push_back({name, std::move(combined)});
+  entry.pattern = static_cast<int>(result_.scene.patterns.size()) - 1;
   return entry;
 }
 

@@ -1,5 +1,6 @@
 // pbrt-v3's texture mappings and procedural textures (its textures/
-// checkerboard, dots, fbm, wrinkled, windy and marble) as Scene patterns.
+// checkerboard, dots, fbm, wrinkled, windy, marble, uv and bilerp) as Scene
+// patterns.
 #include <cmath>
 
 #include "pbrt_importer.hpp"
@@ -119,6 +120,9 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
   if (texture_class == "fbm" || texture_class == "wrinkled")
     return FbmPattern{solid_mapping(at), roughness(), octaves(), texture_class == "wrinkled"};
   if (texture_class == "windy") return WindyPattern{solid_mapping(at)};
+  if (texture_class == "uv" && spectrum) return UvPattern{mapping_2d(params, at)};  // pbrt-v3 has no float one
+  if (texture_class == "bilerp")
+    return BilerpPattern{mapping_2d(params, at), value("v00", 0), value("v01", 1), value("v10", 0), value("v11", 1)};
   if (texture_class == "marble") {
     MarblePattern marble{solid_mapping(at)};
     marble.octaves = octaves();

@@ -63,6 +63,12 @@ Reflectance sample(const DotsPattern& dots, Real s, Real t, Real, Real) {
   return dots.outside;
 }
 
+Reflectance sample(const UvPattern&, Real s, Real t, Real, Real) { return rgb(s - std::floor(s), t - std::floor(t), 0); }
+
+Reflectance sample(const BilerpPattern& bilerp, Real s, Real t, Real, Real) {
+  return (1 - s) * (1 - t) * bilerp.v00 + (1 - s) * t * bilerp.v01 + s * (1 - t) * bilerp.v10 + s * t * bilerp.v11;
+}
+
 NoisePoint scaled(NoisePoint p, Real factor) { return {p.x * factor, p.y * factor, p.z * factor}; }
 
 Reflectance sample(const SolidCheckerboardPattern& board, NoisePoint p, Real) {
@@ -116,6 +122,26 @@ Reflectance sample(const MarblePattern& marble, NoisePoint p, Real footprint) {
 
 template <class P>
 concept PlanarPattern = std::same_as<std::remove_cvref_t<decltype(P::mapping)>, Mapping2D>;
+template <class P>
+concept CompositePattern = std::same_as<P, MixPattern> || std::same_as<P, ProductPattern>;
+
+Reflectance operand_value(const PatternOperand& operand, const PatternLookup& at) {
+  return operand.pattern ? operand.value * evaluate_unclamped(operand.pattern->pattern, at) : operand.value;
+}
+Reflectance combine(const MixPattern& blend, const PatternLookup& at) {
+  const Real amount = sg::raw(operand_value(blend.amount, at))[0];
+  return mix(amount, operand_value(blend.first, at), operand_value(blend.second, at));
+}
+Reflectance combine(const ProductPattern& product, const PatternLookup& at) {
+  return operand_value(product.first, at) * operand_value(product.second, at);
+}
+bool operand_reads_uv(const PatternOperand& operand) { return operand.pattern && reads_uv(operand.pattern->pattern); }
+Reflectance operand_largest(const PatternOperand& operand) {
+  return operand.pattern ? operand.value * largest_value(operand.pattern->pattern) : operand.value;
+}
+Reflectance operand_mean(const PatternOperand& operand) {
+  return operand.pattern ? operand.value * mean_value(operand.pattern->pattern) : operand.value;
+}
 
 NoisePoint solid_point(const SolidMapping& mapping, PointWorld position) {
   const sg::vec3_rep v = mapping.coordinates(position);
@@ -151,7 +177,17 @@ TextureCoordinates Mapping2D::at(Real u, Real v, PointWorld position) const {
 Real Mapping2D::uv_scale() const { return kind == Kind::uv ? std::max(std::abs(u_scale), std::abs(v_scale)) : Real(0); }
 
 bool reads_uv(const Pattern& pattern) {
-  return std::visit([](const auto& p) { return PlanarPattern<std::remove_cvref_t<decltype(p)>>; }, pattern);
+  return std::visit(
+      [](const auto& p) {
+        using P = std::remove_cvref_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, MixPattern>)
+          return operand_reads_uv(p.first) || operand_reads_uv(p.second) || operand_reads_uv(p.amount);
+        else if constexpr (std::is_same_v<P, ProductPattern>)
+          return operand_reads_uv(p.first) || operand_reads_uv(p.second);
+        else
+          return PlanarPattern<P>;
+      },
+      pattern);
 }
 
 Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) { return clamped(evaluate_unclamped(pattern, at)); }
@@ -161,7 +197,9 @@ Real evaluate_number(const Pattern& pattern, const PatternLookup& at) { return s
 Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) {
   return std::visit(
       [&](const auto& p) {
-        if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
+        if constexpr (CompositePattern<std::remove_cvref_t<decltype(p)>>) {
+          return combine(p, at);
+        } else if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
           const Mapping2D& m = p.mapping;
           const TextureCoordinates st = m.at(at.u, at.v, at.position);
           const Real footprint = m.kind == Mapping2D::Kind::uv ? at.uv_footprint : Real(0);
@@ -182,6 +220,14 @@ Reflectance largest_value(const Pattern& pattern) {
           return clamped(largest(p.even, p.odd));
         else if constexpr (std::is_same_v<P, DotsPattern>)
           return clamped(largest(p.inside, p.outside));
+        else if constexpr (std::is_same_v<P, UvPattern>)
+          return rgb(1, 1, 0);
+        else if constexpr (std::is_same_v<P, BilerpPattern>)  // bilinear in [0, 1]²: a corner's at most
+          return clamped(largest(largest(p.v00, p.v01), largest(p.v10, p.v11)));
+        else if constexpr (std::is_same_v<P, MixPattern>)  // an amount in [0, 1]: between the two
+          return clamped(largest(operand_largest(p.first), operand_largest(p.second)));
+        else if constexpr (std::is_same_v<P, ProductPattern>)
+          return clamped(operand_largest(p.first) * operand_largest(p.second));
         else if constexpr (std::is_same_v<P, MarblePattern>) {
           // A Bézier curve stays inside its control points' hull.
           Reflectance bound = marble_colour(0);
@@ -198,10 +244,15 @@ Reflectance mean_value(const Pattern& pattern) {
   // Point samples at the centres of a grid over many cells (64² of (s, t),
   // 16³ of texture space), unfiltered.
   return std::visit(
-      [](const auto& p) {
+      [](const auto& p) -> Reflectance {
         Reflectance sum = grey(0);
         int count = 0;
-        if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
+        using P = std::remove_cvref_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, MixPattern>) {  // the parts taken as independent
+          return clamped(mix(sg::raw(operand_mean(p.amount))[0], operand_mean(p.first), operand_mean(p.second)));
+        } else if constexpr (std::is_same_v<P, ProductPattern>) {
+          return clamped(operand_mean(p.first) * operand_mean(p.second));
+        } else if constexpr (PlanarPattern<P>) {
           for (int i = 0; i < 128; ++i)
             for (int j = 0; j < 128; ++j, ++count) sum += clamped(sample(p, (i + Real(0.5)) / 2, (j + Real(0.5)) / 2, 0, 0));
         } else {

@@ -3,7 +3,9 @@
 // closed-form box filter against a brute-force average of point samples.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "noise.hpp"
 #include "safegi/cpu_renderer/procedural_texture.hpp"
@@ -159,6 +161,58 @@ TEST(ProceduralTexture, SolidPatternsReadTheTextureSpaceInItsUnit) {
   EXPECT_EQ(at(0.01f), 0.8f);   // 0.5 units
   EXPECT_EQ(at(0.03f), 0.1f);   // 1.5 units
   EXPECT_EQ(at(-0.01f), 0.1f);  // -0.5 units
+}
+
+// pbrt-v3's UVTexture and BilerpTexture at chosen (s, t), uscale 2 doubling s.
+TEST(ProceduralTexture, UvAndBilerpAsPbrtV3DefinesThem) {
+  Mapping2D doubled;
+  doubled.u_scale = 2;
+  const Pattern uv = UvPattern{doubled};
+  EXPECT_TRUE(reads_uv(uv));
+  const Reflectance at = evaluate(uv, PatternLookup{.u = 0.7f, .v = -0.25f});
+  EXPECT_NEAR(channel(at, 0), 0.4f, 1e-6);  // 1.4 − 1
+  EXPECT_NEAR(channel(at, 1), 0.75f, 1e-6);  // −0.25 + 1
+  EXPECT_EQ(channel(at, 2), 0);
+  const Pattern corners =
+      BilerpPattern{Mapping2D{}, grey(0.1f), grey(0.2f), grey(0.3f), sg::from_raw<Reflectance>(sg::vec3_rep(0.4f, 0.5f, 0.6f))};
+  auto bilerp = [&](Real u, Real v, int c) { return channel(evaluate(corners, PatternLookup{.u = u, .v = v}), c); };
+  EXPECT_NEAR(bilerp(0, 0, 0), 0.1f, 1e-6);  // v00
+  EXPECT_NEAR(bilerp(0, 1, 0), 0.2f, 1e-6);  // v01
+  EXPECT_NEAR(bilerp(1, 0, 0), 0.3f, 1e-6);  // v10
+  EXPECT_NEAR(bilerp(1, 1, 2), 0.6f, 1e-6);  // v11
+  EXPECT_NEAR(bilerp(0.25f, 0.5f, 1), 0.75f * 0.5f * 0.1f + 0.75f * 0.5f * 0.2f + 0.25f * 0.5f * 0.3f + 0.25f * 0.5f * 0.5f,
+              1e-6);
+  EXPECT_NEAR(channel(largest_value(corners), 2), 0.6f, 1e-6);
+}
+
+// pbrt-v3's MixTexture and ScaleTexture over two patterns: at every lookup the
+// formula of the parts' own values; a 2D part makes the whole read (u, v).
+TEST(ProceduralTexture, MixAndProductOfPatternsAreTheirFormulas) {
+  auto texture = [](Pattern pattern) { return std::make_shared<const ProceduralTexture>(ProceduralTexture{"", pattern}); };
+  const Pattern checks = CheckerboardPattern{Mapping2D{}, grey(0.9f), grey(0.2f), false};
+  const Pattern dots = DotsPattern{Mapping2D{}, grey(0.7f), sg::from_raw<Reflectance>(sg::vec3_rep(0.1f, 0.3f, 0.5f))};
+  const Pattern noise = FbmPattern{};
+  const Pattern blend = MixPattern{{grey(1), texture(checks)}, {grey(0.5f), texture(dots)}, {grey(1), texture(noise)}};
+  const Pattern product = ProductPattern{{grey(0.8f), texture(checks)}, {grey(1), texture(dots)}};
+  EXPECT_TRUE(reads_uv(blend));
+  EXPECT_TRUE(reads_uv(product));
+  EXPECT_FALSE(reads_uv(MixPattern{{grey(1), texture(noise)}, {grey(0.2f), nullptr}, {grey(0.5f), nullptr}}));
+  int checked = 0;
+  for (int i = 0; i < 40; ++i) {
+    const PatternLookup at{.u = Real(0.37) * i - 3, .v = Real(0.29) * i - 5,
+                           .position = sg::from_raw<PointWorld>(sg::vec3_rep(0.11f * i, 0.07f * i, -0.05f * i))};
+    const Real amount = channel(evaluate_unclamped(noise, at), 0);
+    for (int c = 0; c < 3; ++c) {
+      const Real a = channel(evaluate(checks, at), c), b = 0.5f * channel(evaluate(dots, at), c);
+      const Real mixed = std::clamp((1 - amount) * a + amount * b, Real(0), Real(1));
+      EXPECT_NEAR(channel(evaluate(blend, at), c), mixed, 1e-6) << i << ", " << c;
+      EXPECT_NEAR(channel(evaluate(product, at), c), 0.8f * a * channel(evaluate(dots, at), c), 1e-6) << i << ", " << c;
+      checked += amount != 0;
+    }
+  }
+  EXPECT_GT(checked, 60);  // the noise amount is not zero at most lookups
+  EXPECT_NEAR(channel(largest_value(product), 0), 0.8f * 0.9f * 0.7f, 1e-6);
+  EXPECT_NEAR(channel(largest_value(blend), 0), 0.9f, 1e-6);
 }
 
 }  // namespace

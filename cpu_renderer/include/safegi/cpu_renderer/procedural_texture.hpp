@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -91,8 +92,33 @@ struct MarblePattern {
   Real variation = 0.2f;
 };
 
+// pbrt-v3's UVTexture: the lookup's (s − ⌊s⌋, t − ⌊t⌋, 0).
+struct UvPattern {
+  Mapping2D mapping;
+};
+// pbrt-v3's BilerpTexture: v00 (1 − s)(1 − t) + v01 (1 − s) t + v10 s (1 − t) + v11 s t.
+struct BilerpPattern {
+  Mapping2D mapping;
+  Reflectance v00{}, v01{}, v10{}, v11{};
+};
+
+struct ProceduralTexture;
+// A texture inside another: a constant, times a pattern where there is one.
+struct PatternOperand {
+  Reflectance value{1.0f};
+  std::shared_ptr<const ProceduralTexture> pattern;  // null: the constant alone
+};
+// pbrt-v3's MixTexture, (1 − amount) · first + amount · second (amount a float
+// texture: grey), and its ScaleTexture of two textures, first × second.
+struct MixPattern {
+  PatternOperand first, second, amount;
+};
+struct ProductPattern {
+  PatternOperand first, second;
+};
+
 using Pattern = std::variant<CheckerboardPattern, SolidCheckerboardPattern, DotsPattern, FbmPattern, WindyPattern,
-                             MarblePattern>;
+                             MarblePattern, UvPattern, BilerpPattern, MixPattern, ProductPattern>;
 
 struct ProceduralTexture {
   std::string name;  // as declared (for messages)
