@@ -132,7 +132,7 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     object(value, path, {"type", "reflectance"});
     material.model = MirrorMaterial{reflectance(required(value, path, "reflectance"), path.field("reflectance"))};
   } else if (type == "glass") {
-    object(value, path, {"type", "ior", "reflectance", "transmittance"});
+    object(value, path, {"type", "ior", "reflectance", "transmittance", "alpha"});
     GlassMaterial glass;
     glass.ior = number(required(value, path, "ior"), path.field("ior"), 1.0 / 16, 16);
     glass.reflectance = value.contains("reflectance") ? reflectance(value["reflectance"], path.field("reflectance"))
@@ -141,6 +141,10 @@ Material Loader::load_material(const std::string& name, const Json& value, const
                               ? reflectance(value["transmittance"], path.field("transmittance"))
                               : Reflectance(1.0f);
     material.model = glass;
+    // Rough glass is pbrt-v3's: translucent's glossy lobes alone, on an interface of this index.
+    if (value.contains("alpha"))
+      material.model = TranslucentMaterial{TexturedReflectance{}, Reflectance(1.0f), glass.reflectance, glass.transmittance,
+                                           static_cast<Real>(number(value["alpha"], path.field("alpha"), 1e-4, 1)), glass.ior};
   } else if (type == "plastic") {
     object(value, path, {"type", "diffuse", "specular", "alpha", "ior", "pbrt_v3_fresnel"});
     PlasticMaterial plastic;

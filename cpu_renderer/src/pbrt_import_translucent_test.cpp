@@ -95,5 +95,32 @@ TEST(PbrtImport, TranslucentBoundsAndRefusals) {
       << anisotropic.warnings;
 }
 
+// pbrt-v3's glass with "uroughness"/"vroughness" (remapped by default) is
+// its two microfacet lobes, Kr and Kt, on an interface of index "eta":
+// translucent's glossy lobes with Kd 0 and Ks 1; at roughness 0, smooth glass.
+TEST(PbrtImport, RoughGlassIsTranslucentsGlossyLobes) {
+  PbrtScene scene = import(world(
+      "Material \"glass\" \"float uroughness\" 0.2 \"float vroughness\" 0.2 \"rgb Kr\" [0.9 0.8 0.7] "
+      "\"float eta\" 1.33\nShape \"sphere\"\n"                                                                 // 0
+      "Material \"glass\" \"float uroughness\" 0.05 \"float vroughness\" 0.05 \"bool remaproughness\" \"false\"\n"
+      "Shape \"sphere\"\n"                                                                                      // 1
+      "Material \"glass\" \"float uroughness\" 0 \"float vroughness\" 0\nShape \"sphere\""));                 // 2
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.shapes.size(), 3u);
+  const TranslucentMaterial rough = as<TranslucentMaterial>(s.materials.at(s.shapes[0].material));
+  EXPECT_TRUE(sg::is_black(rough.diffuse.value));
+  EXPECT_EQ(sg::raw(rough.specular), glm::vec3(1));
+  EXPECT_EQ(sg::raw(rough.reflect), glm::vec3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(sg::raw(rough.transmit), glm::vec3(1));
+  EXPECT_NEAR(rough.alpha, pbrt_alpha(0.2), 1e-6);
+  EXPECT_FLOAT_EQ(rough.ior, 1.33f);
+  EXPECT_FLOAT_EQ(as<TranslucentMaterial>(s.materials.at(s.shapes[1].material)).alpha, 0.05f);
+  EXPECT_TRUE(is<GlassMaterial>(s.materials.at(s.shapes[2].material)));
+  EXPECT_EQ(scene.warnings, "");
+  EXPECT_EQ(first_line(import_error(world(used("Material \"glass\" \"float uroughness\" 0.1 \"float vroughness\" 0.3")))),
+            "scene.pbrt:2:10: error: an anisotropic Material \"glass\" (\"uroughness\" 0.1, \"vroughness\" 0.3) is not "
+            "supported");
+}
+
 }  // namespace
 }  // namespace safegi::render

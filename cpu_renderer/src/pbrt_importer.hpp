@@ -172,6 +172,7 @@ class Importer {
   MaterialModel plastic(const TexturedReflectance& kd, Reflectance ks, double alpha, double ior, bool pbrt_v3_fresnel,
                         const ParamSet& params, SourceRange at);
   static MaterialModel glass(Reflectance kr, Reflectance kt, double ior);
+  MaterialModel glass(ParamSet& params, SourceRange at);
   MaterialModel metal(ParamSet& params, SourceRange at);
   MaterialModel substrate(ParamSet& params, SourceRange at);
   MaterialModel translucent(ParamSet& params, SourceRange at);

@@ -301,11 +301,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     // pbrt-v3's plastic: FresnelDielectric(1.5, 1), the indices swapped (mmp/pbrt-v3#210).
     material.model = plastic(kd, ks, roughness_alpha(params, "roughness", 0.1, remap), 1.5, true, params, at);
   } else if (type == "glass") {
-    Reflectance kr = reflectance(params, "Kr", 1), kt = reflectance(params, "Kt", 1);
-    params.reject("uroughness", "rough glass (only 0: smooth glass)", 0.0);
-    params.reject("vroughness", "rough glass (only 0: smooth glass)", 0.0);
-    params.one_bool("remaproughness", true);  // no roughness to remap
-    material.model = glass(kr, kt, index_of_refraction(params, at));
+    material.model = glass(params, at);
   } else if (type == "metal") {
     material.model = metal(params, at);
   } else if (type == "substrate") {
@@ -461,6 +457,24 @@ MaterialModel Importer::translucent(ParamSet& params, SourceRange at) {
                  "): the surface may scatter more light than it receives",
          "rendered as pbrt-v3 renders it; lower them for a surface that conserves energy");
   return TranslucentMaterial{kd, ks, reflect, transmit, alpha, 1.5f};
+}
+
+// pbrt-v3's glass (src/materials/glass.cpp): "Kr" and "Kt" (1 each), "eta"
+// (1.5); "uroughness" and "vroughness" (0 each), remapped by default. Smooth
+// when both are 0: specular reflection and refraction. Rough, its BSDF is a
+// Trowbridge–Reitz reflection lobe weighted by Kr and Walter et al.'s
+// transmission lobe weighted by Kt on an interface of index eta, one of the
+// two picked uniformly: exactly translucent's glossy lobes (Kd 0, Ks 1).
+MaterialModel Importer::glass(ParamSet& params, SourceRange at) {
+  Reflectance kr = reflectance(params, "Kr", 1), kt = reflectance(params, "Kt", 1);
+  double u = float_param(params, "uroughness").value_or(0), v = float_param(params, "vroughness").value_or(0);
+  u = isotropic_roughness(u, v, params, at, false);
+  bool remap = params.one_bool("remaproughness", true);
+  const double ior = index_of_refraction(params, at);
+  if (u == 0) return glass(kr, kt, ior);
+  if (sg::is_black(kr) && sg::is_black(kt)) return BlackMaterial{};
+  return TranslucentMaterial{TexturedReflectance{}, Reflectance(1.0f), kr, kt,
+                             checked_alpha(microfacet_alpha(u, remap), params, at), static_cast<Real>(ior)};
 }
 
 MaterialModel Importer::glass(Reflectance kr, Reflectance kt, double ior) {

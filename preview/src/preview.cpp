@@ -269,7 +269,12 @@ struct Preview::Impl {
       approximations.push_back("curved mirrors are not previewed and appear black (" + names +
                                "); planar mirrors show one-bounce reflections");
     }
-    add(names_of([](const Material& m) { return std::holds_alternative<GlassMaterial>(m.model); }),
+    // Rough glass is a translucent material without a diffuse part.
+    auto rough_glass = [](const Material& m) {
+      const auto* translucent = std::get_if<TranslucentMaterial>(&m.model);
+      return translucent && sg::is_black(translucent->diffuse.value);
+    };
+    add(names_of([&](const Material& m) { return std::holds_alternative<GlassMaterial>(m.model) || rough_glass(m); }),
         "glass is not previewed and appears black");
     add(names_of([](const Material& m) { return std::holds_alternative<ConductorMaterial>(m.model); }),
         "metal is not previewed and appears black");
@@ -277,7 +282,7 @@ struct Preview::Impl {
         "plastic is drawn as its diffuse layer, without its coating's reflection");
     add(names_of([](const Material& m) { return std::holds_alternative<SubstrateMaterial>(m.model); }),
         "substrate is drawn as its diffuse layer (Kd), without its coating's reflection");
-    add(names_of([](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model); }),
+    add(names_of([&](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model) && !rough_glass(m); }),
         "translucent is drawn as its diffuse reflection (reflect times Kd), without its glossy lobes or the light it "
         "lets through");
     add(names_of([](const Material& m) { return m.mix.has_value(); }),
