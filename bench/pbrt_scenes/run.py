@@ -14,7 +14,8 @@ committed, plus our Cornell box written by bench/renderer/json_to_pbrt.py):
     included; ours from --stats: the render only, and the whole process);
   * peak memory (maximum resident set) of each process;
   * robustness: truncated and damaged copies of each scene through
-    safegi-render, which must exit 0 or 1 with a message, never crash or hang.
+    safegi-render, which must exit 0 or 1 with a message, never crash or hang
+    (SAFEGI_PBRT_DAMAGED copies per scene: 200 by default, 20 in quick mode).
 
 Needs a pbrt-v3 binary: SAFEGI_PBRT=/path/to/pbrt (docs/cpu-renderer.md says
 how one was built); without it the section says so and measures nothing.
@@ -175,7 +176,7 @@ def scene_rows(pbrt: str, entry: dict, scene: Path, tmp: Path) -> tuple[list[str
              f"{pbrt_rate / 1e6:.2f} M", f"{ours_render_rate / 1e6:.2f} M ({ours_process_rate / 1e6:.2f} M)",
              f"**{ours_render_rate / pbrt_rate:.2f}×** ({ours_process_rate / pbrt_rate:.2f}×)",
              f"{pbrt_rss / 1024:.1f} MiB", f"{ours_rss / 1024:.1f} MiB"]
-    damage = robustness(scene, unit, 20 if quick else 200, tmp)
+    damage = robustness(scene, unit, int(os.environ.get("SAFEGI_PBRT_DAMAGED", 20 if quick else 200)), tmp)
     return accuracy, speed, damage
 
 

@@ -63,6 +63,9 @@ class Bsdf {
   }
   // The material's untextured diffuse value (black without a diffuse part).
   explicit Bsdf(const Material& material) : Bsdf(material, untextured_diffuse(material), false) {}
+  // The Bsdf refers to its material: a temporary one would dangle.
+  explicit Bsdf(Material&&) = delete;
+  Bsdf(Material&&, const Reflectance&, bool) = delete;
 
   bool is_specular() const { return render::is_specular(model_); }
   // Non-specular light through the surface: eval() and pdf() have values
@@ -72,6 +75,7 @@ class Bsdf {
   Brdf eval(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return Brdf{};
     return std::visit(Overloaded{[&](const LambertMaterial&) { return lambert(diffuse_); },
+                                 [&](const OrenNayarMaterial& m) { return oren_nayar(m, wo, wi); },
                                  [&](const PhongMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
@@ -86,6 +90,7 @@ class Bsdf {
   PdfSolidAngle pdf(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return sg::zero;
     return std::visit(Overloaded{[&](const LambertMaterial&) { return cosine_pdf(wi); },
+                                 [&](const OrenNayarMaterial&) { return cosine_pdf(wi); },
                                  [&](const PhongMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const PlasticMaterial& m) { return pdf_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor_pdf(m, wo, wi); },
@@ -107,6 +112,10 @@ class Bsdf {
                    [&](const LambertMaterial&) {
                      DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
                      return weighted(wi, lambert(diffuse_), cosine_pdf(wi));
+                   },
+                   [&](const OrenNayarMaterial& m) {  // pbrt-v3's default BxDF::Sample_f: the cosine hemisphere
+                     DirectionShading wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+                     return weighted(wi, oren_nayar(m, wo, wi), cosine_pdf(wi));
                    },
                    [&](const PhongMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
                    [&](const PlasticMaterial& m) { return sample_lobed(m, wo, u_lobe, u1, u2); },
@@ -140,6 +149,23 @@ class Bsdf {
   static DirectionShading reflect(DirectionShading w) { return DirectionShading(-w.x(), -w.y(), w.z()); }
 
   static Brdf lambert(Reflectance albedo) { return albedo * kInversePi / units::steradian / units::proj; }
+
+  // pbrt-v3's OrenNayar::f, in its form: the azimuths' cosine from the
+  // directions' components, sin α and tan β from the larger and smaller θ.
+  Brdf oren_nayar(const OrenNayarMaterial& m, DirectionShading wo, DirectionShading wi) const {
+    const sg::vec3_rep i = sg::raw(wi), o = sg::raw(wo);
+    const Real cos_i = std::abs(i.z), cos_o = std::abs(o.z);
+    const Real sin_i = std::sqrt(std::max(Real(0), 1 - cos_i * cos_i)), sin_o = std::sqrt(std::max(Real(0), 1 - cos_o * cos_o));
+    Real max_cos = 0;
+    if (sin_i > Real(1e-4) && sin_o > Real(1e-4)) {
+      auto clamped = [](Real x) { return std::clamp(x, Real(-1), Real(1)); };
+      max_cos = std::max(Real(0), clamped(i.x / sin_i) * clamped(o.x / sin_o) + clamped(i.y / sin_i) * clamped(o.y / sin_o));
+    }
+    const bool incoming_higher = cos_i > cos_o;  // θi < θo
+    const Real sin_alpha = incoming_higher ? sin_o : sin_i;
+    const Real tan_beta = incoming_higher ? sin_i / cos_i : sin_o / cos_o;
+    return lambert(diffuse_) * (m.a + m.b * max_cos * sin_alpha * tan_beta);
+  }
 
   // Cosine-weighted directions: 1/π per projected solid angle, i.e. cos θ/π per solid angle.
   static PdfSolidAngle cosine_pdf(DirectionShading wi) {

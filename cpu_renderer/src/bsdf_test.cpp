@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <complex>
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -180,6 +181,9 @@ TEST(TrowbridgeReitz, VisibleNormalsIntegrateToOneAndFollowTheirDensity) {
 const TexturedReflectance kTestDiffuse{Reflectance(0.5f, 0.4f, 0.3f)};
 const Reflectance kTestSpecular(0.4f);
 Material lambert_material() { return {LambertMaterial{kTestDiffuse}}; }
+Material oren_nayar_material() {
+  return {OrenNayarMaterial::with_sigma(kTestDiffuse, Real(30) * units::degree)};
+}
 Material phong_material() { return {PhongMaterial{kTestDiffuse, kTestSpecular, 40}}; }
 PlasticMaterial plastic_parameters() { return PlasticMaterial{kTestDiffuse, kTestSpecular, 0.2f}; }
 Material plastic_material() { return {plastic_parameters()}; }
@@ -213,8 +217,8 @@ SampledEstimate estimate_albedo(const Bsdf& bsdf, DirectionShading wo, int n) {
 
 TEST(Bsdf, SamplingAgreesWithEvaluation) {
   const Material materials[] = {lambert_material(), phong_material(), plastic_material(), copper_material(),
-                                substrate_material()};
-  for (int type = 0; type < 5; ++type) {
+                                substrate_material(), oren_nayar_material()};
+  for (int type = 0; type < 6; ++type) {
     const Material& m = materials[type];
     Bsdf bsdf(m);
     for (double theta : {0.0, 0.5, 1.0, 1.4}) {
@@ -233,6 +237,43 @@ TEST(Bsdf, SamplingAgreesWithEvaluation) {
       }
     }
   }
+}
+
+// Oren and Nayar's model as their paper and pbrt-v3 write it, in angles:
+// ρ/π (A + B max(0, cos(φi − φo)) sin(max θ) tan(min θ)), transcribed in
+// double; σ = 0 is exactly Lambert.
+TEST(Bsdf, OrenNayarIsTheQualitativeModel) {
+  const double rho = sg::raw(kTestDiffuse.value).g;
+  for (double sigma_degrees : {0.0, 10.0, 30.0, 60.0}) {
+    const OrenNayarMaterial parameters =
+        OrenNayarMaterial::with_sigma(kTestDiffuse, static_cast<Real>(sigma_degrees) * units::degree);
+    const Material material{parameters};
+    const Bsdf bsdf(material);
+    const double s2 = std::pow(sigma_degrees * kPiD / 180, 2);
+    const double a = 1 - s2 / (2 * (s2 + 0.33)), b = 0.45 * s2 / (s2 + 0.09);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> theta(0.001, 1.56), phi(0, 2 * kPiD);
+    for (int i = 0; i < 2000; ++i) {
+      const double to = theta(rng), ti = theta(rng), po = phi(rng), pi = phi(rng);
+      const double expected =
+          rho / kPiD * (a + b * std::max(0.0, std::cos(pi - po)) * std::sin(std::max(ti, to)) * std::tan(std::min(ti, to)));
+      const double f = sg::raw(bsdf.eval(spherical(to, po), spherical(ti, pi))).g;
+      ASSERT_NEAR(f, expected, 2e-5 * expected + 1e-6) << sigma_degrees << " degrees, pair " << i;
+    }
+    if (sigma_degrees == 0) {
+      const Material lambert_parameters = lambert_material();
+      const Bsdf lambert(lambert_parameters);
+      const DirectionShading wo = spherical(0.3, 0.2), wi = spherical(1.1, 2.5);
+      EXPECT_EQ(sg::raw(bsdf.eval(wo, wi)), sg::raw(lambert.eval(wo, wi)));
+    }
+  }
+  // Rougher, it sends more light back towards the light at grazing angles
+  // (retro-reflection) and less than Lambert straight up from grazing light.
+  const Material rough_material = oren_nayar_material(), flat_material = lambert_material();
+  const Bsdf rough(rough_material), flat(flat_material);
+  const DirectionShading grazing = spherical(1.3, 0), back = spherical(1.3, 0), up = spherical(0, 0);
+  EXPECT_GT(sg::raw(rough.eval(grazing, back)).g, sg::raw(flat.eval(grazing, back)).g);
+  EXPECT_LT(sg::raw(rough.eval(up, grazing)).g, sg::raw(flat.eval(up, grazing)).g);
 }
 
 TEST(Bsdf, PlasticWithoutSpecularIsLambert) {

@@ -347,8 +347,9 @@ TEST(Translucent, PicksAmongItsLobesAsPbrtV3Does) {
   }
   TranslucentParameters through = diffuse;
   through.reflect = {0, 0, 0};
+  const Material through_material = translucent_material(through);
   for (Real u_lobe : {0.0f, 0.7f}) {
-    std::optional<BsdfSample> s = Bsdf(translucent_material(through)).sample(wo, u_lobe, 0.3f, 0.6f);
+    std::optional<BsdfSample> s = Bsdf(through_material).sample(wo, u_lobe, 0.3f, 0.6f);
     ASSERT_TRUE(s);
     EXPECT_LT(s->wi.z(), 0);
     EXPECT_NEAR(sg::raw(s->weight).g, 0.8 * 0.1, 1e-6);  // f |cos| / pdf = transmit Kd

@@ -1,9 +1,12 @@
-// Perspective camera: pinhole or thin lens, with a shutter interval. Lens and
-// time samples are drawn only when the scene has an aperture or a shutter, so
-// a feature the scene does not use costs nothing.
+// The camera's rays: perspective (pinhole or thin lens), orthographic (parallel
+// rays from an image-sized window, thin lens too) or environment (every
+// direction, longitude across the image, latitude down it), with a shutter
+// interval. Lens and time samples are drawn only when the scene has an
+// aperture or a shutter, so a feature the scene does not use costs nothing.
 #pragma once
 
 #include <algorithm>
+#include <numbers>
 
 #include "geometry.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
@@ -12,10 +15,33 @@
 
 namespace safegi::render {
 
-class PerspectiveCamera {
+// A pixel's ray cone, the textures' footprint: its width at the camera and how
+// fast it widens (the angle one pixel subtends at the image centre).
+struct PixelCone {
+  Length width = sg::zero;
+  Angle spread = sg::zero;
+};
+
+inline PixelCone pixel_cone(const Camera& camera, int width, int height) {
+  const Real shorter = static_cast<Real>(std::min(width, height));
+  switch (camera.projection) {
+    case CameraProjection::orthographic:
+      return {camera.view_size / shorter, sg::zero};
+    case CameraProjection::environment: {
+      const Real pi = std::numbers::pi_v<Real>;
+      return {sg::zero, std::max(2 * pi / static_cast<Real>(width), pi / static_cast<Real>(height)) * units::radian};
+    }
+    case CameraProjection::perspective:
+      break;
+  }
+  return {sg::zero, 2 * sg::tan(0.5f * camera.fov) / shorter * units::radian};
+}
+
+class CameraRays {
  public:
-  PerspectiveCamera(const Camera& camera, int width, int height)
-      : position_(camera.position),
+  CameraRays(const Camera& camera, int width, int height)
+      : projection_(camera.projection),
+        position_(camera.position),
         lens_radius_(camera.lens_radius),
         focus_distance_(camera.focus_distance),
         shutter_open_(camera.shutter_open),
@@ -23,40 +49,63 @@ class PerspectiveCamera {
     forward_ = sg::normalize(camera.look_at - camera.position);
     right_ = sg::normalize(sg::cross(forward_, camera.up));
     up_ = sg::normalize(sg::cross(right_, forward_));
-    Real tangent = sg::tan(0.5f * camera.fov);
-    Real shorter = static_cast<Real>(std::min(width, height));
-    // Half-extents of the image plane at unit distance; the shorter axis spans the fov.
+    const Real shorter = static_cast<Real>(std::min(width, height));
+    // The image's half-extents: on the image plane at unit distance (the
+    // shorter axis spans the fov), or where the shorter one is 1 (orthographic).
+    const Real tangent = camera.projection == CameraProjection::perspective ? sg::tan(0.5f * camera.fov) : Real(1);
     half_width_ = tangent * static_cast<Real>(width) / shorter;
     half_height_ = tangent * static_cast<Real>(height) / shorter;
+    half_view_ = 0.5f * camera.view_size;
     inverse_width_ = 1.0f / static_cast<Real>(width);
     inverse_height_ = 1.0f / static_cast<Real>(height);
   }
 
-  bool has_lens() const { return lens_radius_ > sg::zero; }
+  bool has_lens() const { return lens_radius_ > sg::zero && projection_ != CameraProjection::environment; }
   bool has_shutter() const { return shutter_span_ > sg::zero; }
 
   TimedRay generate(int pixel_x, int pixel_y, Sampler& sampler) const {
-    Sample2 film = sampler.next_2d();
-    Real sx = (2 * (static_cast<Real>(pixel_x) + film.u) * inverse_width_ - 1) * half_width_;
-    Real sy = (1 - 2 * (static_cast<Real>(pixel_y) + film.v) * inverse_height_) * half_height_;
-    DirectionWorld direction = sg::normalize(forward_ * 1.0f + right_ * sx + up_ * sy);
-    TimedRay ray{{position_, direction}, shutter_open_};
-    if (has_lens()) {
-      Sample2 lens = sampler.next_2d();
-      Real lx, ly;
-      sample_concentric_disk(lens.u, lens.v, lx, ly);
-      PointWorld focus_point = position_ + direction * (focus_distance_ / sg::dot(direction, forward_));
-      ray.o = position_ + right_ * (lx * lens_radius_) + up_ * (ly * lens_radius_);
-      ray.d = sg::normalize(focus_point - ray.o);
+    const Sample2 film = sampler.next_2d();
+    const Real fx = (static_cast<Real>(pixel_x) + film.u) * inverse_width_;
+    const Real fy = (static_cast<Real>(pixel_y) + film.v) * inverse_height_;
+    TimedRay ray{{position_, forward_}, shutter_open_};
+    if (projection_ == CameraProjection::environment) {
+      ray.d = around(fx, fy);
+    } else {
+      const Real sx = (2 * fx - 1) * half_width_, sy = (1 - 2 * fy) * half_height_;
+      if (projection_ == CameraProjection::orthographic)
+        ray.o = position_ + right_ * (sx * half_view_) + up_ * (sy * half_view_);
+      else
+        ray.d = sg::normalize(forward_ * 1.0f + right_ * sx + up_ * sy);
+      if (has_lens()) focus_through_lens(ray, sampler.next_2d());
     }
     if (has_shutter()) ray.time = shutter_open_ + sampler.next_1d() * shutter_span_;
     return ray;
   }
 
  private:
+  // pbrt-v3's EnvironmentCamera: θ from the top of the image, φ across it.
+  DirectionWorld around(Real fx, Real fy) const {
+    const Real pi = std::numbers::pi_v<Real>;
+    const Real theta = pi * fy, phi = 2 * pi * fx;
+    const Real sin_theta = std::sin(theta);
+    return sg::normalize(right_ * (sin_theta * std::cos(phi)) + up_ * std::cos(theta) +
+                         forward_ * (sin_theta * std::sin(phi)));
+  }
+
+  // The thin lens: the ray leaves a point of the lens (the disk around its
+  // pinhole ray's origin) for where that ray meets the plane of focus.
+  void focus_through_lens(ray<World>& ray, Sample2 lens) const {
+    Real lx, ly;
+    sample_concentric_disk(lens.u, lens.v, lx, ly);
+    const PointWorld focus_point = ray.o + ray.d * (focus_distance_ / sg::dot(ray.d, forward_));
+    ray.o = ray.o + right_ * (lx * lens_radius_) + up_ * (ly * lens_radius_);
+    ray.d = sg::normalize(focus_point - ray.o);
+  }
+
+  CameraProjection projection_;
   PointWorld position_;
   DirectionWorld forward_, right_, up_;
-  Length lens_radius_, focus_distance_;
+  Length lens_radius_, focus_distance_, half_view_;
   Time shutter_open_, shutter_span_;
   Real half_width_, half_height_, inverse_width_, inverse_height_;
 };

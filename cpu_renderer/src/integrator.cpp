@@ -242,7 +242,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     // The cone's width across the surface, stretched by its tilt (a plain ratio).
     auto footprint = [&] {
       Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
-      return sharp_cone ? travelled * (pixel_spread_ / units::radian) / tilt : Length(sg::zero);
+      return sharp_cone ? (pixel_cone_.width + travelled * (pixel_cone_.spread / units::radian)) / tilt : Length(sg::zero);
     };
     if constexpr (textured) travelled += hit->distance;
     const Material* chosen = &scene_.materials[shape.material];

@@ -11,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "camera.hpp"
 #include "geometry.hpp"
 #include "lights.hpp"
 #include "photon_map.hpp"
@@ -44,9 +45,7 @@ class Integrator {
         max_depth_(settings.max_depth), mis_(settings.mis), light_samples_(settings.light_samples),
         roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()),
         textures_(scene),
-        // The angle one pixel subtends at the image centre: the camera ray cone's spread.
-        pixel_spread_(2 * sg::tan(0.5f * scene.camera.fov) / static_cast<Real>(std::min(settings.width, settings.height)) *
-                      units::radian),
+        pixel_cone_(pixel_cone(scene.camera, settings.width, settings.height)),
         media_(scene.has_media()) {
     if (media_ && settings.integrator == IntegratorType::photon)
       throw std::invalid_argument(
@@ -122,7 +121,7 @@ class Integrator {
   int light_samples_;  // next-event samples per shading point
   int roulette_depth_;
   SurfaceTextures textures_;
-  Angle pixel_spread_;
+  PixelCone pixel_cone_;
   bool media_;  // the scene has participating media or invisible surfaces
   std::unique_ptr<PhotonMap> photons_;
 };

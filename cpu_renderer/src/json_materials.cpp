@@ -118,6 +118,13 @@ Material Loader::load_material(const std::string& name, const Json& value, const
   if (type == "lambert") {
     object(value, path, {"type", "reflectance"});
     material.model = LambertMaterial{textured_reflectance(required(value, path, "reflectance"), path.field("reflectance"))};
+  } else if (type == "oren_nayar") {
+    object(value, path, {"type", "reflectance", "sigma"});
+    const Angle sigma = typed_scalar<dim::angle>(required(value, path, "sigma"), path.field("sigma"));
+    if (!(sigma >= Real(0) * units::degree && sigma <= Real(90) * units::degree))
+      fail(path.field("sigma"), "expected an angle in [0 deg, 90 deg], got " + short_dump(value["sigma"]));
+    material.model = OrenNayarMaterial::with_sigma(
+        textured_reflectance(required(value, path, "reflectance"), path.field("reflectance")), sigma);
   } else if (type == "phong") {
     object(value, path, {"type", "diffuse", "specular", "exponent"});
     PhongMaterial phong;
@@ -195,7 +202,7 @@ Material Loader::load_material(const std::string& name, const Json& value, const
     material.mix = mix;
   } else {
     fail(path.field("type"),
-         "expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\", \"substrate\", "
+         "expected \"lambert\", \"oren_nayar\", \"phong\", \"mirror\", \"glass\", \"plastic\", \"conductor\", \"substrate\", "
          "\"translucent\" or \"mix\", got " +
              short_dump(value["type"]));
   }

@@ -138,9 +138,17 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
             "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
             "\"translucent\", \"uber\", \"mix\"\n");
-  EXPECT_EQ(import_error(world(used("Material \"matte\" \"float sigma\" [20]"))),
-            "scene.pbrt:2:18: error: \"float sigma\" of Material \"matte\" is not supported: Oren-Nayar roughness "
-            "(only sigma 0, Lambert)\nMaterial \"matte\" \"float sigma\" [20]\n                 ^~~~~~~~~~~~~\n");
+  // pbrt-v3's matte with "sigma" (degrees) is Oren-Nayar; 0 is Lambert.
+  PbrtScene rough = import(world(used("Material \"matte\" \"float sigma\" [20] \"rgb Kd\" [0.4 0.5 0.6]")));
+  const OrenNayarMaterial oren_nayar = as<OrenNayarMaterial>(rough.scene.materials.at(rough.scene.shapes[0].material));
+  const double s2 = std::pow(20 * std::numbers::pi / 180, 2);
+  EXPECT_NEAR(oren_nayar.a, 1 - s2 / (2 * (s2 + 0.33)), 1e-6);
+  EXPECT_NEAR(oren_nayar.b, 0.45 * s2 / (s2 + 0.09), 1e-6);
+  EXPECT_EQ(sg::raw(oren_nayar.diffuse.value), glm::vec3(0.4f, 0.5f, 0.6f));
+  PbrtScene smooth = import(world(used("Material \"matte\" \"float sigma\" [0]")));
+  EXPECT_TRUE(is<LambertMaterial>(smooth.scene.materials.at(smooth.scene.shapes[0].material)));
+  EXPECT_EQ(first_line(import_error(world(used("Material \"matte\" \"float sigma\" [-5]")))),
+            "scene.pbrt:2:10: error: \"sigma\" of Material \"matte\" must lie in [0, 90] degrees, found -5");
   EXPECT_EQ(import_error(world("LightSource \"goniometric\"")),
             "scene.pbrt:2:13: error: light \"goniometric\" is not supported\nLightSource \"goniometric\"\n"
             "            ^~~~~~~~~~~~~\nhelp: supported: \"point\", \"spot\", \"distant\", \"infinite\"\n");

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string_view>
 
 #include <safegi/diagnostics/render.hpp>
@@ -261,8 +262,9 @@ Matrix Importer::transformed(const Directive& d, const Matrix& ctm) const {
 
 void Importer::options_directive(const Directive& d) {
   if (d.name == "Camera") {
-    if (d.strings[0] != "perspective")
-      fail(d.string_ranges[0], "camera \"" + d.strings[0] + "\" is not supported", "supported: \"perspective\"");
+    if (d.strings[0] != "perspective" && d.strings[0] != "orthographic" && d.strings[0] != "environment")
+      fail(d.string_ranges[0], "camera \"" + d.strings[0] + "\" is not supported",
+           "supported: \"perspective\", \"orthographic\", \"environment\"");
     if (state_.transform.animated())
       fail(d.range, "an animated camera (a transform ActiveTransform changed at one time only) is not supported",
            "animate the objects instead: their motion blurs as pbrt-v3's does");
@@ -413,6 +415,30 @@ void Importer::world_begin(const Directive& d) {
 }
 
 // Without a Camera directive pbrt-v3 looks down +z from the origin, fov 90.
+// pbrt-v3's default screen window spans [-1, 1] across the film's shorter axis. A
+// window that scales it by s is a wider or narrower view, which our cameras express
+// directly; a shifted or stretched one is not.
+double Importer::screen_window_scale(ParamSet& params, SourceRange at) {
+  const RenderSettings& settings = result_.scene.settings;
+  double aspect = static_cast<double>(settings.width) / settings.height;
+  double frame_aspect = params.one_float("frameaspectratio", aspect);
+  if (std::fabs(frame_aspect - aspect) > 1e-6 * aspect)
+    fail(at, "a \"frameaspectratio\" other than the film's is not supported", "our pixels are square");
+  const Param* window = params.find("screenwindow", {ParamType::floating});
+  if (!window) return 1;
+  double fx = aspect > 1 ? aspect : 1, fy = aspect > 1 ? 1 : 1 / aspect;
+  const std::vector<double>& w = window->numbers;
+  double s = w.size() == 4 ? w[1] / fx : 0;
+  if (!(s > 0 && std::isfinite(s)) || std::fabs(w[0] + s * fx) > 1e-6 * s * fx ||
+      std::fabs(w[2] + s * fy) > 1e-6 * s * fy || std::fabs(w[3] - s * fy) > 1e-6 * s * fy) {
+    std::ostringstream expected;
+    expected << "expected [-" << fx << "s " << fx << "s -" << fy << "s " << fy << "s] for some s > 0";
+    fail(window->declaration, "only a \"screenwindow\" centred on the view with the film's aspect is supported",
+         expected.str());
+  }
+  return s;
+}
+
 void Importer::finish_camera(SourceRange world_begin) {
   Camera& camera = result_.scene.camera;
   SourceRange at = camera_ ? camera_->range : world_begin;
@@ -439,17 +465,31 @@ void Importer::finish_camera(SourceRange world_begin) {
   camera.up = sg::normalize(sg::from_raw<vector<World, dim::dimensionless>>(sg::vec3_rep(up)));
 
   static const std::vector<Param> kNoParams;
-  ParamSet params(camera_ ? camera_->params : kNoParams, "Camera \"perspective\"");
-  double fov = params.one_float("fov", 90);
-  double half_fov = params.one_float("halffov", -1);
-  if (half_fov > 0) fov = 2 * half_fov;
-  if (!(fov > 0 && fov < 180)) fail(at, "the field of view must lie in (0, 180) degrees");
-  camera.fov = static_cast<Real>(fov) * units::degree;
+  const std::string type = camera_ ? camera_->strings[0] : "perspective";
+  ParamSet params(camera_ ? camera_->params : kNoParams, "Camera \"" + type + "\"");
   double metres_per_camera_unit = sx * unit;
-  double lens_radius = params.one_float("lensradius", 0);
+  const double window_scale = type == "environment" ? 1 : screen_window_scale(params, at);
+  if (type == "perspective") {
+    double fov = params.one_float("fov", 90);
+    double half_fov = params.one_float("halffov", -1);
+    if (half_fov > 0) fov = 2 * half_fov;
+    if (!(fov > 0 && fov < 180)) fail(at, "the field of view must lie in (0, 180) degrees");
+    // A scaled window widens the view as a wider field of view would: tan(fov'/2) = s tan(fov/2).
+    fov = 2 * std::atan(window_scale * std::tan(fov * std::numbers::pi / 360)) * 180 / std::numbers::pi;
+    camera.fov = static_cast<Real>(fov) * units::degree;
+  } else if (type == "orthographic") {
+    camera.projection = CameraProjection::orthographic;
+    camera.view_size = sg::from_raw<Length>(static_cast<Real>(2 * window_scale * metres_per_camera_unit));
+    if (!(camera.view_size > sg::zero) || !std::isfinite(sg::raw(camera.view_size)))
+      fail(at, std::string("the orthographic view is out of ") + kRealName + " range at this --length-unit");
+  } else {
+    // pbrt-v3's environment camera sees every direction: it reads no lens, window or aspect.
+    camera.projection = CameraProjection::environment;
+  }
+  double lens_radius = type == "environment" ? 0 : params.one_float("lensradius", 0);
   if (lens_radius < 0) fail(at, "\"float lensradius\" must not be negative");
   camera.lens_radius = sg::from_raw<Length>(static_cast<Real>(lens_radius * metres_per_camera_unit));
-  double focal_distance = params.one_float("focaldistance", 1e6);
+  double focal_distance = type == "environment" ? 1e6 : params.one_float("focaldistance", 1e6);
   if (!(focal_distance > 0)) fail(at, "\"float focaldistance\" must be positive");
   camera.focus_distance = sg::from_raw<Length>(static_cast<Real>(focal_distance * metres_per_camera_unit));
   if (!std::isfinite(sg::raw(camera.focus_distance)) || !std::isfinite(sg::raw(camera.lens_radius)))
@@ -457,18 +497,6 @@ void Importer::finish_camera(SourceRange world_begin) {
   // Used once a shape moves (ActiveTransform): pbrt-v3's times, as seconds.
   shutter_open_ = params.one_float("shutteropen", 0);
   shutter_close_ = params.one_float("shutterclose", 1);
-  const RenderSettings& settings = result_.scene.settings;
-  double aspect = static_cast<double>(settings.width) / settings.height;
-  double frame_aspect = params.one_float("frameaspectratio", aspect);
-  if (std::fabs(frame_aspect - aspect) > 1e-6 * aspect)
-    fail(at, "a \"frameaspectratio\" other than the film's is not supported", "our pixels are square");
-  if (const Param* window = params.find("screenwindow", {ParamType::floating})) {
-    double fx = aspect > 1 ? aspect : 1, fy = aspect > 1 ? 1 : 1 / aspect;
-    const std::vector<double>& w = window->numbers;
-    if (w.size() != 4 || std::fabs(w[0] + fx) > 1e-6 * fx || std::fabs(w[1] - fx) > 1e-6 * fx ||
-        std::fabs(w[2] + fy) > 1e-6 * fy || std::fabs(w[3] - fy) > 1e-6 * fy)
-      fail(window->declaration, "a \"screenwindow\" other than the default is not supported");
-  }
   report_unused(params);
 }
 

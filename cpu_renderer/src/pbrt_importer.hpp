@@ -158,6 +158,7 @@ class Importer {
   void integrator(const Directive& d);
   void pixel_filter(const Directive& d);
   void finish_camera(SourceRange world_begin);
+  double screen_window_scale(ParamSet& params, SourceRange at);
 
   // Materials and textures (pbrt_materials.cpp).
   void material(const Directive& d, bool named);

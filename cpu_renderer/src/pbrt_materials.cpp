@@ -289,8 +289,14 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   if (type == "mix") return convert_mix(params, at);
   material.bump = bump_map(params);
   if (type == "matte") {
-    params.reject("sigma", "Oren-Nayar roughness (only sigma 0, Lambert)", 0.0);
-    material.model = lambert_or_black(textured_reflectance(params, "Kd", 0.5, true));
+    // pbrt-v3's MatteMaterial: Oren-Nayar of "sigma" degrees (default 0: Lambert).
+    const TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
+    const double sigma = float_param(params, "sigma").value_or(0);
+    if (!(sigma >= 0 && sigma <= 90))
+      fail(at, "\"sigma\" of " + params.context() + " must lie in [0, 90] degrees, found " + format_number(sigma),
+           "the standard deviation of the facets' slope angle");
+    material.model = lambert_or_black(kd);
+    if (sigma > 0 && !black(kd)) material.model = OrenNayarMaterial::with_sigma(kd, static_cast<Real>(sigma) * units::degree);
   } else if (type == "mirror") {
     Reflectance kr = reflectance(params, "Kr", 0.9);
     if (!sg::is_black(kr)) material.model = MirrorMaterial{kr};

@@ -145,7 +145,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int hardware_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Geometry geometry(scene, options.threads > 0 ? options.threads : hardware_threads);
   Lights lights(scene);
-  PerspectiveCamera camera(scene.camera, settings.width, settings.height);
+  CameraRays camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
 
   // This process's tiles, in image coordinates; with a partition, every

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "json_loader.hpp"
@@ -100,15 +101,39 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   }
 }
 
+CameraProjection Loader::projection(const Json& value, const JsonPath& path) {
+  if (!value.contains("projection")) return CameraProjection::perspective;
+  const std::string name = string(value["projection"], path.field("projection"));
+  if (name == "perspective") return CameraProjection::perspective;
+  if (name == "orthographic") return CameraProjection::orthographic;
+  if (name == "environment") return CameraProjection::environment;
+  fail(path.field("projection"),
+       "expected \"perspective\", \"orthographic\" or \"environment\", got " + short_dump(value["projection"]));
+}
+
 void Loader::load_camera(const Json& value, const JsonPath& path, Camera& camera) {
-  object(value, path, {"position", "look_at", "up", "fov", "lens_radius", "focus_distance", "shutter"});
+  object(value, path, {"projection", "position", "look_at", "up", "fov", "view_size", "lens_radius", "focus_distance", "shutter"});
+  camera.projection = projection(value, path);
   camera.position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
   camera.look_at = typed_point<PointWorld>(required(value, path, "look_at"), path.field("look_at"));
   Triple up = triple(required(value, path, "up"), path.field("up"), runtime_dim::none);
-  Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
-  if (!(fov > Real(0) * units::degree && fov < Real(180) * units::degree))
-    fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
-  camera.fov = fov;
+  if (camera.projection == CameraProjection::perspective) {
+    Angle fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
+    if (!(fov > Real(0) * units::degree && fov < Real(180) * units::degree))
+      fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
+    camera.fov = fov;
+  } else if (value.contains("fov")) {
+    fail(path.field("fov"), "only a perspective camera has a field of view");
+  }
+  if (camera.projection == CameraProjection::orthographic) {
+    camera.view_size = typed_scalar<dim::length>(required(value, path, "view_size"), path.field("view_size"));
+    if (!(camera.view_size > sg::zero && sg::raw(camera.view_size) < std::numeric_limits<Real>::infinity()))
+      fail(path.field("view_size"), "must be positive");
+  } else if (value.contains("view_size")) {
+    fail(path.field("view_size"), "only an orthographic camera has a view size");
+  }
+  if (camera.projection == CameraProjection::environment && value.contains("lens_radius"))
+    fail(path.field("lens_radius"), "an environment camera has no lens");
   VectorWorld forward = camera.look_at - camera.position;
   if (!(sg::length(forward) > sg::zero)) fail(path.field("look_at"), "must differ from position");
   sg::vec3_rep up_raw = to_vec3(up);

@@ -82,7 +82,7 @@ TEST_F(LoaderFiles, GlassAndPlastic) {
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "plastic", "diffuse": 0.5, "specular": 0.5, "alpha": 0}})j")),
             "test.json: materials.p.alpha: expected a number in [0.0001, 1], got 0");
   EXPECT_EQ(error(with_camera(R"j("materials": {"p": {"type": "wood"}})j")),
-            "test.json: materials.p.type: expected \"lambert\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
+            "test.json: materials.p.type: expected \"lambert\", \"oren_nayar\", \"phong\", \"mirror\", \"glass\", \"plastic\", "
             "\"conductor\", \"substrate\", \"translucent\" or \"mix\", got \"wood\"");
 }
 
@@ -179,6 +179,18 @@ TEST_F(LoaderFiles, Translucent) {
             "(energy conservation)");
   EXPECT_EQ(translucent_error(R"j("diffuse": 0.5, "specular": 0.2, "reflect": 0.5, "transmit": 0.5, "alpha": 0.1, "ior": 1.3)j"),
             "test.json: materials.m.ior: unknown field (expected one of: type, diffuse, specular, reflect, transmit, alpha)");
+}
+
+TEST_F(LoaderFiles, OrenNayar) {
+  Scene scene = load(with_camera(R"j("materials": {"clay": {"type": "oren_nayar", "reflectance": 0.6, "sigma": "20 deg"}})j"));
+  const OrenNayarMaterial& clay = std::get<OrenNayarMaterial>(scene.materials.at(0).model);
+  const double s2 = std::pow(20 * 3.14159265358979 / 180, 2);
+  EXPECT_NEAR(clay.a, 1 - s2 / (2 * (s2 + 0.33)), 1e-6);
+  EXPECT_NEAR(clay.b, 0.45 * s2 / (s2 + 0.09), 1e-6);
+  EXPECT_EQ(error(with_camera(R"j("materials": {"m": {"type": "oren_nayar", "reflectance": 0.6, "sigma": "100 deg"}})j")),
+            "test.json: materials.m.sigma: expected an angle in [0 deg, 90 deg], got \"100 deg\"");
+  EXPECT_EQ(error(with_camera(R"j("materials": {"m": {"type": "oren_nayar", "reflectance": 0.6, "sigma": 0.3}})j")),
+            "test.json: materials.m.sigma: expected angle (e.g. deg), got 0.3 (a number without unit)");
 }
 
 // A mix names its parts in any order of the file; it may contain mixes, not itself.

@@ -71,6 +71,33 @@ TEST(SceneLoader, MalformedInput) {
   EXPECT_EQ(load_error("\xff\xfe"), "test.json:1:1: invalid JSON: syntax error while parsing value - invalid literal; last read: '\\xFF'");
 }
 
+// The camera's fields follow its projection: a field another projection owns is
+// an error, not silently ignored.
+std::string camera(const std::string& fields) {
+  return R"({"camera": {"position": {"value": [0, 0, 5], "unit": "m"}, "look_at": {"value": [0, 0, 0], "unit": "m"}, "up": [0, 1, 0], )" +
+         fields + "}}";
+}
+
+TEST(SceneLoader, CameraProjections) {
+  Scene ortho = parse_scene(camera(R"("projection": "orthographic", "view_size": "20 cm")"), "test.json", ".");
+  EXPECT_EQ(ortho.camera.projection, CameraProjection::orthographic);
+  EXPECT_NEAR(sg::raw(ortho.camera.view_size), 0.2f, 1e-7);
+  Scene env = parse_scene(camera(R"("projection": "environment")"), "test.json", ".");
+  EXPECT_EQ(env.camera.projection, CameraProjection::environment);
+  EXPECT_EQ(load_error(camera(R"("projection": "fisheye", "fov": "40 deg")")),
+            "test.json: camera.projection: expected \"perspective\", \"orthographic\" or \"environment\", got \"fisheye\"");
+  EXPECT_EQ(load_error(camera(R"("projection": "orthographic")")), "test.json: camera: missing field 'view_size'");
+  EXPECT_EQ(load_error(camera(R"("projection": "orthographic", "view_size": "0 m")")),
+            "test.json: camera.view_size: must be positive");
+  EXPECT_EQ(load_error(camera(R"("projection": "orthographic", "view_size": "1 m", "fov": "40 deg")")),
+            "test.json: camera.fov: only a perspective camera has a field of view");
+  EXPECT_EQ(load_error(camera(R"("fov": "40 deg", "view_size": "1 m")")),
+            "test.json: camera.view_size: only an orthographic camera has a view size");
+  EXPECT_EQ(load_error(camera(R"("projection": "environment", "lens_radius": "1 cm")")),
+            "test.json: camera.lens_radius: an environment camera has no lens");
+  EXPECT_EQ(load_error(camera(R"("lens_radius": "0 m")")), "test.json: camera: missing field 'fov'");
+}
+
 TEST(SceneLoader, ConvertsUnitsOnceAtLoad) {
   Scene scene = parse_scene(with_camera(R"json(
     "shapes": [{"type": "sphere", "center": {"value": [0, 0, 0], "unit": "mm"}, "radius": "250 mm",

@@ -188,6 +188,30 @@ TEST_F(CrossValidation, ApproximationsAreNamed) {
   EXPECT_EQ(Preview(translucent, options).approximations(),
             std::vector<std::string>{"translucent is drawn as its diffuse reflection (reflect times Kd), without its "
                                      "glossy lobes or the light it lets through (sheet)"});
+  Scene clay = render::parse_scene(R"({"camera": {"position": ["0 m", "1 m", "3 m"], "look_at": ["0 m", "0 m", "0 m"],
+      "up": [0, 1, 0], "fov": "40 deg"},
+    "materials": {"clay": {"type": "oren_nayar", "reflectance": 0.6, "sigma": "20 deg"}},
+    "shapes": [{"name": "pot", "type": "sphere", "material": "clay", "center": ["0 m", "0 m", "0 m"], "radius": "1 m"}],
+    "lights": [{"type": "point", "position": ["0 m", "2 m", "2 m"], "power": "10 W"}]})",
+                                   "clay.json", ".");
+  EXPECT_EQ(Preview(clay, options).approximations(),
+            std::vector<std::string>{"rough diffuse (Oren-Nayar) surfaces are drawn as Lambertian (pot)"});
+}
+
+// The rasteriser draws through a pinhole: another camera is refused with the
+// renderer that draws it, not drawn as a perspective one.
+TEST_F(CrossValidation, RefusesCamerasItCannotDraw) {
+  Scene scene = render::load_scene(bundled("cornell-box/cornell-box.json"));
+  scene.camera.projection = render::CameraProjection::orthographic;
+  scene.camera.view_size = safegi::from_raw<decltype(scene.camera.view_size)>(1.0f);
+  try {
+    Preview preview(scene, PreviewOptions{});
+    ADD_FAILURE() << "an orthographic camera was previewed";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "the preview draws perspective cameras only, and this scene's is orthographic: render it with "
+                 "safegi-render");
+  }
 }
 
 }  // namespace

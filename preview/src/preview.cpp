@@ -278,6 +278,8 @@ struct Preview::Impl {
         "glass is not previewed and appears black");
     add(names_of([](const Material& m) { return std::holds_alternative<ConductorMaterial>(m.model); }),
         "metal is not previewed and appears black");
+    add(names_of([](const Material& m) { return std::holds_alternative<OrenNayarMaterial>(m.model); }),
+        "rough diffuse (Oren-Nayar) surfaces are drawn as Lambertian");
     add(names_of([](const Material& m) { return std::holds_alternative<PlasticMaterial>(m.model); }),
         "plastic is drawn as its diffuse layer, without its coating's reflection");
     add(names_of([](const Material& m) { return std::holds_alternative<SubstrateMaterial>(m.model); }),
@@ -331,6 +333,7 @@ struct Preview::Impl {
     using Lit = std::optional<LitSurface>;
     if (material.mix) return lit_mix(*material.mix);
     return std::visit(Overloaded{[&](const LambertMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const OrenNayarMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [&](const PhongMaterial& m) -> Lit {
                                    return LitSurface{preview_diffuse(m.diffuse), m.specular, m.exponent};
                                  },
@@ -633,8 +636,20 @@ struct Preview::Impl {
   }
 };
 
+namespace {
+// The rasteriser draws through a pinhole; the other cameras are the path tracer's.
+const Scene& with_perspective_camera(const Scene& scene) {
+  if (scene.camera.projection != render::CameraProjection::perspective)
+    throw std::invalid_argument(
+        std::string("the preview draws perspective cameras only, and this scene's is ") +
+        (scene.camera.projection == render::CameraProjection::orthographic ? "orthographic" : "an environment camera") +
+        ": render it with safegi-render");
+  return scene;
+}
+}  // namespace
+
 Preview::Preview(const render::Scene& scene, PreviewOptions options)
-    : impl_(std::make_unique<Impl>(scene, options)) {}
+    : impl_(std::make_unique<Impl>(with_perspective_camera(scene), options)) {}
 Preview::~Preview() = default;
 
 render::Image Preview::render(FrameStats* stats) {

@@ -43,6 +43,18 @@ struct TexturedReflectance {
 struct LambertMaterial {
   TexturedReflectance diffuse;  // the albedo
 };
+// Oren and Nayar's rough diffuse surface, pbrt-v3's OrenNayar: facets whose
+// slopes have standard deviation σ, f = ρ/π (A + B max(0, cos(φi − φo)) sin α
+// tan β), α = max(θi, θo), β = min(θi, θo); A = 1 − σ²/(2(σ² + 0.33)), B =
+// 0.45 σ²/(σ² + 0.09), σ in radians. σ = 0 is Lambert.
+struct OrenNayarMaterial {
+  TexturedReflectance diffuse;
+  Real a = 1.0f, b = 0.0f;
+  static OrenNayarMaterial with_sigma(const TexturedReflectance& diffuse, Angle sigma) {
+    const Real s = sg::raw(sigma / units::radian), s2 = s * s;
+    return {diffuse, 1 - s2 / (2 * (s2 + Real(0.33))), Real(0.45) * s2 / (s2 + Real(0.09))};
+  }
+};
 struct PhongMaterial {  // energy-conserving Phong (Lafortune & Willems)
   TexturedReflectance diffuse;
   Reflectance specular{};
@@ -99,7 +111,8 @@ struct TranslucentMaterial {
 struct BlackMaterial {};  // absorbs everything
 
 using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
-                                   GlassMaterial, ConductorMaterial, SubstrateMaterial, TranslucentMaterial>;
+                                   GlassMaterial, ConductorMaterial, SubstrateMaterial, TranslucentMaterial,
+                                   OrenNayarMaterial>;
 
 // pbrt-v3's bump map: the surface displaced along its normal by `scale` times
 // the luminance of an image texture at (u, v), or a float pattern's value at
@@ -255,11 +268,18 @@ struct EnvironmentLight {
   RenderFromLight render_from_light;     // a rotation
 };
 
+// How the camera maps the image to rays (pbrt-v3's cameras of those names):
+// through a pinhole or thin lens; parallel, from an image-sized window;
+// every direction around the position, longitude across and latitude down.
+enum class CameraProjection { perspective, orthographic, environment };
+
 struct Camera {
+  CameraProjection projection = CameraProjection::perspective;
   PointWorld position;
   PointWorld look_at;
   DirectionWorld up;
-  Angle fov = sg::zero;  // across the shorter image axis
+  Angle fov = sg::zero;  // perspective: across the shorter image axis
+  Length view_size = sg::zero;  // orthographic: the shorter image axis's extent across the scene
   Length lens_radius = sg::zero;
   Length focus_distance = sg::zero;
   Time shutter_open = sg::zero;

@@ -1,0 +1,92 @@
+// The orthographic and environment cameras against the geometry of what they
+// see: emitting spheres (radiance L, nothing else in the scene), so a pixel is
+// L times the share of it the sphere covers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "render_test_support.hpp"
+
+namespace safegi::render {
+namespace {
+
+using namespace test_support;
+
+// Per channel: the sum of the pixel values weighted by `weight(x, y)` at the
+// pixel centres, and the value-weighted mean pixel position.
+struct ChannelMoments {
+  double weighted_sum = 0, x = 0, y = 0;
+};
+
+template <class Weight>
+ChannelMoments moments(const Image& image, int channel, Weight weight) {
+  ChannelMoments m;
+  double plain = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const double value = image.rgb[3 * (static_cast<size_t>(y) * image.width + x) + channel];
+      m.weighted_sum += value * weight(x + 0.5, y + 0.5);
+      m.x += value * (x + 0.5);
+      m.y += value * (y + 0.5);
+      plain += value;
+    }
+  m.x /= plain;
+  m.y /= plain;
+  return m;
+}
+
+std::string emitting_sphere(const char* centre, const char* rgb) {
+  return std::string(R"j({"type": "sphere", "center": {"value": )j") + centre +
+         R"j(, "unit": "m"}, "radius": "1 m", "emission": {"value": )j" + rgb + R"j(, "unit": "W/(m2 sr)"}})j";
+}
+
+// A unit sphere 2 m right of and 1 m above the view's centre, seen along the
+// axis: its disk has area π r² whatever the distance, and its centre is where
+// the view size puts it. 64 spp: the edge pixels' coverage is estimated to
+// ≈ 0.1 % of the disk's area (one standard error).
+TEST(RenderCamera, OrthographicSeesASphereAtItsSizeAndPlace) {
+  const std::string scene = R"j({
+    "render": {"resolution": [64, 32], "integrator": "path"},
+    "camera": {"projection": "orthographic", "position": ["0 m", "0 m", "5 m"], "look_at": ["0 m", "0 m", "0 m"],
+               "up": [0, 1, 0], "view_size": "4 m"},
+    "shapes": [)j" + emitting_sphere("[2, 1, 0]", "[1, 1, 1]") + "]}";
+  const Image image = render_text(scene, 64);
+  const double pixel = 4.0 / 32;  // metres per pixel: the shorter axis (32 pixels) spans the view size
+  const ChannelMoments m = moments(image, 1, [&](double, double) { return pixel * pixel; });
+  EXPECT_NEAR(m.weighted_sum, kPiD, 0.005 * kPiD);
+  EXPECT_NEAR(m.x, 32 + 2 / pixel, 0.1);
+  EXPECT_NEAR(m.y, 16 - 1 / pixel, 0.1);
+}
+
+// pbrt-v3's environment camera: θ down from the camera's up, φ from its right
+// towards forward across the image. A pixel spans (2π/w)(π/h) sin θ
+// steradians, so Σ value × solid angle is L times the sphere's solid angle
+// 2π(1 − cos α), sin α = r/d; each sphere appears where its direction maps:
+// forward at a quarter of the width, left (−right) at half, up in the top rows.
+TEST(RenderCamera, EnvironmentSeesEachSphereInItsDirectionAndSolidAngle) {
+  const std::string scene = R"j({
+    "render": {"resolution": [128, 64], "integrator": "path"},
+    "camera": {"projection": "environment", "position": ["0 m", "0 m", "0 m"], "look_at": ["0 m", "0 m", "-1 m"],
+               "up": [0, 1, 0]},
+    "shapes": [)j" + emitting_sphere("[0, 0, -4]", "[1, 0, 0]") + ", " +
+                            emitting_sphere("[-4, 0, 0]", "[0, 1, 0]") + ", " +
+                            emitting_sphere("[0, 4, 0]", "[0, 0, 1]") + "]}";
+  const Image image = render_text(scene, 64);
+  const double w = image.width, h = image.height;
+  auto solid_angle = [&](double, double y) { return (2 * kPiD / w) * (kPiD / h) * std::sin(kPiD * y / h); };
+  const double expected = 2 * kPiD * (1 - std::sqrt(1 - 1.0 / 16));
+  const ChannelMoments forward = moments(image, 0, solid_angle), left = moments(image, 1, solid_angle),
+                       up = moments(image, 2, solid_angle);
+  for (const ChannelMoments& sphere : {forward, left, up})
+    EXPECT_NEAR(sphere.weighted_sum, expected, 0.01 * expected);
+  EXPECT_NEAR(forward.x, w / 4, 0.1);
+  EXPECT_NEAR(forward.y, h / 2, 0.1);
+  EXPECT_NEAR(left.x, w / 2, 0.1);
+  EXPECT_NEAR(left.y, h / 2, 0.1);
+  EXPECT_LT(up.y, h * 0.1);  // a cap around the pole: the top rows, across the width
+  EXPECT_NEAR(up.x, w / 2, 1.0);
+}
+
+}  // namespace
+}  // namespace safegi::render
