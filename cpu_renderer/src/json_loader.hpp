@@ -157,6 +157,8 @@ class Loader : public JsonFields {
   RenderFromObject load_transform(const Json& value, const JsonPath& path);
   void load_light(const Json& value, const JsonPath& path, Scene& scene);
   EnvironmentLight load_environment(const Json& value, const JsonPath& path);
+  IntensityMap load_intensity_map(const Json& value, const JsonPath& path);
+  RenderFromLight load_rotation(const Json& value, const JsonPath& path, const std::string& what);
 
   std::filesystem::path base_directory_;
   const SceneLoadOptions& options_;

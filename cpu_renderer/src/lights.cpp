@@ -73,8 +73,10 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     light.type = Light::Type::point;
     light.position = point.position;
     light.intensity = point.intensity;
+    light.profile = point.profile ? &*point.profile : nullptr;
     lights_.push_back(light);
-    powers.push_back(sg::raw(sg::average(point.intensity) * (4 * sg::pi * units::steradian)));
+    const Intensity mean = point.profile ? point.intensity * mean_intensity_factor(*point.profile) : point.intensity;
+    powers.push_back(sg::raw(sg::average(mean) * (4 * sg::pi * units::steradian)));
   }
   for (const SpotLight& spot : scene.spot_lights) {
     Light light;
@@ -284,6 +286,10 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.wi = sg::normalize(toward);
     sample.position = light.position;
     sample.intensity = light.intensity;
+    if (light.profile) {
+      sample.intensity = light.intensity * intensity_factor(*light.profile, -sample.wi);
+      if (!(sg::max_component(sample.intensity) > sg::zero)) return std::nullopt;
+    }
     if (light.type == Light::Type::spot) {
       Real falloff = spot_falloff(light.spot, -sg::dot(light.spot.direction, sample.wi));
       if (!(falloff > 0)) return std::nullopt;
@@ -364,6 +370,10 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
     photon.direction = from_kernel<DirectionWorld>(sample_uniform_sphere(u3, u4));
     PdfSolidAngle pdf = 1 / (4 * kPi * units::steradian);
     Intensity intensity = light.intensity;
+    if (light.profile) {  // uniform directions, weighted by the map
+      intensity = light.intensity * intensity_factor(*light.profile, photon.direction);
+      if (!(sg::max_component(intensity) > sg::zero)) return std::nullopt;
+    }
     if (light.type == Light::Type::spot) {  // uniform directions, weighted by the cone's falloff
       Real falloff = spot_falloff(light.spot, sg::dot(light.spot.direction, photon.direction));
       if (!(falloff > 0)) return std::nullopt;

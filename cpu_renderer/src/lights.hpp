@@ -81,6 +81,7 @@ class Lights {
     PointWorld position;  // point and spot light, sphere centre
     Intensity intensity;  // point and spot light
     SpotLight spot;       // spot light: axis and cone
+    const IntensityMap* profile = nullptr;  // point light: its intensity by direction (the scene's)
     DistantLight distant; // distant light: direction and irradiance
     uint32_t first_triangle = 0, triangle_count = 0;
     Length radius = sg::zero;  // sphere

@@ -149,9 +149,10 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_TRUE(is<LambertMaterial>(smooth.scene.materials.at(smooth.scene.shapes[0].material)));
   EXPECT_EQ(first_line(import_error(world(used("Material \"matte\" \"float sigma\" [-5]")))),
             "scene.pbrt:2:10: error: \"sigma\" of Material \"matte\" must lie in [0, 90] degrees, found -5");
-  EXPECT_EQ(import_error(world("LightSource \"goniometric\"")),
-            "scene.pbrt:2:13: error: light \"goniometric\" is not supported\nLightSource \"goniometric\"\n"
-            "            ^~~~~~~~~~~~~\nhelp: supported: \"point\", \"spot\", \"distant\", \"infinite\"\n");
+  EXPECT_EQ(import_error(world("LightSource \"laser\"")),
+            "scene.pbrt:2:13: error: light \"laser\" is not supported\nLightSource \"laser\"\n"
+            "            ^~~~~~~\nhelp: supported: \"point\", \"spot\", \"goniometric\", \"projection\", \"distant\", "
+            "\"infinite\"\n");
   EXPECT_EQ(import_error(world(used_texture("Texture \"t\" \"spectrum\" \"ptex\""))),
             "scene.pbrt:2:24: error: texture \"ptex\" is not supported\n"
             "Texture \"t\" \"spectrum\" \"ptex\"\n"

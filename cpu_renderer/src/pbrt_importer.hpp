@@ -212,6 +212,7 @@ class Importer {
   // World block (pbrt_world.cpp).
   void light_source(const Directive& d);
   void infinite_light(const Directive& d, ParamSet& params);
+  PointLight mapped_point_light(const Directive& d, ParamSet& params, Intensity intensity);
   void distant_light(const Directive& d, ParamSet& params);
   void area_light_source(const Directive& d);
   void shape(const Directive& d);

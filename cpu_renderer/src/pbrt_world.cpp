@@ -117,7 +117,7 @@ void Importer::light_source(const Directive& d) {
   ParamSet params(d.params, "LightSource \"" + type + "\"");
   if (state_.transform.animated())
     warn(d.range, "an animated light is placed by its start transform", "pbrt-v3 does the same (and warns)");
-  if (type == "point" || type == "spot") {
+  if (type == "point" || type == "spot" || type == "goniometric" || type == "projection") {
     auto read = [&](const char* name) {
       std::optional<SpectrumValue> value = params.spectrum(name, false);
       Rgb rgb = value ? value->rgb : Rgb{1, 1, 1};
@@ -131,6 +131,11 @@ void Importer::light_source(const Directive& d) {
     sg::vec3_rep rgb(static_cast<Real>(i[0] * s[0] * unit2), static_cast<Real>(i[1] * s[1] * unit2),
                   static_cast<Real>(i[2] * s[2] * unit2));
     Intensity intensity = sg::from_raw<Intensity>(rgb);
+    if (type == "goniometric" || type == "projection") {
+      result_.scene.point_lights.push_back(mapped_point_light(d, params, intensity));
+      report_unused(params);
+      return;
+    }
     Triple from = params.one_point("from").value_or(Triple{0, 0, 0});
     glm::dvec3 from_v(from[0], from[1], from[2]);
     if (type == "point") {
@@ -165,7 +170,7 @@ void Importer::light_source(const Directive& d) {
     distant_light(d, params);
   } else {
     fail(d.string_ranges[0], "light \"" + type + "\" is not supported",
-         "supported: \"point\", \"spot\", \"distant\", \"infinite\"");
+         "supported: \"point\", \"spot\", \"goniometric\", \"projection\", \"distant\", \"infinite\"");
   }
   report_unused(params);
 }
@@ -248,6 +253,33 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   light.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
   result_.scene.environment = std::move(light);
   environment_at_ = d.string_ranges[0];
+}
+
+// pbrt-v3's goniometric and projection lights: a point light at the light
+// transform's origin, its intensity shaped by a map in the light's frame
+// (IntensityMap). Without "mapname" pbrt-v3 uses texels of 1, and so do we.
+PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, Intensity intensity) {
+  const std::string& type = d.strings[0];
+  const bool projection = type == "projection";
+  Matrix m = world_from_pbrt_world_ * state_.transform.start;
+  if (!is_similarity(m, 1e-6))
+    fail(d.range, "a " + type + " light under a transform that scales unevenly or shears is not supported",
+         "it would distort the map; rotate it only");
+  IntensityMap profile;
+  profile.layout = projection ? IntensityMap::Layout::projection : IntensityMap::Layout::goniometric;
+  if (projection) {
+    double fov = params.one_float("fov", 45);
+    if (!(fov > 0 && fov < 180)) fail(d.range, "\"float fov\" must lie in (0, 180) degrees");
+    profile.fov = static_cast<Real>(fov) * units::degree;
+  }
+  if (const Param* map = params.find("mapname", {ParamType::string})) {
+    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+    profile.file = map->strings[0];
+    profile.map = std::make_shared<MipMap>(read_image(*map), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
+  }
+  profile.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  profile.light_from_render = sg::inverse(profile.render_from_light);
+  return {to_world_point(m, {0, 0, 0}, d.range), intensity, std::move(profile)};
 }
 
 void Importer::area_light_source(const Directive& d) {

@@ -17,22 +17,6 @@ namespace {
 
 using namespace test_support;
 
-// The mean of radiance(x, z) over the footprint of pixel (px, py) on the plane
-// y = 0, seen straight down from `camera_height` with a square image of `size`
-// pixels whose half-width at unit distance is `half` (x = h·sx, z = -h·sy).
-template <class Radiance>
-double footprint_average(int px, int py, int size, double half, double camera_height, Radiance radiance) {
-  double sum = 0;
-  constexpr int kSub = 16;
-  for (int j = 0; j < kSub; ++j)
-    for (int i = 0; i < kSub; ++i) {
-      double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
-      double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
-      sum += radiance(camera_height * sx, -camera_height * sy);
-    }
-  return sum / (kSub * kSub);
-}
-
 // Diffuse plane under a point light: L = ρ/π · I cos θ / r², averaged over
 // each pixel's footprint on the plane (the estimator has no noise apart from
 // where in the pixel the samples fall).

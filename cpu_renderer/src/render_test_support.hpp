@@ -60,6 +60,22 @@ inline Image render_text(const std::string& json, int spp, int threads = 2, std:
   return render_scene(parse_scene(json, "test.json", base_directory), spp, threads, crop, adjust);
 }
 
+// The mean of radiance(x, z) over the footprint of pixel (px, py) on the plane
+// y = 0, seen straight down from `camera_height` with a square image of `size`
+// pixels whose half-width at unit distance is `half` (x = h·sx, z = -h·sy).
+template <class Radiance>
+inline double footprint_average(int px, int py, int size, double half, double camera_height, Radiance radiance) {
+  double sum = 0;
+  constexpr int kSub = 16;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i) {
+      double sx = (2 * (px + (i + 0.5) / kSub) / size - 1) * half;
+      double sy = (1 - 2 * (py + (j + 0.5) / kSub) / size) * half;
+      sum += radiance(camera_height * sx, -camera_height * sy);
+    }
+  return sum / (kSub * kSub);
+}
+
 inline std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::stringstream text;

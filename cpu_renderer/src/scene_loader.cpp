@@ -217,7 +217,7 @@ void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
   if (type != "point" && type != "spot")
     fail(path.field("type"), "expected \"point\", \"spot\" or \"environment\", got " + short_dump(value["type"]));
   if (type == "point")
-    object(value, path, {"type", "name", "position", "intensity", "power"});
+    object(value, path, {"type", "name", "position", "intensity", "power", "map"});
   else
     object(value, path, {"type", "name", "position", "look_at", "intensity", "power", "cone_angle", "cone_delta"});
   PointWorld position = typed_point<PointWorld>(required(value, path, "position"), path.field("position"));
@@ -253,11 +253,60 @@ void Loader::load_light(const Json& value, const JsonPath& path, Scene& scene) {
   if (intensity.r() < sg::zero || intensity.g() < sg::zero || intensity.b() < sg::zero)
     fail(path, "light output must not be negative");
   if (type == "point") {
-    scene.point_lights.push_back({position, intensity});
+    std::optional<IntensityMap> profile;
+    if (value.contains("map")) {
+      profile = load_intensity_map(value["map"], path.field("map"));
+      // "power" is the light's whole output, per channel: the map shares it out.
+      if (value.contains("power")) {
+        const sg::vec3_rep mean = sg::raw(mean_intensity_factor(*profile)), spread_out = sg::raw(intensity);
+        for (int c = 0; c < 3; ++c)
+          if (spread_out[c] > 0 && !(mean[c] > 0))
+            fail(path.field("map"), "the map sends no light in a colour channel that 'power' has");
+        intensity = sg::from_raw<Intensity>(sg::vec3_rep(mean.x > 0 ? spread_out.x / mean.x : 0,
+                                                         mean.y > 0 ? spread_out.y / mean.y : 0,
+                                                         mean.z > 0 ? spread_out.z / mean.z : 0));
+      }
+    }
+    scene.point_lights.push_back({position, intensity, std::move(profile)});
   } else {
     spot.intensity = intensity;
     scene.spot_lights.push_back(spot);
   }
+}
+
+IntensityMap Loader::load_intensity_map(const Json& value, const JsonPath& path) {
+  object(value, path, {"layout", "file", "fov", "transform"});
+  IntensityMap profile;
+  const std::string layout = string(required(value, path, "layout"), path.field("layout"));
+  if (layout == "projection") {
+    profile.layout = IntensityMap::Layout::projection;
+    profile.fov = typed_scalar<dim::angle>(required(value, path, "fov"), path.field("fov"));
+    if (!(profile.fov > sg::zero && profile.fov < Real(180) * units::degree))
+      fail(path.field("fov"), "expected an angle in (0 deg, 180 deg)");
+  } else if (layout == "goniometric") {
+    if (value.contains("fov")) fail(path.field("fov"), "only a projection map has a field of view");
+  } else {
+    fail(path.field("layout"), "expected \"goniometric\" or \"projection\", got " + short_dump(value["layout"]));
+  }
+  if (value.contains("file")) {
+    Image image = read_image_file(value["file"], path.field("file"), profile.file);
+    const bool projection = profile.layout == IntensityMap::Layout::projection;
+    profile.map = std::make_shared<MipMap>(std::move(image), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
+  }
+  profile.render_from_light = load_rotation(value, path, "a light's map");
+  profile.light_from_render = sg::inverse(profile.render_from_light);
+  return profile;
+}
+
+// An optional "transform" of rotations only: the frame of `what`.
+RenderFromLight Loader::load_rotation(const Json& value, const JsonPath& path, const std::string& what) {
+  if (!value.contains("transform")) return RenderFromLight{};
+  const Json& steps = value["transform"];
+  if (steps.is_array())
+    for (size_t i = 0; i < steps.size(); ++i)
+      if (!steps[i].is_object() || !steps[i].contains("rotate"))
+        fail(path.field("transform").index(i), what + " can only be rotated");
+  return sg::from_raw<RenderFromLight>(sg::raw(load_transform(steps, path.field("transform"))));
 }
 
 EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& path) {
@@ -273,14 +322,7 @@ EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& pat
     Image image = read_image_file(value["file"], path.field("file"), light.file);
     light.map = std::make_shared<MipMap>(std::move(image), TextureWrap::longitude_latitude);
   }
-  if (value.contains("transform")) {
-    const Json& steps = value["transform"];
-    if (steps.is_array())
-      for (size_t i = 0; i < steps.size(); ++i)
-        if (!steps[i].is_object() || !steps[i].contains("rotate"))
-          fail(path.field("transform").index(i), "an environment light can only be rotated");
-    light.render_from_light = sg::from_raw<RenderFromLight>(sg::raw(load_transform(steps, path.field("transform"))));
-  }
+  light.render_from_light = load_rotation(value, path, "an environment light");
   return light;
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 #include <random>
 #include <unistd.h>
 
@@ -96,6 +97,27 @@ TEST(SceneLoader, CameraProjections) {
   EXPECT_EQ(load_error(camera(R"("projection": "environment", "lens_radius": "1 cm")")),
             "test.json: camera.lens_radius: an environment camera has no lens");
   EXPECT_EQ(load_error(camera(R"("lens_radius": "0 m")")), "test.json: camera: missing field 'fov'");
+}
+
+// A point light's map: its layout's fields, rotations only, and "power" shared
+// out over the directions the map lights (a 90° square window: 1/6 of the sphere).
+TEST(SceneLoader, PointLightMaps) {
+  auto light = [](const std::string& map, const char* output = R"("intensity": "1 W/sr")") {
+    return with_camera(std::string(R"("lights": [{"type": "point", "position": ["0 m", "0 m", "0 m"], )") + output +
+                       R"(, "map": )" + map + "}]");
+  };
+  Scene scene = parse_scene(light(R"({"layout": "projection", "fov": "90 deg"})", R"("power": "12 W")"), "test.json", ".");
+  ASSERT_TRUE(scene.point_lights[0].profile);
+  EXPECT_NEAR(sg::raw(scene.point_lights[0].intensity).x, 12 * 6 / (4 * std::numbers::pi), 1e-5);
+  EXPECT_EQ(load_error(light(R"({"layout": "ies"})")),
+            "test.json: lights[0].map.layout: expected \"goniometric\" or \"projection\", got \"ies\"");
+  EXPECT_EQ(load_error(light(R"({"layout": "goniometric", "fov": "10 deg"})")),
+            "test.json: lights[0].map.fov: only a projection map has a field of view");
+  EXPECT_EQ(load_error(light(R"({"layout": "projection"})")), "test.json: lights[0].map: missing field 'fov'");
+  EXPECT_EQ(load_error(light(R"({"layout": "projection", "fov": "180 deg"})")),
+            "test.json: lights[0].map.fov: expected an angle in (0 deg, 180 deg)");
+  EXPECT_EQ(load_error(light(R"({"layout": "goniometric", "transform": [{"scale": [1, 2, 1]}]})")),
+            "test.json: lights[0].map.transform[0]: a light's map can only be rotated");
 }
 
 TEST(SceneLoader, ConvertsUnitsOnceAtLoad) {

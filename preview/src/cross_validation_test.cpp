@@ -196,6 +196,15 @@ TEST_F(CrossValidation, ApproximationsAreNamed) {
                                    "clay.json", ".");
   EXPECT_EQ(Preview(clay, options).approximations(),
             std::vector<std::string>{"rough diffuse (Oren-Nayar) surfaces are drawn as Lambertian (pot)"});
+  Scene projector = render::parse_scene(R"({"camera": {"position": ["0 m", "1 m", "3 m"], "look_at": ["0 m", "0 m", "0 m"],
+      "up": [0, 1, 0], "fov": "40 deg"},
+    "shapes": [{"type": "sphere", "center": ["0 m", "0 m", "0 m"], "radius": "1 m"}],
+    "lights": [{"type": "point", "position": ["0 m", "2 m", "2 m"], "power": "10 W",
+                "map": {"layout": "projection", "fov": "30 deg"}}]})",
+                                        "projector.json", ".");
+  EXPECT_EQ(Preview(projector, options).approximations(),
+            std::vector<std::string>{"goniometric and projection lights are drawn as point lights of their mean "
+                                     "intensity, without their map (point_lights[0])"});
 }
 
 // The rasteriser draws through a pinhole: another camera is refused with the

@@ -292,6 +292,10 @@ struct Preview::Impl {
         "and metal among them as black");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
+    std::string mapped;
+    for (size_t i = 0; i < scene.point_lights.size(); ++i)
+      if (scene.point_lights[i].profile) mapped += (mapped.empty() ? "" : ", ") + ("point_lights[" + std::to_string(i) + "]");
+    add(mapped, "goniometric and projection lights are drawn as point lights of their mean intensity, without their map");
     if (scene.environment) approximations.push_back("the environment light is not previewed (no light from it)");
     if (!scene.distant_lights.empty()) approximations.push_back("distant lights are not previewed (no light from them)");
   }
@@ -502,7 +506,9 @@ struct Preview::Impl {
       if (i < scene.point_lights.size()) {
         const PointLight& light = scene.point_lights[i];
         point_pass.program.set(point_pass.light_position, light.position);
-        point_pass.program.set(point_pass.intensity, light.intensity);
+        // A goniometric or projection light by its mean intensity: the same power.
+        point_pass.program.set(point_pass.intensity,
+                               light.profile ? light.intensity * mean_intensity_factor(*light.profile) : light.intensity);
         point_pass.program.set(point_pass.spot_cos_total, -2.0f);  // every direction inside the "cone"
         point_pass.program.set(point_pass.spot_cos_start, -2.0f);
       } else {

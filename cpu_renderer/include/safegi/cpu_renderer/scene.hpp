@@ -223,9 +223,35 @@ inline Length placed_radius(const RenderFromObject& render_from_object, Length r
   return sg::length(render_from_object(vector<Object>(radius, sg::zero, sg::zero)));
 }
 
+// What shapes a point light's intensity by direction, as pbrt-v3's
+// goniometric and projection lights do: towards ω the light sends its
+// intensity times the texel at ω's place on the map (in light space, a
+// rotation of render space; `light_from_render` is its inverse, kept beside it).
+//   goniometric: a lat-long map around light space's +y (pbrt-v3 swaps y and
+//     z): s = φ/2π with φ = atan2(z, x), t = θ/π with θ from +y; row 0 is θ = 0.
+//   projection: the image through a frustum along +z whose shorter image axis
+//     spans `fov`: (x/z, y/z) on the plane z = 1 over the window ±tan(fov/2)
+//     times the image's aspect, t growing with y (row 0 at −y, as in pbrt-v3);
+//     nothing outside it or behind the light. Without a map the window is square.
+struct IntensityMap {
+  enum class Layout { goniometric, projection } layout = Layout::goniometric;
+  std::string file;                   // as written in the scene; empty: no map (texels of 1)
+  std::shared_ptr<const MipMap> map;
+  RenderFromLight render_from_light;  // a rotation
+  LightFromRender light_from_render;
+  Angle fov = sg::zero;               // projection
+};
+
+// The map's factor on the intensity towards `towards` (a unit vector from the light).
+Texel intensity_factor(const IntensityMap& map, DirectionWorld towards);
+// The factor's mean over the sphere of directions (pbrt-v3's Power: for
+// choosing among lights and for the preview's stand-in).
+Texel mean_intensity_factor(const IntensityMap& map);
+
 struct PointLight {
   PointWorld position;
   Intensity intensity;
+  std::optional<IntensityMap> profile;  // absent: the same intensity every way
 };
 
 // A spot light as pbrt-v3 defines it: intensity I (on its axis) times a
