@@ -1,5 +1,7 @@
 #include "geometry.hpp"
 
+#include "surface_texture.hpp"
+
 #include <cmath>
 #include <type_traits>
 
@@ -287,9 +289,48 @@ Geometry::Geometry(const Scene& scene, int threads) {
   }
   static_primitives_.build(threads);
   if (!static_primitives_.empty()) bounds_.extend(static_primitives_.bounds());
+  for (const Shape& shape : scene.shapes)
+    if (shape.alpha || shape.shadow_alpha) {
+      masked_shapes_ = &scene.shapes;
+      mask_textures_ = std::make_shared<const SurfaceTextures>(scene);
+      break;
+    }
 }
 
-std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
+std::optional<SurfaceHit> Geometry::intersect(const TimedRay& ray) const {
+  return mask_textures_ ? nearest_unmasked(ray, sg::from_raw<Length>(kernel::kInfinity), false) : nearest(ray);
+}
+
+bool Geometry::occluded(const TimedRay& ray, Length t_max) const {
+  return mask_textures_ ? nearest_unmasked(ray, t_max, true).has_value() : any_hit(ray, t_max);
+}
+
+bool Geometry::masked(const SurfaceHit& hit, Time time, bool shadow) const {
+  const Shape& shape = (*masked_shapes_)[hit.shape];
+  auto zero_at_hit = [&](const std::optional<TexturedReflectance>& mask) {
+    return mask && sg::raw(mask_textures_->reflectance_at(*mask, hit, sg::zero, time)).x == 0;
+  };
+  return zero_at_hit(shape.alpha) || (shadow && zero_at_hit(shape.shadow_alpha));
+}
+
+std::optional<SurfaceHit> Geometry::nearest_unmasked(const TimedRay& ray, Length t_max, bool shadow) const {
+  // A bound on the layers one ray passes (foliage has tens); beyond it the
+  // last hit counts as opaque, so that no ray can loop.
+  constexpr int kMaxMaskedLayers = 4096;
+  TimedRay beyond = ray;
+  for (int layer = 0; layer < kMaxMaskedLayers; ++layer) {
+    std::optional<SurfaceHit> hit = nearest(beyond);
+    if (!hit) return std::nullopt;
+    // Distances along the original ray, from its origin.
+    if (layer > 0) hit->distance = sg::dot(hit->position - ray.o, ray.d);
+    if (hit->distance >= t_max) return std::nullopt;
+    if (!masked(*hit, ray.time, shadow) || layer + 1 == kMaxMaskedLayers) return hit;
+    beyond = spawn_ray(*hit, ray.d, ray.time);
+  }
+  return std::nullopt;
+}
+
+std::optional<SurfaceHit> Geometry::nearest(const TimedRay& typed_ray) const {
   Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
   Real t_max = kernel::kInfinity;
   std::optional<kernel::Hit> hit = static_primitives_.intersect(ray, t_max);
@@ -319,7 +360,7 @@ std::optional<SurfaceHit> Geometry::intersect(const TimedRay& typed_ray) const {
                     sg::from_raw<Length>(hit->distance), hit->shape, hit->face};
 }
 
-bool Geometry::occluded(const TimedRay& typed_ray, Length typed_t_max) const {
+bool Geometry::any_hit(const TimedRay& typed_ray, Length typed_t_max) const {
   Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
   Real t_max = sg::raw(typed_t_max);
   if (static_primitives_.occluded(ray, t_max)) return true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -96,17 +97,28 @@ class PrimitiveSet {
   kernel::Bvh bvh_;
 };
 
+class SurfaceTextures;
+
 class Geometry {
  public:
-  // Builds the hierarchies on up to `threads` threads.
+  // Builds the hierarchies on up to `threads` threads. The scene must outlive
+  // the Geometry when a shape has an alpha mask (the masks are read at hits).
   explicit Geometry(const Scene& scene, int threads = 1);
 
+  // The nearest surface; with alpha masks, the nearest where none is 0.
   std::optional<SurfaceHit> intersect(const TimedRay& ray) const;
   bool occluded(const TimedRay& ray, Length t_max) const;
   bool has_motion() const { return !instances_.empty(); }
   kernel::Bounds3 bounds() const { return bounds_; }
 
  private:
+  std::optional<SurfaceHit> nearest(const TimedRay& ray) const;
+  bool any_hit(const TimedRay& ray, Length t_max) const;
+  // pbrt-v3 tests the masks inside its triangles' intersection; here a masked
+  // hit is passed through and the ray goes on from just beyond it.
+  std::optional<SurfaceHit> nearest_unmasked(const TimedRay& ray, Length t_max, bool shadow) const;
+  bool masked(const SurfaceHit& hit, Time time, bool shadow) const;
+
   struct Instance {
     PrimitiveSet primitives;  // in object space
     RigidMotion motion;
@@ -116,6 +128,9 @@ class Geometry {
   PrimitiveSet static_primitives_;  // in world space
   std::vector<Instance> instances_;
   kernel::Bounds3 bounds_;
+  // Only when a shape has an alpha mask: the scene's shapes and their textures.
+  const std::vector<Shape>* masked_shapes_ = nullptr;
+  std::shared_ptr<const SurfaceTextures> mask_textures_;
 };
 
 // A ray leaving a surface, its origin pushed off the surface on the side of `direction`.

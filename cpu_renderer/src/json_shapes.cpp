@@ -18,7 +18,8 @@ namespace safegi::render::json {
 Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map<std::string, int>& materials) {
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
-  static constexpr const char* common[] = {"type", "name", "material", "emission", "two_sided", "transform", "transform_at_close"};
+  static constexpr const char* common[] = {"type",      "name",      "material",          "emission",    "two_sided",
+                                           "transform", "transform_at_close", "alpha", "shadow_alpha"};
   auto allow = [&](std::initializer_list<const char*> specific) {
     std::vector<std::string_view> names(std::begin(common), std::end(common));
     names.insert(names.end(), specific.begin(), specific.end());
@@ -73,6 +74,12 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     if (!sg::is_black(radiance)) shape.emission = radiance;
   }
   if (value.contains("two_sided")) shape.two_sided_emission = boolean(value["two_sided"], path.field("two_sided"));
+  // Masks, as pbrt-v3's: the surface is missing (for shadows only: casts none) where the value is 0.
+  for (auto [field, mask] : {std::pair{"alpha", &shape.alpha}, std::pair{"shadow_alpha", &shape.shadow_alpha}})
+    if (value.contains(field)) {
+      TexturedReflectance read = textured_reflectance(value[field], path.field(field));
+      if (read.textured() || sg::raw(read.value).x == 0) *mask = read;
+    }
   if (value.contains("transform")) shape.render_from_object = load_transform(value["transform"], path.field("transform"));
   if (value.contains("transform_at_close"))
     shape.render_from_object_at_close = load_transform(value["transform_at_close"], path.field("transform_at_close"));

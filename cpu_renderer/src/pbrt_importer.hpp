@@ -101,6 +101,7 @@ struct ShapeSource {
   bool reverse_orientation = false;
   int material = -1;
   bool invisible = false;                 // material "" or "none": no surface
+  std::optional<TexturedReflectance> alpha, shadow_alpha;  // pbrt-v3's masks
   std::optional<MediumInterface> media;  // where the two sides' differ
   std::optional<AreaLight> emission;
   SourceRange at;
@@ -216,6 +217,7 @@ class Importer {
   void distant_light(const Directive& d, ParamSet& params);
   void area_light_source(const Directive& d);
   void shape(const Directive& d);
+  std::optional<TexturedReflectance> alpha_mask(ParamSet& params, const char* name);
   void mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source);
   void place(const ShapeSource& source, const Matrix& world_from_pbrt_world);
   void animate(const ShapeSource& source, const Matrix& world_from_pbrt_world, Shape& shape);

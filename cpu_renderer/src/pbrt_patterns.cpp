@@ -115,8 +115,13 @@ std::optional<Pattern> Importer::pattern(const std::string& texture_class, Param
            "pbrt-v3 does the same");
     return board;
   }
-  if (texture_class == "dots")
-    return DotsPattern{mapping_2d(params, at), value("inside", 1), value("outside", 0)};
+  if (texture_class == "dots") {
+    // pbrt-v3's CreateDots*Texture pass "inside" and "outside" to a constructor
+    // that takes (outsideDot, insideDot): its dots show "outside", the rest
+    // "inside". Swapped here too, so that scenes render as pbrt-v3 renders them.
+    Reflectance inside = value("inside", 1), outside = value("outside", 0);
+    return DotsPattern{mapping_2d(params, at), outside, inside};
+  }
   if (texture_class == "fbm" || texture_class == "wrinkled")
     return FbmPattern{solid_mapping(at), roughness(), octaves(), texture_class == "wrinkled"};
   if (texture_class == "windy") return WindyPattern{solid_mapping(at)};

@@ -314,12 +314,9 @@ void Importer::shape(const Directive& d) {
   source.pbrt_world_from_object = state_.transform.start;
   if (state_.transform.animated()) source.pbrt_world_from_object_at_end = state_.transform.end;
   source.reverse_orientation = state_.reverse_orientation;
-  auto reject_alpha = [&] {
-    for (const char* name : {"alpha", "shadowalpha"}) {
-      const Param* alpha = params.find(name, {ParamType::floating, ParamType::texture});
-      if (alpha && !(alpha->type == ParamType::floating && alpha->numbers.size() == 1 && alpha->numbers[0] == 1))
-        params.fail_at(*alpha, std::string("\"") + name + "\" masks are not supported");
-    }
+  auto read_alpha_masks = [&] {
+    source.alpha = alpha_mask(params, "alpha");
+    source.shadow_alpha = alpha_mask(params, "shadowalpha");
   };
   if (type == "trianglemesh") {
     source.kind = ShapeSource::Kind::mesh;
@@ -364,13 +361,13 @@ void Importer::shape(const Directive& d) {
     // Tangents and face ids: nothing here reads them.
     params.find("S", {ParamType::vector3});
     params.find("faceIndices", {ParamType::integer});
-    reject_alpha();
+    read_alpha_masks();
   } else if (type == "plymesh") {
     source.kind = ShapeSource::Kind::mesh;
     mesh_from_ply(d, params, source);
     params.reject("displacement", "displacement mapping");
     params.one_float("edgelength", 1);
-    reject_alpha();
+    read_alpha_masks();
   } else if (type == "sphere") {
     double radius = params.one_float("radius", 1);
     if (!(radius > 0)) fail(d.range, "a sphere's \"float radius\" must be positive");
@@ -415,6 +412,20 @@ void Importer::shape(const Directive& d) {
   place(source, world_from_pbrt_world_);
 }
 
+// pbrt-v3's "alpha" and "shadowalpha" of a triangle mesh: a float or a float
+// texture, which masks the surface only where it is exactly 0; a constant
+// other than 0 (1 by default) is no mask.
+std::optional<TexturedReflectance> Importer::alpha_mask(ParamSet& params, const char* name) {
+  const Param* param = nullptr;
+  std::optional<TextureEntry> entry = float_or_texture(params, name, param);
+  if (!entry || (!entry->textured() && entry->value[0] != 0)) return std::nullopt;
+  TexturedReflectance mask;
+  mask.value = Reflectance(static_cast<Real>(entry->value[0]));
+  mask.texture = entry->image;
+  mask.pattern = entry->pattern;
+  return mask;
+}
+
 void Importer::mesh_from_ply(const Directive& d, ParamSet& params, ShapeSource& source) {
   const Param* filename = params.find("filename", {ParamType::string});
   if (!filename || filename->strings.size() != 1) fail(d.range, "Shape \"plymesh\" needs \"string filename\"");
@@ -443,6 +454,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
   Shape shape;
   shape.material = source.material;
   shape.invisible = source.invisible;
+  shape.alpha = source.alpha;
+  shape.shadow_alpha = source.shadow_alpha;
   shape.media = source.media;
   if (source.emission) {
     const Rgb& l = source.emission->radiance;

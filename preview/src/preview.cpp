@@ -292,6 +292,10 @@ struct Preview::Impl {
         "and metal among them as black");
     add(names_of([](const Material& m) { return diffuse_of(m) && diffuse_of(m)->textured(); }),
         "textures are drawn as their mean colour");
+    std::string masked;
+    for (size_t s = 0; s < scene.shapes.size(); ++s)
+      if (scene.shapes[s].alpha || scene.shapes[s].shadow_alpha) masked += (masked.empty() ? "" : ", ") + shape_name(s);
+    add(masked, "alpha masks are not previewed: masked surfaces are drawn whole");
     std::string mapped;
     for (size_t i = 0; i < scene.point_lights.size(); ++i)
       if (scene.point_lights[i].profile) mapped += (mapped.empty() ? "" : ", ") + ("point_lights[" + std::to_string(i) + "]");

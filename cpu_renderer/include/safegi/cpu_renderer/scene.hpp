@@ -207,6 +207,10 @@ struct Shape {
   // No surface at all (pbrt-v3's material "" or "none"): rays pass through it,
   // which only matters where it bounds a participating medium (or emits).
   bool invisible = false;
+  // pbrt-v3's alpha masks (on triangle meshes): where `alpha` is exactly 0 the
+  // surface is not there for any ray; where `shadow_alpha` is, it casts no
+  // shadow. A mask's first channel counts (float textures are grey here).
+  std::optional<TexturedReflectance> alpha, shadow_alpha;
   // The media on either side, where they differ (absent: the side a ray is on
   // is whatever medium it was already in).
   std::optional<MediumInterface> media;

@@ -1,0 +1,109 @@
+// Alpha masks (pbrt-v3's "alpha" and "shadowalpha"): where a mask is 0 the
+// surface is not there — for every ray (alpha) or for shadow rays only
+// (shadow_alpha) — and rays go on to what lies beyond.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+#include "render_test_support.hpp"
+#include "safegi/cpu_renderer/image.hpp"
+
+namespace safegi::render {
+namespace {
+
+using namespace test_support;
+
+// Seen from above, a black quad at y = 1 over an emitting floor (Le = 2): its
+// mask is 0 on the texels left of the middle (bilinear, clamped: exactly 0
+// for u < 31.5/64), so the floor shows there at its full radiance and the
+// quad's black elsewhere; pixels that straddle the edge lie between.
+TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("safegi-alpha-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  Image mask{64, 1, std::vector<float>(3 * 64, 0.0f)};
+  std::fill(mask.rgb.begin() + 3 * 32, mask.rgb.end(), 1.0f);
+  write_pfm(directory / "mask.pfm", mask);
+  const std::string scene = R"json({
+    "render": {"resolution": [32, 32], "integrator": "path"},
+    "camera": {"position": ["0 m", "5 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "20 deg"},
+    "textures": {"mask": {"type": "image", "file": "mask.pfm", "filter": "bilinear", "wrap": "clamp"}},
+    "shapes": [{"type": "quad", "origin": ["-10 m", "0 m", "-10 m"], "edge_u": ["0 m", "0 m", "20 m"],
+                "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"},
+               {"type": "quad", "origin": ["-2 m", "1 m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
+                "edge_v": ["0 m", "0 m", "4 m"], "alpha": {"texture": "mask"}}]})json";
+  const Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
+  std::filesystem::remove_all(directory);
+  // The quad fills the view (4 m wide, 4 m away, seen through 20°); its u
+  // runs along x, as the image's columns do, so the edge is at
+  // x = -2 + 4 · 31.5/64 m on the quad, 2 · 4 tan 10° / 32 m per pixel there.
+  const double metres_per_pixel = 2 * 4 * std::tan(10 * kPiD / 180) / 32;
+  const double edge_column = 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel;
+  int open = 0, closed = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const float value = image.pixel(x, y)[0];
+      if (x + 1 < edge_column) {
+        EXPECT_NEAR(value, 2.0f, 1e-5f) << x << ", " << y;
+        ++open;
+      } else if (x > edge_column) {
+        EXPECT_EQ(value, 0.0f) << x << ", " << y;
+        ++closed;
+      } else {
+        EXPECT_GE(value, 0.0f);
+        EXPECT_LE(value, 2.0f + 1e-5f);
+      }
+    }
+  EXPECT_GT(open, 400);
+  EXPECT_GT(closed, 400);
+}
+
+// A diffuse floor under a point light 3 m up, a 1 m occluder at 2 m between:
+// its shadow spans |x|, |z| < 1.5 m on the floor, the camera 5 m up sees past
+// it only where |x| or |z| > 0.83 m. In that ring the floor is dark under an
+// opaque occluder and lit, L = ρ/π · I cos θ / r², when the occluder's
+// shadow_alpha is 0 (it casts no shadow) or its alpha is (it is not there).
+TEST(RenderAlphaMask, ShadowAlphaLetsLightThrough) {
+  auto render_with = [](const std::string& occluder_mask) {
+    const std::string scene = R"json({
+      "render": {"resolution": [33, 33], "integrator": "direct"},
+      "camera": {"position": ["0 m", "5 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "40 deg"},
+      "materials": {"matte": {"type": "lambert", "reflectance": 0.5}},
+      "shapes": [{"type": "quad", "material": "matte", "origin": ["-10 m", "0 m", "-10 m"],
+                  "edge_u": ["0 m", "0 m", "20 m"], "edge_v": ["20 m", "0 m", "0 m"]},
+                 {"type": "quad", "material": "matte", "origin": ["-0.5 m", "2 m", "-0.5 m"],
+                  "edge_u": ["0 m", "0 m", "1 m"], "edge_v": ["1 m", "0 m", "0 m"])json" +
+                             occluder_mask + R"json(}],
+      "lights": [{"type": "point", "position": ["0 m", "3 m", "0 m"], "intensity": "10 W/sr"}]})json";
+    return render_text(scene, 16);
+  };
+  const Image opaque = render_with(""), no_shadow = render_with(R"(, "shadow_alpha": 0)"),
+              absent = render_with(R"(, "alpha": 0)");
+  const double half = std::tan(20 * kPiD / 180), pixel = 2 * 5 * half / 33;
+  int ring = 0;
+  for (int py = 0; py < 33; ++py)
+    for (int px = 0; px < 33; ++px) {
+      const double x = 5 * (2 * (px + 0.5) / 33 - 1) * half, z = -5 * (1 - 2 * (py + 0.5) / 33) * half;
+      const double outer = std::max(std::fabs(x), std::fabs(z));
+      if (!(outer > 0.5 * 5 / 3 + pixel && outer < 1.5 - pixel)) continue;
+      ++ring;
+      const double expected = footprint_average(px, py, 33, half, 5, [](double fx, double fz) {
+        const double r2 = fx * fx + fz * fz + 9;
+        return 0.5 / kPiD * 10 * (3 / std::sqrt(r2)) / r2;
+      });
+      EXPECT_EQ(opaque.pixel(px, py)[0], 0.0f) << px << ", " << py;
+      EXPECT_NEAR(no_shadow.pixel(px, py)[0], expected, 0.01 * expected) << px << ", " << py;
+      EXPECT_NEAR(absent.pixel(px, py)[0], expected, 0.01 * expected) << px << ", " << py;
+    }
+  EXPECT_GT(ring, 20);
+  // Straight down the middle the camera sees the occluder's top, 1 m under
+  // the light, unless its alpha is 0: then the floor, 3 m under it.
+  EXPECT_NEAR(no_shadow.pixel(16, 16)[0], 0.5 / kPiD * 10, 0.01 * 0.5 / kPiD * 10);
+  EXPECT_NEAR(absent.pixel(16, 16)[0], 0.5 / kPiD * 10 / 9, 0.01 * 0.5 / kPiD * 10 / 9);
+}
+
+}  // namespace
+}  // namespace safegi::render
