@@ -197,6 +197,9 @@ struct Preview::Impl {
   ScenePoses poses;
   std::vector<Emitter> emitters;
   std::vector<Reflectance> pattern_means;  // per Scene::patterns: sampled once, drawn as the texture's colour
+  // Per Scene::point_lights: the intensity drawn, a goniometric or projection
+  // light's mean over its map (the same power), summed once.
+  std::vector<Intensity> point_intensities;
 
   EmissionPass emission{camera_program("EMISSION", "emission", options)};
   PointLightPass point_pass{{camera_program("POINT_LIGHT", "point_light", options)}};
@@ -228,6 +231,8 @@ struct Preview::Impl {
         poses(s),
         emitters(emitters_of(s)) {
     for (const ProceduralTexture& texture : scene.patterns) pattern_means.push_back(mean_value(texture.pattern));
+    for (const PointLight& light : scene.point_lights)
+      point_intensities.push_back(light.profile ? light.intensity * mean_intensity_factor(*light.profile) : light.intensity);
     camera_geometry.bind(emission.program.attribute<PointObject>("position"), positions);
     camera_geometry.bind(emission.program.attribute<normal<Object>>("objectNormal"), normals);
     light_geometry.bind(depth.program.attribute<PointObject>("position"), positions);
@@ -510,9 +515,7 @@ struct Preview::Impl {
       if (i < scene.point_lights.size()) {
         const PointLight& light = scene.point_lights[i];
         point_pass.program.set(point_pass.light_position, light.position);
-        // A goniometric or projection light by its mean intensity: the same power.
-        point_pass.program.set(point_pass.intensity,
-                               light.profile ? light.intensity * mean_intensity_factor(*light.profile) : light.intensity);
+        point_pass.program.set(point_pass.intensity, point_intensities[i]);
         point_pass.program.set(point_pass.spot_cos_total, -2.0f);  // every direction inside the "cone"
         point_pass.program.set(point_pass.spot_cos_start, -2.0f);
       } else {
