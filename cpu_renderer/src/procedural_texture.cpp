@@ -108,7 +108,9 @@ Reflectance sample(const MarblePattern& marble, NoisePoint p, Real footprint) {
   const Real phase = p.y + marble.variation * fbm(p, marble.scale * footprint, marble.omega, marble.octaves);
   const Real t = Real(0.5) + Real(0.5) * std::sin(phase);
   constexpr int segments = static_cast<int>(kMarbleColours.size()) - 3;
-  // t = 1 falls in the last segment (pbrt-v3 would read past its table there).
+  // The segment t falls in (t = 1 in the last). pbrt-v3 writes min(1, ⌊6t⌋)
+  // here, which extrapolates one segment's cubic far beyond its hull: the
+  // spline as written is read instead (docs/pbrt-import.md).
   const int first = std::clamp(static_cast<int>(std::floor(t * segments)), 0, segments - 1);
   const Real u = t * segments - first;
   // De Casteljau on the segment's four control points.
