@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "geometry.hpp"
@@ -15,26 +16,31 @@
 
 namespace safegi::render {
 
-// A pixel's ray cone, the textures' footprint: its width at the camera and how
-// fast it widens (the angle one pixel subtends at the image centre).
+// A camera ray's cone, the textures' footprint: its width at the camera and how
+// fast it widens (the angle one pixel subtends at the image centre), narrowed
+// by 1/√spp as pbrt-v3 narrows its rays' differentials (ScaleDifferentials):
+// the more samples share a pixel, the less each one needs to filter, and the
+// same scene converges to the same image in both renderers.
 struct PixelCone {
   Length width = sg::zero;
   Angle spread = sg::zero;
 };
 
-inline PixelCone pixel_cone(const Camera& camera, int width, int height) {
+inline PixelCone pixel_cone(const Camera& camera, int width, int height, int samples_per_pixel) {
+  const Real narrowing = 1 / std::sqrt(static_cast<Real>(std::max(samples_per_pixel, 1)));
   const Real shorter = static_cast<Real>(std::min(width, height));
   switch (camera.projection) {
     case CameraProjection::orthographic:
-      return {camera.view_size / shorter, sg::zero};
+      return {narrowing * camera.view_size / shorter, sg::zero};
     case CameraProjection::environment: {
       const Real pi = std::numbers::pi_v<Real>;
-      return {sg::zero, std::max(2 * pi / static_cast<Real>(width), pi / static_cast<Real>(height)) * units::radian};
+      return {sg::zero,
+              narrowing * std::max(2 * pi / static_cast<Real>(width), pi / static_cast<Real>(height)) * units::radian};
     }
     case CameraProjection::perspective:
       break;
   }
-  return {sg::zero, 2 * sg::tan(0.5f * camera.fov) / shorter * units::radian};
+  return {sg::zero, narrowing * 2 * sg::tan(0.5f * camera.fov) / shorter * units::radian};
 }
 
 class CameraRays {

@@ -45,7 +45,7 @@ class Integrator {
         max_depth_(settings.max_depth), mis_(settings.mis), light_samples_(settings.light_samples),
         roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()),
         textures_(scene),
-        pixel_cone_(pixel_cone(scene.camera, settings.width, settings.height)),
+        pixel_cone_(pixel_cone(scene.camera, settings.width, settings.height, settings.spp)),
         media_(scene.has_media()) {
     if (media_ && settings.integrator == IntegratorType::photon)
       throw std::invalid_argument(

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "camera.hpp"
 #include "render_test_support.hpp"
 
 namespace safegi::render {
@@ -86,6 +87,21 @@ TEST(RenderCamera, EnvironmentSeesEachSphereInItsDirectionAndSolidAngle) {
   EXPECT_NEAR(left.y, h / 2, 0.1);
   EXPECT_LT(up.y, h * 0.1);  // a cap around the pole: the top rows, across the width
   EXPECT_NEAR(up.x, w / 2, 1.0);
+}
+
+// The texture footprint's cone: one pixel's angle (or, orthographic, its width)
+// across the shorter axis, narrowed by 1/√spp as pbrt-v3 narrows its rays'
+// differentials.
+TEST(RenderCamera, PixelConeIsAPixelNarrowedBySamples) {
+  Camera camera;
+  camera.fov = Real(90) * units::degree;
+  EXPECT_NEAR(sg::raw(pixel_cone(camera, 64, 32, 1).spread), 2.0 / 32, 1e-7);
+  EXPECT_NEAR(sg::raw(pixel_cone(camera, 64, 32, 16).spread), 2.0 / 32 / 4, 1e-7);
+  camera.projection = CameraProjection::orthographic;
+  camera.view_size = Real(4) * units::meter;
+  const PixelCone ortho = pixel_cone(camera, 64, 32, 4);
+  EXPECT_NEAR(sg::raw(ortho.width), 4.0 / 32 / 2, 1e-7);
+  EXPECT_EQ(sg::raw(ortho.spread), 0.0f);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // The footprint is a ray cone (Akenine-Möller et al. 2019, "Texture Level of
 // Detail Strategies for Real-Time Ray Tracing"): a camera ray spreads by the
 // angle one pixel subtends, so after a distance t (summed over the specular
-// bounces before the hit) it covers t · spread, stretched by 1/|cos θ| on a
+// bounces before the hit) it covers t · spread (narrowed by 1/√spp, as pbrt-v3
+// narrows its ray differentials), stretched by 1/|cos θ| on a
 // tilted surface; a shape's (u, v) area per world area turns that into
 // texture units. After a diffuse bounce the footprint is taken as zero (the
 // finest level, bilinear), as pbrt-v3 does for rays without differentials.
