@@ -39,7 +39,7 @@ Texel texel_or_one(const IntensityMap& profile, int x, int y) {
 }  // namespace
 
 Texel intensity_factor(const IntensityMap& profile, DirectionWorld towards) {
-  const direction<LightSpace> w = profile.light_from_render(towards);
+  const direction<LightSpace> w = sg::inverse(profile.render_from_light)(towards);
   if (profile.layout == IntensityMap::Layout::goniometric) {
     if (!profile.map) return Texel(1, 1, 1);
     Real phi = std::atan2(w.z(), w.x());

@@ -278,7 +278,6 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
     profile.map = std::make_shared<MipMap>(read_image(*map), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
   }
   profile.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
-  profile.light_from_render = sg::inverse(profile.render_from_light);
   return {to_world_point(m, {0, 0, 0}, d.range), intensity, std::move(profile)};
 }
 

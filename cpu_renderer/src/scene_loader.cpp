@@ -294,7 +294,6 @@ IntensityMap Loader::load_intensity_map(const Json& value, const JsonPath& path)
     profile.map = std::make_shared<MipMap>(std::move(image), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
   }
   profile.render_from_light = load_rotation(value, path, "a light's map");
-  profile.light_from_render = sg::inverse(profile.render_from_light);
   return profile;
 }
 

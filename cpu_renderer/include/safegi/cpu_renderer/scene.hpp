@@ -230,7 +230,7 @@ inline Length placed_radius(const RenderFromObject& render_from_object, Length r
 // What shapes a point light's intensity by direction, as pbrt-v3's
 // goniometric and projection lights do: towards ω the light sends its
 // intensity times the texel at ω's place on the map (in light space, a
-// rotation of render space; `light_from_render` is its inverse, kept beside it).
+// rotation of render space).
 //   goniometric: a lat-long map around light space's +y (pbrt-v3 swaps y and
 //     z): s = φ/2π with φ = atan2(z, x), t = θ/π with θ from +y; row 0 is θ = 0.
 //   projection: the image through a frustum along +z whose shorter image axis
@@ -242,7 +242,6 @@ struct IntensityMap {
   std::string file;                   // as written in the scene; empty: no map (texels of 1)
   std::shared_ptr<const MipMap> map;
   RenderFromLight render_from_light;  // a rotation
-  LightFromRender light_from_render;
   Angle fov = sg::zero;               // projection
 };
 

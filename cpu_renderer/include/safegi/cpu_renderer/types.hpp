@@ -41,7 +41,6 @@ using NormalWorld = normal<World>;
 using DirectionShading = direction<Shading>;
 using RenderFromObject = map<Object, World>;
 using RenderFromLight = map<LightSpace, World>;
-using LightFromRender = map<World, LightSpace>;
 using ShadingFrame = frame<World, Shading>;
 
 // Plain components for the acceleration kernel (reference units: metres).
