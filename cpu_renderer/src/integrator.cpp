@@ -107,22 +107,33 @@ template <bool area_lights, bool one_light_sample, bool media, class Scatter>
 Radiance Integrator::sample_direct(const SurfaceHit& from, const Scatter& scatter, MediaAround from_medium,
                                    Sampler& sampler, Time time, bool mis, RayCounters& counters) const {
   Radiance sum;
-  const int samples = one_light_sample ? 1 : light_samples_;
-  const Real count = static_cast<Real>(samples);
-  for (int i = 0; i < samples; ++i) {
-    Real u_light = sampler.next_1d();
-    Sample2 u_point = sampler.next_2d();
-    std::optional<LightSample> light = lights_.sample(from.position, time, u_light, u_point.u, u_point.v);
-    if (!light) continue;
+  const int rounds = one_light_sample ? 1 : light_samples_;
+  const Real count = static_cast<Real>(rounds);
+  auto add = [&](const std::optional<LightSample>& light) {
+    if (!light) return;
     std::optional<ScatteringDensity> scattering = scatter.towards(light->wi);
-    if (!scattering) continue;
+    if (!scattering) return;
     Length t_max = sg::zero;
     TimedRay shadow = spawn_ray_to(from, light->position, light->position_error, light->emitter_normal, time, t_max);
     const int medium = sg::dot(from.normal, light->wi) >= sg::zero ? from_medium.front : from_medium.back;
     Reflectance through = visibility<media>(shadow, t_max, medium, counters);
-    if (sg::is_black(through)) continue;
+    if (sg::is_black(through)) return;
     PdfSolidAngle scattering_pdf = area_lights && mis && !light->delta ? scatter.pdf(light->wi) : PdfSolidAngle(sg::zero);
     sum += through * light_contribution<area_lights>(*light, *scattering, scattering_pdf, count, mis);
+  };
+  for (int i = 0; i < rounds; ++i) {
+    if (!one_light_sample && lights_.strategy() == LightStrategy::all) {
+      for (uint32_t index = 0; index < lights_.size(); ++index)
+        for (int k = 0; k < lights_.samples_of(index); ++k) {
+          Real u_within = sampler.next_1d();
+          Sample2 u_point = sampler.next_2d();
+          add(lights_.sample_each(index, from.position, time, u_within, u_point.u, u_point.v));
+        }
+      continue;
+    }
+    Real u_light = sampler.next_1d();
+    Sample2 u_point = sampler.next_2d();
+    add(lights_.sample(from.position, time, u_light, u_point.u, u_point.v));
   }
   return sum;
 }
@@ -209,7 +220,8 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
             if (!(gather && after_diffuse)) radiance += throughput * sky;
           }
           else if (mis_)
-            radiance += throughput * sky * mis_weight(previous_pdf, lights_.environment_pdf(ray.d) * light_sample_count);
+            radiance += throughput * sky *
+                        mis_weight(previous_pdf, lights_.environment_pdf(previous_position, ray.d) * light_sample_count);
         }
       }
       break;

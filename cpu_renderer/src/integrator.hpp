@@ -64,7 +64,7 @@ class Integrator {
     // lights; the light-sample loop only in those for several light samples;
     // the texture footprint's bookkeeping only in those for scenes with
     // textures; media tracking only in those for scenes with media.
-    bool one = light_samples_ == 1;
+    bool one = light_samples_ == 1 && lights_.strategy() != LightStrategy::all;
     if (photons_)
       return one ? with_textures<true, true, true>(camera_ray, sampler, counters)
                  : with_textures<true, false, true>(camera_ray, sampler, counters);
@@ -118,7 +118,7 @@ class Integrator {
   bool direct_only_;
   int max_depth_;
   bool mis_;           // off: emission found by BSDF sampling after a non-specular bounce is dropped
-  int light_samples_;  // next-event samples per shading point
+  int light_samples_;  // rounds of next-event samples per shading point (Lights)
   int roulette_depth_;
   SurfaceTextures textures_;
   PixelCone pixel_cone_;

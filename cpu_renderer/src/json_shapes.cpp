@@ -19,7 +19,7 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
   static constexpr const char* common[] = {"type",      "name",      "material",          "emission",    "two_sided",
-                                           "transform", "transform_at_close", "alpha", "shadow_alpha"};
+                                           "light_samples", "transform", "transform_at_close", "alpha", "shadow_alpha"};
   auto allow = [&](std::initializer_list<const char*> specific) {
     std::vector<std::string_view> names(std::begin(common), std::end(common));
     names.insert(names.end(), specific.begin(), specific.end());
@@ -74,6 +74,8 @@ Shape Loader::load_shape(const Json& value, const JsonPath& path, const std::map
     if (!sg::is_black(radiance)) shape.emission = radiance;
   }
   if (value.contains("two_sided")) shape.two_sided_emission = boolean(value["two_sided"], path.field("two_sided"));
+  if (value.contains("light_samples"))
+    shape.emission_samples = integer(value["light_samples"], path.field("light_samples"), 1, kMaxEmitterSamples);
   // Masks, as pbrt-v3's: the surface is missing (for shadows only: casts none) where the value is 0.
   for (auto [field, mask] : {std::pair{"alpha", &shape.alpha}, std::pair{"shadow_alpha", &shape.shadow_alpha}})
     if (value.contains(field)) {

@@ -46,8 +46,8 @@ DirectionWorld cone_point_normal(PointWorld center, Length radius, PointWorld re
   return from_kernel<DirectionWorld>(kernel::Real3{outward.x, outward.y, outward.z});
 }
 
-// A sphere around every static shape (at the shutter-open pose).
-void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radius) {
+// The box around every static shape (at the shutter-open pose).
+kernel::Bounds3 scene_bounds(const Scene& scene) {
   kernel::Bounds3 bounds;
   for (const Shape& shape : scene.shapes) {
     if (shape.type == Shape::Type::sphere) {
@@ -60,13 +60,20 @@ void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radiu
     }
   }
   if (bounds.empty()) bounds.extend(Real3{0, 0, 0});
+  return bounds;
+}
+
+// A sphere around that box.
+void scene_bounding_sphere(const Scene& scene, PointWorld& center, Length& radius) {
+  const kernel::Bounds3 bounds = scene_bounds(scene);
   center = from_kernel<PointWorld>(bounds.centroid());
   radius = sg::from_raw<Length>(std::max(Real(0.5) * kernel::length(bounds.extent()), std::numeric_limits<Real>::min()));
 }
 
 }  // namespace
 
-Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
+Lights::Lights(const Scene& scene, LightStrategy strategy)
+    : strategy_(strategy), light_of_shape_(scene.shapes.size(), -1) {
   std::vector<double> powers;  // watts, averaged over the channels
   for (const PointLight& point : scene.point_lights) {
     Light light;
@@ -120,6 +127,7 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     }
     if (!(area > sg::zero)) continue;
     light.pdf_area = 1.0f / area;
+    light.samples = shape.emission_samples;
     if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
       // Power (for choosing lights) stays that of the shutter-open pose; points
       // are sampled where the emitter is at the ray's time.
@@ -147,6 +155,7 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     environment_.emplace(*scene.environment);
     Light light;
     light.type = Light::Type::environment;
+    light.samples = scene.environment->samples;
     environment_index_ = static_cast<uint32_t>(lights_.size());
     lights_.push_back(light);
     Length radius = scene_radius_;
@@ -155,23 +164,41 @@ Lights::Lights(const Scene& scene) : light_of_shape_(scene.shapes.size(), -1) {
     powers.push_back(sg::raw(flux));
     has_area_lights_ = true;
   }
-  double total = 0;
-  for (double p : powers) total += p;
-  double running = 0;
-  for (double p : powers) {
-    running += total > 0 ? p / total : 1.0 / static_cast<double>(powers.size());
-    power_cdf_.push_back(static_cast<Real>(running));
+  power_cdf_ = light_cdf(powers);
+  if (strategy_ == LightStrategy::uniform) choice_cdf_ = light_cdf(std::vector<double>(powers.size(), 1.0));
+  else choice_cdf_ = power_cdf_;  // and where a voxel has nothing better (spatial)
+  if (strategy_ == LightStrategy::spatial && lights_.size() > 1) {
+    const Time time = scene.camera.shutter_open;
+    spatial_ = std::make_unique<SpatialLightChoice>(
+        scene_bounds(scene), static_cast<uint32_t>(lights_.size()),
+        [this, time](uint32_t light, PointWorld point, Real u_within, Real u1, Real u2) {
+          return estimated_contribution(light, point, time, u_within, u1, u2);
+        });
   }
-  if (!power_cdf_.empty()) power_cdf_.back() = 1.0f;
 }
 
-Real Lights::selection_probability(uint32_t light) const {
-  return power_cdf_[light] - (light == 0 ? 0.0f : power_cdf_[light - 1]);
+Lights::~Lights() = default;
+
+std::span<const Real> Lights::choice_cdf(PointWorld reference) const {
+  return spatial_ ? spatial_->cdf_at(reference) : std::span<const Real>(choice_cdf_);
 }
 
-uint32_t Lights::choose(Real u) const {
-  auto found = std::upper_bound(power_cdf_.begin(), power_cdf_.end(), u);
-  return static_cast<uint32_t>(std::min<ptrdiff_t>(found - power_cdf_.begin(), power_cdf_.size() - 1));
+Real Lights::weight_of(uint32_t light, PointWorld reference) const {
+  if (strategy_ == LightStrategy::all) return static_cast<Real>(lights_[light].samples);
+  return light_probability(choice_cdf(reference), light);
+}
+
+// pbrt-v3's estimate for its spatial light choice: the light's radiance (or a
+// point light's irradiance) at `point` over the density of the sample, averaged
+// over the channels, whatever the surface there.
+double Lights::estimated_contribution(uint32_t light, PointWorld point, Time time, Real u_within, Real u1,
+                                      Real u2) const {
+  std::optional<LightSample> s = sample_light(light, 1, u_within, point, time, u1, u2);
+  if (!s) return 0;
+  if (s->directional) return sg::raw(sg::average(s->irradiance));
+  if (s->delta) return sg::raw(sg::average(s->intensity * sg::solid_angle_per_projected_area(s->distance)));
+  if (!(s->pdf > sg::zero)) return 0;
+  return sg::raw(sg::average(s->radiance) / s->pdf);
 }
 
 template <class Space>
@@ -213,16 +240,15 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
   return point;
 }
 
-// A point on area light `index`, chosen with probability `probability` by
-// u_light, whose rest picks the triangle by area: its position, rounding-error
-// box, unit normal and density per area. (Inlined into both callers, writing
-// straight into theirs: next-event estimation runs it once per shadow ray.)
-[[gnu::always_inline]] inline void Lights::sample_surface(uint32_t index, Real probability, Time time, Real u_light,
-                                                          Real u1, Real u2, PointWorld& position, Real3& position_error,
+// A point on area light `index`, u_triangle picking the triangle by area: its
+// position, rounding-error box, unit normal and density per area. (Inlined
+// into both callers, writing straight into theirs: next-event estimation runs
+// it once per shadow ray.)
+[[gnu::always_inline]] inline void Lights::sample_surface(uint32_t index, Time time, Real u_triangle, Real u1, Real u2,
+                                                          PointWorld& position, Real3& position_error,
                                                           NormalWorld& normal, PdfArea& pdf_area) const {
   const Light& light = lights_[index];
-  Real low = index == 0 ? 0.0f : power_cdf_[index - 1];
-  Real u_triangle = std::min((u_light - low) / probability, Real(0x1.fffffep-1f));
+  u_triangle = std::min(u_triangle, Real(0x1.fffffep-1f));
   pdf_area = light.pdf_area;
   if (light.motion >= 0) {
     SurfacePoint point = sample_moving(light, time, u_triangle, u1, u2);
@@ -250,10 +276,21 @@ Lights::SurfacePoint Lights::sample_moving(const Light& light, Time time, Real u
 
 std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const {
   if (lights_.empty()) return std::nullopt;
-  uint32_t index = choose(u_light);
+  const ChosenLight chosen = choose_light(choice_cdf(reference), u_light);
+  if (!(chosen.probability > 0)) return std::nullopt;
+  return sample_light(chosen.index, chosen.probability, chosen.u_within, reference, time, u1, u2);
+}
+
+std::optional<LightSample> Lights::sample_each(uint32_t index, PointWorld reference, Time time, Real u_within, Real u1,
+                                               Real u2) const {
+  return sample_light(index, static_cast<Real>(lights_[index].samples), u_within, reference, time, u1, u2);
+}
+
+// A point on light `index`, whose densities are scaled by `weight`: the
+// probability of having chosen it, or the number of samples it takes.
+std::optional<LightSample> Lights::sample_light(uint32_t index, Real weight, Real u_within, PointWorld reference,
+                                                Time time, Real u1, Real u2) const {
   const Light& light = lights_[index];
-  Real probability = selection_probability(index);
-  if (!(probability > 0)) return std::nullopt;
   LightSample sample;
   if (light.type == Light::Type::environment) {
     std::optional<Environment::Sample> direction = environment_->sample(u1, u2);
@@ -261,7 +298,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     // The shadow ray runs to a point beyond the scene's bounding sphere (as pbrt's).
     sample.wi = direction->wi;
     sample.radiance = direction->radiance;
-    sample.pdf = probability * direction->pdf;
+    sample.pdf = weight * direction->pdf;
     sample.distance = sg::distance(reference, scene_center_) + 2 * scene_radius_;
     sample.position = reference + sample.wi * sample.distance;
     sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
@@ -275,7 +312,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
     sample.position_error = kernel::abs(to_kernel(sample.position)) * kernel::gamma(4);
     sample.irradiance = light.distant.irradiance;
     sample.directional = true;
-    sample.probability = probability;
+    sample.probability = weight;
     sample.delta = true;
     return sample;
   }
@@ -295,7 +332,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
       if (!(falloff > 0)) return std::nullopt;
       sample.intensity = light.intensity * falloff;
     }
-    sample.probability = probability;
+    sample.probability = weight;
     sample.delta = true;
     return sample;
   }
@@ -313,13 +350,13 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
       sample.wi = sg::normalize(toward);
       sample.emitter_normal = to_kernel(outward);
       sample.radiance = light.radiance;
-      sample.pdf = probability * cone_pdf(*one_minus_cos);
+      sample.pdf = weight * cone_pdf(*one_minus_cos);
       return sample;
     }
   }
   NormalWorld normal;
   PdfArea pdf_area = sg::zero;
-  sample_surface(index, probability, time, u_light, u1, u2, sample.position, sample.position_error, normal, pdf_area);
+  sample_surface(index, time, u_within, u1, u2, sample.position, sample.position_error, normal, pdf_area);
   VectorWorld toward = sample.position - reference;
   sample.distance = sg::length(toward);
   if (!(sample.distance > sg::zero)) return std::nullopt;
@@ -329,7 +366,7 @@ std::optional<LightSample> Lights::sample(PointWorld reference, Time time, Real 
   if (!(cos_light > sg::zero)) return std::nullopt;
   sample.emitter_normal = to_kernel(normal);
   sample.radiance = light.radiance;
-  sample.pdf = probability * sg::pdf_area_to_solid_angle(pdf_area, sample.distance * sample.distance, normal, sample.wi);
+  sample.pdf = weight * sg::pdf_area_to_solid_angle(pdf_area, sample.distance * sample.distance, normal, sample.wi);
   return sample;
 }
 
@@ -347,11 +384,11 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
   const Light& light = lights_[index];
   if (light.type == Light::Type::sphere && light.motion < 0)
     if (std::optional<Real> one_minus_cos = cone_one_minus_cos(light.position, light.radius, reference))
-      return selection_probability(static_cast<uint32_t>(index)) * cone_pdf(*one_minus_cos);
+      return weight_of(static_cast<uint32_t>(index), reference) * cone_pdf(*one_minus_cos);
   VectorWorld toward = hit.position - reference;
   Proj cos_light = sg::abs_dot(hit.normal, sg::normalize(toward));
   if (!(cos_light > sg::zero)) return sg::zero;
-  return selection_probability(static_cast<uint32_t>(index)) *
+  return weight_of(static_cast<uint32_t>(index), reference) *
          sg::pdf_area_to_solid_angle(light.motion < 0 ? light.pdf_area : moving_pdf_area(light, hit, time),
                                      sg::length_squared(toward), hit.normal, sg::normalize(toward));
 }
@@ -359,9 +396,10 @@ PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time
 std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3,
                                                       Real u4) const {
   if (lights_.empty()) return std::nullopt;
-  uint32_t index = choose(u_light);
+  const ChosenLight chosen = choose_light(power_cdf_, u_light);
+  const uint32_t index = chosen.index;
   const Light& light = lights_[index];
-  Real probability = selection_probability(index);
+  const Real probability = chosen.probability;
   if (!(probability > 0)) return std::nullopt;
   PhotonEmission photon;
   if (light.type == Light::Type::point || light.type == Light::Type::spot) {
@@ -409,7 +447,7 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
     return photon;
   }
   SurfacePoint point;
-  sample_surface(index, probability, time, u_light, u1, u2, point.position, point.position_error, point.normal,
+  sample_surface(index, time, chosen.u_within, u1, u2, point.position, point.position_error, point.normal,
                  point.pdf_area);
   NormalWorld normal = point.normal;
   Real sides = 1;
@@ -435,8 +473,8 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
   return photon;
 }
 
-PdfSolidAngle Lights::environment_pdf(DirectionWorld direction) const {
-  return selection_probability(environment_index_) * environment_->pdf(direction);
+PdfSolidAngle Lights::environment_pdf(PointWorld reference, DirectionWorld direction) const {
+  return weight_of(environment_index_, reference) * environment_->pdf(direction);
 }
 
 // The density per world area at `time` with which sample_moving() draws `hit`.

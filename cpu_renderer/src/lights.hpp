@@ -1,14 +1,17 @@
 // Light sources: point and spot lights (intensity), diffuse area emitters on
 // triangle meshes and spheres (radiance) and the environment (radiance from
-// every direction), chosen in proportion to power.
+// every direction), chosen by the scene's LightStrategy (light_choice.hpp).
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "environment.hpp"
 #include "geometry.hpp"
+#include "light_choice.hpp"
 #include "safegi/cpu_renderer/emitter_triangles.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
@@ -23,14 +26,16 @@ struct LightSample {
   Length distance = sg::zero;
   bool delta = false;      // a point, spot or distant light: no density over directions
   // Point and spot lights: the intensity towards the shading point and the probability
-  // of having chosen this light (also for a distant light).
+  // of having chosen this light (also for a distant light; with LightStrategy::all,
+  // the number of samples the light takes per round).
   Intensity intensity;
   Real probability = 0;
   // A distant light: its irradiance on a surface facing it (its intensity is zero).
   bool directional = false;
   spectrum<dim::irradiance> irradiance;
   // Area lights and the environment: the emitted radiance and the density of
-  // this direction, light choice included.
+  // this direction, light choice included (with LightStrategy::all, times the
+  // light's samples per round: the density of all of them together).
   Radiance radiance;
   PdfSolidAngle pdf = sg::zero;
 };
@@ -48,18 +53,34 @@ struct PhotonEmission {
 
 class Lights {
  public:
-  explicit Lights(const Scene& scene);
+  explicit Lights(const Scene& scene, LightStrategy strategy = LightStrategy::power);
+  ~Lights();
+  Lights(const Lights&) = delete;
+  Lights& operator=(const Lights&) = delete;
 
   bool empty() const { return lights_.empty(); }
   bool has_area_lights() const { return has_area_lights_; }
+  uint32_t size() const { return static_cast<uint32_t>(lights_.size()); }
+  LightStrategy strategy() const { return strategy_; }
+  // With LightStrategy::all: the shadow rays light `index` takes per round.
+  int samples_of(uint32_t index) const { return lights_[index].samples; }
 
-  // One light chosen by power, then a point on it, where it is at `time`.
+  // One round of next-event estimation is one sample() (power, uniform or
+  // spatial strategy), or samples_of(l) calls of sample_each(l) for every
+  // light l (all). The densities of either (pdf(), environment_pdf()) are
+  // those of the whole round.
+
+  // One light chosen by the strategy at `reference`, then a point on it, where
+  // it is at `time`.
   std::optional<LightSample> sample(PointWorld reference, Time time, Real u_light, Real u1, Real u2) const;
+  // A point on light `index` (LightStrategy::all).
+  std::optional<LightSample> sample_each(uint32_t index, PointWorld reference, Time time, Real u_within, Real u1,
+                                         Real u2) const;
 
   // Radiance an emissive surface sends back along `incoming` (towards -incoming).
   Radiance emitted(const SurfaceHit& hit, DirectionWorld incoming) const;
-  // Solid-angle density with which sample() would have produced the emitter
-  // point `hit` (found at `time`) as seen from `reference`.
+  // Solid-angle density with which a round of samples from `reference` would
+  // have produced the emitter point `hit` (found at `time`).
   PdfSolidAngle pdf(PointWorld reference, const SurfaceHit& hit, Time time) const;
 
   // A photon from a light chosen by power, at `time`: a point light's in a
@@ -73,7 +94,7 @@ class Lights {
   // density with which sample() picks that direction (light choice included).
   bool has_environment() const { return environment_.has_value(); }
   Radiance environment_radiance(DirectionWorld direction) const { return environment_->radiance(direction); }
-  PdfSolidAngle environment_pdf(DirectionWorld direction) const;
+  PdfSolidAngle environment_pdf(PointWorld reference, DirectionWorld direction) const;
 
  private:
   struct Light {
@@ -93,6 +114,7 @@ class Lights {
     int32_t motion = -1;
     PointObject object_center;
     Length object_radius = sg::zero;
+    int samples = 1;  // per round, with LightStrategy::all
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.
@@ -106,19 +128,26 @@ class Lights {
   template <class Space>
   const EmitterTriangle<Space>& choose_triangle(const std::vector<EmitterTriangle<Space>>& triangles, const Light& light,
                                                 Real u) const;
-  void sample_surface(uint32_t index, Real probability, Time time, Real u_light, Real u1, Real u2, PointWorld& position,
+  void sample_surface(uint32_t index, Time time, Real u_triangle, Real u1, Real u2, PointWorld& position,
                       Real3& position_error, NormalWorld& normal, PdfArea& pdf_area) const;
+  std::optional<LightSample> sample_light(uint32_t index, Real weight, Real u_within, PointWorld reference, Time time,
+                                          Real u1, Real u2) const;
+  double estimated_contribution(uint32_t light, PointWorld point, Time time, Real u_within, Real u1, Real u2) const;
   SurfacePoint sample_moving(const Light& light, Time time, Real u_triangle, Real u1, Real u2) const;
   PdfArea moving_pdf_area(const Light& light, const SurfaceHit& hit, Time time) const;
 
-  Real selection_probability(uint32_t light) const;
-  uint32_t choose(Real u) const;
+  // The light choice's distribution at `reference`; a light's share of a round.
+  std::span<const Real> choice_cdf(PointWorld reference) const;
+  Real weight_of(uint32_t light, PointWorld reference) const;
 
   std::vector<Light> lights_;
   std::vector<EmitterTriangle<World>> triangles_;
   std::vector<EmitterTriangle<Object>> object_triangles_;  // of moving emitters
   std::vector<RigidMotion> motions_;
-  std::vector<Real> power_cdf_;
+  std::vector<Real> power_cdf_;   // photons are emitted by power whatever the strategy
+  LightStrategy strategy_;
+  std::vector<Real> choice_cdf_;  // power or uniform
+  std::unique_ptr<SpatialLightChoice> spatial_;
   std::vector<int32_t> light_of_shape_;
   std::optional<Environment> environment_;
   uint32_t environment_index_ = 0;

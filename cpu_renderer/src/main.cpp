@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
   DistributedSession session(argc, argv);
   CLI::App app{"SafeGI CPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG",
                std::filesystem::path(argv[0]).filename().string()};
-  std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette, length_unit;
+  std::string scene_file, output = "render", resolution, crop, integrator, mis, russian_roulette, length_unit,
+      light_strategy;
   int spp = 0, threads = 0, max_depth = 0, light_samples = 0, roulette_depth = -1;
   uint32_t seed = 0;
   double time_budget = 0;
@@ -72,6 +73,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--light-samples", light_samples, "shadow rays per shading point for direct lighting (default: 1)")
       ->check(CLI::Range(1, 1024));
+  app.add_option("--light-strategy", light_strategy,
+                 "which lights shadow rays go to: power, uniform, spatial (one light each) or all (default: the scene's)")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightStrategyNames), std::end(kLightStrategyNames))));
   app.add_option("--rr", russian_roulette, "Russian roulette on or off (off: paths end at --max-depth)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--rr-depth", roulette_depth, "bounces before Russian roulette starts (default: 3)")
@@ -126,6 +130,7 @@ int main(int argc, char** argv) {
     if (photon_radius > 0) options.settings.photon_radius = static_cast<Real>(photon_radius) * units::metre;
     if (!mis.empty()) options.settings.mis = mis == "on";
     if (light_samples > 0) options.settings.light_samples = light_samples;
+    if (!light_strategy.empty()) options.settings.light_strategy = *light_strategy_named(light_strategy);
     if (!russian_roulette.empty()) options.settings.russian_roulette = russian_roulette == "on";
     if (roulette_depth >= 0) options.settings.russian_roulette_depth = roulette_depth;
     if (!resolution.empty()) {
@@ -184,7 +189,7 @@ int main(int argc, char** argv) {
       std::printf(
           "{\"width\": %d, \"height\": %d, \"spp\": %d, \"samples\": %llu, \"ranks\": %d, \"threads\": %d, "
           "\"seed\": %u, "
-          "\"integrator\": \"%s\", \"max_depth\": %d, \"mis\": %s, \"light_samples\": %d, "
+          "\"integrator\": \"%s\", \"max_depth\": %d, \"mis\": %s, \"light_samples\": %d, \"light_strategy\": \"%s\", "
           "\"russian_roulette\": %s, \"russian_roulette_depth\": %d, "
           "\"seconds\": %.4f, \"render_cpu_seconds\": %.3f, \"busiest_rank_render_cpu_seconds\": %.3f, "
           "\"cpu_seconds\": %.3f, "
@@ -195,7 +200,7 @@ int main(int argc, char** argv) {
           session.ranks(), stats.threads, seed,
           used.integrator == IntegratorType::direct ? "direct" : used.integrator == IntegratorType::path ? "path" : "photon",
           used.max_depth,
-          used.mis ? "true" : "false", used.light_samples, used.russian_roulette ? "true" : "false",
+          used.mis ? "true" : "false", used.light_samples, name_of(used.light_strategy), used.russian_roulette ? "true" : "false",
           used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,
           static_cast<unsigned long long>(stats.camera_rays), static_cast<unsigned long long>(stats.extension_rays),
           static_cast<unsigned long long>(stats.shadow_rays), static_cast<unsigned long long>(stats.total_rays()),

@@ -95,3 +95,54 @@ TEST(PbrtImportLights, MeanFactorIsTheMapOverTheSphere) {
 
 }  // namespace
 }  // namespace safegi::render
+
+namespace safegi::render {
+namespace {
+
+using namespace pbrt_test;
+
+// Emitters for the light-choice tests: a disk (one pbrt-v3 light), a two-triangle
+// mesh (two lights in pbrt-v3) and an infinite light, each asking for nsamples.
+constexpr const char* kEmitters =
+    "AttributeBegin\nAreaLightSource \"diffuse\" \"integer nsamples\" 16\nShape \"disk\"\nAttributeEnd\n"
+    "AttributeBegin\nAreaLightSource \"diffuse\" \"integer nsamples\" 4\n"
+    "Shape \"trianglemesh\" \"point P\" [0 0 1 1 0 1 1 1 1 0 1 1] \"integer indices\" [0 1 2 0 2 3]\nAttributeEnd\n"
+    "LightSource \"infinite\" \"integer samples\" 3\n";
+
+TEST(PbrtImportLights, DirectLightingSamplesEveryLightItsNsamplesTimes) {
+  PbrtScene scene = import("Integrator \"directlighting\"\n" + world(kEmitters));
+  EXPECT_EQ(scene.scene.settings.integrator, IntegratorType::direct);
+  EXPECT_EQ(scene.scene.settings.light_strategy, LightStrategy::all);
+  ASSERT_EQ(scene.scene.shapes.size(), 2u);
+  EXPECT_EQ(scene.scene.shapes[0].emission_samples, 16);
+  EXPECT_EQ(scene.scene.shapes[1].emission_samples, 8);  // 4 for each of pbrt-v3's two triangle lights
+  ASSERT_TRUE(scene.scene.environment.has_value());
+  EXPECT_EQ(scene.scene.environment->samples, 3);
+  EXPECT_EQ(import("Integrator \"directlighting\" \"string strategy\" \"one\"\n" + world(kEmitters)).scene.settings.light_strategy,
+            LightStrategy::uniform);
+}
+
+TEST(PbrtImportLights, WhittedSamplesEveryLightOnce) {
+  PbrtScene scene = import("Integrator \"whitted\"\n" + world(kEmitters));
+  EXPECT_EQ(scene.scene.settings.light_strategy, LightStrategy::all);
+  EXPECT_EQ(scene.scene.shapes[0].emission_samples, 1);
+  EXPECT_EQ(scene.scene.shapes[1].emission_samples, 2);
+  EXPECT_EQ(scene.scene.environment->samples, 1);
+}
+
+TEST(PbrtImportLights, PathChoosesLightsAsItsLightSampleStrategySays) {
+  EXPECT_EQ(import(world("")).scene.settings.light_strategy, LightStrategy::spatial);  // pbrt-v3's default integrator
+  for (auto [name, strategy] : {std::pair{"uniform", LightStrategy::uniform}, std::pair{"power", LightStrategy::power},
+                                std::pair{"spatial", LightStrategy::spatial}})
+    EXPECT_EQ(import("Integrator \"volpath\" \"string lightsamplestrategy\" \"" + std::string(name) + "\"\n" + world(""))
+                  .scene.settings.light_strategy,
+              strategy);
+  PbrtScene unknown = import("Integrator \"path\" \"string lightsamplestrategy\" \"best\"\n" + world(""));
+  EXPECT_EQ(unknown.scene.settings.light_strategy, LightStrategy::spatial);
+  EXPECT_NE(unknown.warnings.find("unknown \"string lightsamplestrategy\" \"best\": using \"spatial\", as pbrt-v3 does"),
+            std::string::npos)
+      << unknown.warnings;
+}
+
+}  // namespace
+}  // namespace safegi::render

@@ -130,6 +130,7 @@ Importer::Importer(SourceManager& sources, const PbrtImportOptions& options, std
   result_.scene.settings.height = 720;
   result_.scene.settings.spp = 16;
   result_.scene.settings.integrator = IntegratorType::path;
+  result_.scene.settings.light_strategy = LightStrategy::spatial;
   result_.scene.settings.max_depth = 5;
 }
 
@@ -369,11 +370,14 @@ void Importer::integrator(const Directive& d) {
     // Russian roulette: pbrt-v3's starts after 3 bounces below a throughput
     // threshold, ours after 3 bounces; both are unbiased. A threshold of 0 turns it off.
     settings.russian_roulette = params.one_float("rrthreshold", 1) > 0;
-    params.one_string("lightsamplestrategy", "spatial");  // the light-choice density: noise only
+    settings.light_strategy = light_strategy(params, "lightsamplestrategy", "spatial", {"uniform", "power", "spatial"});
   } else if (type == "directlighting" || type == "whitted") {
-    // Both are direct lighting plus perfectly specular chains up to maxdepth.
+    // Both are direct lighting plus perfectly specular chains up to maxdepth;
+    // whitted samples every light once, directlighting (strategy "all")
+    // every light its "nsamples" times, or (strategy "one") one light chosen uniformly.
     settings.integrator = IntegratorType::direct;
-    if (type == "directlighting") params.one_string("strategy", "all");  // noise only
+    settings.light_strategy = type == "whitted" ? LightStrategy::all : light_strategy(params, "strategy", "all", {"all", "one"});
+    light_samples_per_light_ = type == "directlighting";
   } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {
     settings.integrator = substitute->ours;
     for (std::string_view name : substitute->noise_only) {
@@ -391,6 +395,23 @@ void Importer::integrator(const Directive& d) {
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");
   report_unused(params);
+}
+
+// A light-choice parameter of pbrt-v3's integrators as our strategy ("one":
+// uniform). An unknown name is pbrt-v3's error message and its default.
+LightStrategy Importer::light_strategy(ParamSet& params, std::string_view name, std::string_view fallback,
+                                       std::initializer_list<std::string_view> known) {
+  std::string value = params.one_string(name, std::string(fallback));
+  if (std::find(known.begin(), known.end(), value) == known.end()) {
+    std::string list;
+    for (std::string_view k : known) list += (list.empty() ? "\"" : ", \"") + std::string(k) + "\"";
+    warn(params.find(name, {ParamType::string})->values,
+         "unknown \"string " + std::string(name) + "\" \"" + value + "\": using \"" +
+             std::string(fallback) + "\", as pbrt-v3 does",
+         "pbrt-v3 has " + list);
+    value = fallback;
+  }
+  return value == "one" ? LightStrategy::uniform : *light_strategy_named(value);
 }
 
 void Importer::pixel_filter(const Directive& d) {

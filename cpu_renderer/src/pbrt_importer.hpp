@@ -53,6 +53,7 @@ struct TextureEntry {
 struct AreaLight {
   Rgb radiance{};
   bool two_sided = false;
+  int samples = 1;  // shadow rays per shading point under pbrt-v3's directlighting
   SourceRange at;
 };
 
@@ -104,6 +105,7 @@ struct ShapeSource {
   std::optional<TexturedReflectance> alpha, shadow_alpha;  // pbrt-v3's masks
   std::optional<MediumInterface> media;  // where the two sides' differ
   std::optional<AreaLight> emission;
+  int pbrt_lights = 1;  // the lights pbrt-v3 makes of it as an emitter: one per triangle of a mesh
   SourceRange at;
 };
 
@@ -157,6 +159,8 @@ class Importer {
   void film(const Directive& d);
   void sampler(const Directive& d);
   void integrator(const Directive& d);
+  LightStrategy light_strategy(ParamSet& params, std::string_view name, std::string_view fallback,
+                               std::initializer_list<std::string_view> known);
   void pixel_filter(const Directive& d);
   void finish_camera(SourceRange world_begin);
   double screen_window_scale(ParamSet& params, SourceRange at);
@@ -241,6 +245,7 @@ class Importer {
   std::string integrator_name_ = "path";       // pbrt-v3's default
   std::optional<SourceRange> integrator_at_;
   bool integrator_traces_media_ = false;       // volpath, bdpt, mlt
+  bool light_samples_per_light_ = false;      // directlighting: area lights' "nsamples" count
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;

@@ -239,8 +239,9 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   sg::vec3_rep rgb = sg::raw(light.radiance);
   if (!std::isfinite(rgb.x) || !std::isfinite(rgb.y) || !std::isfinite(rgb.z))
     fail(d.range, std::string("the infinite light's radiance is out of ") + kRealName + " range");
-  // Shadow rays per light for pbrt's direct-lighting integrator: noise only.
-  params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
+  // Shadow rays per shading point under pbrt's directlighting (its "all" strategy).
+  const int samples = params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
+  light.samples = light_samples_per_light_ ? std::min(samples, kMaxEmitterSamples) : 1;
   if (const Param* map = params.find("mapname", {ParamType::string})) {
     if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
     light.file = map->strings[0];
@@ -295,9 +296,9 @@ void Importer::area_light_source(const Directive& d) {
     if (!(light.radiance[c] >= 0)) fail(d.range, "emitted radiance must not be negative");
   }
   light.two_sided = params.one_bool("twosided", false);
-  // Shadow rays per light for pbrt's direct-lighting integrator: noise only.
-  params.one_int("samples", 1, 1, 1 << 20);
-  params.one_int("nsamples", 1, 1, 1 << 20);
+  // Shadow rays per light for pbrt's direct-lighting integrator (its "all"
+  // strategy); every other integrator takes one.
+  light.samples = params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
   report_unused(params);
   state_.area_light = light;
 }
@@ -386,6 +387,9 @@ void Importer::shape(const Directive& d) {
          "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
          "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"");
   }
+  // pbrt-v3's quadrics are one shape each; its meshes, nurbs and subdivision surfaces, triangles.
+  if (type == "trianglemesh" || type == "plymesh" || type == "nurbs" || type == "loopsubdiv")
+    source.pbrt_lights = static_cast<int>(std::min<size_t>(source.indices.size() / 3, 1 << 30));
   source.material = material_index(*state_.material, params);
   source.invisible = state_.material->invisible;
   source.media = shape_media();
@@ -462,6 +466,10 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
       shape.emission = sg::from_raw<Radiance>(sg::vec3_rep(static_cast<Real>(l[0]), static_cast<Real>(l[1]),
                                                           static_cast<Real>(l[2])));
     shape.two_sided_emission = source.emission->two_sided;
+    // Under LightStrategy::all, as many shadow rays as pbrt-v3's directlighting
+    // takes for the lights it makes of this shape (one per triangle of a mesh).
+    const int64_t samples = static_cast<int64_t>(light_samples_per_light_ ? source.emission->samples : 1) * source.pbrt_lights;
+    shape.emission_samples = static_cast<int>(std::clamp<int64_t>(samples, 1, kMaxEmitterSamples));
   }
   const bool sided = has_outside(result_.scene, shape.material);
   if (source.kind == ShapeSource::Kind::sphere) {

@@ -34,6 +34,9 @@ inline const std::vector<Knobs>& estimator_knobs() {
       {"4 light samples", [](RenderSettings& s) { s.light_samples = 4; }},
       {"mis off, 3 light samples", [](RenderSettings& s) { s.mis = false, s.light_samples = 3; }},
       {"roulette from depth 0", [](RenderSettings& s) { s.russian_roulette_depth = 0; }},
+      {"lights chosen uniformly", [](RenderSettings& s) { s.light_strategy = LightStrategy::uniform; }},
+      {"lights chosen by voxel", [](RenderSettings& s) { s.light_strategy = LightStrategy::spatial; }},
+      {"every light, 2 rounds", [](RenderSettings& s) { s.light_strategy = LightStrategy::all, s.light_samples = 2; }},
   };
   return knobs;
 }

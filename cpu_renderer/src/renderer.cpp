@@ -144,7 +144,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
 
   const int hardware_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Geometry geometry(scene, options.threads > 0 ? options.threads : hardware_threads);
-  Lights lights(scene);
+  Lights lights(scene, settings.light_strategy);
   CameraRays camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
 

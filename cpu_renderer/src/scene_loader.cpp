@@ -68,7 +68,7 @@ Scene Loader::load(const Json& root) {
 
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
-         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "russian_roulette",
+         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "russian_roulette",
           "russian_roulette_depth", "photons", "photon_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
@@ -89,6 +89,14 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
   if (value.contains("light_samples"))
     settings.light_samples = integer(value["light_samples"], path.field("light_samples"), 1, 1024);
+  if (value.contains("light_strategy")) {
+    std::string name = string(value["light_strategy"], path.field("light_strategy"));
+    std::optional<LightStrategy> strategy = light_strategy_named(name);
+    if (!strategy)
+      fail(path.field("light_strategy"),
+           "expected \"power\", \"uniform\", \"spatial\" or \"all\", got " + short_dump(value["light_strategy"]));
+    settings.light_strategy = *strategy;
+  }
   if (value.contains("russian_roulette"))
     settings.russian_roulette = boolean(value["russian_roulette"], path.field("russian_roulette"));
   if (value.contains("russian_roulette_depth"))
@@ -309,8 +317,10 @@ RenderFromLight Loader::load_rotation(const Json& value, const JsonPath& path, c
 }
 
 EnvironmentLight Loader::load_environment(const Json& value, const JsonPath& path) {
-  object(value, path, {"type", "name", "radiance", "file", "transform"});
+  object(value, path, {"type", "name", "radiance", "file", "transform", "light_samples"});
   EnvironmentLight light;
+  if (value.contains("light_samples"))
+    light.samples = integer(value["light_samples"], path.field("light_samples"), 1, kMaxEmitterSamples);
   light.radiance = value.contains("radiance") ? typed_spectrum<dim::radiance>(value["radiance"], path.field("radiance"))
                                               : Radiance(Real(1) * units::radiance_unit);
   if (!value.contains("radiance") && !value.contains("file"))

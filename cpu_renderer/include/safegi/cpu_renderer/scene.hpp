@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -216,6 +217,7 @@ struct Shape {
   std::optional<MediumInterface> media;
   std::optional<Radiance> emission;
   bool two_sided_emission = false;
+  int emission_samples = 1;  // an emitter's shadow rays per shading point with LightStrategy::all (pbrt's nsamples)
 
   RenderFromObject render_from_object;
   // Rigid motion: where the object is at shutter close (absent: static).
@@ -295,6 +297,7 @@ struct EnvironmentLight {
   std::string file;                   // the map, as written in the scene; empty: constant
   std::shared_ptr<const MipMap> map;  // lat-long texels (u wraps, v clamps)
   RenderFromLight render_from_light;     // a rotation
+  int samples = 1;                       // shadow rays per shading point with LightStrategy::all (pbrt's nsamples)
 };
 
 // How the camera maps the image to rays (pbrt-v3's cameras of those names):
@@ -318,6 +321,22 @@ struct Camera {
 
 enum class IntegratorType { direct, path, photon };
 
+// How next-event estimation picks the lights its shadow rays go to (pbrt-v3's
+// strategies of those names): one light per shadow ray, in proportion to
+// power, uniformly, or by the lights' estimated contributions to the shading
+// point's part of the scene (spatial); or every light, each with its own
+// number of shadow rays (all: pbrt-v3's directlighting). Only the noise differs.
+enum class LightStrategy { power, uniform, spatial, all };
+// The most shadow rays one light takes per shading point with `all`.
+inline constexpr int kMaxEmitterSamples = 4096;
+inline constexpr const char* kLightStrategyNames[] = {"power", "uniform", "spatial", "all"};
+inline const char* name_of(LightStrategy strategy) { return kLightStrategyNames[static_cast<int>(strategy)]; }
+inline std::optional<LightStrategy> light_strategy_named(std::string_view name) {
+  for (int i = 0; i < 4; ++i)
+    if (name == kLightStrategyNames[i]) return static_cast<LightStrategy>(i);
+  return std::nullopt;
+}
+
 // The widest and tallest image a scene file or a command line may ask for.
 inline constexpr int kMaxImageSide = 65536;
 
@@ -329,7 +348,8 @@ struct RenderSettings {
   IntegratorType integrator = IntegratorType::path;
   // Knobs of the speed/accuracy study; every combination is unbiased.
   bool mis = true;                 // off: area lights by light sampling only (BSDF rays ignore their emission)
-  int light_samples = 1;           // shadow rays per shading point for direct lighting
+  int light_samples = 1;           // shadow rays per shading point for direct lighting (rounds of them, with `all`)
+  LightStrategy light_strategy = LightStrategy::power;
   bool russian_roulette = true;    // off: paths end only at max_depth or when nothing is hit
   int russian_roulette_depth = 3;  // bounces before Russian roulette starts
   // Photon mapping (integrator photon): photons traced from the lights, and the
