@@ -51,9 +51,13 @@ SpatialLightChoice::SpatialLightChoice(const kernel::Bounds3& scene_bounds, uint
   if (bounds_.empty()) bounds_.extend(kernel::Real3{0, 0, 0});
   const kernel::Real3 extent = bounds_.extent();
   const Real longest = std::max({extent.x, extent.y, extent.z});
-  for (int axis = 0; axis < 3; ++axis)
-    voxels_[axis] = longest > 0 ? std::max(1, static_cast<int>(std::lround(extent[axis] / longest * kVoxelsAlongLongestSide)))
-                                : 1;
+  // Fewer voxels where many lights would make the tables outgrow kMaxTableEntries.
+  for (int along_longest = kVoxelsAlongLongestSide;; along_longest /= 2) {
+    for (int axis = 0; axis < 3; ++axis)
+      voxels_[axis] = longest > 0 ? std::max(1, static_cast<int>(std::lround(extent[axis] / longest * along_longest))) : 1;
+    const double entries = static_cast<double>(voxels_[0]) * voxels_[1] * voxels_[2] * std::max<uint32_t>(lights_, 1);
+    if (entries <= kMaxTableEntries || along_longest == 1) break;
+  }
   const size_t count = static_cast<size_t>(voxels_[0]) * voxels_[1] * voxels_[2];
   cdfs_ = std::make_unique<std::atomic<Real*>[]>(count);
   for (size_t i = 0; i < count; ++i) cdfs_[i].store(nullptr, std::memory_order_relaxed);

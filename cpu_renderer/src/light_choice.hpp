@@ -29,7 +29,7 @@ ChosenLight choose_light(std::span<const Real> cdf, Real u);
 Real light_probability(std::span<const Real> cdf, uint32_t light);
 
 // pbrt-v3's SpatialLightDistribution: the scene's box cut into voxels (64
-// along its longest side), each voxel's distribution made the first time a
+// along its longest side, fewer for thousands of lights), each voxel's distribution made the first time a
 // shading point in it asks, from each light's estimated contribution at 128
 // points in the voxel (no visibility, no surface), every light kept at no less
 // than a thousandth of the mean so that none is ever left out.
@@ -50,6 +50,9 @@ class SpatialLightChoice {
 
   static constexpr int kVoxelsAlongLongestSide = 64;
   static constexpr int kSamplesPerVoxel = 128;
+  // Voxels × lights at most (≈ 128 MiB of tables if every voxel were used):
+  // scenes of thousands of lights get coarser voxels.
+  static constexpr double kMaxTableEntries = 1 << 25;
 
  private:
   Real* distribution_of(int x, int y, int z) const;
