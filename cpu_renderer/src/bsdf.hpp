@@ -220,7 +220,7 @@ class Bsdf {
 
   // Plastic: ρs · F(ωi·h) · D(h) G / (4 cos θo cos θi), the coating's
   // Torrance–Sparrow lobe; sampled by its normals (D(h) cos θh), reflected.
-  static Brdf lobe(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) {
+  Brdf lobe(const PlasticMaterial& plastic, DirectionShading wo, DirectionShading wi) const {
     DirectionShading h = half_vector(wo, wi);
     return plastic.specular * coating_fresnel(plastic, sg::dot(wi, h)) *
            TrowbridgeReitz(plastic.alpha).reflection(wo, wi, h);
@@ -232,9 +232,11 @@ class Bsdf {
     return TrowbridgeReitz(plastic.alpha).sample_reflection(wo, u1, u2);
   }
   // The coating's Fresnel factor at the microfacet: from outside (η = ior), or
-  // as pbrt-v3's plastic computes it, with the indices swapped (η = 1/ior).
-  static Real coating_fresnel(const PlasticMaterial& plastic, Real cos_h) {
-    return fresnel_dielectric(cos_h, plastic.pbrt_v3_fresnel ? 1 / plastic.ior : plastic.ior);
+  // as pbrt-v3's plastic computes it, with the indices swapped (η = 1/ior) —
+  // on the side its normal points to; from the other, pbrt-v3's Fresnel sees
+  // a negative cosine and swaps them back.
+  Real coating_fresnel(const PlasticMaterial& plastic, Real cos_h) const {
+    return fresnel_dielectric(cos_h, plastic.pbrt_v3_fresnel && !from_inside_ ? 1 / plastic.ior : plastic.ior);
   }
 
   // Metal: F_conductor(ωi·h; η, k) · D(h) G / (4 cos θo cos θi), pbrt-v3's

@@ -308,6 +308,13 @@ TEST(Bsdf, PlasticCoatingFresnel) {
   m.pbrt_v3_fresnel = true;
   EXPECT_NEAR(specular_albedo(m, 0.01), 0.04, 2e-3);
   EXPECT_GT(specular_albedo(m, 0.9), 0.9);  // beyond the critical angle of 1.5 -> 1: everything
+  // Seen from the side its normal points away from, pbrt-v3's Fresnel gets a
+  // negative cosine and swaps the indices back: the coating's own reflectance.
+  Material swapped{m};
+  const Reflectance black{};
+  Bsdf from_inside(swapped, black, true);
+  EXPECT_NEAR(estimate_albedo(from_inside, spherical(0.9, 0.0), 100000).mean_weight,
+              specular_albedo(PlasticMaterial{m.diffuse, m.specular, m.alpha, m.ior, false}, 0.9), 4e-3);
 }
 
 // The metal's lobe with F = 1 (k = 1000: F >= 1 − 4e-6) in a white furnace:

@@ -136,6 +136,7 @@ class Loader : public JsonFields {
  private:
   void load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings);
   CameraProjection projection(const Json& value, const JsonPath& path);
+  PixelFilter pixel_filter(const Json& value, const JsonPath& path);
   void load_camera(const Json& value, const JsonPath& path, Camera& camera);
   Image read_image_file(const Json& file_value, const JsonPath& path, std::string& file);
   ImageTexture load_texture(const std::string& name, const Json& value, const JsonPath& path);

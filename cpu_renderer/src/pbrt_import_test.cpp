@@ -179,10 +179,38 @@ TEST(PbrtImport, IgnoredParametersAreWarnings) {
             "scene.pbrt:2:33: warning: parameter \"float raduis\" of Shape \"sphere\" is not used\n"
             "Shape \"sphere\" \"float radius\" 1 \"float raduis\" 2\n                                ^~~~~~~~~~~~~~\n"
             "help: pbrt-v3 ignores it too (misspelt?)\n");
-  EXPECT_EQ(import("PixelFilter \"gaussian\"\n" + world("")).warnings,
-            "scene.pbrt:1:1: warning: pixels are reconstructed with a box filter one pixel wide, not this filter\n"
-            "PixelFilter \"gaussian\"\n^~~~~~~~~~~~~~~~~~~~~~\n"
-            "help: edges are slightly sharper than pbrt-v3's; the radiance is the same\n");
+}
+
+TEST(PbrtImport, PixelFiltersArePbrtV3sWithItsDefaults) {
+  auto filter_of = [](const std::string& directive) {
+    PbrtScene scene = import(directive + "\n" + world(""));
+    EXPECT_EQ(scene.warnings, "") << directive;
+    return scene.scene.settings.filter;
+  };
+  PixelFilter box = filter_of("");
+  EXPECT_EQ(box.type, PixelFilterType::box);
+  EXPECT_EQ(box.radius_x, 0.5);
+  PixelFilter gaussian = filter_of("PixelFilter \"gaussian\"");
+  EXPECT_EQ(gaussian.type, PixelFilterType::gaussian);
+  EXPECT_EQ(gaussian.radius_x, 2);
+  EXPECT_EQ(gaussian.radius_y, 2);
+  EXPECT_EQ(gaussian.gaussian_alpha, 2);
+  PixelFilter mitchell = filter_of("PixelFilter \"mitchell\" \"float xwidth\" 1.5 \"float B\" 0.5 \"float C\" 0.25");
+  EXPECT_EQ(mitchell.type, PixelFilterType::mitchell);
+  EXPECT_EQ(mitchell.radius_x, 1.5);
+  EXPECT_EQ(mitchell.radius_y, 2);
+  EXPECT_EQ(mitchell.mitchell_b, 0.5);
+  EXPECT_EQ(mitchell.mitchell_c, 0.25);
+  PixelFilter sinc = filter_of("PixelFilter \"sinc\" \"float tau\" 2");
+  EXPECT_EQ(sinc.radius_x, 4);
+  EXPECT_EQ(sinc.sinc_tau, 2);
+  EXPECT_EQ(filter_of("PixelFilter \"triangle\"").type, PixelFilterType::triangle);
+  EXPECT_EQ(import_error("PixelFilter \"lanczos\"\n" + world("")),
+            "scene.pbrt:1:13: error: unknown pixel filter \"lanczos\"\nPixelFilter \"lanczos\"\n            ^~~~~~~~~\n"
+            "help: pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"\n");
+  EXPECT_EQ(import_error("PixelFilter \"box\" \"float xwidth\" 0\n" + world("")),
+            "scene.pbrt:1:19: error: a filter's \"float xwidth\" must be above 0 and at most 64 pixels\n"
+            "PixelFilter \"box\" \"float xwidth\" 0\n                  ^~~~~~~~~~~~~~\n");
 }
 
 TEST(PbrtImport, UnitsMustBeDeclared) {
@@ -495,6 +523,22 @@ TEST(PbrtImport, GlassKeepsPbrtsOutside) {
   EXPECT_EQ(import_error(world("Material \"glass\"\nReverseOrientation\nShape \"sphere\"")),
             "scene.pbrt:4:7: error: a glass or translucent sphere turned inside out (ReverseOrientation) is not supported\n"
             "Shape \"sphere\"\n      ^~~~~~~~\nhelp: its outside would be the inside of the sphere\n");
+}
+
+// pbrt-v3's plastic swaps its Fresnel indices only on its normal's side (on the
+// other its Fresnel sees a negative cosine and swaps them back): plastic meshes
+// are re-wound to that side too (to "N"'s where given); plastic spheres turned
+// inside out are not refused (they keep the swap outside, where pbrt-v3 has none).
+TEST(PbrtImport, PlasticKeepsPbrtsOutside) {
+  const std::string triangle = "Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0]\n";
+  const std::string inward = "Shape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 -1 0 0 -1 0 0 -1]\n";
+  PbrtScene scene = import(world("Material \"plastic\"\n" + triangle + inward + "Material \"uber\"\n" + triangle +
+                                 "Material \"plastic\"\nReverseOrientation\nShape \"sphere\""),
+                           in_memory());
+  EXPECT_EQ(scene.scene.shapes.at(0).indices, (std::vector<uint32_t>{0, 2, 1}));  // mirrored world: re-wound
+  EXPECT_EQ(scene.scene.shapes.at(1).indices, (std::vector<uint32_t>{0, 1, 2}));  // to N's side
+  EXPECT_EQ(scene.scene.shapes.at(2).indices, (std::vector<uint32_t>{0, 1, 2}));  // uber's Fresnel is not swapped
+  EXPECT_EQ(scene.scene.shapes.size(), 4u);
 }
 
 // Images in memory, by file name: "grad.exr" is 1×2 linear (top row 0.2, bottom

@@ -414,15 +414,32 @@ LightStrategy Importer::light_strategy(ParamSet& params, std::string_view name, 
   return value == "one" ? LightStrategy::uniform : *light_strategy_named(value);
 }
 
+// pbrt-v3's filters, with its defaults; a "width" is the filter's radius in pixels.
 void Importer::pixel_filter(const Directive& d) {
-  ParamSet params(d.params, "PixelFilter \"" + d.strings[0] + "\"");
-  double xwidth = params.one_float("xwidth", d.strings[0] == "box" ? 0.5 : 2);
-  double ywidth = params.one_float("ywidth", d.strings[0] == "box" ? 0.5 : 2);
-  if (d.strings[0] != "box" || xwidth != 0.5 || ywidth != 0.5)
-    warn(span(d), "pixels are reconstructed with a box filter one pixel wide, not this filter",
-         "edges are slightly sharper than pbrt-v3's; the radiance is the same");
-  else
-    report_unused(params);
+  const std::string& type = d.strings[0];
+  ParamSet params(d.params, "PixelFilter \"" + type + "\"");
+  const auto named = std::find(std::begin(kPixelFilterNames), std::end(kPixelFilterNames), type);
+  if (named == std::end(kPixelFilterNames))
+    fail(d.string_ranges[0], "unknown pixel filter \"" + type + "\"",
+         "pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"");
+  PixelFilter filter;
+  filter.type = static_cast<PixelFilterType>(named - std::begin(kPixelFilterNames));
+  const double radius = filter.type == PixelFilterType::box ? 0.5 : filter.type == PixelFilterType::sinc ? 4 : 2;
+  for (auto [name, value] : {std::pair{"xwidth", &filter.radius_x}, std::pair{"ywidth", &filter.radius_y}}) {
+    *value = params.one_float(name, radius);
+    if (!(*value > 0 && *value <= kMaxFilterRadius))
+      params.fail_at(*params.find(name, {ParamType::floating}),
+                     std::string("a filter's \"float ") + name + "\" must be above 0 and at most " +
+                         std::to_string(static_cast<int>(kMaxFilterRadius)) + " pixels");
+  }
+  if (filter.type == PixelFilterType::gaussian) filter.gaussian_alpha = params.one_float("alpha", 2);
+  if (filter.type == PixelFilterType::mitchell) {
+    filter.mitchell_b = params.one_float("B", 1.0 / 3);
+    filter.mitchell_c = params.one_float("C", 1.0 / 3);
+  }
+  if (filter.type == PixelFilterType::sinc) filter.sinc_tau = params.one_float("tau", 3);
+  report_unused(params);
+  result_.scene.settings.filter = filter;
 }
 
 // ---------------------------------------------------------------------------

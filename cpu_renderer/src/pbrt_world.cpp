@@ -14,13 +14,16 @@ namespace {
 
 // A material with an outside (pbrt-v3's: its geometric normal's side; ours:
 // the winding's): glass, and translucent's glossy lobes, whose interface has
-// index 1.5 inside; a mix with either among its parts.
-bool has_outside(const Scene& scene, int index) {
+// index 1.5 inside; pbrt-v3's plastic, whose swapped Fresnel indices hold on
+// that side only (with `plastic`); a mix with any of them among its parts.
+bool has_outside(const Scene& scene, int index, bool plastic = true) {
   if (index < 0) return false;
   const Material& material = scene.materials[index];
-  if (material.mix) return has_outside(scene, material.mix->first) || has_outside(scene, material.mix->second);
+  if (material.mix)
+    return has_outside(scene, material.mix->first, plastic) || has_outside(scene, material.mix->second, plastic);
   return std::visit(Overloaded{[](const GlassMaterial&) { return true; },
                                [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
+                               [&](const PlasticMaterial& p) { return plastic && p.pbrt_v3_fresnel; },
                                [](const auto&) { return false; }},
                     material.model);
 }
@@ -479,7 +482,8 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
     if (shape.emission && source.reverse_orientation && !shape.two_sided_emission)
       fail(source.at, "an emitting sphere turned inside out (ReverseOrientation) is not supported",
            "\"bool twosided\" \"true\" emits on both sides");
-    if (sided && source.reverse_orientation)
+    // (A plastic one keeps the swapped Fresnel on its outside: pbrt-v3's has it on the inside.)
+    if (source.reverse_orientation && has_outside(result_.scene, shape.material, false))
       fail(source.at, "a glass or translucent sphere turned inside out (ReverseOrientation) is not supported",
            "its outside would be the inside of the sphere");
     // Our sphere's normal points out; pbrt-v3's, in, under ReverseOrientation.

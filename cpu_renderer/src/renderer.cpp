@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 #include "geometry.hpp"
 #include "integrator.hpp"
 #include "lights.hpp"
+#include "pixel_filter.hpp"
 #include "printable.hpp"
 #include "sampler.hpp"
 
@@ -162,8 +164,12 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   }
 
   // Per-pixel sums in double; every pixel's samples are added in sample order,
-  // so the result does not depend on which thread rendered which tile.
+  // so the result does not depend on which thread rendered which tile. With
+  // a pixel filter, the sums of the samples' weights too.
   std::vector<double> sums(3 * static_cast<size_t>(window.width) * window.height, 0.0);
+  std::optional<PixelFilterSampler> filter;
+  if (!PixelFilterSampler::is_plain_box(settings.filter)) filter.emplace(settings.filter);
+  std::vector<double> weight_sums(filter ? static_cast<size_t>(window.width) * window.height : 0, 0.0);
   int thread_count = options.threads > 0 ? options.threads : hardware_threads;
   thread_count = std::max(1, std::min<int>(thread_count, static_cast<int>(std::max<size_t>(tiles.size(), 1))));
 
@@ -187,14 +193,32 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
         const PixelRect& tile = tiles[t];
         for (int y = tile.y0; y < tile.y1; ++y) {
           for (int x = tile.x0; x < tile.x1; ++x) {
-            double* sum = &sums[3 * (static_cast<size_t>(y - window.y) * window.width + (x - window.x))];
+            const size_t pixel = static_cast<size_t>(y - window.y) * window.width + (x - window.x);
+            double* sum = &sums[3 * pixel];
             for (int s = pass_begin; s < pass_end; ++s) {
               Sampler sampler(options.seed, static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(s));
-              TimedRay ray = camera.generate(x, y, sampler);
+              double weight = 1;
+              TimedRay ray;
+              if (filter) {
+                const Sample2 film = sampler.next_2d();
+                const PixelFilterSampler::Sample offset = filter->sample(film.u, film.v);
+                weight = offset.weight;
+                ray = camera.generate_at(static_cast<Real>(x) + Real(0.5) + offset.dx,
+                                         static_cast<Real>(y) + Real(0.5) + offset.dy, sampler);
+              } else {
+                ray = camera.generate(x, y, sampler);
+              }
               ++counter.camera;
               sg::vec3_rep L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
               if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
                 ++invalid[thread_index];
+                continue;
+              }
+              if (filter) {
+                sum[0] += weight * L.r;
+                sum[1] += weight * L.g;
+                sum[2] += weight * L.b;
+                weight_sums[pixel] += weight;
                 continue;
               }
               sum[0] += L.r;
@@ -237,7 +261,15 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   image.height = window.height;
   image.rgb.resize(sums.size());
   double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
-  for (size_t i = 0; i < sums.size(); ++i) image.rgb[i] = static_cast<float>(sums[i] * scale);
+  for (size_t i = 0; i < sums.size(); ++i) {
+    // A filter's negative lobes can make a pixel negative, or its weights cancel:
+    // black then, as pbrt-v3 writes it.
+    if (filter) {
+      image.rgb[i] = weight_sums[i / 3] != 0 ? static_cast<float>(std::max(0.0, sums[i] / weight_sums[i / 3])) : 0.0f;
+      continue;
+    }
+    image.rgb[i] = static_cast<float>(sums[i] * scale);
+  }
 
   if (stats) {
     *stats = RenderStats{};

@@ -68,7 +68,7 @@ Scene Loader::load(const Json& root) {
 
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
-         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "russian_roulette",
+         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "filter", "russian_roulette",
           "russian_roulette_depth", "photons", "photon_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
@@ -97,6 +97,7 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
            "expected \"power\", \"uniform\", \"spatial\" or \"all\", got " + short_dump(value["light_strategy"]));
     settings.light_strategy = *strategy;
   }
+  if (value.contains("filter")) settings.filter = pixel_filter(value["filter"], path.field("filter"));
   if (value.contains("russian_roulette"))
     settings.russian_roulette = boolean(value["russian_roulette"], path.field("russian_roulette"));
   if (value.contains("russian_roulette_depth"))
@@ -107,6 +108,32 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     settings.photon_radius = typed_scalar<dim::length>(value["photon_radius"], path.field("photon_radius"));
     if (!(settings.photon_radius > sg::zero)) fail(path.field("photon_radius"), "must be positive");
   }
+}
+
+// {"type": "gaussian", "radius": [2, 2], "alpha": 2}; mitchell's "b" and "c", sinc's "tau".
+PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
+  object(value, path, {"type", "radius", "alpha", "b", "c", "tau"});
+  const std::string name = string(required(value, path, "type"), path.field("type"));
+  const auto named = std::find(std::begin(kPixelFilterNames), std::end(kPixelFilterNames), name);
+  if (named == std::end(kPixelFilterNames))
+    fail(path.field("type"),
+         "expected \"box\", \"triangle\", \"gaussian\", \"mitchell\" or \"sinc\", got " + short_dump(value["type"]));
+  PixelFilter filter;
+  filter.type = static_cast<PixelFilterType>(named - std::begin(kPixelFilterNames));
+  if (value.contains("radius")) {
+    const Json& radius = value["radius"];
+    if (!radius.is_array() || radius.size() != 2)
+      fail(path.field("radius"), "expected [x, y] in pixels, got " + short_dump(radius));
+    filter.radius_x = number(radius[0], path.field("radius").index(0), 1e-3, kMaxFilterRadius);
+    filter.radius_y = number(radius[1], path.field("radius").index(1), 1e-3, kMaxFilterRadius);
+  } else if (filter.type != PixelFilterType::box) {
+    filter.radius_x = filter.radius_y = filter.type == PixelFilterType::sinc ? 4 : 2;  // pbrt-v3's defaults
+  }
+  if (value.contains("alpha")) filter.gaussian_alpha = number(value["alpha"], path.field("alpha"), 1e-6, 1e6);
+  if (value.contains("b")) filter.mitchell_b = number(value["b"], path.field("b"), -10, 10);
+  if (value.contains("c")) filter.mitchell_c = number(value["c"], path.field("c"), -10, 10);
+  if (value.contains("tau")) filter.sinc_tau = number(value["tau"], path.field("tau"), 1e-3, 1e3);
+  return filter;
 }
 
 CameraProjection Loader::projection(const Json& value, const JsonPath& path) {

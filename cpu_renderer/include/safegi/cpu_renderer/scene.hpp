@@ -340,6 +340,21 @@ inline std::optional<LightStrategy> light_strategy_named(std::string_view name) 
 // The widest and tallest image a scene file or a command line may ask for.
 inline constexpr int kMaxImageSide = 65536;
 
+// How samples make pixels (pbrt-v3's pixel filters, each a product of one
+// function per axis, radii in pixels): a box one pixel wide is each pixel's
+// mean; the others weigh samples by their offset from the pixel's centre and
+// reach into the neighbours' area (pixel_filter.hpp).
+enum class PixelFilterType { box, triangle, gaussian, mitchell, sinc };
+inline constexpr const char* kPixelFilterNames[] = {"box", "triangle", "gaussian", "mitchell", "sinc"};
+struct PixelFilter {
+  PixelFilterType type = PixelFilterType::box;
+  double radius_x = 0.5, radius_y = 0.5;
+  double gaussian_alpha = 2;                     // exp(−α x²), less its value at the radius
+  double mitchell_b = 1.0 / 3, mitchell_c = 1.0 / 3;
+  double sinc_tau = 3;                           // sinc(x) · sinc(x / τ) (Lanczos)
+};
+inline constexpr double kMaxFilterRadius = 64;  // pixels
+
 struct RenderSettings {
   int width = 256;
   int height = 256;
@@ -350,6 +365,7 @@ struct RenderSettings {
   bool mis = true;                 // off: area lights by light sampling only (BSDF rays ignore their emission)
   int light_samples = 1;           // shadow rays per shading point for direct lighting (rounds of them, with `all`)
   LightStrategy light_strategy = LightStrategy::power;
+  PixelFilter filter;
   bool russian_roulette = true;    // off: paths end only at max_depth or when nothing is hit
   int russian_roulette_depth = 3;  // bounces before Russian roulette starts
   // Photon mapping (integrator photon): photons traced from the lights, and the
