@@ -19,6 +19,8 @@ committed, plus our Cornell box written by bench/renderer/json_to_pbrt.py):
 
 Needs a pbrt-v3 binary: SAFEGI_PBRT=/path/to/pbrt (docs/cpu-renderer.md says
 how one was built); without it the section says so and measures nothing.
+SAFEGI_PBRT_FILTER=box replaces every scene's PixelFilter by pbrt's default box
+(both renderers and the reference): the error without pbrt-v3's filter splatting.
 """
 from __future__ import annotations
 
@@ -67,6 +69,8 @@ def with_options(scene: Path, width: int, height: int, spp: int) -> Path:
         raise SystemExit(f"bench: {scene} has no WorldBegin at the start of a line")
     options = (f'Film "image" "integer xresolution" [{width}] "integer yresolution" [{height}]\n'
                f'Sampler "halton" "integer pixelsamples" [{spp}]\n')
+    if os.environ.get("SAFEGI_PBRT_FILTER") == "box":  # a later PixelFilter replaces the scene's
+        options += 'PixelFilter "box"\n'
     copy = scene.with_name(f"{scene.stem}.bench-{width}x{height}-{spp}.pbrt")
     copy.write_text(text[:match.start()] + options + text[match.start():])
     return copy
