@@ -13,7 +13,9 @@
 
 #include "bvh.hpp"
 #include "geometry.hpp"
+#include "light_choice.hpp"
 #include "photon_map.hpp"
+#include "pixel_filter.hpp"
 
 namespace safegi::render {
 
@@ -114,7 +116,9 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
   estimate.width = std::max(0, window.width);
   estimate.height = std::max(0, window.height);
   const uint64_t pixels = static_cast<uint64_t>(estimate.width) * static_cast<uint64_t>(estimate.height);
-  estimate.film = pixels * kFilmBytesPerPixel;
+  // A pixel filter: the sums of the samples' weights too.
+  const uint64_t filter_bytes = PixelFilterSampler::is_plain_box(settings.filter) ? 0 : sizeof(double);
+  estimate.film = pixels * (kFilmBytesPerPixel + filter_bytes);
   for (const Shape& shape : scene.shapes) {
     if (shape.type == Shape::Type::sphere) ++estimate.spheres;
     else estimate.triangles += shape.indices.size() / 3;
@@ -126,6 +130,17 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
   estimate.threads = static_cast<uint64_t>(estimate.thread_count) * kBytesPerThread + tiles * kBytesPerTile;
   if (settings.integrator == IntegratorType::photon)
     estimate.photons = static_cast<uint64_t>(std::max(0, settings.photons)) * kBytesPerPhoton;
+  if (settings.light_strategy == LightStrategy::spatial) {
+    uint64_t lights = scene.point_lights.size() + scene.spot_lights.size() + scene.distant_lights.size() +
+                      (scene.environment ? 1 : 0);
+    for (const Shape& shape : scene.shapes) lights += shape.emission ? 1 : 0;
+    // Every voxel's slot, and a distribution in each (SpatialLightChoice makes fewer voxels for many lights).
+    const uint64_t voxels = static_cast<uint64_t>(SpatialLightChoice::kVoxelsAlongLongestSide) *
+                            SpatialLightChoice::kVoxelsAlongLongestSide * SpatialLightChoice::kVoxelsAlongLongestSide;
+    const uint64_t most = static_cast<uint64_t>(SpatialLightChoice::kMaxTableEntries);
+    const uint64_t entries = std::min(voxels * lights, std::max(most, lights));
+    if (lights > 1) estimate.light_choice = voxels * sizeof(void*) + entries * sizeof(Real);
+  }
   return estimate;
 }
 
@@ -156,6 +171,7 @@ void check_render_memory(const Scene& scene, const RenderOptions& options, int t
              std::to_string(e.spheres) + " spheres), " + std::to_string(e.thread_count) +
              (e.thread_count == 1 ? " thread " : " threads ") + format_bytes(e.threads);
   if (e.photons > 0) message += ", photons " + format_bytes(e.photons);
+  if (e.light_choice > 0) message += ", light choice " + format_bytes(e.light_choice);
   message += "; lower --resolution, render a --crop window";
   message += e.photons > 0 ? " or trace fewer --photons" : "";
   throw RenderMemoryError(message);

@@ -98,6 +98,19 @@ TEST_F(RenderCli, ARenderThatDoesNotFitIsRefusedBeforeItAllocates) {
                                           "geometry and BVH 220 B (0 triangles, 1 spheres), 1 thread 256.2 KiB, "
                                           "photons 54.4 MiB; lower --resolution, render a --crop window or trace "
                                           "fewer --photons\n")));
+  // A pixel filter keeps each pixel's weight sum too (8 B more a pixel); the
+  // spatial light choice, a table per voxel (64³ slots, a distribution of two lights in each).
+  std::string filtered = sphere_scene;
+  auto replace = [&](std::string_view from, std::string_view to) { filtered.replace(filtered.find(from), from.size(), to); };
+  replace(R"({"camera")", R"({"render": {"filter": {"type": "gaussian"}, "light_strategy": "spatial"}, "camera")");
+  replace(R"("intensity": "10 W/sr"})",
+          R"("intensity": "10 W/sr"}, {"type": "point", "position": ["0 m", "3 m", "-3 m"], "intensity": "1 W/sr"})");
+  EXPECT_EQ(run("\"" + write("f.json", filtered).string() + "\" --resolution 20000x20000 --threads 2",
+                "SAFEGI_RENDER_MEMORY_LIMIT=8GiB"),
+            std::make_pair(1, std::string("error: this render needs about 16.4 GiB of memory, more than 80 % of the "
+                                          "8.0 GiB available (SAFEGI_RENDER_MEMORY_LIMIT): the 20000x20000 image "
+                                          "16.4 GiB, geometry and BVH 220 B (0 triangles, 1 spheres), 2 threads "
+                                          "24.3 MiB, light choice 4.0 MiB; lower --resolution, render a --crop window\n")));
   // A crop window is what is allocated.
   EXPECT_EQ(run("\"" + scene.string() + "\" --resolution 20000x20000 --crop 0,0,32,32 --spp 1 --threads 1",
                 "SAFEGI_RENDER_MEMORY_LIMIT=8GiB")

@@ -21,9 +21,10 @@ struct MemoryEstimate {
   uint64_t geometry = 0;      // world-space triangles and spheres, their BVH and its build
   uint64_t threads = 0;       // per worker thread: its stack and counters; the tile list
   uint64_t photons = 0;       // the photon integrator's photons and their grid
+  uint64_t light_choice = 0;  // the spatial light choice's voxel tables, at most
   uint64_t triangles = 0, spheres = 0;
   int thread_count = 0;
-  uint64_t total() const { return film + geometry + threads + photons; }
+  uint64_t total() const { return film + geometry + threads + photons + light_choice; }
 };
 
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options, int thread_count);
