@@ -741,6 +741,27 @@ TEST(PbrtImport, MixAndScaleTextures) {
             "scene.pbrt:2:21: error: texture \"uv\" is not supported");
 }
 
+// A reflectance is clamped to [0, 1]; pbrt-v3 clamps it below 0 only. A noise
+// sum that goes above 1 (wrinkled's turbulence at 8 octaves: about 1.8) is
+// said once per texture, at its first use; a checkerboard of colours in [0, 1] never is.
+TEST(PbrtImport, PatternsAboveOneAreClampedWithAWarning) {
+  PbrtScene scene = import(world(
+      "Texture \"t\" \"color\" \"wrinkled\" \"integer octaves\" 8 \"float roughness\" 0.75\n"
+      "Texture \"c\" \"color\" \"checkerboard\"\n"
+      "Material \"matte\" \"texture Kd\" \"t\"\nShape \"sphere\"\n"
+      "Material \"plastic\" \"texture Kd\" \"t\" \"rgb Ks\" [0 0 0]\nShape \"sphere\"\n"
+      "Material \"matte\" \"texture Kd\" \"c\"\nShape \"sphere\""));
+  const std::string& w = scene.warnings;
+  EXPECT_EQ(w.rfind("scene.pbrt:4:31: warning: this texture reaches 1.", 0), 0u) << w;
+  EXPECT_NE(w.find(": as \"Kd\" of Material \"matte\" it is clamped to 1 where it exceeds 1\n"), std::string::npos) << w;
+  EXPECT_NE(w.find("help: pbrt-v3 clamps it below 0 only: its surface is brighter there, reflecting more light than it "
+                   "receives\n"),
+            std::string::npos);
+  EXPECT_EQ(w.find("warning:", 30), std::string::npos) << "once per texture: " << w;
+  EXPECT_GT(unclamped_largest(scene.scene.patterns.at(0).pattern), 1.5);
+  EXPECT_EQ(unclamped_largest(scene.scene.patterns.at(1).pattern), 1.0);
+}
+
 // Float procedural textures (pbrt-v3's FBmTexture<Float>, a float checkerboard, ...) are bump maps too:
 // their numbers are displacements, any finite value, a "scale" of one by a constant included.
 TEST(PbrtImport, ProceduralBumpMaps) {

@@ -239,6 +239,7 @@ class Importer {
   std::vector<Diagnostic> warnings_;
   int filter_warned_ = 0;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
+  std::set<int> clamped_patterns_warned_;              // patterns above 1 read as a reflectance, warned once each
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
   std::map<std::string, int> named_media_;     // into Scene::media
   bool media_used_ = false;                    // by a shape or the camera

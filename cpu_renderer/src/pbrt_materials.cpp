@@ -210,6 +210,18 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
                      entry.image >= 0 ? "its image texture reaches " + format_number(largest[c]) +
                                             " (lower the Texture's \"float scale\")"
                                       : "above 1 a surface reflects more light than it receives");
+  // pbrt-v3 clamps a reflectance below 0 only; a pattern above 1 is clamped here.
+  if (entry.pattern >= 0 && !clamped_patterns_warned_.count(entry.pattern)) {
+    const double reaches = std::max({entry.value[0], entry.value[1], entry.value[2]}) *
+                           unclamped_largest(result_.scene.patterns[entry.pattern].pattern);
+    if (reaches > 1) {
+      clamped_patterns_warned_.insert(entry.pattern);
+      warn(param->values,
+           "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
+               params.context() + " it is clamped to 1 where it exceeds 1",
+           "pbrt-v3 clamps it below 0 only: its surface is brighter there, reflecting more light than it receives");
+    }
+  }
   TexturedReflectance result;
   result.value = sg::from_raw<Reflectance>(sg::vec3_rep(static_cast<Real>(entry.value[0]), static_cast<Real>(entry.value[1]),
                                                         static_cast<Real>(entry.value[2])));

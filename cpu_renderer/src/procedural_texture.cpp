@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <concepts>
+#include <limits>
 
 #include "noise.hpp"
 #include "safegi/cpu_renderer/sampling.hpp"
@@ -237,6 +238,42 @@ Reflectance largest_value(const Pattern& pattern) {
           return clamped(kMarbleGain * bound);
         } else {
           return grey(1);  // noise sums: clamped to 1
+        }
+      },
+      pattern);
+}
+
+double unclamped_largest(const Pattern& pattern) {
+  auto largest_channel = [](Reflectance r) { return static_cast<double>(sg::max_component(r)); };
+  auto operand_bound = [&](const PatternOperand& operand) {
+    return largest_channel(operand.value) * (operand.pattern ? unclamped_largest(operand.pattern->pattern) : 1.0);
+  };
+  return std::visit(
+      [&](const auto& p) -> double {
+        using P = std::remove_cvref_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>)
+          return largest_channel(largest(p.even, p.odd));
+        else if constexpr (std::is_same_v<P, DotsPattern>)
+          return largest_channel(largest(p.inside, p.outside));
+        else if constexpr (std::is_same_v<P, UvPattern>)
+          return 1;
+        else if constexpr (std::is_same_v<P, BilerpPattern>)
+          return largest_channel(largest(largest(p.v00, p.v01), largest(p.v10, p.v11)));
+        else if constexpr (std::is_same_v<P, MixPattern>)
+          return std::max(operand_bound(p.first), operand_bound(p.second));
+        else if constexpr (std::is_same_v<P, ProductPattern>)
+          return operand_bound(p.first) * operand_bound(p.second);
+        else if constexpr (std::is_same_v<P, MarblePattern>) {
+          Reflectance bound = marble_colour(0);
+          for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
+          return kMarbleGain * largest_channel(bound);
+        } else {
+          double found = 0;
+          for (int i = 0; i < 16; ++i)
+            for (int j = 0; j < 16; ++j)
+              for (int k = 0; k < 16; ++k)
+                found = std::max(found, largest_channel(sample(p, NoisePoint{i + Real(0.5), j + Real(0.5), k + Real(0.5)}, 0)));
+          return found;
         }
       },
       pattern);

@@ -145,6 +145,10 @@ Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at);
 // Bounds for the importer's checks and the preview's colour: the largest value
 // the pattern takes (per channel), and its mean over many cells.
 Reflectance largest_value(const Pattern& pattern);
+// The largest channel before the clamp: a bound for the patterns of given
+// colours, and for sums of noise octaves (fbm, wrinkled, windy) the largest of
+// 16³ point samples a unit apart (every octave), what such a texture reaches in practice.
+double unclamped_largest(const Pattern& pattern);
 Reflectance mean_value(const Pattern& pattern);
 
 }  // namespace safegi::render
