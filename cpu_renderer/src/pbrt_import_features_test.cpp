@@ -805,3 +805,83 @@ TEST(PbrtImport, ProceduralTextureErrorsNameTheParameter) {
 
 }  // namespace
 }  // namespace safegi::render
+
+namespace safegi::render {
+namespace {
+
+using namespace pbrt_test;
+
+struct Extent {
+  glm::dvec3 lower{1e30}, upper{-1e30};
+};
+Extent extent_of(const Shape& shape) {
+  Extent e;
+  for (const PointObject& p : shape.positions) {
+    const glm::dvec3 v(sg::raw(shape.render_from_object(p)));
+    e.lower = glm::min(e.lower, v);
+    e.upper = glm::max(e.upper, v);
+  }
+  return e;
+}
+
+// pbrt-v3's curves as meshes: a tube of the curve's width ("cylinder"; "flat"
+// too, warned), a strip across normals ("ribbon"); B-splines converted to
+// Bézier segments as pbrt-v3 converts them (a uniform cubic B-spline starts at
+// (p0 + 4 p1 + p2) / 6).
+TEST(PbrtImportCurves, TubesRibbonsAndBSplines) {
+  const std::string line = "\"point P\" [0 0 0 1 0 0 2 0 0 3 0 0] \"float width\" 0.5";
+  PbrtScene scene = import(world("Shape \"curve\" " + line + " \"string type\" \"cylinder\"\n"
+                                 "Shape \"curve\" " + line + " \"string type\" \"ribbon\" \"normal N\" [0 0 1 0 0 1]\n"
+                                 "Shape \"curve\" " + line + " \"string type\" \"cylinder\" \"string basis\" \"bspline\"\n"));
+  ASSERT_EQ(scene.scene.shapes.size(), 3u);
+  const Shape& tube = scene.scene.shapes[0];
+  EXPECT_EQ(tube.indices.size(), 3u * 16 * 8 * 2);  // 16 steps along, 8 sides, 2 triangles each
+  const Extent t = extent_of(tube);
+  EXPECT_NEAR(t.upper.x - t.lower.x, 3, 1e-6);
+  for (int axis : {1, 2}) {
+    EXPECT_LE(t.upper[axis], 0.25 + 1e-6);
+    EXPECT_GE(t.lower[axis], -0.25 - 1e-6);
+  }
+  ASSERT_EQ(tube.normals.size(), tube.positions.size());
+  for (const auto& n : tube.normals) {
+    EXPECT_NEAR(sg::raw(n).x, 0, 1e-6);  // around the x axis
+  }
+  const Shape& ribbon = scene.scene.shapes[1];
+  double area = 0;
+  for (size_t i = 0; i < ribbon.indices.size(); i += 3) {
+    const glm::dvec3 a(sg::raw(ribbon.positions[ribbon.indices[i]])), b(sg::raw(ribbon.positions[ribbon.indices[i + 1]])),
+        c(sg::raw(ribbon.positions[ribbon.indices[i + 2]]));
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  EXPECT_NEAR(area, 0.5 * 3, 1e-5);  // width × length
+  EXPECT_NEAR(extent_of(ribbon).upper.z - extent_of(ribbon).lower.z, 0, 1e-6);  // flat, across its normals
+  const Extent b = extent_of(scene.scene.shapes[2]);
+  EXPECT_NEAR(b.upper.x - b.lower.x, 1, 1e-6);  // from (0 + 4 + 2) / 6 to (1 + 8 + 3) / 6
+  EXPECT_EQ(scene.warnings, "");
+  EXPECT_NE(import(world("Shape \"curve\" " + line)).warnings.find("warning: a flat curve is rendered as a tube of its width"),
+            std::string::npos);
+}
+
+TEST(PbrtImportCurves, Errors) {
+  EXPECT_EQ(first_line(import_error(world("Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0 3 0 0 4 0 0]"))),
+            "scene.pbrt:2:7: error: Shape \"curve\": a degree 3 Bézier curve needs 4 + k·3 control points, found 5");
+  EXPECT_EQ(first_line(import_error(world("Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0 3 0 0] \"string type\" \"ribbon\""))),
+            "scene.pbrt:2:7: error: Shape \"curve\": a ribbon needs \"normal N\", one per segment end: 2 normals");
+  EXPECT_EQ(first_line(import_error(world("Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0] \"integer degree\" 2 "
+                                          "\"string basis\" \"nurbs\""))),
+            "scene.pbrt:2:64: error: unknown basis \"nurbs\"");
+  EXPECT_EQ(first_line(import_error(world("Shape \"curve\""))),
+            "scene.pbrt:2:7: error: Shape \"curve\" needs \"point P\": its control points, x y z each");
+  // A hair file's worth of curves is refused before it is made, not swapped for.
+  MemoryLimit limit("1MiB");
+  std::string many;
+  for (int i = 0; i < 40; ++i) many += "Shape \"curve\" \"point P\" [0 0 0 1 0 0 2 0 0 3 0 0]\n";
+  const std::string error = first_line(import_error(world(many)));
+  EXPECT_NE(error.find("error: Shape \"curve\": the scene's curves make "), std::string::npos) << error;
+  EXPECT_NE(error.find(" triangles so far, more than fit in 80 % of the 1.0 MiB available (SAFEGI_RENDER_MEMORY_LIMIT)"),
+            std::string::npos)
+      << error;
+}
+
+}  // namespace
+}  // namespace safegi::render

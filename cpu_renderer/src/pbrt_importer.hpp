@@ -124,6 +124,13 @@ bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, Shape
 // pbrt-v3's "loopsubdiv" as the mesh its LoopSubdivide makes (pbrt_loopsubdiv.cpp),
 // its limit normals as "N"; false for any other type.
 bool loopsubdiv_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+// pbrt-v3's "curve" as a tube ("cylinder", "flat") or a strip ("ribbon") of
+// triangles along its Bézier segments (pbrt_curves.cpp); false for any other
+// type. `curve_triangles`: what the scene's curves made before this one,
+// refused before it tessellates once they pass what fits in memory (a hair
+// file of a million segments would make hundreds of millions).
+bool curve_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source,
+                uint64_t& curve_triangles);
 struct SubdivisionSurface {
   std::vector<glm::dvec3> positions;  // on the limit surface
   std::vector<glm::dvec3> normals;    // pbrt-v3's limit normals, not normalised
@@ -240,6 +247,7 @@ class Importer {
   int filter_warned_ = 0;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::set<int> clamped_patterns_warned_;              // patterns above 1 read as a reflectance, warned once each
+  uint64_t curve_triangles_ = 0;                       // made of the curves so far
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
   std::map<std::string, int> named_media_;     // into Scene::media
   bool media_used_ = false;                    // by a shape or the camera

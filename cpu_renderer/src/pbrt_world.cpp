@@ -385,10 +385,16 @@ void Importer::shape(const Directive& d) {
   } else if (quadric_mesh(type, params, d.string_ranges[0], source) || nurbs_mesh(type, params, d.string_ranges[0], source) ||
              loopsubdiv_mesh(type, params, d.string_ranges[0], source)) {
     source.kind = ShapeSource::Kind::mesh;
+  } else if (curve_mesh(type, params, d.string_ranges[0], source, curve_triangles_)) {
+    source.kind = ShapeSource::Kind::mesh;
+    if (params.one_string("type", "flat") == "flat")
+      warn(d.string_ranges[0], "a flat curve is rendered as a tube of its width",
+           "pbrt-v3 turns a flat curve to face each ray: the same silhouette, shaded as a strip facing the viewer, "
+           "where a tube is shaded round (\"string type\" \"cylinder\" is the tube pbrt-v3 fakes)");
   } else {
     fail(d.string_ranges[0], "shape \"" + type + "\" is not supported",
          "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
-         "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\"");
+         "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\", \"curve\"");
   }
   // pbrt-v3's quadrics are one shape each; its meshes, nurbs and subdivision surfaces, triangles.
   if (type == "trianglemesh" || type == "plymesh" || type == "nurbs" || type == "loopsubdiv")
