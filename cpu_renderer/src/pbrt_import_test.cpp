@@ -211,6 +211,10 @@ TEST(PbrtImport, PixelFiltersArePbrtV3sWithItsDefaults) {
   EXPECT_EQ(import_error("PixelFilter \"box\" \"float xwidth\" 0\n" + world("")),
             "scene.pbrt:1:19: error: a filter's \"float xwidth\" must be above 0 and at most 64 pixels\n"
             "PixelFilter \"box\" \"float xwidth\" 0\n                  ^~~~~~~~~~~~~~\n");
+  EXPECT_EQ(first_line(import_error("PixelFilter \"gaussian\" \"float alpha\" -1\n" + world(""))),
+            "scene.pbrt:1:24: error: a filter's \"float alpha\" must be in (0, 1e6]");
+  EXPECT_EQ(first_line(import_error("PixelFilter \"mitchell\" \"float B\" 1e30\n" + world(""))),
+            "scene.pbrt:1:24: error: a filter's \"float B\" must be in (-10, 10]");
 }
 
 TEST(PbrtImport, UnitsMustBeDeclared) {

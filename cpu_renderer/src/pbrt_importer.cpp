@@ -424,20 +424,23 @@ void Importer::pixel_filter(const Directive& d) {
          "pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"");
   PixelFilter filter;
   filter.type = static_cast<PixelFilterType>(named - std::begin(kPixelFilterNames));
-  const double radius = filter.type == PixelFilterType::box ? 0.5 : filter.type == PixelFilterType::sinc ? 4 : 2;
-  for (auto [name, value] : {std::pair{"xwidth", &filter.radius_x}, std::pair{"ywidth", &filter.radius_y}}) {
-    *value = params.one_float(name, radius);
-    if (!(*value > 0 && *value <= kMaxFilterRadius))
+  // Each number within the JSON loader's bounds: a filter of NaNs would make NaN pixels.
+  auto read = [&](const char* name, double fallback, double low, double high, const char* what) {
+    const double value = params.one_float(name, fallback);
+    if (!(value > low && value <= high))
       params.fail_at(*params.find(name, {ParamType::floating}),
-                     std::string("a filter's \"float ") + name + "\" must be above 0 and at most " +
-                         std::to_string(static_cast<int>(kMaxFilterRadius)) + " pixels");
-  }
-  if (filter.type == PixelFilterType::gaussian) filter.gaussian_alpha = params.one_float("alpha", 2);
+                     std::string("a filter's \"float ") + name + "\" must be " + what);
+    return value;
+  };
+  const double radius = default_filter_radius(filter.type);
+  filter.radius_x = read("xwidth", radius, 0, kMaxFilterRadius, "above 0 and at most 64 pixels");
+  filter.radius_y = read("ywidth", radius, 0, kMaxFilterRadius, "above 0 and at most 64 pixels");
+  if (filter.type == PixelFilterType::gaussian) filter.gaussian_alpha = read("alpha", 2, 0, 1e6, "in (0, 1e6]");
   if (filter.type == PixelFilterType::mitchell) {
-    filter.mitchell_b = params.one_float("B", 1.0 / 3);
-    filter.mitchell_c = params.one_float("C", 1.0 / 3);
+    filter.mitchell_b = read("B", 1.0 / 3, -10, 10, "in (-10, 10]");
+    filter.mitchell_c = read("C", 1.0 / 3, -10, 10, "in (-10, 10]");
   }
-  if (filter.type == PixelFilterType::sinc) filter.sinc_tau = params.one_float("tau", 3);
+  if (filter.type == PixelFilterType::sinc) filter.sinc_tau = read("tau", 3, 0, 1e3, "in (0, 1000]");
   report_unused(params);
   result_.scene.settings.filter = filter;
 }

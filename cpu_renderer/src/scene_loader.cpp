@@ -68,8 +68,8 @@ Scene Loader::load(const Json& root) {
 
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
-         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "filter", "russian_roulette",
-          "russian_roulette_depth", "photons", "photon_radius"});
+         {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "filter",
+          "russian_roulette", "russian_roulette_depth", "photons", "photon_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -126,8 +126,8 @@ PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
       fail(path.field("radius"), "expected [x, y] in pixels, got " + short_dump(radius));
     filter.radius_x = number(radius[0], path.field("radius").index(0), 1e-3, kMaxFilterRadius);
     filter.radius_y = number(radius[1], path.field("radius").index(1), 1e-3, kMaxFilterRadius);
-  } else if (filter.type != PixelFilterType::box) {
-    filter.radius_x = filter.radius_y = filter.type == PixelFilterType::sinc ? 4 : 2;  // pbrt-v3's defaults
+  } else {
+    filter.radius_x = filter.radius_y = default_filter_radius(filter.type);
   }
   if (value.contains("alpha")) filter.gaussian_alpha = number(value["alpha"], path.field("alpha"), 1e-6, 1e6);
   if (value.contains("b")) filter.mitchell_b = number(value["b"], path.field("b"), -10, 10);

@@ -354,6 +354,10 @@ struct PixelFilter {
   double sinc_tau = 3;                           // sinc(x) · sinc(x / τ) (Lanczos)
 };
 inline constexpr double kMaxFilterRadius = 64;  // pixels
+// pbrt-v3's default radius of each filter, in pixels.
+inline double default_filter_radius(PixelFilterType type) {
+  return type == PixelFilterType::box ? 0.5 : type == PixelFilterType::sinc ? 4 : 2;
+}
 
 struct RenderSettings {
   int width = 256;
