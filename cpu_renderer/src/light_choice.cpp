@@ -91,10 +91,12 @@ Real* SpatialLightChoice::distribution_of(int x, int y, int z) const {
   const kernel::Real3 cell{size.x / static_cast<Real>(voxels_[0]), size.y / static_cast<Real>(voxels_[1]),
                            size.z / static_cast<Real>(voxels_[2])};
   std::vector<double> contributions(lights_, 0.0);
-  for (uint32_t i = 0; i < kSamplesPerVoxel; ++i) {
-    const kernel::Real3 offset{radical_inverse(i, 2), radical_inverse(i, 3), radical_inverse(i, 5)};
+  const int points = samples_per_voxel(lights_);
+  for (int i = 0; i < points; ++i) {
+    const uint32_t n = static_cast<uint32_t>(i);
+    const kernel::Real3 offset{radical_inverse(n, 2), radical_inverse(n, 3), radical_inverse(n, 5)};
     const PointWorld point = from_kernel<PointWorld>(lower + cell * offset);
-    const Real u1 = radical_inverse(i, 7), u2 = radical_inverse(i, 11), u_within = radical_inverse(i, 13);
+    const Real u1 = radical_inverse(n, 7), u2 = radical_inverse(n, 11), u_within = radical_inverse(n, 13);
     for (uint32_t light = 0; light < lights_; ++light) {
       const double c = contribution_(light, point, u_within, u1, u2);
       if (c > 0 && std::isfinite(c)) contributions[light] += c;
@@ -102,7 +104,7 @@ Real* SpatialLightChoice::distribution_of(int x, int y, int z) const {
   }
   double sum = 0;
   for (double c : contributions) sum += c;
-  const double mean = sum / (static_cast<double>(kSamplesPerVoxel) * lights_);
+  const double mean = sum / (static_cast<double>(points) * lights_);
   const double floor = mean > 0 ? 1e-3 * mean : 1.0;
   for (double& c : contributions) c = std::max(c, floor);
   std::vector<Real> cdf = light_cdf(contributions);

@@ -4,6 +4,7 @@
 // point's voxel of the scene (spatial).
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -50,6 +51,13 @@ class SpatialLightChoice {
 
   static constexpr int kVoxelsAlongLongestSide = 64;
   static constexpr int kSamplesPerVoxel = 128;
+  // With many lights, fewer points per voxel (128 · 64 / lights, at least 8):
+  // a voxel then costs at most ~8 k light samples instead of 128 per light
+  // (2000 lights: 8 s instead of 0.5 s for a 64² image at 1 spp before this).
+  static int samples_per_voxel(uint32_t lights) {
+    return static_cast<int>(std::clamp<uint64_t>(uint64_t{kSamplesPerVoxel} * 64 / std::max<uint32_t>(lights, 1), 8,
+                                                 kSamplesPerVoxel));
+  }
   // Voxels × lights at most (≈ 128 MiB of tables if every voxel were used):
   // scenes of thousands of lights get coarser voxels.
   static constexpr double kMaxTableEntries = 1 << 25;

@@ -59,5 +59,25 @@ TEST(LightChoice, SpatialWeighsEachVoxelByWhatReachesIt) {
   EXPECT_EQ(choice.cdf_at(at(std::nanf(""), 0.5f, 0.5f)).data(), choice.cdf_at(at(0, 0.5f, 0.5f)).data());
 }
 
+// Many lights, fewer points a voxel: 128 up to 64 lights, then 128 · 64 / lights, at least 8.
+TEST(LightChoice, ManyLightsTakeFewerPointsAVoxel) {
+  EXPECT_EQ(SpatialLightChoice::samples_per_voxel(2), 128);
+  EXPECT_EQ(SpatialLightChoice::samples_per_voxel(64), 128);
+  EXPECT_EQ(SpatialLightChoice::samples_per_voxel(128), 64);
+  EXPECT_EQ(SpatialLightChoice::samples_per_voxel(2000), 8);
+  kernel::Bounds3 box;
+  box.extend(kernel::Real3{0, 0, 0});
+  box.extend(kernel::Real3{1, 1, 1});
+  std::atomic<int> calls{0};
+  SpatialLightChoice choice(box, 1000, [&](uint32_t light, PointWorld, Real, Real, Real) {
+    ++calls;
+    return light % 2 == 0 ? 1.0 : 0.0;
+  });
+  std::span<const Real> cdf = choice.cdf_at(at(0.5f, 0.5f, 0.5f));
+  EXPECT_EQ(calls.load(), 8 * 1000);
+  EXPECT_NEAR(light_probability(cdf, 0), 1.0 / 500, 1e-5);  // the odd ones at the floor, 1/1000 of the mean
+  EXPECT_GT(light_probability(cdf, 1), 0.0f);
+}
+
 }  // namespace
 }  // namespace safegi::render
