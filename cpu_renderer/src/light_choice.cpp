@@ -63,6 +63,14 @@ SpatialLightChoice::SpatialLightChoice(const kernel::Bounds3& scene_bounds, uint
   for (size_t i = 0; i < count; ++i) cdfs_[i].store(nullptr, std::memory_order_relaxed);
 }
 
+uint64_t SpatialLightChoice::most_bytes(uint64_t lights) {
+  // The finest grid's slots, and a distribution in each voxel up to
+  // kMaxTableEntries entries (the constructor coarsens the grid past them).
+  const uint64_t voxels = uint64_t{kVoxelsAlongLongestSide} * kVoxelsAlongLongestSide * kVoxelsAlongLongestSide;
+  const uint64_t entries = std::min(voxels * lights, std::max(static_cast<uint64_t>(kMaxTableEntries), lights));
+  return voxels * sizeof(std::atomic<Real*>) + entries * sizeof(Real);
+}
+
 SpatialLightChoice::~SpatialLightChoice() {
   const size_t count = static_cast<size_t>(voxels_[0]) * voxels_[1] * voxels_[2];
   for (size_t i = 0; i < count; ++i) delete[] cdfs_[i].load(std::memory_order_relaxed);

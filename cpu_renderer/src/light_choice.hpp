@@ -61,6 +61,9 @@ class SpatialLightChoice {
   // Voxels × lights at most (≈ 128 MiB of tables if every voxel were used):
   // scenes of thousands of lights get coarser voxels.
   static constexpr double kMaxTableEntries = 1 << 25;
+  // The most bytes the tables of `lights` lights take, every voxel used (for
+  // the render's memory estimate).
+  static uint64_t most_bytes(uint64_t lights);
 
  private:
   Real* distribution_of(int x, int y, int z) const;

@@ -134,12 +134,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     uint64_t lights = scene.point_lights.size() + scene.spot_lights.size() + scene.distant_lights.size() +
                       (scene.environment ? 1 : 0);
     for (const Shape& shape : scene.shapes) lights += shape.emission ? 1 : 0;
-    // Every voxel's slot, and a distribution in each (SpatialLightChoice makes fewer voxels for many lights).
-    const uint64_t voxels = static_cast<uint64_t>(SpatialLightChoice::kVoxelsAlongLongestSide) *
-                            SpatialLightChoice::kVoxelsAlongLongestSide * SpatialLightChoice::kVoxelsAlongLongestSide;
-    const uint64_t most = static_cast<uint64_t>(SpatialLightChoice::kMaxTableEntries);
-    const uint64_t entries = std::min(voxels * lights, std::max(most, lights));
-    if (lights > 1) estimate.light_choice = voxels * sizeof(void*) + entries * sizeof(Real);
+    if (lights > 1) estimate.light_choice = SpatialLightChoice::most_bytes(lights);  // Lights makes none for one
   }
   return estimate;
 }

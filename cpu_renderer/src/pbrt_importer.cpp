@@ -418,12 +418,12 @@ LightStrategy Importer::light_strategy(ParamSet& params, std::string_view name, 
 void Importer::pixel_filter(const Directive& d) {
   const std::string& type = d.strings[0];
   ParamSet params(d.params, "PixelFilter \"" + type + "\"");
-  const auto named = std::find(std::begin(kPixelFilterNames), std::end(kPixelFilterNames), type);
-  if (named == std::end(kPixelFilterNames))
+  const std::optional<PixelFilterType> named = pixel_filter_named(type);
+  if (!named)
     fail(d.string_ranges[0], "unknown pixel filter \"" + type + "\"",
          "pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"");
   PixelFilter filter;
-  filter.type = static_cast<PixelFilterType>(named - std::begin(kPixelFilterNames));
+  filter.type = *named;
   // Each number within the JSON loader's bounds: a filter of NaNs would make NaN pixels.
   auto read = [&](const char* name, double fallback, double low, double high, const char* what) {
     const double value = params.one_float(name, fallback);

@@ -156,6 +156,31 @@ Reflectance largest(Reflectance a, Reflectance b) {
   return sg::from_raw<Reflectance>(glm::max(x, y));
 }
 
+// The patterns of given colours, and the largest value (per channel) each
+// takes before the clamp: its colours' (a Bézier curve stays inside its
+// control points' hull; bilinear in [0, 1]² stays below its largest corner).
+template <class P>
+constexpr bool kColourPattern = std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern> ||
+                                std::is_same_v<P, DotsPattern> || std::is_same_v<P, UvPattern> ||
+                                std::is_same_v<P, BilerpPattern> || std::is_same_v<P, MarblePattern>;
+template <class P>
+Reflectance colour_bound(const P& p) {
+  if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>) {
+    return largest(p.even, p.odd);
+  } else if constexpr (std::is_same_v<P, DotsPattern>) {
+    return largest(p.inside, p.outside);
+  } else if constexpr (std::is_same_v<P, UvPattern>) {
+    return rgb(1, 1, 0);
+  } else if constexpr (std::is_same_v<P, BilerpPattern>) {
+    return largest(largest(p.v00, p.v01), largest(p.v10, p.v11));
+  } else {
+    static_assert(std::is_same_v<P, MarblePattern>);
+    Reflectance bound = marble_colour(0);
+    for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
+    return kMarbleGain * bound;
+  }
+}
+
 }  // namespace
 
 sg::vec3_rep SolidMapping::coordinates(PointWorld position) const {
@@ -219,26 +244,14 @@ Reflectance largest_value(const Pattern& pattern) {
   return std::visit(
       [](const auto& p) -> Reflectance {
         using P = std::remove_cvref_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>)
-          return clamped(largest(p.even, p.odd));
-        else if constexpr (std::is_same_v<P, DotsPattern>)
-          return clamped(largest(p.inside, p.outside));
-        else if constexpr (std::is_same_v<P, UvPattern>)
-          return rgb(1, 1, 0);
-        else if constexpr (std::is_same_v<P, BilerpPattern>)  // bilinear in [0, 1]²: a corner's at most
-          return clamped(largest(largest(p.v00, p.v01), largest(p.v10, p.v11)));
+        if constexpr (kColourPattern<P>)
+          return clamped(colour_bound(p));
         else if constexpr (std::is_same_v<P, MixPattern>)  // an amount in [0, 1]: between the two
           return clamped(largest(operand_largest(p.first), operand_largest(p.second)));
         else if constexpr (std::is_same_v<P, ProductPattern>)
           return clamped(operand_largest(p.first) * operand_largest(p.second));
-        else if constexpr (std::is_same_v<P, MarblePattern>) {
-          // A Bézier curve stays inside its control points' hull.
-          Reflectance bound = marble_colour(0);
-          for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
-          return clamped(kMarbleGain * bound);
-        } else {
+        else
           return grey(1);  // noise sums: clamped to 1
-        }
       },
       pattern);
 }
@@ -251,22 +264,12 @@ double unclamped_largest(const Pattern& pattern) {
   return std::visit(
       [&](const auto& p) -> double {
         using P = std::remove_cvref_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>)
-          return largest_channel(largest(p.even, p.odd));
-        else if constexpr (std::is_same_v<P, DotsPattern>)
-          return largest_channel(largest(p.inside, p.outside));
-        else if constexpr (std::is_same_v<P, UvPattern>)
-          return 1;
-        else if constexpr (std::is_same_v<P, BilerpPattern>)
-          return largest_channel(largest(largest(p.v00, p.v01), largest(p.v10, p.v11)));
-        else if constexpr (std::is_same_v<P, MixPattern>)
+        if constexpr (kColourPattern<P>) {
+          return largest_channel(colour_bound(p));
+        } else if constexpr (std::is_same_v<P, MixPattern>) {
           return std::max(operand_bound(p.first), operand_bound(p.second));
-        else if constexpr (std::is_same_v<P, ProductPattern>)
+        } else if constexpr (std::is_same_v<P, ProductPattern>) {
           return operand_bound(p.first) * operand_bound(p.second);
-        else if constexpr (std::is_same_v<P, MarblePattern>) {
-          Reflectance bound = marble_colour(0);
-          for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
-          return kMarbleGain * largest_channel(bound);
         } else {
           double found = 0;
           for (int i = 0; i < 16; ++i)

@@ -474,42 +474,35 @@ TEST(RenderDeterminism, ThreadCountDoesNotChangeTheImage) {
   }
 }
 
+// The crop, and with a pixel filter also any thread count (each sample stays
+// in its own pixel, its offset drawn from the filter: pixel_filter.hpp).
 TEST(RenderDeterminism, CropIsTheSameWindowOfTheFullImage) {
   Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
-  RenderOptions options;
-  options.settings = scene.settings;
-  options.settings.width = options.settings.height = 40;
-  options.settings.spp = 4;
-  Image full = render(scene, options);
-  options.crop = CropWindow{13, 7, 17, 21};
-  Image crop = render(scene, options);
-  ASSERT_EQ(crop.width, 17);
-  ASSERT_EQ(crop.height, 21);
-  for (int y = 0; y < crop.height; ++y)
-    EXPECT_EQ(std::memcmp(crop.pixel(0, y), full.pixel(13, 7 + y), 3 * sizeof(float) * crop.width), 0);
-}
-
-// A pixel filter keeps each sample in its own pixel (its offset drawn from the
-// filter, pixel_filter.hpp): any thread count, and a crop, give the same bits.
-TEST(RenderDeterminism, AFilteredImageIsTheSameOnAnyThreadsAndInACrop) {
-  Scene scene = load_scene(std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box/cornell-box.json");
-  RenderOptions options;
-  options.settings = scene.settings;
-  options.settings.width = options.settings.height = 40;
-  options.settings.spp = 4;
-  options.settings.filter.type = PixelFilterType::mitchell;
-  options.settings.filter.radius_x = options.settings.filter.radius_y = 2;
-  options.threads = 1;
-  Image one = render(scene, options);
-  for (int threads : {2, 3}) {
-    options.threads = threads;
-    Image many = render(scene, options);
-    EXPECT_EQ(std::memcmp(one.rgb.data(), many.rgb.data(), one.rgb.size() * sizeof(float)), 0) << threads << " threads";
+  PixelFilter mitchell;
+  mitchell.type = PixelFilterType::mitchell;
+  mitchell.radius_x = mitchell.radius_y = 2;
+  for (const PixelFilter& filter : {PixelFilter{}, mitchell}) {
+    const char* name = kPixelFilterNames[static_cast<int>(filter.type)];
+    RenderOptions options;
+    options.settings = scene.settings;
+    options.settings.width = options.settings.height = 40;
+    options.settings.spp = 4;
+    options.settings.filter = filter;
+    options.threads = 1;
+    Image full = render(scene, options);
+    for (int threads : {2, 3}) {
+      options.threads = threads;
+      Image many = render(scene, options);
+      EXPECT_EQ(std::memcmp(full.rgb.data(), many.rgb.data(), full.rgb.size() * sizeof(float)), 0)
+          << name << ", " << threads << " threads";
+    }
+    options.crop = CropWindow{13, 7, 17, 21};
+    Image crop = render(scene, options);
+    ASSERT_EQ(crop.width, 17);
+    ASSERT_EQ(crop.height, 21);
+    for (int y = 0; y < crop.height; ++y)
+      EXPECT_EQ(std::memcmp(crop.pixel(0, y), full.pixel(13, 7 + y), 3 * sizeof(float) * crop.width), 0) << name;
   }
-  options.crop = CropWindow{13, 7, 17, 21};
-  Image crop = render(scene, options);
-  for (int y = 0; y < crop.height; ++y)
-    EXPECT_EQ(std::memcmp(crop.pixel(0, y), one.pixel(13, 7 + y), 3 * sizeof(float) * crop.width), 0);
 }
 
 TEST(RenderDeterminism, SeedChangesTheNoiseOnly) {

@@ -114,12 +114,12 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
 PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
   object(value, path, {"type", "radius", "alpha", "b", "c", "tau"});
   const std::string name = string(required(value, path, "type"), path.field("type"));
-  const auto named = std::find(std::begin(kPixelFilterNames), std::end(kPixelFilterNames), name);
-  if (named == std::end(kPixelFilterNames))
+  const std::optional<PixelFilterType> type = pixel_filter_named(name);
+  if (!type)
     fail(path.field("type"),
          "expected \"box\", \"triangle\", \"gaussian\", \"mitchell\" or \"sinc\", got " + short_dump(value["type"]));
   PixelFilter filter;
-  filter.type = static_cast<PixelFilterType>(named - std::begin(kPixelFilterNames));
+  filter.type = *type;
   if (value.contains("radius")) {
     const Json& radius = value["radius"];
     if (!radius.is_array() || radius.size() != 2)

@@ -331,10 +331,15 @@ enum class LightStrategy { power, uniform, spatial, all };
 inline constexpr int kMaxEmitterSamples = 4096;
 inline constexpr const char* kLightStrategyNames[] = {"power", "uniform", "spatial", "all"};
 inline const char* name_of(LightStrategy strategy) { return kLightStrategyNames[static_cast<int>(strategy)]; }
-inline std::optional<LightStrategy> light_strategy_named(std::string_view name) {
-  for (int i = 0; i < 4; ++i)
-    if (name == kLightStrategyNames[i]) return static_cast<LightStrategy>(i);
+// The enumerator whose name (in `names`, in the enumeration's order) is `name`.
+template <class Enum, size_t N>
+std::optional<Enum> enum_named(const char* const (&names)[N], std::string_view name) {
+  for (size_t i = 0; i < N; ++i)
+    if (name == names[i]) return static_cast<Enum>(i);
   return std::nullopt;
+}
+inline std::optional<LightStrategy> light_strategy_named(std::string_view name) {
+  return enum_named<LightStrategy>(kLightStrategyNames, name);
 }
 
 // The widest and tallest image a scene file or a command line may ask for.
@@ -353,6 +358,9 @@ struct PixelFilter {
   double mitchell_b = 1.0 / 3, mitchell_c = 1.0 / 3;
   double sinc_tau = 3;                           // sinc(x) · sinc(x / τ) (Lanczos)
 };
+inline std::optional<PixelFilterType> pixel_filter_named(std::string_view name) {
+  return enum_named<PixelFilterType>(kPixelFilterNames, name);
+}
 inline constexpr double kMaxFilterRadius = 64;  // pixels
 // pbrt-v3's default radius of each filter, in pixels.
 inline double default_filter_radius(PixelFilterType type) {
