@@ -26,6 +26,9 @@ constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // WideBvhNode::primitive_coun
 // is kept as two vectors (x, y, z and a lane nobody reads) that one SSE min
 // and max extend.
 using Lanes4 = Real __attribute__((vector_size(4 * sizeof(Real))));
+// In the double build Lanes4 is 32 bytes, which GCC warns would pass
+// differently with AVX; these helpers are inlined within this file.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 Lanes4 load_lanes(const Real3& v) {  // reads the Real after v too: the caller's struct has one
   Lanes4 lanes;
@@ -79,8 +82,11 @@ int bin_of(Real centroid, Real lower, Real scale) {
 class Bvh::Builder {
  public:
   Builder(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, std::vector<uint32_t>& order,
-          int max_leaf_size)
-      : bounds_of_(bounds_of), order_(order), max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))) {
+          int max_leaf_size, int batch_width)
+      : bounds_of_(bounds_of),
+        order_(order),
+        max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))),
+        batch_width_(static_cast<uint32_t>(std::max(1, batch_width))) {
     records_.resize(count);
   }
 
@@ -220,12 +226,16 @@ class Bvh::Builder {
         left.extend(bins[b].bounds());
         left_total += bins[b].count;
         if (left_total == 0 || right_count[b + 1] == 0) continue;
-        Real cost = left.surface_area() * left_total + right_bounds[b + 1].surface_area() * right_count[b + 1];
+        Real cost = left.surface_area() * batches(left_total) +
+                    right_bounds[b + 1].surface_area() * batches(right_count[b + 1]);
         if (cost < best.cost) best = Split{axis, b, cost, left, right_bounds[b + 1]};
       }
     }
     return best;
   }
+
+  // The leaf tests `count` primitives take.
+  Real batches(uint32_t count) const { return static_cast<Real>((count + batch_width_ - 1) / batch_width_); }
 
   Side side_of(uint32_t begin, uint32_t end) const {
     Side side;
@@ -246,7 +256,7 @@ class Bvh::Builder {
     int axis = range.side.centroid_bounds.widest_axis();
     if (range.depth < kMaxSahDepth) {
       Split split = find_split(begin, end, range.side, threads);
-      Real leaf_cost = static_cast<Real>(count);
+      Real leaf_cost = batches(count);
       Real split_cost = split.axis < 0 ? leaf_cost : kTraversalCost + split.cost / range.side.bounds.surface_area();
       if (split.axis >= 0 && (split_cost < leaf_cost || count > kMaxLeafPrimitives)) {
         axis = split.axis;
@@ -387,6 +397,7 @@ class Bvh::Builder {
   const std::function<Bounds3(uint32_t)>& bounds_of_;
   std::vector<uint32_t>& order_;
   const uint32_t max_leaf_size_;
+  const uint32_t batch_width_;
   // The primitives as the build moves them: their partitions are contiguous,
   // so every pass over a node's primitives reads memory in order.
   std::vector<Record> records_;
@@ -408,10 +419,11 @@ class Bvh::Builder {
 Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads)
     : Bvh(static_cast<uint32_t>(bounds.size()), [&](uint32_t i) { return bounds[i]; }, max_leaf_size, threads) {}
 
-Bvh::Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads) {
+Bvh::Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
+         int batch_width) {
   if (count == 0) return;
   primitive_order_.resize(count);
-  Builder builder(count, bounds_of, primitive_order_, max_leaf_size);
+  Builder builder(count, bounds_of, primitive_order_, max_leaf_size, batch_width);
   bounds_ = builder.build(std::max(1, threads), nodes_);
 }
 

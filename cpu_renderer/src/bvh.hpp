@@ -7,6 +7,7 @@
 // as a callable, so triangles, spheres and instances share one traversal.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -14,6 +15,10 @@
 #include <thread>
 #include <utility>
 #include <vector>
+
+#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
+#include <xmmintrin.h>
+#endif
 
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
@@ -80,7 +85,10 @@ class Bvh {
   explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
   // The same over `count` primitives whose bounds `bounds_of(i)` gives (called
   // once each, from the build's threads), so that no array of them is kept.
-  Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads);
+  // `batch_width`: how many primitives the caller's leaf test takes at once;
+  // the SAH then prices a leaf by whole batches (4 triangles cost one test).
+  Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
+      int batch_width = 1);
 
   // The leaves' primitives: leaf entry k is primitive order[k]. The traversal
   // names entries, not primitives, so that a caller who stores its primitives
@@ -105,11 +113,24 @@ class Bvh {
   // least two leaves of its own or four children.
   static const uint64_t kPeakBytesPerPrimitive;
 
-  // Calls `test(entry, t_max)` for every leaf entry (see take_primitive_order)
-  // whose leaf the ray reaches before `t_max`; `test` returns true on a hit and lowers t_max.
-  // With `any_hit`, returns at the first hit (shadow rays).
-  template <bool any_hit, class PrimitiveTest>
-  bool traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const;
+  // Calls `test_leaf(first, count, t_max)` for every leaf the ray reaches
+  // before `t_max` (`first` its first leaf entry, see take_primitive_order, or
+  // what renumber_leaves made of it); `test_leaf` returns true on a hit and
+  // lowers t_max. With `any_hit`, returns at the first hit (shadow rays).
+  // `prefetch_leaf(first, count)` is called for each leaf the ray enters as
+  // soon as its node is tested, so that the leaf's primitives are on their way
+  // from memory while nearer children are visited.
+  template <bool any_hit, class LeafTest, class LeafPrefetch>
+  bool traverse(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf, LeafPrefetch&& prefetch_leaf) const;
+
+  // Replaces each leaf's first entry by `renumbered(first, count)`: a caller
+  // that stores a leaf's primitives in blocks of its own names the block.
+  template <class Renumber>
+  void renumber_leaves(Renumber&& renumbered) {
+    for (WideBvhNode& node : nodes_)
+      for (int i = 0; i < WideBvhNode::kWidth; ++i)
+        if (node.primitive_count[i] > 0) node.child[i] = renumbered(node.child[i], node.primitive_count[i]);
+  }
 
  private:
   struct Record {  // a primitive in the build
@@ -169,17 +190,20 @@ inline unsigned intersect_children(const WideBvhNode& node, const TraversalRay& 
     t_near = t0 > t_near ? t0 : t_near;
     t_far = t1 < t_far ? t1 : t_far;
   }
-  auto entered = t_near <= t_far;
+  const auto entered = t_near <= t_far;
+  std::memcpy(t_near_out, &t_near, sizeof t_near);
+#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
+  // One instruction instead of a loop of lane extractions.
+  return static_cast<unsigned>(_mm_movemask_ps(std::bit_cast<__m128>(entered)));
+#else
   unsigned hits = 0;
-  for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-    t_near_out[i] = t_near[i];
-    hits |= static_cast<unsigned>(entered[i] != 0) << i;
-  }
+  for (int i = 0; i < WideBvhNode::kWidth; ++i) hits |= static_cast<unsigned>(entered[i] != 0) << i;
   return hits;
+#endif
 }
 
-template <bool any_hit, class PrimitiveTest>
-bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) const {
+template <bool any_hit, class LeafTest, class LeafPrefetch>
+bool Bvh::traverse(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf, LeafPrefetch&& prefetch_leaf) const {
   if (nodes_.empty()) return false;
   struct Entry {
     Real t_near;
@@ -196,33 +220,37 @@ bool Bvh::traverse(const TraversalRay& ray, Real& t_max, PrimitiveTest&& test) c
   bool hit = false;
   for (;;) {
     if (current.primitive_count > 0) {
-      for (uint32_t i = 0; i < current.primitive_count; ++i) {
-        if (test(current.child + i, t_max)) {
-          hit = true;
-          if constexpr (any_hit) return true;
-        }
+      if (test_leaf(current.child, current.primitive_count, t_max)) {
+        hit = true;
+        if constexpr (any_hit) return true;
       }
     } else {
       const WideBvhNode& node = nodes_[current.child];
       Real t_near[WideBvhNode::kWidth];
       unsigned hits = intersect_children(node, ray, t_max, t_near) & node.occupied;
       if (hits != 0) {
-        // The children hit, farthest first; the nearest is visited next, the others pushed.
-        Entry found[WideBvhNode::kWidth];
-        int found_count = 0;
-        for (int i = 0; i < WideBvhNode::kWidth; ++i) {
-          if (!(hits >> i & 1)) continue;
+        auto entry = [&](int i) {
           Entry e{t_near[i], node.child[i], node.primitive_count[i]};
           if (e.primitive_count == 0) {  // fetch both of its cache lines while the others are visited
             __builtin_prefetch(&nodes_[e.child]);
             __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[e.child]) + 64);
+          } else {
+            prefetch_leaf(e.child, e.primitive_count);
           }
-          int j = found_count++;
-          for (; j > 0 && found[j - 1].t_near < e.t_near; --j) found[j] = found[j - 1];
-          found[j] = e;
+          return e;
+        };
+        // The nearest child hit is visited next; the others are pushed, the
+        // farthest lowest, so that they come off the stack nearest first.
+        Entry nearest = entry(std::countr_zero(hits));
+        const int first_pushed = stack_size;
+        for (hits &= hits - 1; hits != 0; hits &= hits - 1) {
+          Entry e = entry(std::countr_zero(hits));
+          if (e.t_near < nearest.t_near) std::swap(e, nearest);
+          int j = stack_size++;
+          for (; j > first_pushed && stack[j - 1].t_near < e.t_near; --j) stack[j] = stack[j - 1];
+          stack[j] = e;
         }
-        for (int i = 0; i + 1 < found_count; ++i) stack[stack_size++] = found[i];
-        current = found[found_count - 1];
+        current = nearest;
         continue;
       }
     }

@@ -2,8 +2,9 @@
 
 #include "surface_texture.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
-#include <type_traits>
 
 namespace safegi::render {
 
@@ -40,14 +41,8 @@ Bounds3 transform_bounds(const Affine& m, const Bounds3& b) {
   return result;
 }
 
-// The triangle test's arithmetic (see PrimitiveSet::trace).
-struct Double3 {
-  double x, y, z;
-  friend Double3 operator-(Double3 a, Double3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-};
-Double3 to_double(Real3 v) { return {v.x, v.y, v.z}; }
-double dot(Double3 a, Double3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+using kernel::triangle_block_detail::Double3;
+using kernel::triangle_block_detail::to_double;
 
 }  // namespace
 
@@ -55,143 +50,177 @@ Double3 cross(Double3 a, Double3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 // PrimitiveSet
 
 void PrimitiveSet::build(int threads) {
-  build_hierarchy(threads);
-  move_into_traversal_order(threads);
+  build_triangles(threads);
+  build_spheres(threads);
 }
 
-void PrimitiveSet::build_hierarchy(int threads) {
-  const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
-  auto bounds_of = [&](uint32_t i) {
-    Bounds3 b;
-    if (i < triangle_count) {
-      const Triangle& t = triangles_[i];
-      b.extend(t.p0);
-      b.extend(t.p0 + t.e1);
-      b.extend(t.p0 + t.e2);
-    } else {
-      const Sphere& s = spheres_[i - triangle_count];
-      b.extend(s.center - Real3{s.radius, s.radius, s.radius});
-      b.extend(s.center + Real3{s.radius, s.radius, s.radius});
-    }
-    return b;
+// Builds the triangles' hierarchy and packs each leaf's triangles into blocks
+// of four from a block boundary on, so that one vector test takes a leaf's
+// triangles and the leaf's memory is whole cache lines of its own.
+void PrimitiveSet::build_triangles(int threads) {
+  const uint32_t count = static_cast<uint32_t>(triangles_.size());
+  if (count == 0) return;
+  constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
+  triangle_bvh_ = kernel::Bvh(
+      count,
+      [&](uint32_t i) {
+        const Triangle& t = triangles_[i];
+        Bounds3 b;
+        b.extend(t.p0);
+        b.extend(t.p0 + t.e1);
+        b.extend(t.p0 + t.e2);
+        return b;
+      },
+      kernel::Bvh::kDefaultMaxLeafSize, threads, kWidth);
+  const std::vector<uint32_t> order = triangle_bvh_.take_primitive_order();
+  struct Leaf {
+    uint32_t first_entry, count, first_block;
   };
-  bvh_ = kernel::Bvh(triangle_count + static_cast<uint32_t>(spheres_.size()), bounds_of,
-                     kernel::Bvh::kDefaultMaxLeafSize, threads);
+  std::vector<Leaf> leaves;
+  for (const kernel::WideBvhNode& node : triangle_bvh_.nodes())
+    for (int i = 0; i < kernel::WideBvhNode::kWidth; ++i)
+      if (node.primitive_count[i] > 0) leaves.push_back({node.child[i], node.primitive_count[i], 0});
+  std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.first_entry < b.first_entry; });
+  // A leaf's first block, looked up by its first entry below.
+  std::vector<uint32_t> block_of_entry(count);
+  uint32_t blocks = 0;
+  for (Leaf& leaf : leaves) {
+    leaf.first_block = block_of_entry[leaf.first_entry] = blocks;
+    blocks += (leaf.count + kWidth - 1) / kWidth;
+  }
+  triangle_blocks_.resize(blocks);
+  const uint32_t leaf_count = static_cast<uint32_t>(leaves.size());
+  kernel::for_each_chunk(leaf_count, leaf_count >= kernel::kParallelMinimum ? threads : 1,
+                         [&](int, uint32_t begin, uint32_t end) {
+                           for (uint32_t l = begin; l < end; ++l)
+                             for (uint32_t k = 0; k < leaves[l].count; ++k) {
+                               const Triangle& t = triangles_[order[leaves[l].first_entry + k]];
+                               triangle_blocks_[leaves[l].first_block + k / kWidth].set(
+                                   static_cast<int>(k % kWidth), t.p0, t.e1, t.e2, t.shape, t.face);
+                             }
+                         });
+  triangle_bvh_.renumber_leaves([&](uint32_t first_entry, uint32_t) { return block_of_entry[first_entry]; });
+  std::vector<Triangle>().swap(triangles_);
 }
 
-// Stores the primitives in the order the BVH's leaves name them, so that a
-// leaf's triangles are adjacent in memory. A set of one kind then needs no map
-// from leaf entries to primitives; a mixed one keeps it (triangles first).
-void PrimitiveSet::move_into_traversal_order(int threads) {
-  const std::vector<uint32_t> order = bvh_.take_primitive_order();
-  const uint32_t count = static_cast<uint32_t>(order.size());
-  if (triangles_.empty() || spheres_.empty()) {
-    const int chunks = count >= kernel::kParallelMinimum ? threads : 1;
-    auto gather = [&](auto& items) {
-      std::remove_reference_t<decltype(items)> moved(items.size());
-      kernel::for_each_chunk(count, chunks, [&](int, uint32_t begin, uint32_t end) {
-        for (uint32_t k = begin; k < end; ++k) moved[k] = items[order[k]];
-      });
-      items = std::move(moved);
-    };
-    if (spheres_.empty()) {
-      gather(triangles_);
-      if (record_faces_) gather(faces_);
-    } else {
-      gather(spheres_);
-    }
-    return;
-  }
-  const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
-  std::vector<Triangle> triangles;
-  std::vector<Sphere> spheres;
-  std::vector<uint32_t> faces;
-  triangles.reserve(triangles_.size());
-  spheres.reserve(spheres_.size());
-  faces.reserve(faces_.size());
-  entry_primitive_.resize(count);
-  for (uint32_t k = 0; k < count; ++k) {
-    const uint32_t primitive = order[k];
-    if (primitive < triangle_count) {
-      entry_primitive_[k] = static_cast<uint32_t>(triangles.size());
-      triangles.push_back(triangles_[primitive]);
-      if (record_faces_) faces.push_back(faces_[primitive]);
-    } else {
-      entry_primitive_[k] = triangle_count + static_cast<uint32_t>(spheres.size());
-      spheres.push_back(spheres_[primitive - triangle_count]);
-    }
-  }
-  triangles_ = std::move(triangles);
-  spheres_ = std::move(spheres);
-  faces_ = std::move(faces);
+void PrimitiveSet::build_spheres(int threads) {
+  const uint32_t count = static_cast<uint32_t>(spheres_.size());
+  if (count == 0) return;
+  sphere_bvh_ = kernel::Bvh(
+      count,
+      [&](uint32_t i) {
+        const Sphere& s = spheres_[i];
+        const Real3 radius{s.radius, s.radius, s.radius};
+        Bounds3 b;
+        b.extend(s.center - radius);
+        b.extend(s.center + radius);
+        return b;
+      },
+      kernel::Bvh::kDefaultMaxLeafSize, threads);
+  const std::vector<uint32_t> order = sphere_bvh_.take_primitive_order();
+  std::vector<Sphere> ordered(count);
+  for (uint32_t k = 0; k < count; ++k) ordered[k] = spheres_[order[k]];
+  spheres_ = std::move(ordered);
+}
+
+Bounds3 PrimitiveSet::bounds() const {
+  Bounds3 b = triangle_bvh_.bounds();
+  if (!sphere_bvh_.empty()) b.extend(sphere_bvh_.bounds());
+  return b;
 }
 
 size_t PrimitiveSet::memory_bytes() const {
-  return triangles_.capacity() * sizeof(Triangle) + spheres_.capacity() * sizeof(Sphere) +
-         (faces_.capacity() + entry_primitive_.capacity()) * sizeof(uint32_t) + bvh_.memory_bytes();
+  return triangle_blocks_.capacity() * sizeof(kernel::TriangleBlock) + spheres_.capacity() * sizeof(Sphere) +
+         triangle_bvh_.memory_bytes() + sphere_bvh_.memory_bytes();
+}
+
+struct PrimitiveSet::Found {
+  bool sphere = false;
+  uint32_t index = 0;  // triangle: block · 4 + lane; sphere: into spheres_
+  Real b1 = 0, b2 = 0;
+};
+
+template <bool any_hit>
+bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
+                                   Found& found) const {
+  constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
+  const kernel::BlockRay block_ray(ray.origin, ray.direction);
+  auto test_leaf = [&](uint32_t first_block, uint32_t count, Real& t_limit) {
+    bool hit = false;
+    for (uint32_t block = first_block; count > 0; ++block) {
+      const int lanes = static_cast<int>(std::min(count, kWidth));
+      count -= static_cast<uint32_t>(lanes);
+      const kernel::TriangleBlock& triangles = triangle_blocks_[block];
+      for (unsigned candidates = kernel::candidate_lanes(triangles, block_ray, t_limit, lanes); candidates != 0;
+           candidates &= candidates - 1) {
+        const int lane = std::countr_zero(candidates);
+        Real b1, b2;
+        if (!kernel::intersect_lane(triangles, lane, block_ray, t_limit, b1, b2)) continue;
+        found = {false, block * kWidth + static_cast<uint32_t>(lane), b1, b2};
+        hit = true;
+        if constexpr (any_hit) return true;
+      }
+    }
+    return hit;
+  };
+  auto prefetch_leaf = [&](uint32_t first_block, uint32_t count) {
+    const char* block = reinterpret_cast<const char*>(&triangle_blocks_[first_block]);
+    const uint32_t lines = std::min<uint32_t>(2, (count + kWidth - 1) / kWidth) * sizeof(kernel::TriangleBlock) / 64;
+    for (uint32_t line = 0; line < lines; ++line) __builtin_prefetch(block + 64 * line);
+  };
+  return triangle_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, prefetch_leaf);
 }
 
 template <bool any_hit>
-bool PrimitiveSet::trace(const Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const {
-  kernel::TraversalRay traversal(ray.origin, ray.direction);
-  const uint32_t triangle_count = static_cast<uint32_t>(triangles_.size());
-  return bvh_.traverse<any_hit>(traversal, t_max, [&](uint32_t entry, Real& t_limit) {
-    const uint32_t index = entry_primitive_.empty() ? entry : entry_primitive_[entry];
-    if (index < triangle_count) {
-      // Möller–Trumbore in double: in float its u, v and t carry an absolute
-      // error that grows with |origin - p0| and the edge lengths, which opens
-      // metre-wide cracks along the shared edges of 1e7 m triangles. The data
-      // stays float; the double arithmetic costs ~5% of rays/s (docs/stability.md).
-      const Triangle& tri = triangles_[index];
-      const Double3 d = to_double(ray.direction), e1 = to_double(tri.e1), e2 = to_double(tri.e2);
-      Double3 p = cross(d, e2);
-      double det = dot(e1, p);
-      if (det == 0.0) return false;
-      double inverse_det = 1.0 / det;
-      Double3 s = to_double(ray.origin) - to_double(tri.p0);
-      double u = dot(s, p) * inverse_det;
-      if (u < 0.0 || u > 1.0) return false;
-      Double3 q = cross(s, e1);
-      double v = dot(d, q) * inverse_det;
-      if (v < 0.0 || u + v > 1.0) return false;
-      Real t = static_cast<Real>(dot(e2, q) * inverse_det);
-      if (!(t > 0.0f && t < t_limit)) return false;
+bool PrimitiveSet::trace_spheres(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
+                                 Found& found) const {
+  auto test_leaf = [&](uint32_t first, uint32_t count, Real& t_limit) {
+    bool hit = false;
+    for (uint32_t index = first; index < first + count; ++index) {
+      // The discriminant from the perpendicular offset, for precision far from
+      // the sphere (Ray Tracing Gems, ch. 7).
+      const Sphere& sphere = spheres_[index];
+      Real3 oc = ray.origin - sphere.center;
+      Real b = dot(oc, ray.direction);
+      Real3 perpendicular = oc - ray.direction * b;
+      Real r2 = sphere.radius * sphere.radius;
+      Real discriminant = r2 - dot(perpendicular, perpendicular);
+      if (discriminant < 0.0f) continue;
+      Real c = dot(oc, oc) - r2;
+      Real q = -b - std::copysign(std::sqrt(discriminant), b);
+      Real t_near = c / q, t_far = q;
+      if (t_near > t_far) std::swap(t_near, t_far);
+      // Outside (c > 0) only the near root is a first hit; inside only the far one.
+      Real t = c > 0.0f ? t_near : t_far;
+      if (!(t > 0.0f && t < t_limit)) continue;
       t_limit = t;
-      primitive = index;
-      b1 = static_cast<Real>(u);
-      b2 = static_cast<Real>(v);
-      return true;
+      found = {true, index, 0, 0};
+      hit = true;
+      if constexpr (any_hit) return true;
     }
-    // Sphere, with the discriminant computed from the perpendicular offset for
-    // precision far from the sphere (Ray Tracing Gems, ch. 7).
-    const Sphere& sphere = spheres_[index - triangle_count];
-    Real3 oc = ray.origin - sphere.center;
-    Real b = dot(oc, ray.direction);
-    Real3 perpendicular = oc - ray.direction * b;
-    Real r2 = sphere.radius * sphere.radius;
-    Real discriminant = r2 - dot(perpendicular, perpendicular);
-    if (discriminant < 0.0f) return false;
-    Real c = dot(oc, oc) - r2;
-    Real q = -b - std::copysign(std::sqrt(discriminant), b);
-    Real t_near = c / q, t_far = q;
-    if (t_near > t_far) std::swap(t_near, t_far);
-    // Outside (c > 0) only the near root is a first hit; inside only the far one.
-    Real t = c > 0.0f ? t_near : t_far;
-    if (!(t > 0.0f && t < t_limit)) return false;
-    t_limit = t;
-    primitive = index;
-    return true;
-  });
+    return hit;
+  };
+  return sphere_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, [](uint32_t, uint32_t) {});
+}
+
+template <bool any_hit>
+bool PrimitiveSet::trace(const Ray& ray, Real& t_max, Found& found) const {
+  const kernel::TraversalRay traversal(ray.origin, ray.direction);
+  const bool triangle_hit = trace_triangles<any_hit>(ray, traversal, t_max, found);
+  if (any_hit && triangle_hit) return true;
+  return trace_spheres<any_hit>(ray, traversal, t_max, found) || triangle_hit;
 }
 
 std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) const {
-  uint32_t primitive = 0;
-  Real b1 = 0, b2 = 0;
-  if (!trace<false>(ray, t_max, primitive, b1, b2)) return std::nullopt;
+  Found found;
+  if (!trace<false>(ray, t_max, found)) return std::nullopt;
   kernel::Hit hit;
   hit.distance = t_max;
-  if (primitive < triangles_.size()) {
-    const Triangle& tri = triangles_[primitive];
+  if (!found.sphere) {
+    constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
+    const kernel::TriangleBlock& block = triangle_blocks_[found.index / kWidth];
+    const int lane = static_cast<int>(found.index % kWidth);
+    const Triangle tri{block.vertex(lane), block.edge1(lane), block.edge2(lane), block.shape[lane], block.face[lane]};
     // Möller–Trumbore's barycentrics (and t) carry an absolute error that grows
     // with |origin - p0| and the edge lengths: on a 2e7 m floor the hit lands
     // ~1 m off and its error box spans metres. The hit is recomputed on the
@@ -215,15 +244,15 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) c
           static_cast<Real>(kDoubleError * (std::fabs(o.z) + std::fabs(p0.z) + std::fabs(t * d.z)))};
       hit.position_error = abs(hit.position) * gamma(2) + computation_error;
     } else {  // Möller–Trumbore accepted a hit the plane test cannot place: keep its own point
-      Real3 along_u = tri.e1 * b1, along_v = tri.e2 * b2;
+      Real3 along_u = tri.e1 * found.b1, along_v = tri.e2 * found.b2;
       hit.position = tri.p0 + along_u + along_v;
       hit.position_error = (abs(tri.p0) + abs(along_u) + abs(along_v)) * gamma(7);
     }
     hit.normal = kernel::normalize(cross(tri.e1, tri.e2));
     hit.shape = tri.shape;
-    if (record_faces_) hit.face = faces_[primitive];
+    hit.face = tri.face;
   } else {
-    const Sphere& sphere = spheres_[primitive - triangles_.size()];
+    const Sphere& sphere = spheres_[found.index];
     Real3 relative = ray.origin + ray.direction * t_max - sphere.center;
     relative = relative * (sphere.radius / kernel::length(relative));  // reproject onto the surface
     hit.position = sphere.center + relative;
@@ -235,9 +264,8 @@ std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) c
 }
 
 bool PrimitiveSet::occluded(const Ray& ray, Real t_max) const {
-  uint32_t primitive = 0;
-  Real b1 = 0, b2 = 0;
-  return trace<true>(ray, t_max, primitive, b1, b2);
+  Found found;
+  return trace<true>(ray, t_max, found);
 }
 
 // ---------------------------------------------------------------------------
@@ -264,13 +292,10 @@ void add_shape(PrimitiveSet& set, const Shape& shape, uint32_t index, const Rend
 
 Geometry::Geometry(const Scene& scene, int threads) {
   Real time_open = sg::raw(scene.camera.shutter_open), time_close = sg::raw(scene.camera.shutter_close);
-  const bool textured = scene.textured();
-  if (textured) static_primitives_.record_faces();
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& shape = scene.shapes[i];
     if (std::optional<RigidMotion> motion = motion_of(shape, scene.camera)) {
       Instance instance{PrimitiveSet{}, *motion, Bounds3{}};
-      if (textured) instance.primitives.record_faces();
       add_shape(instance.primitives, shape, i, nullptr);
       instance.primitives.build(threads);
       constexpr int kPoseSamples = 64;  // bounds of the poses along the motion, padded below

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bvh.hpp"
+#include "triangle_block.hpp"
 #include "safegi/cpu_renderer/rigid_motion.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 
@@ -52,12 +53,14 @@ struct Hit {
 
 }  // namespace kernel
 
-// Primitives of one space: triangles first, then spheres, under one BVH.
+// Primitives of one space, triangles and spheres each under a BVH of their
+// own; a leaf's triangles are tested four at a time (triangle_block.hpp).
 class PrimitiveSet {
  public:
-  struct Triangle {
+  struct Triangle {  // as added, until build() packs it into its leaf's block
     Real3 p0, e1, e2;
     uint32_t shape;
+    uint32_t face;  // its index within its shape: hits carry it for texture lookups
   };
   struct Sphere {
     Real3 center;
@@ -65,36 +68,39 @@ class PrimitiveSet {
     uint32_t shape;
   };
 
-  // Hits then carry their triangle (for texture lookups).
-  void record_faces() { record_faces_ = true; }
   void add_triangle(Real3 a, Real3 b, Real3 c, uint32_t shape, uint32_t face) {
-    triangles_.push_back({a, b - a, c - a, shape});
-    if (record_faces_) faces_.push_back(face);
+    triangles_.push_back({a, b - a, c - a, shape, face});
   }
   void add_sphere(Real3 center, Real radius, uint32_t shape) { spheres_.push_back({center, radius, shape}); }
-  // Builds the hierarchy on up to `threads` threads (the result does not depend on the count).
+  // Builds the hierarchies on up to `threads` threads (the result does not depend on the count).
   void build(int threads = 1);
 
-  bool empty() const { return triangles_.empty() && spheres_.empty(); }
-  kernel::Bounds3 bounds() const { return bvh_.bounds(); }
-  // Bytes held for tracing: primitives, hierarchy, face indices.
+  bool empty() const { return triangle_blocks_.empty() && spheres_.empty(); }
+  kernel::Bounds3 bounds() const;
+  // Bytes held for tracing: triangle blocks, spheres, hierarchies.
   size_t memory_bytes() const;
 
   std::optional<kernel::Hit> intersect(const kernel::Ray& ray, Real t_max) const;
   bool occluded(const kernel::Ray& ray, Real t_max) const;
 
  private:
-  void build_hierarchy(int threads);
-  void move_into_traversal_order(int threads);
+  struct Found;  // the primitive a trace hit
+  void build_triangles(int threads);
+  void build_spheres(int threads);
   template <bool any_hit>
-  bool trace(const kernel::Ray& ray, Real& t_max, uint32_t& primitive, Real& b1, Real& b2) const;
+  bool trace(const kernel::Ray& ray, Real& t_max, Found& found) const;
+  template <bool any_hit>
+  bool trace_triangles(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
+                       Found& found) const;
+  template <bool any_hit>
+  bool trace_spheres(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
+                     Found& found) const;
 
-  std::vector<Triangle> triangles_;
-  std::vector<uint32_t> faces_;  // each triangle's index within its shape (read only at hits), if recorded
-  bool record_faces_ = false;
-  std::vector<Sphere> spheres_;
-  std::vector<uint32_t> entry_primitive_;  // BVH leaf entry -> primitive, in sets of triangles and spheres
-  kernel::Bvh bvh_;
+  std::vector<Triangle> triangles_;  // emptied by build()
+  // Each triangle leaf's triangles, from a block boundary on (the leaf names its first block).
+  std::vector<kernel::TriangleBlock> triangle_blocks_;
+  std::vector<Sphere> spheres_;  // in the order of the sphere hierarchy's leaf entries
+  kernel::Bvh triangle_bvh_, sphere_bvh_;
 };
 
 class SurfaceTextures;
