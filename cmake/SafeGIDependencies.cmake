@@ -28,6 +28,8 @@ if(SAFEGI_BUILD_RENDERER OR SAFEGI_BUILD_GL)
       set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${_property} "${_oiio_includes}")
     endif()
   endforeach()
+  find_package(OpenEXR CONFIG REQUIRED)    # the renderer writes EXR and PNG itself (image_io.cpp)
+  find_package(PNG REQUIRED)
   find_package(tinyobjloader CONFIG QUIET)
   # Distributed rendering (mpirun -np N safegi-render): Debian's Open MPI, C API.
   if(SAFEGI_WITH_MPI STREQUAL "ON")

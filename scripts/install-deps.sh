@@ -15,6 +15,7 @@ packages=(
   python3-glad                       # generates the GL loader at build time
   libglm-dev
   libopenimageio-dev openimageio-tools # the tools: OpenImageIO's CMake config imports /usr/bin/iconvert etc.
+  libopenexr-dev libpng-dev          # the renderer writes EXR and PNG without OpenImageIO's start-up cost
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind                           # instruction counts for the benchmarks
