@@ -49,13 +49,45 @@ inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
   return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
-// The first two Sobol dimensions: van der Corput, and the (x + 1) polynomial.
+// The first two Sobol dimensions, each with its bits reversed (the nested
+// scramble works on reversed bits, so the points are made that way): van der
+// Corput reversed is the index itself; the second, from the (x + 1)
+// polynomial, is linear over GF(2) in the index's bits, so it is four lookups,
+// one a byte of the index, in tables of what each byte's bits contribute.
+inline uint32_t reversed_sobol_dimension_0(uint32_t index) { return index; }
+
+struct ReversedSobolTables {
+  uint32_t by_byte[4][256];
+};
+inline constexpr ReversedSobolTables kReversedSobolDimension1 = [] {
+  ReversedSobolTables tables{};
+  uint32_t basis[32];
+  // Bit i of the index contributes direction number v_i, v_0 = 2^31 and
+  // v_(i+1) = v_i ^ (v_i >> 1); reversed, r_0 = 1 and r_(i+1) = r_i ^ (r_i << 1).
+  for (uint32_t i = 0, r = 1; i < 32; ++i, r ^= r << 1) basis[i] = r;
+  for (int byte = 0; byte < 4; ++byte)
+    for (uint32_t value = 0; value < 256; ++value)
+      for (int bit = 0; bit < 8; ++bit)
+        if (value >> bit & 1) tables.by_byte[byte][value] ^= basis[8 * byte + bit];
+  return tables;
+}();
+inline uint32_t reversed_sobol_dimension_1(uint32_t index) {
+  const auto& t = kReversedSobolDimension1.by_byte;
+  return t[0][index & 0xff] ^ t[1][index >> 8 & 0xff] ^ t[2][index >> 16 & 0xff] ^ t[3][index >> 24];
+}
+
+// The same points in plain bit order (sampler_test.cpp checks the sampler against them).
 inline uint32_t sobol_dimension_0(uint32_t index) { return reverse_bits(index); }
 inline uint32_t sobol_dimension_1(uint32_t index) {
   uint32_t result = 0;
   for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
     if (index & 1) result ^= v;
   return result;
+}
+
+// nested_uniform_scramble(x, seed) for an x given with its bits reversed.
+inline uint32_t scramble_reversed(uint32_t reversed, uint32_t seed) {
+  return reverse_bits(laine_karras_permutation(reversed, seed));
 }
 
 inline float to_unit_float(uint32_t x) { return static_cast<float>(x >> 8) * 0x1p-24f; }
@@ -66,28 +98,30 @@ class Sampler {
  public:
   Sampler(uint32_t seed, uint32_t pixel_x, uint32_t pixel_y, uint32_t sample_index)
       : pixel_seed_(sampling_detail::hash_combine(sampling_detail::hash_combine(seed, pixel_x), pixel_y)),
-        sample_index_(sample_index) {}
+        reversed_sample_index_(sampling_detail::reverse_bits(sample_index)) {}
 
   // Each call consumes one dimension pair; both coordinates lie in [0, 1).
+  // Owen-scrambled Sobol: nested_uniform_scramble of each dimension of the
+  // point at the scrambled index, with the reversals that cancel left out.
   Sample2 next_2d() {
     using namespace sampling_detail;
     uint32_t dimension_seed = hash_combine(pixel_seed_, dimension_++);
-    uint32_t index = nested_uniform_scramble(sample_index_, dimension_seed);
-    uint32_t x = nested_uniform_scramble(sobol_dimension_0(index), hash_combine(dimension_seed, 1));
-    uint32_t y = nested_uniform_scramble(sobol_dimension_1(index), hash_combine(dimension_seed, 2));
+    uint32_t index = scramble_reversed(reversed_sample_index_, dimension_seed);
+    uint32_t x = scramble_reversed(reversed_sobol_dimension_0(index), hash_combine(dimension_seed, 1));
+    uint32_t y = scramble_reversed(reversed_sobol_dimension_1(index), hash_combine(dimension_seed, 2));
     return {to_unit_float(x), to_unit_float(y)};
   }
 
   float next_1d() {
     using namespace sampling_detail;
     uint32_t dimension_seed = hash_combine(pixel_seed_, dimension_++);
-    uint32_t index = nested_uniform_scramble(sample_index_, dimension_seed);
-    return to_unit_float(nested_uniform_scramble(sobol_dimension_0(index), hash_combine(dimension_seed, 1)));
+    uint32_t index = scramble_reversed(reversed_sample_index_, dimension_seed);
+    return to_unit_float(scramble_reversed(reversed_sobol_dimension_0(index), hash_combine(dimension_seed, 1)));
   }
 
  private:
   uint32_t pixel_seed_;
-  uint32_t sample_index_;
+  uint32_t reversed_sample_index_;
   uint32_t dimension_ = 0;
 };
 
