@@ -154,7 +154,7 @@ BVH as the renderer does (`PrimitiveSet`, {THREADS} threads) and {'Embree 3 (`rt
 over the same triangles, then traces on one thread, through both, the same {RESOLUTION}² camera rays, one
 cosine-distributed bounce from each camera hit (extension) and one ray from each hit to a point on a quad
 light (shadow; any hit). Rays per CPU-second is that thread's CPU time. Bytes per triangle: what each
-structure holds for tracing (ours: triangles, nodes, face indices; Embree: its memory monitor's peak).
+structure holds for tracing (ours: triangle blocks with their shape and face indices, nodes; Embree: its memory monitor's peak).
 "Disagree" counts rays where the two report a hit against a miss or distances apart by more than 1e-4
 (relative): grazing hits on shared edges.
 
@@ -172,8 +172,9 @@ structure holds for tracing (ours: triangles, nodes, face indices; Embree: its m
         memory = [r["ours_bytes_per_triangle"] / r["embree_bytes_per_triangle"] for r in traced]
         text += (f"\n* Around {million_rows[0]['triangles']:,} triangles ours traces {min(ratios):.2f}–{max(ratios):.2f}× "
                  f"Embree's rays per CPU-second (all three sets, both meshes); below 100 000 triangles, where both "
-                 f"structures sit in cache, the gap is wider (ours is one ray against four boxes and one triangle "
-                 f"at a time, with the triangle test in double; Embree 3 picks its AVX2 kernels).\n"
+                 f"structures sit in cache, the gap is wider (ours tests one ray against a node's four boxes, and a "
+                 f"leaf's four triangles, in one SSE operation each, then each triangle it keeps in double; "
+                 f"Embree 3 picks its AVX2 kernels and eight-wide nodes).\n"
                  f"* Build at {max(largest.values()) / 1e6:.0f} M triangles: {min(builds):.2f}–{max(builds):.2f}× Embree's time on the same "
                  f"threads; memory per triangle {min(memory):.2f}–{max(memory):.2f}× Embree's.\n")
     render_header = ["triangles", "spp", "ours: rays per render CPU-s", "ours: peak MiB", "ours: wall s"]
@@ -193,7 +194,7 @@ structure holds for tracing (ours: triangles, nodes, face indices; Embree: its m
         render_rows.append(row)
     text += (f"\nWhole renders: `safegi-render` on a pbrt-v3 file of the height field under a quad light, "
              f"{RESOLUTION}², path tracing to depth 5, {THREADS} threads (render CPU includes the BVH build, which "
-             f"dominates the 4 spp render of the largest mesh; peak memory includes OpenImageIO's ≈ 127 MiB)"
+             f"dominates the 4 spp render of the largest mesh; no image is read, so OpenImageIO is not loaded)"
              + (", and pbrt-v3 (`SAFEGI_PBRT`) on the same file, back to back. pbrt-v3's rays are its"
                 " 'Regular' and 'Shadow ray intersection tests' over its whole process's CPU time (parsing and"
                 " BVH included), ours over the render's (BVH included, import not); 'image mean' is ours over"
