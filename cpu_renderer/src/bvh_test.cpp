@@ -48,6 +48,7 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
     ASSERT_EQ(hit.has_value(), best < kernel::kInfinity);
     if (hit) {
       EXPECT_EQ(hit->distance, best);
+      EXPECT_EQ(hit->face, hit->shape);  // each triangle's own pair, through its leaf's block
       ++hits;
     }
     EXPECT_EQ(set.occluded(ray, kernel::kInfinity), best < kernel::kInfinity);

@@ -10,6 +10,10 @@
 #include <cstdint>
 #include <limits>
 
+#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
+#include <xmmintrin.h>
+#endif
+
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
 namespace safegi::render::kernel {
@@ -54,6 +58,11 @@ namespace triangle_block_detail {
 
 using Lanes = Real __attribute__((vector_size(TriangleBlock::kWidth * sizeof(Real))));
 using Mask = decltype(Lanes{} < Lanes{});
+// A vector cast between vector types of one size keeps the bits (GCC, Clang);
+// as macros, since a function returning lanes by value makes GCC warn about
+// the ABI in the double build (32-byte lanes without AVX).
+#define SAFEGI_LANE_BITS(lanes) ((::safegi::render::kernel::triangle_block_detail::Mask)(lanes))
+#define SAFEGI_LANES(bits) ((::safegi::render::kernel::triangle_block_detail::Lanes)(bits))
 
 // The helpers take and give lanes by reference: in the double build they are
 // 32 bytes, which GCC would warn pass differently by value with AVX.
@@ -89,15 +98,20 @@ inline unsigned candidate_lanes(const TriangleBlock& block, const BlockRay& ray,
   const Lanes px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
   const Lanes det = e1x * px + e1y * py + e1z * pz;
   const Lanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-  // The sign of det folded into U, V and T, so that every test reads as det > 0.
-  const Lanes sign = det < 0 ? Lanes{} - 1 : Lanes{} + 1;
-  const Lanes u = (sx * px + sy * py + sz * pz) * sign;
-  const Lanes v = (dx * qx + dy * qy + dz * qz) * sign;
-  const Lanes t = (e2x * qx + e2y * qy + e2z * qz) * sign;
-  const Lanes det_abs = det < 0 ? -det : det;
+  // The sign of det folded into U, V and T (by its sign bit), so that every
+  // test reads as det > 0.
+  const Mask sign_bit = SAFEGI_LANE_BITS(-Lanes{});  // -0.0: the sign bit alone
+  const Mask det_sign = SAFEGI_LANE_BITS(det) & sign_bit;
+  const Lanes u = SAFEGI_LANES(SAFEGI_LANE_BITS(sx * px + sy * py + sz * pz) ^ det_sign);
+  const Lanes v = SAFEGI_LANES(SAFEGI_LANE_BITS(dx * qx + dy * qy + dz * qz) ^ det_sign);
+  const Lanes t = SAFEGI_LANES(SAFEGI_LANE_BITS(e2x * qx + e2y * qy + e2z * qz) ^ det_sign);
+  const Mask magnitude_bits = ~sign_bit;
+  const Lanes det_abs = SAFEGI_LANES(SAFEGI_LANE_BITS(det) & magnitude_bits);
 
   const Lanes edge = load(block.edge_bound);
-  const Lanes abs_sx = sx < 0 ? -sx : sx, abs_sy = sy < 0 ? -sy : sy, abs_sz = sz < 0 ? -sz : sz;
+  const Lanes abs_sx = SAFEGI_LANES(SAFEGI_LANE_BITS(sx) & magnitude_bits),
+              abs_sy = SAFEGI_LANES(SAFEGI_LANE_BITS(sy) & magnitude_bits),
+              abs_sz = SAFEGI_LANES(SAFEGI_LANE_BITS(sz) & magnitude_bits);
   const Lanes span_xy = abs_sx > abs_sy ? abs_sx : abs_sy;
   const Lanes span = span_xy > abs_sz ? span_xy : abs_sz;
   const Real direction = ray.direction_bound;
@@ -110,10 +124,18 @@ inline unsigned candidate_lanes(const TriangleBlock& block, const BlockRay& ray,
   const Mask unsure = (det_abs <= error_det) | (span * edge * direction < kSmallestReliable) |
                       (edge * edge * direction < kSmallestReliable) | (span > kLargestReliable) |
                       (edge > kLargestReliable);
+  const Mask kept = ~outside | unsure;
+#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
+  const unsigned lanes = static_cast<unsigned>(_mm_movemask_ps((__m128)(kept)));
+#else
   unsigned lanes = 0;
-  for (int i = 0; i < TriangleBlock::kWidth; ++i) lanes |= static_cast<unsigned>(!outside[i] || unsure[i]) << i;
+  for (int i = 0; i < TriangleBlock::kWidth; ++i) lanes |= static_cast<unsigned>(kept[i] != 0) << i;
+#endif
   return lanes & ((1u << count) - 1);
 }
+
+#undef SAFEGI_LANE_BITS
+#undef SAFEGI_LANES
 
 namespace triangle_block_detail {
 

@@ -84,7 +84,9 @@ TEST(TriangleBlock, FilterKeepsEveryTriangleTheExactTestHits) {
         ASSERT_NO_FATAL_FAILURE(
             check_scale(rng, Real3{offset, -offset, offset * 0.5f}, size, distance, 300, true, tally));
         // Far enough from the origin a small triangle's corners round together: no area, no hits.
-        if (size > offset * 1e-4f) EXPECT_GT(tally.exact, 0) << "size " << size << " distance " << distance;
+        if (size > offset * 1e-4f) {
+          EXPECT_GT(tally.exact, 0) << "size " << size << " distance " << distance;
+        }
       }
 }
 
