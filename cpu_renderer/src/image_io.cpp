@@ -123,13 +123,13 @@ ReaderModule load_reader_module() {
        {folder / kImageReaderModule, folder / ".." / SAFEGI_IMAGE_READER_INSTALL_DIR / kImageReaderModule}) {
     void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
-      if (module.error.empty()) module.error = dlerror();
+      module.error += (module.error.empty() ? "" : "; ") + std::string(dlerror());
       continue;
     }
     module.read = reinterpret_cast<decltype(module.read)>(dlsym(handle, "safegi_read_image_v1"));
     module.release = reinterpret_cast<decltype(module.release)>(dlsym(handle, "safegi_free_image_v1"));
     if (module.read && module.release) return module;
-    module.error = candidate.string() + " has no safegi_read_image_v1";
+    module.error += (module.error.empty() ? "" : "; ") + candidate.string() + " has no safegi_read_image_v1";
   }
   module.read = nullptr;
   return module;
