@@ -27,11 +27,9 @@ constexpr Real kTraversalCost = 1.5f;
 constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // WideBvhNode::primitive_count is 16 bits
 
 // Binning touches every primitive's box three times per split, so a bin's box
-// is kept as two vectors (x, y, z and a lane nobody reads) that one SSE min
-// and max extend.
-using Lanes4 = Real __attribute__((vector_size(4 * sizeof(Real))));
-// In the double build Lanes4 is 32 bytes, which GCC warns would pass
-// differently with AVX; these helpers are inlined within this file.
+// is kept as two Lanes4 (x, y, z and a lane nobody reads) that one SSE min and
+// max extend. In the double build Lanes4 is 32 bytes, which GCC warns would
+// pass differently with AVX; these helpers are inlined within this file.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 Lanes4 load_lanes(const Real3& v) {  // reads the Real after v too: the caller's struct has one

@@ -7,7 +7,6 @@
 // as a callable, so triangles, spheres and instances share one traversal.
 #pragma once
 
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -16,10 +15,7 @@
 #include <utility>
 #include <vector>
 
-#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
-#include <xmmintrin.h>
-#endif
-
+#include "lanes.hpp"
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
 namespace safegi::render::kernel {
@@ -170,36 +166,29 @@ inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, Real t_m
   return t_near <= t_far;
 }
 
-// Slab test of a node's four children at once (GCC/Clang vector extensions:
-// SSE on any x86-64); `t_near[i]` is where the ray enters child i. NaN-tolerant
-// the way pbrt-v3 is: a 0 · ∞ term is ignored, because each comparison below
-// keeps the other operand when one is NaN.
-using WideLanes = Real __attribute__((vector_size(WideBvhNode::kWidth * sizeof(Real))));
+// Slab test of a node's four children at once (one Lanes4 each plane);
+// `t_near[i]` is where the ray enters child i. NaN-tolerant the way pbrt-v3
+// is: a 0 · ∞ term is ignored, because each comparison below keeps the other
+// operand when one is NaN.
+static_assert(WideBvhNode::kWidth == 4, "one Lanes4 holds a node's children");
 
 inline unsigned intersect_children(const WideBvhNode& node, const TraversalRay& ray, Real t_max,
                                    Real (&t_near_out)[WideBvhNode::kWidth]) {
-  WideLanes t_near = {}, t_far = WideLanes{} + t_max;
+  Lanes4 t_near = {}, t_far = Lanes4{} + t_max;
   for (int axis = 0; axis < 3; ++axis) {
     const bool negative = ray.direction_is_negative[axis];
-    WideLanes near_plane, far_plane;
+    Lanes4 near_plane, far_plane;
     std::memcpy(&near_plane, negative ? node.upper[axis] : node.lower[axis], sizeof near_plane);
     std::memcpy(&far_plane, negative ? node.lower[axis] : node.upper[axis], sizeof far_plane);
     const Real origin = ray.origin[axis], inverse = ray.inverse_direction[axis];
-    WideLanes t0 = (near_plane - origin) * inverse;
-    WideLanes t1 = (far_plane - origin) * inverse * kSlabWidening;
+    Lanes4 t0 = (near_plane - origin) * inverse;
+    Lanes4 t1 = (far_plane - origin) * inverse * kSlabWidening;
     t_near = t0 > t_near ? t0 : t_near;
     t_far = t1 < t_far ? t1 : t_far;
   }
   const auto entered = t_near <= t_far;
   std::memcpy(t_near_out, &t_near, sizeof t_near);
-#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
-  // One instruction instead of a loop of lane extractions.
-  return static_cast<unsigned>(_mm_movemask_ps(std::bit_cast<__m128>(entered)));
-#else
-  unsigned hits = 0;
-  for (int i = 0; i < WideBvhNode::kWidth; ++i) hits |= static_cast<unsigned>(entered[i] != 0) << i;
-  return hits;
-#endif
+  return lane_bits(entered);
 }
 
 template <bool any_hit, class LeafTest, class LeafPrefetch>

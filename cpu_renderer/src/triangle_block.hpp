@@ -10,10 +10,8 @@
 #include <cstdint>
 #include <limits>
 
-#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
-#include <xmmintrin.h>
-#endif
 
+#include "lanes.hpp"
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
 namespace safegi::render::kernel {
@@ -56,8 +54,9 @@ struct BlockRay {
 
 namespace triangle_block_detail {
 
-using Lanes = Real __attribute__((vector_size(TriangleBlock::kWidth * sizeof(Real))));
-using Mask = decltype(Lanes{} < Lanes{});
+using Lanes = Lanes4;
+using Mask = LaneMask4;
+static_assert(TriangleBlock::kWidth == 4, "one Lanes4 holds a block's triangles");
 // A vector cast between vector types of one size keeps the bits (GCC, Clang);
 // as macros, since a function returning lanes by value makes GCC warn about
 // the ABI in the double build (32-byte lanes without AVX).
@@ -125,12 +124,7 @@ inline unsigned candidate_lanes(const TriangleBlock& block, const BlockRay& ray,
                       (edge * edge * direction < kSmallestReliable) | (span > kLargestReliable) |
                       (edge > kLargestReliable);
   const Mask kept = ~outside | unsure;
-#if defined(__SSE__) && !(defined(SAFEGI_DOUBLE) && SAFEGI_DOUBLE)
-  const unsigned lanes = static_cast<unsigned>(_mm_movemask_ps((__m128)(kept)));
-#else
-  unsigned lanes = 0;
-  for (int i = 0; i < TriangleBlock::kWidth; ++i) lanes |= static_cast<unsigned>(kept[i] != 0) << i;
-#endif
+  const unsigned lanes = lane_bits(kept);
   return lanes & ((1u << count) - 1);
 }
 
