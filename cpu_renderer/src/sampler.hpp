@@ -45,17 +45,13 @@ inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
   return x;
 }
 
-inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
-  return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
-}
-
-// The first two Sobol dimensions, each with its bits reversed (the nested
-// scramble works on reversed bits, so the points are made that way): van der
-// Corput reversed is the index itself; the second, from the (x + 1)
-// polynomial, is linear over GF(2) in the index's bits, so it is four lookups,
-// one a byte of the index, in tables of what each byte's bits contribute.
-inline uint32_t reversed_sobol_dimension_0(uint32_t index) { return index; }
-
+// The points are made with their bits reversed, as Burley's nested scramble
+// (reverse, Laine–Karras permutation, reverse) takes them, so that the
+// reversals that cancel are left out. Sobol's first dimension (van der Corput)
+// reversed is the index itself; the second, from the (x + 1) polynomial, is
+// linear over GF(2) in the index's bits, so it is four lookups, one a byte of
+// the index, in tables of what each byte's bits contribute. sampler_test.cpp
+// checks the values against the paper's formulation, bit for bit.
 struct ReversedSobolTables {
   uint32_t by_byte[4][256];
 };
@@ -76,16 +72,7 @@ inline uint32_t reversed_sobol_dimension_1(uint32_t index) {
   return t[0][index & 0xff] ^ t[1][index >> 8 & 0xff] ^ t[2][index >> 16 & 0xff] ^ t[3][index >> 24];
 }
 
-// The same points in plain bit order (sampler_test.cpp checks the sampler against them).
-inline uint32_t sobol_dimension_0(uint32_t index) { return reverse_bits(index); }
-inline uint32_t sobol_dimension_1(uint32_t index) {
-  uint32_t result = 0;
-  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1) result ^= v;
-  return result;
-}
-
-// nested_uniform_scramble(x, seed) for an x given with its bits reversed.
+// Burley's nested uniform scramble of x, given x with its bits reversed.
 inline uint32_t scramble_reversed(uint32_t reversed, uint32_t seed) {
   return reverse_bits(laine_karras_permutation(reversed, seed));
 }
@@ -101,25 +88,31 @@ class Sampler {
         reversed_sample_index_(sampling_detail::reverse_bits(sample_index)) {}
 
   // Each call consumes one dimension pair; both coordinates lie in [0, 1).
-  // Owen-scrambled Sobol: nested_uniform_scramble of each dimension of the
-  // point at the scrambled index, with the reversals that cancel left out.
   Sample2 next_2d() {
     using namespace sampling_detail;
-    uint32_t dimension_seed = hash_combine(pixel_seed_, dimension_++);
-    uint32_t index = scramble_reversed(reversed_sample_index_, dimension_seed);
-    uint32_t x = scramble_reversed(reversed_sobol_dimension_0(index), hash_combine(dimension_seed, 1));
-    uint32_t y = scramble_reversed(reversed_sobol_dimension_1(index), hash_combine(dimension_seed, 2));
-    return {to_unit_float(x), to_unit_float(y)};
+    const Dimension d = next_dimension();
+    return {to_unit_float(scramble_reversed(d.index, hash_combine(d.seed, 1))),
+            to_unit_float(scramble_reversed(reversed_sobol_dimension_1(d.index), hash_combine(d.seed, 2)))};
   }
 
+  // next_2d's first coordinate, without the second's work.
   float next_1d() {
     using namespace sampling_detail;
-    uint32_t dimension_seed = hash_combine(pixel_seed_, dimension_++);
-    uint32_t index = scramble_reversed(reversed_sample_index_, dimension_seed);
-    return to_unit_float(scramble_reversed(reversed_sobol_dimension_0(index), hash_combine(dimension_seed, 1)));
+    const Dimension d = next_dimension();
+    return to_unit_float(scramble_reversed(d.index, hash_combine(d.seed, 1)));
   }
 
  private:
+  // The next dimension's seed, and the point index scrambled for it (bits reversed).
+  struct Dimension {
+    uint32_t seed, index;
+  };
+  Dimension next_dimension() {
+    using namespace sampling_detail;
+    const uint32_t seed = hash_combine(pixel_seed_, dimension_++);
+    return {seed, scramble_reversed(reversed_sample_index_, seed)};
+  }
+
   uint32_t pixel_seed_;
   uint32_t reversed_sample_index_;
   uint32_t dimension_ = 0;

@@ -13,6 +13,17 @@ using namespace sampling_detail;
 // scrambled index, each dimension nested-uniform scrambled. The sampler leaves
 // out reversals that cancel and looks the second dimension up by bytes; its
 // values must be these, bit for bit (images depend on them).
+uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
+  return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
+}
+uint32_t sobol_dimension_0(uint32_t index) { return reverse_bits(index); }
+uint32_t sobol_dimension_1(uint32_t index) {
+  uint32_t result = 0;
+  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+    if (index & 1) result ^= v;
+  return result;
+}
+
 Sample2 burley_2d(uint32_t pixel_seed, uint32_t sample_index, uint32_t dimension) {
   uint32_t dimension_seed = hash_combine(pixel_seed, dimension);
   uint32_t index = nested_uniform_scramble(sample_index, dimension_seed);
