@@ -28,8 +28,8 @@ struct SurfaceHit {
   NormalWorld normal;     // geometric normal, on the side given by the winding
   Length distance = sg::zero;  // along the ray
   uint32_t shape = 0;     // index into Scene::shapes
-  // The triangle hit (its first index is 3·face into Shape::indices), in scenes
-  // with textures; unused for spheres.
+  // The triangle hit (its first index is 3·face into Shape::indices); unused
+  // for spheres.
   uint32_t face = 0;
 };
 

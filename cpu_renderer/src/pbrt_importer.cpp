@@ -424,7 +424,7 @@ void Importer::pixel_filter(const Directive& d) {
          "pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"");
   PixelFilter filter;
   filter.type = *named;
-  // Each number within the JSON loader's bounds: a filter of NaNs would make NaN pixels.
+  // Each number bounded (the JSON loader bounds its own alike): a filter of NaNs would make NaN pixels.
   auto read = [&](const char* name, double fallback, double low, double high, const char* what) {
     const double value = params.one_float(name, fallback);
     if (!(value > low && value <= high))

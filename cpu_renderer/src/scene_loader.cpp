@@ -94,7 +94,7 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     std::optional<LightStrategy> strategy = light_strategy_named(name);
     if (!strategy)
       fail(path.field("light_strategy"),
-           "expected \"power\", \"uniform\", \"spatial\" or \"all\", got " + short_dump(value["light_strategy"]));
+           "expected " + quoted_choices(kLightStrategyNames) + ", got " + short_dump(value["light_strategy"]));
     settings.light_strategy = *strategy;
   }
   if (value.contains("filter")) settings.filter = pixel_filter(value["filter"], path.field("filter"));
@@ -117,7 +117,7 @@ PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
   const std::optional<PixelFilterType> type = pixel_filter_named(name);
   if (!type)
     fail(path.field("type"),
-         "expected \"box\", \"triangle\", \"gaussian\", \"mitchell\" or \"sinc\", got " + short_dump(value["type"]));
+         "expected " + quoted_choices(kPixelFilterNames) + ", got " + short_dump(value["type"]));
   PixelFilter filter;
   filter.type = *type;
   if (value.contains("radius")) {

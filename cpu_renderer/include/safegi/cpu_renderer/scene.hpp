@@ -338,6 +338,16 @@ std::optional<Enum> enum_named(const char* const (&names)[N], std::string_view n
     if (name == names[i]) return static_cast<Enum>(i);
   return std::nullopt;
 }
+// The names quoted, as a message lists the choices: "a", "b" or "c".
+template <size_t N>
+std::string quoted_choices(const char* const (&names)[N]) {
+  std::string list;
+  for (size_t i = 0; i < N; ++i) {
+    if (i > 0) list.append(i + 1 == N ? " or " : ", ");
+    list.append("\"").append(names[i]).append("\"");
+  }
+  return list;
+}
 inline std::optional<LightStrategy> light_strategy_named(std::string_view name) {
   return enum_named<LightStrategy>(kLightStrategyNames, name);
 }
