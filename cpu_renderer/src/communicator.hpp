@@ -46,6 +46,7 @@ class Communicator {
   double max_to_first(double value);              // on rank 0 (elsewhere: value)
   double sum_to_first(double value);              // on rank 0 (elsewhere: value)
   void sum_to_first(uint64_t* values, int count);  // in place, on rank 0
+  void sum_to_first(double* values, size_t count);  // in place, on rank 0 (any size: in pieces)
 
   // Point to point (any size: sent in pieces below MPI's int counts).
   void send(const float* values, size_t count, int to);

@@ -94,6 +94,13 @@ void Communicator::sum_to_first(uint64_t* values, int count) {
   MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values, values, count, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
 }
 
+void Communicator::sum_to_first(double* values, size_t count) {
+  if (!initialised_) return;
+  for (size_t done = 0; done < count; done += kPieceFloats)
+    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values + done, values + done,
+               static_cast<int>(std::min(kPieceFloats, count - done)), MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+}
+
 void Communicator::send(const float* values, size_t count, int to) {
   for (size_t done = 0; done < count; done += kPieceFloats)
     MPI_Send(values + done, static_cast<int>(std::min(kPieceFloats, count - done)), MPI_FLOAT, to, 0, MPI_COMM_WORLD);

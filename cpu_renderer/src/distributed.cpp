@@ -51,6 +51,10 @@ class DistributedSession::Partition final : public RenderPartition {
   int next_pass_spp_of_first(int next_pass_spp) override {
     return session_.communicator_.broadcast_from_first(next_pass_spp);
   }
+  void sum_to_first(std::vector<double>& values) override {
+    session_.communicator_.wait_for_every_rank();
+    session_.communicator_.sum_to_first(values.data(), values.size());
+  }
 
  private:
   DistributedSession& session_;
@@ -141,7 +145,9 @@ Image DistributedSession::render(const Scene& scene, RenderOptions options, Rend
   Image image = safegi::render::render(scene, options, &local);
   test_fault_point();
   communicator_.wait_for_every_rank();
-  Image whole = gather_on_first(std::move(image));
+  // Splatted, rank 0's image is whole already (the ranks' sums were added in render()).
+  Image whole = splats_samples(options.settings.filter) ? (is_root() ? std::move(image) : Image{})
+                                                        : gather_on_first(std::move(image));
 
   uint64_t totals[] = {local.camera_rays, local.extension_rays, local.shadow_rays, local.invalid_samples,
                        static_cast<uint64_t>(local.threads)};

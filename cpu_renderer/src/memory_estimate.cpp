@@ -16,6 +16,7 @@
 #include "light_choice.hpp"
 #include "photon_map.hpp"
 #include "pixel_filter.hpp"
+#include "splat_film.hpp"
 
 namespace safegi::render {
 
@@ -132,6 +133,10 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
                          static_cast<uint64_t>((estimate.height + kTileSide - 1) / kTileSide);
   estimate.thread_count = std::max(1, thread_count);
   estimate.threads = static_cast<uint64_t>(estimate.thread_count) * kBytesPerThread + tiles * kBytesPerTile;
+  // Splatting: the tiles' buffers that wait to be added, and the one each thread fills.
+  if (splats_samples(settings.filter))
+    estimate.threads += static_cast<uint64_t>(estimate.thread_count) * (SplatFilm::kTilesAheadPerThread + 1) *
+                        SplatFilm::tile_splats_bytes(settings.filter, kTileSide);
   if (settings.integrator == IntegratorType::photon)
     estimate.photons = static_cast<uint64_t>(std::max(0, settings.photons)) * kBytesPerPhoton;
   if (settings.light_strategy == LightStrategy::spatial) {

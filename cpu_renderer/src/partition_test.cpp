@@ -20,6 +20,7 @@ class LonePart final : public RenderPartition {
   int parts() const override { return parts_; }
   double slowest_pass_seconds(double seconds) override { return seconds; }
   int next_pass_spp_of_first(int next_pass_spp) override { return next_pass_spp; }
+  void sum_to_first(std::vector<double>&) override {}
 
  private:
   int part_, parts_;

@@ -195,6 +195,7 @@ TEST(PbrtImport, PixelFiltersArePbrtV3sWithItsDefaults) {
   EXPECT_EQ(gaussian.radius_x, 2);
   EXPECT_EQ(gaussian.radius_y, 2);
   EXPECT_EQ(gaussian.gaussian_alpha, 2);
+  EXPECT_EQ(gaussian.mode, PixelFilterMode::splat);  // pbrt-v3's Film::AddSample
   PixelFilter mitchell = filter_of("PixelFilter \"mitchell\" \"float xwidth\" 1.5 \"float B\" 0.5 \"float C\" 0.25");
   EXPECT_EQ(mitchell.type, PixelFilterType::mitchell);
   EXPECT_EQ(mitchell.radius_x, 1.5);

@@ -442,6 +442,7 @@ void Importer::pixel_filter(const Directive& d) {
   }
   if (filter.type == PixelFilterType::sinc) filter.sinc_tau = read("tau", 3, 0, 1e3, "in (0, 1000]");
   report_unused(params);
+  filter.mode = PixelFilterMode::splat;  // pbrt-v3's Film::AddSample
   result_.scene.settings.filter = filter;
 }
 

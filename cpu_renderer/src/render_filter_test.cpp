@@ -33,6 +33,13 @@ double share_left_of(const PixelFilter& filter, double edge) {
   return left / all;
 }
 
+Scene edge_scene(const std::string& filter_json) {
+  std::string text = kEdge;
+  text.replace(text.find("FILTER"), 6, filter_json);
+  return parse_scene(text, "test.json", SAFEGI_SCENES_DIR);
+}
+
+// Both modes converge to the same filtered image: each is checked against it.
 TEST(RenderFilter, AnEdgeIsBlurredByTheFilter) {
   const std::pair<const char*, PixelFilterType> filters[] = {
       {R"({"type": "box"})", PixelFilterType::box},
@@ -40,13 +47,18 @@ TEST(RenderFilter, AnEdgeIsBlurredByTheFilter) {
       {R"({"type": "triangle"})", PixelFilterType::triangle},
       {R"({"type": "gaussian"})", PixelFilterType::gaussian},
       {R"({"type": "mitchell"})", PixelFilterType::mitchell},
-      {R"({"type": "sinc"})", PixelFilterType::sinc}};
+      {R"({"type": "sinc"})", PixelFilterType::sinc},
+      {R"({"type": "box", "radius": [1.5, 1.5], "mode": "splat"})", PixelFilterType::box},
+      {R"({"type": "triangle", "mode": "splat"})", PixelFilterType::triangle},
+      {R"({"type": "gaussian", "mode": "splat"})", PixelFilterType::gaussian},
+      {R"({"type": "mitchell", "mode": "splat"})", PixelFilterType::mitchell},
+      {R"({"type": "sinc", "mode": "splat"})", PixelFilterType::sinc}};
   for (auto [json, type] : filters) {
-    std::string text = kEdge;
-    text.replace(text.find("FILTER"), 6, json);
-    const Scene scene = parse_scene(text, "test.json", SAFEGI_SCENES_DIR);
+    const Scene scene = edge_scene(json);
     const PixelFilter& filter = scene.settings.filter;
     ASSERT_EQ(filter.type, type);
+    ASSERT_EQ(filter.mode, std::string_view(json).find("splat") != std::string_view::npos ? PixelFilterMode::splat
+                                                                                            : PixelFilterMode::sample);
     const Image image = render_scene(scene, 256);
     for (int column = 0; column < 16; ++column) {
       double mean = 0;
@@ -60,6 +72,74 @@ TEST(RenderFilter, AnEdgeIsBlurredByTheFilter) {
         EXPECT_NEAR(mean, expected, 0.01) << json << ", column " << column;
     }
   }
+}
+
+// Where every sample within a pixel's reach sees the same radiance, the
+// splatted pixel is that radiance (the weights cancel), at the window's edge
+// too: pixels outside the window are sampled for their neighbours.
+TEST(RenderFilter, SplattingKeepsAFlatImageFlatToTheEdges) {
+  const Scene scene = edge_scene(R"({"type": "gaussian", "mode": "splat"})");
+  const Image image = render_scene(scene, 4, 2, CropWindow{0, 0, 6, 8});
+  for (float v : image.rgb) EXPECT_NEAR(v, 1.0f, 1e-5f);
+}
+
+TEST(RenderFilter, SplattedImagesDoNotDependOnTheThreadCount) {
+  const Scene scene = edge_scene(R"({"type": "mitchell", "mode": "splat"})");
+  auto larger = [](RenderSettings& settings) {  // 20 tiles, so that threads take them out of order
+    settings.width = 64;
+    settings.height = 56;
+  };
+  const Image one = render_scene(scene, 8, 1, std::nullopt, larger), three = render_scene(scene, 8, 3, std::nullopt, larger);
+  EXPECT_EQ(one.rgb, three.rgb);
+}
+
+// A crop is the same pixels of the whole image: its border pixels get their
+// neighbours' samples from outside the window (to rounding: sums add in another order).
+TEST(RenderFilter, ASplattedCropIsTheWholeImagesPixels) {
+  const Scene scene = edge_scene(R"({"type": "gaussian", "mode": "splat"})");
+  const Image whole = render_scene(scene, 8), crop = render_scene(scene, 8, 2, CropWindow{5, 2, 6, 4});
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 6; ++x)
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(crop.pixel(x, y)[c], whole.pixel(x + 5, y + 2)[c], 1e-5f) << x << "," << y;
+}
+
+// Parts of a splatted render (tiles dealt round, as over MPI) add their
+// sums: the last part's image is then the whole one.
+class SummingPart final : public RenderPartition {
+ public:
+  SummingPart(int part, int parts, std::vector<double>& total) : part_(part), parts_(parts), total_(total) {}
+  int part() const override { return part_; }
+  int parts() const override { return parts_; }
+  double slowest_pass_seconds(double seconds) override { return seconds; }
+  int next_pass_spp_of_first(int next_pass_spp) override { return next_pass_spp; }
+  void sum_to_first(std::vector<double>& values) override {
+    total_.resize(values.size(), 0.0);
+    for (size_t i = 0; i < values.size(); ++i) total_[i] += values[i];
+    values = total_;
+  }
+
+ private:
+  int part_, parts_;
+  std::vector<double>& total_;
+};
+
+TEST(RenderFilter, SplattedPartsAddUpToTheWholeImage) {
+  const Scene scene = edge_scene(R"({"type": "gaussian", "mode": "splat"})");
+  RenderOptions options;
+  options.settings = scene.settings;
+  options.settings.width = 40;  // more than one tile, so that the parts differ
+  options.settings.spp = 4;
+  options.threads = 2;
+  const Image whole = render(scene, options);
+  std::vector<double> total;
+  Image last;
+  for (int part = 0; part < 3; ++part) {
+    SummingPart partition(part, 3, total);
+    options.partition = &partition;
+    last = render(scene, options);
+  }
+  ASSERT_EQ(last.rgb.size(), whole.rgb.size());
+  for (size_t i = 0; i < whole.rgb.size(); ++i) EXPECT_NEAR(last.rgb[i], whole.rgb[i], 1e-5f) << i;
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "pixel_filter.hpp"
 #include "printable.hpp"
 #include "sampler.hpp"
+#include "splat_film.hpp"
 
 namespace safegi::render {
 
@@ -127,6 +128,10 @@ ImageSize parse_resolution(const std::string& text, const std::string& option) {
   return {width, height};
 }
 
+bool splats_samples(const PixelFilter& filter) {
+  return filter.mode == PixelFilterMode::splat && !PixelFilterSampler::is_plain_box(filter);
+}
+
 std::vector<PixelRect> render_tiles(int width, int height) {
   std::vector<PixelRect> tiles;
   for (int y = 0; y < height; y += kTileSize)
@@ -150,25 +155,36 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   CameraRays camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
 
+  // How samples make pixels: uniform in their pixel (the plain box), offset
+  // by the filter and kept in their pixel, or splatted over the filter's
+  // footprint (pbrt-v3's way; then pixels just outside the window are
+  // sampled too).
+  const PixelRect window_rect{window.x, window.y, window.x + window.width, window.y + window.height};
+  std::optional<PixelFilterSampler> filter;
+  std::optional<SplatFilm> splat_film;
+  if (splats_samples(settings.filter))
+    splat_film.emplace(settings.filter, window_rect);
+  else if (!PixelFilterSampler::is_plain_box(settings.filter))
+    filter.emplace(settings.filter);
+  const PixelRect sampled = splat_film ? splat_film->sample_bounds() : window_rect;
+
   // This process's tiles, in image coordinates; with a partition, every
   // parts()-th of them.
   RenderPartition* partition = options.partition;
   std::vector<PixelRect> tiles;
   uint64_t pixel_count = 0;
-  std::vector<PixelRect> window_tiles = render_tiles(window.width, window.height);
-  for (size_t t = 0; t < window_tiles.size(); ++t) {
+  std::vector<PixelRect> sampled_tiles = render_tiles(sampled.x1 - sampled.x0, sampled.y1 - sampled.y0);
+  for (size_t t = 0; t < sampled_tiles.size(); ++t) {
     if (partition && static_cast<int>(t % partition->parts()) != partition->part()) continue;
-    const PixelRect& r = window_tiles[t];
-    tiles.push_back({window.x + r.x0, window.y + r.y0, window.x + r.x1, window.y + r.y1});
+    const PixelRect& r = sampled_tiles[t];
+    tiles.push_back({sampled.x0 + r.x0, sampled.y0 + r.y0, sampled.x0 + r.x1, sampled.y0 + r.y1});
     pixel_count += static_cast<uint64_t>(r.x1 - r.x0) * (r.y1 - r.y0);
   }
 
   // Per-pixel sums in double; every pixel's samples are added in sample order,
   // so the result does not depend on which thread rendered which tile. With
   // a pixel filter, the sums of the samples' weights too.
-  std::vector<double> sums(3 * static_cast<size_t>(window.width) * window.height, 0.0);
-  std::optional<PixelFilterSampler> filter;
-  if (!PixelFilterSampler::is_plain_box(settings.filter)) filter.emplace(settings.filter);
+  std::vector<double> sums(splat_film ? 0 : 3 * static_cast<size_t>(window.width) * window.height, 0.0);
   std::vector<double> weight_sums(filter ? static_cast<size_t>(window.width) * window.height : 0, 0.0);
   int thread_count = options.threads > 0 ? options.threads : hardware_threads;
   thread_count = std::max(1, std::min<int>(thread_count, static_cast<int>(std::max<size_t>(tiles.size(), 1))));
@@ -187,46 +203,50 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     int pass_end = std::min(spp_cap, spp_done + pass_spp);
     Clock::time_point pass_start = Clock::now();
     std::atomic<size_t> next_tile{0};
+    if (splat_film) splat_film->begin_pass(tiles.size(), thread_count);
     auto worker = [&](int thread_index) {
       RayCounters& counter = counters[thread_index];
       for (size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
         const PixelRect& tile = tiles[t];
+        std::optional<SplatFilm::TileSplats> splats;
+        if (splat_film) {
+          splat_film->wait_for_room(t);
+          splats = splat_film->tile_splats(tile);
+        }
         for (int y = tile.y0; y < tile.y1; ++y) {
           for (int x = tile.x0; x < tile.x1; ++x) {
-            const size_t pixel = static_cast<size_t>(y - window.y) * window.width + (x - window.x);
-            double* sum = &sums[3 * pixel];
             for (int s = pass_begin; s < pass_end; ++s) {
               Sampler sampler(options.seed, static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(s));
+              const Sample2 film = sampler.next_2d();
+              Real film_x = static_cast<Real>(x) + film.u, film_y = static_cast<Real>(y) + film.v;
               double weight = 1;
-              TimedRay ray;
               if (filter) {
-                const Sample2 film = sampler.next_2d();
                 const PixelFilterSampler::Sample offset = filter->sample(film.u, film.v);
                 weight = offset.weight;
-                ray = camera.generate_at(static_cast<Real>(x) + Real(0.5) + offset.dx,
-                                         static_cast<Real>(y) + Real(0.5) + offset.dy, sampler);
-              } else {
-                ray = camera.generate(x, y, sampler);
+                film_x = static_cast<Real>(x) + Real(0.5) + offset.dx;
+                film_y = static_cast<Real>(y) + Real(0.5) + offset.dy;
               }
+              const TimedRay ray = camera.generate_at(film_x, film_y, sampler);
               ++counter.camera;
               sg::vec3_rep L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
               if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
                 ++invalid[thread_index];
                 continue;
               }
-              if (filter) {
-                sum[0] += weight * L.r;
-                sum[1] += weight * L.g;
-                sum[2] += weight * L.b;
-                weight_sums[pixel] += weight;
+              if (splats) {
+                splats->add(film_x, film_y, {L.r, L.g, L.b});
                 continue;
               }
-              sum[0] += L.r;
-              sum[1] += L.g;
-              sum[2] += L.b;
+              const size_t pixel = static_cast<size_t>(y - window.y) * window.width + (x - window.x);
+              double* sum = &sums[3 * pixel];
+              sum[0] += weight * L.r;
+              sum[1] += weight * L.g;
+              sum[2] += weight * L.b;
+              if (filter) weight_sums[pixel] += weight;
             }
           }
         }
+        if (splats) splat_film->add_in_order(t, std::move(*splats));
         progress.advance(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * (pass_end - pass_begin));
       }
     };
@@ -259,16 +279,22 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   Image image;
   image.width = window.width;
   image.height = window.height;
-  image.rgb.resize(sums.size());
-  double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
-  for (size_t i = 0; i < sums.size(); ++i) {
-    // A filter's negative lobes can make a pixel negative, or its weights cancel:
-    // black then, as pbrt-v3 writes it.
-    if (filter) {
-      image.rgb[i] = weight_sums[i / 3] != 0 ? static_cast<float>(std::max(0.0, sums[i] / weight_sums[i / 3])) : 0.0f;
-      continue;
+  if (splat_film) {
+    // Every process's splats, added on the first (the others return theirs unused).
+    if (partition) partition->sum_to_first(splat_film->sums());
+    image.rgb = splat_film->pixels();
+  } else {
+    image.rgb.resize(sums.size());
+    double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
+    for (size_t i = 0; i < sums.size(); ++i) {
+      // A filter's negative lobes can make a pixel negative, or its weights cancel:
+      // black then, as pbrt-v3 writes it.
+      if (filter) {
+        image.rgb[i] = weight_sums[i / 3] != 0 ? static_cast<float>(std::max(0.0, sums[i] / weight_sums[i / 3])) : 0.0f;
+        continue;
+      }
+      image.rgb[i] = static_cast<float>(sums[i] * scale);
     }
-    image.rgb[i] = static_cast<float>(sums[i] * scale);
   }
 
   if (stats) {

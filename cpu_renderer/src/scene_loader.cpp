@@ -110,9 +110,9 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   }
 }
 
-// {"type": "gaussian", "radius": [2, 2], "alpha": 2}; mitchell's "b" and "c", sinc's "tau".
+// {"type": "gaussian", "radius": [2, 2], "alpha": 2, "mode": "splat"}; mitchell's "b" and "c", sinc's "tau".
 PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
-  object(value, path, {"type", "radius", "alpha", "b", "c", "tau"});
+  object(value, path, {"type", "radius", "alpha", "b", "c", "tau", "mode"});
   const std::string name = string(required(value, path, "type"), path.field("type"));
   const std::optional<PixelFilterType> type = pixel_filter_named(name);
   if (!type)
@@ -133,6 +133,12 @@ PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
   if (value.contains("b")) filter.mitchell_b = number(value["b"], path.field("b"), -10, 10);
   if (value.contains("c")) filter.mitchell_c = number(value["c"], path.field("c"), -10, 10);
   if (value.contains("tau")) filter.sinc_tau = number(value["tau"], path.field("tau"), 1e-3, 1e3);
+  if (value.contains("mode")) {
+    const std::optional<PixelFilterMode> mode = pixel_filter_mode_named(string(value["mode"], path.field("mode")));
+    if (!mode)
+      fail(path.field("mode"), "expected " + quoted_choices(kPixelFilterModeNames) + ", got " + short_dump(value["mode"]));
+    filter.mode = *mode;
+  }
   return filter;
 }
 

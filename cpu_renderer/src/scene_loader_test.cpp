@@ -31,6 +31,11 @@ std::string load_error(const std::string& json) {
   return "";
 }
 
+TEST(SceneLoader, AFiltersModeIsSampleOrSplat) {
+  EXPECT_EQ(load_error(with_camera(R"("render": {"filter": {"type": "gaussian", "mode": "scatter"}})")),
+            "test.json: render.filter.mode: expected \"sample\" or \"splat\", got \"scatter\"");
+}
+
 TEST(SceneLoader, WrongDimensionNamesPathExpectedAndFound) {
   EXPECT_EQ(load_error(with_camera(R"("lights": [{"type": "point", "position": {"value": [0, 1, 0], "unit": "m"}, "power": "3 m"}])")),
             "test.json: lights[0].power: expected power (e.g. W), got \"3 m\" (length)");

@@ -41,7 +41,16 @@ class RenderPartition {
   // Collective: process 0's decision on every process (samples per pixel of
   // the next pass; 0: stop here).
   virtual int next_pass_spp_of_first(int next_pass_spp) = 0;
+  // Collective, at the end of a render whose samples splat (see
+  // splats_samples: a sample adds to its neighbours' pixels, which other
+  // processes may own): the sum of every process's `values`, element by
+  // element, into process 0's.
+  virtual void sum_to_first(std::vector<double>& values) = 0;
 };
+
+// Whether a render with this filter splats each sample over the pixels within
+// the filter's radius (PixelFilterMode::splat; a plain one-pixel box never needs to).
+bool splats_samples(const PixelFilter& filter);
 
 struct RenderOptions {
   RenderSettings settings;          // resolution, spp, integrator, max depth

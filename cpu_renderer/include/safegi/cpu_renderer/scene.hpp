@@ -361,8 +361,20 @@ inline constexpr int kMaxImageSide = 65536;
 // reach into the neighbours' area (pixel_filter.hpp).
 enum class PixelFilterType { box, triangle, gaussian, mitchell, sinc };
 inline constexpr const char* kPixelFilterNames[] = {"box", "triangle", "gaussian", "mitchell", "sinc"};
+// How samples make pixels under a filter. sample (pbrt-v4's way): each
+// sample's offset is drawn from the filter and it stays in its own pixel.
+// splat (pbrt-v3's Film::AddSample): each sample, uniform in its pixel, adds
+// f·L and f to every pixel whose centre is within the filter's radius. Both
+// converge to the same filtered image; a splatted pixel averages the samples
+// of its neighbours too (lower noise in smooth regions, neighbours correlated).
+enum class PixelFilterMode { sample, splat };
+inline constexpr const char* kPixelFilterModeNames[] = {"sample", "splat"};
+inline std::optional<PixelFilterMode> pixel_filter_mode_named(std::string_view name) {
+  return enum_named<PixelFilterMode>(kPixelFilterModeNames, name);
+}
 struct PixelFilter {
   PixelFilterType type = PixelFilterType::box;
+  PixelFilterMode mode = PixelFilterMode::sample;
   double radius_x = 0.5, radius_y = 0.5;
   double gaussian_alpha = 2;                     // exp(−α x²), less its value at the radius
   double mitchell_b = 1.0 / 3, mitchell_c = 1.0 / 3;
