@@ -172,6 +172,28 @@ TEST_F(Distributed, TimeBudgetStopsEveryRankAtTheSamePass) {
   EXPECT_TRUE(read_file(directory_ / "budget.pfm") == read_file(directory_ / "fixed.pfm")) << spp << " spp";
 }
 
+// Splatted (a sample adds to pixels of other ranks' tiles), the ranks' sums are
+// added on rank 0: the single process's image, to rounding (the sums add in
+// another order).
+TEST_F(Distributed, SplattedFilterSumsTheRanksPixels) {
+  std::string text = read_file(kScenes / "phong.json");
+  const std::string render_section = R"("render": {)";
+  text.replace(text.find(render_section), render_section.size(),
+               render_section + R"( "filter": {"type": "gaussian", "mode": "splat"},)");
+  const std::filesystem::path scene = directory_ / "splat.json";
+  std::ofstream(scene) << text;
+  auto args = [&](const std::string& output) {
+    return "\"" + scene.string() + "\" --resolution 40x36 --spp 2 --threads 1 -q -o \"" + (directory_ / output).string() + "\"";
+  };
+  Result single = render(0, args("single"));
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  Result job = render(3, args("ranks3"));
+  ASSERT_EQ(job.exit_code, 0) << job.err;
+  const Image one = read_image(directory_ / "single.exr"), three = read_image(directory_ / "ranks3.exr");
+  ASSERT_EQ(one.rgb.size(), three.rgb.size());
+  for (size_t i = 0; i < one.rgb.size(); ++i) EXPECT_NEAR(three.rgb[i], one.rgb[i], 1e-5f * (1 + one.rgb[i])) << i;
+}
+
 // A scene that fails to load on every rank: the single process's message, once.
 TEST_F(Distributed, SceneErrorIsPrintedOnce) {
   fs::path scene = directory_ / "bad.json";
