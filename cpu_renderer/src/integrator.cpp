@@ -19,25 +19,43 @@ Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuris
 // Invisible boundaries a shadow ray crosses at most (each one is a BVH query).
 constexpr int kMaxCrossings = 256;
 
+// A direction turned into the shading frame's upper hemisphere.
+DirectionShading folded_up(DirectionShading d) {
+  const Real3 v = to_kernel(d);
+  return from_kernel<DirectionShading>(Real3{v.x, v.y, std::abs(v.z)});
+}
+
 // A surface point's scattering towards a light: its BSDF in its shading frame.
 struct SurfaceScatter {
   const Bsdf& bsdf;
   const ShadingFrame& frame;
   DirectionShading wo;
   NormalWorld normal;  // the geometric one, on wo's side
-  // The frame's normal is a bump map's or interpolated: light whose side of
-  // the geometric surface is not its side of the shading one does not count.
+  // The frame's normal is a bump map's or interpolated, so the shading and
+  // geometric hemispheres differ (pbrt-v3's BSDF::f rule below).
   bool perturbed;
 
   std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
     DirectionShading wi = frame.to_local(wi_world);
+    const bool reflected = sg::dot(normal, wi_world) > sg::zero;
+    if (perturbed && !bsdf.transmits()) {
+      // pbrt-v3: the geometric normal says whether light is reflected, and a
+      // reflecting BSDF's lobes then count on either side of the shading
+      // normal (at a smooth mesh's silhouette the viewer can be below it, a
+      // light above the surface below it). Evaluated with both directions
+      // folded into the shading hemisphere: Lambert's and Oren–Nayar's value
+      // is pbrt-v3's there, a glossy lobe's its mirror image's.
+      if (!reflected) return std::nullopt;
+      Brdf f = bsdf.eval(folded_up(wo), folded_up(wi));
+      if (sg::is_black(f)) return std::nullopt;
+      return f * sg::abs_cos_theta(wi);
+    }
     const bool above = wi.z() > 0;
     if (!above && !bsdf.transmits()) return std::nullopt;
-    // Reflection or transmission is the geometric normal's to say, as in
-    // pbrt-v3; where the shading frame puts the light on the other side nothing
-    // counts (pbrt-v3's microfacet lobes have nothing there; its Lambertian
-    // ones, with no hemisphere of their own, would count it).
-    if (perturbed && (sg::dot(normal, wi_world) > sg::zero) != above) return std::nullopt;
+    // Through a transmitting BSDF, reflection or transmission is the geometric
+    // normal's to say, as in pbrt-v3; where the shading frame puts the light on
+    // the other side, nothing counts.
+    if (perturbed && reflected != above) return std::nullopt;
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) return std::nullopt;
     return f * sg::abs_cos_theta(wi);
@@ -109,7 +127,10 @@ Radiance Integrator::sample_direct(const SurfaceHit& from, const Scatter& scatte
   Radiance sum;
   const int rounds = one_light_sample ? 1 : light_samples_;
   const Real count = static_cast<Real>(rounds);
-  auto add = [&](const std::optional<LightSample>& light) {
+  // `scattering_share`: what the BSDF's density is scaled by for the MIS
+  // weight, 1 against the BSDF sample of the path (one for all the light
+  // samples), the light's share of the round against a paired BSDF sample.
+  auto add = [&](const std::optional<LightSample>& light, Real scattering_share) {
     if (!light) return;
     std::optional<ScatteringDensity> scattering = scatter.towards(light->wi);
     if (!scattering) return;
@@ -118,7 +139,8 @@ Radiance Integrator::sample_direct(const SurfaceHit& from, const Scatter& scatte
     const int medium = sg::dot(from.normal, light->wi) >= sg::zero ? from_medium.front : from_medium.back;
     Reflectance through = visibility<media>(shadow, t_max, medium, counters);
     if (sg::is_black(through)) return;
-    PdfSolidAngle scattering_pdf = area_lights && mis && !light->delta ? scatter.pdf(light->wi) : PdfSolidAngle(sg::zero);
+    PdfSolidAngle scattering_pdf =
+        area_lights && mis && !light->delta ? scatter.pdf(light->wi) * scattering_share : PdfSolidAngle(sg::zero);
     sum += through * light_contribution<area_lights>(*light, *scattering, scattering_pdf, count, mis);
   };
   for (int i = 0; i < rounds; ++i) {
@@ -127,15 +149,55 @@ Radiance Integrator::sample_direct(const SurfaceHit& from, const Scatter& scatte
         for (int k = 0; k < lights_.samples_of(index); ++k) {
           Real u_within = sampler.next_1d();
           Sample2 u_point = sampler.next_2d();
-          add(lights_.sample_each(index, from.position, time, u_within, u_point.u, u_point.v));
+          const bool paired = area_lights && !media && paired_scatter_samples_ && lights_.has_density(index);
+          add(lights_.sample_each(index, from.position, time, u_within, u_point.u, u_point.v),
+              paired ? lights_.weight_of(index, from.position) * count : Real(1));
+          if (paired) sum += paired_scatter_sample(index, from, scatter, count, sampler, time, counters);
         }
       continue;
     }
     Real u_light = sampler.next_1d();
     Sample2 u_point = sampler.next_2d();
-    add(lights_.sample(from.position, time, u_light, u_point.u, u_point.v));
+    add(lights_.sample(from.position, time, u_light, u_point.u, u_point.v), 1);
   }
   return sum;
+}
+
+template <class Scatter>
+Radiance Integrator::paired_scatter_sample(uint32_t light, const SurfaceHit& from, const Scatter& scatter, Real count,
+                                           Sampler& sampler, Time time, RayCounters& counters) const {
+  Real u_lobe = sampler.next_1d();
+  Sample2 u_direction = sampler.next_2d();
+  if constexpr (std::is_same_v<Scatter, SurfaceScatter>) {
+    // Specular lobes are the path's to follow (as pbrt-v3's SpecularReflect);
+    // the others' directions have the density scatter.pdf, as for the light samples' weights.
+    std::optional<BsdfSample> scattered = scatter.bsdf.sample(scatter.wo, u_lobe, u_direction.u, u_direction.v);
+    if (!scattered || scattered->specular) return {};
+    const DirectionWorld wi = scatter.frame.from_local(scattered->wi);
+    std::optional<ScatteringDensity> f = scatter.towards(wi);
+    if (!f || !lights_.may_be_hit(light, from.position, wi)) return {};
+    ++counters.extension;
+    const TimedRay ray = spawn_ray(from, wi, time);
+    std::optional<SurfaceHit> hit = geometry_.intersect(ray);
+    Radiance emitted;
+    PdfSolidAngle light_pdf = sg::zero;
+    if (hit) {
+      if (lights_.light_at(*hit) != static_cast<int32_t>(light)) return {};
+      emitted = lights_.emitted(*hit, wi);
+      light_pdf = lights_.pdf(from.position, *hit, time) * count;
+    } else {
+      if (!lights_.is_environment(light)) return {};
+      emitted = lights_.environment_radiance(wi);
+      light_pdf = lights_.environment_pdf(from.position, wi) * count;
+    }
+    // The light's densities count its share of the round; the BSDF's the same, so their ratio is the pair's.
+    const Real share = lights_.weight_of(light, from.position) * count;
+    const PdfSolidAngle scattering_pdf = scatter.pdf(wi) * share;
+    if (!(scattering_pdf > sg::zero)) return {};  // a direction the BSDF's sampling cannot draw (a viewer below the shading hemisphere)
+    return *f * emitted * (mis_weight(scattering_pdf, light_pdf) / scattering_pdf);
+  } else {
+    return {};  // media scatter points are not paired (paired_scatter_samples_ is off with media)
+  }
 }
 
 template <bool area_lights, bool one_light_sample, bool gather, bool textured, bool media>
@@ -160,9 +222,11 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
   // After a scattering event that chose a non-specular direction: direct
   // lighting follows mirrors but stops after one such event, once the
   // sampled ray has collected its (MIS-weighted) emission. False: the path ends.
-  auto direct_lighting_goes_on = [&] {
+  // `paired`: the vertex's light samples had BSDF samples of their own
+  // (paired_scatter_sample), which found the lights' emission already.
+  auto direct_lighting_goes_on = [&](bool paired) {
     if (!direct_only_) return true;
-    if (!area_lights || !mis_) return false;
+    if (!area_lights || !mis_ || paired) return false;
     last_vertex = true;
     return true;
   };
@@ -199,7 +263,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
                                          point, phase, MediaAround{medium, medium}, sampler, ray.time, mis_, counters);
           Sample2 u_direction = sampler.next_2d();
           DirectionWorld wi = sample_henyey_greenstein(participating.asymmetry, ray.d, u_direction.u, u_direction.v);
-          if (!direct_lighting_goes_on()) break;
+          if (!direct_lighting_goes_on(false)) break;
           // The phase function is its own density: the throughput stays.
           specular_bounce = false;
           if constexpr (textured) sharp_cone = false;
@@ -315,7 +379,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       const bool reflected_in_shading = (scattered->wi.z() > 0) == (wo.z() > 0);
       if (reflected_geometrically != reflected_in_shading) break;
     }
-    if (!scattered->specular && !direct_lighting_goes_on()) break;
+    if (!scattered->specular && !direct_lighting_goes_on(paired_scatter_samples_ && !lights_.empty())) break;
     throughput *= scattered->weight;
     compression *= scattered->compression;
     if (sg::is_black(throughput)) break;

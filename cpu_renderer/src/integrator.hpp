@@ -42,6 +42,8 @@ class Integrator {
  public:
   Integrator(const Scene& scene, const Geometry& geometry, const Lights& lights, const RenderSettings& settings)
       : scene_(scene), geometry_(geometry), lights_(lights), direct_only_(settings.integrator == IntegratorType::direct),
+        paired_scatter_samples_(direct_only_ && settings.mis && lights.strategy() == LightStrategy::all &&
+                                !scene.has_media()),
         max_depth_(settings.max_depth), mis_(settings.mis), light_samples_(settings.light_samples),
         roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()),
         textures_(scene),
@@ -101,6 +103,13 @@ class Integrator {
   template <bool area_lights, bool one_light_sample, bool media, class Scatter>
   Radiance sample_direct(const SurfaceHit& from, const Scatter& scatter, MediaAround from_medium, Sampler& sampler,
                          Time time, bool mis, RayCounters& counters) const;
+  // pbrt-v3's directlighting pairs each sample of an area light (or the
+  // environment) with a BSDF sample that counts that light's emission alone,
+  // both weighed by MIS: the BSDF half of one pair, `count` rounds of samples
+  // per shading point.
+  template <class Scatter>
+  Radiance paired_scatter_sample(uint32_t light, const SurfaceHit& from, const Scatter& scatter, Real count,
+                                 Sampler& sampler, Time time, RayCounters& counters) const;
   // What one light sample adds through a scattering density (f·cos θ, or a
   // phase function) that is `scattering` towards it and samples it with `scattering_pdf`.
   template <bool area_lights>
@@ -116,6 +125,10 @@ class Integrator {
   const Geometry& geometry_;
   const Lights& lights_;
   bool direct_only_;
+  // Direct lighting with every light sampled (pbrt-v3's directlighting): its
+  // BSDF samples are paired with the light samples (paired_scatter_sample),
+  // instead of one per shading point collecting every light's emission.
+  bool paired_scatter_samples_;
   int max_depth_;
   bool mis_;           // off: emission found by BSDF sampling after a non-specular bounce is dropped
   int light_samples_;  // rounds of next-event samples per shading point (Lights)

@@ -142,6 +142,20 @@ Lights::Lights(const Scene& scene, LightStrategy strategy)
         light.pdf_area = 1.0f / object_area;
       }
     }
+    if (light.motion < 0) {
+      kernel::Bounds3 bounds;
+      if (light.type == Light::Type::sphere) {
+        const Real r = sg::raw(light.radius);
+        bounds.extend(to_kernel(light.position) - Real3{r, r, r});
+        bounds.extend(to_kernel(light.position) + Real3{r, r, r});
+      }
+      for (uint32_t t = 0; light.type == Light::Type::triangles && t < light.triangle_count; ++t) {
+        const EmitterTriangle<World>& triangle = triangles_[light.first_triangle + t];
+        for (PointWorld p : {triangle.p0, triangle.p0 + triangle.e1, triangle.p0 + triangle.e2}) bounds.extend(to_kernel(p));
+      }
+      light.bound_center = from_kernel<PointWorld>(bounds.centroid());
+      light.bound_radius = sg::from_raw<Length>(Real(0.5) * kernel::length(bounds.extent()));
+    }
     light_of_shape_[s] = static_cast<int32_t>(lights_.size());
     lights_.push_back(light);
     // A diffuse emitter radiates π·A·L per side.
@@ -376,6 +390,17 @@ Radiance Lights::emitted(const SurfaceHit& hit, DirectionWorld incoming) const {
   const Light& light = lights_[index];
   if (!light.two_sided && sg::dot(hit.normal, incoming) >= sg::zero) return Radiance{};
   return light.radiance;
+}
+
+bool Lights::may_be_hit(uint32_t index, PointWorld origin, DirectionWorld direction) const {
+  const Light& light = lights_[index];
+  if (!(light.bound_radius > sg::zero)) return true;
+  const VectorWorld to_center = light.bound_center - origin;
+  const Length along = sg::dot(to_center, direction);
+  // Widened for the rounding of this test and of the box (relative 1e-3 of either size).
+  const Length reach = light.bound_radius * Real(1.001) + sg::length(to_center) * Real(1e-3);
+  if (along < -reach) return false;
+  return sg::length_squared(to_center) - along * along <= reach * reach;
 }
 
 PdfSolidAngle Lights::pdf(PointWorld reference, const SurfaceHit& hit, Time time) const {

@@ -64,6 +64,22 @@ class Lights {
   LightStrategy strategy() const { return strategy_; }
   // With LightStrategy::all: the shadow rays light `index` takes per round.
   int samples_of(uint32_t index) const { return lights_[index].samples; }
+  // An area light or the environment: a light whose samples have a density
+  // over directions, which a BSDF sample can find too.
+  bool has_density(uint32_t index) const {
+    const Light::Type type = lights_[index].type;
+    return type == Light::Type::triangles || type == Light::Type::sphere || type == Light::Type::environment;
+  }
+  bool is_environment(uint32_t index) const { return lights_[index].type == Light::Type::environment; }
+  // False only when a ray from `origin` along `direction` cannot reach light
+  // `index` (it misses a sphere around it): a cheap test before tracing one.
+  bool may_be_hit(uint32_t index, PointWorld origin, DirectionWorld direction) const;
+  // The light whose surface `hit` is on; -1: none.
+  int32_t light_at(const SurfaceHit& hit) const { return light_of_shape_[hit.shape]; }
+  // Light `light`'s share of a round at `reference`: the probability of
+  // choosing it, or with LightStrategy::all its samples per round. Every
+  // density of its samples (LightSample::pdf, pdf(), environment_pdf()) includes it.
+  Real weight_of(uint32_t light, PointWorld reference) const;
 
   // One round of next-event estimation is one sample() (power, uniform or
   // spatial strategy), or samples_of(l) calls of sample_each(l) for every
@@ -115,6 +131,9 @@ class Lights {
     PointObject object_center;
     Length object_radius = sg::zero;
     int samples = 1;  // per round, with LightStrategy::all
+    // A sphere around a static area light (may_be_hit); radius 0: none known.
+    PointWorld bound_center;
+    Length bound_radius = sg::zero;
   };
   // A point on a light: position, its rounding-error box, unit normal, and the
   // density per unit area.
@@ -138,7 +157,6 @@ class Lights {
 
   // The light choice's distribution at `reference`; a light's share of a round.
   std::span<const Real> choice_cdf(PointWorld reference) const;
-  Real weight_of(uint32_t light, PointWorld reference) const;
 
   std::vector<Light> lights_;
   std::vector<EmitterTriangle<World>> triangles_;

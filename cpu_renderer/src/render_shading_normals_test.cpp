@@ -65,12 +65,23 @@ TEST(RenderShadingNormals, ATiltedNormalIsLitByItsOwnCosine) {
   }
 }
 
+// The sun above the surface but 100 degrees from the tilted normal: pbrt-v3's
+// rule (the geometric normal says reflection, the Lambertian lobe has no
+// hemisphere of its own) lights it by the cosine's magnitude, as pbrt-v3 does.
+TEST(RenderShadingNormals, ASunBelowTheTiltedNormalButAboveTheSurfaceStillLightsIt) {
+  const double tilt = 40 * kPiD / 180, sun = 60 * kPiD / 180;
+  const std::string tilted = vec(std::sin(tilt), 0, std::cos(tilt));
+  const Scene smooth = quad_scene(vec(-std::sin(sun), 0, std::cos(sun)), tilted + " " + tilted + " " + tilted + " " + tilted);
+  for (const Knobs& knobs : estimator_knobs())
+    expect_uniform(render_scene(smooth, 4, 2, std::nullopt, knobs.apply), lit(std::abs(std::cos(tilt + sun))), knobs.name);
+}
+
 // A translucent quad that only transmits (Kd 0.5, transmit 1), the sun below
 // it: lit through the surface by the cosine to its shading normal, where
 // that puts the sun below as well. Where the tilted normal puts the sun above
-// (the geometric normal still below), it counts nothing, the rule for light
-// on the two sides of a tilted normal that reflection follows too (pbrt-v3's
-// LambertianTransmission, with no hemisphere of its own, would count it).
+// (the geometric normal still below), it counts nothing: a transmitting BSDF
+// keeps to the shading normal's sides (pbrt-v3's LambertianTransmission, with
+// no hemisphere of its own, would count it; reflection follows pbrt-v3, above).
 // Nor does a sun above the surface that the tilted normal puts below: the
 // geometric normal says reflection, which this material has none of.
 TEST(RenderShadingNormals, ATiltedNormalTransmitsByItsOwnCosine) {
