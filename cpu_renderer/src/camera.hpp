@@ -69,12 +69,6 @@ class CameraRays {
   bool has_lens() const { return lens_radius_ > sg::zero && projection_ != CameraProjection::environment; }
   bool has_shutter() const { return shutter_span_ > sg::zero; }
 
-  // A ray through a point uniform over pixel (pixel_x, pixel_y).
-  TimedRay generate(int pixel_x, int pixel_y, Sampler& sampler) const {
-    const Sample2 film = sampler.next_2d();
-    return generate_at(static_cast<Real>(pixel_x) + film.u, static_cast<Real>(pixel_y) + film.v, sampler);
-  }
-
   // A ray through the image point (x, y), in pixels from the top left corner.
   TimedRay generate_at(Real x, Real y, Sampler& sampler) const {
     const Real fx = x * inverse_width_;
