@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -13,14 +14,13 @@ namespace safegi::render {
 namespace {
 
 TEST(Lights, MayBeHitNeverMissesARayThatReachesTheLight) {
-  // A 2 m × 1 m emitting quad at z = 0 (light 0) and an emitting sphere of 0.5 m around (0, 2, 0) (light 1).
-  Scene scene = parse_scene(R"json({
-    "camera": {"position": ["0 m", "0 m", "5 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 1, 0], "fov": "40 deg"},
-    "shapes": [
-      {"type": "quad", "origin": ["-1 m", "-1 m", "0 m"], "edge_u": ["2 m", "0 m", "0 m"], "edge_v": ["0 m", "1 m", "0 m"],
-       "emission": "3 W/(m2 sr)"},
-      {"type": "sphere", "center": ["0 m", "2 m", "0 m"], "radius": "0.5 m", "emission": "1 W/(m2 sr)"}]})json",
-                            "test.json", ".");
+  // An emitting sphere of 0.5 m around (0, 2, 0) (light 0) and a 2 m × 1 m emitting quad at z = 0 (light 1).
+  const std::string sphere =
+      R"j({"type": "sphere", "center": ["0 m", "2 m", "0 m"], "radius": "0.5 m", "emission": "1 W/(m2 sr)"})j";
+  const std::string quad = R"j({"type": "quad", "origin": ["-1 m", "-1 m", "0 m"], "edge_u": ["2 m", "0 m", "0 m"],)j"
+                           R"j( "edge_v": ["0 m", "1 m", "0 m"], "emission": "1 W/(m2 sr)"})j";
+  const std::string camera = R"({"position": ["0 m", "0 m", "5 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 1, 0], "fov": "40 deg"})";
+  Scene scene = parse_scene(R"({"camera": )" + camera + R"(, "shapes": [)" + sphere + ", " + quad + "]}", "test.json", ".");
   Lights lights(scene);
   ASSERT_EQ(lights.size(), 2u);
   std::mt19937 rng(7);
@@ -42,7 +42,7 @@ TEST(Lights, MayBeHitNeverMissesARayThatReachesTheLight) {
     const double cx = -ox, cy = 2 - oy, cz = -oz, along = cx * dx + cy * dy + cz * dz;
     const double centre2 = cx * cx + cy * cy + cz * cz;
     const bool reaches_sphere = centre2 - along * along <= 0.25 && (along > 0 || centre2 <= 0.25);
-    for (auto [light, reaches, hits] : {std::tuple{0u, reaches_quad, &quad_hits}, std::tuple{1u, reaches_sphere, &sphere_hits}}) {
+    for (auto [light, reaches, hits] : {std::tuple{1u, reaches_quad, &quad_hits}, std::tuple{0u, reaches_sphere, &sphere_hits}}) {
       const bool may = lights.may_be_hit(light, origin, direction);
       if (reaches) {
         ++*hits;
