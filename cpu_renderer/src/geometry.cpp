@@ -333,7 +333,7 @@ bool Geometry::occluded(const TimedRay& ray, Length t_max) const {
 bool Geometry::masked(const SurfaceHit& hit, Time time, bool shadow) const {
   const Shape& shape = (*masked_shapes_)[hit.shape];
   auto zero_at_hit = [&](const std::optional<TexturedReflectance>& mask) {
-    return mask && sg::raw(mask_textures_->reflectance_at(*mask, hit, sg::zero, time)).x == 0;
+    return mask && sg::raw(mask_textures_->reflectance_at(*mask, hit, ConeFootprint{}, time)).x == 0;
   };
   return zero_at_hit(shape.alpha) || (shadow && zero_at_hit(shape.shadow_alpha));
 }

@@ -317,14 +317,14 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (shape.material < 0) break;
     // The cone's width across the surface, stretched by its tilt (a plain ratio).
     auto footprint = [&] {
-      Real tilt = std::max(std::abs(sg::dot(sg::to_direction(hit->normal), ray.d)), Real(1e-3));
-      return sharp_cone ? (pixel_cone_.width + travelled * (pixel_cone_.spread / units::radian)) / tilt : Length(sg::zero);
+      return ConeFootprint{sharp_cone ? pixel_cone_.width + travelled * (pixel_cone_.spread / units::radian) : Length(sg::zero),
+                           ray.d};
     };
     if constexpr (textured) travelled += hit->distance;
     const Material* chosen = &scene_.materials[shape.material];
     if (chosen->mix) {
       const MaterialChoice choice =
-          choose_material(scene_, textures_, shape.material, *hit, ray.d, textured ? footprint() : Length(sg::zero), ray.time);
+          choose_material(scene_, textures_, shape.material, *hit, textured ? footprint() : ConeFootprint{.direction = ray.d}, ray.time);
       if (!choice.material) break;
       chosen = choice.material;
       if (choice.weighted) throughput *= choice.weight;

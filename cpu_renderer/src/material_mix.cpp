@@ -25,7 +25,8 @@ bool scatters_non_specularly(const Scene& scene, int index) {
 }
 
 MaterialChoice choose_material(const Scene& scene, const SurfaceTextures& textures, int index, const SurfaceHit& hit,
-                               DirectionWorld incoming, Length width, Time time) {
+                               const ConeFootprint& footprint, Time time) {
+  const DirectionWorld incoming = footprint.direction;
   MaterialChoice choice;
   // A mix names materials made before it, so the chain ends; the bound only
   // guards a malformed Scene built by hand.
@@ -37,7 +38,7 @@ MaterialChoice choose_material(const Scene& scene, const SurfaceTextures& textur
     }
     const MaterialMix& mix = *material.mix;
     // In [0, 1]: the importer checks the amount as a reflectance.
-    const Reflectance amount = textures.reflectance_at(mix.amount, hit, width, time);
+    const Reflectance amount = textures.reflectance_at(mix.amount, hit, footprint, time);
     const Real p = sg::average(amount);
     const sg::vec3_rep channels = amount.raw_value();
     const bool grey = channels.r == channels.g && channels.g == channels.b;

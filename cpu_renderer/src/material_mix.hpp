@@ -23,10 +23,11 @@ struct MaterialChoice {
   bool weighted = false;               // weight is not 1 (a coloured amount)
 };
 
-// The material `index` stands for at `hit` (mixes resolved, nested ones too);
-// `width`: the texture footprint there, as for the diffuse reflectance.
+// The material `index` stands for at `hit` (mixes resolved, nested ones too),
+// reached by a ray along `footprint.direction`; the amounts' textures
+// filtered over `footprint`, as the diffuse reflectance is.
 MaterialChoice choose_material(const Scene& scene, const SurfaceTextures& textures, int index, const SurfaceHit& hit,
-                               DirectionWorld incoming, Length width, Time time);
+                               const ConeFootprint& footprint, Time time);
 
 // Whether any material `index` may stand for is not specular (where caustic
 // photons land).

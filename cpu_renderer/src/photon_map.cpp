@@ -87,7 +87,7 @@ void PhotonMap::trace(const Scene& scene, const Geometry& geometry, const Lights
         photons_.push_back({hit->position, -segment.d, facing, flux});
         received[hit->shape] = true;
       }
-      const MaterialChoice choice = choose_material(scene, textures, shape.material, *hit, segment.d, sg::zero, time);
+      const MaterialChoice choice = choose_material(scene, textures, shape.material, *hit, ConeFootprint{.direction = segment.d}, time);
       if (!choice.material || !is_specular(choice.material->model)) break;
       if (choice.weighted) flux = flux * choice.weight;
       const Material& material = *choice.material;

@@ -230,8 +230,8 @@ Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at) 
         } else if constexpr (PlanarPattern<std::remove_cvref_t<decltype(p)>>) {
           const Mapping2D& m = p.mapping;
           const TextureCoordinates st = m.at(at.u, at.v, at.position);
-          const Real footprint = m.kind == Mapping2D::Kind::uv ? at.uv_footprint : Real(0);
-          return sample(p, st.s, st.t, footprint * std::abs(m.u_scale), footprint * std::abs(m.v_scale));
+          if (m.kind != Mapping2D::Kind::uv) return sample(p, st.s, st.t, 0, 0);
+          return sample(p, st.s, st.t, at.u_footprint * std::abs(m.u_scale), at.v_footprint * std::abs(m.v_scale));
         } else {
           const Real footprint = at.width * p.mapping.stretch / p.mapping.unit;
           return sample(p, solid_point(p.mapping, at.position), footprint);

@@ -105,22 +105,24 @@ TEST(ProceduralTexture, CheckerboardCellsAlternateOnBothSidesOfZero) {
 }
 
 // The closed form is the box filter's exact average: compare it with a
-// 400 × 400 midpoint average of point samples over the same box.
+// 400 × 400 midpoint average of point samples over the same box, as wide in
+// u and in v as the lookup says (a footprint stretched along one of them too).
 TEST(ProceduralTexture, CheckerboardBoxFilterIsTheAverageOverTheFootprint) {
   const Pattern filtered = board(true), point = board(false);
-  const Real cases[][3] = {{0.5f, 0.5f, 0.2f}, {0.9f, 0.3f, 0.25f}, {1.1f, 0.95f, 0.3f}, {-0.2f, 2.05f, 0.7f},
-                           {3.3f, -1.6f, 2.5f}};
+  const Real cases[][4] = {{0.5f, 0.5f, 0.2f, 0.2f}, {0.9f, 0.3f, 0.25f, 0.25f}, {1.1f, 0.95f, 0.3f, 0.05f},
+                           {-0.2f, 2.05f, 0.1f, 0.7f}, {3.3f, -1.6f, 2.5f, 2.5f}};
   for (const auto& c : cases) {
-    const Real u = c[0], v = c[1], width = c[2];
+    const Real u = c[0], v = c[1], width_u = c[2], width_v = c[3];
     double sum = 0;
     constexpr int n = 400;
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
-        Real du = (2 * (i + 0.5f) / n - 1) * width, dv = (2 * (j + 0.5f) / n - 1) * width;
+        Real du = (2 * (i + 0.5f) / n - 1) * width_u, dv = (2 * (j + 0.5f) / n - 1) * width_v;
         sum += channel(evaluate(point, PatternLookup{.u = u + du, .v = v + dv}), 0);
       }
-    const Real closed = channel(evaluate(filtered, PatternLookup{.u = u, .v = v, .uv_footprint = width}), 0);
-    EXPECT_NEAR(closed, sum / (n * n), 4e-3) << u << ", " << v << ", " << width;
+    const Real closed =
+        channel(evaluate(filtered, PatternLookup{.u = u, .v = v, .u_footprint = width_u, .v_footprint = width_v}), 0);
+    EXPECT_NEAR(closed, sum / (n * n), 4e-3) << u << ", " << v << ", " << width_u << " × " << width_v;
   }
 }
 

@@ -95,32 +95,46 @@ TexCoord SurfaceTextures::uv(const SurfaceHit& hit, Time time) const {
   return triangle_uv(shape, first, placed_corners(shape, placed, first), hit.position);
 }
 
-Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const {
+Reflectance SurfaceTextures::diffuse(const Material& material, const SurfaceHit& hit, const ConeFootprint& footprint,
+                                     Time time) const {
   const TexturedReflectance* diffuse = diffuse_of(material);
-  return diffuse ? reflectance_at(*diffuse, hit, width, time) : Reflectance{};
+  return diffuse ? reflectance_at(*diffuse, hit, footprint, time) : Reflectance{};
 }
 
-Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit, Length width,
-                                            Time time) const {
+Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit,
+                                            const ConeFootprint& footprint, Time time) const {
   const TexturedReflectance* diffuse = &reflectance;
   if (!diffuse->textured()) return diffuse->value;
+  // Isotropic lookups take the ellipse's long axis.
+  const bool filtered = footprint.width > sg::zero;
+  const Length width =
+      filtered ? footprint.width / std::max(std::abs(sg::dot(sg::to_direction(hit.normal), footprint.direction)), Real(1e-3))
+               : Length(sg::zero);
   if (diffuse->pattern >= 0) {
     const Pattern& pattern = scene_.patterns[diffuse->pattern].pattern;
     PatternLookup lookup{.position = hit.position, .width = width};
     if (reads_uv(pattern)) {
-      TexCoord at = uv(hit, time);
-      lookup.u = at.u;
-      lookup.v = at.v;
-      lookup.uv_footprint = width * uv_per_length_[hit.shape];
+      if (filtered) {
+        const Derivatives at = derivatives(hit, time);
+        lookup.u = at.uv.u;
+        lookup.v = at.uv.v;
+        const Real isotropic = sg::raw(width * uv_per_length_[hit.shape]);  // where (u, v) has no frame
+        std::tie(lookup.u_footprint, lookup.v_footprint) =
+            cone_uv_extent(at.dp_du, at.dp_dv, hit.normal, footprint).value_or(std::pair{isotropic, isotropic});
+      } else {
+        const TexCoord at = uv(hit, time);
+        lookup.u = at.u;
+        lookup.v = at.v;
+      }
     }
     return diffuse->value * evaluate(pattern, lookup);
   }
   const ImageTexture& texture = scene_.textures[diffuse->texture];
   TexCoord at = uv(hit, time);
   const TextureCoordinates st = texture.mapping.at(at.u, at.v, hit.position);
-  const Real footprint = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();
-  if (texture.filter == TextureFilter::bilinear || !(footprint > 0)) return diffuse->value * texture.mipmap->bilinear(0, st.s, st.t);
-  return diffuse->value * texture.mipmap->trilinear(st.s, st.t, footprint);
+  const Real texels = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();  // pbrt-v3's trilinear: isotropic too
+  if (texture.filter == TextureFilter::bilinear || !(texels > 0)) return diffuse->value * texture.mipmap->bilinear(0, st.s, st.t);
+  return diffuse->value * texture.mipmap->trilinear(st.s, st.t, texels);
 }
 
 namespace {
@@ -142,6 +156,31 @@ Real luminance_at(const ImageTexture& texture, TexCoord at, PointWorld position)
 }
 
 }  // namespace
+
+std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+                                                    const ConeFootprint& footprint) {
+  // Plain numbers in metres: the solve mixes the axes' lengths with dp/du's.
+  const Real3 n = to_kernel(sg::to_direction(normal)), direction = to_kernel(footprint.direction);
+  const Real cosine = kernel::dot(n, direction);
+  const Real tilt = std::max(std::abs(cosine), Real(1e-3));
+  Real3 along = direction - n * cosine;  // the slope's direction on the surface
+  if (!(kernel::length(along) > Real(1e-6))) along = to_kernel(perpendiculars(sg::to_direction(normal)).first);
+  along = kernel::normalize(along);
+  const Real3 across = kernel::cross(n, along);
+  const Real width = sg::raw(footprint.width);
+  const Real3 axes[2] = {along * (width / tilt), across * width};
+  const Real3 pu = to_kernel(dp_du), pv = to_kernel(dp_dv);
+  const Real uu = kernel::dot(pu, pu), uv = kernel::dot(pu, pv), vv = kernel::dot(pv, pv);
+  const Real determinant = uu * vv - uv * uv;
+  if (!(determinant > 1e-12f * uu * vv)) return std::nullopt;
+  Real du = 0, dv = 0;
+  for (const Real3& axis : axes) {
+    const Real along_u = kernel::dot(pu, axis), along_v = kernel::dot(pv, axis);
+    du = std::max(du, std::abs((vv * along_u - uv * along_v) / determinant));
+    dv = std::max(dv, std::abs((uu * along_v - uv * along_u) / determinant));
+  }
+  return std::pair{du, dv};
+}
 
 SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit, Time time) const {
   const Shape& shape = scene_.shapes[hit.shape];

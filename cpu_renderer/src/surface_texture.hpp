@@ -7,8 +7,12 @@
 // bounces before the hit) it covers t · spread (narrowed by 1/√spp, as pbrt-v3
 // narrows its ray differentials), stretched by 1/|cos θ| on a
 // tilted surface; a shape's (u, v) area per world area turns that into
-// texture units. After a diffuse bounce the footprint is taken as zero (the
-// finest level, bilinear), as pbrt-v3 does for rays without differentials.
+// texture units. A pattern in (u, v) (a checkerboard) is filtered over the
+// cone's ellipse instead, its extent in u and in v each (pbrt-v3's
+// max(|ds/dx|, |ds/dy|) and its t twin): a check seen at a grazing angle is
+// blurred along the slope, not across it. After a diffuse bounce the
+// footprint is taken as zero (the finest level, bilinear), as pbrt-v3 does
+// for rays without differentials.
 #pragma once
 
 #include <optional>
@@ -20,6 +24,21 @@
 
 namespace safegi::render {
 
+// Where a ray cone meets a surface: its width across (zero: the finest level,
+// no filtering) and the ray's direction, along whose slope it stretches.
+struct ConeFootprint {
+  Length width = sg::zero;
+  DirectionWorld direction{0, 0, 1};
+};
+
+// The cone's ellipse on a surface of normal `normal` (`width` across the
+// ray's slope, width/|cos θ| along it), each of its two axes written in
+// `dp_du` and `dp_dv` by least squares: the largest |du| and the largest |dv|
+// of the two (pbrt-v3's max(|du/dx|, |du/dy|) and its v twin). Nothing where
+// dp/du and dp/dv are parallel.
+std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+                                                    const ConeFootprint& footprint);
+
 class SurfaceTextures {
  public:
   explicit SurfaceTextures(const Scene& scene);
@@ -30,10 +49,11 @@ class SurfaceTextures {
   TexCoord uv(const SurfaceHit& hit, Time time) const;
 
   // The diffuse reflectance of `material` at `hit`, its texture (if any)
-  // filtered over a footprint `width` across (zero: the finest level).
-  Reflectance diffuse(const Material& material, const SurfaceHit& hit, Length width, Time time) const;
+  // filtered over `footprint`.
+  Reflectance diffuse(const Material& material, const SurfaceHit& hit, const ConeFootprint& footprint, Time time) const;
   // Any textured reflectance at `hit`, filtered alike.
-  Reflectance reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit, Length width, Time time) const;
+  Reflectance reflectance_at(const TexturedReflectance& reflectance, const SurfaceHit& hit,
+                             const ConeFootprint& footprint, Time time) const;
 
   // The normal of the surface `bump` displaces (pbrt-v3's Material::Bump), on
   // the side of the hit's geometric normal; that normal where it is undefined.

@@ -1,9 +1,14 @@
 // Texture filtering against values computed by hand: the MIP pyramid's box
 // filter, bilinear weights around texel centres, wrap modes, the trilinear
-// blend between levels, and the sRGB decoding of reflectance textures.
+// blend between levels, the sRGB decoding of reflectance textures, and a ray
+// cone's extent in (u, v).
 #include "safegi/cpu_renderer/texture.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "surface_texture.hpp"
 
 namespace safegi::render {
 namespace {
@@ -86,6 +91,36 @@ TEST(Texture, SrgbDecodingAndRowFlip) {
   EXPECT_NEAR(decoded.rgb[0], 0.2140411f, 1e-6f);
   EXPECT_FLOAT_EQ(decoded.rgb[2], 1.0f);  // encoded values beyond 1 clamp
   EXPECT_THROW(MipMap(Image{2, 2, {1, 2, 3}}, TextureWrap::repeat), std::invalid_argument);
+}
+
+// A cone 0.1 m wide meets the plane z = 0, where u runs 2 m along x and v
+// 2 m along y: head on, 0.05 in each; tilted 60 degrees towards x, stretched
+// to 0.1 in u only; towards y, in v only; with (u, v) turned 45 degrees, the
+// ellipse's two axes each reach both, the long one deciding.
+TEST(ConeFootprint, ItsExtentInUAndVFollowsTheSlope) {
+  const Length metre = Real(1) * units::meter;
+  const NormalWorld up(0, 0, 1);
+  const Real c = std::cos(Real(1.0471976)), s = std::sin(Real(1.0471976));
+  auto extent = [&](VectorWorld dp_du, VectorWorld dp_dv, DirectionWorld direction) {
+    return cone_uv_extent(dp_du, dp_dv, up, ConeFootprint{Real(0.1) * metre, direction}).value();
+  };
+  const VectorWorld along_x(2 * metre, 0 * metre, 0 * metre), along_y(0 * metre, 2 * metre, 0 * metre);
+  auto [head_on_u, head_on_v] = extent(along_x, along_y, DirectionWorld(0, 0, -1));
+  EXPECT_NEAR(head_on_u, 0.05f, 1e-6f);
+  EXPECT_NEAR(head_on_v, 0.05f, 1e-6f);
+  auto [x_u, x_v] = extent(along_x, along_y, DirectionWorld(s, 0, -c));
+  EXPECT_NEAR(x_u, 0.1f, 1e-5f);
+  EXPECT_NEAR(x_v, 0.05f, 1e-6f);
+  auto [y_u, y_v] = extent(along_x, along_y, DirectionWorld(0, -s, -c));
+  EXPECT_NEAR(y_u, 0.05f, 1e-6f);
+  EXPECT_NEAR(y_v, 0.1f, 1e-5f);
+  const Real h = std::sqrt(Real(0.5));
+  const VectorWorld diagonal_u(2 * h * metre, 2 * h * metre, 0 * metre), diagonal_v(-2 * h * metre, 2 * h * metre, 0 * metre);
+  auto [d_u, d_v] = extent(diagonal_u, diagonal_v, DirectionWorld(s, 0, -c));
+  EXPECT_NEAR(d_u, 0.1f * h, 1e-5f);
+  EXPECT_NEAR(d_v, 0.1f * h, 1e-5f);
+  // dp/du parallel to dp/dv: no frame to write the ellipse in.
+  EXPECT_FALSE(cone_uv_extent(along_x, along_x, up, ConeFootprint{Real(0.1) * metre, DirectionWorld(0, 0, -1)}));
 }
 
 }  // namespace

@@ -125,12 +125,12 @@ struct ProceduralTexture {
   Pattern pattern;
 };
 
-// Where a surface is looked up: its (u, v) and how far (u, v) moves between
-// neighbouring camera rays; its position and the footprint's width across it
-// (zero widths: no filtering).
+// Where a surface is looked up: its (u, v) and how far u and v each move
+// across the footprint; its position and the footprint's width (zero widths:
+// no filtering).
 struct PatternLookup {
   Real u = 0.0f, v = 0.0f;
-  Real uv_footprint = 0.0f;
+  Real u_footprint = 0.0f, v_footprint = 0.0f;
   PointWorld position;
   Length width = sg::zero;
 };
