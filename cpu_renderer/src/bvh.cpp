@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <condition_variable>
 #include <deque>
 #include <cstring>
@@ -47,6 +48,10 @@ struct Bin {
     lower = box_lower < lower ? box_lower : lower;
     upper = box_upper > upper ? box_upper : upper;
   }
+  void merge(const Bin& other) {
+    count += other.count;
+    extend(other.lower, other.upper);
+  }
   Bounds3 bounds() const {  // an empty bin's lanes are still ±inf: Bounds3{}
     Bounds3 box;
     box.lower = {lower[0], lower[1], lower[2]};
@@ -88,7 +93,7 @@ class Bvh::Builder {
       : bounds_of_(bounds_of),
         order_(order),
         max_leaf_size_(static_cast<uint32_t>(std::max(1, max_leaf_size))),
-        batch_width_(static_cast<uint32_t>(std::max(1, batch_width))) {
+        batch_shift_(static_cast<uint32_t>(std::bit_width(static_cast<uint32_t>(std::max(1, batch_width))) - 1)) {
     records_.resize(count);
   }
 
@@ -204,13 +209,9 @@ class Bvh::Builder {
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
       if (!(centroid_bounds.upper[axis] - centroid_bounds.lower[axis] > 0)) continue;
-      AxisBins bins = chunk_bins(0)[axis];
+      AxisBins& bins = chunk_bins(0)[axis];  // the other chunks' added in place
       for (int chunk = 1; chunk < chunks; ++chunk)
-        for (int b = 0; b < kBinCount; ++b) {
-          const Bin& other = chunk_bins(chunk)[axis][b];
-          bins[b].count += other.count;
-          bins[b].extend(other.lower, other.upper);
-        }
+        for (int b = 0; b < kBinCount; ++b) bins[b].merge(chunk_bins(chunk)[axis][b]);
       // Sweep from the right to get every right side, then from the left.
       Bounds3 right_bounds[kBinCount];
       uint32_t right_count[kBinCount];
@@ -236,8 +237,10 @@ class Bvh::Builder {
     return best;
   }
 
-  // The leaf tests `count` primitives take.
-  Real batches(uint32_t count) const { return static_cast<Real>((count + batch_width_ - 1) / batch_width_); }
+  // The leaf tests `count` primitives take (a shift: the SAH sweep asks twice per bin).
+  Real batches(uint32_t count) const {
+    return static_cast<Real>((count + (uint32_t{1} << batch_shift_) - 1) >> batch_shift_);
+  }
 
   Side side_of(uint32_t begin, uint32_t end) const {
     Side side;
@@ -399,7 +402,7 @@ class Bvh::Builder {
   const std::function<Bounds3(uint32_t)>& bounds_of_;
   std::vector<uint32_t>& order_;
   const uint32_t max_leaf_size_;
-  const uint32_t batch_width_;
+  const uint32_t batch_shift_;  // log2 of the batch width (a power of two, see Bvh's constructor)
   // The primitives as the build moves them: their partitions are contiguous,
   // so every pass over a node's primitives reads memory in order.
   std::vector<Record> records_;

@@ -81,8 +81,9 @@ class Bvh {
   explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
   // The same over `count` primitives whose bounds `bounds_of(i)` gives (called
   // once each, from the build's threads), so that no array of them is kept.
-  // `batch_width`: how many primitives the caller's leaf test takes at once;
-  // the SAH then prices a leaf by whole batches (4 triangles cost one test).
+  // `batch_width`: how many primitives the caller's leaf test takes at once
+  // (a power of two, 1 or 4; another is taken down to one); the SAH then
+  // prices a leaf by whole batches (4 triangles cost one test).
   Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
       int batch_width = 1);
 
