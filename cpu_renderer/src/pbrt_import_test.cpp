@@ -607,13 +607,13 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(sg::raw(diffuse(tinted).value), glm::vec3(0.5f, 1, 1));  // "scale": the constant times the image
   EXPECT_EQ(s.shapes[1].uvs[1].u, 2.0f);                      // "st" when there is no "uv"
   EXPECT_EQ(diffuse(s.materials.at(s.shapes[2].material)).texture, 2);
-  EXPECT_EQ(g.filter, TextureFilter::bilinear);  // pbrt-v3's footprint shrinks as 1/sqrt(spp): said once
+  EXPECT_EQ(g.filter, TextureFilter::trilinear);  // pbrt-v3's "trilinear"; its default EWA is said once
   EXPECT_EQ(scene.warnings,
-            "scene.pbrt:2:1: warning: image textures are looked up bilinearly here, not filtered as pbrt-v3 filters "
-            "them (EWA, or trilinear)\nTexture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float "
+            "scene.pbrt:2:1: warning: image textures are filtered trilinearly here, not by pbrt-v3's EWA\n"
+            "Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float "
             "uscale\" 2 \"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5\n^~~~~~~\n"
-            "help: pbrt-v3's filter width shrinks as 1/sqrt(spp), so both converge to the same image; at low spp "
-            "pbrt-v3's is a little blurrier where a texture is minified\n");
+            "help: where a texture is seen at a grazing angle, pbrt-v3's EWA blurs it along the slope only, trilinear "
+            "across it too; add \"bool trilinear\" \"true\" to filter it as here\n");
 
   const std::string hot = "Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"hot.exr\" \"bool trilinear\" \"true\"\n";
   EXPECT_EQ(import_error(world(used(hot + "Material \"matte\" \"texture Kd\" \"h\"")), with_images()),

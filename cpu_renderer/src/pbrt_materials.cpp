@@ -703,18 +703,17 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
   else if (wrap_name != "repeat")
     params.fail_at(*params.find("wrap", {ParamType::string}), "wrap mode \"" + wrap_name + "\" is unknown",
                    "pbrt-v3 has \"repeat\", \"black\" and \"clamp\" (and would silently repeat)");
-  // pbrt-v3 filters over a footprint of its ray differentials scaled by
-  // 1/sqrt(spp) (SamplerIntegrator::Render): as the samples grow its image
-  // converges to the unfiltered texture, which the bilinear lookup of level 0
-  // gives (the pixel's samples do the antialiasing); our trilinear lookup over
-  // the whole pixel's cone would converge to a blurrier one.
-  texture.filter = TextureFilter::bilinear;
-  params.one_bool("trilinear", false);
+  // pbrt-v3 filters over its ray differentials scaled by 1/sqrt(spp)
+  // (SamplerIntegrator::Render); our trilinear lookup over the ray cone,
+  // narrowed alike, is its "trilinear" (isotropic, the footprint's long axis).
+  // Its default, EWA, is anisotropic: said once.
+  texture.filter = TextureFilter::trilinear;
+  const bool trilinear = params.one_bool("trilinear", false);
   params.one_float("maxanisotropy", 8);
-  if (filter_warned_++ == 0)
-    warn(at, "image textures are looked up bilinearly here, not filtered as pbrt-v3 filters them (EWA, or trilinear)",
-         "pbrt-v3's filter width shrinks as 1/sqrt(spp), so both converge to the same image; at low spp pbrt-v3's "
-         "is a little blurrier where a texture is minified");
+  if (!trilinear && filter_warned_++ == 0)
+    warn(at, "image textures are filtered trilinearly here, not by pbrt-v3's EWA",
+         "where a texture is seen at a grazing angle, pbrt-v3's EWA blurs it along the slope only, trilinear "
+         "across it too; add \"bool trilinear\" \"true\" to filter it as here");
   Image image = read_image(*filename);
   texture.mipmap = std::make_shared<MipMap>(
       to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(scale), true), wrap);
