@@ -208,9 +208,9 @@ TEST(PbrtImport, PixelFiltersArePbrtV3sWithItsDefaults) {
   EXPECT_EQ(filter_of("PixelFilter \"triangle\"").type, PixelFilterType::triangle);
   EXPECT_EQ(import_error("PixelFilter \"lanczos\"\n" + world("")),
             "scene.pbrt:1:13: error: unknown pixel filter \"lanczos\"\nPixelFilter \"lanczos\"\n            ^~~~~~~~~\n"
-            "help: pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"\n");
+            "help: expected \"box\", \"triangle\", \"gaussian\", \"mitchell\" or \"sinc\" (pbrt-v3's five)\n");
   EXPECT_EQ(import_error("PixelFilter \"box\" \"float xwidth\" 0\n" + world("")),
-            "scene.pbrt:1:19: error: a filter's \"float xwidth\" must be above 0 and at most 64 pixels\n"
+            "scene.pbrt:1:19: error: a filter's \"float xwidth\" must be 0.001 to 64 pixels\n"
             "PixelFilter \"box\" \"float xwidth\" 0\n                  ^~~~~~~~~~~~~~\n");
   EXPECT_EQ(first_line(import_error("PixelFilter \"gaussian\" \"float alpha\" -1\n" + world(""))),
             "scene.pbrt:1:24: error: a filter's \"float alpha\" must be in (0, 1e6]");

@@ -421,7 +421,7 @@ void Importer::pixel_filter(const Directive& d) {
   const std::optional<PixelFilterType> named = pixel_filter_named(type);
   if (!named)
     fail(d.string_ranges[0], "unknown pixel filter \"" + type + "\"",
-         "pbrt-v3 has \"box\", \"gaussian\", \"mitchell\", \"sinc\" and \"triangle\"");
+         "expected " + quoted_choices(kPixelFilterNames) + " (pbrt-v3's five)");
   PixelFilter filter;
   filter.type = *named;
   // Each number bounded (the JSON loader bounds its own alike): a filter of NaNs would make NaN pixels.
@@ -432,9 +432,16 @@ void Importer::pixel_filter(const Directive& d) {
                      std::string("a filter's \"float ") + name + "\" must be " + what);
     return value;
   };
-  const double radius = default_filter_radius(filter.type);
-  filter.radius_x = read("xwidth", radius, 0, kMaxFilterRadius, "above 0 and at most 64 pixels");
-  filter.radius_y = read("ywidth", radius, 0, kMaxFilterRadius, "above 0 and at most 64 pixels");
+  // The radii as the JSON loader bounds them.
+  auto radius = [&](const char* name) {
+    const double value = params.one_float(name, default_filter_radius(filter.type));
+    if (!(value >= kMinFilterRadius && value <= kMaxFilterRadius))
+      params.fail_at(*params.find(name, {ParamType::floating}),
+                     std::string("a filter's \"float ") + name + "\" must be 0.001 to 64 pixels");
+    return value;
+  };
+  filter.radius_x = radius("xwidth");
+  filter.radius_y = radius("ywidth");
   if (filter.type == PixelFilterType::gaussian) filter.gaussian_alpha = read("alpha", 2, 0, 1e6, "in (0, 1e6]");
   if (filter.type == PixelFilterType::mitchell) {
     filter.mitchell_b = read("B", 1.0 / 3, -10, 10, "in (-10, 10]");

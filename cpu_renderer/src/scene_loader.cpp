@@ -124,8 +124,8 @@ PixelFilter Loader::pixel_filter(const Json& value, const JsonPath& path) {
     const Json& radius = value["radius"];
     if (!radius.is_array() || radius.size() != 2)
       fail(path.field("radius"), "expected [x, y] in pixels, got " + short_dump(radius));
-    filter.radius_x = number(radius[0], path.field("radius").index(0), 1e-3, kMaxFilterRadius);
-    filter.radius_y = number(radius[1], path.field("radius").index(1), 1e-3, kMaxFilterRadius);
+    filter.radius_x = number(radius[0], path.field("radius").index(0), kMinFilterRadius, kMaxFilterRadius);
+    filter.radius_y = number(radius[1], path.field("radius").index(1), kMinFilterRadius, kMaxFilterRadius);
   } else {
     filter.radius_x = filter.radius_y = default_filter_radius(filter.type);
   }

@@ -383,7 +383,7 @@ struct PixelFilter {
 inline std::optional<PixelFilterType> pixel_filter_named(std::string_view name) {
   return enum_named<PixelFilterType>(kPixelFilterNames, name);
 }
-inline constexpr double kMaxFilterRadius = 64;  // pixels
+inline constexpr double kMinFilterRadius = 1e-3, kMaxFilterRadius = 64;  // pixels, both scene formats
 // pbrt-v3's default radius of each filter, in pixels.
 inline double default_filter_radius(PixelFilterType type) {
   return type == PixelFilterType::box ? 0.5 : type == PixelFilterType::sinc ? 4 : 2;
