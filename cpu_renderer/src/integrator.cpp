@@ -37,7 +37,6 @@ struct SurfaceScatter {
 
   std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
     DirectionShading wi = frame.to_local(wi_world);
-    const bool reflected = sg::dot(normal, wi_world) > sg::zero;
     if (perturbed && !bsdf.transmits()) {
       // pbrt-v3: the geometric normal says whether light is reflected, and a
       // reflecting BSDF's lobes then count on either side of the shading
@@ -45,7 +44,7 @@ struct SurfaceScatter {
       // light above the surface below it). Evaluated with both directions
       // folded into the shading hemisphere: Lambert's and Oren–Nayar's value
       // is pbrt-v3's there, a glossy lobe's its mirror image's.
-      if (!reflected) return std::nullopt;
+      if (!(sg::dot(normal, wi_world) > sg::zero)) return std::nullopt;
       Brdf f = bsdf.eval(folded_up(wo), folded_up(wi));
       if (sg::is_black(f)) return std::nullopt;
       return f * sg::abs_cos_theta(wi);
@@ -55,7 +54,7 @@ struct SurfaceScatter {
     // Through a transmitting BSDF, reflection or transmission is the geometric
     // normal's to say, as in pbrt-v3; where the shading frame puts the light on
     // the other side, nothing counts.
-    if (perturbed && reflected != above) return std::nullopt;
+    if (perturbed && (sg::dot(normal, wi_world) > sg::zero) != above) return std::nullopt;
     Brdf f = bsdf.eval(wo, wi);
     if (sg::is_black(f)) return std::nullopt;
     return f * sg::abs_cos_theta(wi);

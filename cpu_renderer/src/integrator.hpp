@@ -61,7 +61,9 @@ class Integrator {
   const PhotonMap* photon_map() const { return photons_.get(); }
 
   // Radiance arriving at the camera along `camera_ray`.
-  Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
+  // Inlined into the render loop: as a call per camera sample it cost 0.2 % more instructions on the
+  // Cornell box (64², 16 spp).
+  [[gnu::always_inline]] Radiance radiance(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
     // MIS bookkeeping exists only in the instantiations for scenes with area
     // lights; the light-sample loop only in those for several light samples;
     // the texture footprint's bookkeeping only in those for scenes with
