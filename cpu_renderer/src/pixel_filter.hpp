@@ -7,6 +7,7 @@
 // tiles, crops and ranks need no borders.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "safegi/cpu_renderer/scene.hpp"
@@ -15,6 +16,12 @@ namespace safegi::render {
 
 // The filter's value at offset `x` (pixels) along an axis of radius `radius`.
 double pixel_filter_value(const PixelFilter& filter, double x, double radius);
+
+// A filtered pixel's channel, Σ w·L / Σ w; black, as pbrt-v3's Film writes it,
+// where a negative lobe makes it negative or the weights cancel.
+inline float filtered_pixel(double weighted_sum, double weight_sum) {
+  return weight_sum != 0 ? static_cast<float>(std::max(0.0, weighted_sum / weight_sum)) : 0.0f;
+}
 
 class PixelFilterSampler {
  public:

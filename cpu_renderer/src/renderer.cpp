@@ -286,15 +286,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   } else {
     image.rgb.resize(sums.size());
     double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
-    for (size_t i = 0; i < sums.size(); ++i) {
-      // A filter's negative lobes can make a pixel negative, or its weights cancel:
-      // black then, as pbrt-v3 writes it.
-      if (filter) {
-        image.rgb[i] = weight_sums[i / 3] != 0 ? static_cast<float>(std::max(0.0, sums[i] / weight_sums[i / 3])) : 0.0f;
-        continue;
-      }
-      image.rgb[i] = static_cast<float>(sums[i] * scale);
-    }
+    for (size_t i = 0; i < sums.size(); ++i)
+      image.rgb[i] = filter ? filtered_pixel(sums[i], weight_sums[i / 3]) : static_cast<float>(sums[i] * scale);
   }
 
   if (stats) {

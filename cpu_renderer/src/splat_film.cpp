@@ -105,8 +105,7 @@ std::vector<float> SplatFilm::pixels() const {
   std::vector<float> rgb(3 * (sums_.size() / 4));
   for (size_t pixel = 0; pixel < sums_.size() / 4; ++pixel) {
     const double* sum = &sums_[4 * pixel];
-    for (int c = 0; c < 3; ++c)
-      rgb[3 * pixel + c] = sum[3] != 0 ? static_cast<float>(std::max(0.0, sum[c] / sum[3])) : 0.0f;
+    for (int c = 0; c < 3; ++c) rgb[3 * pixel + c] = filtered_pixel(sum[c], sum[3]);
   }
   return rgb;
 }

@@ -60,7 +60,7 @@ class SplatFilm {
 
   // The window's pixels: r, g, b, weight each, row by row (for summing over processes).
   std::vector<double>& sums() { return sums_; }
-  // Σ f·L / Σ f per pixel; black where the weights sum to 0 or the value is negative (pbrt-v3's Film).
+  // Σ f·L / Σ f per pixel (filtered_pixel).
   std::vector<float> pixels() const;
 
  private:

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <limits>
 
-
 #include "lanes.hpp"
 #include "safegi/cpu_renderer/kernel_math.hpp"
 
