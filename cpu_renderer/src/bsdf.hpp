@@ -37,6 +37,16 @@ struct BsdfSample {
   // includes; Russian roulette divides it out again (pbrt's etaScale), or it
   // would end paths inside glass for a change of medium, not of energy.
   Real compression = 1;
+  // A refraction's far side's index over the near side's (1: a reflection).
+  Real eta = 1;
+};
+
+// Every lobe of a specular BSDF at once, each with its whole weight (f·cos θ
+// over the delta's density): a mirror's one, glass's reflection and refraction
+// weighed by Fresnel (what pbrt-v3's SpecularReflect and SpecularTransmit follow).
+struct SpecularLobes {
+  BsdfSample lobe[2];
+  int count = 0;
 };
 
 class Bsdf {
@@ -139,7 +149,35 @@ class Bsdf {
         model_);
   }
 
+  // The specular lobes towards which light from wo can leave (none for the
+  // other materials, and none whose weight is black).
+  SpecularLobes specular_lobes(DirectionShading wo) const {
+    SpecularLobes lobes;
+    auto add = [&](const BsdfSample& s) {
+      if (!sg::is_black(s.weight)) lobes.lobe[lobes.count++] = s;
+    };
+    if (wo.z() <= 0) return lobes;
+    if (const auto* mirror = std::get_if<MirrorMaterial>(&model_)) {
+      add(BsdfSample{reflect(wo), mirror->reflectance, sg::zero, true});
+    } else if (const auto* glass = std::get_if<GlassMaterial>(&model_)) {
+      const Real eta = glass_eta(*glass);
+      const Real reflected = fresnel_dielectric(wo.z(), eta);
+      std::optional<DirectionShading> wt = refract(wo, eta);
+      if (!wt) {  // total internal reflection (or rounding at the critical angle)
+        add(BsdfSample{reflect(wo), glass->reflectance, sg::zero, true});
+        return lobes;
+      }
+      add(BsdfSample{reflect(wo), glass->reflectance * reflected, sg::zero, true});
+      const Real compression = 1 / (eta * eta);
+      add(BsdfSample{*wt, glass->transmittance * ((1 - reflected) * compression), sg::zero, true, compression, eta});
+    }
+    return lobes;
+  }
+
  private:
+  // The far side's index over the near side's.
+  Real glass_eta(const GlassMaterial& glass) const { return from_inside_ ? 1 / glass.ior : glass.ior; }
+
   static const Reflectance& untextured_diffuse(const Material& material) {
     static const Reflectance kBlack{};
     const TexturedReflectance* diffuse = diffuse_of(material);
@@ -381,14 +419,13 @@ class Bsdf {
   // for radiance crossing into a denser medium).
   std::optional<BsdfSample> sample_glass(const GlassMaterial& glass, DirectionShading wo, Real u,
                                          Transport transport) const {
-    // The far side's index over the near side's.
-    const Real eta = from_inside_ ? 1 / glass.ior : glass.ior;
+    const Real eta = glass_eta(glass);
     const Real reflected = fresnel_dielectric(wo.z(), eta);
     if (u < reflected) return BsdfSample{reflect(wo), glass.reflectance, sg::zero, true};
     std::optional<DirectionShading> wt = refract(wo, eta);
     if (!wt) return BsdfSample{reflect(wo), glass.reflectance, sg::zero, true};  // rounding at the critical angle
     const Real compression = transport == Transport::radiance ? 1 / (eta * eta) : Real(1);
-    return BsdfSample{*wt, glass.transmittance * compression, sg::zero, true, compression};
+    return BsdfSample{*wt, glass.transmittance * compression, sg::zero, true, compression, eta};
   }
 
   const MaterialModel& model_;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "geometry.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
@@ -21,9 +22,29 @@ namespace safegi::render {
 // by 1/√spp as pbrt-v3 narrows its rays' differentials (ScaleDifferentials):
 // the more samples share a pixel, the less each one needs to filter, and the
 // same scene converges to the same image in both renderers.
+// Past a specular surface the cone goes on bent as paraxial optics bends a
+// beam (pbrt-v3 follows its rays' differentials there): a convex mirror
+// spreads it, a glass ball focuses it, so a texture seen through one is
+// filtered over the footprint the lens makes, not the camera's.
 struct PixelCone {
-  Length width = sg::zero;
-  Angle spread = sg::zero;
+  Length width = sg::zero;  // signed: negative past a focus
+  Angle spread = sg::zero;  // negative while converging
+
+  // The cone `distance` further on.
+  PixelCone after(Length distance) const { return {width + distance * (spread / units::radian), spread}; }
+  // Reflected by a mirror with radius of curvature `radius`, positive where it
+  // bulges towards the incoming ray (none: flat): a convex one spreads the
+  // cone by twice the normal's turn across it, w/r.
+  PixelCone reflected(std::optional<Length> radius) const {
+    return radius ? PixelCone{width, spread + 2 * (width / *radius) * units::radian} : *this;
+  }
+  // Refracted into a medium `eta` times as dense: Snell's law (angles over η)
+  // and the surface's power (η − 1)/(η r) on a beam `width` wide.
+  PixelCone refracted(Real eta, std::optional<Length> radius) const {
+    PixelCone bent{width, spread / eta};
+    if (radius) bent.spread = bent.spread - (width / *radius) * (1 - 1 / eta) * units::radian;
+    return bent;
+  }
 };
 
 inline PixelCone pixel_cone(const Camera& camera, int width, int height, int samples_per_pixel) {

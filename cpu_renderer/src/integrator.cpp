@@ -74,6 +74,15 @@ struct MediumScatter {
   PdfSolidAngle pdf(DirectionWorld wi) const { return henyey_greenstein(asymmetry, travelling, wi); }
 };
 
+// The radius of curvature of `shape` where a ray meets it, positive where it
+// bulges towards the ray (the outside of a sphere); none where it is flat,
+// and for meshes, whose curvature the ray cone does not follow.
+std::optional<Length> convex_radius(const Shape& shape, bool from_inside) {
+  if (shape.type != Shape::Type::sphere) return std::nullopt;
+  const Length radius = placed_radius(shape.render_from_object, shape.radius);
+  return from_inside ? -radius : radius;
+}
+
 }  // namespace
 
 template <bool area_lights>
@@ -200,23 +209,24 @@ Radiance Integrator::paired_scatter_sample(uint32_t light, const SurfaceHit& fro
 }
 
 template <bool area_lights, bool one_light_sample, bool gather, bool textured, bool media>
-Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const {
+Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters& counters, int& splits_left) const {
   Radiance radiance;
-  Reflectance throughput(1.0f);
+  TimedRay ray = start.ray;
+  Reflectance throughput = start.throughput;
   bool specular_bounce = true;  // emission seen directly counts in full
   PdfSolidAngle previous_pdf = sg::zero;  // of the direction the last scattering chose
   PointWorld previous_position;
   bool last_vertex = false;
-  // The camera ray cone's length so far (textures' footprint), while every bounce was specular.
-  Length travelled = sg::zero;
+  // The camera ray cone at the path's last vertex (textures' footprint), while every bounce was specular.
+  PixelCone cone = start.cone;
   bool sharp_cone = true;
   // Photon integrator: once a non-specular vertex has occurred, emission found
   // through specular bounces only (a caustic path, L S+ D …) is the photon map's.
   bool after_diffuse = false;
-  Real compression = 1;  // the radiance compression by refraction so far (for Russian roulette)
+  Real compression = start.compression;
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
-  int medium = scene_.camera.medium;  // the one the ray travels in (media only)
-  int crossings = 0;                  // invisible boundaries crossed (media only)
+  int medium = start.medium;
+  int crossings = 0;  // invisible boundaries crossed (media only)
 
   // After a scattering event that chose a non-specular direction: direct
   // lighting follows mirrors but stops after one such event, once the
@@ -229,16 +239,16 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     last_vertex = true;
     return true;
   };
-  // Russian roulette, once the path is long enough. False: the path ends.
-  auto survives_roulette = [&](int depth) {
+  // Russian roulette on a path with `weight` so far, once it is long enough. False: the path ends.
+  auto survives_roulette = [&](int depth, Reflectance& weight, Real weight_compression) {
     if (depth < roulette_depth_ || last_vertex) return true;
-    Real survival = std::min(Real(0.95), sg::max_component(throughput) / compression);
+    Real survival = std::min(Real(0.95), sg::max_component(weight) / weight_compression);
     if (sampler.next_1d() >= survival) return false;
-    throughput = throughput / survival;
+    weight = weight / survival;
     return true;
   };
 
-  for (int depth = 0;; ++depth) {
+  for (int depth = start.depth;; ++depth) {
     std::optional<SurfaceHit> hit = geometry_.intersect(ray);
     if constexpr (media) {
       if (medium >= 0) {
@@ -270,7 +280,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
           previous_position = point.position;
           ray = TimedRay{sg::ray<World>{point.position, wi}, ray.time};
           ++counters.extension;
-          if (!survives_roulette(depth)) break;
+          if (!survives_roulette(depth, throughput, compression)) break;
           continue;
         }
       }
@@ -301,6 +311,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
       }
     }
     const Shape& shape = scene_.shapes[hit->shape];
+    if constexpr (textured) cone = cone.after(hit->distance);
     MediaAround around;  // media only
     if constexpr (media) {
       if (shape.invisible) {  // no surface: the ray goes on, into the medium beyond
@@ -315,11 +326,7 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
     if (last_vertex || depth >= max_depth_) break;
     if (shape.material < 0) break;
     // The cone's width across the surface, stretched by its tilt (a plain ratio).
-    auto footprint = [&] {
-      return ConeFootprint{sharp_cone ? pixel_cone_.width + travelled * (pixel_cone_.spread / units::radian) : Length(sg::zero),
-                           ray.d};
-    };
-    if constexpr (textured) travelled += hit->distance;
+    auto footprint = [&] { return ConeFootprint{sharp_cone ? sg::abs(cone.width) : Length(sg::zero), ray.d}; };
     const Material* chosen = &scene_.materials[shape.material];
     if (chosen->mix) {
       const MaterialChoice choice =
@@ -365,41 +372,73 @@ Radiance Integrator::trace(TimedRay ray, Sampler& sampler, RayCounters& counters
                                    *hit, SurfaceScatter{bsdf, frame, wo, hit->normal, perturbed}, around, sampler, ray.time,
                                    mis_, counters);
 
+    // The path beyond this vertex along `sample`; none where it ends.
+    auto beyond = [&](const BsdfSample& sample) -> std::optional<PathStart> {
+      const DirectionWorld wi = frame.from_local(sample.wi);
+      // A perturbed normal can send a reflection below the real surface (or a
+      // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
+      // side it reaches, which have nothing there.
+      const bool reflected_geometrically = sg::dot(hit->normal, wi) > sg::zero;
+      if (perturbed) {
+        const bool reflected_in_shading = (sample.wi.z() > 0) == (wo.z() > 0);
+        if (reflected_geometrically != reflected_in_shading) return std::nullopt;
+      }
+      if (!sample.specular && !direct_lighting_goes_on(paired_scatter_samples_ && !lights_.empty()))
+        return std::nullopt;
+      PathStart next{spawn_ray(*hit, wi, ray.time), throughput * sample.weight, depth + 1, cone,
+                     compression * sample.compression, medium};
+      if constexpr (textured)
+        if (sample.specular) {
+          const std::optional<Length> radius = convex_radius(shape, from_inside);
+          next.cone = sample.wi.z() > 0 ? cone.reflected(radius) : cone.refracted(sample.eta, radius);
+        }
+      if (sg::is_black(next.throughput)) return std::nullopt;
+      if constexpr (media) next.medium = reflected_geometrically ? around.front : around.back;
+      ++counters.extension;
+      if (!survives_roulette(depth, next.throughput, next.compression)) return std::nullopt;
+      return next;
+    };
+
     Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
-    std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
-    if (!scattered) break;
-    const DirectionWorld wi = frame.from_local(scattered->wi);
-    // A perturbed normal can send a reflection below the real surface (or a
-    // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
-    // side it reaches, which have nothing there.
-    const bool reflected_geometrically = sg::dot(hit->normal, wi) > sg::zero;
-    if (perturbed) {
-      const bool reflected_in_shading = (scattered->wi.z() > 0) == (wo.z() > 0);
-      if (reflected_geometrically != reflected_in_shading) break;
+    std::optional<BsdfSample> scattered;
+    if (direct_only_ && bsdf.is_specular() && splits_left > 0) {
+      // Every lobe but the last as a branch of its own; the path goes on along the last.
+      const SpecularLobes lobes = bsdf.specular_lobes(wo);
+      for (int i = 0; i + 1 < lobes.count && splits_left > 0; ++i) {
+        --splits_left;
+        if (std::optional<PathStart> branch = beyond(lobes.lobe[i]))
+          radiance += trace<area_lights, one_light_sample, gather, textured, media>(*branch, sampler, counters,
+                                                                                   splits_left);
+      }
+      if (lobes.count > 0) scattered = lobes.lobe[lobes.count - 1];
+    } else {
+      scattered = bsdf.sample(wo, u_lobe, u_direction.u, u_direction.v);
     }
-    if (!scattered->specular && !direct_lighting_goes_on(paired_scatter_samples_ && !lights_.empty())) break;
-    throughput *= scattered->weight;
-    compression *= scattered->compression;
-    if (sg::is_black(throughput)) break;
+    if (!scattered) break;
+    std::optional<PathStart> next = beyond(*scattered);
+    if (!next) break;
+    ray = next->ray;
+    throughput = next->throughput;
+    compression = next->compression;
+    if constexpr (media) medium = next->medium;
     specular_bounce = scattered->specular;
-    if constexpr (textured) sharp_cone = sharp_cone && scattered->specular;
+    if constexpr (textured) {
+      sharp_cone = sharp_cone && scattered->specular;
+      cone = next->cone;
+    }
     if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
     previous_pdf = scattered->pdf;
     previous_position = hit->position;
-    ray = spawn_ray(*hit, wi, ray.time);
-    if constexpr (media) medium = reflected_geometrically ? around.front : around.back;
-    ++counters.extension;
-    if (!survives_roulette(depth)) break;
   }
   return radiance;
 }
 
 #define SAFEGI_TRACE_TEXTURED(area_lights, one_light_sample, gather, media)                                       \
-  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false, media>(TimedRay, Sampler&, \
-                                                                                          RayCounters&) const; \
-  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true, media>(TimedRay, Sampler&,  \
-                                                                                         RayCounters&) const
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, false, media>( \
+      const PathStart&, Sampler&, RayCounters&, int&) const;                                   \
+  template Radiance Integrator::trace<area_lights, one_light_sample, gather, true, media>(  \
+      const PathStart&, Sampler&, RayCounters&, int&) const
 // Media only without gathering: the photon integrator refuses them.
 #define SAFEGI_TRACE(area_lights, one_light_sample)                    \
   SAFEGI_TRACE_TEXTURED(area_lights, one_light_sample, false, false); \

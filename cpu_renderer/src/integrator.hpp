@@ -32,6 +32,18 @@ struct MediaAround {
   int back = -1;
 };
 
+// Where a path begins: the camera ray, or under direct lighting a branch
+// that a specular surface split off (everything before it was specular, so
+// emission it finds counts in full and its cone is still the camera's).
+struct PathStart {
+  TimedRay ray;
+  Reflectance throughput{1.0f};
+  int depth = 0;
+  PixelCone cone;               // the camera ray's cone where the path starts (textures' footprint)
+  Real compression = 1;         // the radiance compression by refraction so far (for Russian roulette)
+  int medium = -1;              // the one the ray travels in (media only)
+};
+
 struct RayCounters {
   uint64_t camera = 0;
   uint64_t extension = 0;
@@ -87,16 +99,21 @@ class Integrator {
   }
   template <bool area_lights, bool one_light_sample, bool gather, bool textured>
   Radiance with_media(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
+    const PathStart start{.ray = camera_ray, .cone = pixel_cone_, .medium = scene_.camera.medium};
+    int splits_left = kMaxSpecularSplits;
     // The photon integrator refuses scenes with media (see the constructor).
     if constexpr (!gather)
-      if (media_) return trace<area_lights, one_light_sample, false, textured, true>(camera_ray, sampler, counters);
-    return trace<area_lights, one_light_sample, gather, textured, false>(camera_ray, sampler, counters);
+      if (media_) return trace<area_lights, one_light_sample, false, textured, true>(start, sampler, counters, splits_left);
+    return trace<area_lights, one_light_sample, gather, textured, false>(start, sampler, counters, splits_left);
   }
 
-  // gather: the photon integrator's camera pass (see PhotonMap); textured: the
-  // scene has textures; media: it has participating media or invisible surfaces.
+  // The radiance a path from `start` brings back. gather: the photon
+  // integrator's camera pass (see PhotonMap); textured: the scene has
+  // textures; media: it has participating media or invisible surfaces.
+  // `splits_left`: the branches that direct lighting's specular vertices may
+  // still split off, shared by the camera sample's whole tree.
   template <bool area_lights, bool one_light_sample, bool gather, bool textured, bool media>
-  Radiance trace(TimedRay ray, Sampler& sampler, RayCounters& counters) const;
+  Radiance trace(const PathStart& start, Sampler& sampler, RayCounters& counters, int& splits_left) const;
 
   // Next-event estimation at a point that scatters as `scatter` says (a
   // surface's BSDF or a medium's phase function): light samples, each weighed
@@ -122,6 +139,14 @@ class Integrator {
   // invisible surfaces (a visible one blocks it). The ray starts in `medium`.
   template <bool media>
   Reflectance visibility(const TimedRay& shadow, Length t_max, int medium, RayCounters& counters) const;
+
+  // Direct lighting follows every lobe of a specular surface (glass's
+  // reflection and refraction, as pbrt-v3's directlighting and whitted do), up
+  // to this many branches per camera sample; beyond them, in a hall of glass
+  // panes whose branches would double at every bounce, one lobe chosen by
+  // Fresnel (the path tracer's way, unbiased too). pbrt-v3's default depth, 5,
+  // splits at most 31 times.
+  static constexpr int kMaxSpecularSplits = 64;
 
   const Scene& scene_;
   const Geometry& geometry_;

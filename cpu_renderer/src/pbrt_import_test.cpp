@@ -243,6 +243,7 @@ TEST(PbrtImport, OptionsBecomeRenderSettings) {
   EXPECT_EQ(scene.scene.settings.spp, 32);  // pbrt-v3's Sobol sampler rounds up to a power of 2
   EXPECT_EQ(scene.scene.settings.integrator, IntegratorType::direct);
   EXPECT_EQ(scene.scene.settings.max_depth, 3);
+  EXPECT_FALSE(scene.scene.settings.russian_roulette);  // pbrt-v3's specular chains end at maxdepth only
   ASSERT_TRUE(scene.crop);
   EXPECT_EQ(scene.crop->x, 100);
   EXPECT_EQ(scene.crop->y, 0);

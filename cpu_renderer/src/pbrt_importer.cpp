@@ -376,6 +376,7 @@ void Importer::integrator(const Directive& d) {
     // whitted samples every light once, directlighting (strategy "all")
     // every light its "nsamples" times, or (strategy "one") one light chosen uniformly.
     settings.integrator = IntegratorType::direct;
+    settings.russian_roulette = false;  // neither plays it: their specular chains end at maxdepth
     settings.light_strategy = type == "whitted" ? LightStrategy::all : light_strategy(params, "strategy", "all", {"all", "one"});
     light_samples_per_light_ = type == "directlighting";
   } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {

@@ -104,5 +104,26 @@ TEST(RenderCamera, PixelConeIsAPixelNarrowedBySamples) {
   EXPECT_EQ(sg::raw(ortho.spread), 0.0f);
 }
 
+// Past specular surfaces the cone bends as paraxial optics says: a ball lens
+// (n = 1.5, r = 1) focuses a parallel beam at its back focal length, n·2r /
+// (4 (n − 1)) − r = 0.5 behind it; a convex mirror's reflection seems to
+// diverge from r/2 behind the mirror, so the beam is twice as wide r/2 in front.
+TEST(RenderCamera, ThePixelConeBendsAsALensBendsABeam) {
+  const Length r = Real(1) * units::meter;
+  const PixelCone beam{Real(0.01) * units::meter, sg::zero};
+  const PixelCone inside = beam.refracted(1.5f, r).after(2 * r);
+  const PixelCone out = inside.refracted(1 / 1.5f, -r);
+  EXPECT_NEAR(sg::raw(out.after(Real(0.5) * r).width), 0.0, 1e-8);
+  EXPECT_GT(sg::raw(out.after(Real(0.4) * r).width), 0.0f);  // before it
+  EXPECT_LT(sg::raw(out.after(Real(0.6) * r).width), 0.0f);  // past the focus
+  EXPECT_NEAR(sg::raw(beam.reflected(r).after(Real(0.5) * r).width), 0.02, 1e-8);
+  EXPECT_NEAR(sg::raw(beam.reflected(-r).after(Real(0.5) * r).width), 0.0, 1e-8);  // a concave one focuses at r/2
+  // Flat surfaces: a mirror keeps the cone; a refraction narrows its angle by η, not its width.
+  const PixelCone spreading{Real(0.01) * units::meter, Real(0.002) * units::radian};
+  EXPECT_EQ(sg::raw(spreading.reflected(std::nullopt).spread), 0.002f);
+  EXPECT_NEAR(sg::raw(spreading.refracted(2, std::nullopt).spread), 0.001, 1e-9);
+  EXPECT_EQ(sg::raw(spreading.refracted(2, std::nullopt).width), 0.01f);
+}
+
 }  // namespace
 }  // namespace safegi::render

@@ -125,6 +125,22 @@ TEST(RenderMaterials, GlassSlabTransmitsOneMinusROverOnePlusR) {
   EXPECT_LT(5 * e.standard_error, 0.01 * expected * emission);  // resolves the 3 % from the single pass
 }
 
+// Direct lighting follows both of glass's lobes (pbrt-v3's directlighting and
+// whitted do), so the same slab at 1 spp is the series itself in every pixel,
+// with no Fresnel choice to make it noisy (it fails if one lobe is chosen).
+TEST(RenderMaterials, DirectLightingFollowsBothLobesOfGlass) {
+  const double n = 2.4, r = (n - 1) * (n - 1) / ((n + 1) * (n + 1)), expected = 3 * (1 - r) / (1 + r);
+  std::string scene = "{" + camera_on_z(5, 2, 8, "direct", 400) + R"json(,
+    "materials": {"diamond": {"type": "glass", "ior": 2.4}},
+    "shapes": [
+      {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "0.1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"]},
+      {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "-0.1 m"], "edge_u": ["0 m", "4 m", "0 m"], "edge_v": ["4 m", "0 m", "0 m"]},
+      {"type": "quad", "origin": ["-2 m", "-2 m", "-1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"],
+       "emission": "3 W/(m2 sr)"}]})json";
+  Image image = render_text(scene, 1, 2, std::nullopt, [](RenderSettings& s) { s.russian_roulette = false; });
+  for (size_t i = 0; i < image.rgb.size(); ++i) EXPECT_NEAR(image.rgb[i], expected, 1e-4 * expected) << i;
+}
+
 // A floor (normal +z) of `material_json` under a constant environment of
 // 1 W/(m² sr), seen `view` radians off its normal through a 0.5° camera,
 // direct light only: each pixel is the material's directional albedo there.
