@@ -22,7 +22,7 @@ ImageTexture Loader::load_texture(const std::string& name, const Json& value, co
   if (!value.is_object()) fail(path, "expected an object, got " + short_dump(value));
   std::string type = string(required(value, path, "type"), path.field("type"));
   if (type != "image") fail(path.field("type"), "expected \"image\", got " + short_dump(value["type"]));
-  object(value, path, {"type", "file", "colour_space", "filter", "wrap", "scale", "uv_scale", "uv_offset"});
+  object(value, path, {"type", "file", "colour_space", "filter", "max_anisotropy", "wrap", "scale", "uv_scale", "uv_offset"});
   ImageTexture texture;
   texture.name = name;
   Image image = read_image_file(required(value, path, "file"), path.field("file"), texture.file);
@@ -41,8 +41,11 @@ ImageTexture Loader::load_texture(const std::string& name, const Json& value, co
     std::string filter = string(value["filter"], path.field("filter"));
     if (filter == "bilinear") texture.filter = TextureFilter::bilinear;
     else if (filter == "trilinear") texture.filter = TextureFilter::trilinear;
-    else fail(path.field("filter"), "expected \"bilinear\" or \"trilinear\", got " + short_dump(value["filter"]));
+    else if (filter == "ewa") texture.filter = TextureFilter::ewa;
+    else fail(path.field("filter"), "expected \"bilinear\", \"trilinear\" or \"ewa\", got " + short_dump(value["filter"]));
   }
+  if (value.contains("max_anisotropy"))
+    texture.max_anisotropy = number(value["max_anisotropy"], path.field("max_anisotropy"), 1, 1e6);
   TextureWrap wrap = TextureWrap::repeat;
   if (value.contains("wrap")) {
     std::string mode = string(value["wrap"], path.field("wrap"));

@@ -573,7 +573,7 @@ PbrtImportOptions with_images() {
 TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   PbrtScene scene = import(
       world("Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float uscale\" 2 "
-            "\"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5\n"
+            "\"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5 \"float maxanisotropy\" 4\n"
             "Texture \"p\" \"color\" \"imagemap\" \"string filename\" \"paint.png\" \"bool trilinear\" \"true\"\n"
             "Texture \"lin\" \"color\" \"imagemap\" \"string filename\" \"paint.tga\" \"bool gamma\" \"false\"\n"
             "Texture \"tinted\" \"color\" \"scale\" \"texture tex1\" \"p\" \"rgb tex2\" [0.5 1 1]\n"
@@ -608,13 +608,17 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
   EXPECT_EQ(sg::raw(diffuse(tinted).value), glm::vec3(0.5f, 1, 1));  // "scale": the constant times the image
   EXPECT_EQ(s.shapes[1].uvs[1].u, 2.0f);                      // "st" when there is no "uv"
   EXPECT_EQ(diffuse(s.materials.at(s.shapes[2].material)).texture, 2);
-  EXPECT_EQ(g.filter, TextureFilter::trilinear);  // pbrt-v3's "trilinear"; its default EWA is said once
-  EXPECT_EQ(scene.warnings,
-            "scene.pbrt:2:1: warning: image textures are filtered trilinearly here, not by pbrt-v3's EWA\n"
-            "Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grad.exr\" \"float "
-            "uscale\" 2 \"float vdelta\" 0.5 \"string wrap\" \"clamp\" \"float scale\" 0.5\n^~~~~~~\n"
-            "help: where a texture is seen at a grazing angle, pbrt-v3's EWA blurs it along the slope only, trilinear "
-            "across it too; add \"bool trilinear\" \"true\" to filter it as here\n");
+  EXPECT_EQ(g.filter, TextureFilter::ewa);  // pbrt-v3's default
+  EXPECT_EQ(g.max_anisotropy, 4.0f);
+  EXPECT_EQ(s.textures[1].filter, TextureFilter::trilinear);
+  EXPECT_EQ(s.textures[2].max_anisotropy, 8.0f);
+  EXPECT_EQ(scene.warnings, "");
+  EXPECT_EQ(import_error(world(used("Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"paint.png\" "
+                                    "\"float maxanisotropy\" 0\nMaterial \"matte\" \"texture Kd\" \"h\"")),
+                         with_images()),
+            "scene.pbrt:2:62: error: \"float maxanisotropy\" of Texture \"h\" must lie in (0, 1e6]\n"
+            "Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"paint.png\" \"float maxanisotropy\" 0\n"
+            "                                                             ^~~~~~~~~~~~~~~~~~~~~\n");
 
   const std::string hot = "Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"hot.exr\" \"bool trilinear\" \"true\"\n";
   EXPECT_EQ(import_error(world(used(hot + "Material \"matte\" \"texture Kd\" \"h\"")), with_images()),

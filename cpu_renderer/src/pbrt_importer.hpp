@@ -244,7 +244,6 @@ class Importer {
   Block block_ = Block::options;
   PbrtScene result_;
   std::vector<Diagnostic> warnings_;
-  int filter_warned_ = 0;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::set<int> clamped_patterns_warned_;              // patterns above 1 read as a reflectance, warned once each
   uint64_t curve_triangles_ = 0;                       // made of the curves so far

@@ -704,16 +704,14 @@ int Importer::image_texture(const std::string& name, ParamSet& params, SourceRan
     params.fail_at(*params.find("wrap", {ParamType::string}), "wrap mode \"" + wrap_name + "\" is unknown",
                    "pbrt-v3 has \"repeat\", \"black\" and \"clamp\" (and would silently repeat)");
   // pbrt-v3 filters over its ray differentials scaled by 1/sqrt(spp)
-  // (SamplerIntegrator::Render); our trilinear lookup over the ray cone,
-  // narrowed alike, is its "trilinear" (isotropic, the footprint's long axis).
-  // Its default, EWA, is anisotropic: said once.
-  texture.filter = TextureFilter::trilinear;
-  const bool trilinear = params.one_bool("trilinear", false);
-  params.one_float("maxanisotropy", 8);
-  if (!trilinear && filter_warned_++ == 0)
-    warn(at, "image textures are filtered trilinearly here, not by pbrt-v3's EWA",
-         "where a texture is seen at a grazing angle, pbrt-v3's EWA blurs it along the slope only, trilinear "
-         "across it too; add \"bool trilinear\" \"true\" to filter it as here");
+  // (SamplerIntegrator::Render); we filter over the ray cone, narrowed alike,
+  // whose ellipse on the surface is the differentials' (EWA), or its long axis (trilinear).
+  texture.filter = params.one_bool("trilinear", false) ? TextureFilter::trilinear : TextureFilter::ewa;
+  const double max_anisotropy = params.one_float("maxanisotropy", 8);
+  if (!(max_anisotropy > 0 && max_anisotropy <= 1e6))
+    params.fail_at(*params.find("maxanisotropy", {ParamType::floating}),
+                   "\"float maxanisotropy\" of " + params.context() + " must lie in (0, 1e6]");
+  texture.max_anisotropy = static_cast<Real>(max_anisotropy);
   Image image = read_image(*filename);
   texture.mipmap = std::make_shared<MipMap>(
       to_linear_texels(std::move(image), texture.colour_space, static_cast<float>(scale), true), wrap);

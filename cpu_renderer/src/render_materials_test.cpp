@@ -261,6 +261,7 @@ class TexturedFloor : public ::testing::Test {
                  "fov": ")json" + std::to_string(2 * std::atan(0.5 / 4) * 180 / kPiD) + R"json( deg"},
       "textures": {"smooth": {"type": "image", "file": "smooth.pfm", "filter": "bilinear", "wrap": "clamp"},
                    "checker": {"type": "image", "file": "checker.pfm", "filter": "trilinear"},
+                   "ewa": {"type": "image", "file": "checker.pfm", "filter": "ewa", "max_anisotropy": 4},
                    "aliased": {"type": "image", "file": "checker.pfm", "filter": "bilinear"}},
       "materials": {"floor": {"type": "lambert", "reflectance": )json" + reflectance + R"json(}},
       "shapes": [{"type": "quad", "material": "floor", "origin": ["0 m", "0 m", "0 m"],
@@ -298,7 +299,8 @@ TEST_F(TexturedFloor, PixelsShowTheBilinearTexture) {
 // A checker of single texels (64×64) seen at 16×16 pixels: each pixel covers
 // 4×4 texels. Trilinear filtering reads level 2, where the checker is grey
 // (0.5) everywhere; bilinear on level 0 aliases, four camera samples per pixel
-// landing on black or white texels.
+// landing on black or white texels. EWA, over the footprint's circle here,
+// reads the same level.
 TEST_F(TexturedFloor, MipMapsAverageWhatAPixelCovers) {
   Image checker{64, 64, {}};
   for (int y = 0; y < 64; ++y)
@@ -309,12 +311,15 @@ TEST_F(TexturedFloor, MipMapsAverageWhatAPixelCovers) {
   Image plain = render_text(scene("1", size), 4, 2, std::nullopt, {}, directory_);
   Image filtered = render_text(scene(R"({"texture": "checker"})", size), 4, 2, std::nullopt, {}, directory_);
   Image aliased = render_text(scene(R"({"texture": "aliased"})", size), 4, 2, std::nullopt, {}, directory_);
-  double filtered_worst = 0, aliased_worst = 0;
+  Image ewa = render_text(scene(R"({"texture": "ewa"})", size), 4, 2, std::nullopt, {}, directory_);
+  double filtered_worst = 0, aliased_worst = 0, ewa_worst = 0;
   for (size_t i = 0; i < plain.rgb.size(); ++i) {
     filtered_worst = std::max(filtered_worst, std::abs(filtered.rgb[i] / plain.rgb[i] - 0.5));
     aliased_worst = std::max(aliased_worst, std::abs(aliased.rgb[i] / plain.rgb[i] - 0.5));
+    ewa_worst = std::max(ewa_worst, std::abs(ewa.rgb[i] / plain.rgb[i] - 0.5));
   }
   EXPECT_LT(filtered_worst, 1e-3);
+  EXPECT_LT(ewa_worst, 1e-3);
   EXPECT_GT(aliased_worst, 0.1);
 }
 

@@ -130,6 +130,14 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
     return diffuse->value * evaluate(pattern, lookup);
   }
   const ImageTexture& texture = scene_.textures[diffuse->texture];
+  if (texture.filter == TextureFilter::ewa && filtered && texture.mapping.kind == Mapping2D::Kind::uv) {
+    const Derivatives at = derivatives(hit, time);
+    const TextureCoordinates st = texture.mapping.at(at.uv.u, at.uv.v, hit.position);
+    if (const std::optional<std::array<TexCoord, 2>> axes = cone_uv_axes(at.dp_du, at.dp_dv, hit.normal, footprint)) {
+      auto in_st = [&](TexCoord axis) { return StExtent{axis.u * texture.mapping.u_scale, axis.v * texture.mapping.v_scale}; };
+      return diffuse->value * texture.mipmap->ewa(st.s, st.t, in_st((*axes)[0]), in_st((*axes)[1]), texture.max_anisotropy);
+    }
+  }
   TexCoord at = uv(hit, time);
   const TextureCoordinates st = texture.mapping.at(at.u, at.v, hit.position);
   const Real texels = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();  // pbrt-v3's trilinear: isotropic too
@@ -157,7 +165,7 @@ Real luminance_at(const ImageTexture& texture, TexCoord at, PointWorld position)
 
 }  // namespace
 
-std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
                                                     const ConeFootprint& footprint) {
   // Plain numbers in metres: the solve mixes the axes' lengths with dp/du's.
   const Real3 n = to_kernel(sg::to_direction(normal)), direction = to_kernel(footprint.direction);
@@ -173,13 +181,20 @@ std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWor
   const Real uu = kernel::dot(pu, pu), uv = kernel::dot(pu, pv), vv = kernel::dot(pv, pv);
   const Real determinant = uu * vv - uv * uv;
   if (!(determinant > 1e-12f * uu * vv)) return std::nullopt;
-  Real du = 0, dv = 0;
-  for (const Real3& axis : axes) {
-    const Real along_u = kernel::dot(pu, axis), along_v = kernel::dot(pv, axis);
-    du = std::max(du, std::abs((vv * along_u - uv * along_v) / determinant));
-    dv = std::max(dv, std::abs((uu * along_v - uv * along_u) / determinant));
+  std::array<TexCoord, 2> in_uv;
+  for (int i = 0; i < 2; ++i) {
+    const Real along_u = kernel::dot(pu, axes[i]), along_v = kernel::dot(pv, axes[i]);
+    in_uv[i] = {(vv * along_u - uv * along_v) / determinant, (uu * along_v - uv * along_u) / determinant};
   }
-  return std::pair{du, dv};
+  return in_uv;
+}
+
+std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+                                                    const ConeFootprint& footprint) {
+  const std::optional<std::array<TexCoord, 2>> axes = cone_uv_axes(dp_du, dp_dv, normal, footprint);
+  if (!axes) return std::nullopt;
+  return std::pair{std::max(std::abs((*axes)[0].u), std::abs((*axes)[1].u)),
+                   std::max(std::abs((*axes)[0].v), std::abs((*axes)[1].v))};
 }
 
 SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit, Time time) const {

@@ -15,6 +15,7 @@
 // for rays without differentials.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -32,10 +33,13 @@ struct ConeFootprint {
 };
 
 // The cone's ellipse on a surface of normal `normal` (`width` across the
-// ray's slope, width/|cos θ| along it), each of its two axes written in
-// `dp_du` and `dp_dv` by least squares: the largest |du| and the largest |dv|
-// of the two (pbrt-v3's max(|du/dx|, |du/dy|) and its v twin). Nothing where
-// dp/du and dp/dv are parallel.
+// ray's slope, width/|cos θ| along it), its two semi-axes written in `dp_du`
+// and `dp_dv` by least squares, as (du, dv) each. Nothing where dp/du and
+// dp/dv are parallel.
+std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+                                                    const ConeFootprint& footprint);
+// The largest |du| and the largest |dv| of those axes (pbrt-v3's
+// max(|du/dx|, |du/dy|) and its v twin).
 std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
                                                     const ConeFootprint& footprint);
 

@@ -1,6 +1,7 @@
 #include "safegi/cpu_renderer/texture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -89,6 +90,79 @@ Texel MipMap::trilinear(Real s, Real t, Real width) const {
   const int fine = static_cast<int>(std::floor(level));
   const Real blend = level - static_cast<Real>(fine);
   return (1 - blend) * bilinear(fine, s, t) + blend * bilinear(fine + 1, s, t);
+}
+
+namespace {
+
+// pbrt-v3's table of the EWA filter's Gaussian, e^(−2r²) − e^(−2), by r² in [0, 1).
+constexpr int kEwaWeightCount = 128;
+const std::array<Real, kEwaWeightCount> kEwaWeights = [] {
+  std::array<Real, kEwaWeightCount> weights{};
+  for (int i = 0; i < kEwaWeightCount; ++i) {
+    const Real r2 = static_cast<Real>(i) / static_cast<Real>(kEwaWeightCount - 1);
+    weights[i] = std::exp(-2 * r2) - std::exp(Real(-2));
+  }
+  return weights;
+}();
+
+}  // namespace
+
+Texel MipMap::ewa(Real s, Real t, StExtent a, StExtent b, Real max_anisotropy) const {
+  auto length = [](StExtent e) { return std::sqrt(e.s * e.s + e.t * e.t); };
+  if (length(a) < length(b)) std::swap(a, b);
+  const Real major = length(a);
+  Real minor = length(b);
+  if (minor * max_anisotropy < major && minor > 0) {
+    const Real stretch = major / (minor * max_anisotropy);
+    b = {b.s * stretch, b.t * stretch};
+    minor *= stretch;
+  }
+  if (!(minor > 0) || !std::isfinite(major)) return bilinear(0, s, t);
+  const Real texels = minor * static_cast<Real>(std::max(levels_[0].width, levels_[0].height));
+  const Real level = std::max(Real(0), std::log2(texels));
+  if (level >= static_cast<Real>(levels() - 1)) return texel(levels() - 1, 0, 0);
+  const int fine = static_cast<int>(std::floor(level));
+  const Real blend = level - static_cast<Real>(fine);
+  return (1 - blend) * ewa_on_level(fine, s, t, a, b) + blend * ewa_on_level(fine + 1, s, t, a, b);
+}
+
+Texel MipMap::ewa_on_level(int level, Real s, Real t, StExtent a, StExtent b) const {
+  if (level >= levels() - 1) return texel(levels() - 1, 0, 0);
+  const Level& l = levels_[level];
+  const Real w = static_cast<Real>(l.width), h = static_cast<Real>(l.height);
+  // In this level's texels, centres at integers.
+  const Real x = s * w - Real(0.5), y = t * h - Real(0.5);
+  a = {a.s * w, a.t * h};
+  b = {b.s * w, b.t * h};
+  // The ellipse A x² + B x y + C y² < 1, widened by a texel so that it covers one at least.
+  Real qa = a.t * a.t + b.t * b.t + 1, qb = -2 * (a.s * a.t + b.s * b.t), qc = a.s * a.s + b.s * b.s + 1;
+  const Real inverse_f = 1 / (qa * qc - qb * qb * Real(0.25));
+  qa *= inverse_f;
+  qb *= inverse_f;
+  qc *= inverse_f;
+  const Real determinant = -qb * qb + 4 * qa * qc;
+  const Real half_width = 2 * std::sqrt(determinant * qc) / determinant;
+  const Real half_height = 2 * std::sqrt(determinant * qa) / determinant;
+  // A footprint far larger than the level (clamped anisotropy keeps it near
+  // a few texels across; this bounds the loop whatever the input).
+  constexpr Real kMaxTexelsAcross = 1024;
+  if (!(half_width < kMaxTexelsAcross && half_height < kMaxTexelsAcross)) return texel(levels() - 1, 0, 0);
+  const int x0 = static_cast<int>(std::ceil(x - half_width)), x1 = static_cast<int>(std::floor(x + half_width));
+  const int y0 = static_cast<int>(std::ceil(y - half_height)), y1 = static_cast<int>(std::floor(y + half_height));
+  Texel sum{};
+  Real weights = 0;
+  for (int iy = y0; iy <= y1; ++iy) {
+    const Real dy = static_cast<Real>(iy) - y;
+    for (int ix = x0; ix <= x1; ++ix) {
+      const Real dx = static_cast<Real>(ix) - x;
+      const Real r2 = qa * dx * dx + qb * dx * dy + qc * dy * dy;
+      if (r2 >= 1) continue;
+      const Real weight = kEwaWeights[std::min(static_cast<int>(r2 * kEwaWeightCount), kEwaWeightCount - 1)];
+      sum += weight * texel(level, ix, iy);
+      weights += weight;
+    }
+  }
+  return weights > 0 ? sum / weights : bilinear(level, s, t);
 }
 
 Texel MipMap::average() const {

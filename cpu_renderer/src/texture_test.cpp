@@ -79,6 +79,35 @@ TEST(MipMap, TrilinearBlendsTheLevelsAroundTheFootprint) {
   EXPECT_FLOAT_EQ(red(map.trilinear(0.25f, 0.25f, 8.0f / 4)), 3.5f);  // the whole image: the 1×1 level
 }
 
+// A 64² image whose texels follow `value(x, y)`.
+MipMap pattern_map(float (*value)(int x, int y)) {
+  Image image{64, 64, {}};
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) image.rgb.push_back(value(x, y));
+  return MipMap(std::move(image), TextureWrap::repeat);
+}
+
+// EWA filters along the ellipse's long axis only: 16 texels along s average
+// one-texel columns to their mean, while bands 8 texels tall stay their own
+// value across its one-texel minor axis (trilinear, isotropic over the long
+// axis, blurs them both). A constant stays itself; a degenerate ellipse reads
+// level 0 bilinearly; a needle is widened to 1/max_anisotropy of its length.
+TEST(MipMap, EwaFiltersAlongTheEllipseOnly) {
+  const MipMap columns = pattern_map([](int x, int) { return static_cast<float>(x % 2); });
+  const MipMap bands = pattern_map([](int, int y) { return static_cast<float>((y / 8) % 2 == 0); });
+  const Real s = 20.5f / 64, t = 3.5f / 64;  // a texel centre, in a band of 1s
+  const StExtent along{16.0f / 64, 0}, across{0, 1.0f / 64};
+  EXPECT_NEAR(sg::raw(columns.ewa(s, t, along, across, 16)).x, 0.5, 0.03);
+  EXPECT_NEAR(sg::raw(bands.ewa(s, t, along, across, 16)).x, 1.0, 1e-6);
+  EXPECT_LT(sg::raw(bands.trilinear(s, t, 16.0f / 64)).x, 0.8f);
+  const MipMap grey = pattern_map([](int, int) { return 0.25f; });
+  EXPECT_NEAR(sg::raw(grey.ewa(s, t, along, StExtent{0.3f, 0.2f}, 8)).x, 0.25, 1e-6);
+  EXPECT_EQ(sg::raw(columns.ewa(s, t, along, StExtent{}, 8)), sg::raw(columns.bilinear(0, s, t)));
+  // 32 texels along s, half a texel across: clamped to 4 across, level 2, where the columns are grey.
+  EXPECT_NEAR(sg::raw(columns.ewa(s, t, StExtent{0.5f, 0}, StExtent{0, 0.5f / 64}, 8)).x, 0.5, 1e-6);
+}
+
 TEST(Texture, SrgbDecodingAndRowFlip) {
   EXPECT_EQ(srgb_to_linear(0), 0);
   EXPECT_FLOAT_EQ(srgb_to_linear(1), 1);

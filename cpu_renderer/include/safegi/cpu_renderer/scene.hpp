@@ -24,6 +24,7 @@ struct ImageTexture {
   std::string file;                              // as written in the scene (for messages)
   ColourSpace colour_space = ColourSpace::srgb;  // how the file encoded its values (decoded at load)
   TextureFilter filter = TextureFilter::trilinear;
+  Real max_anisotropy = 8;  // ewa: the ellipse's longest major/minor ratio (pbrt-v3's "maxanisotropy")
   Real scale = 1.0f;  // multiplies every texel (pbrt's "scale")
   Mapping2D mapping;  // the surface point to the lookup's (s, t)
   std::shared_ptr<const MipMap> mipmap;  // built once at load, wrap mode included

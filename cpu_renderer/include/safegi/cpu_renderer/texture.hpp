@@ -1,5 +1,6 @@
 // Image textures: linear RGB texels in a MIP pyramid, looked up bilinearly on
-// one level or trilinearly between the two levels around a footprint.
+// one level, trilinearly between the two levels around a footprint, or by
+// pbrt-v3's EWA over an elliptical footprint.
 //
 // Texel values are dimensionless numbers; what they mean is the caller's: a
 // reflectance texture returns them as a Reflectance, an environment map
@@ -20,8 +21,14 @@ namespace safegi::render {
 // painted; decoded to linear at load) or already linear (EXR, HDR, PFM).
 enum class ColourSpace { srgb, linear };
 // bilinear: the finest level only; trilinear: bilinear on the two MIP levels
-// around the footprint, blended (pbrt's "trilinear").
-enum class TextureFilter { bilinear, trilinear };
+// around the footprint, blended (pbrt's "trilinear"); ewa: a Gaussian over the
+// footprint's ellipse, long along a grazing slope and narrow across it (pbrt-v3's default).
+enum class TextureFilter { bilinear, trilinear, ewa };
+
+// One of a footprint ellipse's semi-axes, in (s, t) units.
+struct StExtent {
+  Real s = 0, t = 0;
+};
 // Outside [0, 1): repeat, clamp to the edge texel, or black; a lat-long map
 // repeats in s (longitude) and clamps in t (latitude).
 enum class TextureWrap { repeat, clamp, black, longitude_latitude };
@@ -58,11 +65,20 @@ class MipMap {
   // measured in texels of level 0, blended linearly between the two levels
   // around it; below level 0 bilinear on level 0, beyond the last the 1×1 texel.
   Texel trilinear(Real s, Real t, Real width) const;
+  // pbrt-v3's EWA (MIPMap::Lookup): the ellipse with conjugate semi-axes `a`
+  // and `b` around (s, t), its minor axis lengthened until the major one is at
+  // most `max_anisotropy` times as long, filtered on the two levels around
+  // the minor axis' length (where it spans about a texel) by a Gaussian of
+  // the ellipse's radius (e^(−2r²) − e^(−2), r < 1), blended; a degenerate
+  // ellipse reads bilinearly on level 0.
+  Texel ewa(Real s, Real t, StExtent a, StExtent b, Real max_anisotropy) const;
   // The mean and the per-channel maximum of level 0.
   Texel average() const;
   Texel maximum() const;
 
  private:
+  Texel ewa_on_level(int level, Real s, Real t, StExtent a, StExtent b) const;
+
   struct Level {
     int width = 0, height = 0;
     std::vector<float> rgb;  // texels stay float in every build
