@@ -88,6 +88,22 @@ class CameraRays {
   }
 
   bool has_lens() const { return lens_radius_ > sg::zero && projection_ != CameraProjection::environment; }
+
+  // The image's x and y pixel steps seen along a camera ray of direction `d`,
+  // relative to the pixel cone's (ConeFootprint::step_x, step_y): pbrt-v3's
+  // differentials' directions and lengths. Perspective: the image plane's
+  // axes off the ray, shrunk by d·forward (a pixel at the corner of a wide
+  // image subtends less); orthographic: the axes themselves; environment: none
+  // (the cone's circle).
+  std::pair<ConeStep, ConeStep> pixel_steps(DirectionWorld d) const {
+    if (projection_ == CameraProjection::environment) return {};
+    const sg::vec3_rep right = sg::raw(right_), up = sg::raw(up_);
+    if (projection_ == CameraProjection::orthographic) return {sg::from_raw<ConeStep>(right), sg::from_raw<ConeStep>(up)};
+    const sg::vec3_rep along = sg::raw(d);
+    const Real facing = glm::dot(along, sg::raw(forward_));
+    auto off_ray = [&](sg::vec3_rep axis) { return sg::from_raw<ConeStep>((axis - along * glm::dot(along, axis)) * facing); };
+    return {off_ray(right), off_ray(up)};
+  }
   bool has_shutter() const { return shutter_span_ > sg::zero; }
 
   // A ray through the image point (x, y), in pixels from the top left corner.

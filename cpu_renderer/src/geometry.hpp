@@ -22,6 +22,9 @@ struct TimedRay : ray<World> {
   Time time = sg::zero;
 };
 
+// A step across a ray's cone of neighbouring rays, relative to the cone's width.
+using ConeStep = vector<World, dim::dimensionless>;
+
 struct SurfaceHit {
   PointWorld position;
   Real3 position_error;  // rounding-error box around `position`, in metres

@@ -83,6 +83,24 @@ std::optional<Length> convex_radius(const Shape& shape, bool from_inside) {
   return from_inside ? -radius : radius;
 }
 
+// The pixel steps across a cone that a specular surface turns from `incoming`
+// to `outgoing`: mirrored with the ray (about the normal that reflects it), or,
+// refracted, kept across the new direction.
+std::pair<ConeStep, ConeStep> steps_beyond(ConeStep step_x, ConeStep step_y, DirectionWorld incoming,
+                                           DirectionWorld outgoing, bool reflected) {
+  const sg::vec3_rep d = sg::raw(outgoing), mirror_normal = d - sg::raw(incoming);
+  const Real mirror_length = glm::length(mirror_normal);
+  auto turned = [&](ConeStep step) {
+    const sg::vec3_rep e = sg::raw(step);
+    if (reflected && mirror_length > Real(1e-6)) {
+      const sg::vec3_rep h = mirror_normal / mirror_length;
+      return sg::from_raw<ConeStep>(e - h * (2 * glm::dot(e, h)));
+    }
+    return sg::from_raw<ConeStep>(e - d * glm::dot(e, d));
+  };
+  return {turned(step_x), turned(step_y)};
+}
+
 }  // namespace
 
 template <bool area_lights>
@@ -219,6 +237,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
   bool last_vertex = false;
   // The camera ray cone at the path's last vertex (textures' footprint), while every bounce was specular.
   PixelCone cone = start.cone;
+  ConeStep step_x = start.step_x, step_y = start.step_y;
   bool sharp_cone = true;
   // Photon integrator: once a non-specular vertex has occurred, emission found
   // through specular bounces only (a caustic path, L S+ D …) is the photon map's.
@@ -326,7 +345,9 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
     if (last_vertex || depth >= max_depth_) break;
     if (shape.material < 0) break;
     // The cone's width across the surface, stretched by its tilt (a plain ratio).
-    auto footprint = [&] { return ConeFootprint{sharp_cone ? sg::abs(cone.width) : Length(sg::zero), ray.d}; };
+    auto footprint = [&] {
+      return ConeFootprint{sharp_cone ? sg::abs(cone.width) : Length(sg::zero), ray.d, step_x, step_y};
+    };
     const Material* chosen = &scene_.materials[shape.material];
     if (chosen->mix) {
       const MaterialChoice choice =
@@ -391,6 +412,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
         if (sample.specular) {
           const std::optional<Length> radius = convex_radius(shape, from_inside);
           next.cone = sample.wi.z() > 0 ? cone.reflected(radius) : cone.refracted(sample.eta, radius);
+          std::tie(next.step_x, next.step_y) = steps_beyond(step_x, step_y, ray.d, wi, sample.wi.z() > 0);
         }
       if (sg::is_black(next.throughput)) return std::nullopt;
       if constexpr (media) next.medium = reflected_geometrically ? around.front : around.back;
@@ -426,6 +448,8 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
     if constexpr (textured) {
       sharp_cone = sharp_cone && scattered->specular;
       cone = next->cone;
+      step_x = next->step_x;
+      step_y = next->step_y;
     }
     if constexpr (gather) after_diffuse = after_diffuse || !scattered->specular;
     previous_pdf = scattered->pdf;

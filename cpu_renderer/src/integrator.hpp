@@ -42,6 +42,7 @@ struct PathStart {
   PixelCone cone;               // the camera ray's cone where the path starts (textures' footprint)
   Real compression = 1;         // the radiance compression by refraction so far (for Russian roulette)
   int medium = -1;              // the one the ray travels in (media only)
+  ConeStep step_x{}, step_y{};  // the image's pixel steps across the cone (ConeFootprint)
 };
 
 struct RayCounters {
@@ -60,6 +61,7 @@ class Integrator {
         roulette_depth_(settings.russian_roulette ? settings.russian_roulette_depth : std::numeric_limits<int>::max()),
         textures_(scene),
         pixel_cone_(pixel_cone(scene.camera, settings.width, settings.height, settings.spp)),
+        camera_rays_(scene.camera, settings.width, settings.height),
         media_(scene.has_media()) {
     if (media_ && settings.integrator == IntegratorType::photon)
       throw std::invalid_argument(
@@ -99,7 +101,8 @@ class Integrator {
   }
   template <bool area_lights, bool one_light_sample, bool gather, bool textured>
   Radiance with_media(const TimedRay& camera_ray, Sampler& sampler, RayCounters& counters) const {
-    const PathStart start{.ray = camera_ray, .cone = pixel_cone_, .medium = scene_.camera.medium};
+    PathStart start{.ray = camera_ray, .cone = pixel_cone_, .medium = scene_.camera.medium};
+    if constexpr (textured) std::tie(start.step_x, start.step_y) = camera_rays_.pixel_steps(camera_ray.d);
     int splits_left = kMaxSpecularSplits;
     // The photon integrator refuses scenes with media (see the constructor).
     if constexpr (!gather)
@@ -162,6 +165,7 @@ class Integrator {
   int roulette_depth_;
   SurfaceTextures textures_;
   PixelCone pixel_cone_;
+  CameraRays camera_rays_;  // for the pixel steps of the camera's rays
   bool media_;  // the scene has participating media or invisible surfaces
   std::unique_ptr<PhotonMap> photons_;
 };

@@ -104,6 +104,31 @@ TEST(RenderCamera, PixelConeIsAPixelNarrowedBySamples) {
   EXPECT_EQ(sg::raw(ortho.spread), 0.0f);
 }
 
+// The pixel steps along a camera ray are the image plane's axes off the ray,
+// shrunk by d·forward: one pixel's step at the centre, at the corner of a 90°
+// image √(2/3)/√3 ≈ 0.471 of it, across the ray; orthographic: the axes.
+TEST(RenderCamera, PixelStepsAreTheImageAxesAlongEachRay) {
+  Camera camera;
+  camera.position = PointWorld(0 * units::meter, 0 * units::meter, 0 * units::meter);
+  camera.look_at = PointWorld(0 * units::meter, 0 * units::meter, -1 * units::meter);
+  camera.up = DirectionWorld(0, 1, 0);
+  camera.fov = Real(90) * units::degree;
+  const CameraRays rays(camera, 64, 64);
+  auto [centre_x, centre_y] = rays.pixel_steps(DirectionWorld(0, 0, -1));
+  EXPECT_NEAR(sg::raw(centre_x).x, 1.0f, 1e-6f);
+  EXPECT_NEAR(sg::raw(centre_y).y, 1.0f, 1e-6f);
+  const DirectionWorld corner = sg::normalize(sg::from_raw<ConeStep>(glm::vec3(1, 1, -1)));
+  auto [corner_x, corner_y] = rays.pixel_steps(corner);
+  EXPECT_NEAR(glm::length(sg::raw(corner_x)), std::sqrt(2.0 / 3) / std::sqrt(3.0), 1e-6);
+  EXPECT_NEAR(glm::dot(sg::raw(corner_x), sg::raw(corner)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::dot(sg::raw(corner_y), sg::raw(corner)), 0.0f, 1e-6f);
+  camera.projection = CameraProjection::orthographic;
+  camera.view_size = Real(2) * units::meter;
+  auto [ortho_x, ortho_y] = CameraRays(camera, 64, 64).pixel_steps(DirectionWorld(0, 0, -1));
+  EXPECT_EQ(sg::raw(ortho_x), glm::vec3(1, 0, 0));
+  EXPECT_EQ(sg::raw(ortho_y), glm::vec3(0, 1, 0));
+}
+
 // Past specular surfaces the cone bends as paraxial optics says: a ball lens
 // (n = 1.5, r = 1) focuses a parallel beam at its back focal length, n·2r /
 // (4 (n − 1)) − r = 0.5 behind it; a convex mirror's reflection seems to

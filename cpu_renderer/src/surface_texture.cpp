@@ -107,9 +107,11 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
   if (!diffuse->textured()) return diffuse->value;
   // Isotropic lookups take the ellipse's long axis.
   const bool filtered = footprint.width > sg::zero;
-  const Length width =
-      filtered ? footprint.width / std::max(std::abs(sg::dot(sg::to_direction(hit.normal), footprint.direction)), Real(1e-3))
-               : Length(sg::zero);
+  Length width = sg::zero;
+  if (filtered) {
+    const std::array<Real3, 2> axes = cone_axes_on_surface(hit.normal, footprint);
+    width = std::max(kernel::length(axes[0]), kernel::length(axes[1])) * units::meter;
+  }
   if (diffuse->pattern >= 0) {
     const Pattern& pattern = scene_.patterns[diffuse->pattern].pattern;
     PatternLookup lookup{.position = hit.position, .width = width};
@@ -165,18 +167,29 @@ Real luminance_at(const ImageTexture& texture, TexCoord at, PointWorld position)
 
 }  // namespace
 
-std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
-                                                    const ConeFootprint& footprint) {
-  // Plain numbers in metres: the solve mixes the axes' lengths with dp/du's.
+std::array<Real3, 2> cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint) {
+  // Plain numbers in metres: the uv solve mixes the axes' lengths with dp/du's.
   const Real3 n = to_kernel(sg::to_direction(normal)), direction = to_kernel(footprint.direction);
   const Real cosine = kernel::dot(n, direction);
   const Real tilt = std::max(std::abs(cosine), Real(1e-3));
+  const Real width = sg::raw(footprint.width);
+  const Real3 step_x = to_kernel(footprint.step_x), step_y = to_kernel(footprint.step_y);
+  if (kernel::dot(step_x, step_x) > 0 || kernel::dot(step_y, step_y) > 0) {
+    // Each step slid along the ray onto the plane (pbrt-v3's offset rays met with the tangent plane).
+    const Real signed_tilt = cosine < 0 ? -tilt : tilt;
+    auto onto_plane = [&](Real3 step) { return (step - direction * (kernel::dot(n, step) / signed_tilt)) * width; };
+    return {onto_plane(step_x), onto_plane(step_y)};
+  }
   Real3 along = direction - n * cosine;  // the slope's direction on the surface
   if (!(kernel::length(along) > Real(1e-6))) along = to_kernel(perpendiculars(sg::to_direction(normal)).first);
   along = kernel::normalize(along);
   const Real3 across = kernel::cross(n, along);
-  const Real width = sg::raw(footprint.width);
-  const Real3 axes[2] = {along * (width / tilt), across * width};
+  return {along * (width / tilt), across * width};
+}
+
+std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
+                                                    const ConeFootprint& footprint) {
+  const std::array<Real3, 2> axes = cone_axes_on_surface(normal, footprint);
   const Real3 pu = to_kernel(dp_du), pv = to_kernel(dp_dv);
   const Real uu = kernel::dot(pu, pu), uv = kernel::dot(pu, pv), vv = kernel::dot(pv, pv);
   const Real determinant = uu * vv - uv * uv;

@@ -30,10 +30,20 @@ namespace safegi::render {
 struct ConeFootprint {
   Length width = sg::zero;
   DirectionWorld direction{0, 0, 1};
+  // The image's x and y pixel steps seen along the ray, each perpendicular to
+  // `direction` and as long as that step is over `width` (1 at a perspective
+  // image's centre, about ½ at the corner of a 90° one): pbrt-v3's ray
+  // differentials, whose ellipse and box extents follow them. Zero: the
+  // circle's own axes, along the slope and across it.
+  ConeStep step_x{}, step_y{};
 };
 
+// The footprint's two semi-axes on a surface of normal `normal`, in metres:
+// its steps (or the circle's axes) carried along the ray onto the surface's plane.
+std::array<Real3, 2> cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint);
+
 // The cone's ellipse on a surface of normal `normal` (`width` across the
-// ray's slope, width/|cos θ| along it), its two semi-axes written in `dp_du`
+// ray's slope, width/|cos θ| along it; or its steps'), its two semi-axes written in `dp_du`
 // and `dp_dv` by least squares, as (du, dv) each. Nothing where dp/du and
 // dp/dv are parallel.
 std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,

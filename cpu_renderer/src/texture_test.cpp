@@ -152,5 +152,36 @@ TEST(ConeFootprint, ItsExtentInUAndVFollowsTheSlope) {
   EXPECT_FALSE(cone_uv_extent(along_x, along_x, up, ConeFootprint{Real(0.1) * metre, DirectionWorld(0, 0, -1)}));
 }
 
+// With the image's pixel steps, the axes on the surface are where rays that
+// far apart meet its plane (pbrt-v3's differentials): each step slid along the
+// ray onto the plane, to first order the offset ray's own hit, found here by
+// intersecting it. Across the slope a step stays itself; the box extents then
+// follow the steps, not the ellipse's own axes.
+TEST(ConeFootprint, PixelStepsLandWhereNeighbouringRaysMeetThePlane) {
+  const Length metre = Real(1) * units::meter;
+  const NormalWorld up(0, 0, 1);
+  const glm::vec3 d = glm::normalize(glm::vec3(0.6f, 0.2f, -0.7f));
+  const glm::vec3 e = glm::normalize(glm::vec3(0.3f, -0.5f, 0) - d * glm::dot(d, glm::vec3(0.3f, -0.5f, 0)));
+  const glm::vec3 e_across = glm::normalize(glm::cross(d, glm::vec3(0, 0, 1)));
+  ConeFootprint footprint{Real(0.01) * metre, sg::from_raw<DirectionWorld>(d)};
+  footprint.step_x = sg::from_raw<ConeStep>(e * 0.8f);
+  footprint.step_y = sg::from_raw<ConeStep>(e_across);
+  const std::array<Real3, 2> axes = cone_axes_on_surface(up, footprint);
+  // Rays from 3 m above the origin's hit: the central one and one turned by 0.01 · 0.8 · e per metre travelled.
+  const glm::vec3 origin = -d * (3.0f / -d.z);
+  auto hit_of = [&](glm::vec3 direction) { return origin + direction * (-origin.z / direction.z); };
+  const float travelled = 3.0f / -d.z;
+  const glm::vec3 offset_hit = hit_of(d + e * (0.8f * 0.01f / travelled));
+  EXPECT_NEAR(axes[0].x, offset_hit.x, 2e-5f);
+  EXPECT_NEAR(axes[0].y, offset_hit.y, 2e-5f);
+  EXPECT_NEAR(axes[0].z, 0.0f, 1e-7f);
+  EXPECT_NEAR(axes[1].x, 0.01f * e_across.x, 1e-7f);
+  EXPECT_NEAR(axes[1].y, 0.01f * e_across.y, 1e-7f);
+  const VectorWorld along_x(2 * metre, 0 * metre, 0 * metre), along_y(0 * metre, 2 * metre, 0 * metre);
+  auto [u, v] = cone_uv_extent(along_x, along_y, up, footprint).value();
+  EXPECT_NEAR(u, std::max(std::abs(axes[0].x), std::abs(axes[1].x)) / 2, 1e-7f);
+  EXPECT_NEAR(v, std::max(std::abs(axes[0].y), std::abs(axes[1].y)) / 2, 1e-7f);
+}
+
 }  // namespace
 }  // namespace safegi::render
