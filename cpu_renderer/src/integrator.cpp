@@ -344,7 +344,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
     }
     if (last_vertex || depth >= max_depth_) break;
     if (shape.material < 0) break;
-    // The cone's width across the surface, stretched by its tilt (a plain ratio).
+    // The camera cone where it meets the surface: nothing to filter after a non-specular bounce.
     auto footprint = [&] {
       return ConeFootprint{sharp_cone ? sg::abs(cone.width) : Length(sg::zero), ray.d, step_x, step_y};
     };

@@ -132,17 +132,22 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
     return diffuse->value * evaluate(pattern, lookup);
   }
   const ImageTexture& texture = scene_.textures[diffuse->texture];
-  if (texture.filter == TextureFilter::ewa && filtered && texture.mapping.kind == Mapping2D::Kind::uv) {
+  if (texture.filter != TextureFilter::bilinear && filtered && texture.mapping.kind == Mapping2D::Kind::uv) {
     const Derivatives at = derivatives(hit, time);
     const TextureCoordinates st = texture.mapping.at(at.uv.u, at.uv.v, hit.position);
     if (const std::optional<std::array<TexCoord, 2>> axes = cone_uv_axes(at.dp_du, at.dp_dv, hit.normal, footprint)) {
       auto in_st = [&](TexCoord axis) { return StExtent{axis.u * texture.mapping.u_scale, axis.v * texture.mapping.v_scale}; };
-      return diffuse->value * texture.mipmap->ewa(st.s, st.t, in_st((*axes)[0]), in_st((*axes)[1]), texture.max_anisotropy);
+      const StExtent a = in_st((*axes)[0]), b = in_st((*axes)[1]);
+      if (texture.filter == TextureFilter::ewa)
+        return diffuse->value * texture.mipmap->ewa(st.s, st.t, a, b, texture.max_anisotropy);
+      // pbrt-v3's trilinear: twice the largest step in s or in t.
+      const Real reach = std::max({std::abs(a.s), std::abs(a.t), std::abs(b.s), std::abs(b.t)});
+      return diffuse->value * texture.mipmap->trilinear(st.s, st.t, 2 * reach);
     }
   }
   TexCoord at = uv(hit, time);
   const TextureCoordinates st = texture.mapping.at(at.u, at.v, hit.position);
-  const Real texels = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();  // pbrt-v3's trilinear: isotropic too
+  const Real texels = width * uv_per_length_[hit.shape] * texture.mapping.uv_scale();  // where (u, v) has no frame
   if (texture.filter == TextureFilter::bilinear || !(texels > 0)) return diffuse->value * texture.mipmap->bilinear(0, st.s, st.t);
   return diffuse->value * texture.mipmap->trilinear(st.s, st.t, texels);
 }
