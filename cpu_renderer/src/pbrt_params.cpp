@@ -1,6 +1,7 @@
 #include "pbrt_params.hpp"
 
 #include "pbrt_colour.hpp"
+#include "safegi/cpu_renderer/quoted_list.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,14 +12,9 @@ namespace safegi::render::pbrt {
 namespace {
 
 std::string type_names(std::initializer_list<ParamType> types) {
-  std::string list;
-  size_t i = 0;
-  for (ParamType type : types) {
-    if (i > 0) list += i + 1 == types.size() ? " or " : ", ";
-    list += "\"" + std::string(param_type_name(type)) + "\"";
-    ++i;
-  }
-  return list;
+  std::vector<std::string_view> names;
+  for (ParamType type : types) names.push_back(param_type_name(type));
+  return quoted_list(names);
 }
 
 std::string declared(const Param& param) { return "\"" + param.type_name + " " + param.name + "\""; }

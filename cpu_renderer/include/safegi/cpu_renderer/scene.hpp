@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "safegi/cpu_renderer/quoted_list.hpp"
 #include "safegi/cpu_renderer/procedural_texture.hpp"
 #include "safegi/cpu_renderer/texture.hpp"
 #include "safegi/cpu_renderer/types.hpp"
@@ -342,12 +343,7 @@ std::optional<Enum> enum_named(const char* const (&names)[N], std::string_view n
 // The names quoted, as a message lists the choices: "a", "b" or "c".
 template <size_t N>
 std::string quoted_choices(const char* const (&names)[N]) {
-  std::string list;
-  for (size_t i = 0; i < N; ++i) {
-    if (i > 0) list.append(i + 1 == N ? " or " : ", ");
-    list.append("\"").append(names[i]).append("\"");
-  }
-  return list;
+  return quoted_list(names);
 }
 inline std::optional<LightStrategy> light_strategy_named(std::string_view name) {
   return enum_named<LightStrategy>(kLightStrategyNames, name);
