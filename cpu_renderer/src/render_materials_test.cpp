@@ -110,15 +110,20 @@ TEST(RenderMaterials, GlassSphereInAWhiteFurnaceIsInvisible) {
 // internal reflections, T = (1 − R)² Σ R^2k = (1 − R)/(1 + R) with R the
 // normal-incidence Fresnel reflectance ((n − 1)/(n + 1))²; for n = 2.4 that is
 // 0.7100, clearly apart from the single pass (1 − R)² = 0.6896.
-TEST(RenderMaterials, GlassSlabTransmitsOneMinusROverOnePlusR) {
-  const double n = 2.4, r = (n - 1) * (n - 1) / ((n + 1) * (n + 1)), expected = (1 - r) / (1 + r), emission = 3;
-  std::string scene = "{" + camera_on_z(5, 2, 32, "path", 400) + R"json(,
+// A diamond slab 0.2 m thick between the camera and an emitter of 3 W/(m² sr).
+std::string diamond_slab(int size, const std::string& integrator) {
+  return "{" + camera_on_z(5, 2, size, integrator, 400) + R"json(,
     "materials": {"diamond": {"type": "glass", "ior": 2.4}},
     "shapes": [
       {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "0.1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"]},
       {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "-0.1 m"], "edge_u": ["0 m", "4 m", "0 m"], "edge_v": ["4 m", "0 m", "0 m"]},
       {"type": "quad", "origin": ["-2 m", "-2 m", "-1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"],
        "emission": "3 W/(m2 sr)"}]})json";
+}
+
+TEST(RenderMaterials, GlassSlabTransmitsOneMinusROverOnePlusR) {
+  const double n = 2.4, r = (n - 1) * (n - 1) / ((n + 1) * (n + 1)), expected = (1 - r) / (1 + r), emission = 3;
+  std::string scene = diamond_slab(32, "path");
   Image image = render_text(scene, 256, 2, std::nullopt, [](RenderSettings& s) { s.russian_roulette = false; });
   Estimate e = channel_estimate(image, 0);
   EXPECT_NEAR(e.mean, expected * emission, 5 * e.standard_error);
@@ -130,13 +135,7 @@ TEST(RenderMaterials, GlassSlabTransmitsOneMinusROverOnePlusR) {
 // with no Fresnel choice to make it noisy (it fails if one lobe is chosen).
 TEST(RenderMaterials, DirectLightingFollowsBothLobesOfGlass) {
   const double n = 2.4, r = (n - 1) * (n - 1) / ((n + 1) * (n + 1)), expected = 3 * (1 - r) / (1 + r);
-  std::string scene = "{" + camera_on_z(5, 2, 8, "direct", 400) + R"json(,
-    "materials": {"diamond": {"type": "glass", "ior": 2.4}},
-    "shapes": [
-      {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "0.1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"]},
-      {"type": "quad", "material": "diamond", "origin": ["-2 m", "-2 m", "-0.1 m"], "edge_u": ["0 m", "4 m", "0 m"], "edge_v": ["4 m", "0 m", "0 m"]},
-      {"type": "quad", "origin": ["-2 m", "-2 m", "-1 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "4 m", "0 m"],
-       "emission": "3 W/(m2 sr)"}]})json";
+  std::string scene = diamond_slab(8, "direct");
   Image image = render_text(scene, 1, 2, std::nullopt, [](RenderSettings& s) { s.russian_roulette = false; });
   for (size_t i = 0; i < image.rgb.size(); ++i) EXPECT_NEAR(image.rgb[i], expected, 1e-4 * expected) << i;
 }
