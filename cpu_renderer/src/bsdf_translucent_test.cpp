@@ -279,10 +279,16 @@ TEST(Translucent, ScattersAtMostWhatItReceivesAndSamplesItsPdf) {
         for (int c = 0; c < 3; ++c) {
           const double bound = (p.reflect[c] + p.transmit[c]) * (p.kd[c] + (from_inside ? 1.5 * 1.5 : 1) * p.ks[c]);
           EXPECT_LE(albedo[c], bound + 2e-3) << where << ", channel " << c;  // the quadrature's error
-          if (!from_inside || &p != &sets[2]) EXPECT_LE(albedo[c], 1.0) << where << ", channel " << c;
-          if (lambertian) EXPECT_NEAR(albedo[c], (p.reflect[c] + p.transmit[c]) * p.kd[c], 2e-3) << where;
+          if (!from_inside || &p != &sets[2]) {
+            EXPECT_LE(albedo[c], 1.0) << where << ", channel " << c;
+          }
+          if (lambertian) {
+            EXPECT_NEAR(albedo[c], (p.reflect[c] + p.transmit[c]) * p.kd[c], 2e-3) << where;
+          }
         }
-        if (lambertian) EXPECT_NEAR(pdf_total, 1.0, 2e-3) << where;
+        if (lambertian) {
+          EXPECT_NEAR(pdf_total, 1.0, 2e-3) << where;
+        }
       }
     }
   }
