@@ -394,7 +394,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
                                    mis_, counters);
 
     // The path beyond this vertex along `sample`; none where it ends.
-    auto beyond = [&](const BsdfSample& sample) -> std::optional<PathStart> {
+    auto beyond = [&](const BsdfSample& sample) __attribute__((always_inline)) -> std::optional<PathStart> {
       const DirectionWorld wi = frame.from_local(sample.wi);
       // A perturbed normal can send a reflection below the real surface (or a
       // refraction above it): pbrt-v3 then weighs the sample by the lobes of the
