@@ -481,5 +481,47 @@ TEST(Bsdf, GlassChoosesByFresnelAndCompressesRadiance) {
   }
 }
 
+// Both of glass's lobes at once (what direct lighting follows): each sample's
+// direction, weighed by its Fresnel share, so that they sum to what sampling
+// one by Fresnel gives in expectation; total internal reflection is one lobe
+// of the whole tint; a mirror has one, a diffuse material none.
+TEST(Bsdf, SpecularLobesAreTheFresnelWeightedSamples) {
+  const GlassMaterial parameters{Reflectance(0.9f), Reflectance(0.8f), 1.5f};
+  const Material glass{parameters};
+  const Reflectance no_diffuse{};
+  for (bool from_inside : {false, true}) {
+    const Real eta = from_inside ? 1 / parameters.ior : parameters.ior;
+    Bsdf bsdf(glass, no_diffuse, from_inside);
+    for (double theta : {0.0, 0.6, 1.2}) {
+      const DirectionShading wo = spherical(theta, 0.3);
+      const SpecularLobes lobes = bsdf.specular_lobes(wo);
+      const Real reflected = fresnel_dielectric(wo.z(), eta);
+      const std::optional<BsdfSample> reflection = bsdf.sample(wo, 0, 0.5f, 0.5f);
+      ASSERT_GE(lobes.count, 1);
+      EXPECT_EQ(sg::raw(lobes.lobe[0].wi), sg::raw(reflection->wi));
+      if (reflected == 1) {  // beyond the critical angle
+        EXPECT_EQ(lobes.count, 1) << eta << " at " << theta;
+        EXPECT_FLOAT_EQ(sg::raw(lobes.lobe[0].weight).r, 0.9f);
+        continue;
+      }
+      ASSERT_EQ(lobes.count, 2) << eta << " at " << theta;
+      const std::optional<BsdfSample> refraction = bsdf.sample(wo, 1, 0.5f, 0.5f);
+      EXPECT_FLOAT_EQ(sg::raw(lobes.lobe[0].weight).r, 0.9f * reflected);
+      EXPECT_EQ(sg::raw(lobes.lobe[1].wi), sg::raw(refraction->wi));
+      EXPECT_FLOAT_EQ(sg::raw(lobes.lobe[1].weight).r, 0.8f * (1 - reflected) / (eta * eta));
+      EXPECT_EQ(lobes.lobe[1].eta, eta);
+      EXPECT_EQ(refraction->eta, eta);
+      EXPECT_TRUE(lobes.lobe[0].specular && lobes.lobe[1].specular);
+    }
+  }
+  const Material mirror{MirrorMaterial{Reflectance(0.7f)}};
+  const SpecularLobes mirrored = Bsdf(mirror).specular_lobes(spherical(0.4, 0.1));
+  ASSERT_EQ(mirrored.count, 1);
+  EXPECT_FLOAT_EQ(sg::raw(mirrored.lobe[0].weight).g, 0.7f);
+  const Material lambert{LambertMaterial{}};
+  const Reflectance grey(0.5f);
+  EXPECT_EQ(Bsdf(lambert, grey, false).specular_lobes(spherical(0.4, 0.1)).count, 0);
+}
+
 }  // namespace
 }  // namespace safegi::render
