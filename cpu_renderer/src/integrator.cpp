@@ -246,6 +246,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   int medium = start.medium;
   int crossings = 0;  // invisible boundaries crossed (media only)
+  const bool lights_paired = paired_scatter_samples_ && !lights_.empty();
 
   // After a scattering event that chose a non-specular direction: direct
   // lighting follows mirrors but stops after one such event, once the
@@ -404,8 +405,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
         const bool reflected_in_shading = (sample.wi.z() > 0) == (wo.z() > 0);
         if (reflected_geometrically != reflected_in_shading) return std::nullopt;
       }
-      if (!sample.specular && !direct_lighting_goes_on(paired_scatter_samples_ && !lights_.empty()))
-        return std::nullopt;
+      if (!sample.specular && !direct_lighting_goes_on(lights_paired)) return std::nullopt;
       PathStart next{spawn_ray(*hit, wi, ray.time), throughput * sample.weight, depth + 1, cone,
                      compression * sample.compression, medium};
       if constexpr (textured)
@@ -421,6 +421,9 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
       return next;
     };
 
+    // Direct lighting ends at a non-specular vertex whose light samples had
+    // BSDF samples of their own, or where no BSDF sample is weighed by MIS: draw none.
+    if (direct_only_ && !bsdf.is_specular() && !(area_lights && mis_ && !lights_paired)) break;
     Real u_lobe = sampler.next_1d();
     Sample2 u_direction = sampler.next_2d();
     std::optional<BsdfSample> scattered;

@@ -108,8 +108,9 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
   // Isotropic lookups take the ellipse's long axis.
   const bool filtered = footprint.width > sg::zero;
   Length width = sg::zero;
+  SurfaceAxes axes{};
   if (filtered) {
-    const std::array<Real3, 2> axes = cone_axes_on_surface(hit.normal, footprint);
+    axes = cone_axes_on_surface(hit.normal, footprint);
     width = std::max(kernel::length(axes[0]), kernel::length(axes[1])) * units::meter;
   }
   if (diffuse->pattern >= 0) {
@@ -122,7 +123,7 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
         lookup.v = at.uv.v;
         const Real isotropic = sg::raw(width * uv_per_length_[hit.shape]);  // where (u, v) has no frame
         std::tie(lookup.u_footprint, lookup.v_footprint) =
-            cone_uv_extent(at.dp_du, at.dp_dv, hit.normal, footprint).value_or(std::pair{isotropic, isotropic});
+            cone_uv_extent(at.dp_du, at.dp_dv, axes).value_or(std::pair{isotropic, isotropic});
       } else {
         const TexCoord at = uv(hit, time);
         lookup.u = at.u;
@@ -135,9 +136,9 @@ Reflectance SurfaceTextures::reflectance_at(const TexturedReflectance& reflectan
   if (texture.filter != TextureFilter::bilinear && filtered && texture.mapping.kind == Mapping2D::Kind::uv) {
     const Derivatives at = derivatives(hit, time);
     const TextureCoordinates st = texture.mapping.at(at.uv.u, at.uv.v, hit.position);
-    if (const std::optional<std::array<TexCoord, 2>> axes = cone_uv_axes(at.dp_du, at.dp_dv, hit.normal, footprint)) {
+    if (const std::optional<std::array<TexCoord, 2>> in_uv = cone_uv_axes(at.dp_du, at.dp_dv, axes)) {
       auto in_st = [&](TexCoord axis) { return StExtent{axis.u * texture.mapping.u_scale, axis.v * texture.mapping.v_scale}; };
-      const StExtent a = in_st((*axes)[0]), b = in_st((*axes)[1]);
+      const StExtent a = in_st((*in_uv)[0]), b = in_st((*in_uv)[1]);
       if (texture.filter == TextureFilter::ewa)
         return diffuse->value * texture.mipmap->ewa(st.s, st.t, a, b, texture.max_anisotropy);
       // pbrt-v3's trilinear: twice the largest step in s or in t.
@@ -172,7 +173,7 @@ Real luminance_at(const ImageTexture& texture, TexCoord at, PointWorld position)
 
 }  // namespace
 
-std::array<Real3, 2> cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint) {
+SurfaceAxes cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint) {
   // Plain numbers in metres: the uv solve mixes the axes' lengths with dp/du's.
   const Real3 n = to_kernel(sg::to_direction(normal)), direction = to_kernel(footprint.direction);
   const Real cosine = kernel::dot(n, direction);
@@ -192,9 +193,7 @@ std::array<Real3, 2> cone_axes_on_surface(NormalWorld normal, const ConeFootprin
   return {along * (width / tilt), across * width};
 }
 
-std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
-                                                    const ConeFootprint& footprint) {
-  const std::array<Real3, 2> axes = cone_axes_on_surface(normal, footprint);
+std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, const SurfaceAxes& axes) {
   const Real3 pu = to_kernel(dp_du), pv = to_kernel(dp_dv);
   const Real uu = kernel::dot(pu, pu), uv = kernel::dot(pu, pv), vv = kernel::dot(pv, pv);
   const Real determinant = uu * vv - uv * uv;
@@ -207,12 +206,11 @@ std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWor
   return in_uv;
 }
 
-std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
-                                                    const ConeFootprint& footprint) {
-  const std::optional<std::array<TexCoord, 2>> axes = cone_uv_axes(dp_du, dp_dv, normal, footprint);
-  if (!axes) return std::nullopt;
-  return std::pair{std::max(std::abs((*axes)[0].u), std::abs((*axes)[1].u)),
-                   std::max(std::abs((*axes)[0].v), std::abs((*axes)[1].v))};
+std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, const SurfaceAxes& axes) {
+  const std::optional<std::array<TexCoord, 2>> in_uv = cone_uv_axes(dp_du, dp_dv, axes);
+  if (!in_uv) return std::nullopt;
+  return std::pair{std::max(std::abs((*in_uv)[0].u), std::abs((*in_uv)[1].u)),
+                   std::max(std::abs((*in_uv)[0].v), std::abs((*in_uv)[1].v))};
 }
 
 SurfaceTextures::Derivatives SurfaceTextures::derivatives(const SurfaceHit& hit, Time time) const {

@@ -38,20 +38,20 @@ struct ConeFootprint {
   ConeStep step_x{}, step_y{};
 };
 
-// The footprint's two semi-axes on a surface of normal `normal`, in metres:
-// its steps (or the circle's axes) carried along the ray onto the surface's plane.
-std::array<Real3, 2> cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint);
+// Two semi-axes of a footprint's ellipse on a surface, in metres.
+using SurfaceAxes = std::array<Real3, 2>;
 
-// The cone's ellipse on a surface of normal `normal` (`width` across the
-// ray's slope, width/|cos θ| along it; or its steps'), its two semi-axes written in `dp_du`
-// and `dp_dv` by least squares, as (du, dv) each. Nothing where dp/du and
-// dp/dv are parallel.
-std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
-                                                    const ConeFootprint& footprint);
-// The largest |du| and the largest |dv| of those axes (pbrt-v3's
+// The footprint's semi-axes on a surface of normal `normal` (`width` across
+// the ray's slope, width/|cos θ| along it; or its steps', carried along the
+// ray onto the surface's plane).
+SurfaceAxes cone_axes_on_surface(NormalWorld normal, const ConeFootprint& footprint);
+
+// Those axes written in `dp_du` and `dp_dv` by least squares, as (du, dv)
+// each. Nothing where dp/du and dp/dv are parallel.
+std::optional<std::array<TexCoord, 2>> cone_uv_axes(VectorWorld dp_du, VectorWorld dp_dv, const SurfaceAxes& axes);
+// The largest |du| and the largest |dv| of them (pbrt-v3's
 // max(|du/dx|, |du/dy|) and its v twin).
-std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, NormalWorld normal,
-                                                    const ConeFootprint& footprint);
+std::optional<std::pair<Real, Real>> cone_uv_extent(VectorWorld dp_du, VectorWorld dp_dv, const SurfaceAxes& axes);
 
 class SurfaceTextures {
  public:

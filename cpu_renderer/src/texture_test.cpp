@@ -131,7 +131,7 @@ TEST(ConeFootprint, ItsExtentInUAndVFollowsTheSlope) {
   const NormalWorld up(0, 0, 1);
   const Real c = std::cos(Real(1.0471976)), s = std::sin(Real(1.0471976));
   auto extent = [&](VectorWorld dp_du, VectorWorld dp_dv, DirectionWorld direction) {
-    return cone_uv_extent(dp_du, dp_dv, up, ConeFootprint{Real(0.1) * metre, direction}).value();
+    return cone_uv_extent(dp_du, dp_dv, cone_axes_on_surface(up, ConeFootprint{Real(0.1) * metre, direction})).value();
   };
   const VectorWorld along_x(2 * metre, 0 * metre, 0 * metre), along_y(0 * metre, 2 * metre, 0 * metre);
   auto [head_on_u, head_on_v] = extent(along_x, along_y, DirectionWorld(0, 0, -1));
@@ -149,7 +149,7 @@ TEST(ConeFootprint, ItsExtentInUAndVFollowsTheSlope) {
   EXPECT_NEAR(d_u, 0.1f * h, 1e-5f);
   EXPECT_NEAR(d_v, 0.1f * h, 1e-5f);
   // dp/du parallel to dp/dv: no frame to write the ellipse in.
-  EXPECT_FALSE(cone_uv_extent(along_x, along_x, up, ConeFootprint{Real(0.1) * metre, DirectionWorld(0, 0, -1)}));
+  EXPECT_FALSE(cone_uv_extent(along_x, along_x, cone_axes_on_surface(up, ConeFootprint{Real(0.1) * metre, DirectionWorld(0, 0, -1)})));
 }
 
 // With the image's pixel steps, the axes on the surface are where rays that
@@ -178,7 +178,7 @@ TEST(ConeFootprint, PixelStepsLandWhereNeighbouringRaysMeetThePlane) {
   EXPECT_NEAR(axes[1].x, 0.01f * e_across.x, 1e-7f);
   EXPECT_NEAR(axes[1].y, 0.01f * e_across.y, 1e-7f);
   const VectorWorld along_x(2 * metre, 0 * metre, 0 * metre), along_y(0 * metre, 2 * metre, 0 * metre);
-  auto [u, v] = cone_uv_extent(along_x, along_y, up, footprint).value();
+  auto [u, v] = cone_uv_extent(along_x, along_y, axes).value();
   EXPECT_NEAR(u, std::max(std::abs(axes[0].x), std::abs(axes[1].x)) / 2, 1e-7f);
   EXPECT_NEAR(v, std::max(std::abs(axes[0].y), std::abs(axes[1].y)) / 2, 1e-7f);
 }
