@@ -127,42 +127,45 @@ Texel MipMap::ewa(Real s, Real t, StExtent a, StExtent b, Real max_anisotropy) c
 }
 
 Texel MipMap::ewa_on_level(int level, Real s, Real t, StExtent a, StExtent b) const {
-  if (level >= levels() - 1) return texel(levels() - 1, 0, 0);
-  const Level& l = levels_[level];
-  const Real w = static_cast<Real>(l.width), h = static_cast<Real>(l.height);
-  // In this level's texels, centres at integers.
-  const Real x = s * w - Real(0.5), y = t * h - Real(0.5);
-  a = {a.s * w, a.t * h};
-  b = {b.s * w, b.t * h};
-  // The ellipse A x² + B x y + C y² < 1, widened by a texel so that it covers one at least.
-  Real qa = a.t * a.t + b.t * b.t + 1, qb = -2 * (a.s * a.t + b.s * b.t), qc = a.s * a.s + b.s * b.s + 1;
-  const Real inverse_f = 1 / (qa * qc - qb * qb * Real(0.25));
-  qa *= inverse_f;
-  qb *= inverse_f;
-  qc *= inverse_f;
-  const Real determinant = -qb * qb + 4 * qa * qc;
-  const Real half_width = 2 * std::sqrt(determinant * qc) / determinant;
-  const Real half_height = 2 * std::sqrt(determinant * qa) / determinant;
-  // A footprint far larger than the level (clamped anisotropy keeps it near
-  // a few texels across; this bounds the loop whatever the input).
-  constexpr Real kMaxTexelsAcross = 1024;
-  if (!(half_width < kMaxTexelsAcross && half_height < kMaxTexelsAcross)) return texel(levels() - 1, 0, 0);
-  const int x0 = static_cast<int>(std::ceil(x - half_width)), x1 = static_cast<int>(std::floor(x + half_width));
-  const int y0 = static_cast<int>(std::ceil(y - half_height)), y1 = static_cast<int>(std::floor(y + half_height));
-  Texel sum{};
-  Real weights = 0;
-  for (int iy = y0; iy <= y1; ++iy) {
-    const Real dy = static_cast<Real>(iy) - y;
-    for (int ix = x0; ix <= x1; ++ix) {
-      const Real dx = static_cast<Real>(ix) - x;
-      const Real r2 = qa * dx * dx + qb * dx * dy + qc * dy * dy;
-      if (r2 >= 1) continue;
-      const Real weight = kEwaWeights[std::min(static_cast<int>(r2 * kEwaWeightCount), kEwaWeightCount - 1)];
-      sum += weight * texel(level, ix, iy);
-      weights += weight;
+  // At most this many texels from the centre to the filter's edge: a needle
+  // longer than that at its level (a large max_anisotropy) is filtered on the
+  // next coarser level instead, blurred across, so no lookup reads more than
+  // about 128² texels.
+  constexpr Real kMaxTexelsAcross = 64;
+  for (;; ++level) {
+    if (level >= levels() - 1) return texel(levels() - 1, 0, 0);
+    const Level& l = levels_[level];
+    const Real w = static_cast<Real>(l.width), h = static_cast<Real>(l.height);
+    // In this level's texels, centres at integers.
+    const Real x = s * w - Real(0.5), y = t * h - Real(0.5);
+    const StExtent pa{a.s * w, a.t * h}, pb{b.s * w, b.t * h};
+    // The ellipse A x² + B x y + C y² < 1, widened by a texel so that it covers one at least.
+    Real qa = pa.t * pa.t + pb.t * pb.t + 1, qb = -2 * (pa.s * pa.t + pb.s * pb.t), qc = pa.s * pa.s + pb.s * pb.s + 1;
+    const Real inverse_f = 1 / (qa * qc - qb * qb * Real(0.25));
+    qa *= inverse_f;
+    qb *= inverse_f;
+    qc *= inverse_f;
+    const Real determinant = -qb * qb + 4 * qa * qc;
+    const Real half_width = 2 * std::sqrt(determinant * qc) / determinant;
+    const Real half_height = 2 * std::sqrt(determinant * qa) / determinant;
+    if (!(half_width < kMaxTexelsAcross && half_height < kMaxTexelsAcross)) continue;
+    const int x0 = static_cast<int>(std::ceil(x - half_width)), x1 = static_cast<int>(std::floor(x + half_width));
+    const int y0 = static_cast<int>(std::ceil(y - half_height)), y1 = static_cast<int>(std::floor(y + half_height));
+    Texel sum{};
+    Real weights = 0;
+    for (int iy = y0; iy <= y1; ++iy) {
+      const Real dy = static_cast<Real>(iy) - y;
+      for (int ix = x0; ix <= x1; ++ix) {
+        const Real dx = static_cast<Real>(ix) - x;
+        const Real r2 = qa * dx * dx + qb * dx * dy + qc * dy * dy;
+        if (r2 >= 1) continue;
+        const Real weight = kEwaWeights[std::min(static_cast<int>(r2 * kEwaWeightCount), kEwaWeightCount - 1)];
+        sum += weight * texel(level, ix, iy);
+        weights += weight;
+      }
     }
+    return weights > 0 ? sum / weights : bilinear(level, s, t);
   }
-  return weights > 0 ? sum / weights : bilinear(level, s, t);
 }
 
 Texel MipMap::average() const {

@@ -106,6 +106,10 @@ TEST(MipMap, EwaFiltersAlongTheEllipseOnly) {
   EXPECT_EQ(sg::raw(columns.ewa(s, t, along, StExtent{}, 8)), sg::raw(columns.bilinear(0, s, t)));
   // 32 texels along s, half a texel across: clamped to 4 across, level 2, where the columns are grey.
   EXPECT_NEAR(sg::raw(columns.ewa(s, t, StExtent{0.5f, 0}, StExtent{0, 0.5f / 64}, 8)).x, 0.5, 1e-6);
+  // A diagonal needle with no anisotropy limit: read on a coarser level (grey), not texel by texel along it.
+  const Real needle = sg::raw(bands.ewa(s, t, StExtent{0.7f, 0.7f}, StExtent{1e-6f, -1e-6f}, 1e6f)).x;
+  EXPECT_GE(needle, 0.0f);
+  EXPECT_LE(needle, 1.0f);
 }
 
 TEST(Texture, SrgbDecodingAndRowFlip) {
