@@ -265,9 +265,9 @@ Both renderers read the same file, with `Film` and `Sampler "halton"` directives
 WorldBegin to set the size and the samples per pixel (the scenes' other options, integrator and
 depth included, are theirs). Relative RMSE = sqrt(mean of (v − r)² / (r² + 0.01)) against pbrt-v3
 at the reference spp from pbrt-v3's `sobol` sampler (cached), a sequence neither compared image
-shares; our images with `--seed 0`. (Until this run the reference was pbrt-v3's Halton sequence too,
-whose first samples are pbrt-v3's low-spp image's own: its error was correlated with pbrt-v3's,
-which, at equal variance, favours pbrt-v3's measured error by about 6 % at 64 spp.)
+shares; our images with `--seed 0`. (A Halton reference, as in runs before 0282864, begins with
+pbrt-v3's own low-spp samples: its error is correlated with pbrt-v3's, which, at equal variance,
+favours pbrt-v3's measured error by about 6 % at 64 spp.)
 
 """ + h.table(["scene", "size", "reference spp", f"pbrt-v3 rel. RMSE, {low} spp", f"ours, {low} spp",
                f"pbrt-v3, {high} spp", f"ours, {high} spp"], accuracy_rows) + f"""
