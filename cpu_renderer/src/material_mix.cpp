@@ -37,10 +37,10 @@ MaterialChoice choose_material(const Scene& scene, const SurfaceTextures& textur
       return choice;
     }
     const MaterialMix& mix = *material.mix;
-    // In [0, 1]: the importer checks the amount as a reflectance.
-    const Reflectance amount = textures.reflectance_at(mix.amount, hit, footprint, time);
+    // A weight: a texture above 1 is clamped (the importer warns).
+    const sg::vec3_rep channels = glm::min(sg::raw(textures.reflectance_at(mix.amount, hit, footprint, time)), sg::vec3_rep(1));
+    const Reflectance amount = sg::from_raw<Reflectance>(channels);
     const Real p = sg::average(amount);
-    const sg::vec3_rep channels = amount.raw_value();
     const bool grey = channels.r == channels.g && channels.g == channels.b;
     if (mix_choice_number(hit.position, incoming, index) < p) {
       index = mix.first;

@@ -621,10 +621,13 @@ TEST(PbrtImport, ImageTexturesAsPbrtV3ReadsThem) {
             "                                                             ^~~~~~~~~~~~~~~~~~~~~\n");
 
   const std::string hot = "Texture \"h\" \"color\" \"imagemap\" \"string filename\" \"hot.exr\" \"bool trilinear\" \"true\"\n";
-  EXPECT_EQ(import_error(world(used(hot + "Material \"matte\" \"texture Kd\" \"h\"")), with_images()),
-            "scene.pbrt:3:18: error: \"Kd\" of Material \"matte\" must lie in [0, 1] in every channel\n"
-            "Material \"matte\" \"texture Kd\" \"h\"\n                 ^~~~~~~~~~~~\n"
-            "help: its image texture reaches 4 (lower the Texture's \"float scale\")\n");
+  // An image above 1 as a reflectance renders as pbrt-v3 renders it, warned (its own test below for patterns).
+  EXPECT_EQ(import(world(used(hot + "Material \"matte\" \"texture Kd\" \"h\"")), with_images()).warnings,
+            "scene.pbrt:3:31: warning: this texture reaches 4: as \"Kd\" of Material \"matte\" the surface reflects more "
+            "light than it receives where it exceeds 1\n"
+            "Material \"matte\" \"texture Kd\" \"h\"\n                              ^~~\n"
+            "help: rendered as pbrt-v3 renders it; lower the texture (a \"scale\" texture) for a surface that conserves "
+            "energy\n");
   EXPECT_EQ(import_error(world(used(hot + "Material \"plastic\" \"texture Ks\" \"h\"")), with_images()),
             "scene.pbrt:3:20: error: an image texture as \"Ks\" of Material \"plastic\" is not supported\n"
             "Material \"plastic\" \"texture Ks\" \"h\"\n                   ^~~~~~~~~~~~\n"
@@ -751,10 +754,12 @@ TEST(PbrtImport, MixAndScaleTextures) {
             "scene.pbrt:2:21: error: texture \"uv\" is not supported");
 }
 
-// A reflectance is clamped to [0, 1]; pbrt-v3 clamps it below 0 only. A noise
+// pbrt-v3 clamps a texture's reflectance below 0 only, and so do we: a noise
 // sum that goes above 1 (wrinkled's turbulence at 8 octaves: about 1.8) is
-// said once per texture, at its first use; a checkerboard of colours in [0, 1] never is.
-TEST(PbrtImport, PatternsAboveOneAreClampedWithAWarning) {
+// rendered as it is and said once per texture, at its first use; a
+// checkerboard of colours in [0, 1] never is. As a mix's amount (a weight) it
+// is clamped to 1.
+TEST(PbrtImport, PatternsAboveOneAreRenderedWithAWarning) {
   PbrtScene scene = import(world(
       "Texture \"t\" \"color\" \"wrinkled\" \"integer octaves\" 8 \"float roughness\" 0.75\n"
       "Texture \"c\" \"color\" \"checkerboard\"\n"
@@ -763,13 +768,24 @@ TEST(PbrtImport, PatternsAboveOneAreClampedWithAWarning) {
       "Material \"matte\" \"texture Kd\" \"c\"\nShape \"sphere\""));
   const std::string& w = scene.warnings;
   EXPECT_EQ(w.rfind("scene.pbrt:4:31: warning: this texture reaches 1.", 0), 0u) << w;
-  EXPECT_NE(w.find(": as \"Kd\" of Material \"matte\" it is clamped to 1 where it exceeds 1\n"), std::string::npos) << w;
-  EXPECT_NE(w.find("help: pbrt-v3 clamps it below 0 only: its surface is brighter there, reflecting more light than it "
-                   "receives\n"),
+  EXPECT_NE(w.find(": as \"Kd\" of Material \"matte\" the surface reflects more light than it receives where it exceeds 1\n"),
+            std::string::npos)
+      << w;
+  EXPECT_NE(w.find("help: rendered as pbrt-v3 renders it; lower the texture (a \"scale\" texture) for a surface that "
+                   "conserves energy\n"),
             std::string::npos);
   EXPECT_EQ(w.find("warning:", 30), std::string::npos) << "once per texture: " << w;
-  EXPECT_GT(unclamped_largest(scene.scene.patterns.at(0).pattern), 1.5);
-  EXPECT_EQ(unclamped_largest(scene.scene.patterns.at(1).pattern), 1.0);
+  EXPECT_GT(sg::max_component(largest_value(scene.scene.patterns.at(0).pattern)), 1.5f);
+  EXPECT_EQ(sg::max_component(largest_value(scene.scene.patterns.at(1).pattern)), 1.0f);
+
+  const std::string mixed = import(world("Texture \"t\" \"color\" \"wrinkled\" \"integer octaves\" 8 \"float roughness\" 0.75\n"
+                                         "MakeNamedMaterial \"a\" \"string type\" \"matte\"\n"
+                                         "MakeNamedMaterial \"b\" \"string type\" \"mirror\"\n"
+                                         "Material \"mix\" \"texture amount\" \"t\" \"string namedmaterial1\" \"a\" "
+                                         "\"string namedmaterial2\" \"b\"\nShape \"sphere\""))
+                                .warnings;
+  EXPECT_NE(mixed.find(": as \"amount\" of Material \"mix\" it is clamped to 1 where it exceeds 1\n"), std::string::npos)
+      << mixed;
 }
 
 // Float procedural textures (pbrt-v3's FBmTexture<Float>, a float checkerboard, ...) are bump maps too:

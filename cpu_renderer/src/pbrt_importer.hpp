@@ -198,8 +198,13 @@ class Importer {
   std::optional<TextureEntry> float_or_texture(ParamSet& params, const char* name, const Param*& param);
   std::optional<BumpMap> bump_map(ParamSet& params);
   Reflectance reflectance(ParamSet& params, const char* name, double fallback);
-  TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image);
+  // How a spectrum parameter reads a texture: not at all, as a reflectance
+  // (above 1 rendered as pbrt-v3 renders it, warned), or as a mix's weight
+  // (clamped to [0, 1]).
+  enum class TextureUse { none, reflectance, weight };
+  TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, TextureUse use);
   Reflectance texture_maximum(int image, int pattern) const;
+  bool warned_above_one(const TexturedReflectance& kd) const;  // its texture alone exceeds 1, said once
   double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
   double index_of_refraction(ParamSet& params, SourceRange at);
   void texture(const Directive& d);
@@ -245,7 +250,7 @@ class Importer {
   PbrtScene result_;
   std::vector<Diagnostic> warnings_;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
-  std::set<int> clamped_patterns_warned_;              // patterns above 1 read as a reflectance, warned once each
+  std::set<std::pair<int, int>> textures_above_one_warned_;  // (image, pattern) reaching above 1, warned once each
   uint64_t curve_triangles_ = 0;                       // made of the curves so far
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
   std::map<std::string, int> named_media_;     // into Scene::media

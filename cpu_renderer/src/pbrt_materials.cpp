@@ -191,35 +191,40 @@ Reflectance Importer::texture_maximum(int image, int pattern) const {
   return image >= 0 ? result_.scene.textures[image].mipmap->maximum() : largest_value(result_.scene.patterns[pattern].pattern);
 }
 
-TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, bool allow_image) {
+TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, TextureUse use) {
   TextureEntry entry;
   entry.value = {fallback, fallback, fallback};
   const Param* param = nullptr;
   if (std::optional<TextureEntry> given = spectrum_or_texture(params, name, param)) entry = *given;
-  Rgb largest = entry.value;
-  if (entry.textured()) {
-    if (!allow_image)
-      refuse_texture(params, *param, entry, name,
-                     "only diffuse reflectances (\"Kd\" of matte, plastic, substrate, translucent and uber) take textures here");
-    sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
-    for (int c = 0; c < 3; ++c) largest[c] *= texel[c];
-  }
+  if (entry.textured() && use == TextureUse::none)
+    refuse_texture(params, *param, entry, name,
+                   "only diffuse reflectances (\"Kd\" of matte, plastic, substrate, translucent and uber) take textures here");
   for (int c = 0; c < 3; ++c)
-    if (!(entry.value[c] >= 0 && largest[c] <= 1))
+    if (!(entry.value[c] >= 0 && (entry.textured() || entry.value[c] <= 1)))
       params.fail_at(*param, "\"" + std::string(name) + "\" of " + params.context() + " must lie in [0, 1] in every channel",
-                     entry.image >= 0 ? "its image texture reaches " + format_number(largest[c]) +
-                                            " (lower the Texture's \"float scale\")"
-                                      : "above 1 a surface reflects more light than it receives");
-  // pbrt-v3 clamps a reflectance below 0 only; a pattern above 1 is clamped here.
-  if (entry.pattern >= 0 && !clamped_patterns_warned_.count(entry.pattern)) {
-    const double reaches = std::max({entry.value[0], entry.value[1], entry.value[2]}) *
-                           unclamped_largest(result_.scene.patterns[entry.pattern].pattern);
+                     "above 1 a surface reflects more light than it receives");
+  // A texture's peaks above 1 (images scaled up, sums of noise: rs_pbrt's
+  // wrinkled reaches 1.70) are what pbrt-v3 renders, clamping below 0 only.
+  if (entry.textured() && !textures_above_one_warned_.count({entry.image, entry.pattern})) {
+    const sg::vec3_rep texel = sg::raw(texture_maximum(entry.image, entry.pattern));
+    double reaches = 0;
+    for (int c = 0; c < 3; ++c) reaches = std::max(reaches, entry.value[c] * texel[c]);
     if (reaches > 1) {
-      clamped_patterns_warned_.insert(entry.pattern);
-      warn(param->values,
-           "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
-               params.context() + " it is clamped to 1 where it exceeds 1",
-           "pbrt-v3 clamps it below 0 only: its surface is brighter there, reflecting more light than it receives");
+      textures_above_one_warned_.insert({entry.image, entry.pattern});
+      if (use == TextureUse::weight)
+        warn(param->values,
+             "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
+                 params.context() + " it is clamped to 1 where it exceeds 1",
+             "a mix's amount is a weight in [0, 1]; pbrt-v3 would give its second material a negative weight there");
+      else
+        warn(param->values,
+             "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
+                 params.context() + " the surface reflects more light than it receives where it exceeds 1",
+             entry.pattern >= 0 && std::holds_alternative<MarblePattern>(result_.scene.patterns[entry.pattern].pattern)
+                 ? "rendered as pbrt-v3 renders it: pbrt-v3's marble picks its spline segment as min(1, ⌊6t⌋) and so "
+                   "extrapolates the second segment's cubic"
+                 : "rendered as pbrt-v3 renders it; lower the texture (a \"scale\" texture) for a surface that conserves "
+                   "energy");
     }
   }
   TexturedReflectance result;
@@ -230,8 +235,12 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
   return result;
 }
 
+bool Importer::warned_above_one(const TexturedReflectance& kd) const {
+  return kd.textured() && textures_above_one_warned_.count({kd.texture, kd.pattern});
+}
+
 Reflectance Importer::reflectance(ParamSet& params, const char* name, double fallback) {
-  return textured_reflectance(params, name, fallback, false).value;
+  return textured_reflectance(params, name, fallback, TextureUse::none).value;
 }
 
 double Importer::roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap) {
@@ -302,7 +311,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
   material.bump = bump_map(params);
   if (type == "matte") {
     // pbrt-v3's MatteMaterial: Oren-Nayar of "sigma" degrees (default 0: Lambert).
-    const TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
+    const TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, TextureUse::reflectance);
     const double sigma = float_param(params, "sigma").value_or(0);
     if (!(sigma >= 0 && sigma <= 90))
       fail(at, "\"sigma\" of " + params.context() + " must lie in [0, 90] degrees, found " + format_number(sigma),
@@ -313,7 +322,7 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     Reflectance kr = reflectance(params, "Kr", 0.9);
     if (!sg::is_black(kr)) material.model = MirrorMaterial{kr};
   } else if (type == "plastic") {
-    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+    TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, TextureUse::reflectance);
     Reflectance ks = reflectance(params, "Ks", 0.25);
     bool remap = params.one_bool("remaproughness", true);
     // pbrt-v3's plastic: FresnelDielectric(1.5, 1), the indices swapped (mmp/pbrt-v3#210).
@@ -343,7 +352,7 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
     if (opacity->image >= 0 || opacity->value != Rgb{1, 1, 1})
       params.fail_at(*opacity_param, "\"opacity\" other than 1 of " + params.context() + " is not supported",
                      "pbrt-v3 passes the rest of the light straight through, a material the renderer does not have");
-  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, TextureUse::reflectance);
   Reflectance ks = reflectance(params, "Ks", 0.25), kr = reflectance(params, "Kr", 0), kt = reflectance(params, "Kt", 0);
   bool remap = params.one_bool("remaproughness", true);
   double roughness = float_param(params, "roughness").value_or(0.1);
@@ -369,7 +378,7 @@ Material Importer::convert_mix(ParamSet& params, SourceRange at) {
   Material material;
   material.name = "mix";
   MaterialMix mix;
-  mix.amount = textured_reflectance(params, "amount", 0.5, true);
+  mix.amount = textured_reflectance(params, "amount", 0.5, TextureUse::weight);
   mix.first = mixed_material(params, "namedmaterial1", at);
   mix.second = mixed_material(params, "namedmaterial2", at);
   material.mix = mix;
@@ -410,7 +419,9 @@ MaterialModel Importer::plastic(const TexturedReflectance& kd, Reflectance ks, d
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.textured()) largest *= sg::raw(texture_maximum(kd.texture, kd.pattern));
   sg::vec3_rep sum = largest + sg::raw(ks);
-  if (std::max({sum.x, sum.y, sum.z}) > 1)  // pbrt-v3 renders it as it is (veach-mis has Kd 0.13 + Ks 1): so do we
+  // pbrt-v3 renders it as it is (veach-mis has Kd 0.13 + Ks 1): so do we. A
+  // texture above 1 on its own has been warned of already.
+  if (std::max({sum.x, sum.y, sum.z}) > 1 && !warned_above_one(kd))
     warn(at, "\"Kd\" + \"Ks\" of " + params.context() + " exceed 1 in a channel (" +
                  format_number(std::max({sum.x, sum.y, sum.z})) + "): the surface can reflect more light than it receives",
          "rendered as pbrt-v3 renders it; lower Kd or Ks for a surface that conserves energy");
@@ -441,7 +452,7 @@ MaterialModel Importer::metal(ParamSet& params, SourceRange at) {
 // remapped by default; no BxDF, so black, when both are black. Kd + Ks above
 // 1 is no warning, unlike plastic's: FresnelBlend weights Kd by 1 − Ks.
 MaterialModel Importer::substrate(ParamSet& params, SourceRange at) {
-  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, true);
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.5, TextureUse::reflectance);
   Reflectance ks = reflectance(params, "Ks", 0.5);
   bool remap = params.one_bool("remaproughness", true);
   double u = float_param(params, "uroughness").value_or(0.1), v = float_param(params, "vroughness").value_or(0.1);
@@ -457,7 +468,7 @@ MaterialModel Importer::substrate(ParamSet& params, SourceRange at) {
 // index 1.5. No BxDF, so black, when reflect and transmit are both black, or
 // Kd and Ks are.
 MaterialModel Importer::translucent(ParamSet& params, SourceRange at) {
-  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, true);
+  TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, TextureUse::reflectance);
   Reflectance ks = reflectance(params, "Ks", 0.25);
   Reflectance reflect = reflectance(params, "reflect", 0.5), transmit = reflectance(params, "transmit", 0.5);
   bool remap = params.one_bool("remaproughness", true);
@@ -469,7 +480,7 @@ MaterialModel Importer::translucent(ParamSet& params, SourceRange at) {
   sg::vec3_rep largest = sg::raw(kd.value);
   if (kd.textured()) largest *= sg::raw(texture_maximum(kd.texture, kd.pattern));
   const sg::vec3_rep bound = (largest + sg::raw(ks)) * (sg::raw(reflect) + sg::raw(transmit));
-  if (std::max({bound.x, bound.y, bound.z}) > 1)  // pbrt-v3 renders it as it is: so do we
+  if (std::max({bound.x, bound.y, bound.z}) > 1 && !warned_above_one(kd))  // pbrt-v3 renders it as it is: so do we
     warn(at, "(\"Kd\" + \"Ks\") * (\"reflect\" + \"transmit\") of " + params.context() + " exceeds 1 in a channel (" +
                  format_number(std::max({bound.x, bound.y, bound.z})) +
                  "): the surface may scatter more light than it receives",

@@ -15,9 +15,11 @@ namespace {
 Reflectance rgb(Real r, Real g, Real b) { return sg::from_raw<Reflectance>(sg::vec3_rep(r, g, b)); }
 Reflectance grey(Real value) { return rgb(value, value, value); }
 
-Reflectance clamped(Reflectance value) {
+// pbrt-v3's Spectrum::Clamp() on a texture's value: below 0 (and NaN) to 0,
+// above 1 left as it is.
+Reflectance non_negative(Reflectance value) {
   sg::vec3_rep v = sg::raw(value);
-  for (int c = 0; c < 3; ++c) v[c] = std::isnan(v[c]) ? Real(0) : std::clamp(v[c], Real(0), Real(1));
+  for (int c = 0; c < 3; ++c) v[c] = std::isnan(v[c]) ? Real(0) : std::max(v[c], Real(0));
   return sg::from_raw<Reflectance>(v);
 }
 
@@ -109,10 +111,12 @@ Reflectance sample(const MarblePattern& marble, NoisePoint p, Real footprint) {
   const Real phase = p.y + marble.variation * fbm(p, marble.scale * footprint, marble.omega, marble.octaves);
   const Real t = Real(0.5) + Real(0.5) * std::sin(phase);
   constexpr int segments = static_cast<int>(kMarbleColours.size()) - 3;
-  // The segment t falls in (t = 1 in the last). pbrt-v3 writes min(1, ⌊6t⌋)
-  // here, which extrapolates one segment's cubic far beyond its hull: the
-  // spline as written is read instead (docs/pbrt-import.md).
-  const int first = std::clamp(static_cast<int>(std::floor(t * segments)), 0, segments - 1);
+  // pbrt-v3 picks the segment with min(1, ⌊6t⌋) where the segment t falls in
+  // was meant, so for t ≥ 1/6 it extrapolates the second segment's cubic to
+  // u = 6t − 1 ≤ 5, far beyond its hull (to about 40). That is what pbrt-v3's
+  // marble scenes look like, so it is read as pbrt-v3 reads it; the importer
+  // warns (docs/pbrt-import.md).
+  const int first = std::min(1, static_cast<int>(std::floor(t * segments)));
   const Real u = t * segments - first;
   // De Casteljau on the segment's four control points.
   Reflectance a = mix(u, marble_colour(first), marble_colour(first + 1));
@@ -157,12 +161,11 @@ Reflectance largest(Reflectance a, Reflectance b) {
 }
 
 // The patterns of given colours, and the largest value (per channel) each
-// takes before the clamp: its colours' (a Bézier curve stays inside its
-// control points' hull; bilinear in [0, 1]² stays below its largest corner).
+// takes: its colours' (bilinear in [0, 1]² stays below its largest corner).
 template <class P>
 constexpr bool kColourPattern = std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern> ||
                                 std::is_same_v<P, DotsPattern> || std::is_same_v<P, UvPattern> ||
-                                std::is_same_v<P, BilerpPattern> || std::is_same_v<P, MarblePattern>;
+                                std::is_same_v<P, BilerpPattern>;
 template <class P>
 Reflectance colour_bound(const P& p) {
   if constexpr (std::is_same_v<P, CheckerboardPattern> || std::is_same_v<P, SolidCheckerboardPattern>) {
@@ -171,13 +174,9 @@ Reflectance colour_bound(const P& p) {
     return largest(p.inside, p.outside);
   } else if constexpr (std::is_same_v<P, UvPattern>) {
     return rgb(1, 1, 0);
-  } else if constexpr (std::is_same_v<P, BilerpPattern>) {
-    return largest(largest(p.v00, p.v01), largest(p.v10, p.v11));
   } else {
-    static_assert(std::is_same_v<P, MarblePattern>);
-    Reflectance bound = marble_colour(0);
-    for (int i = 1; i < static_cast<int>(kMarbleColours.size()); ++i) bound = largest(bound, marble_colour(i));
-    return kMarbleGain * bound;
+    static_assert(std::is_same_v<P, BilerpPattern>);
+    return largest(largest(p.v00, p.v01), largest(p.v10, p.v11));
   }
 }
 
@@ -218,7 +217,7 @@ bool reads_uv(const Pattern& pattern) {
       pattern);
 }
 
-Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) { return clamped(evaluate_unclamped(pattern, at)); }
+Reflectance evaluate(const Pattern& pattern, const PatternLookup& at) { return non_negative(evaluate_unclamped(pattern, at)); }
 
 Real evaluate_number(const Pattern& pattern, const PatternLookup& at) { return sg::raw(evaluate_unclamped(pattern, at))[0]; }
 
@@ -244,38 +243,18 @@ Reflectance largest_value(const Pattern& pattern) {
   return std::visit(
       [](const auto& p) -> Reflectance {
         using P = std::remove_cvref_t<decltype(p)>;
-        if constexpr (kColourPattern<P>)
-          return clamped(colour_bound(p));
-        else if constexpr (std::is_same_v<P, MixPattern>)  // an amount in [0, 1]: between the two
-          return clamped(largest(operand_largest(p.first), operand_largest(p.second)));
-        else if constexpr (std::is_same_v<P, ProductPattern>)
-          return clamped(operand_largest(p.first) * operand_largest(p.second));
-        else
-          return grey(1);  // noise sums: clamped to 1
-      },
-      pattern);
-}
-
-double unclamped_largest(const Pattern& pattern) {
-  auto largest_channel = [](Reflectance r) { return static_cast<double>(sg::max_component(r)); };
-  auto operand_bound = [&](const PatternOperand& operand) {
-    return largest_channel(operand.value) * (operand.pattern ? unclamped_largest(operand.pattern->pattern) : 1.0);
-  };
-  return std::visit(
-      [&](const auto& p) -> double {
-        using P = std::remove_cvref_t<decltype(p)>;
         if constexpr (kColourPattern<P>) {
-          return largest_channel(colour_bound(p));
-        } else if constexpr (std::is_same_v<P, MixPattern>) {
-          return std::max(operand_bound(p.first), operand_bound(p.second));
+          return non_negative(colour_bound(p));
+        } else if constexpr (std::is_same_v<P, MixPattern>) {  // an amount in [0, 1]: between the two
+          return non_negative(largest(operand_largest(p.first), operand_largest(p.second)));
         } else if constexpr (std::is_same_v<P, ProductPattern>) {
-          return operand_bound(p.first) * operand_bound(p.second);
+          return non_negative(operand_largest(p.first) * operand_largest(p.second));
         } else {
-          double found = 0;
+          Reflectance found = grey(0);
           for (int i = 0; i < 16; ++i)
             for (int j = 0; j < 16; ++j)
               for (int k = 0; k < 16; ++k)
-                found = std::max(found, largest_channel(sample(p, NoisePoint{i + Real(0.5), j + Real(0.5), k + Real(0.5)}, 0)));
+                found = largest(found, non_negative(sample(p, NoisePoint{i + Real(0.5), j + Real(0.5), k + Real(0.5)}, 0)));
           return found;
         }
       },
@@ -291,17 +270,17 @@ Reflectance mean_value(const Pattern& pattern) {
         int count = 0;
         using P = std::remove_cvref_t<decltype(p)>;
         if constexpr (std::is_same_v<P, MixPattern>) {  // the parts taken as independent
-          return clamped(mix(sg::raw(operand_mean(p.amount))[0], operand_mean(p.first), operand_mean(p.second)));
+          return non_negative(mix(sg::raw(operand_mean(p.amount))[0], operand_mean(p.first), operand_mean(p.second)));
         } else if constexpr (std::is_same_v<P, ProductPattern>) {
-          return clamped(operand_mean(p.first) * operand_mean(p.second));
+          return non_negative(operand_mean(p.first) * operand_mean(p.second));
         } else if constexpr (PlanarPattern<P>) {
           for (int i = 0; i < 128; ++i)
-            for (int j = 0; j < 128; ++j, ++count) sum += clamped(sample(p, (i + Real(0.5)) / 2, (j + Real(0.5)) / 2, 0, 0));
+            for (int j = 0; j < 128; ++j, ++count) sum += non_negative(sample(p, (i + Real(0.5)) / 2, (j + Real(0.5)) / 2, 0, 0));
         } else {
           for (int i = 0; i < 32; ++i)
             for (int j = 0; j < 32; ++j)
               for (int k = 0; k < 32; ++k, ++count)
-                sum += clamped(sample(p, NoisePoint{(i + Real(0.5)) / 2, (j + Real(0.5)) / 2, (k + Real(0.5)) / 2}, 0));
+                sum += non_negative(sample(p, NoisePoint{(i + Real(0.5)) / 2, (j + Real(0.5)) / 2, (k + Real(0.5)) / 2}, 0));
         }
         return sum / static_cast<Real>(count);
       },

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "noise.hpp"
 #include "safegi/cpu_renderer/procedural_texture.hpp"
@@ -133,22 +134,52 @@ TEST(ProceduralTexture, BoundsAndMeans) {
   // Dots cover about half the cells, each a disc of radius 0.35: π·0.35²/2 ≈ 0.19.
   const Pattern dots = DotsPattern{Mapping2D{}, grey(1), grey(0)};
   EXPECT_NEAR(channel(mean_value(dots), 0), 0.19f, 0.06f);
-  // Marble's spline stays inside its control points' hull, times 1.5.
-  MarblePattern marble;
-  marble.variation = 0.75f;
-  for (int i = 0; i < 200; ++i) {
-    Reflectance value = evaluate(marble, PatternLookup{.position = sg::from_raw<PointWorld>(sg::vec3_rep(0.1f * i, 0.37f * i, 0.05f * i))});
-    for (int c = 0; c < 3; ++c) {
-      EXPECT_GE(channel(value, c), 0.3f - 1e-6f);
-      EXPECT_LE(channel(value, c), channel(largest_value(marble), c) + 1e-6f);
-    }
-  }
-  // Noise sums are clamped to [0, 1]; fbm takes both signs, so both ends occur.
+  // Noise sums are clamped below 0 only, as pbrt-v3 clamps a reflectance;
+  // fbm takes both signs, so both ends occur.
   const Pattern cloud = FbmPattern{};
-  EXPECT_EQ(channel(largest_value(cloud), 0), 1);
+  const Real cloud_largest = channel(largest_value(cloud), 0);
+  EXPECT_GT(cloud_largest, 0.5f);
   const Real mean = channel(mean_value(cloud), 0);
   EXPECT_GT(mean, 0.05f);
   EXPECT_LT(mean, 0.5f);
+  int negative = 0;
+  for (int i = 0; i < 100; ++i) {
+    const PatternLookup at{.position = sg::from_raw<PointWorld>(sg::vec3_rep(0.13f * i, 0.71f * i, 0.29f * i))};
+    const Real raw = channel(evaluate_unclamped(cloud, at), 0);
+    EXPECT_EQ(channel(evaluate(cloud, at), 0), std::max(raw, Real(0)));
+    negative += raw < 0;
+  }
+  EXPECT_GT(negative, 10);
+}
+
+// pbrt-v3's MarbleTexture::Evaluate transcribed: its segment is
+// min(1, ⌊6t⌋), so from t = 1/6 on it extrapolates the second segment's cubic
+// (to 1.5 · 27.08 = 40.6 in red at t = 1), and Spectrum::Clamp() takes
+// negative values to 0. With variation 0 the phase is the point's y.
+TEST(ProceduralTexture, MarbleIsPbrtV3sExtrapolatedSpline) {
+  static const float c[9][3] = {{.58f, .58f, .6f}, {.58f, .58f, .6f}, {.58f, .58f, .6f}, {.5f, .5f, .5f}, {.6f, .59f, .58f},
+                                {.58f, .58f, .6f}, {.58f, .58f, .6f}, {.2f, .2f, .33f},  {.58f, .58f, .6f}};
+  auto pbrt_v3 = [](float t, int channel_index) {
+    const int nseg = 6, first = std::min(1, int(std::floor(t * nseg)));
+    t = t * nseg - first;
+    float p[4];
+    for (int k = 0; k < 4; ++k) p[k] = c[first + k][channel_index];
+    const float s0 = (1 - t) * ((1 - t) * ((1 - t) * p[0] + t * p[1]) + t * ((1 - t) * p[1] + t * p[2])) +
+                     t * ((1 - t) * ((1 - t) * p[1] + t * p[2]) + t * ((1 - t) * p[2] + t * p[3]));
+    return std::max(1.5f * s0, 0.0f);
+  };
+  MarblePattern marble;
+  marble.variation = 0;
+  Real brightest = 0;
+  for (int i = 0; i <= 64; ++i) {
+    const float y = -std::numbers::pi_v<float> / 2 + std::numbers::pi_v<float> * i / 64;  // t from 0 to 1
+    const float t = 0.5f + 0.5f * std::sin(y);
+    const Reflectance value = evaluate(marble, PatternLookup{.position = sg::from_raw<PointWorld>(sg::vec3_rep(0.3f, y, 0.7f))});
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(channel(value, ch), pbrt_v3(t, ch), 2e-4f * (1 + pbrt_v3(t, ch))) << t << ", " << ch;
+    brightest = std::max(brightest, channel(value, 0));
+  }
+  EXPECT_NEAR(brightest, 40.62f, 0.01f);  // t = 1
+  EXPECT_GE(channel(largest_value(marble), 0), Real(30));
 }
 
 TEST(ProceduralTexture, SolidPatternsReadTheTextureSpaceInItsUnit) {
@@ -206,7 +237,7 @@ TEST(ProceduralTexture, MixAndProductOfPatternsAreTheirFormulas) {
     const Real amount = channel(evaluate_unclamped(noise, at), 0);
     for (int c = 0; c < 3; ++c) {
       const Real a = channel(evaluate(checks, at), c), b = 0.5f * channel(evaluate(dots, at), c);
-      const Real mixed = std::clamp((1 - amount) * a + amount * b, Real(0), Real(1));
+      const Real mixed = std::max((1 - amount) * a + amount * b, Real(0));
       EXPECT_NEAR(channel(evaluate(blend, at), c), mixed, 1e-6) << i << ", " << c;
       EXPECT_NEAR(channel(evaluate(product, at), c), 0.8f * a * channel(evaluate(dots, at), c), 1e-6) << i << ", " << c;
       checked += amount != 0;

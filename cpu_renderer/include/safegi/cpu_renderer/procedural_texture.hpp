@@ -136,19 +136,20 @@ struct PatternLookup {
 };
 
 bool reads_uv(const Pattern& pattern);
-// The reflectance at a lookup, in [0, 1].
+// The reflectance at a lookup as pbrt-v3's textures give it: clamped below 0
+// only (fbm's and wrinkled's sums of noise, and marble, can go above 1; the
+// importer warns where they do).
 Reflectance evaluate(const Pattern& pattern, const PatternLookup& at);
 // The value of a float texture's pattern (its colours grey): unclamped, since
 // a bump map's displacement may be negative (fbm's noise is) or above 1.
 Real evaluate_number(const Pattern& pattern, const PatternLookup& at);
 Reflectance evaluate_unclamped(const Pattern& pattern, const PatternLookup& at);
 // Bounds for the importer's checks and the preview's colour: the largest value
-// the pattern takes (per channel), and its mean over many cells.
+// evaluate() gives (per channel) and its mean over many cells. The largest is
+// a bound for the patterns of given colours, and for sums of noise octaves
+// (fbm, wrinkled, windy) and marble the largest of 16³ point samples a unit
+// apart (every octave), what such a texture reaches in practice.
 Reflectance largest_value(const Pattern& pattern);
-// The largest channel before the clamp: a bound for the patterns of given
-// colours, and for sums of noise octaves (fbm, wrinkled, windy) the largest of
-// 16³ point samples a unit apart (every octave), what such a texture reaches in practice.
-double unclamped_largest(const Pattern& pattern);
 Reflectance mean_value(const Pattern& pattern);
 
 }  // namespace safegi::render
