@@ -141,8 +141,8 @@ struct PrimitiveSet::Found {
 };
 
 template <bool any_hit>
-bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
-                                   Found& found) const {
+bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max, Found& found,
+                                   std::span<const kernel::PrimitiveId> skipped) const {
   constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
   const kernel::BlockRay block_ray(ray.origin, ray.direction);
   auto test_leaf = [&](uint32_t first_block, uint32_t count, Real& t_limit) {
@@ -154,6 +154,10 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
       for (unsigned candidates = kernel::candidate_lanes(triangles, block_ray, t_limit, lanes); candidates != 0;
            candidates &= candidates - 1) {
         const int lane = std::countr_zero(candidates);
+        if (!skipped.empty() && std::ranges::any_of(skipped, [&](kernel::PrimitiveId id) {
+              return id.shape == triangles.shape[lane] && id.face == triangles.face[lane];
+            }))
+          continue;
         Real b1, b2;
         if (!kernel::intersect_lane(triangles, lane, block_ray, t_limit, b1, b2)) continue;
         found = {false, block * kWidth + static_cast<uint32_t>(lane), b1, b2};
@@ -204,16 +208,17 @@ bool PrimitiveSet::trace_spheres(const Ray& ray, const kernel::TraversalRay& tra
 }
 
 template <bool any_hit>
-bool PrimitiveSet::trace(const Ray& ray, Real& t_max, Found& found) const {
+bool PrimitiveSet::trace(const Ray& ray, Real& t_max, Found& found, std::span<const kernel::PrimitiveId> skipped) const {
   const kernel::TraversalRay traversal(ray.origin, ray.direction);
-  const bool triangle_hit = trace_triangles<any_hit>(ray, traversal, t_max, found);
+  const bool triangle_hit = trace_triangles<any_hit>(ray, traversal, t_max, found, skipped);
   if (any_hit && triangle_hit) return true;
   return trace_spheres<any_hit>(ray, traversal, t_max, found) || triangle_hit;
 }
 
-std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max) const {
+std::optional<kernel::Hit> PrimitiveSet::intersect(const Ray& ray, Real t_max,
+                                                   std::span<const kernel::PrimitiveId> skipped) const {
   Found found;
-  if (!trace<false>(ray, t_max, found)) return std::nullopt;
+  if (!trace<false>(ray, t_max, found, skipped)) return std::nullopt;
   kernel::Hit hit;
   hit.distance = t_max;
   if (!found.sphere) {
@@ -342,23 +347,35 @@ std::optional<SurfaceHit> Geometry::nearest_unmasked(const TimedRay& ray, Length
   // A bound on the layers one ray passes (foliage has tens); beyond it the
   // last hit counts as opaque, so that no ray can loop.
   constexpr int kMaxMaskedLayers = 4096;
+  // The masked triangles met since the ray last moved on: the ray is traced
+  // again from the same origin without them. Past kMaxSkipped (a stack of
+  // masked layers) it goes on from just beyond the last one, which passes any
+  // surface within rounding of that one's plane too.
+  constexpr size_t kMaxSkipped = 16;
+  std::vector<kernel::PrimitiveId> skipped;
   TimedRay beyond = ray;
+  bool moved_on = false;
   for (int layer = 0; layer < kMaxMaskedLayers; ++layer) {
-    std::optional<SurfaceHit> hit = nearest(beyond);
+    std::optional<SurfaceHit> hit = nearest(beyond, skipped);
     if (!hit) return std::nullopt;
     // Distances along the original ray, from its origin.
-    if (layer > 0) hit->distance = sg::dot(hit->position - ray.o, ray.d);
+    if (moved_on) hit->distance = sg::dot(hit->position - ray.o, ray.d);
     if (hit->distance >= t_max) return std::nullopt;
     if (!masked(*hit, ray.time, shadow) || layer + 1 == kMaxMaskedLayers) return hit;
-    beyond = spawn_ray(*hit, ray.d, ray.time);
+    if (skipped.size() == kMaxSkipped) {
+      skipped.clear();
+      beyond = spawn_ray(*hit, ray.d, ray.time);
+      moved_on = true;
+    }
+    skipped.push_back({hit->shape, hit->face});
   }
   return std::nullopt;
 }
 
-std::optional<SurfaceHit> Geometry::nearest(const TimedRay& typed_ray) const {
+std::optional<SurfaceHit> Geometry::nearest(const TimedRay& typed_ray, std::span<const kernel::PrimitiveId> skipped) const {
   Ray ray{to_kernel(typed_ray.o), to_kernel(typed_ray.d), sg::raw(typed_ray.time)};
   Real t_max = kernel::kInfinity;
-  std::optional<kernel::Hit> hit = static_primitives_.intersect(ray, t_max);
+  std::optional<kernel::Hit> hit = static_primitives_.intersect(ray, t_max, skipped);
   if (hit) t_max = hit->distance;
   for (const Instance& instance : instances_) {
     if (!kernel::intersect_bounds(instance.swept_bounds, kernel::TraversalRay(ray.origin, ray.direction), t_max))
@@ -368,7 +385,7 @@ std::optional<SurfaceHit> Geometry::nearest(const TimedRay& typed_ray) const {
     Real3 direction = object_from_render.apply_vector(ray.direction);
     Real stretch = kernel::length(direction);
     Ray local{object_from_render.apply_point(ray.origin), direction * (1.0f / stretch), ray.time};
-    std::optional<kernel::Hit> local_hit = instance.primitives.intersect(local, t_max * stretch);
+    std::optional<kernel::Hit> local_hit = instance.primitives.intersect(local, t_max * stretch, skipped);
     if (!local_hit) continue;
     kernel::Hit world = *local_hit;
     world.distance = local_hit->distance / stretch;

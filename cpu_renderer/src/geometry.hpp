@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "bvh.hpp"
@@ -45,6 +46,12 @@ struct Ray {
   Real time = 0.0f;
 };
 
+// A primitive by its shape and its index within the shape.
+struct PrimitiveId {
+  uint32_t shape = 0;
+  uint32_t face = 0;
+};
+
 struct Hit {
   Real3 position;
   Real3 position_error;
@@ -83,7 +90,10 @@ class PrimitiveSet {
   // Bytes held for tracing: triangle blocks, spheres, hierarchies.
   size_t memory_bytes() const;
 
-  std::optional<kernel::Hit> intersect(const kernel::Ray& ray, Real t_max) const;
+  // The nearest hit before t_max but on the `skipped` triangles (alpha-masked
+  // ones the ray has passed).
+  std::optional<kernel::Hit> intersect(const kernel::Ray& ray, Real t_max,
+                                       std::span<const kernel::PrimitiveId> skipped = {}) const;
   bool occluded(const kernel::Ray& ray, Real t_max) const;
 
  private:
@@ -91,10 +101,10 @@ class PrimitiveSet {
   void build_triangles(int threads);
   void build_spheres(int threads);
   template <bool any_hit>
-  bool trace(const kernel::Ray& ray, Real& t_max, Found& found) const;
+  bool trace(const kernel::Ray& ray, Real& t_max, Found& found, std::span<const kernel::PrimitiveId> skipped = {}) const;
   template <bool any_hit>
-  bool trace_triangles(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
-                       Found& found) const;
+  bool trace_triangles(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max, Found& found,
+                       std::span<const kernel::PrimitiveId> skipped) const;
   template <bool any_hit>
   bool trace_spheres(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
                      Found& found) const;
@@ -121,10 +131,11 @@ class Geometry {
   kernel::Bounds3 bounds() const { return bounds_; }
 
  private:
-  std::optional<SurfaceHit> nearest(const TimedRay& ray) const;
+  std::optional<SurfaceHit> nearest(const TimedRay& ray, std::span<const kernel::PrimitiveId> skipped = {}) const;
   bool any_hit(const TimedRay& ray, Length t_max) const;
-  // pbrt-v3 tests the masks inside its triangles' intersection; here a masked
-  // hit is passed through and the ray goes on from just beyond it.
+  // pbrt-v3 tests the masks inside its triangles' intersection; here the ray
+  // is traced again with each masked triangle it met skipped, so that a
+  // surface in the masked one's plane still shows through its holes.
   std::optional<SurfaceHit> nearest_unmasked(const TimedRay& ray, Length t_max, bool shadow) const;
   bool masked(const SurfaceHit& hit, Time time, bool shadow) const;
 

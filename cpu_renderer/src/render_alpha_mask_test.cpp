@@ -61,6 +61,51 @@ TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
   EXPECT_GT(closed, 400);
 }
 
+// The same masked quad lying in the emitting floor's plane (a box's bottom on
+// a floor, as in pbrt-v3-rs's triangles-alpha-mask): through its holes the
+// floor shows to every ray, as in pbrt-v3, whose mask test is part of the
+// triangle's intersection; where the quad is there the two tie, and each is
+// seen by about half the rays (a fair coin per ray), not by the hierarchy's order.
+TEST(RenderAlphaMask, ASurfaceInTheMaskedPlaneShowsThroughItsHoles) {
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("safegi-alpha-plane-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  Image mask{64, 1, std::vector<float>(3 * 64, 0.0f)};
+  std::fill(mask.rgb.begin() + 3 * 32, mask.rgb.end(), 1.0f);
+  write_pfm(directory / "mask.pfm", mask);
+  const std::string scene = R"json({
+    "render": {"resolution": [32, 32], "integrator": "path"},
+    "camera": {"position": ["0 m", "5 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "20 deg"},
+    "textures": {"mask": {"type": "image", "file": "mask.pfm", "filter": "bilinear", "wrap": "clamp"}},
+    "shapes": [{"type": "quad", "origin": ["-10 m", "0 m", "-10 m"], "edge_u": ["0 m", "0 m", "20 m"],
+                "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"},
+               {"type": "quad", "origin": ["-2 m", "0 m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
+                "edge_v": ["0 m", "0 m", "4 m"], "alpha": {"texture": "mask"}}]})json";
+  const Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
+  std::filesystem::remove_all(directory);
+  const double metres_per_pixel = 2 * 5 * std::tan(10 * kPiD / 180) / 32;  // 5 m away now
+  const double edge_column = 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel;
+  int open = 0, closed = 0, closed_pixels_differing = 0;
+  double closed_sum = 0;
+  for (int y = 1; y < 31; ++y)  // the quad covers rows and columns 1 to 30
+    for (int x = 1; x < 31; ++x) {
+      const float value = image.pixel(x, y)[0];
+      if (x + 1 < edge_column) {
+        EXPECT_NEAR(value, 2.0f, 1e-5f) << x << ", " << y;
+        ++open;
+      } else if (x > edge_column) {
+        closed_sum += value;
+        closed_pixels_differing += std::abs(value - image.pixel(x - 1, y)[0]) > 1e-3f;
+        ++closed;
+      }
+    }
+  ASSERT_GT(open, 300);
+  ASSERT_GT(closed, 300);
+  // 16 coin flips a pixel: a mean of 1 (half of 2), its spread 0.5 / √(16 · closed).
+  EXPECT_NEAR(closed_sum / closed, 1.0, 0.05);
+  EXPECT_GT(closed_pixels_differing, closed / 2);  // noise, not one surface in blocks
+}
+
 // A diffuse floor under a point light 3 m up, a 1 m occluder at 2 m between:
 // its shadow spans |x|, |z| < 1.5 m on the floor, the camera 5 m up sees past
 // it only where |x| or |z| > 0.83 m. In that ring the floor is dark under an

@@ -6,9 +6,11 @@
 // vector step changes the speed and never the answer.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "lanes.hpp"
 #include "safegi/cpu_renderer/kernel_math.hpp"
@@ -144,6 +146,27 @@ inline Double3 cross(Double3 a, Double3 b) {
 
 }  // namespace triangle_block_detail
 
+namespace triangle_block_detail {
+
+inline uint64_t bits_of(Real x) { return std::bit_cast<std::conditional_t<sizeof(Real) == 8, uint64_t, uint32_t>>(x); }
+
+}  // namespace triangle_block_detail
+
+// Two triangles in one plane (a box's bottom on a floor) meet a ray at the
+// same rounded t: which one the ray sees is a fair coin of the ray and the
+// later-found triangle, so that each is seen about half the time, as pbrt-v3's
+// float arithmetic has it, whatever the hierarchy's order.
+inline bool wins_tie(const BlockRay& ray, uint32_t shape, uint32_t face) {
+  using triangle_block_detail::bits_of;
+  uint64_t h = bits_of(ray.direction.x) * 0x9E3779B97F4A7C15ull ^ bits_of(ray.direction.y) * 0xC2B2AE3D27D4EB4Full ^
+               bits_of(ray.direction.z) * 0x165667B19E3779F9ull ^ bits_of(ray.origin.x) * 0x94D049BB133111EBull ^
+               ((uint64_t{shape} << 32) | face) * 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 31;
+  h *= 0xFF51AFD7ED558CCDull;
+  h ^= h >> 33;
+  return (h >> 63) != 0;
+}
+
 // Möller–Trumbore in double: in float its u, v and t carry an absolute error
 // that grows with |origin − p0| and the edge lengths, which opens metre-wide
 // cracks along the shared edges of 1e7 m triangles. The data stays in the
@@ -164,7 +187,7 @@ inline bool intersect_lane(const TriangleBlock& block, int lane, const BlockRay&
   const double v = dot(d, q) * inverse_det;
   if (v < 0.0 || u + v > 1.0) return false;
   const Real t = static_cast<Real>(dot(e2, q) * inverse_det);
-  if (!(t > 0 && t < t_max)) return false;
+  if (!(t > 0 && (t < t_max || (t == t_max && wins_tie(ray, block.shape[lane], block.face[lane]))))) return false;
   t_max = t;
   b1 = static_cast<Real>(u);
   b2 = static_cast<Real>(v);
