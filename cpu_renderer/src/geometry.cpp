@@ -140,7 +140,7 @@ struct PrimitiveSet::Found {
   Real b1 = 0, b2 = 0;
 };
 
-template <bool any_hit>
+template <bool any_hit, bool skipping>
 bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max, Found& found,
                                    std::span<const kernel::PrimitiveId> skipped) const {
   constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
@@ -154,10 +154,11 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
       for (unsigned candidates = kernel::candidate_lanes(triangles, block_ray, t_limit, lanes); candidates != 0;
            candidates &= candidates - 1) {
         const int lane = std::countr_zero(candidates);
-        if (!skipped.empty() && std::ranges::any_of(skipped, [&](kernel::PrimitiveId id) {
-              return id.shape == triangles.shape[lane] && id.face == triangles.face[lane];
-            }))
-          continue;
+        if constexpr (skipping)
+          if (std::ranges::any_of(skipped, [&](kernel::PrimitiveId id) {
+                return id.shape == triangles.shape[lane] && id.face == triangles.face[lane];
+              }))
+            continue;
         Real b1, b2;
         if (!kernel::intersect_lane(triangles, lane, block_ray, t_limit, b1, b2)) continue;
         found = {false, block * kWidth + static_cast<uint32_t>(lane), b1, b2};
@@ -210,7 +211,9 @@ bool PrimitiveSet::trace_spheres(const Ray& ray, const kernel::TraversalRay& tra
 template <bool any_hit>
 bool PrimitiveSet::trace(const Ray& ray, Real& t_max, Found& found, std::span<const kernel::PrimitiveId> skipped) const {
   const kernel::TraversalRay traversal(ray.origin, ray.direction);
-  const bool triangle_hit = trace_triangles<any_hit>(ray, traversal, t_max, found, skipped);
+  // The skipping test only where there is something to skip (alpha masks), out of the hot loop otherwise.
+  const bool triangle_hit = skipped.empty() ? trace_triangles<any_hit, false>(ray, traversal, t_max, found, skipped)
+                                            : trace_triangles<any_hit, true>(ray, traversal, t_max, found, skipped);
   if (any_hit && triangle_hit) return true;
   return trace_spheres<any_hit>(ray, traversal, t_max, found) || triangle_hit;
 }

@@ -102,7 +102,7 @@ class PrimitiveSet {
   void build_spheres(int threads);
   template <bool any_hit>
   bool trace(const kernel::Ray& ray, Real& t_max, Found& found, std::span<const kernel::PrimitiveId> skipped = {}) const;
-  template <bool any_hit>
+  template <bool any_hit, bool skipping>
   bool trace_triangles(const kernel::Ray& ray, const kernel::TraversalRay& traversal, Real& t_max, Found& found,
                        std::span<const kernel::PrimitiveId> skipped) const;
   template <bool any_hit>
