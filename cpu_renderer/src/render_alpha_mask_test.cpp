@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <unistd.h>
 
 #include "render_test_support.hpp"
@@ -16,11 +17,13 @@ namespace {
 
 using namespace test_support;
 
-// Seen from above, a black quad at y = 1 over an emitting floor (Le = 2): its
-// mask is 0 on the texels left of the middle (bilinear, clamped: exactly 0
-// for u < 31.5/64), so the floor shows there at its full radiance and the
-// quad's black elsewhere; pixels that straddle the edge lie between.
-TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
+// Seen from 5 m above, a black quad at `height` over an emitting floor
+// (Le = 2): its mask is 0 on the texels left of the middle (bilinear, clamped:
+// exactly 0 for u < 31.5/64). The quad fills the view (4 m wide, seen through
+// 20°); its u runs along x, as the image's columns do, so the mask's edge is
+// at x = -2 + 4 · 31.5/64 m on the quad, 2 d tan 10° / 32 m per pixel there
+// (d = 5 m − height). Gives the image and the edge's column.
+std::pair<Image, double> render_masked_quad_over_floor(double height) {
   const std::filesystem::path directory =
       std::filesystem::temp_directory_path() / ("safegi-alpha-" + std::to_string(::getpid()));
   std::filesystem::create_directories(directory);
@@ -33,15 +36,19 @@ TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
     "textures": {"mask": {"type": "image", "file": "mask.pfm", "filter": "bilinear", "wrap": "clamp"}},
     "shapes": [{"type": "quad", "origin": ["-10 m", "0 m", "-10 m"], "edge_u": ["0 m", "0 m", "20 m"],
                 "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"},
-               {"type": "quad", "origin": ["-2 m", "1 m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
+               {"type": "quad", "origin": ["-2 m", ")json" +
+                            std::to_string(height) + R"json( m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
                 "edge_v": ["0 m", "0 m", "4 m"], "alpha": {"texture": "mask"}}]})json";
-  const Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
+  Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
   std::filesystem::remove_all(directory);
-  // The quad fills the view (4 m wide, 4 m away, seen through 20°); its u
-  // runs along x, as the image's columns do, so the edge is at
-  // x = -2 + 4 · 31.5/64 m on the quad, 2 · 4 tan 10° / 32 m per pixel there.
-  const double metres_per_pixel = 2 * 4 * std::tan(10 * kPiD / 180) / 32;
-  const double edge_column = 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel;
+  const double metres_per_pixel = 2 * (5 - height) * std::tan(10 * kPiD / 180) / 32;
+  return {std::move(image), 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel};
+}
+
+// With the quad 1 m up, the floor shows where the mask is 0 at its full
+// radiance and the quad's black elsewhere; pixels that straddle the edge lie between.
+TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
+  const auto [image, edge_column] = render_masked_quad_over_floor(1);
   int open = 0, closed = 0;
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) {
@@ -61,34 +68,17 @@ TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
   EXPECT_GT(closed, 400);
 }
 
-// The same masked quad lying in the emitting floor's plane (a box's bottom on
-// a floor, as in pbrt-v3-rs's triangles-alpha-mask): through its holes the
-// floor shows to every ray, as in pbrt-v3, whose mask test is part of the
-// triangle's intersection; where the quad is there the two tie, and each is
-// seen by about half the rays (a fair coin per ray), not by the hierarchy's order.
+// The masked quad in the emitting floor's plane (a box's bottom on a floor,
+// as in pbrt-v3-rs's triangles-alpha-mask): through its holes the floor shows
+// to every ray, as in pbrt-v3, whose mask test is part of the triangle's
+// intersection; where the quad is there the two tie, and each is seen by
+// about half the rays (a fair coin per ray), not by the hierarchy's order.
 TEST(RenderAlphaMask, ASurfaceInTheMaskedPlaneShowsThroughItsHoles) {
-  const std::filesystem::path directory =
-      std::filesystem::temp_directory_path() / ("safegi-alpha-plane-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(directory);
-  Image mask{64, 1, std::vector<float>(3 * 64, 0.0f)};
-  std::fill(mask.rgb.begin() + 3 * 32, mask.rgb.end(), 1.0f);
-  write_pfm(directory / "mask.pfm", mask);
-  const std::string scene = R"json({
-    "render": {"resolution": [32, 32], "integrator": "path"},
-    "camera": {"position": ["0 m", "5 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "20 deg"},
-    "textures": {"mask": {"type": "image", "file": "mask.pfm", "filter": "bilinear", "wrap": "clamp"}},
-    "shapes": [{"type": "quad", "origin": ["-10 m", "0 m", "-10 m"], "edge_u": ["0 m", "0 m", "20 m"],
-                "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"},
-               {"type": "quad", "origin": ["-2 m", "0 m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
-                "edge_v": ["0 m", "0 m", "4 m"], "alpha": {"texture": "mask"}}]})json";
-  const Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
-  std::filesystem::remove_all(directory);
-  const double metres_per_pixel = 2 * 5 * std::tan(10 * kPiD / 180) / 32;  // 5 m away now
-  const double edge_column = 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel;
+  const auto [image, edge_column] = render_masked_quad_over_floor(0);
   int open = 0, closed = 0, closed_pixels_differing = 0;
   double closed_sum = 0;
-  for (int y = 1; y < 31; ++y)  // the quad covers rows and columns 1 to 30
-    for (int x = 1; x < 31; ++x) {
+  for (int y = 0; y < 32; ++y)
+    for (int x = 1; x < 32; ++x) {
       const float value = image.pixel(x, y)[0];
       if (x + 1 < edge_column) {
         EXPECT_NEAR(value, 2.0f, 1e-5f) << x << ", " << y;
