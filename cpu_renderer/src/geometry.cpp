@@ -3,6 +3,7 @@
 #include "surface_texture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 
@@ -355,22 +356,23 @@ std::optional<SurfaceHit> Geometry::nearest_unmasked(const TimedRay& ray, Length
   // masked layers) it goes on from just beyond the last one, which passes any
   // surface within rounding of that one's plane too.
   constexpr size_t kMaxSkipped = 16;
-  std::vector<kernel::PrimitiveId> skipped;
+  std::array<kernel::PrimitiveId, kMaxSkipped> skipped;
+  size_t skipped_count = 0;
   TimedRay beyond = ray;
   bool moved_on = false;
   for (int layer = 0; layer < kMaxMaskedLayers; ++layer) {
-    std::optional<SurfaceHit> hit = nearest(beyond, skipped);
+    std::optional<SurfaceHit> hit = nearest(beyond, std::span(skipped.data(), skipped_count));
     if (!hit) return std::nullopt;
     // Distances along the original ray, from its origin.
     if (moved_on) hit->distance = sg::dot(hit->position - ray.o, ray.d);
     if (hit->distance >= t_max) return std::nullopt;
     if (!masked(*hit, ray.time, shadow) || layer + 1 == kMaxMaskedLayers) return hit;
-    if (skipped.size() == kMaxSkipped) {
-      skipped.clear();
+    if (skipped_count == kMaxSkipped) {
+      skipped_count = 0;
       beyond = spawn_ray(*hit, ray.d, ray.time);
       moved_on = true;
     }
-    skipped.push_back({hit->shape, hit->face});
+    skipped[skipped_count++] = {hit->shape, hit->face};
   }
   return std::nullopt;
 }

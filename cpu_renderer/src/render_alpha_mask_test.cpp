@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 #include <unistd.h>
 
 #include "render_test_support.hpp"
@@ -17,38 +18,42 @@ namespace {
 
 using namespace test_support;
 
-// Seen from 5 m above, a black quad at `height` over an emitting floor
-// (Le = 2): its mask is 0 on the texels left of the middle (bilinear, clamped:
-// exactly 0 for u < 31.5/64). The quad fills the view (4 m wide, seen through
-// 20°); its u runs along x, as the image's columns do, so the mask's edge is
-// at x = -2 + 4 · 31.5/64 m on the quad, 2 d tan 10° / 32 m per pixel there
-// (d = 5 m − height). Gives the image and the edge's column.
-std::pair<Image, double> render_masked_quad_over_floor(double height) {
+// Seen from 5 m above, black quads at `heights` over an emitting floor
+// (Le = 2): their mask is 0 on the texels left of `first_opaque` of 64
+// (bilinear, clamped: exactly 0 for u < (first_opaque − 0.5)/64). Each quad
+// fills the view (4 m wide, seen through 20°); its u runs along x, as the
+// image's columns do, so with one quad the mask's edge is at
+// x = -2 + 4 · 31.5/64 m on it, 2 d tan 10° / 32 m per pixel there
+// (d = 5 m − height). Gives the image and that edge's column.
+std::pair<Image, double> render_masked_quads_over_floor(const std::vector<double>& heights, int first_opaque = 32) {
   const std::filesystem::path directory =
       std::filesystem::temp_directory_path() / ("safegi-alpha-" + std::to_string(::getpid()));
   std::filesystem::create_directories(directory);
   Image mask{64, 1, std::vector<float>(3 * 64, 0.0f)};
-  std::fill(mask.rgb.begin() + 3 * 32, mask.rgb.end(), 1.0f);
+  std::fill(mask.rgb.begin() + 3 * first_opaque, mask.rgb.end(), 1.0f);
   write_pfm(directory / "mask.pfm", mask);
+  std::string quads;
+  for (double height : heights)
+    quads += R"json(, {"type": "quad", "origin": ["-2 m", ")json" + std::to_string(height) +
+             R"json( m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"], "edge_v": ["0 m", "0 m", "4 m"],
+                        "alpha": {"texture": "mask"}})json";
   const std::string scene = R"json({
     "render": {"resolution": [32, 32], "integrator": "path"},
     "camera": {"position": ["0 m", "5 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "20 deg"},
     "textures": {"mask": {"type": "image", "file": "mask.pfm", "filter": "bilinear", "wrap": "clamp"}},
     "shapes": [{"type": "quad", "origin": ["-10 m", "0 m", "-10 m"], "edge_u": ["0 m", "0 m", "20 m"],
-                "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"},
-               {"type": "quad", "origin": ["-2 m", ")json" +
-                            std::to_string(height) + R"json( m", "-2 m"], "edge_u": ["4 m", "0 m", "0 m"],
-                "edge_v": ["0 m", "0 m", "4 m"], "alpha": {"texture": "mask"}}]})json";
+                "edge_v": ["20 m", "0 m", "0 m"], "emission": "2 W/(m2 sr)"})json" +
+                           quads + "]}";
   Image image = render_text(scene, 16, 2, std::nullopt, {}, directory);
   std::filesystem::remove_all(directory);
-  const double metres_per_pixel = 2 * (5 - height) * std::tan(10 * kPiD / 180) / 32;
+  const double metres_per_pixel = 2 * (5 - heights.front()) * std::tan(10 * kPiD / 180) / 32;
   return {std::move(image), 16 + (-2 + 4 * 31.5 / 64) / metres_per_pixel};
 }
 
 // With the quad 1 m up, the floor shows where the mask is 0 at its full
 // radiance and the quad's black elsewhere; pixels that straddle the edge lie between.
 TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
-  const auto [image, edge_column] = render_masked_quad_over_floor(1);
+  const auto [image, edge_column] = render_masked_quads_over_floor({1});
   int open = 0, closed = 0;
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) {
@@ -74,7 +79,7 @@ TEST(RenderAlphaMask, CameraRaysPassWhereTheMaskIsZero) {
 // intersection; where the quad is there the two tie, and each is seen by
 // about half the rays (a fair coin per ray), not by the hierarchy's order.
 TEST(RenderAlphaMask, ASurfaceInTheMaskedPlaneShowsThroughItsHoles) {
-  const auto [image, edge_column] = render_masked_quad_over_floor(0);
+  const auto [image, edge_column] = render_masked_quads_over_floor({0});
   int open = 0, closed = 0, closed_pixels_differing = 0;
   double closed_sum = 0;
   for (int y = 0; y < 32; ++y)
@@ -94,6 +99,17 @@ TEST(RenderAlphaMask, ASurfaceInTheMaskedPlaneShowsThroughItsHoles) {
   // 16 coin flips a pixel: a mean of 1 (half of 2), its spread 0.5 / √(16 · closed).
   EXPECT_NEAR(closed_sum / closed, 1.0, 0.05);
   EXPECT_GT(closed_pixels_differing, closed / 2);  // noise, not one surface in blocks
+}
+
+// Forty quads masked everywhere, a centimetre apart, more than a ray skips
+// from one origin (16) before it goes on from beyond the last: the floor
+// shows in every pixel.
+TEST(RenderAlphaMask, ARayPassesManyMaskedLayers) {
+  std::vector<double> heights;
+  for (int i = 1; i <= 40; ++i) heights.push_back(0.01 * i);
+  const Image image = render_masked_quads_over_floor(heights, 64).first;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) EXPECT_NEAR(image.pixel(x, y)[0], 2.0f, 1e-5f) << x << ", " << y;
 }
 
 // A diffuse floor under a point light 3 m up, a 1 m occluder at 2 m between:

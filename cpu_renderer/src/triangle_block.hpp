@@ -158,8 +158,10 @@ inline uint64_t bits_of(Real x) { return std::bit_cast<std::conditional_t<sizeof
 // float arithmetic has it, whatever the hierarchy's order.
 inline bool wins_tie(const BlockRay& ray, uint32_t shape, uint32_t face) {
   using triangle_block_detail::bits_of;
+  // Origin and direction both: an orthographic camera's rays share one direction.
   uint64_t h = bits_of(ray.direction.x) * 0x9E3779B97F4A7C15ull ^ bits_of(ray.direction.y) * 0xC2B2AE3D27D4EB4Full ^
                bits_of(ray.direction.z) * 0x165667B19E3779F9ull ^ bits_of(ray.origin.x) * 0x94D049BB133111EBull ^
+               bits_of(ray.origin.y) * 0xD6E8FEB86659FD93ull ^ bits_of(ray.origin.z) * 0xA0761D6478BD642Full ^
                ((uint64_t{shape} << 32) | face) * 0xBF58476D1CE4E5B9ull;
   h ^= h >> 31;
   h *= 0xFF51AFD7ED558CCDull;
