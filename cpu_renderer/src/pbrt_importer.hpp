@@ -203,7 +203,7 @@ class Importer {
   // (clamped to [0, 1]).
   enum class TextureUse { none, reflectance, weight };
   TexturedReflectance textured_reflectance(ParamSet& params, const char* name, double fallback, TextureUse use);
-  Reflectance texture_maximum(int image, int pattern) const;
+  Reflectance texture_maximum(int image, int pattern);
   bool warned_above_one(const TexturedReflectance& kd) const;  // its texture alone exceeds 1, said once
   double roughness_alpha(ParamSet& params, const char* name, double fallback, bool remap);
   double index_of_refraction(ParamSet& params, SourceRange at);
@@ -251,6 +251,7 @@ class Importer {
   std::vector<Diagnostic> warnings_;
   std::set<std::string> formats_beyond_pbrt_warned_;  // image formats pbrt-v3 does not read, warned once each
   std::set<std::pair<int, int>> textures_above_one_warned_;  // (image, pattern) reaching above 1, warned once each
+  std::map<std::pair<int, int>, Reflectance> texture_maxima_;  // texture_maximum's, by (image, pattern)
   uint64_t curve_triangles_ = 0;                       // made of the curves so far
   std::optional<SourceRange> environment_at_;  // the infinite light, once there is one
   std::map<std::string, int> named_media_;     // into Scene::media

@@ -186,9 +186,15 @@ std::optional<BumpMap> Importer::bump_map(ParamSet& params) {
   return BumpMap{.texture = entry.image, .pattern = entry.pattern, .scale = static_cast<Real>(metres) * units::meter};
 }
 
-// The largest value (per channel) of an image texture or a pattern.
-Reflectance Importer::texture_maximum(int image, int pattern) const {
-  return image >= 0 ? result_.scene.textures[image].mipmap->maximum() : largest_value(result_.scene.patterns[pattern].pattern);
+// The largest value (per channel) of an image texture or a pattern, found
+// once per texture: a noise pattern's is 16³ samples, and every material that
+// reads the texture asks (twice for plastic and translucent).
+Reflectance Importer::texture_maximum(int image, int pattern) {
+  const auto [found, inserted] = texture_maxima_.try_emplace({image, pattern});
+  if (inserted)
+    found->second = image >= 0 ? result_.scene.textures[image].mipmap->maximum()
+                               : largest_value(result_.scene.patterns[pattern].pattern);
+  return found->second;
 }
 
 TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char* name, double fallback, TextureUse use) {
