@@ -84,7 +84,7 @@ TEST(Elide, CastsThatOnlyChangeTheAnnotationBecomeParentheses) {
                           "void main() { float<area> a = float<area>(2.0); float<solid_angle> w = float<solid_angle>(a / (1.0 * meter * meter)); c = vec4(w); }\n";
   const std::string out = elide_ok(src);
   EXPECT_NE(out.find("float       a =            (2.0);"), std::string::npos) << out;
-  EXPECT_NE(out.find("w =                   (a / (1.0 * (1.0) * (1.0)))"), std::string::npos) << out;
+  EXPECT_NE(out.find("w =                   (a / (1.0                ))"), std::string::npos) << out;
   // A cast that converts the GLSL type keeps its constructor.
   const std::string converting = elide_ok("#version 330 core\nout vec4 c;\nvoid main() { int i = 2; c = vec4(float<1>(i)); }\n");
   EXPECT_NE(converting.find("vec4(float   (i))"), std::string::npos) << converting;

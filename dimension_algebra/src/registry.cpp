@@ -36,10 +36,22 @@ bool DimensionRegistry::claim(const std::string& name, Kind kind) {
   return kinds_.emplace(name, std::pair{kind, index}).second;
 }
 
-std::optional<BaseId> DimensionRegistry::add_base(std::string name) {
+std::optional<BaseId> DimensionRegistry::add_base(std::string name, BaseKind kind) {
   if (!claim(name, Kind::base)) return std::nullopt;
   bases_.push_back(std::move(name));
+  ratio_bases_.push_back(kind == BaseKind::ratio);
   return static_cast<BaseId>(bases_.size() - 1);
+}
+
+bool DimensionRegistry::is_ratio_base(BaseId id) const {
+  if (is_unit_factor(id)) return is_only_ratios(unit_of_factor(id).dimension);
+  return id < ratio_bases_.size() && ratio_bases_[id];
+}
+
+bool DimensionRegistry::is_only_ratios(const Dimension& d) const {
+  for (const Factor& f : d.factors())
+    if (!is_ratio_base(f.base)) return false;
+  return true;
 }
 
 bool DimensionRegistry::add_derived(std::string name, Dimension value) {
@@ -283,6 +295,7 @@ DimensionRegistry DimensionRegistry::rendering_prelude() {
     r.add_unit(std::move(name), same->dimension, same->scale);
   };
 #define VOCABULARY_BASE(name) r.add_base(#name);
+#define VOCABULARY_RATIO_BASE(name) r.add_base(#name, BaseKind::ratio);
 #define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
   derive(#name, {length, time, energy, angle, solid_angle, proj});
 #define VOCABULARY_SYNONYM(name, of) r.add_derived(#name, r.find_derived(#of)->value);

@@ -116,7 +116,19 @@ const OperationShape* shape_of(GeometricOp op) {
   }
 }
 
-constexpr std::string_view kHomogenizeHelper = "vec3 safegi_homogenize(vec4 h) { return h.xyz / h.w; }";
+// A SafeGI built-in of one argument that is no GLSL: a variable argument is written in place,
+// any other argument goes through a helper emitted after #version, so it is evaluated once.
+struct OneArgumentHelper {
+  GeometricOp op;
+  std::string_view name;      // the helper's name
+  std::string_view inline_;   // the in-place text, with `@` for the variable
+  std::string_view function;  // the helper's definition
+};
+constexpr OneArgumentHelper kHelpers[] = {
+    {GeometricOp::homogenize, "safegi_homogenize", "(@.xyz / @.w)", "vec3 safegi_homogenize(vec4 h) { return h.xyz / h.w; }"},
+    {GeometricOp::inverse_square, "safegi_inverse_square", "(1.0 / (@ * @))",
+     "float safegi_inverse_square(float d) { return 1.0 / (d * d); }"},
+};
 
 class Eraser {
  public:
@@ -199,9 +211,11 @@ class Eraser {
       }
       case ast::NodeKind::CallExpr:
         return cast(static_cast<const ast::CallExpr&>(n));
+      case ast::NodeKind::BinaryExpr:
+        return unit_factor(static_cast<const ast::BinaryExpr&>(n));
       case ast::NodeKind::IdentifierExpr: {
         auto& e = static_cast<const ast::IdentifierExpr&>(n);
-        if (variables_.count(e.name)) return;
+        if (variables_.count(e.name) || erased_units_.count(&e)) return;
         if (const Unit* unit = in_.checked.registry.find_unit(e.name))
           replace_padded(e.range, "(" + format_scale(unit->scale) + ")");
         return;
@@ -232,7 +246,8 @@ class Eraser {
       a = bin->lhs;
       b = bin->rhs;
     } else if (auto* call = ast::dyn_cast<ast::CallExpr>(&node)) {
-      if (info.op == GeometricOp::homogenize && call->args.size() == 1) return homogenize(*call);
+      for (const OneArgumentHelper& h : kHelpers)
+        if (info.op == h.op && call->args.size() == 1) return one_argument(*call, h);
       if (call->args.size() != 2) return;
       a = call->args[0];
       b = call->args[1];
@@ -291,16 +306,42 @@ class Eraser {
   }
 
   // `homogenize(h)`: `(h.xyz / h.w)` for a variable, else a helper call so
-  // that `h` is evaluated once.
-  void homogenize(const ast::CallExpr& call) {
-    const ast::Expr* h = call.args[0];
-    if (auto* id = ast::dyn_cast<ast::IdentifierExpr>(h); id && call.range.begin.file == call.range.end.file) {
+  // that `h` is evaluated once; `inverse_square(d)` likewise.
+  void one_argument(const ast::CallExpr& call, const OneArgumentHelper& helper) {
+    const ast::Expr* x = call.args[0];
+    if (auto* id = ast::dyn_cast<ast::IdentifierExpr>(x); id && call.range.begin.file == call.range.end.file) {
       std::string_view old = text_of(call.range.begin.file, call.range.begin.offset, call.range.end.offset);
-      add(call.range, "(" + id->name + ".xyz / " + id->name + ".w)" + newlines_of(old));
+      std::string text;
+      for (char c : helper.inline_) text += c == '@' ? id->name : std::string(1, c);
+      add(call.range, text + newlines_of(old));
       return;
     }
-    helpers_.insert("safegi_homogenize");
-    replace_padded(call.callee_range, "safegi_homogenize");
+    helpers_.insert(std::string(helper.name));
+    replace_padded(call.callee_range, std::string(helper.name));
+  }
+
+  // A unit of scale 1 as a factor (`2.0 * meter`, `d / meter`, `meter * d`) is erased with
+  // its operator, so the checked shader compiles to the instructions of the plain one (glslang
+  // folds no `x / (1.0)`); anywhere else a unit is its scale, `(1.0)`.
+  const ast::IdentifierExpr* unit_of_scale_one(const ast::Expr* e) const {
+    auto* id = ast::dyn_cast<ast::IdentifierExpr>(e);
+    if (id == nullptr || variables_.count(id->name)) return nullptr;
+    const Unit* unit = in_.checked.registry.find_unit(id->name);
+    return unit != nullptr && DimensionRegistry::same_scale(unit->scale, 1.0) ? id : nullptr;
+  }
+  void unit_factor(const ast::BinaryExpr& e) {
+    if ((e.op != ast::BinaryOp::Mul && e.op != ast::BinaryOp::Div) || e.lhs == nullptr || e.rhs == nullptr) return;
+    const SourceRange& l = e.lhs->range;
+    const SourceRange& r = e.rhs->range;
+    const FileId file = l.begin.file;
+    if (l.end.file != file || r.begin.file != file || r.end.file != file || l.end.offset > r.begin.offset) return;
+    if (const ast::IdentifierExpr* unit = unit_of_scale_one(e.rhs)) {
+      erased_units_.insert(unit);
+      add(file, l.end.offset, r.end.offset, blanked(text_of(file, l.end.offset, r.end.offset)), 0);
+    } else if (e.op == ast::BinaryOp::Mul && (unit = unit_of_scale_one(e.lhs)) != nullptr) {
+      erased_units_.insert(unit);
+      add(file, l.begin.offset, r.begin.offset, blanked(text_of(file, l.begin.offset, r.begin.offset)), 0);
+    }
   }
 
   void cannot_rewrite(const ast::Node& node) {
@@ -369,7 +410,8 @@ class Eraser {
     std::string lines;
     for (const auto& [name, value] : in_.defines) lines += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
     for (const std::string& name : in_.undefines) lines += "#undef " + name + "\n";
-    if (helpers_.count("safegi_homogenize")) lines += std::string(kHomogenizeHelper) + "\n";
+    for (const OneArgumentHelper& h : kHelpers)
+      if (helpers_.count(std::string(h.name))) lines += std::string(h.function) + "\n";
     if (lines.empty()) return text;
     const SourceRange& version = in_.preprocessed.version_range;
     if (in_.preprocessed.version_given && version.begin.file == in_.main_file) {
@@ -388,6 +430,7 @@ class Eraser {
   std::unordered_set<std::string> variables_;
   std::map<FileId, std::set<Edit>> edits_;
   std::set<std::string> helpers_;
+  std::set<const ast::Node*> erased_units_;  // units erased with their operator (unit_factor)
 };
 
 }  // namespace

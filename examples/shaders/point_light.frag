@@ -15,7 +15,7 @@ void main() {
     float d = length(toLight);
     vec3 wi = normalize(toLight);
     float cosTheta = max(dot(normalize(N), wi), 0.0);
-    float G = 1.0 * 1.0 * 1.0 / (d * d);
+    float G = 1.0 / (d * d);
     vec3 L = Kd * lightI * cosTheta * G;
     fragColor = vec4(L, 1.0);
 }

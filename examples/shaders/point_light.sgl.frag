@@ -20,8 +20,8 @@ void main() {
     direction<world> wi = normalize(toLight);
     float<proj> cosTheta = max(dot(normalize(N), wi), 0.0);
     // 1/d^2 is the solid angle per unit projected area the light sees the
-    // surface under: solid_angle / (area * proj).
-    float<solid_angle / (area * proj)> G = float<solid_angle / (area * proj)>(1.0 * meter * meter / (d * d));
+    // surface under: solid_angle / (area * proj), the inverse-square law.
+    float<solid_angle / (area * proj)> G = inverse_square(d);
     spectrum<radiance> L = Kd * lightI * cosTheta * G;
     fragColor = vec4(L, 1.0);
 }

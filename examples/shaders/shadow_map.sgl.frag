@@ -22,7 +22,7 @@ void main() {
     point<light_s> Pl = lightFromWorld * P;
     hpoint<light_clip> h = clipFromLight * Pl;
     point<light_clip> ndc = homogenize(h);
-    vec2 uv = vec2<1>(ndc.xy) * 0.5 + 0.5;       // NDC to texture coordinates
+    vec2 uv = ndc.xy / meter * 0.5 + 0.5;        // NDC to texture coordinates
     float<length> stored = texture(shadowMap, uv).r;
     float<length> dist = length(Pl - point<light_s>(0.0));
     float<1> visible = dist - bias > stored ? 0.0 : 1.0;

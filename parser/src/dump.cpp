@@ -210,7 +210,7 @@ class Dumper {
       case NodeKind::DimensionDecl: {
         const auto* d = static_cast<const DimensionDecl*>(n);
         text(d->name);
-        if (!d->definition) text("base");
+        if (!d->definition) text(d->ratio ? "base ratio" : "base");
         close();
         node(d->definition, level + 1);
         return;

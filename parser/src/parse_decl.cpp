@@ -424,7 +424,14 @@ Decl* Parser::parse_annotation_declaration() {
     auto* decl = make<DimensionDecl>(begin);
     decl->name = std::string(name.text);
     decl->name_range = name.range;
-    if (accept(T::Assign)) decl->definition = parse_dim_expr();
+    if (accept(T::Colon)) {
+      // `dimension angle : ratio;`: the only kind a base may be given.
+      if (!(at(T::Ident) && peek().text == "ratio")) fail_expected("'ratio'", "after ':' in a dimension declaration");
+      advance();
+      decl->ratio = true;
+    } else if (accept(T::Assign)) {
+      decl->definition = parse_dim_expr();
+    }
     expect_semicolon("after dimension declaration");
     result = decl;
   } else if (word == "unit") {

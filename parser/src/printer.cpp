@@ -403,6 +403,7 @@ void GlslPrinter::declaration(const Decl& d, bool top_level) {
       if (!options_.annotations) return;
       const auto& dd = static_cast<const DimensionDecl&>(d);
       out_ += "dimension " + dd.name;
+      if (dd.ratio) out_ += " : ratio";
       if (dd.definition) {
         out_ += " = ";
         dim(*dd.definition);

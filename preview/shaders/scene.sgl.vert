@@ -26,6 +26,6 @@ void main() {
     N = normalize(worldFromObject * objectNormal);
     gl_Position = clipFromWorld * P;
     // GL keeps the side where this is positive: only its sign matters, so the
-    // length (metres) is handed over as a plain number.
-    gl_ClipDistance[0] = float<1>(dot(clipNormal, P - clipPoint));
+    // length is handed over as a plain number of metres.
+    gl_ClipDistance[0] = dot(clipNormal, P - clipPoint) / meter;
 }

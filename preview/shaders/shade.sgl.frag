@@ -88,7 +88,7 @@ float<1> visibility(vector<world> fromLight, float<1> tanTheta) {
     hpoint<light_clip> h = shadowClipFromWorld[face] * P;
     point<light_clip> ndc = homogenize(h);
     float halfTexel = 0.5 / shadowFaceTexels;
-    vec2 inFace = clamp(vec2<1>(ndc.xy) * 0.5 + 0.5, vec2(halfTexel), vec2(1.0 - halfTexel));
+    vec2 inFace = clamp(ndc.xy / meter * 0.5 + 0.5, vec2(halfTexel), vec2(1.0 - halfTexel));
     vec2 uv = (inFace + vec2(float(face % 3), float(face / 3))) / vec2(3.0, 2.0);
     float<length> stored = texture(shadowMap, uv).r;
     float<length> dist = length(fromLight);

@@ -54,8 +54,14 @@ std::optional<Type> glsl_builtin_type(const std::string& name) {
 void Checker::declare_dimension(const ast::DimensionDecl& d) {
   DimensionRegistry& reg = result_.registry;
   if (!d.definition) {
-    if (reg.find_base(d.name)) return;  // repeated identically: a header included twice
-    if (!reg.add_base(d.name))
+    if (const std::optional<BaseId> base = reg.find_base(d.name)) {
+      if (reg.is_ratio_base(*base) == d.ratio) return;  // repeated identically: a header included twice
+      report(Diagnostic::error(d.name_range, "dimension '" + d.name + "' is redeclared " +
+                                                 (d.ratio ? "as a ratio; it was a physical base" : "as a physical base; it was a ratio"))
+                 .with_code(code::E_REDECLARED));
+      return;
+    }
+    if (!reg.add_base(d.name, d.ratio ? BaseKind::ratio : BaseKind::physical))
       report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
     return;
   }

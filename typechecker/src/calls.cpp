@@ -254,6 +254,8 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
       info.op = GeometricOp::project;
     } else if (name == "homogenize") {
       info.op = GeometricOp::homogenize;
+    } else if (name == "inverse_square") {
+      info.op = GeometricOp::inverse_square;
     } else if (name == "compose") {
       info.op = GeometricOp::compose;
     } else if (name == "inverse" && is_map(first)) {

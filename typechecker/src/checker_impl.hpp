@@ -157,6 +157,7 @@ class Checker {
   Value call(const ast::CallExpr& e);
   Value method_call(const ast::MethodCallExpr& e);
   Value constructor(const ast::CallExpr& e);
+  bool cast_keeps_physics(const ast::CallExpr& e, const Type& to, const Value& value);
   Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                      std::vector<Value>& args, SourceRange callee_range, SourceRange call_range);
   Value rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range);

@@ -1,6 +1,7 @@
 // Constructors, casts (`float<solid_angle>(x)`) and the rule-typed built-in
 // families (texture*, image*, atomic counters).
 
+#include <algorithm>
 #include <cmath>
 
 #include "checker_impl.hpp"
@@ -41,6 +42,70 @@ bool Checker::combined_sampler(const Type& t, const std::vector<Value>& args) co
   if (image.shape != Shape::opaque || sampler.shape != Shape::opaque || image.is_array() || sampler.is_array()) return false;
   if (sampler.opaque != "sampler" && sampler.opaque != "samplerShadow") return false;
   return image.opaque == texture_of_sampler(t.opaque);
+}
+
+// A cast renames what SI measures as plain numbers — angle, solid angle, proj, a program's
+// `dimension pixel : ratio;` — and adopts unannotated values; it may not make a length or an
+// energy out of something else, or move a value between two spaces: `T<A>(e)` of the
+// inverse-square law also accepted `1.0 / d * d` (= 1). A constant (`float<length>(0.5)`)
+// takes what the cast gives it.
+bool Checker::cast_keeps_physics(const ast::CallExpr& e, const Type& to_type, const Value& value) {
+  const Type& from_type = value.type;
+  const std::string what = name_of(to_type);
+  const auto space_moved = [](const SpaceSlot& from, const SpaceSlot& to) {
+    return from.state != SpaceSlot::State::unknown && to.state != SpaceSlot::State::unknown && !(from == to);
+  };
+  if (space_moved(from_type.from, to_type.from) || space_moved(from_type.to, to_type.to)) {
+    const bool maps = is_map(to_type.geometry);
+    Diagnostic d = Diagnostic::error(value.range, "a cast cannot move " + name_of(from_type) + " to " + what +
+                                                      ": a cast keeps the coordinates, and the spaces differ")
+                       .with_code(code::E_SPACE_CAST);
+    add_origin_note(d, value);
+    d.with_hint(maps ? "compose or invert maps whose spaces meet (m2 * m1, inverse(m)) to get the map between these spaces"
+                     : "apply a map from " + name_of_space(from_type.from) + " to " + name_of_space(to_type.from) +
+                           " (m * x), or convert with 'in " + name_of_space(to_type.from) + "'");
+    report(std::move(d));
+    return false;
+  }
+  const DimensionRegistry& reg = result_.registry;
+  const DimSlot to = value_dimension(to_type, reg), from = value_dimension(from_type, reg);
+  if (value.zero || value.literal || value.number || !to.is_known() || !from.is_known()) return true;
+  const Checked<Dimension> from_ref = reg.reference(from.value), to_ref = reg.reference(to.value);
+  if (!from_ref || !to_ref) return true;
+  const Checked<Dimension> change = divide(*to_ref, *from_ref);
+  if (!change || reg.is_only_ratios(*change)) return true;
+  // The physical part of the change: what the value lacks (or has too much of).
+  std::vector<Factor> physical;
+  for (const Factor& f : change->factors())
+    if (!reg.is_ratio_base(f.base)) physical.push_back(f);
+  const Checked<Dimension> missing = Dimension::from_factors(physical);
+  std::vector<std::string> ratio_names;
+  for (BaseId b = 0; b < reg.base_count(); ++b)
+    if (reg.is_ratio_base(b)) ratio_names.push_back(reg.base_name(b));
+  std::string ratios;
+  for (std::size_t i = 0; i < ratio_names.size(); ++i)
+    ratios += (i == 0 ? "" : i + 1 == ratio_names.size() ? " and " : ", ") + ratio_names[i];
+  Diagnostic d = Diagnostic::error(value.range, "a cast cannot make " + name_of(from_type) + " into " + what + ": it would multiply " +
+                                                    reg.format(from.value) + " by " + reg.format_product(*missing) +
+                                                    ", and a cast may change only ratio dimensions" +
+                                                    (ratios.empty() ? std::string() : " (" + ratios + ")"))
+                     .with_code(code::E_DIMENSION_CAST);
+  add_origin_note(d, value);
+  std::string hint;
+  // A quantity as a plain number is a count of some unit: x / meter is the length in metres.
+  if (to.value.is_dimensionless() && !reg.has_unit_factors(from.value))
+    for (const Unit& unit : reg.units())
+      if (unit.dimension == *from_ref && DimensionRegistry::same_scale(unit.scale, 1.0)) {
+        hint = "a " + reg.format(from.value) + " as a plain number is a count of its unit: divide by it, x / " + unit.name;
+        break;
+      }
+  if (hint.empty()) hint = physics_hint(to, from, value.range);
+  if (hint.empty())
+    hint = "the value lacks a factor of " + reg.format_product(*missing) + ": check the expression (a quantity of another dimension needs the "
+           "factor that gives it, not a cast)";
+  d.with_hint(hint);
+  report(std::move(d));
+  return false;
 }
 
 Value Checker::constructor(const ast::CallExpr& e) {
@@ -161,6 +226,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
         report(std::move(d));
         return error_value(e.range);
       }
+      if (!cast_keeps_physics(e, t, args[0])) return error_value(e.range);
       return out;
     }
     if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");
@@ -202,7 +268,14 @@ Value Checker::constructor(const ast::CallExpr& e) {
     if (!common) common = d;
     else if (!same_dimension(*common, d)) mixed = true;
   }
-  if (common && !mixed && common->state != DimSlot::State::unknown) {
+  // A count converted to a number is a plain number: `1.0 / (float(n) * area)` is a pdf per
+  // area, not an unknown that passes for a pdf per solid angle (integers carry no annotation).
+  const bool counts = t.is_floating() && std::all_of(args.begin(), args.end(), [](const Value& a) {
+                        return a.type.is_integer() || a.type.scalar == Scalar::bool_;
+                      });
+  if (counts && !out.zero) {
+    out.type.dim = DimSlot::known(Dimension{});
+  } else if (common && !mixed && common->state != DimSlot::State::unknown) {
     out.type.dim = *common;
     out.type.dim.spelling.clear();
   } else if (out.zero) {

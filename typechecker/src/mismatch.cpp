@@ -194,9 +194,13 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
                            is({{"length", 2}, {"solid_angle", -1}, {"proj", 1}});
   const bool sr_per_area = is({{"length", -2}, {"solid_angle", 1}}) || is({{"length", -2}, {"solid_angle", 1}, {"proj", 1}}) ||
                            is({{"length", -2}, {"solid_angle", 1}, {"proj", -1}});
+  // Two densities of different measures met (an MIS weight mixing a light's area pdf with a BSDF's solid-angle pdf).
+  if (named("pdf_solid_angle", expected.value) && named("pdf_area", found.value))
+    return "a pdf per area where a pdf per solid angle is needed: convert it with the Jacobian, pdfA · r² / cos θ at the light";
+  if (named("pdf_area", expected.value) && named("pdf_solid_angle", found.value))
+    return "a pdf per solid angle where a pdf per area is needed: convert it with the Jacobian, pdfW · cos θ / r² at the light";
   if ((area_per_sr || sr_per_area) && !pdf_factor && !factors.empty())
-    return area_per_sr ? "the value lacks solid angle per area: missing the inverse-square falloff (1/d² as "
-                         "float<solid_angle / (area * proj)>)?"
+    return area_per_sr ? "the value lacks solid angle per area: missing the inverse-square falloff, inverse_square(d)?"
                        : "the value has an extra solid angle per area: the inverse-square falloff applied twice?";
   if (area_per_sr) return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
   if (sr_per_area) return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";

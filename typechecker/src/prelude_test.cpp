@@ -18,6 +18,8 @@ TEST(Prelude, DeclaresTheVocabularyOfTheTypedLibraryAndTheRenderer) {
   const DimensionRegistry vocabulary = DimensionRegistry::rendering_prelude();
 
   EXPECT_EQ(listed(shader.bases()), listed(vocabulary.bases()));
+  for (BaseId b = 0; b < shader.base_count() && b < vocabulary.base_count(); ++b)
+    EXPECT_EQ(shader.is_ratio_base(b), vocabulary.is_ratio_base(b)) << shader.base_name(b);
 
   std::vector<std::string> shader_derived, vocabulary_derived;
   for (const DerivedDimension& d : shader.derived()) shader_derived.push_back(d.name + " = " + shader.format_product(d.value));

@@ -38,6 +38,11 @@ struct RationalFactor {
   std::int64_t denominator = 1;
 };
 
+// A base dimension of quantities SI measures as plain numbers (an angle is a ratio of
+// lengths): `dimension angle : ratio;`. Kept apart from other bases all the same, but a
+// cast may change ratio bases and nothing else (docs/language.md, "Casts").
+enum class BaseKind { physical, ratio };
+
 class DimensionRegistry {
  public:
   // The rendering prelude, the same vocabulary as safegi/prelude.sgl (see
@@ -50,7 +55,7 @@ class DimensionRegistry {
 
   // Each add_* returns nothing (and changes nothing) when the name is already
   // declared in any namespace of the registry; the caller reports the clash.
-  std::optional<BaseId> add_base(std::string name);
+  std::optional<BaseId> add_base(std::string name, BaseKind kind = BaseKind::physical);
   bool add_derived(std::string name, Dimension value);
   bool add_unit(std::string name, Dimension dimension, double scale);
   std::optional<SpaceId> add_space(std::string name);
@@ -64,6 +69,10 @@ class DimensionRegistry {
   std::optional<SpaceId> find_space(std::string_view name) const;
 
   std::size_t base_count() const { return bases_.size(); }
+  // A ratio base, or a unit factor of a unit of ratio bases (degree).
+  bool is_ratio_base(BaseId id) const;
+  // Every factor of `d` a ratio base: a cast may multiply by it.
+  bool is_only_ratios(const Dimension& d) const;
   const std::string& base_name(BaseId id) const { return bases_.at(id); }
 
   // Units as factors of a dimension (docs/language.md, "Units"). A value of
@@ -133,6 +142,7 @@ class DimensionRegistry {
   bool claim(const std::string& name, Kind kind);
 
   std::vector<std::string> bases_;
+  std::vector<bool> ratio_bases_;  // per base: BaseKind::ratio
   std::vector<DerivedDimension> derived_;
   std::vector<Unit> units_;
   std::vector<std::string> spaces_;

@@ -486,6 +486,7 @@ struct DimensionDecl : Decl {
   std::string name;
   SourceRange name_range;
   DimExpr* definition = nullptr;  // nullptr: a base dimension
+  bool ratio = false;             // `dimension angle : ratio;`: a base whose values are ratios
 };
 
 // `unit centimeter : length = 0.01;`

@@ -133,6 +133,7 @@ enum class GeometricOp : std::uint8_t {
   project,              // projmap * point: m * vec4(p, 1)
   transform_homogeneous,  // map or projmap * hpoint: m * h
   homogenize,           // h.xyz / h.w
+  inverse_square,       // 1.0 / (d * d)
   compose,              // m2 * m1
   inverse,              // inverse(m)
 };
