@@ -22,6 +22,7 @@ import pathlib
 import re
 import subprocess
 import sys
+import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
@@ -108,11 +109,42 @@ def annotated(line: str) -> bool:
     return bool(ANNOTATED_TYPE.search(line) or CONVERSION.search(line))
 
 
+def rewritten(bug: dict, fixed: str, buggy: str):
+    """Both programs with the bug's "rewrite" applied: each (from, to) replaces text
+    that occurs once in a program (it must occur in the fixed one; the bug program
+    may spell that place differently, then its own entry rewrites it)."""
+    for old, new in bug["rewrite"]:
+        counts = (fixed.count(old), buggy.count(old))
+        if max(counts) > 1 or counts == (0, 0):
+            sys.exit(f"{bug['name']}: rewrite source occurs {counts} times in the fixed and bug programs: {old!r}")
+        fixed, buggy = fixed.replace(old, new), buggy.replace(old, new)
+    return fixed, buggy
+
+
+def diagnostics_of_text(check_file: str, like: pathlib.Path, text: str) -> str:
+    """The checker's output for `text`, a program of the same stage as `like` (written to a
+    scratch folder: the programs include nothing but the prelude)."""
+    with tempfile.TemporaryDirectory(prefix="real_bugs.") as folder:
+        scratch = pathlib.Path(folder) / like.name
+        scratch.write_text(text)
+        return diagnostics(check_file, scratch)
+
+
 def judge(check_file: str, bug: dict) -> dict:
     fixed_path, bug_path = shader(bug, "fixed"), shader(bug, "bug")
     if bug_path.read_text() != apply_edits(bug, fixed_path.read_text()):
         sys.exit(f"{bug_path}: not the fixed program with the bug's edits; run make_bugs.py")
     fixed_out, bug_out = diagnostics(check_file, fixed_path), diagnostics(check_file, bug_path)
+    after = None
+    if bug.get("rewrite"):
+        fixed_text, bug_text = rewritten(bug, fixed_path.read_text(), bug_path.read_text())
+        f_out = diagnostics_of_text(check_file, fixed_path, fixed_text)
+        b_out = diagnostics_of_text(check_file, bug_path, bug_text)
+        f_ok = ": error:" not in f_out
+        b_caught = f_ok and ": error:" in b_out
+        after = {"fixed": "accepted" if f_ok else "rejected", "bug": "caught" if b_caught else "missed",
+                 "cause_named": b_caught and bug["cause"].lower() in first_error(b_out).lower(),
+                 "first_error_code": error_code(first_error(b_out if f_ok else f_out))}
     fixed_ok = ": error:" not in fixed_out
     bug_rejected = ": error:" in bug_out
     caught = fixed_ok and bug_rejected
@@ -134,6 +166,7 @@ def judge(check_file: str, bug: dict) -> dict:
         "lines": len(lines),
         "annotated_lines": sum(annotated(line) for line in lines),
         "forced_rewrites": len(bug["forced_rewrites"]),
+        "after_rewrite": after,
         "expect": bug["expect"],
     }
 
@@ -153,6 +186,11 @@ def summary(results: list) -> dict:
         "annotated_lines": sum(r["annotated_lines"] for r in results),
         "forced_rewrites": sum(r["forced_rewrites"] for r in results),
         "projects": len({r["project"].split(" ")[0] for r in results}),
+        "rewritten": sum(r["after_rewrite"] is not None for r in results),
+        "caught_after_rewrite": sum(r["after_rewrite"] is not None and r["after_rewrite"]["bug"] == "caught"
+                                    for r in results),
+        "named_after_rewrite": sum(r["after_rewrite"] is not None and r["after_rewrite"]["cause_named"]
+                                   for r in results),
     }
 
 
@@ -162,9 +200,18 @@ def pct(a: int, b: int) -> str:
 
 def note(bug: dict, result: dict) -> str:
     if result["fixed"] == "rejected":
-        return "fixed rejected: " + bug["fixed_rejected_reason"].split(":")[0] + "; needs " + bug["rewrite_needed"]
+        text = "fixed rejected: " + bug["fixed_rejected_reason"].split(":")[0] + "; needs " + bug["rewrite_needed"].rstrip(";")
+        after = result["after_rewrite"]
+        if after is None:
+            return text + ("; " + bug["missed_reason"] if bug.get("missed_reason") else "")
+        if after["fixed"] == "rejected":
+            return text + f"; rewritten, the fixed program is still rejected ({after['first_error_code']})"
+        if after["bug"] == "missed":
+            return text + "; rewritten, the bug checks clean"
+        return text + f"; rewritten, the bug is caught ({after['first_error_code']}, cause " + \
+            ("named)" if after["cause_named"] else "not named)")
     if result["type_visible"] and result["bug"] == "missed":
-        return "bug checks clean"
+        return "bug checks clean: " + bug.get("missed_reason", "")
     if not result["type_visible"]:
         return "right types, wrong value"
     return result["first_error_code"]
@@ -184,6 +231,8 @@ def table(bugs: list, results: list) -> str:
         f"({pct(s['annotated_lines'], s['lines'])}; non-blank lines without comments, directives and "
         "space declarations; a line is annotated when it has a `<…>` on a type or an `in` conversion).",
         f"Rewrites of idiomatic GLSL forced by the checker: **{s['forced_rewrites']}**.",
+        f"With the rewrites the rejected fixed programs would need (`rewrite` in bugs.json, {s['rewritten']} bugs), "
+        f"{s['caught_after_rewrite']} more bugs would be caught, {s['named_after_rewrite']} of them with the cause named.",
         f"{s['bugs']} bugs from {s['projects']} projects; the note of a missed bug says why.",
         "",
         "| bug | class | type-visible | fixed | bug | cause named | note |",
