@@ -207,7 +207,7 @@ def note(bug: dict, result: dict) -> str:
         if after["fixed"] == "rejected":
             return text + f"; rewritten, the fixed program is still rejected ({after['first_error_code']})"
         if after["bug"] == "missed":
-            return text + "; rewritten, the bug checks clean"
+            return text + "; rewritten, the bug checks clean" + (": " + bug["missed_reason"] if bug.get("missed_reason") else "")
         return text + f"; rewritten, the bug is caught ({after['first_error_code']}, cause " + \
             ("named)" if after["cause_named"] else "not named)")
     if result["type_visible"] and result["bug"] == "missed":
