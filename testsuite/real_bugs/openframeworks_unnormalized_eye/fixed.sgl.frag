@@ -1,0 +1,36 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+// A creative-coding toolkit's built-in Phong shader, in eye coordinates (the
+// camera at the origin): Blinn's half vector between the unit vectors to the
+// light and to the eye.
+space view;
+
+uniform point<view> lightPosition;
+uniform spectrum<1> lightDiffuse;
+uniform spectrum<1> lightSpecular;
+uniform float<1> shininess;
+
+in point<view, shaded> v_eyePosition;
+in normal<view> v_transformedNormal;
+out vec4 fragColor;
+
+void pointLight(normal<view> normal, direction<view, away> eye, point<view, shaded> ecPosition3,
+                inout vec3 diffuse, inout vec3 specular) {
+    vector<view, away> VP = lightPosition - ecPosition3;
+    direction<view, away> dirVP = normalize(VP);
+    direction<view> halfVector = normalize(dirVP + eye);
+    float nDotVP = max(0.0, dot(normal, dirVP));
+    float nDotHV = max(0.0, dot(normal, halfVector));
+    float pf = nDotVP == 0.0 ? 0.0 : pow(nDotHV, shininess);
+    diffuse += lightDiffuse * nDotVP;
+    specular += lightSpecular * pf;
+}
+
+void main() {
+    normal<view> transformedNormal = normalize(v_transformedNormal);
+    direction<view, away> eye = -normalize(vector<view>(v_eyePosition));
+    vec3 diffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    pointLight(transformedNormal, eye, v_eyePosition, diffuse, specular);
+    fragColor = vec4(diffuse + specular, 1.0);
+}

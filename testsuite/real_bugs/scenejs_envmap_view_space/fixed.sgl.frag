@@ -1,0 +1,24 @@
+#version 330 core
+#include <safegi/prelude.sgl>
+// A scene-graph library's reflection map: the cube map is indexed in world
+// space, so the eye and normal vectors (view space, where normal mapping
+// perturbed the normal) are carried back to world space first.
+space world;
+space view;
+
+uniform rigidmap<view, world> worldFromView;
+uniform samplerCube<spectrum<radiance>> reflectionCube;
+uniform float<1> reflectionIntensity;
+uniform spectrum<radiance> baseColor;
+
+in direction<view, toward> vViewEyeVec;               // from the eye toward the surface
+in normal<view> vViewNormal;
+out vec4 fragColor;
+
+void main() {
+    direction<world, toward> worldEyeVec = normalize(worldFromView * vViewEyeVec);
+    normal<world> worldNormal = normalize(worldFromView * vViewNormal);
+    direction<world, away> envLookup = reflect(worldEyeVec, worldNormal);
+    spectrum<radiance> reflectColor = texture(reflectionCube, envLookup).rgb;
+    fragColor = vec4(baseColor + reflectionIntensity * reflectColor, 1.0);
+}
