@@ -144,6 +144,7 @@ Value Checker::method_call(const ast::MethodCallExpr& e) {
 Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                             std::vector<Value>& args, SourceRange callee_range, SourceRange call_range) {
   if (!has_signature(sigs.front().rule)) return rule_call(node, sigs.front(), args, call_range);
+  if (std::optional<Value> v = map_matrix_call(name, args, call_range)) return *v;
   std::vector<ArgInfo> infos;
   for (const Value& a : args) infos.push_back({a.type, a.lvalue});
   std::optional<ShapeMatch> match = match_shapes(sigs, infos);
@@ -353,9 +354,17 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
     report(std::move(d));
   };
 
+  // A cosine kept off zero or clamped to [0, 1] (`max(dot(n, l), 1e-4)`, `clamp(dot(n, l), 0.001, 1.0)`,
+  // saturate): a literal bound of min, max or clamp takes the cosine's dimension, as zero does.
+  bool cosine_bounds = false;
+  if (callee == "min" || callee == "max" || callee == "clamp")
+    for (const Value& a : args)
+      cosine_bounds = cosine_bounds || (!a.literal && cosine_as_number(DimSlot::known(Dimension{}), value_dimension(a.type, reg)));
+
   for (std::size_t i = 0; i < args.size(); ++i) {
     const Type& p = shape.params[i];
     const Value& a = args[i];
+    if (cosine_bounds && a.literal) continue;
     // Spaces.
     const SpaceSlot* pslots[] = {&p.from, &p.to};
     const SpaceSlot* aslots[] = {&a.type.from, &a.type.to};

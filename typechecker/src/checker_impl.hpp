@@ -157,7 +157,12 @@ class Checker {
   Value call(const ast::CallExpr& e);
   Value method_call(const ast::MethodCallExpr& e);
   Value constructor(const ast::CallExpr& e);
-  bool cast_keeps_physics(const ast::CallExpr& e, const Type& to, const Value& value);
+  bool cast_keeps_physics(const Type& to, const Value& value);
+  // Homogeneous idioms (homogeneous.cpp).
+  void remember_affine_part(Type& vec4, const std::vector<Value>& args) const;
+  std::optional<Type> affine_part(const Type& vec4, const std::string& swizzle) const;
+  std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
+  std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                      std::vector<Value>& args, SourceRange callee_range, SourceRange call_range);
   Value rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range);

@@ -49,7 +49,7 @@ bool Checker::combined_sampler(const Type& t, const std::vector<Value>& args) co
 // energy out of something else, or move a value between two spaces: `T<A>(e)` of the
 // inverse-square law also accepted `1.0 / d * d` (= 1). A constant (`float<length>(0.5)`)
 // takes what the cast gives it.
-bool Checker::cast_keeps_physics(const ast::CallExpr& e, const Type& to_type, const Value& value) {
+bool Checker::cast_keeps_physics(const Type& to_type, const Value& value) {
   const Type& from_type = value.type;
   const std::string what = name_of(to_type);
   const auto space_moved = [](const SpaceSlot& from, const SpaceSlot& to) {
@@ -226,7 +226,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
         report(std::move(d));
         return error_value(e.range);
       }
-      if (!cast_keeps_physics(e, t, args[0])) return error_value(e.range);
+      if (!cast_keeps_physics(t, args[0])) return error_value(e.range);
       return out;
     }
     if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");
@@ -281,6 +281,9 @@ Value Checker::constructor(const ast::CallExpr& e) {
   } else if (out.zero) {
     out.type.dim = DimSlot::zero();
   }
+  remember_affine_part(out.type, args);
+  if (single && t.shape == Shape::vector && t.rows == 3)
+    if (std::optional<Type> part = affine_part(first, "xyz")) out.type = *part;  // vec3(m * vec4(p, 1.0))
   // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.
   // Homogeneous components stay homogeneous: vec3(h.xy, h.z) still needs the divide by w.
   if (t.shape == Shape::vector && t.is_floating())

@@ -441,7 +441,9 @@ Value Checker::member(const ast::MemberExpr& e) {
     for (std::size_t i = 0; i < s.size(); ++i)
       for (std::size_t j = i + 1; j < s.size(); ++j) repeated = repeated || s[i] == s[j];
     const bool identity = static_cast<int>(s.size()) == t.rows && s == std::string(kSets[set]).substr(0, s.size());
-    if (!identity) {
+    if (std::optional<Type> part = affine_part(t, s)) {
+      out.type = *part;
+    } else if (!identity) {
       out.type = Type::vector_of(t.scalar, static_cast<int>(s.size()));
       out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
       if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);

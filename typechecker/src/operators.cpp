@@ -186,8 +186,24 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   std::optional<Type> shape = arithmetic_shape(op, a, b);
   const bool map_operand = is_map(a.geometry) || is_map(b.geometry);
   if (map_operand && op == ast::BinaryOp::Mul) {
-    // `m * x` and `m2 * m1` are the map operations of the built-in table.
+    if (std::optional<Value> v = homogeneous_application(lhs, rhs, op_range, range)) return *v;
     const bool composing = b.shape == Shape::matrix;
+    if (a.normal_matrix || b.normal_matrix) {
+      // Normal matrices compose with normal matrices: transpose(inverse(m2 * m1)) = N(m2) * N(m1).
+      if (!(a.normal_matrix && b.normal_matrix) || !composing) {
+        operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) + ")", lhs, rhs, op_range,
+                         "a normal matrix carries normals as vec4(n, 0.0), and composes only with normal matrices",
+                         code::E_INVALID_OPERANDS);
+        return error_value(range);
+      }
+      Value l = lhs, r = rhs;
+      l.type.normal_matrix = r.type.normal_matrix = false;
+      std::optional<Value> v = geometric_operator(nullptr, "compose", l, r, range);
+      if (!v) return error_value(range);
+      v->type.normal_matrix = true;
+      return *v;
+    }
+    // `m * x` and `m2 * m1` are the map operations of the built-in table.
     std::optional<Value> v = geometric_operator(node, composing ? "compose" : "transform", lhs, rhs, range);
     if (v) return *v;
     return error_value(range);

@@ -52,6 +52,9 @@ Type Type::plain() const {
   t.from = t.to = SpaceSlot::unknown();
   t.texel = nullptr;
   t.orientation = Orientation::none;
+  t.affine = nullptr;
+  t.affine_w = 0;
+  t.normal_matrix = false;
   return t;
 }
 
@@ -175,6 +178,14 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
     whole.weight = 1;
     const std::string of = t.weight == 1 ? " of " : " carrying w^" + std::to_string(t.weight) + " of ";
     return glsl_name(bare.plain()) + of + type_name(whole, registry, dim_params, space_params) + suffix;
+  }
+  if (t.affine && t.shape == Shape::vector)
+    return glsl_name(bare.plain()) + "(" + type_name(*t.affine, registry, dim_params, space_params) + ", " +
+           (t.affine_w == 1 ? "1.0" : "0.0") + ")" + suffix;
+  if (t.normal_matrix && is_map(t.geometry)) {
+    Type vectors = t;
+    vectors.normal_matrix = false;
+    return "the normal matrix of " + type_name(vectors, registry, dim_params, space_params);
   }
   if (t.geometry != Geometry::none) {
     std::string out = geometry_name(t.geometry);

@@ -102,6 +102,14 @@ struct Type {
   std::int8_t weight = 1;
   // Geometry::vector and direction: away or toward; Geometry::point: shaded.
   Orientation orientation = Orientation::none;
+  // A plain vec4 built as (x, w) from a point (w = 1) or a vector, direction or normal
+  // (w = 0): what its xyz is, so `(m * vec4(p, 1.0)).xyz` is m applied to p
+  // (docs/language.md, "Homogeneous idioms"). `affine_w` is 0 or 1 when `affine` is set.
+  std::shared_ptr<const Type> affine;
+  std::int8_t affine_w = 0;
+  // A map's matrix that is the inverse transpose of the map from `from` to `to`
+  // (transpose(inverse(m))): it carries normals from `from` to `to`, as vec4(n, 0.0).
+  bool normal_matrix = false;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }
@@ -119,7 +127,9 @@ struct Type {
   bool is_numeric() const { return (shape == Shape::scalar || shape == Shape::vector || shape == Shape::matrix) && scalar != Scalar::bool_; }
   bool is_floating() const { return scalar == Scalar::float_ || scalar == Scalar::double_; }
   bool is_integer() const { return scalar == Scalar::int_ || scalar == Scalar::uint_; }
-  bool is_annotated() const { return geometry != Geometry::none || dim.state == DimSlot::State::known || texel != nullptr; }
+  bool is_annotated() const {
+    return geometry != Geometry::none || dim.state == DimSlot::State::known || texel != nullptr || affine != nullptr;
+  }
   int components() const { return shape == Shape::matrix ? rows * columns : rows; }
   // The same GLSL type with every annotation slot unknown.
   Type plain() const;
