@@ -163,6 +163,9 @@ class Checker {
   std::optional<Type> affine_part(const Type& vec4, const std::string& swizzle) const;
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
+  std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
+  // The source text of an operand, for a hint's code: its name, else its text when that is one short line, else `fallback`.
+  std::string operand_text(const Value& v, const std::string& fallback) const;
   Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                      std::vector<Value>& args, SourceRange callee_range, SourceRange call_range);
   Value rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range);

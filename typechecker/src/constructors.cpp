@@ -229,6 +229,12 @@ Value Checker::constructor(const ast::CallExpr& e) {
       if (!cast_keeps_physics(t, args[0])) return error_value(e.range);
       return out;
     }
+    if (std::optional<Type> frame = frame_constructor(t.plain(), args)) {  // mat3<tangent, world, rigid>(T, B, N)
+      if (!consistent(frame->to, t.to))
+        return fail(e.range, "the columns of " + what + " are in " + name_of_space(frame->to) + ", not in " + name_of_space(t.to), "",
+                    code::E_SPACE_MISMATCH);
+      return out;
+    }
     if (is_map(t.geometry)) return fail(e.range, "a " + std::string(geometry_name(t.geometry)) + " is built from one mat4");
     // Components: zero, literals and unannotated values take the annotation; others must already have it.
     const DimSlot want = value_dimension(t, result_.registry);
@@ -258,7 +264,11 @@ Value Checker::constructor(const ast::CallExpr& e) {
     }
   }
   // A plain GLSL constructor: the components' common dimension, if they share one.
-  if (t.shape == Shape::matrix) return out;  // matrices built from parts stay unannotated
+  if (std::optional<Type> frame = frame_constructor(t, args)) {  // mat3(m), mat3(T, B, N)
+    out.type = *frame;
+    return out;
+  }
+  if (t.shape == Shape::matrix) return out;  // other matrices built from parts stay unannotated
   std::optional<DimSlot> common;
   bool mixed = false;
   for (const Value& a : args) {

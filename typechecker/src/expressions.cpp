@@ -291,6 +291,11 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
   if (target.geometry != Geometry::none && v.geometry != Geometry::none && !kind_fits(v.geometry, target.geometry))
     return fail(sentence, kind_hint, code::E_KIND_MISMATCH);
+  if (is_map(target.geometry) && is_map(v.geometry) && target.normal_matrix != v.normal_matrix &&
+      v.geometry != Geometry::rigidmap)
+    return fail(sentence, v.normal_matrix ? "the normal matrix (the inverse transpose) carries normals; the map itself is m"
+                                          : "the normal matrix of m is transpose(inverse(m))",
+                code::E_KIND_MISMATCH);
   if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
     const bool first = !consistent(target.from, v.from);
     return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), code::E_SPACE_MISMATCH);

@@ -56,6 +56,8 @@ const char* const kArcminutes = "unit arcminute : angle = degree / 60.0; uniform
 const char* const kShaded =
     "uniform point<world> lightPos; uniform point<world> eyePos; in point<world, shaded> P; uniform normal<world> n;"
     " uniform direction<world, away> wo;";
+const char* const kModel =
+    "space object; uniform map<object, world> model; uniform normal<object> nObj; uniform point<object> pObj;";
 const char* const kLight = "uniform spectrum<1> albedo; uniform spectrum<brdf> specular; uniform spectrum<irradiance> E;";
 
 INSTANTIATE_TEST_SUITE_P(
@@ -108,7 +110,22 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"reflect_of_an_outgoing_direction", kShaded, "direction<world, away> wi = @;", "reflect(wo, n)",
                  "reflect(I, N) takes I toward the surface", "reflect(-wo, n)", "reflect(-wo, n)"},
         HintCase{"faceforward_by_an_outgoing_direction", kShaded, "normal<world> front = @;", "faceforward(n, wo, n)",
-                 "faceforward(N, I, Nref) takes I toward the surface", "faceforward(n, -wo, n)", "faceforward(n, -wo, n)"}),
+                 "faceforward(N, I, Nref) takes I toward the surface", "faceforward(n, -wo, n)", "faceforward(n, -wo, n)"},
+        HintCase{"inverse_square_law_by_a_cast", "uniform float<length> d;", "float<solid_angle_per_projected_area> g = @;",
+                 "float<solid_angle_per_projected_area>(1.0 / d * d)", "missing the inverse-square falloff", "inverse_square(d)",
+                 "inverse_square(d)"},
+        HintCase{"length_cast_to_a_number", "uniform float<length> d;", "float<1> x = @;", "float<1>(d)", "a count of its unit",
+                 "x / meter", "d / meter"},
+        HintCase{"area_pdf_in_an_mis_weight", "uniform float<pdf_solid_angle> pdfB; uniform float<pdf_area> pdfL; uniform float<area> A;",
+                 "float<1> w = pdfB / (pdfB + @);", "pdfL", "convert it with the Jacobian", ""},
+        HintCase{"normal_through_the_model_matrix", kModel, "vec3 nW = (@).xyz;", "model * vec4(nObj, 0.0)",
+                 "carry it by the inverse transpose", "vec4(nObj, 0.0) * inverse(model)",
+                 "vec4(nObj, 0.0) * inverse(model)"},
+        HintCase{"normal_through_the_linear_part", kModel, "vec3 nW = @;", "mat3(model) * nObj",
+                 "carry it by the inverse transpose", "transpose(inverse(mat3(model))) * nObj",
+                 "transpose(inverse(mat3(model))) * nObj"},
+        HintCase{"point_with_w_zero", kModel, "vec3 pW = (@).xyz;", "model * vec4(pObj, 0.0)", "for a point",
+                 "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
 
 TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {

@@ -53,76 +53,128 @@ std::optional<Value> Checker::map_matrix_call(const std::string& name, const std
   return out;
 }
 
-// m * v and v * m with a 4×4 map and a vec4; nothing when the operands are no such pair.
+// m * v and v * m with a 4×4 map and a vec4, or a 3×3 map and a vec3; nothing when the
+// operands are no such pair (the built-in table's map operations then apply).
 std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range) {
-  const bool row = is_vec4(lhs.type) && is_map(rhs.type.geometry);
-  if (!row && !(is_map(lhs.type.geometry) && is_vec4(rhs.type))) return std::nullopt;
+  const auto square_map = [](const Type& t, int n) {
+    return is_map(t.geometry) && t.shape == Shape::matrix && t.rows == n && t.columns == n && !t.is_array();
+  };
+  const auto vec3 = [](const Type& t) { return t.shape == Shape::vector && t.rows == 3 && t.is_floating() && !t.is_array(); };
+  const bool frame = (square_map(lhs.type, 3) && vec3(rhs.type)) || (vec3(lhs.type) && square_map(rhs.type, 3));
+  const bool row = frame ? square_map(rhs.type, 3) : (is_vec4(lhs.type) && square_map(rhs.type, 4));
+  if (!frame && !row && !(square_map(lhs.type, 4) && is_vec4(rhs.type))) return std::nullopt;
   const Value& map = row ? rhs : lhs;
   const Value& v = row ? lhs : rhs;
   const Type& m = map.type;
-  if (m.shape != Shape::matrix || m.rows != 4 || m.columns != 4 || m.is_array()) return std::nullopt;
   Value out;
   out.range = range;
-  out.type = Type::vector_of(v.type.scalar, 4);
-  if (!v.type.affine) {
-    // An unannotated vec4 under a map: gradual, as plain GLSL (a projmap's result is homogeneous).
+  out.type = Type::vector_of(v.type.scalar, frame ? 3 : 4);
+  const Type* carried = frame ? (v.type.geometry == Geometry::none ? nullptr : &v.type) : v.type.affine.get();
+  if (!carried) {
+    // An unannotated vector under a map: gradual, as plain GLSL (a projmap's result is homogeneous).
     if (m.geometry != Geometry::projmap || row) return out;
     return std::nullopt;  // projmap * vec4: the table's hpoint rule
   }
-  const Type& x = *v.type.affine;
-  const int w = v.type.affine_w;
+  const Type& x = *carried;
+  const int w = frame ? -1 : v.type.affine_w;  // -1: a 3×3 map, no w
   auto reject = [&](const std::string& message, const std::string& hint, const char* code) {
     operand_mismatch(message, lhs, rhs, op_range, hint, code);
     return std::optional<Value>(error_value(range));
   };
-  // The names a hint writes code with: the program's own where the operand is one.
-  const std::string m_name = map.name.empty() ? "m" : map.name;
-  const std::string x_name = "n";
+  // The code a hint writes: the program's own operands where they can be quoted.
+  const std::string m_name = operand_text(map, "m");
   const std::string kind = geometry_name(x.geometry);
   const bool normal = x.geometry == Geometry::normal;
   // What the matrix carries, and between which spaces, as applied: v * m is transpose(m) * v.
   const bool carries_normals = m.normal_matrix != row;  // transpose(map<A, B>) carries normals from B to A
   const SpaceSlot source = row ? m.to : m.from, target = row ? m.from : m.to;
   const bool rigid = m.geometry == Geometry::rigidmap;
+  const std::string applied = std::string(row ? "the transpose of " : "") + name_of(m);
+  const std::string cannot = "cannot apply " + applied + " to " + name_of(v.type);
+  const std::string row_hint = "v * m multiplies by the transpose of m: a map applies as m * v";
 
-  if (x.geometry == Geometry::point && w != 1)
-    return reject("cannot apply " + name_of(m) + " to " + name_of(v.type) + ": a point needs w = 1, and w = 0 drops the map's translation",
-                  "write vec4(p, 1.0) for a point (w = 0 is for vectors, directions and normals)", code::E_KIND_MISMATCH);
-  if (x.geometry != Geometry::point && w != 0)
-    return reject("cannot apply " + name_of(m) + " to " + name_of(v.type) + ": a " + kind + " needs w = 0, and w = 1 adds the map's translation to it",
+  if (x.geometry == Geometry::point && w == -1)
+    return reject(cannot + ": a 3×3 map has no translation, and a point needs one",
+                  "apply the 4×4 map to the point, m * vec4(p, 1.0), or to a vector (p - origin)", code::E_KIND_MISMATCH);
+  if (x.geometry == Geometry::point && (w == 0 || m.normal_matrix || row))
+    return reject(cannot + (w == 0 ? ": a point needs w = 1, and w = 0 drops the map's translation"
+                                   : ": a transposed map has no translation to give a point"),
+                  w == 0 ? "write vec4(p, 1.0) for a point (w = 0 is for vectors, directions and normals)" : row_hint,
+                  code::E_KIND_MISMATCH);
+  if (x.geometry != Geometry::point && w == 1)
+    return reject(cannot + ": a " + kind + " needs w = 0, and w = 1 adds the map's translation to it",
                   "write vec4(v, 0.0) for a " + kind + " (w = 1 is for points)", code::E_KIND_MISMATCH);
   if (!consistent(x.from, source))
-    return reject("cannot apply " + name_of(m) + " to " + name_of(v.type) + ": the " + (row ? "transposed " : "") + "map takes values in " +
-                      name_of_space(source) + ", not in " + name_of_space(x.from),
-                  row ? "v * m multiplies by the transpose of m: a map applies as m * v" : space_hint(source, x.from),
-                  code::E_SPACE_MISMATCH);
+    return reject(cannot + ": the " + (row ? "transposed " : "") + "map takes values in " + name_of_space(source) + ", not in " +
+                      name_of_space(x.from),
+                  row ? row_hint : space_hint(source, x.from), code::E_SPACE_MISMATCH);
   if (m.geometry == Geometry::projmap && !row) {
-    if (normal)
-      return reject("cannot project " + name_of(v.type) + " with " + name_of(m) + ": a normal is no position", "", code::E_KIND_MISMATCH);
+    if (normal) return reject("cannot project " + name_of(v.type) + " with " + name_of(m) + ": a normal is no position", "", code::E_KIND_MISMATCH);
     out.type.geometry = Geometry::hpoint;
     out.type.from = target;
     return out;
   }
   if (carries_normals && !rigid && !normal)
-    return reject("cannot apply " + std::string(row ? "the transpose of " : "") + name_of(m) + " to " + name_of(v.type) +
-                      ": the inverse transpose carries normals, not a " + kind,
-                  row ? "v * m multiplies by the transpose of m: a map applies as m * v" : "apply the map itself to a " + kind,
+    return reject(cannot + ": the inverse transpose carries normals, not a " + kind,
+                  row ? row_hint : "apply the map itself to a " + kind, code::E_KIND_MISMATCH);
+  if (normal && !carries_normals && !rigid) {
+    const std::string zero = operand_text(v, frame ? "n" : "vec4(n, 0.0)");
+    return reject(cannot + ": a normal transforms by the inverse transpose of the map, and this map may scale or shear",
+                  "carry it by the inverse transpose: " + zero + " * inverse(" + m_name + "), or transpose(inverse(" + m_name + ")) * " + zero,
                   code::E_KIND_MISMATCH);
-  if (normal && !carries_normals && !rigid)
-    return reject("cannot apply " + name_of(m) + " to " + name_of(v.type) +
-                      ": a normal transforms by the inverse transpose of the map, and this map may scale or shear",
-                  "carry it by the inverse transpose: vec4(" + x_name + ", 0.0) * inverse(" + m_name + "), or transpose(inverse(" +
-                      m_name + ")) * vec4(" + x_name + ", 0.0)",
-                  code::E_KIND_MISMATCH);
+  }
   Type moved = x;
   moved.from = target;
   if (x.geometry == Geometry::direction && !rigid) {
     moved.geometry = Geometry::vector;  // a scaled direction is no longer of unit length
     moved.dim = DimSlot::known(Dimension{});
   }
+  if (frame) {
+    out.type = moved;
+    return out;
+  }
   out.type.affine = std::make_shared<const Type>(moved);
   out.type.affine_w = static_cast<std::int8_t>(w);
   return out;
+}
+
+std::string Checker::operand_text(const Value& v, const std::string& fallback) const {
+  if (!v.name.empty()) return v.name;
+  const SourceRange& r = v.range;
+  if (options_.sources == nullptr || !r.valid() || r.begin.file != r.end.file || r.end.offset < r.begin.offset) return fallback;
+  const std::string_view file = options_.sources->text(r.begin.file);
+  if (r.end.offset > file.size() || r.end.offset - r.begin.offset > 60) return fallback;
+  const std::string_view text = file.substr(r.begin.offset, r.end.offset - r.begin.offset);
+  return text.find_first_of("\n\r") == std::string_view::npos ? std::string(text) : fallback;
+}
+
+// mat3(m) of a 4×4 map is its linear part; mat3(t, b, n) of three unit vectors of one space is
+// the frame from the unnamed space of its coordinates to that space (a TBN basis); nothing for
+// any other matrix constructor.
+std::optional<Type> Checker::frame_constructor(const Type& target, const std::vector<Value>& args) const {
+  if (target.shape != Shape::matrix || target.rows != 3 || target.columns != 3) return std::nullopt;
+  if (args.size() == 1) {
+    const Type& m = args[0].type;
+    if (!is_map(m.geometry) || m.geometry == Geometry::projmap || m.is_array() || m.rows != 4) return std::nullopt;
+    Type linear = m;
+    linear.rows = linear.columns = 3;
+    linear.scalar = target.scalar;
+    return linear;
+  }
+  if (args.size() != 3) return std::nullopt;
+  SpaceSlot space;
+  bool unit = true;
+  for (const Value& a : args) {
+    const Type& c = a.type;
+    if (c.shape != Shape::vector || c.rows != 3 || !vectorish(c.geometry) || c.from.state != SpaceSlot::State::known) return std::nullopt;
+    if (space.state == SpaceSlot::State::known && !(space == c.from)) return std::nullopt;
+    space = c.from;
+    unit = unit && c.geometry != Geometry::vector;
+  }
+  Type frame = target.plain();
+  frame.geometry = unit ? Geometry::rigidmap : Geometry::map;
+  frame.to = space;
+  return frame;
 }
 
 }  // namespace safegi::detail

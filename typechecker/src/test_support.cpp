@@ -36,6 +36,8 @@ std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptio
   check_options.strict = options.strict;
   check_options.language = options.language;
   check_options.record_symbols = options.symbols;
+  check_options.tokens = &c->tokens;  // as the compiler passes them: hints quote the program's own code
+  check_options.sources = &c->sources;
   c->result = check(*c->parsed.unit, check_options, c->diagnostics);
   return c;
 }

@@ -182,6 +182,11 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
   if (t.affine && t.shape == Shape::vector)
     return glsl_name(bare.plain()) + "(" + type_name(*t.affine, registry, dim_params, space_params) + ", " +
            (t.affine_w == 1 ? "1.0" : "0.0") + ")" + suffix;
+  if (is_map(t.geometry) && t.shape == Shape::matrix && t.columns == 3) {
+    const char* word = t.geometry == Geometry::rigidmap ? ", rigid" : t.normal_matrix ? ", normal" : "";
+    return glsl_name(bare.plain()) + "<" + space_text(t.from, registry, space_params) + ", " + space_text(t.to, registry, space_params) +
+           word + ">" + suffix;
+  }
   if (t.normal_matrix && is_map(t.geometry)) {
     Type vectors = t;
     vectors.normal_matrix = false;

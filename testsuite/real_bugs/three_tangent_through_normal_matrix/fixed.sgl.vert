@@ -8,7 +8,7 @@ space view;
 space clip;
 
 uniform map<object, view> modelViewMatrix;
-uniform mat3 normalMatrix;                           // transpose(inverse(mat3(modelViewMatrix)))
+uniform mat3<object, view, normal> normalMatrix;     // transpose(inverse(mat3(modelViewMatrix)))
 uniform projmap<view, clip> projectionMatrix;
 
 in point<object> position;
