@@ -229,7 +229,12 @@ def table(bugs: list, results: list) -> str:
         f"({pct(s['cause_named'], s['caught'])}).",
         f"Annotated lines: **{s['annotated_lines']} of {s['lines']}** lines of the fixed programs "
         f"({pct(s['annotated_lines'], s['lines'])}; non-blank lines without comments, directives and "
-        "space declarations; a line is annotated when it has a `<…>` on a type or an `in` conversion).",
+        "space declarations; a line is annotated when it has a `<…>` on a type or an `in` conversion). "
+        "The corpus is annotated as a user relying on inference would annotate it: the interface (uniforms, "
+        "inputs, outputs, block members), constants, function signatures where generic helpers need them, and "
+        "the result a computation claims to produce (the radiance written out); the other locals are inferred "
+        "from their initialisers (docs/language.md, \"Gradual typing\"). minimize_annotations.py drops each "
+        "local annotation that changes no verdict.",
         f"Rewrites of idiomatic GLSL forced by the checker: **{s['forced_rewrites']}**.",
         f"With the rewrites the rejected fixed programs would need (`rewrite` in bugs.json, {s['rewritten']} bugs), "
         f"{s['caught_after_rewrite']} more bugs would be caught, {s['named_after_rewrite']} of them with the cause named.",

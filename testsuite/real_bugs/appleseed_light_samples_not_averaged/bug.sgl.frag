@@ -18,16 +18,16 @@ in normal<world> N;
 out vec4 fragColor;
 
 void main() {
-    normal<world> n = normalize(N);
-    spectrum<radiance> sum = spectrum<radiance>(0.0);
+    vec3 n = normalize(N);
+    vec3 sum = spectrum<radiance>(0.0);
     for (int i = 0; i < lightSampleCount; ++i) {
-        vector<world, away> toLight = lightSamples[i] - P;
-        float<length> d = length(toLight);
-        direction<world, away> wi = normalize(toLight);
-        float<proj> cosLight = max(dot(lightNormal, -wi), 0.0);
-        float<proj> cosSurface = max(dot(n, wi), 0.0);
-        float<solid_angle / (area * proj)> invD2 = float<solid_angle / (area * proj)>(1.0 / (d * d));
-        float<pdf_solid_angle> pdfW = (1.0 / lightArea) / (cosLight * invD2);
+        vec3 toLight = lightSamples[i] - P;
+        float d = length(toLight);
+        vec3 wi = normalize(toLight);
+        float cosLight = max(dot(lightNormal, -wi), 0.0);
+        float cosSurface = max(dot(n, wi), 0.0);
+        float invD2 = float<solid_angle / (area * proj)>(1.0 / (d * d));
+        float pdfW = (1.0 / lightArea) / (cosLight * invD2);
         sum += bsdf * Le * cosSurface / pdfW;
     }
     spectrum<radiance> L = sum;

@@ -31,13 +31,13 @@ spectrum<brdf> orenNayar(normal<world> n, direction<world> wo, direction<world> 
 }
 
 void main() {
-    normal<world> n = normalize(Nin);
-    direction<world, away> wo = normalize(eyePos - P);
-    vector<world, away> toLight = lightPos - P;
-    float<length> d = length(toLight);
-    direction<world, away> wi = normalize(toLight);
-    float<proj> cosTheta = max(dot(n, wi), 0.0);
-    float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
+    vec3 n = normalize(Nin);
+    vec3 wo = normalize(eyePos - P);
+    vec3 toLight = lightPos - P;
+    float d = length(toLight);
+    vec3 wi = normalize(toLight);
+    float cosTheta = max(dot(n, wi), 0.0);
+    float falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
     spectrum<radiance> L = orenNayar(n, wo, wi) * lightI * falloff * cosTheta;
     fragColor = vec4(L, 1.0);
 }

@@ -21,14 +21,14 @@ float<pdf_solid_angle> toSolidAngle(float<pdf_area> pdfA, float<proj> cosLight,
 }
 
 void main() {
-    vector<world, away> toLight = lightSample - P;
-    float<length> dist = length(toLight);
-    direction<world, away> wi = normalize(toLight);
-    float<proj> cosLight = max(dot(lightNormal, -wi), 0.0);
-    float<proj> cosSurface = max(dot(normalize(N), wi), 0.0);
-    float<solid_angle / (area * proj)> invDist2 = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
-    float<pdf_area> pdfA = 1.0 / lightArea;
-    float<pdf_solid_angle> pdfW = toSolidAngle(pdfA, cosLight, invDist2);
+    vec3 toLight = lightSample - P;
+    float dist = length(toLight);
+    vec3 wi = normalize(toLight);
+    float cosLight = max(dot(lightNormal, -wi), 0.0);
+    float cosSurface = max(dot(normalize(N), wi), 0.0);
+    float invDist2 = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
+    float pdfA = 1.0 / lightArea;
+    float pdfW = toSolidAngle(pdfA, cosLight, invDist2);
     spectrum<radiance> Ld = bsdf * Le * cosSurface / pdfW;
     fragColor = vec4(Ld, 1.0);
 }

@@ -19,14 +19,14 @@ const float<brdf> FRAC_1_PI = float<brdf>(0.3183098861837907);
 const float<solid_angle> FULL_SPHERE = float<solid_angle>(4.0 * 3.141592653589793);
 
 void main() {
-    spectrum<intensity> intensity = lightColor * lightLumens;
-    vector<world, away> toLight = lightPosition - worldPosition;
-    float<length> distance = length(toLight);
-    direction<world, away> L = normalize(toLight);
-    float<proj> NoL = clamp(dot(normalize(worldNormal), L), 0.0, 1.0);
+    vec3 intensity = lightColor * lightLumens;
+    vec3 toLight = lightPosition - worldPosition;
+    float distance = length(toLight);
+    vec3 L = normalize(toLight);
+    float NoL = clamp(dot(normalize(worldNormal), L), 0.0, 1.0);
     float factor = distance / lightRange;
     float window = clamp(1.0 - factor * factor * factor * factor, 0.0, 1.0);
-    float<solid_angle / (area * proj)> attenuation = float<solid_angle / (area * proj)>(window * window / (distance * distance));
+    float attenuation = float<solid_angle / (area * proj)>(window * window / (distance * distance));
     spectrum<radiance> color = baseColor * FRAC_1_PI * intensity * attenuation * NoL;
     fragColor = vec4(color, 1.0);
 }

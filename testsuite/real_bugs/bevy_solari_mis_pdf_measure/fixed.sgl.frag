@@ -18,13 +18,13 @@ in float<pdf_solid_angle> brdfPdf;                  // the BRDF sample's pdf
 out vec4 radianceOut;
 
 void main() {
-    vector<world> d = hitPosition - previousPosition;
-    float<length> rayDistance = length(d);
-    direction<world> wi = normalize(d);
-    float<proj> cosLight = abs(dot(hitNormal, wi));
-    float<pdf_area> lightPdfArea = lightSelectionPdf * inverseLightArea;
-    float<pdf_solid_angle> lightPdf = float<pdf_solid_angle>(lightPdfArea * rayDistance * rayDistance / cosLight);
-    float<1> misWeight = brdfPdf / (brdfPdf + lightPdf);
+    vec3 d = hitPosition - previousPosition;
+    float rayDistance = length(d);
+    vec3 wi = normalize(d);
+    float cosLight = abs(dot(hitNormal, wi));
+    float lightPdfArea = lightSelectionPdf * inverseLightArea;
+    float lightPdf = float<pdf_solid_angle>(lightPdfArea * rayDistance * rayDistance / cosLight);
+    float misWeight = brdfPdf / (brdfPdf + lightPdf);
     spectrum<radiance> radiance = misWeight * throughput * emissive;
     radianceOut = vec4(radiance, 1.0);
 }

@@ -16,7 +16,7 @@ out vec4 fragColor;
 const float PI = 3.141592653589793;
 
 void main() {
-    float<solid_angle> sunSolidAngle = float<solid_angle>(sunAngularSize * sunAngularSize * 4.0 / PI);
+    float sunSolidAngle = float<solid_angle>(sunAngularSize * sunAngularSize * 4.0 / PI);
     spectrum<radiance> sunRadiance = sunIlluminance / sunSolidAngle;
     float cosToSun = dot(rayDir, sunDirection);
     bool inDisk = cosToSun > cos(sunAngularSize * 0.5);

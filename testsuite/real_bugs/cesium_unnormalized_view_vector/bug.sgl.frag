@@ -18,11 +18,11 @@ out vec4 fragColor;
 
 void main() {
     vector<eye, away> v = -positionEC;
-    normal<eye> n = normalize(normalEC);
-    direction<world> r = normalize(czm_inverseViewRotation * normalize(reflect(-v, n)));
+    vec3 n = normalize(normalEC);
+    vec3 r = normalize(czm_inverseViewRotation * normalize(reflect(-v, n)));
     float NdotV = abs(dot(n, v)) + 0.001;
     vec2 brdfLut = texture(u_brdfLut, vec2(NdotV, 1.0 - roughness)).rg;
-    spectrum<radiance> specularIrradiance = textureLod(u_specularMap, r, roughness * 8.0).rgb;
+    vec3 specularIrradiance = textureLod(u_specularMap, r, roughness * 8.0).rgb;
     spectrum<radiance> specular = specularIrradiance * (f0 * brdfLut.x + brdfLut.y);
     fragColor = vec4(specular, 1.0);
 }

@@ -23,8 +23,8 @@ float<length> traceScene(point<world> origin, direction<world> dir) {
 void main() {
     vec2 d = (gl_FragCoord.xy / resolution) * 2.0 - 1.0;
     float<1> h_factor = tan(hFOV / 2.0);
-    float<1> v_factor = h_factor * resolution.y / resolution.x;
-    direction<world> ray = normalize(cameraForward - d.x * h_factor * cameraLeft + d.y * v_factor * cameraUp);
+    float v_factor = h_factor * resolution.y / resolution.x;
+    vec3 ray = normalize(cameraForward - d.x * h_factor * cameraLeft + d.y * v_factor * cameraUp);
     float<length> depth = traceScene(cameraOrigin, ray);
     depthOut = vec4(depth / maxDepth);
 }

@@ -16,8 +16,8 @@ out vec4 oColor;
 const float<projected_solid_angle> PI = float<projected_solid_angle>(3.14159265358979);
 
 void main() {
-    spectrum<1> albedo = texture(uSurfaceTexture, vTexCoords).rgb;
-    float<proj> cosSun = max(dot(normalize(vNormal), uSunDirection), 0.0);
+    vec3 albedo = texture(uSurfaceTexture, vTexCoords).rgb;
+    float cosSun = max(dot(normalize(vNormal), uSunDirection), 0.0);
     spectrum<radiance> luminance = albedo / PI * uSunIlluminance * cosSun;
     oColor = vec4(luminance, 1.0);
 }

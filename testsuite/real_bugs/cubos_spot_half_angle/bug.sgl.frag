@@ -17,14 +17,14 @@ in normal<world> fragNormal;
 out vec4 color;
 
 void main() {
-    vector<world, away> toLight = spotPosition - fragPos;
-    float<length> d = length(toLight);
-    direction<world, away> L = normalize(toLight);
+    vec3 toLight = spotPosition - fragPos;
+    float d = length(toLight);
+    vec3 L = normalize(toLight);
     float spotCos = dot(-L, spotDirection);
     float outerCos = cos(spotAngle);
     float innerCos = cos(innerSpotAngle);
     float cone = clamp((spotCos - outerCos) / (innerCos - outerCos), 0.0, 1.0);
-    float<proj> NdotL = max(dot(normalize(fragNormal), L), 0.0);
+    float NdotL = max(dot(normalize(fragNormal), L), 0.0);
     float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
     color = vec4(albedo * spotIntensity * falloff * NdotL * cone, 1.0);
 }

@@ -17,8 +17,8 @@ out vec4 fragColor;
 void main() {
     vec2 ndc = (gl_FragCoord.xy / resolution) * 2.0 - 1.0;
     float aspect = resolution.x / resolution.y;
-    float<1> halfHeight = tan(radians(fieldOfView) * 0.5);
-    direction<world> dir = normalize(forward + ndc.x * aspect * halfHeight * right + ndc.y * halfHeight * up);
+    float halfHeight = tan(radians(fieldOfView) * 0.5);
+    vec3 dir = normalize(forward + ndc.x * aspect * halfHeight * right + ndc.y * halfHeight * up);
     spectrum<radiance> L = texture(skybox, dir).rgb;
     fragColor = vec4(L, 1.0);
 }

@@ -13,11 +13,11 @@ in normal<world> worldNormal;
 out vec4 fragColor;
 
 void main() {
-    float<area in centimeter^2> distanceSqrCm = dot(toLightCm, toLightCm);
-    float<area> distanceSqr = distanceSqrCm in (meter^2);
-    direction<world, away> L = normalize(toLightCm);
-    float<proj> NoL = max(dot(normalize(worldNormal), L), 0.0);
-    float<solid_angle / (area * proj)> attenuation = float<solid_angle / (area * proj)>(1.0 / max(distanceSqr, 0.0001 * square_meter));
+    float distanceSqrCm = dot(toLightCm, toLightCm);
+    float distanceSqr = distanceSqrCm in (meter^2);
+    vec3 L = normalize(toLightCm);
+    float NoL = max(dot(normalize(worldNormal), L), 0.0);
+    float attenuation = float<solid_angle / (area * proj)>(1.0 / max(distanceSqr, 0.0001 * square_meter));
     spectrum<radiance> color = diffuseColor * lightIntensity * attenuation * NoL;
     fragColor = vec4(color, 1.0);
 }

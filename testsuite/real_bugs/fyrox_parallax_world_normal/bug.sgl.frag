@@ -29,8 +29,8 @@ vec2 parallaxMapping(vec2 uv, direction<tangent, away> viewDir, float numLayers)
 }
 
 void main() {
-    direction<tangent, away> viewDir = normalize(tangentViewVector);
-    normal<tangent> tangentNormal = normal<tangent>(0.0, 0.0, 1.0);
+    vec3 viewDir = normalize(tangentViewVector);
+    vec3 tangentNormal = normal<tangent>(0.0, 0.0, 1.0);
     float numLayers = mix(32.0, 8.0, abs(dot(worldNormal, viewDir)));
     vec2 uv = parallaxMapping(texCoord, viewDir, numLayers);
     FragColor = texture(diffuseTexture, uv);

@@ -19,14 +19,14 @@ in normal<world> worldNormal;
 out vec4 fragColor;
 
 void main() {
-    normal<world> N = normalize(worldNormal);
-    direction<world, away> V = normalize(cameraPos - worldPos);
-    direction<world, away> R = reflect(-V, N);
+    vec3 N = normalize(worldNormal);
+    vec3 V = normalize(cameraPos - worldPos);
+    vec3 R = reflect(-V, N);
     float NdotV = max(dot(N, V), 0.0);
-    spectrum<1> F = F0 + (1.0 - F0) * pow(1.0 - NdotV, 5.0);
-    spectrum<radiance> prefilteredColor = textureLod(prefilteredEnv, R, roughness * 4.0).rgb;
+    vec3 F = F0 + (1.0 - F0) * pow(1.0 - NdotV, 5.0);
+    vec3 prefilteredColor = textureLod(prefilteredEnv, R, roughness * 4.0).rgb;
     vec2 brdf = texture(brdfLut, vec2(NdotV, roughness)).rg;
-    spectrum<radiance> specular = prefilteredColor * (F0 * brdf.x + brdf.y);
+    vec3 specular = prefilteredColor * (F0 * brdf.x + brdf.y);
     spectrum<radiance> diffuse = (1.0 - F) * albedo * texture(irradianceMap, N).rgb;
     fragColor = vec4(specular + diffuse, 1.0);
 }

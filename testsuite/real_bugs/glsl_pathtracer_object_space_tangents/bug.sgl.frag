@@ -16,7 +16,7 @@ in vec2 texUV;
 out vec4 shadingNormalOut;
 
 void main() {
-    normal<world> normal = normalize(transform * hitNormal);
+    vec3 normal = normalize(transform * hitNormal);
     vector<object> tangent = hitTangent;
     vector<object> bitangent = hitBitangent;
     vec3 texNormal = normalize(texture(normalMap, texUV).rgb * 2.0 - 1.0);

@@ -16,9 +16,9 @@ in vec2 texUV;
 out vec4 shadingNormalOut;
 
 void main() {
-    normal<world> normal = normalize(transform * hitNormal);
-    vector<world> tangent = transform * hitTangent;
-    vector<world> bitangent = transform * hitBitangent;
+    vec3 normal = normalize(transform * hitNormal);
+    vec3 tangent = transform * hitTangent;
+    vec3 bitangent = transform * hitBitangent;
     vec3 texNormal = normalize(texture(normalMap, texUV).rgb * 2.0 - 1.0);
     vector<world, 1> shading = tangent / length(tangent) * texNormal.x
                              + bitangent / length(bitangent) * texNormal.y + normal * texNormal.z;

@@ -20,26 +20,26 @@ out vec4 fragColor;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> n = normalize(v_Normal);
-    direction<world, away> v = normalize(u_Camera - v_Position);
-    direction<world, away> l = normalize(u_LightDirection);
-    direction<world> h = normalize(l + v);
+    vec3 n = normalize(v_Normal);
+    vec3 v = normalize(u_Camera - v_Position);
+    vec3 l = normalize(u_LightDirection);
+    vec3 h = normalize(l + v);
     float NdotL = clamp(dot(n, l), 0.001, 1.0);
     float NdotV = abs(dot(n, v)) + 0.001;
     float NdotH = clamp(dot(n, h), 0.0, 1.0);
     float VdotH = clamp(dot(v, h), 0.0, 1.0);
 
     float alpha = u_Roughness * u_Roughness;
-    spectrum<1> f0 = mix(vec3(0.04), u_BaseColor, u_Metallic);
-    spectrum<1> F = f0 + (vec3(1.0) - f0) * pow(1.0 - VdotH, 5.0);
+    vec3 f0 = mix(vec3(0.04), u_BaseColor, u_Metallic);
+    vec3 F = f0 + (vec3(1.0) - f0) * pow(1.0 - VdotH, 5.0);
     float a2 = alpha * alpha;
     float G = 2.0 * NdotL / (NdotL + sqrt(a2 + (1.0 - a2) * NdotL * NdotL))
             * 2.0 * NdotV / (NdotV + sqrt(a2 + (1.0 - a2) * NdotV * NdotV));
     float f = (NdotH * a2 - NdotH) * NdotH + 1.0;
-    float<brdf> D = a2 * INV_PI / (f * f);
+    float D = a2 * INV_PI / (f * f);
 
-    spectrum<brdf> diffuse = (vec3(1.0) - F) * mix(u_BaseColor * 0.96, vec3(0.0), u_Metallic) * INV_PI;
-    spectrum<brdf> specular = F * G * D / (4.0 * NdotL * NdotV);
+    vec3 diffuse = (vec3(1.0) - F) * mix(u_BaseColor * 0.96, vec3(0.0), u_Metallic) * INV_PI;
+    vec3 specular = F * G * D / (4.0 * NdotL * NdotV);
     spectrum<radiance> color = u_LightColor * (diffuse + specular);
     fragColor = vec4(color, 1.0);
 }

@@ -18,15 +18,15 @@ out vec4 fragColor;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> n = normalize(v_Normal);
-    direction<world, away> v = normalize(u_Camera - v_Position);
-    direction<world, away> l = normalize(u_LightDirection);
-    direction<world> h = normalize(l + v);
-    float<proj> NdotL = max(dot(n, l), 0.0);
+    vec3 n = normalize(v_Normal);
+    vec3 v = normalize(u_Camera - v_Position);
+    vec3 l = normalize(u_LightDirection);
+    vec3 h = normalize(l + v);
+    float NdotL = max(dot(n, l), 0.0);
     float NdotV = min(abs(dot(n, v)) + 0.001, 1.0);
     float LdotH = max(dot(l, h), 0.0);
     float f90 = 2.0 * LdotH * LdotH * alphaRoughness - 0.5;
-    spectrum<brdf> diffuse = diffuseColor * INV_PI * (1.0 + f90 * pow(1.0 - NdotL, 5.0)) * (1.0 + f90 * pow(1.0 - NdotV, 5.0));
+    vec3 diffuse = diffuseColor * INV_PI * (1.0 + f90 * pow(1.0 - NdotL, 5.0)) * (1.0 + f90 * pow(1.0 - NdotV, 5.0));
     spectrum<radiance> color = NdotL * u_LightColor * diffuse;
     fragColor = vec4(color, 1.0);
 }

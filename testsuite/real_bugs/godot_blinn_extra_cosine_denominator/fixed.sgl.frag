@@ -18,19 +18,19 @@ out vec4 frag_color;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> N = normalize(normal_interp);
-    direction<world, away> V = normalize(eye_position - vertex);
-    vector<world, away> light_rel = light_position - vertex;
-    float<length> dist = length(light_rel);
-    direction<world, away> L = normalize(light_rel);
-    direction<world> H = normalize(V + L);
-    float<proj> cNdotL = max(dot(N, L), 0.0);
-    float<proj> cNdotV = max(dot(N, V), 0.0);
+    vec3 N = normalize(normal_interp);
+    vec3 V = normalize(eye_position - vertex);
+    vec3 light_rel = light_position - vertex;
+    float dist = length(light_rel);
+    vec3 L = normalize(light_rel);
+    vec3 H = normalize(V + L);
+    float cNdotL = max(dot(N, L), 0.0);
+    float cNdotV = max(dot(N, V), 0.0);
     float cNdotH = max(dot(N, H), 0.0);
     float blinn = pow(cNdotH, shininess) * cNdotL;
     blinn *= (shininess + 8.0) / 8.0 * INV_PI;
     float specular_brdf_NL = blinn;
-    float<solid_angle / (area * proj)> attenuation = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
+    float attenuation = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
     spectrum<radiance> specular_light = light_color * specular_color * specular_brdf_NL * attenuation;
     frag_color = vec4(specular_light, 1.0);
 }

@@ -23,13 +23,13 @@ float SchlickFresnel(float u) {
 }
 
 void main() {
-    normal<world> N = normalize(normal_interp);
-    direction<world, away> V = normalize(eye_pos - vertex);
-    vector<world, away> to_light = light_pos - vertex;
-    float<length> dist = length(to_light);
-    direction<world, away> L = normalize(to_light);
-    direction<world> H = normalize(V + L);
-    float<proj> NdotL = max(dot(N, L), 0.0);
+    vec3 N = normalize(normal_interp);
+    vec3 V = normalize(eye_pos - vertex);
+    vec3 to_light = light_pos - vertex;
+    float dist = length(to_light);
+    vec3 L = normalize(to_light);
+    vec3 H = normalize(V + L);
+    float NdotL = max(dot(N, L), 0.0);
     float NdotV = max(dot(N, V), 0.0);
     float LdotH = max(dot(L, H), 0.0);
 
@@ -39,7 +39,7 @@ void main() {
     float<brdf> diffuse_brdf = INV_PI * FdV * FdL;
     float diffuse_brdf_NL = diffuse_brdf * NdotL;
 
-    float<solid_angle / (area * proj)> attenuation = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
+    float attenuation = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
     spectrum<radiance> diffuse_light = albedo * light_color * attenuation * diffuse_brdf_NL;
     frag_color = vec4(diffuse_light, 1.0);
 }

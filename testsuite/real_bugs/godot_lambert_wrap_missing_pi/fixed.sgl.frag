@@ -17,12 +17,12 @@ out vec4 frag_color;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> N = normalize(normal_interp);
-    vector<world, away> light_rel = light_position - vertex;
-    float<length> light_length = length(light_rel);
-    direction<world, away> L = normalize(light_rel);
+    vec3 N = normalize(normal_interp);
+    vec3 light_rel = light_position - vertex;
+    float light_length = length(light_rel);
+    vec3 L = normalize(light_rel);
     float NdotL = dot(N, L);
-    float<solid_angle / (area * proj)> attenuation = float<solid_angle / (area * proj)>(1.0 / (light_length * light_length));
+    float attenuation = float<solid_angle / (area * proj)>(1.0 / (light_length * light_length));
     float diffuse_brdf_NL = max(0.0, (NdotL + roughness) / ((1.0 + roughness) * (1.0 + roughness))) * INV_PI;
     spectrum<radiance> diffuse_light = light_color * diffuse_color * diffuse_brdf_NL * attenuation;
     frag_color = vec4(diffuse_light, 1.0);

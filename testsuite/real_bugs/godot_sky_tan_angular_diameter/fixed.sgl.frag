@@ -14,7 +14,7 @@ in direction<world> eyedir;
 out vec4 color_out;
 
 void main() {
-    float<angle> light0_size = radians(light_angular_distance);
+    float light0_size = radians(light_angular_distance);
     float sun_cos = cos(light0_size * 0.5);
     float sun_angle = dot(eyedir, light0_direction);
     spectrum<radiance> color = sun_angle > sun_cos ? light0_color : sky_color;

@@ -21,16 +21,16 @@ float GGXSmith_G1(float NdotX, float a2) {
 }
 
 void main() {
-    direction<world> H = normalize(V + L);
+    vec3 H = normalize(V + L);
     float NdotV = abs(dot(N, V)) + 1e-5;
     float NdotL = abs(dot(N, L)) + 1e-5;
     float NdotH = max(dot(N, H), 0.0);
     float t = NdotH * NdotH * (a2 - 1.0) + 1.0;
     float D = a2 / (PI * t * t);
     float G1 = GGXSmith_G1(NdotL, a2);
-    float<pdf_solid_angle> pdf = float<pdf_solid_angle>(D * G1 / (4.0 * NdotV));
+    float pdf = float<pdf_solid_angle>(D * G1 / (4.0 * NdotV));
     float G2 = GGXSmith_G1(NdotV, a2) * GGXSmith_G1(NdotL, a2);
-    float<pdf_solid_angle> f_cos = float<pdf_solid_angle>(D * G2 / (4.0 * NdotV));
+    float f_cos = float<pdf_solid_angle>(D * G2 / (4.0 * NdotV));
     spectrum<radiance> L_o = F0 * Li * f_cos / pdf;
     fragColor = vec4(L_o, 1.0);
 }

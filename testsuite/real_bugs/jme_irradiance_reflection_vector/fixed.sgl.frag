@@ -17,10 +17,10 @@ in normal<world> wNormal;
 out vec4 fragColor;
 
 void main() {
-    normal<world> normal = normalize(wNormal);
-    direction<world, away> viewDir = normalize(g_CameraPosition - wPosition);
-    direction<world, away> rv = reflect(-viewDir, normal);
-    spectrum<radiance> indirectDiffuse = texture(g_IrradianceMap, normal).rgb * diffuseColor;
+    vec3 normal = normalize(wNormal);
+    vec3 viewDir = normalize(g_CameraPosition - wPosition);
+    vec3 rv = reflect(-viewDir, normal);
+    vec3 indirectDiffuse = texture(g_IrradianceMap, normal).rgb * diffuseColor;
     spectrum<radiance> indirectSpecular = textureLod(g_PrefEnvMap, rv, roughness * 6.0).rgb * specularColor;
     fragColor = vec4(indirectDiffuse + indirectSpecular, 1.0);
 }

@@ -25,23 +25,23 @@ float<brdf> specularGGX(float NoH, float NoV, float NoL, float roughness) {
 }
 
 void lightPoint(normal<world> N, direction<world, away> V, inout spectrum<radiance> diffuse, inout spectrum<radiance> specular) {
-    vector<world, away> s = u_lightPosition - v_position;
-    float<length> dist = length(s);
-    direction<world, away> L = normalize(s);
-    direction<world> H = normalize(L + V);
-    float<proj> NoL = max(dot(N, L), 0.0);
+    vec3 s = u_lightPosition - v_position;
+    float dist = length(s);
+    vec3 L = normalize(s);
+    vec3 H = normalize(L + V);
+    float NoL = max(dot(N, L), 0.0);
     float NoV = max(dot(N, V), 1e-4);
     float NoH = max(dot(N, H), 0.0);
-    float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
-    spectrum<irradiance / proj> light = u_lightColor * u_lightIntensity * falloff;
+    float falloff = float<solid_angle / (area * proj)>(1.0 / (dist * dist));
+    vec3 light = u_lightColor * u_lightIntensity * falloff;
     diffuse += light * u_albedo * INV_PI;
     specular += light * specularGGX(NoH, NoV, NoL, u_roughness);
 }
 
 void main() {
-    normal<world> N = normalize(v_normal);
-    direction<world, away> V = normalize(u_camera - v_position);
-    spectrum<radiance> diffuse = spectrum<radiance>(0.0);
+    vec3 N = normalize(v_normal);
+    vec3 V = normalize(u_camera - v_position);
+    vec3 diffuse = spectrum<radiance>(0.0);
     spectrum<radiance> specular = spectrum<radiance>(0.0);
     lightPoint(N, V, diffuse, specular);
     fragColor = vec4(diffuse + specular, 1.0);

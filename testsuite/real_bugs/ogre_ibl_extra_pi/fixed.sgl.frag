@@ -17,15 +17,15 @@ out vec4 outColour;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> N = normalize(worldNormal);
-    spectrum<brdf> diffuse = kD * INV_PI;                  // pixelData.diffuse
-    vector<world, away> toLight = lightPos - worldPos;
-    float<length> d = length(toLight);
-    direction<world, away> L = normalize(toLight);
-    float<proj> NdotL = max(dot(N, L), 0.0);
-    float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
+    vec3 N = normalize(worldNormal);
+    vec3 diffuse = kD * INV_PI;                  // pixelData.diffuse
+    vec3 toLight = lightPos - worldPos;
+    float d = length(toLight);
+    vec3 L = normalize(toLight);
+    float NdotL = max(dot(N, L), 0.0);
+    float falloff = float<solid_angle / (area * proj)>(1.0 / (d * d));
     spectrum<radiance> finalColour = diffuse * lightColour * falloff * NdotL;
-    spectrum<radiance> envColourIrradiance = texture(irradianceProbe, N).rgb;
+    vec3 envColourIrradiance = texture(irradianceProbe, N).rgb;
     finalColour += envColourIrradiance * kD;
     outColour = vec4(finalColour, 1.0);
 }

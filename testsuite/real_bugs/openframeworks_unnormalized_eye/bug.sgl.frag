@@ -16,9 +16,9 @@ out vec4 fragColor;
 
 void pointLight(normal<view> normal, vector<view, away> eye, point<view, shaded> ecPosition3,
                 inout vec3 diffuse, inout vec3 specular) {
-    vector<view, away> VP = lightPosition - ecPosition3;
-    direction<view, away> dirVP = normalize(VP);
-    direction<view> halfVector = normalize(dirVP + eye);
+    vec3 VP = lightPosition - ecPosition3;
+    vec3 dirVP = normalize(VP);
+    vec3 halfVector = normalize(dirVP + eye);
     float nDotVP = max(0.0, dot(normal, dirVP));
     float nDotHV = max(0.0, dot(normal, halfVector));
     float pf = nDotVP == 0.0 ? 0.0 : pow(nDotHV, shininess);
@@ -27,7 +27,7 @@ void pointLight(normal<view> normal, vector<view, away> eye, point<view, shaded>
 }
 
 void main() {
-    normal<view> transformedNormal = normalize(v_transformedNormal);
+    vec3 transformedNormal = normalize(v_transformedNormal);
     vector<view, away> eye = -vector<view>(v_eyePosition);
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);

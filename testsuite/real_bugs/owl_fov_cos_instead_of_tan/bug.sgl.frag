@@ -15,10 +15,10 @@ out vec4 fragColor;
 
 void main() {
     float aspect = fbSize.x / fbSize.y;
-    direction<world> camera_d00 = normalize(at - from);
-    float<1> fovyScale = cos(fovy);
-    vector<world, 1> camera_ddu = fovyScale * aspect * normalize(cross(camera_d00, lookUp));
-    vector<world, 1> camera_ddv = fovyScale * normalize(cross(camera_ddu, camera_d00));
+    vec3 camera_d00 = normalize(at - from);
+    float fovyScale = cos(fovy);
+    vec3 camera_ddu = fovyScale * aspect * normalize(cross(camera_d00, lookUp));
+    vec3 camera_ddv = fovyScale * normalize(cross(camera_ddu, camera_d00));
     vec2 screen = (gl_FragCoord.xy / fbSize) * 2.0 - 1.0;
     direction<world> dir = normalize(camera_d00 + screen.x * camera_ddu + screen.y * camera_ddv);
     fragColor = vec4(texture(env, dir).rgb, 1.0);

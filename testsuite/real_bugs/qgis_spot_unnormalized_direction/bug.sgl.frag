@@ -20,17 +20,17 @@ in normal<world> worldNormal;
 out vec4 fragColor;
 
 void main() {
-    normal<world> n = normalize(worldNormal);
-    direction<world, away> v = normalize(eyePosition - worldPosition);
-    vector<world, away> s = lightPosition - worldPosition;
-    direction<world, away> sn = normalize(s);
+    vec3 n = normalize(worldNormal);
+    vec3 v = normalize(eyePosition - worldPosition);
+    vec3 s = lightPosition - worldPosition;
+    vec3 sn = normalize(s);
     float spotCos = dot(-s, lightDirection);
     float cutOffCos = cos(radians(lightCutOffAngle));
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     if (spotCos > cutOffCos) {
         float sDotN = max(dot(sn, n), 0.0);
-        direction<world> r = reflect(-sn, n);
+        vec3 r = reflect(-sn, n);
         float rDotV = max(dot(r, v), 0.0);
         diffuse = lightIntensity * lightColor * kd * sDotN;
         specular = lightIntensity * lightColor * ks * pow(rDotV, shininess);

@@ -19,9 +19,9 @@ out vec4 fragColor;
 const float<brdf> INV_PI = float<brdf>(0.3183098861837907);
 
 void main() {
-    normal<world> N = normalize(vNormal);
+    vec3 N = normalize(vNormal);
     direction<world, toward> viewDir = normalize(uInverseViewRotation * vEyeDir);
-    float<proj> NdotL = max(dot(N, uLightDirection), 0.0);
+    float NdotL = max(dot(N, uLightDirection), 0.0);
     float NdotV = max(dot(N, -viewDir), 0.0);
     float sigma2 = uRoughness * uRoughness;
     float A = 1.0 - 0.5 * sigma2 / (sigma2 + 0.33);

@@ -16,14 +16,14 @@ const float PI = 3.141592653589793;
 
 direction<local> randomCosineDirection(float r1, float r2) {
     float z = sqrt(1.0 - r2);
-    float<angle> phi = 2.0 * PI * r1 * radian;
+    float phi = 2.0 * PI * r1 * radian;
     float x = cos(phi) * sqrt(r2);
     float y = sin(phi) * sqrt(r2);
     return direction<local>(x, y, z);
 }
 
 void main() {
-    direction<world> wi = worldFromLocal * randomCosineDirection(xi.x, xi.y);
+    vec3 wi = worldFromLocal * randomCosineDirection(xi.x, xi.y);
     // brdf * Li * cos / pdf = (albedo / pi) * Li * cos / (cos / pi) = albedo * Li
     spectrum<radiance> L = albedo * texture(sky, wi).rgb;
     fragColor = vec4(L, 1.0);

@@ -16,8 +16,8 @@ in normal<view> vViewNormal;
 out vec4 fragColor;
 
 void main() {
-    direction<world, toward> worldEyeVec = normalize(worldFromView * vViewEyeVec);
-    normal<world> worldNormal = normalize(worldFromView * vViewNormal);
+    vec3 worldEyeVec = normalize(worldFromView * vViewEyeVec);
+    vec3 worldNormal = normalize(worldFromView * vViewNormal);
     direction<world, away> envLookup = reflect(vViewEyeVec, normalize(vViewNormal));
     spectrum<radiance> reflectColor = texture(reflectionCube, envLookup).rgb;
     fragColor = vec4(baseColor + reflectionIntensity * reflectColor, 1.0);

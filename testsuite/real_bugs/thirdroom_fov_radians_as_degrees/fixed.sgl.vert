@@ -16,7 +16,7 @@ out float<1> focal;
 void main() {
     float<1> f = 1.0 / tan(yfov / 2.0);
     focal = f;
-    float<length> z = viewPosition.z;
+    float z = viewPosition.z;
     gl_Position = vec4(f / aspectRatio * viewPosition.x, f * viewPosition.y,
                        ((zfar + znear) * z + 2.0 * zfar * znear) / (znear - zfar), -viewPosition.z);
 }

@@ -18,12 +18,12 @@ out vec4 fragColor;
 
 void main() {
     vec4 lightViewPosition = viewMatrix * vec4(lightWorldPosition, 1.0);
-    vector<view, away> lVector = lightViewPosition.xyz - vViewPosition;
-    float<length> lightDistance = length(lVector);
+    vec3 lVector = lightViewPosition.xyz - vViewPosition;
+    float lightDistance = length(lVector);
     direction<view, away> lightDir = normalize(lVector);
     float range = pow(clamp(1.0 - pow(lightDistance / cutoffDistance, 4), 0.0, 1.0), 2.0);
-    float<solid_angle / (area * proj)> falloff = float<solid_angle / (area * proj)>(range / (lightDistance * lightDistance));
-    float<proj> dotNL = max(dot(normalize(vNormal), lightDir), 0.0);
+    float falloff = float<solid_angle / (area * proj)>(range / (lightDistance * lightDistance));
+    float dotNL = max(dot(normalize(vNormal), lightDir), 0.0);
     spectrum<radiance> outgoing = diffuseColor * lightColor * falloff * dotNL;
     fragColor = vec4(outgoing, 1.0);
 }

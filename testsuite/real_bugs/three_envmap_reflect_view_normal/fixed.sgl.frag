@@ -18,9 +18,9 @@ in normal<view> vNormal;                              // camera space, after the
 out vec4 fragColor;
 
 void main() {
-    direction<world, toward> cameraToVertex = normalize(vWorldPosition - cameraPosition);
-    normal<world> worldNormal = normalize(inverseViewRotation * normalize(vNormal));
-    direction<world, away> reflectVec = reflect(cameraToVertex, worldNormal);
+    vec3 cameraToVertex = normalize(vWorldPosition - cameraPosition);
+    vec3 worldNormal = normalize(inverseViewRotation * normalize(vNormal));
+    vec3 reflectVec = reflect(cameraToVertex, worldNormal);
     spectrum<radiance> envColor = texture(envMap, reflectVec).rgb;
     fragColor = vec4(mix(litColor, envColor, reflectivity), 1.0);
 }

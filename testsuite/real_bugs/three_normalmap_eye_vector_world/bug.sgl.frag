@@ -17,9 +17,9 @@ in vector<world, away> vViewPosition;                 // from the vertex to the 
 out vec4 fragColor;
 
 void main() {
-    normal<view> normal = normalize(vNormal);
-    direction<view, away> viewPosition = normalize(vViewPosition);
-    direction<view> dirHalfVector = normalize(directionalLightDirection + viewPosition);
+    vec3 normal = normalize(vNormal);
+    vec3 viewPosition = normalize(vViewPosition);
+    vec3 dirHalfVector = normalize(directionalLightDirection + viewPosition);
     float dirDotNormalHalf = max(dot(normal, dirHalfVector), 0.0);
     float dirDiffuseWeight = max(dot(normal, directionalLightDirection), 0.0);
     float dirSpecularWeight = pow(dirDotNormalHalf, shininess);

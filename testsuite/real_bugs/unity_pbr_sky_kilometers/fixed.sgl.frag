@@ -19,10 +19,10 @@ float<1> densityRayleigh(float<length in kilometer> altitude) { return exp(-alti
 float<1> densityMie(float<length in kilometer> altitude) { return exp(-altitude / mieScaleHeight); }
 
 void main() {
-    float<length in kilometer> r = length(cameraPosition - planetCenter) in kilometer;
-    float<length in kilometer> altitude = max(r - planetRadius, 0.0);
-    float<1> rayleigh = densityRayleigh(altitude);
-    float<1> mie = densityMie(altitude);
+    float r = length(cameraPosition - planetCenter) in kilometer;
+    float altitude = max(r - planetRadius, 0.0);
+    float rayleigh = densityRayleigh(altitude);
+    float mie = densityMie(altitude);
     float<1> upness = 0.5 + 0.5 * viewDirection.y;
     fragColor = vec4(skyTint * (rayleigh * upness + 0.1 * mie), 1.0);
 }
