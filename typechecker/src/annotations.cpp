@@ -380,7 +380,16 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
         break;
       }
       if (spec->annotation) {
-        if (!arity(1, 1, "one annotation")) return Type::error();
+        // A sampler may name the space its lookup direction lives in: samplerCube<spectrum<radiance>, world>.
+        if (!arity(1, t.shape == Shape::opaque ? 2 : 1, t.shape == Shape::opaque ? "a texel type and optionally a space" : "one annotation"))
+          return Type::error();
+        if (annotation_args == 2 && t.opaque.find("Cube") == std::string::npos) {
+          report(Diagnostic::error(spec->annotation->args[1]->range, "only a cube map is looked up by a direction of a space; '" +
+                                                                         spec->name + "' takes its texel type alone")
+                     .with_code(code::E_ANNOTATION_ARITY));
+          return Type::error();
+        }
+        if (annotation_args == 2 && !space_arg(spec->annotation->args[1], t.from)) return Type::error();
         const ast::Node* arg = spec->annotation->args[0];
         if (t.shape == Shape::opaque) {
           const auto* texel = ast::dyn_cast<ast::TypeSpecifier>(arg);

@@ -355,6 +355,17 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     report(std::move(d));
     return error_value(call_range);
   }
+  // A cube map of one space looked up by a direction of another (a world environment by an object-space normal).
+  if (sig.rule == BuiltinRule::texture && args.size() > 1 && sampler.from.state == SpaceSlot::State::known &&
+      args[1].type.from.state == SpaceSlot::State::known && !(sampler.from == args[1].type.from)) {
+    Diagnostic d = Diagnostic::error(args[1].range, "cannot look up " + name_of(sampler) + " by " + name_of(args[1].type) +
+                                                        ": the map is indexed by directions in " + name_of_space(sampler.from))
+                       .with_code(code::E_SPACE_MISMATCH);
+    add_origin_note(d, args[1]);
+    d.with_hint(space_hint(sampler.from, args[1].type.from));
+    report(std::move(d));
+    return error_value(call_range);
+  }
   const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
   switch (sig.rule) {
     case BuiltinRule::texture: {

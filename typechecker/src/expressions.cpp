@@ -135,10 +135,13 @@ Value Checker::unary(const ast::UnaryExpr& e) {
     case ast::UnaryOp::Minus:
       if (!t.is_numeric() || t.is_array()) break;
       if (t.geometry == Geometry::point) {
-        report(Diagnostic::error(e.range, "cannot negate " + name_of(t) + ": a point has no opposite")
-                   .with_code(code::E_POINT_ARITHMETIC)
-                   .with_hint("subtract it from another point to get a vector"));
-        return error_value(e.range);
+        if (e.op == ast::UnaryOp::Plus) return out;
+        // -p is origin - p: the vector from p to its space's origin (the eye, in view space).
+        out.type.geometry = Geometry::vector;
+        out.type.orientation = t.orientation == Orientation::shaded ? Orientation::away : Orientation::none;
+        out.constant.reset();
+        out.number.reset();
+        return out;
       }
       if (e.op == ast::UnaryOp::Minus) out.type.orientation = flipped(out.type.orientation);
       if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = -*out.constant;

@@ -56,7 +56,13 @@ const ast::Expr* Checker::expression_at(SourceRange range) const {
 
 std::string Checker::reversed_expression(const ast::Expr* e) const {
   e = without_parens(e);
-  if (const auto* u = ast::dyn_cast<ast::UnaryExpr>(e); u && u->op == ast::UnaryOp::Minus) return print_expression(*u->operand);
+  if (const auto* u = ast::dyn_cast<ast::UnaryExpr>(e); u && u->op == ast::UnaryOp::Minus) {
+    // -p of a point is origin - p; the other way is p measured from the origin, vector<S>(p).
+    const auto operand = result_.types.find(u->operand);
+    if (operand != result_.types.end() && operand->second.geometry == Geometry::point)
+      return "vector<" + name_of_space(operand->second.from) + ">(" + print_expression(*u->operand) + ")";
+    return print_expression(*u->operand);
+  }
   if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(e); b && b->op == ast::BinaryOp::Sub) {
     const auto lhs = result_.types.find(b->lhs), rhs = result_.types.find(b->rhs);
     if (lhs != result_.types.end() && rhs != result_.types.end() &&

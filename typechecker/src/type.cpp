@@ -209,7 +209,9 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
     }
     return out + ">" + suffix;
   }
-  if (t.texel) return glsl_name(bare) + "<" + type_name(*t.texel, registry, dim_params, space_params) + ">" + suffix;
+  if (t.texel)
+    return glsl_name(bare) + "<" + type_name(*t.texel, registry, dim_params, space_params) +
+           (t.from.state == SpaceSlot::State::unknown ? "" : ", " + space_text(t.from, registry, space_params)) + ">" + suffix;
   if (t.dim.state == DimSlot::State::unknown || t.dim.state == DimSlot::State::zero ||
       (t.shape != Shape::scalar && t.shape != Shape::vector && t.shape != Shape::matrix))
     return glsl_name(t);
