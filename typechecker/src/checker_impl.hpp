@@ -164,6 +164,8 @@ class Checker {
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
+  // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).
+  bool rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value);
   // The source text of an operand, for a hint's code: its name, else its text when that is one short line, else `fallback`.
   std::string operand_text(const Value& v, const std::string& fallback) const;
   Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
@@ -282,6 +284,7 @@ class Checker {
     return v;
   }
   void report(Diagnostic d) {
+    if (muted_ > 0) return;  // a trial check (rebind_inferred_local)
     if (d.expansion == kNoExpansion)
       d.expansion = expansions_.find(d.range, !written_statements_.empty() ? written_statements_.back()
                                               : current_function_          ? current_function_->decl->range
@@ -301,6 +304,7 @@ class Checker {
   CheckResult& result_;
   std::shared_ptr<const BuiltinLibrary> builtins_;  // built after the program's dimension declarations
   std::vector<std::unordered_map<std::string, Variable>> scopes_;
+  int muted_ = 0;  // > 0: report() drops diagnostics (a check tried, not made)
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
   std::unordered_map<std::string, Function> subroutine_types_;  // `subroutine void T(...);`

@@ -51,12 +51,22 @@ TEST(Dimensions, UnannotatedLocalsAreInferredFromTheirInitialiser) {
   EXPECT_EQ(declared_type(*c, "a"), "float<area>");
   EXPECT_EQ(declared_type(*c, "zero"), "vec3");  // a zero initialiser says nothing
   EXPECT_EQ(declared_type(*c, "one"), "float<dimensionless>");
-  // The inferred type then holds: the note says where it came from.
-  auto bad = check_source("void main() {\n  float<length> d = 3.0 * meter;\n  float a = d * d;\n  a = d;\n}");
-  ASSERT_EQ(bad->diagnostics.diagnostics().size(), 1u);
+}
+
+// An unannotated local is a name, not a quantity: reused for another one in the same block
+// it takes the new type from there on (the note says where); reused in a nested block it is
+// unknown after it (either may reach a later use). An annotated variable never changes.
+TEST(Dimensions, UnannotatedLocalsReusedForAnotherQuantityFollowTheAssignment) {
+  auto bad = check_source("void main() {\n  float<length> d = 3.0 * meter;\n  float a = d * d;\n  a = d;\n  float<area> b = a;\n}");
+  ASSERT_EQ(bad->diagnostics.diagnostics().size(), 1u) << bad->rendered();
   EXPECT_EQ(bad->diagnostics.diagnostics()[0].message,
-            "cannot assign 'a' of type float<area> with a value of type float<length>");
-  EXPECT_EQ(bad->diagnostics.diagnostics()[0].notes[0].message, "type of 'a' inferred from its initializer as float<area>");
+            "cannot initialize 'b' of type float<area> with a value of type float<length>");
+  EXPECT_EQ(bad->diagnostics.diagnostics()[0].notes.back().message, "type of 'a' set by this assignment as float<length>");
+  EXPECT_EQ(messages_of("float<length> d = 3.0 * meter; float a = d * d; a *= 1.0 / d; float<length> e = a;"), Messages{});
+  EXPECT_EQ(messages_of("float<length> d = 3.0 * meter; float a = d * d; if (d > 0.0) { a = d; } float<time> t = a;"),
+            Messages{});  // unknown after the branch
+  EXPECT_EQ(messages_of("float<length> d = 3.0 * meter; float<area> a = d * d; a = d;"),
+            Messages{"error: cannot assign 'a' of type float<area> with a value of type float<length>"});
 }
 
 TEST(Dimensions, SqrtHalvesEvenExponentsAndRejectsOddOnes) {

@@ -227,6 +227,40 @@ std::string Checker::member_path(const ast::Expr* target, const std::string& var
   return path && path->has_member ? path->text : variable;
 }
 
+// A local whose type was inferred from its initializer (no annotation written) is a name,
+// not a quantity: `float blinn = pow(…); blinn *= (n + 8.0) / (8.0 * PI);` reuses it for the
+// normalised lobe. An assignment of another type rebinds it from there on, in the same
+// block; in a nested block (a branch, a loop) the value after it is either, so unknown.
+// An annotated variable never changes: the assignment is checked against it.
+bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value) {
+  const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e.lhs);
+  if (id == nullptr || scopes_.size() < 2) return false;
+  Variable* var = nullptr;
+  std::size_t depth = scopes_.size() - 1;
+  for (; depth > 0 && var == nullptr; --depth)
+    if (auto found = scopes_[depth].find(id->name); found != scopes_[depth].end()) {
+      var = &found->second;
+      break;
+    }
+  if (var == nullptr || var->builtin || !var->origin.inferred || var->read_only) return false;
+  Type a = var->type, b = value.type;
+  if (!implicitly_converts(b.scalar, a.scalar)) return false;
+  b.scalar = a.scalar;
+  if (!same_glsl_type(a, b)) return false;
+  ++muted_;
+  const bool fits = check_assignable(lhs.type, value, e.lhs->range, id->name, lhs.origin, "assign");
+  --muted_;
+  if (fits) return false;
+  if (depth + 1 == scopes_.size()) {
+    var->type = b;
+    var->origin = {e.range, "type of '" + id->name + "' set by this assignment", true};
+  } else {
+    var->type = var->type.plain();
+    var->origin = {e.range, "'" + id->name + "' reused for another quantity in a nested block here", true};
+  }
+  return true;
+}
+
 Value Checker::assign(const ast::AssignExpr& e) {
   Value lhs = expr(e.lhs);
   Value rhs = expr(e.rhs);
@@ -252,6 +286,13 @@ Value Checker::assign(const ast::AssignExpr& e) {
                                          ast::BinaryOp::BitAnd, ast::BinaryOp::BitXor, ast::BinaryOp::BitOr};
     value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
     if (value.type.is_error()) return error_value(e.range);
+  }
+  if (rebind_inferred_local(e, lhs, value)) {
+    Value out = value;
+    out.range = e.range;
+    out.lvalue = false;
+    out.origin.reset();
+    return out;
   }
   if (!check_assignable(lhs.type, value, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
   Value out = lhs;
