@@ -17,7 +17,7 @@ in normal<world> vNormal;
 uniform point<world> cameraPosition;
 out vec4 fragColor;
 
-spectrum<irradiance> evaluateSH(vec3 d) {
+spectrum<irradiance> evaluateSH(normal<world> d) {
     return shCoefficients[0] + shCoefficients[1] * d.y + shCoefficients[2] * d.z + shCoefficients[3] * d.x;
 }
 
