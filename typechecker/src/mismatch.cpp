@@ -117,6 +117,24 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
 
   // A plain number where a brdf is expected: an albedo or a lobe without its 1/π.
   if (plain_value && named("brdf", expected.value)) return lambert_hint();
+  // A reflectance alone where light is expected (an ambient term of the albedo, not of the light).
+  std::optional<BaseId> energy = reg.find_base("energy");
+  if (plain_value && energy && expected.value.exponent(*energy) != 0) {
+    std::string reflectance;
+    for (const ProductFactor& f : factors)
+      if (reflectance.empty() && !f.literal && !f.name.empty() && f.dim.state == DimSlot::State::known && f.dim.value.is_dimensionless())
+        reflectance = f.name;
+    if (!reflectance.empty()) {
+      std::string light;  // a variable in scope that is that light
+      for (auto scope = scopes_.rbegin(); scope != scopes_.rend() && light.empty(); ++scope)
+        for (const auto& [name, var] : *scope) {
+          const DimSlot d = value_dimension(var.type, reg);
+          if (!var.builtin && d.is_known() && d.value == expected.value && (light.empty() || name < light)) light = name;
+        }
+      return "'" + reflectance + "' is a plain number, a reflectance: the light it reflects is missing from the product" +
+             (light.empty() ? ", a " + expected_name + " (or an irradiance times a brdf)" : ", e.g. " + light + " * " + reflectance);
+    }
+  }
   // A number written without its unit (2π(1 - cos θmax) for a cone's solid angle).
   if (plain_value && (all_plain || factors.empty()) && !is({{"angle", -1}}) && !is({{"proj", -1}})) {
     for (const Unit& unit : reg.units())
