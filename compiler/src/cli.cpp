@@ -120,7 +120,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   std::vector<std::string> target_envs;
   bool werror = false, no_warnings = false, strict = false, write_depfile = false, desktop_default = false;
   bool auto_map_locations = false, auto_map_bindings = false, relaxed = false, debug_info = false;
-  std::size_t error_limit = 0;
+  std::size_t error_limit = 20;  // clang's default: a file of garbage is not thousands of lines
   // `--explain CODE`, as rustc's: what a diagnostic code means; nothing is compiled, so no file is needed.
   std::string explain_code;
   app.add_option("--explain", explain_code, "print what a diagnostic code (E-DIMENSION-MISMATCH) means, and exit");
@@ -165,7 +165,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   app.add_flag("--strict", strict, "warn about unannotated interface variables");
   app.add_flag("--Werror", werror, "treat warnings as errors (also -Werror)");
   app.add_flag("-w", no_warnings, "suppress warnings");
-  app.add_option("--error-limit", error_limit, "stop after N errors, 0 for no limit (also -ferror-limit=N)");
+  app.add_option("--error-limit", error_limit, "stop after N errors (default 20), 0 for no limit (also -ferror-limit=N)");
   app.add_option("--diagnostics-format", diagnostics_format, "text or json")->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", color, "auto (on a terminal), always or never")->check(CLI::IsMember({"auto", "always", "never"}));
   app.set_version_flag("--version", std::string(kCompilerName) + " " + std::string(kCompilerVersion));

@@ -2,8 +2,10 @@
 // (no input at all, --help) and the file outputs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "safegi/compiler/cli.hpp"
@@ -97,6 +99,64 @@ TEST(Safeglslc, UnwritableOutputIsAnIoError) {
   CliRun r = run({"-", "-S", "frag", "-o", "/nonexistent-dir/x.glsl"}, "#version 330 core\nvoid main() {}\n");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+}
+
+// Issue 46: what a file of garbage costs. Counts and messages here; the times are in docs/safeglslc.md.
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(Safeglslc, StopsAfterTwentyErrorsByDefault) {
+  std::string shader = "#version 330 core\nvoid main() {\n";
+  for (int i = 0; i < 50; ++i) shader += "  a" + std::to_string(i) + " = 1;\n";
+  shader += "}\n";
+  CliRun r = run({"-", "-S", "frag"}, shader);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(count_of(r.err, ": error: "), 20u) << r.err;
+  EXPECT_NE(r.err.find("note: too many errors emitted, stopping now (error limit 20)\n20 errors generated.\n"), std::string::npos)
+      << r.err;
+  r = run({"-", "-S", "frag", "-ferror-limit=0"}, shader);
+  EXPECT_EQ(count_of(r.err, ": error: "), 50u);
+  EXPECT_EQ(r.err.find("too many errors"), std::string::npos);
+}
+
+TEST(Safeglslc, RefusesInputThatIsNotTextWithOneError) {
+  std::mt19937 rng(46);
+  std::string bytes(3 << 20, '\0');
+  for (char& c : bytes) c = static_cast<char>(rng() & 0xFF);
+  CliRun r = run({"-", "-S", "frag"}, bytes);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(count_of(r.err, ": error: "), 1u) << r.err.substr(0, 2000);
+  EXPECT_EQ(r.err.rfind("<stdin>:1:", 0), 0u) << r.err.substr(0, 2000);
+  EXPECT_NE(r.err.find("error: the file is not text: it holds a NUL byte [E-NOT-TEXT]"), std::string::npos)
+      << r.err.substr(0, 2000);
+  // No NUL byte, but control characters as a binary file has them.
+  std::string controls = "#version 330 core\n";
+  for (int i = 0; i < 400; ++i) controls += "\x01\x02\x1b x";
+  r = run({"-", "-S", "frag"}, controls);
+  EXPECT_EQ(count_of(r.err, ": error: "), 1u) << r.err;
+  EXPECT_NE(r.err.find("<stdin>:2:1: error: the file is not text: 1200 of its first 2018 bytes are control characters [E-NOT-TEXT]"),
+            std::string::npos)
+      << r.err;
+  // Text with a few of them is still text: each is the lexer's error.
+  r = run({"-", "-S", "frag"}, "#version 330 core\n\x01 out vec4 c;\nvoid main() { c = vec4(1.0); }\n");
+  EXPECT_EQ(r.err.find("E-NOT-TEXT"), std::string::npos) << r.err;
+}
+
+TEST(Safeglslc, QuotesAWindowOfAVeryLongLine) {
+  std::string shader = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0);";
+  for (int i = 0; i < 20000; ++i) shader += " x" + std::to_string(i) + " = 1;";
+  shader += " }\n";
+  CliRun r = run({"-", "-S", "frag", "--error-limit", "0"}, shader);
+  EXPECT_EQ(count_of(r.err, ": error: "), 20000u);
+  std::istringstream lines(r.err);
+  std::size_t longest = 0;
+  for (std::string line; std::getline(lines, line);) longest = std::max(longest, line.size());
+  EXPECT_LE(longest, 166u);  // the header line; every quoted line is at most 160 columns and its "..." marks
+  EXPECT_NE(r.err.find(" x19999 = 1; }\n"), std::string::npos);
+  EXPECT_NE(r.err.find("\n..."), std::string::npos);
 }
 
 }  // namespace

@@ -66,13 +66,19 @@ QuotedLine quote_line(std::string_view line, unsigned tab_width) {
   return quoted;
 }
 
+// The byte columns of `range` on `line`, as offsets into the quoted part of the
+// line, which begins at byte `skipped` of it.
+std::size_t quoted_byte(std::size_t column, std::size_t skipped, std::size_t last_byte) {
+  return column - 1 < skipped ? 0 : std::min<std::size_t>(column - 1 - skipped, last_byte);
+}
+
 // Marks the part of `range` that lies on `line` of `file` with `mark`.
 void mark_range(std::string& carets, const QuotedLine& quoted, SourceRange range, FileId file,
-                std::uint32_t line, char mark) {
+                std::uint32_t line, char mark, std::size_t skipped) {
   if (range.begin.file != file || range.begin.line > line || range.end.line < line) return;
   std::size_t last_byte = quoted.column_of_byte.size() - 1;
-  std::size_t first = range.begin.line == line ? std::min<std::size_t>(range.begin.column - 1, last_byte) : 0;
-  std::size_t end = range.end.line == line ? std::min<std::size_t>(range.end.column - 1, last_byte) : last_byte;
+  std::size_t first = range.begin.line == line ? quoted_byte(range.begin.column, skipped, last_byte) : 0;
+  std::size_t end = range.end.line == line ? quoted_byte(range.end.column, skipped, last_byte) : last_byte;
   std::size_t from = quoted.column_of_byte[first];
   std::size_t to = quoted.column_of_byte[std::max(first, end)];
   if (carets.size() < to) carets.resize(to, ' ');
@@ -159,20 +165,36 @@ class TextRenderer {
     FileId file = range.begin.file;
     std::uint32_t line = range.begin.line;
     if (line == 0 || line > sources_.line_count(file)) return;
-    QuotedLine quoted = quote_line(sources_.line_text(file, line), style_.tab_width);
+    // Only the bytes around the caret are quoted, so a diagnostic costs the same on a line of a
+    // megabyte: every byte is at least one column, so this many bytes on each side fill the window.
+    std::string_view text = sources_.line_text(file, line);
+    std::size_t skipped = 0;
+    bool cut_before = false, cut_after = false;
+    if (const std::size_t reach = 2 * style_.max_line_columns + 16; style_.max_line_columns != 0 && text.size() > 2 * reach) {
+      const std::size_t caret_byte = std::min<std::size_t>(range.begin.column - 1, text.size());
+      skipped = caret_byte - std::min(caret_byte, reach);
+      while (skipped > 0 && (static_cast<unsigned char>(text[skipped]) & 0xC0) == 0x80) --skipped;  // not inside a character
+      const std::size_t end = std::min(text.size(), caret_byte + reach);
+      cut_before = skipped > 0;
+      cut_after = end < text.size();
+      text = text.substr(skipped, end - skipped);
+    }
+    QuotedLine quoted = quote_line(text, style_.tab_width);
     std::string carets;
-    for (SourceRange h : highlights) mark_range(carets, quoted, h, file, line, '~');
-    mark_range(carets, quoted, range, file, line, '~');
-    std::size_t first = std::min<std::size_t>(range.begin.column - 1, quoted.column_of_byte.size() - 1);
+    for (SourceRange h : highlights) mark_range(carets, quoted, h, file, line, '~', skipped);
+    mark_range(carets, quoted, range, file, line, '~', skipped);
+    std::size_t first = quoted_byte(range.begin.column, skipped, quoted.column_of_byte.size() - 1);
     std::size_t caret = quoted.column_of_byte[first];
     if (carets.size() <= caret) carets.resize(caret + 1, ' ');
     carets[caret] = '^';
     while (!carets.empty() && carets.back() == ' ') carets.pop_back();
-    quote(quoted, carets, caret);
+    quote(quoted, carets, caret, cut_before, cut_after);
   }
 
-  // The line and its carets, cut to the style's width around the caret.
-  void quote(const QuotedLine& quoted, const std::string& carets, std::size_t caret) {
+  // The line and its carets, cut to the style's width around the caret; `cut_before` /
+  // `cut_after`: `quoted` is already a part of the line.
+  void quote(const QuotedLine& quoted, const std::string& carets, std::size_t caret, bool already_cut_before,
+             bool already_cut_after) {
     std::size_t underline_end = caret + 1;
     while (underline_end < carets.size() && carets[underline_end] == '~') ++underline_end;
     // The caret may stand just past the last character: its column counts as part of the line.
@@ -184,7 +206,7 @@ class TextRenderer {
     };
     while (!starts_character(shown.begin)) ++shown.begin;
     while (shown.end > caret + 1 && !starts_character(shown.end)) --shown.end;
-    const bool cut_before = shown.begin > 0, cut_after = shown.end < columns;
+    const bool cut_before = shown.begin > 0 || already_cut_before, cut_after = shown.end < columns || already_cut_after;
     const auto text_at = [&](std::size_t column) {
       return quoted.text_offset_of_column[std::min(column, quoted.columns())];
     };

@@ -29,6 +29,8 @@ void walk_all(const std::vector<T*>& nodes, const Visitor& visit) {
 void walk(const Node* node, const Visitor& visit) {
   if (node == nullptr) return;
   visit(*node);
+  if (const auto* s = dyn_cast<Stmt>(node))
+    for (const StatementAttribute& a : s->attributes) walk(a.argument, visit);
   switch (node->kind) {
     case NodeKind::IdentifierExpr:
     case NodeKind::LiteralExpr:

@@ -475,6 +475,7 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
     id = sources_.add_file(resolved, std::move(*contents));
     sources_.set_included_from(id, directive);
     loaded_files_.emplace(resolved, id);
+    if (refuse_non_text(id)) return;
   }
   if (unit_.includes.size() >= options_.max_include_count) {
     error(directive, "more than " + std::to_string(options_.max_include_count) + " #include directives processed");

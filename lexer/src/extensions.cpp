@@ -21,8 +21,8 @@ constexpr std::uint32_t kArithmetic = bit(G::arithmetic_types);
 // vendor ones in wide use) whose additions are syntax this front end parses:
 // keywords (their group), layout identifiers, built-in functions and
 // variables, directives. Sorted by name. Extensions that add syntax the
-// parser does not know ([[attributes]] of GL_EXT_control_flow_attributes) are
-// left out, so `#ifdef` on them says "not supported", as it should.
+// parser does not know are left out, so `#ifdef` on them says "not
+// supported", as it should.
 constexpr std::array kExtensions = {
     ExtensionInfo{"GL_AMD_conservative_depth", kLayout},
     ExtensionInfo{"GL_AMD_gpu_shader_half_float", kArithmetic},
@@ -90,6 +90,7 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_buffer_reference2", 0},
     ExtensionInfo{"GL_EXT_buffer_reference_uvec2", 0},
     ExtensionInfo{"GL_EXT_conservative_depth", kLayout},
+    ExtensionInfo{"GL_EXT_control_flow_attributes", 0},
     ExtensionInfo{"GL_EXT_debug_printf", 0},
     ExtensionInfo{"GL_EXT_device_group", 0},
     ExtensionInfo{"GL_EXT_draw_instanced", 0},
@@ -103,6 +104,7 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_mesh_shader", bit(G::mesh_shading)},
     ExtensionInfo{"GL_EXT_multiview", 0},
     ExtensionInfo{"GL_EXT_nonuniform_qualifier", bit(G::nonuniform)},
+    ExtensionInfo{"GL_EXT_null_initializer", 0},
     ExtensionInfo{"GL_EXT_primitive_bounding_box", 0},
     ExtensionInfo{"GL_EXT_ray_cull_mask", 0},
     ExtensionInfo{"GL_EXT_ray_flags_primitive_culling", 0},
@@ -203,6 +205,11 @@ constexpr std::array kFeatureGates = {
                 0},
     FeatureGate{LanguageFeature::integer_operators, "the integer operators % << >> & | ^ ~", true, 130, 300,
                 {"GL_EXT_gpu_shader4"}},
+    // In no version: only with the extension (desktop and ES), as glslang.
+    FeatureGate{LanguageFeature::control_flow_attributes, "attributes '[[ ]]'", true, 0, 0,
+                {"GL_EXT_control_flow_attributes"}},
+    FeatureGate{LanguageFeature::null_initializer, "empty initializers '{}'", true, 0, 0,
+                {"GL_EXT_null_initializer"}},
 };
 
 // Keyed by layout identifier; `feature` is unused. Versions and extensions
@@ -245,6 +252,9 @@ std::string requirement(const FeatureGate& g, std::string_view what, bool es) {
   std::string extensions;
   for (std::size_t i = 0; i < g.named && !g.extensions[i].empty(); ++i) {
     extensions += (extensions.empty() ? "" : " or ") + std::string(g.extensions[i]);
+  }
+  if (g.desktop_since == 0 && g.es_since == 0 && !extensions.empty()) {  // an extension's, in no version
+    return std::string(what) + verb + extensions;
   }
   if (es) {
     if (g.es_since == 0) {

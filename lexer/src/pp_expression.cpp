@@ -1,7 +1,8 @@
 // #if expressions: every C operator GLSL's preprocessor allows, evaluated as
 // GLSL's 32-bit int (two's complement, wrapping, as glslang does) without
 // undefined behaviour, with short-circuit evaluation so `0 && 1 / 0` is not
-// an error.
+// an error. An undefined macro in ES is an error where glslang evaluates it
+// (`quiet`: glslang's shortCircuit, below).
 
 #include <string>
 
@@ -21,7 +22,7 @@ class ExpressionEvaluator {
       fail(directive_, "expected an expression after the directive");
       return std::nullopt;
     }
-    std::int64_t value = binary(0, true);
+    std::int64_t value = binary(0, true, false);
     if (!failed_ && pos_ < tokens_.size()) {
       fail(tokens_[pos_].range, "unexpected " + describe(tokens_[pos_]) + " in preprocessor expression");
     }
@@ -75,8 +76,12 @@ class ExpressionEvaluator {
   static std::int64_t wrap(std::uint64_t v) { return static_cast<std::int32_t>(static_cast<std::uint32_t>(v)); }
 
   // Precedence climbing; `evaluated` is false on the unevaluated side of && / ||.
-  std::int64_t binary(int min_precedence, bool evaluated) {
-    std::int64_t lhs = unary(evaluated);
+  // `quiet` is glslang's shortCircuit (TPpContext::eval), which decides where an
+  // undefined macro is an ES error: set after `&&` whose left side is 0 or `||`
+  // whose left side is exactly 1, it then stays set for the rest of this level's
+  // operators (`0 && X || Y` never reports Y; `2 || X` reports X).
+  std::int64_t binary(int min_precedence, bool evaluated, bool quiet) {
+    std::int64_t lhs = unary(evaluated, quiet);
     while (!failed_) {
       const Token* op = peek();
       if (!op) break;
@@ -87,7 +92,8 @@ class ExpressionEvaluator {
       bool rhs_evaluated = evaluated;
       if (kind == TokenKind::amp_amp) rhs_evaluated = evaluated && lhs != 0;
       if (kind == TokenKind::pipe_pipe) rhs_evaluated = evaluated && lhs == 0;
-      std::int64_t rhs = binary(p, rhs_evaluated);
+      if ((kind == TokenKind::amp_amp && lhs == 0) || (kind == TokenKind::pipe_pipe && lhs == 1)) quiet = true;
+      std::int64_t rhs = binary(p, rhs_evaluated, quiet);
       if (failed_) break;
       lhs = apply(kind, lhs, rhs, *op, rhs_evaluated);
     }
@@ -135,7 +141,7 @@ class ExpressionEvaluator {
     }
   }
 
-  std::int64_t unary(bool evaluated) {
+  std::int64_t unary(bool evaluated, bool quiet) {
     if (++depth_ > context_.max_depth) {
       fail(peek() ? peek()->range : end_range(), "preprocessor expression nested too deeply");
       return 0;
@@ -151,12 +157,12 @@ class ExpressionEvaluator {
     }
     ++pos_;
     switch (t->kind) {
-      case TokenKind::plus: return unary(evaluated);
-      case TokenKind::minus: return wrap(0 - static_cast<std::uint64_t>(unary(evaluated)));
-      case TokenKind::tilde: return wrap(~static_cast<std::uint64_t>(unary(evaluated)));
-      case TokenKind::bang: return unary(evaluated) == 0 ? 1 : 0;
+      case TokenKind::plus: return unary(evaluated, quiet);
+      case TokenKind::minus: return wrap(0 - static_cast<std::uint64_t>(unary(evaluated, quiet)));
+      case TokenKind::tilde: return wrap(~static_cast<std::uint64_t>(unary(evaluated, quiet)));
+      case TokenKind::bang: return unary(evaluated, quiet) == 0 ? 1 : 0;
       case TokenKind::l_paren: {
-        std::int64_t value = binary(0, evaluated);
+        std::int64_t value = binary(0, evaluated, quiet);
         if (failed_) return 0;
         const Token* close = peek();
         if (!close || close->kind != TokenKind::r_paren) {
@@ -195,7 +201,7 @@ class ExpressionEvaluator {
                t->expansion);
           return 0;
         }
-        if (context_.es) {
+        if (context_.es && !quiet) {
           fail(t->range, "'" + std::string(t->text) + "' is not defined (undefined macros are errors in #if in ES)",
                t->expansion);
           return 0;

@@ -1,6 +1,9 @@
 #include <safegi/lexer/preprocessor.hpp>
 
+#include <algorithm>
 #include <string>
+
+#include <safegi/diagnostics/codes.hpp>
 
 #include "preprocessor_impl.hpp"
 
@@ -387,6 +390,37 @@ void Preprocessor::emit(const PPToken& t) {
   unit_.tokens.push_back(token);
 }
 
+bool Preprocessor::refuse_non_text(FileId file) {
+  // Looks at the start only: text has no NUL byte, and few control characters besides tab,
+  // newline, vertical tab, form feed and carriage return.
+  constexpr std::size_t kSniffed = 4096, kMostControls = kSniffed / 32;
+  const std::string_view text = sources_.text(file).substr(0, kSniffed);
+  const auto refuse = [&](std::size_t at, std::string message, std::string hint) {
+    const auto offset = static_cast<std::uint32_t>(at);
+    diagnostics_.report(Diagnostic::error(sources_.range_of(file, offset, offset + 1), std::move(message))
+                            .with_code(code::E_NOT_TEXT)
+                            .with_hint(std::move(hint)));
+    return true;
+  };
+  std::size_t controls = 0, first_control = text.size();
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte == 0) {
+      return refuse(i, "the file is not text: it holds a NUL byte",
+                    "a shader is text: is this the right file (not an image, an object file or UTF-16)?");
+    }
+    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\v' && byte != '\f' && byte != '\r') || byte == 0x7F) {
+      ++controls;
+      first_control = std::min(first_control, i);
+    }
+  }
+  if (controls <= kMostControls) return false;
+  return refuse(first_control,
+                "the file is not text: " + std::to_string(controls) + " of its first " + std::to_string(text.size()) +
+                    " bytes are control characters",
+                "a shader is text: is this the right file?");
+}
+
 PreprocessedUnit Preprocessor::run(FileId main_file) {
   const bool overridden = options_.override_version != 0;
   unit_.version = overridden ? options_.override_version : options_.default_version;
@@ -401,6 +435,10 @@ PreprocessedUnit Preprocessor::run(FileId main_file) {
   if (text.size() > options_.max_source_bytes) {
     error(sources_.range_of(main_file, 0, 0), "the shader is too large (" + std::to_string(text.size()) +
                                                   " bytes; limit " + std::to_string(options_.max_source_bytes) + ")");
+    unit_.tokens.push_back(end);
+    return std::move(unit_);
+  }
+  if (refuse_non_text(main_file)) {
     unit_.tokens.push_back(end);
     return std::move(unit_);
   }

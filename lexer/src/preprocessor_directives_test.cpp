@@ -110,6 +110,24 @@ TEST_F(Directives, UndefinedIdentifiersInConditions) {
             "    ^~~~~~~~~~~~~~~\n");
 }
 
+// glslang's rule (TPpContext::eval's shortCircuit), issue 46: in ES an undefined macro is an
+// error unless it follows `&&` after 0 or `||` after exactly 1, on that level of the expression.
+TEST_F(Directives, UndefinedIdentifiersInEsConditionsFollowGlslangsShortCircuit) {
+  for (const char* quiet : {"defined(X) && X", "!defined(X) || X", "0 && X", "1 || X", "(1) || X", "1 == 1 || X",
+                            "0 && (X + 1)", "0 && X || Y", "1 || X && Y", "0 && -X", "1 && (0 && X)"}) {
+    diagnostics.clear();
+    output(std::string("#version 300 es\n#if ") + quiet + "\n#endif\n");
+    EXPECT_EQ(diagnostics.error_count(), 0u) << quiet << "\n" << errors();
+  }
+  for (const char* loud : {"X && defined(X)", "defined(X) || X", "X", "1 && X", "0 || X", "2 || X",
+                           "(defined(X) && X) || X"}) {
+    diagnostics.clear();
+    output(std::string("#version 300 es\n#if ") + loud + "\n#endif\n");
+    EXPECT_EQ(diagnostics.error_count(), 1u) << loud;
+    EXPECT_NE(errors().find("'X' is not defined (undefined macros are errors in #if in ES)"), std::string::npos) << loud;
+  }
+}
+
 TEST_F(Directives, ConditionalStructureErrors) {
   output("#endif\n#else\n#elif 1\n#if 1\n#else\n#else\n#endif\n#ifdef\n#endif\n#ifdef 3\n#endif\n");
   EXPECT_EQ(errors(),
@@ -321,8 +339,8 @@ TEST_F(Directives, ExtensionMacros) {
 
 TEST_F(Directives, KnownExtensionsArePredefinedByDefault) {
   EXPECT_EQ(output("#version 150\n#if GL_ARB_gpu_shader5 && defined(GL_ARB_fragment_coord_conventions)\nyes\n#endif\n"
-                   "#ifdef GL_EXT_control_flow_attributes\nno\n#endif\n"),
-            "yes");
+                   "#ifdef GL_NV_cooperative_matrix\nno\n#endif\n#ifdef GL_EXT_control_flow_attributes\nattributes\n#endif\n"),
+            "yes\nattributes");
   // Not strict by default: an extension the front end does not know is
   // accepted without a macro (the type checker judges its built-ins), with a
   // warning when glslang does not know it either.

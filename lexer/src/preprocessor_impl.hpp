@@ -69,6 +69,10 @@ class Preprocessor {
   void skip_group(FileState& f);
   void end_of_file(FileState& f);
   void record_directive(DirectiveKind kind, const Token& hash, SourceLocation last_end);
+  // Input that is plainly not text (an image, an object file, UTF-16): one error at its first
+  // NUL or control byte (E-NOT-TEXT), and true, so the file is not lexed (a megabyte of random
+  // bytes would otherwise be thousands of diagnostics).
+  bool refuse_non_text(FileId file);
   std::uint32_t line_end_offset(SourceLocation at) const;
   void set_skipping(bool skipping);
   // From '#' to the last token of the line, at least through the directive's name.

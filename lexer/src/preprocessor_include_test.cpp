@@ -19,6 +19,19 @@ TEST_F(Includes, QuotedIncludesSearchTheIncludingDirectoryFirst) {
   EXPECT_EQ(errors(), "");
 }
 
+// Issue 46: an included file that is not text is one error, at its first NUL byte, and is not read.
+TEST_F(Includes, AnIncludedFileThatIsNotTextIsOneError) {
+  files["image.png"] = std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16) + std::string(5000, '@');
+  EXPECT_EQ(output("#include \"image.png\"\nafter\n"), "after");
+  EXPECT_EQ(diagnostics.error_count(), 1u);
+  EXPECT_EQ(errors(),
+            "In file included from main.glsl:1:1:\n"
+            "image.png:3:1: error: the file is not text: it holds a NUL byte [E-NOT-TEXT]\n"
+            "\\x00\\x00\\x00\n"
+            "^~~~\n"
+            "help: a shader is text: is this the right file (not an image, an object file or UTF-16)?\n");
+}
+
 TEST_F(Includes, AngledIncludesUseOnlySearchPaths) {
   files["lib/safegi/prelude.sgl"] = "dimension length;\n";
   files["prelude.sgl"] = "wrong\n";

@@ -132,8 +132,11 @@ TEST(Token, ExtensionTableIsSortedAndNamesTheDefaultMacros) {
   for (std::size_t i = 1; i < known.size(); ++i) EXPECT_LT(known[i - 1].name, known[i].name);
   EXPECT_EQ(default_extension_macros().size(), known.size());
   EXPECT_NE(find_extension("GL_ARB_shader_subroutine"), nullptr);
-  // [[unroll]] is syntax the parser does not have: not listed, so `#ifdef` says so.
-  EXPECT_EQ(find_extension("GL_EXT_control_flow_attributes"), nullptr);
+  // Cooperative matrices are syntax the parser does not have: not listed, so `#ifdef` says so.
+  EXPECT_EQ(find_extension("GL_NV_cooperative_matrix"), nullptr);
+  // [[unroll]] and `= {}` are parsed (issue 46).
+  EXPECT_NE(find_extension("GL_EXT_control_flow_attributes"), nullptr);
+  EXPECT_NE(find_extension("GL_EXT_null_initializer"), nullptr);
   EXPECT_NE(find_extension("GL_NV_ray_tracing"), nullptr);
   // Vulkan GLSL enables its types but is no driver extension macro.
   EXPECT_NE(extension_groups_enabled_by("GL_KHR_vulkan_glsl"), 0u);

@@ -16,6 +16,11 @@ class Dumper {
   void node(const Node* n, int level, std::string_view label = {}) {
     if (n == nullptr) return;
     open(level, label, node_kind_name(n->kind), n->range);
+    if (const auto* s = dyn_cast<Stmt>(n); s && !s->attributes.empty()) {
+      std::string names = "[[";
+      for (const StatementAttribute& a : s->attributes) names += (names.size() > 2 ? ", " : "") + a.name;
+      text(names + "]]");
+    }
     switch (n->kind) {
       case NodeKind::IdentifierExpr: text(static_cast<const IdentifierExpr*>(n)->name); break;
       case NodeKind::LiteralExpr: text(static_cast<const LiteralExpr*>(n)->spelling); break;
@@ -239,6 +244,7 @@ class Dumper {
       case NodeKind::IfStmt: {
         const auto* i = static_cast<const IfStmt*>(n);
         close();
+        attribute_arguments(*i, level + 1);
         node(i->condition, level + 1, "condition");
         node(i->then_stmt, level + 1, "then");
         node(i->else_stmt, level + 1, "else");
@@ -247,6 +253,7 @@ class Dumper {
       case NodeKind::SwitchStmt: {
         const auto* s = static_cast<const SwitchStmt*>(n);
         close();
+        attribute_arguments(*s, level + 1);
         node(s->selector, level + 1);
         node(s->body, level + 1);
         return;
@@ -258,6 +265,7 @@ class Dumper {
       case NodeKind::WhileStmt: {
         const auto* w = static_cast<const WhileStmt*>(n);
         close();
+        attribute_arguments(*w, level + 1);
         condition(w->condition, level + 1);
         node(w->body, level + 1, "body");
         return;
@@ -265,6 +273,7 @@ class Dumper {
       case NodeKind::DoStmt: {
         const auto* d = static_cast<const DoStmt*>(n);
         close();
+        attribute_arguments(*d, level + 1);
         node(d->body, level + 1, "body");
         node(d->condition, level + 1, "condition");
         return;
@@ -272,6 +281,7 @@ class Dumper {
       case NodeKind::ForStmt: {
         const auto* f = static_cast<const ForStmt*>(n);
         close();
+        attribute_arguments(*f, level + 1);
         node(f->init, level + 1, "init");
         condition(f->condition, level + 1);
         node(f->increment, level + 1, "increment");
@@ -310,6 +320,10 @@ class Dumper {
     out_ += t;
   }
   void close() { out_ += '\n'; }
+
+  void attribute_arguments(const Stmt& s, int level) {
+    for (const StatementAttribute& a : s.attributes) node(a.argument, level, a.name);
+  }
 
   void qualifiers(const TypeQualifiers& q, int level) {
     (void)level;

@@ -10,7 +10,10 @@ using namespace ast;
 
 void Parser::check_layout_id(const LayoutId& id) {
   if (!options_.language) return;
-  if (std::string message = layout_id_requirement(id.name, *options_.language); !message.empty()) {
+  // An atomic counter's offset is GLSL 4.20's (GL_ARB_shader_atomic_counters), a block member's 4.40's:
+  // from 4.20 on the type decides, which the checker knows (validate_layouts.cpp).
+  const bool typed_offset = id.name == "offset" && !options_.language->es && options_.language->version >= 420;
+  if (std::string message = typed_offset ? "" : layout_id_requirement(id.name, *options_.language); !message.empty()) {
     diagnostics_.report(Diagnostic::error(id.name_range, std::move(message)));
   }
   if (id.value && id.value->kind != NodeKind::LiteralExpr) {

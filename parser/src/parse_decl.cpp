@@ -797,19 +797,26 @@ VariableDecl* Parser::parse_init_declarators(TypeQualifiers qualifiers, TypeSpec
   return decl;
 }
 
-Expr* Parser::parse_initializer() {
+Expr* Parser::parse_initializer(bool top_level) {
   if (!at(T::LBrace)) return parse_assignment();
   DepthGuard guard(*this);
   SourceLocation begin = here();
   auto* list = make<InitializerList>(begin);
   advance();
   std::uint32_t height = 0;
+  if (at(T::RBrace)) {  // `= {}`: every member zero (GL_EXT_null_initializer; nested, the checker's error)
+    advance();
+    list->height = 1;
+    list->range = range_from(begin);
+    if (top_level) require(LanguageFeature::null_initializer, list->range);
+    return list;
+  }
   do {
     if (at(T::RBrace) && !list->elements.empty()) {
       list->trailing_comma = true;
       break;
     }
-    Expr* element = parse_initializer();
+    Expr* element = parse_initializer(false);
     height = std::max(height, element->height);
     list->elements.push_back(element);
   } while (accept(T::Comma));

@@ -116,6 +116,9 @@ Stmt* Parser::parse_statement() {
       label->range = range_from(begin);
       return label;
     }
+    case T::LBracket:
+      if (peek(1).kind == T::LBracket) return parse_attributed_statement();
+      break;
     case T::Semicolon: {
       auto* empty = make<EmptyStmt>(begin);
       advance();
@@ -134,6 +137,37 @@ Stmt* Parser::parse_statement() {
     return demote;
   }
   return parse_simple_statement();
+}
+
+Stmt* Parser::parse_attributed_statement() {
+  SourceLocation begin = here();
+  std::vector<StatementAttribute> attributes;
+  advance();
+  advance();
+  do {
+    const PToken& name = expect(T::Ident, "an attribute name", "in '[[ ]]'");
+    StatementAttribute attribute;
+    attribute.name = std::string(name.text);
+    attribute.name_range = name.range;
+    if (accept(T::LParen)) {
+      attribute.argument = parse_assignment();
+      expect(T::RParen, "')'", "after the attribute's argument");
+    }
+    attributes.push_back(std::move(attribute));
+  } while (accept(T::Comma));
+  expect(T::RBracket, "']]'", "to close the attributes");
+  expect(T::RBracket, "']]'", "to close the attributes");
+  const SourceRange attributes_range = range_from(begin);
+  require(LanguageFeature::control_flow_attributes, attributes_range);
+  // GL_EXT_control_flow_attributes: only selection, switch and iteration statements take them.
+  const T k = peek().kind;
+  if (k != T::If && k != T::Switch && k != T::While && k != T::Do && k != T::For) {
+    fail_expected("'if', 'switch', 'for', 'while' or 'do'", "after '[[ ]]' attributes");
+  }
+  Stmt* stmt = parse_statement();
+  stmt->attributes = std::move(attributes);
+  stmt->attributes_range = attributes_range;
+  return stmt;
 }
 
 Stmt* Parser::parse_simple_statement() {

@@ -23,6 +23,17 @@ TEST(ParseStmt, ForWithDeclarationAndEmptyParts) {
   EXPECT_EQ(dump_first("void f() { for (;;) break; }"), "ForStmt\n  init: EmptyStmt\n  body: BreakStmt\n");
 }
 
+TEST(ParseStmt, AttributesBeforeLoopsIfsAndSwitches) {
+  EXPECT_EQ(dump_first("void f() { [[unroll, dependency_length(4)]] for (;;) break; }"),
+            "ForStmt [[unroll, dependency_length]]\n  dependency_length: LiteralExpr 4\n  init: EmptyStmt\n  body: BreakStmt\n");
+  EXPECT_EQ(dump_first("void f() { [[flatten]] if (a) x(); }"),
+            "IfStmt [[flatten]]\n  condition: IdentifierExpr a\n  then: ExprStmt\n    CallExpr x\n");
+  auto parsed = parse_text("void f() { [[unroll]] x(); }");
+  EXPECT_EQ(parsed->errors(), "test.glsl:1:23: error: expected 'if', 'switch', 'for', 'while' or 'do' after '[[ ]]' attributes, found 'x'\n"
+                              "void f() { [[unroll]] x(); }\n"
+                              "                      ^\n");
+}
+
 TEST(ParseStmt, DeclarationsInConditions) {
   EXPECT_EQ(dump_first("void f() { while (bool go = k > 0) k--; }"),
             "WhileStmt\n  condition: VariableDecl\n    TypeSpecifier builtin bool\n    Declarator go\n"

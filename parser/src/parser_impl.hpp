@@ -130,7 +130,8 @@ class Parser {
   ast::ParamDecl* parse_parameter();
   ast::VariableDecl* parse_init_declarators(ast::TypeQualifiers qualifiers, ast::TypeSpecifier* type,
                                             SourceLocation begin);
-  ast::Expr* parse_initializer();
+  // `top_level`: the whole initializer of a declarator, where `{}` (GL_EXT_null_initializer) stands.
+  ast::Expr* parse_initializer(bool top_level = true);
 
   // Lookahead: does a type specifier start here (and where does it end)?
   // Returns the index after it, or 0 when there is none. Never reports.
@@ -153,6 +154,8 @@ class Parser {
   ast::Stmt* parse_for();
   ast::Condition parse_condition();
   ast::Stmt* parse_jump();
+  // `[[unroll]] for (...)`: attributes (GL_EXT_control_flow_attributes), then the loop, if or switch.
+  ast::Stmt* parse_attributed_statement();
   void synchronize_statement();
   void synchronize_global();
 

@@ -449,6 +449,19 @@ void GlslPrinter::statement(const Stmt& s) {
   if (label) --level_;
   line_start();
   if (label) ++level_;
+  if (!s.attributes.empty()) {
+    out_ += "[[";
+    for (std::size_t i = 0; i < s.attributes.size(); ++i) {
+      if (i) out_ += ", ";
+      out_ += s.attributes[i].name;
+      if (s.attributes[i].argument) {
+        out_ += '(';
+        expression(*s.attributes[i].argument, 2);
+        out_ += ')';
+      }
+    }
+    out_ += "]] ";
+  }
   switch (s.kind) {
     case NodeKind::IfStmt: {
       const auto& i = static_cast<const IfStmt&>(s);

@@ -132,6 +132,22 @@ void main() {
     p = 1.0;
 }
 )"},
+    // Issue 46: GL_EXT_control_flow_attributes and GL_EXT_null_initializer.
+    {"control_flow_attributes_and_null_initializers", "frag", R"(
+in float x;
+out vec4 c;
+struct S { float a; vec2 b; };
+void main() {
+    S s = {};
+    float t = {};
+    [[unroll]] for (int i = 0; i < 4; ++i) t += x;
+    [[dont_unroll, dependency_length(2 + 2)]] while (t > 9.0) t -= 1.0;
+    [[loop]] do { t *= 0.5; } while (t > 2.0);
+    [[flatten]] if (x > 0.5) t += 1.0; else [[branch]] if (x < 0.1) t -= 1.0;
+    [[branch]] switch (int(x)) { case 0: t += 2.0; break; default: break; }
+    c = vec4(s.b, s.a, t);
+}
+)", "#extension GL_EXT_control_flow_attributes : enable\n#extension GL_EXT_null_initializer : enable\n"},
     {"doubles_and_literals", "frag", R"(
 out vec4 c;
 void main() {

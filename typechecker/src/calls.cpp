@@ -97,6 +97,16 @@ Value Checker::call(const ast::CallExpr& e) {
   if (const std::vector<Signature>* sigs = builtins_->find(e.callee)) {
     if (!builtin_available(e.callee, e.callee_range, true)) return error_value(e.range);
     if (bad) return error_value(e.range);
+    if (e.callee == "nonuniformEXT" && args.size() == 1) {
+      // GL_EXT_nonuniform_qualifier: nonuniformEXT(x) is x, of any type (an index, a sampler built from a
+      // texture, a block member), dimension and space kept; builtins.def's rows are for completion and hover.
+      Value v = args.front();
+      v.range = e.range;
+      v.lvalue = false;
+      v.origin.reset();
+      symbols_.use_builtin_function(e.callee, e.callee_range, "", v.type);
+      return v;
+    }
     Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
     const auto info = result_.calls.find(&e);
     symbols_.use_builtin_function(e.callee, e.callee_range, info == result_.calls.end() ? "" : info->second.signature, v.type);

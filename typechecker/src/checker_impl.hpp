@@ -48,6 +48,9 @@ struct Value {
   std::optional<long long> constant;  // integer constant value, when known
   std::optional<Origin> origin;
   std::string name;              // the variable named, for messages
+  // Read-only because it is memory a buffer_reference of this (readonly) block refers to,
+  // whatever `name` is (a reference held in a uniform block is read-only, its memory is not).
+  const StructInfo* readonly_reference = nullptr;
 };
 
 struct Variable {
@@ -121,6 +124,9 @@ class Checker {
   void declare_builtin_variables();
   // The stages that have built-in `name` when the current stage does not ("vertex and geometry"), else empty.
   std::string stages_owning_builtin(const std::string& name) const;
+  // The extensions that bring built-in variable `name` to the current stage (builtin_variables.def's
+  // BUILTIN_VARIABLE_WITH, "GL_A GL_B"), else empty.
+  std::string builtin_variable_extensions(const std::string& name) const;
   void record_interface(const ast::TypeQualifiers& q, const std::string& name, const std::string& block, const Type& t,
                         SourceRange range, const ast::Node* decl);
 

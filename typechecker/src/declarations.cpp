@@ -14,13 +14,27 @@ struct BuiltinVariableEntry {
   const char* name;
   const char* type;
   bool writable;
+  const char* extensions;  // "": none needed; else any one of these (space-separated)
 };
 
 constexpr BuiltinVariableEntry kBuiltinVariables[] = {
-#define BUILTIN_VARIABLE(stages, name, type, writable) {stages, #name, type, writable},
+#define BUILTIN_VARIABLE(stages, name, type, writable) {stages, #name, type, writable, ""},
+#define BUILTIN_VARIABLE_WITH(stages, name, type, writable, extensions) {stages, #name, type, writable, extensions},
 #include "builtin_variables.def"
+#undef BUILTIN_VARIABLE_WITH
 #undef BUILTIN_VARIABLE
 };
+
+// Whether one of `extensions` (space-separated) is enabled; true when the language is unknown.
+bool any_enabled(std::string_view extensions, const LanguageLevel* level) {
+  if (!level) return true;
+  while (!extensions.empty()) {
+    const std::size_t space = extensions.find(' ');
+    if (level->extension_enabled(extensions.substr(0, space))) return true;
+    extensions = space == std::string_view::npos ? std::string_view() : extensions.substr(space + 1);
+  }
+  return false;
+}
 
 Type parse_simple_type(std::string_view text) {
   bool array = false;
@@ -125,6 +139,7 @@ void Checker::declare_builtin_variables() {
   const char letter = stage_letter(options_.stage);
   for (const BuiltinVariableEntry& e : kBuiltinVariables) {
     if (letter != '*' && !std::strchr(e.stages, letter)) continue;
+    if (*e.extensions && letter != '*' && !any_enabled(e.extensions, language())) continue;
     if (lookup(e.name)) continue;  // listed for several stages
     Variable v;
     v.name = e.name;
@@ -163,6 +178,13 @@ void Checker::declare_builtin_variables() {
   }
 }
 
+std::string Checker::builtin_variable_extensions(const std::string& name) const {
+  const char letter = stage_letter(options_.stage);
+  for (const BuiltinVariableEntry& e : kBuiltinVariables)
+    if (*e.extensions && e.name == name && std::strchr(e.stages, letter)) return e.extensions;
+  return {};
+}
+
 std::string Checker::stages_owning_builtin(const std::string& name) const {
   const char letter = stage_letter(options_.stage);
   if (letter == '*') return {};
@@ -174,7 +196,7 @@ std::string Checker::stages_owning_builtin(const std::string& name) const {
     return true;
   };
   for (const BuiltinVariableEntry& e : kBuiltinVariables)
-    if (e.name == name && !owned_by(e.stages)) return {};
+    if (e.name == name && !*e.extensions && !owned_by(e.stages)) return {};
   // The gl_PerVertex arrays (declare_builtin_variables) are not in the table.
   if ((name == "gl_in" && !owned_by("ceg")) || (name == "gl_out" && !owned_by("c"))) return {};
   return stage_list(owners);
@@ -303,6 +325,10 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       declared = Type::error();
     }
     if (const auto* list = ast::dyn_cast<ast::InitializerList>(decl.initializer)) {
+      if (list->elements.empty() && !declared.array.empty() && declared.array[0] < 0) {  // glslang's rule
+        report(Diagnostic::error(list->range, "an empty initializer '{}' cannot size the unsized array '" + decl.name + "'")
+                   .with_code(code::E_INIT_LIST));
+      }
       initializer_list(*list, declared);
     } else if (decl.initializer) {
       Value init = expr(decl.initializer);
@@ -361,11 +387,12 @@ StructInfo* Checker::buffer_reference_type(const std::string& name) {
 void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
   StructInfo* info = buffer_reference_type(d.block_name);
   info->fields.clear();
+  info->read_only = d.qualifiers.has("readonly");
   for (const ast::VariableDecl* member : d.members)
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
       result_.declarators[&decl] = t;
-      info->fields.push_back({decl.name, t});
+      info->fields.push_back({decl.name, t, member->qualifiers.has("readonly")});
     }
   symbols_.declare_fields(info, d.members);
   validate_block_layouts(d);
@@ -492,6 +519,10 @@ void Checker::statement(const ast::Stmt* s) {
     }
   } pop{written ? &written_statements_ : nullptr};
   const FlowScope flow(*this, s);
+  // [[dependency_length(4)]]: the argument is checked as an expression; what the attribute
+  // asks of it is the driver's (glslang only warns).
+  for (const ast::StatementAttribute& a : s->attributes)
+    if (a.argument) expr(a.argument);
   switch (s->kind) {
     case ast::NodeKind::CompoundStmt:
       push_scope();

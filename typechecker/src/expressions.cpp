@@ -1,6 +1,7 @@
 // Expressions other than operators and calls: names, literals, assignment,
 // members and swizzles, indexing, the conditional operator, initialiser lists.
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -64,6 +65,20 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     return v;
   }
   if (e.name.rfind("gl_", 0) == 0) {
+    if (const std::string extensions = builtin_variable_extensions(e.name); !extensions.empty()) {
+      // Declared in this stage only with an extension (gl_Layer in a vertex shader), which is not enabled.
+      std::string names;
+      for (std::size_t at = 0; at < extensions.size();) {
+        const std::size_t space = std::min(extensions.find(' ', at), extensions.size());
+        names += (names.empty() ? "" : " or ") + extensions.substr(at, space - at);
+        at = space + 1;
+      }
+      const std::string first = extensions.substr(0, extensions.find(' '));
+      report(Diagnostic::error(e.range, "'" + e.name + "' in " + stage_name(options_.stage) + " shaders requires " + names)
+                 .with_code(code::E_VERSION)
+                 .with_hint("enable it with '#extension " + first + " : enable'"));
+      return error_value(e.range);
+    }
     if (const std::string owners = stages_owning_builtin(e.name); !owners.empty()) {
       report(Diagnostic::error(e.range, "'" + e.name + "' is not available in " + stage_name(options_.stage) + " shaders")
                  .with_code(code::E_STAGE_BUILTIN)
@@ -163,8 +178,10 @@ Value Checker::unary(const ast::UnaryExpr& e) {
       break;
     default:  // ++ and --
       if (!v.lvalue || v.read_only) {
-        report(Diagnostic::error(e.operand->range, v.lvalue ? "cannot modify read-only variable '" + v.name + "'"
-                                                            : "expression is not assignable")
+        report(Diagnostic::error(e.operand->range, v.readonly_reference ? "cannot modify readonly memory of the buffer_reference block '" +
+                                                                              v.readonly_reference->name + "'"
+                                                   : v.lvalue ? "cannot modify read-only variable '" + v.name + "'"
+                                                              : "expression is not assignable")
                    .with_code(code::E_NOT_ASSIGNABLE));
         return error_value(e.range);
       }
@@ -269,13 +286,16 @@ Value Checker::assign(const ast::AssignExpr& e) {
   if (!lhs.lvalue || lhs.read_only) {
     std::string message = "expression is not assignable";
     const std::string target = member_path(e.lhs, lhs.name);
-    if (lhs.lvalue)
+    if (lhs.readonly_reference)
+      message = "cannot assign to '" + target + "': it is readonly memory of the buffer_reference block '" +
+                lhs.readonly_reference->name + "'";
+    else if (lhs.lvalue)
       message = target == lhs.name ? "cannot assign to read-only variable '" + lhs.name + "'"
                                    : "cannot assign to '" + target + "': '" + lhs.name + "' is a read-only variable";
     Diagnostic d = Diagnostic::error(e.lhs->range, message).with_code(code::E_NOT_ASSIGNABLE);
     std::optional<Origin> origin = lhs.origin;  // a member's value has none: the note is the instance's declaration
     if (const Variable* var = origin || target == lhs.name ? nullptr : lookup(lhs.name); var && var->range.valid()) origin = var->origin;
-    if (origin && lhs.lvalue) d.with_note(Diagnostic::note(origin->range, origin->text));
+    if (origin && lhs.lvalue && !lhs.readonly_reference) d.with_note(Diagnostic::note(origin->range, origin->text));
     report(std::move(d));
     return error_value(e.range);
   }
@@ -458,6 +478,13 @@ Value Checker::member(const ast::MemberExpr& e) {
       if (f.name == e.member) {
         symbols_.use_field(t.structure, f.name, e.member_range, f.type);
         out.type = f.type;
+        if (t.structure->buffer_reference) {
+          // The reference may be read-only (a uniform's member, a const); the memory it
+          // refers to is writable unless its block or this member says readonly.
+          out.lvalue = true;
+          out.read_only = t.structure->read_only || f.read_only;
+          out.readonly_reference = out.read_only ? t.structure : nullptr;
+        }
         return out;
       }
     }
@@ -536,6 +563,11 @@ Value Checker::initializer_list(const ast::InitializerList& e, const Type& expec
       break;
     }
     if (const auto* nested = ast::dyn_cast<ast::InitializerList>(e.elements[i])) {
+      if (nested->elements.empty()) {  // glslang: "wrong number of structure members"
+        report(Diagnostic::error(nested->range, "an empty initializer '{}' initializes a whole variable, not an element of a list")
+                   .with_code(code::E_INIT_LIST));
+        continue;
+      }
       initializer_list(*nested, *want);
       continue;
     }

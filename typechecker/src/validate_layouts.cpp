@@ -389,6 +389,9 @@ class LayoutRules {
     if (!block && !(atomic && name == "offset") && !(standalone() && name == "offset" && site_.storage == "uniform"))
       return fail(id.name_range, "layout '" + name + "' applies to members of uniform and buffer blocks" +
                                      (name == "offset" ? std::string(" and to atomic counters") : ""));
+    // The parser leaves offset from 4.20 on to this check: an atomic counter's is 4.20's, any other 4.40's.
+    if (const LanguageLevel* level = c_.language(); level && name == "offset" && !atomic && !level->es && level->version >= 420)
+      if (std::string need = layout_id_requirement("offset", *level); !need.empty()) return fail(id.name_range, need, code::E_VERSION);
     if (name == "align" && value && (*value == 0 || (*value & (*value - 1)) != 0))
       return fail(id.value->range, "layout 'align' must be a power of two, not " + std::to_string(*value));
     return true;

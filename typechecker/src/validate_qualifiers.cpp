@@ -126,9 +126,10 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
   if (d.type && d.type->form == ast::TypeSpecifier::Form::Struct && d.type->struct_decl)
     validate_struct_members(*d.type->struct_decl);
   if (!global) {
-    // GLSL 4.60 §4.3: local variables take only `const` (and precision, precise).
+    // GLSL 4.60 §4.3: local variables take only `const` (and precision, precise); GL_EXT_nonuniform_qualifier
+    // adds `nonuniformEXT` (its keyword exists only with the extension).
     for (const ast::Qualifier& x : q.list) {
-      const bool allowed = x.word == "const" || x.kind == ast::QualifierKind::Precision ||
+      const bool allowed = x.word == "const" || x.word == "nonuniformEXT" || x.kind == ast::QualifierKind::Precision ||
                            x.kind == ast::QualifierKind::Precise ||
                            (x.kind == ast::QualifierKind::Memory && allows(kBindlessGate));  // image handles in locals
       if (allowed) continue;

@@ -451,5 +451,43 @@ TEST(Validate, BarrierAndInterlockPlacement) {
             Messages{"error: 'beginInvocationInterlockARB()' may be called only outside control flow (if, loops, switch)"});
 }
 
+// Issue 46: built-ins an extension brings to a stage, and memory written through references.
+TEST(Validate, LayerAndViewportIndexFromVertexShadersWithAnExtension) {
+  for (const char* e : {"GL_ARB_shader_viewport_layer_array", "GL_NV_viewport_array2"}) {
+    EXPECT_EQ(vert("void main() { gl_Layer = 1; gl_ViewportIndex = 2; }", {450, false, {e}}), Messages{}) << e;
+    EXPECT_EQ(errors("layout(triangles) in; void main() { gl_Layer = 1; gl_ViewportIndex = 2; }", Stage::tess_evaluation,
+                     {450, false, {e}}),
+              Messages{})
+        << e;
+  }
+  // Mesa's AMD extensions: one variable each, vertex shaders only.
+  EXPECT_EQ(vert("void main() { gl_Layer = 1; }", {450, false, {"GL_AMD_vertex_shader_layer"}}), Messages{});
+  EXPECT_EQ(vert("void main() { gl_ViewportIndex = 1; }", {450, false, {"GL_AMD_vertex_shader_layer"}}),
+            Messages{"error: 'gl_ViewportIndex' in vertex shaders requires GL_ARB_shader_viewport_layer_array or "
+                     "GL_NV_viewport_array2"});
+  EXPECT_EQ(vert("void main() { gl_Layer = 1; }"),
+            Messages{"error: 'gl_Layer' in vertex shaders requires GL_ARB_shader_viewport_layer_array or GL_NV_viewport_array2"});
+  EXPECT_EQ(errors("layout(vertices = 3) out; void main() { gl_Layer = 1; }", Stage::tess_control,
+                   {450, false, {"GL_ARB_shader_viewport_layer_array"}}),
+            Messages{"error: 'gl_Layer' is not available in tessellation control shaders"});
+}
+
+TEST(Validate, MemoryReachedThroughAReadOnlyReferenceIsWritable) {
+  const At references{460, false, {"GL_EXT_buffer_reference"}};
+  const std::string blocks =
+      "layout(buffer_reference) buffer Counts { uint v[]; readonly uint fixed_count; };\n"
+      "layout(buffer_reference) readonly buffer Frozen { uint v[]; };\n"
+      "uniform Refs { Counts counts; Frozen frozen; } refs;\n";
+  auto comp = [&](const std::string& body) { return errors(blocks + "void main() { " + body + " }", Stage::compute, references); };
+  EXPECT_EQ(comp("refs.counts.v[0] = 1u; refs.counts.v[1]++; atomicAdd(refs.counts.v[2], 1u);"), Messages{});
+  EXPECT_EQ(comp("refs.counts.fixed_count = 1u;"),
+            Messages{"error: cannot assign to 'refs.counts.fixed_count': it is readonly memory of the buffer_reference block "
+                     "'Counts'"});
+  EXPECT_EQ(comp("Frozen f = refs.frozen; f.v[0] = 1u;"),
+            Messages{"error: cannot assign to 'f.v[0]': it is readonly memory of the buffer_reference block 'Frozen'"});
+  EXPECT_EQ(comp("refs.counts = Counts(refs.frozen);"),
+            Messages{"error: cannot assign to 'refs.counts': 'refs' is a read-only variable"});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -42,6 +42,8 @@ enum class LanguageFeature : std::uint8_t {
   arrays_of_arrays,   // float a[2][3]
   global_in_out,      // `in` / `out` on global variables (1.10 has attribute and varying)
   integer_operators,  // % << >> & | ^ ~ and their assignments
+  control_flow_attributes,  // [[unroll]] for (...) (GL_EXT_control_flow_attributes only)
+  null_initializer,         // T x = {}; (GL_EXT_null_initializer only)
 };
 
 // The language a shader is written in: its #version and the extensions its

@@ -515,9 +515,21 @@ struct EmptyDecl : Decl {
 
 // ----------------------------------------------------------------- statements
 
+// `[[unroll]]`, `[[dependency_length(4)]]`: an attribute of GL_EXT_control_flow_attributes,
+// written before a loop, an if or a switch.
+struct StatementAttribute {
+  std::string name;
+  SourceRange name_range;
+  Expr* argument = nullptr;  // the constant of `name(argument)`, or none
+};
+
 struct Stmt : Node {
   using Node::Node;
   static bool classof(NodeKind k) { return k >= NodeKind::CompoundStmt && k <= NodeKind::ReturnStmt; }
+  // Only on IfStmt, SwitchStmt, WhileStmt, DoStmt and ForStmt; `range` starts at the keyword,
+  // `attributes_range` covers `[[ ... ]]`.
+  std::vector<StatementAttribute> attributes;
+  SourceRange attributes_range;
 };
 
 struct CompoundStmt : Stmt {

@@ -140,6 +140,7 @@ struct Type {
 struct StructField {
   std::string name;
   Type type;
+  bool read_only = false;  // a `readonly` member of a buffer_reference block
 };
 
 struct StructInfo {
@@ -148,6 +149,7 @@ struct StructInfo {
   // GL_EXT_buffer_reference: a `layout(buffer_reference) buffer B { … };`
   // block, whose name is the type of a 64-bit reference to such memory.
   bool buffer_reference = false;
+  bool read_only = false;  // `layout(buffer_reference) readonly buffer B`: the memory it refers to
 };
 
 // Same GLSL type (shape, scalar, sizes, arrays, struct, opaque name), ignoring annotations.
