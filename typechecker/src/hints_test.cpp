@@ -124,6 +124,9 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"normal_through_the_linear_part", kModel, "vec3 nW = @;", "mat3(model) * nObj",
                  "carry it by the inverse transpose", "transpose(inverse(mat3(model))) * nObj",
                  "transpose(inverse(mat3(model))) * nObj"},
+        HintCase{"ambient_of_the_albedo", "uniform spectrum<1> albedo; uniform spectrum<radiance> ambientLight;",
+                 "spectrum<radiance> ambient = @;", "0.03 * albedo", "the light it reflects is missing",
+                 "ambientLight * albedo", "0.03 * ambientLight * albedo"},
         HintCase{"point_with_w_zero", kModel, "vec3 pW = (@).xyz;", "model * vec4(pObj, 0.0)", "for a point",
                  "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
