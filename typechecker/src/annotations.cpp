@@ -360,17 +360,23 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
         return Type::error();
       }
       t = *base;
-      if (spec->annotation && t.shape == Shape::matrix && t.rows == 3 && t.columns == 3 && annotation_args >= 2) {
+      if (spec->annotation && t.shape == Shape::matrix && t.rows == t.columns && (t.rows == 3 || t.rows == 4) &&
+          annotation_args >= 2) {
         // mat3<A, B>: a linear map from A to B; mat3<A, B, rigid>: a rotation (a frame such as TBN);
-        // mat3<A, B, normal>: the normal matrix, carrying normals from A to B.
+        // mat3<A, B, normal>: the normal matrix, carrying normals from A to B. mat4<…> likewise
+        // (mat4<A, B> is map<A, B>; mat4<A, B, normal> an uploaded 4×4 normal matrix).
         const auto& args = spec->annotation->args;
         if (!arity(2, 3, "two spaces and optionally 'rigid' or 'normal'")) return Type::error();
+        if (t.scalar != Scalar::float_) {
+          report(Diagnostic::error(spec->annotation->range, "only float matrices carry maps").with_code(code::E_NOT_ANNOTATABLE));
+          return Type::error();
+        }
         if (!space_arg(args[0], t.from) || !space_arg(args[1], t.to)) return Type::error();
         t.geometry = Geometry::map;
         if (args.size() == 3) {
           const auto* word = ast::dyn_cast<ast::DimName>(args[2]);
           if (!word || (word->name != "rigid" && word->name != "normal")) {
-            report(Diagnostic::error(args[2]->range, "expected 'rigid' or 'normal' after the spaces of a mat3")
+            report(Diagnostic::error(args[2]->range, "expected 'rigid' or 'normal' after the spaces of a " + spec->name)
                        .with_code(code::E_ANNOTATION_ARITY));
             return Type::error();
           }

@@ -127,6 +127,8 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"ambient_of_the_albedo", "uniform spectrum<1> albedo; uniform spectrum<radiance> ambientLight;",
                  "spectrum<radiance> ambient = @;", "0.03 * albedo", "the light it reflects is missing",
                  "ambientLight * albedo", "0.03 * ambientLight * albedo"},
+        HintCase{"regularised_falloff", "uniform float<length> d;", "float<1> f = @;", "1.0 / (1.0 + d * d)",
+                 "the sum would change with the unit", "1.0 * square_meter", "square_meter / (1.0 * square_meter + d * d)"},
         HintCase{"point_with_w_zero", kModel, "vec3 pW = (@).xyz;", "model * vec4(pObj, 0.0)", "for a point",
                  "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });

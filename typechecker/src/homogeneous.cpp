@@ -101,7 +101,9 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
                                    : ": a transposed map has no translation to give a point"),
                   w == 0 ? "write vec4(p, 1.0) for a point (w = 0 is for vectors, directions and normals)" : row_hint,
                   code::E_KIND_MISMATCH);
-  if (x.geometry != Geometry::point && w == 1)
+  // A direction given w = 1 under a projection is the point at that offset from the eye: the sky-box idiom.
+  const bool sky_box = m.geometry == Geometry::projmap && !row && !normal;
+  if (x.geometry != Geometry::point && w == 1 && !sky_box)
     return reject(cannot + ": a " + kind + " needs w = 0, and w = 1 adds the map's translation to it",
                   "write vec4(v, 0.0) for a " + kind + " (w = 1 is for points)", code::E_KIND_MISMATCH);
   if (!consistent(x.from, source))

@@ -219,7 +219,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     const bool cosine_a = cosine_as_number(db, da), cosine_b = cosine_as_number(da, db);  // 1 - cos θ is a number
     if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b) {
       operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
-                       operand_hint(da, db, rhs.range), code::E_DIMENSION_MISMATCH);
+                       literal_sum_hint(lhs, rhs).value_or(operand_hint(da, db, rhs.range)), code::E_DIMENSION_MISMATCH);
       return error_value(range);
     }
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
@@ -256,6 +256,22 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (op == ast::BinaryOp::Div && y != 0.0) out.number = x / y;
   }
   return out;
+}
+
+// A number added to a quantity (`1.0 + d * d`, a regularised falloff) means that number of
+// some unit: the sum changes with the unit the rest is in, so the number needs its unit.
+std::optional<std::string> Checker::literal_sum_hint(const Value& lhs, const Value& rhs) const {
+  const Value* number = lhs.literal && !lhs.zero ? &lhs : rhs.literal && !rhs.zero ? &rhs : nullptr;
+  const Value* quantity = number == &lhs ? &rhs : &lhs;
+  if (number == nullptr || quantity->literal) return std::nullopt;
+  const DimensionRegistry& reg = result_.registry;
+  const DimSlot d = value_dimension(quantity->type, reg);
+  if (!d.is_known() || d.value.is_dimensionless() || reg.has_unit_factors(d.value)) return std::nullopt;
+  for (const Unit& unit : reg.units())
+    if (unit.dimension == d.value && DimensionRegistry::same_scale(unit.scale, 1.0))
+      return "a plain number beside " + reg.format(d.value) + " means that many of some unit: the sum would change with the unit; give it "
+             "its unit, " + operand_text(*number, "x") + " * " + unit.name;
+  return "a plain number beside " + reg.format(d.value) + " means that many of some unit: give it the dimension " + reg.format(d.value);
 }
 
 Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape,
