@@ -21,6 +21,7 @@
 // constructor is marked unavailable with the report's words instead.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 
 #include "safegi/typed/config.hpp"
@@ -44,6 +45,7 @@ template <class Map, class Argument> struct map_applied_to_wrong_space;  // a ma
 template <class Outer, class Inner> struct maps_do_not_meet;  // maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C>
 template <class Operation, class Left, class Right> struct representation_mismatch;  // float and double quantities do not mix: convert one, from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real
 template <class Space> struct cannot_add_points;  // point + point has no meaning: subtract points to get a vector, or blend them with lerp / barycentric
+template <class Kind, class SpaceOrDimension> struct no_numeric_limits;  // a point, vector, direction, normal or spectrum has no numeric limits (std::numeric_limits would answer zero): take a component's, std::numeric_limits<quantity<D>>::infinity(), and build the value from it
 template <class Expected, class Given, class Space> struct wrong_geometric_kind;  // kinds transform differently, so convert explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v
 // clang-format on
 
@@ -89,6 +91,7 @@ struct direction;
 struct normal;
 struct hpoint;
 struct ray;
+struct spectrum;
 }  // namespace kind
 
 /// Labels for the spaces of map reports, so two mentions of one space say which is which.
@@ -166,6 +169,26 @@ using in_words = typename detail::words_in<D, detail::vocabulary>::type;
 /// missing cosine, solid_angle or length^2 a pdf in another measure.
 template <dimension_type L, dimension_type R>
 using ratio_in_words = in_words<dim::quotient<L, R>>;
+}  // namespace safegi
+
+namespace safegi {
+namespace diagnose {
+/// What std::numeric_limits says of a geometric kind: nothing. The primary template would
+/// answer point<S>() (the origin) for infinity(); each question is a report instead.
+template <class Kind, class Of>
+struct refused_numeric_limits {
+  static constexpr bool is_specialized = false;
+  static diagnose::no_numeric_limits<Kind, Of> min() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> max() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> lowest() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> epsilon() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> round_error() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> infinity() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> quiet_NaN() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> signaling_NaN() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> denorm_min() noexcept;
+};
+}  // namespace diagnose
 }  // namespace safegi
 
 // A converting constructor that only mistakes select is declared

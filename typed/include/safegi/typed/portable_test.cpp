@@ -77,4 +77,18 @@ TEST(Portable, AnglesAndUnits) {
   EXPECT_NEAR(sg::raw(sg::cos_theta(frame.to_local(sg::direction<world>(0.6f, 0, 0.8f)))), 0.8f, 1e-6f);
   EXPECT_EQ(sg::describe<sg::spectrum<radiance>>().kind, sg::type_kind::spectrum);
 }
+// std::numeric_limits of a quantity is the representation's in both modes (checked, it
+// was the primary template's zero before: every ray reaching infinity() missed).
+TEST(Portable, NumericLimitsOfQuantities) {
+  using length = sg::quantity<sg::dim::length>;
+  const length reach = std::numeric_limits<length>::infinity();
+  EXPECT_EQ(sg::raw(reach), std::numeric_limits<sg::real>::infinity());
+  EXPECT_TRUE(sg::isinf(reach));
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::max()), std::numeric_limits<sg::real>::max());
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::lowest()), std::numeric_limits<sg::real>::lowest());
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::epsilon()), std::numeric_limits<sg::real>::epsilon());
+  EXPECT_TRUE(sg::isnan(std::numeric_limits<sg::quantity<sg::dim::radiance>>::quiet_NaN()));
+  EXPECT_LT(1.0f * sg::units::kilometre, reach);
+}
+
 }  // namespace

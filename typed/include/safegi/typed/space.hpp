@@ -20,6 +20,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -677,7 +678,24 @@ constexpr basic_point<S> dehomogenize(basic_hpoint<S> h) {
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE
+
 }  // namespace safegi
+
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_point<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::point, S> {};
+template <class S, class D>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_vector<S, D>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::vector, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_direction<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::direction, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_normal<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::normal, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_hpoint<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::hpoint, S> {};
 
 /// Declares a coordinate space in one line: SAFEGI_SPACE(world);
 #define SAFEGI_SPACE(name) \
