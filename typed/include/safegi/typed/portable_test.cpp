@@ -91,4 +91,17 @@ TEST(Portable, NumericLimitsOfQuantities) {
   EXPECT_LT(1.0f * sg::units::kilometre, reach);
 }
 
+// Unit vectors with each other and with vectors (the shader language's rules) compile
+// and give the same numbers in both modes.
+TEST(Portable, UnitVectorArithmetic) {
+  const sg::normal<world> n(0.0f, 0.0f, 1.0f);
+  const sg::normal<world> ng(0.0f, 1.0f, 0.0f);
+  const sg::direction<world> w(1.0f, 0.0f, 0.0f);
+  const sg::vector<world, sg::dim::dimensionless> bent = n - ng;
+  EXPECT_EQ(sg::raw(bent + w), glm::vec3(1, -1, 1));
+  EXPECT_EQ(sg::raw(sg::cross(n, w)), glm::vec3(0, 1, 0));
+  const sg::vector<world> v(0.0f * sg::units::metre, 2.0f * sg::units::metre, 0.0f * sg::units::metre);
+  EXPECT_EQ(sg::raw(sg::cross(v, w)), glm::vec3(0, 0, -2));
+}
+
 }  // namespace

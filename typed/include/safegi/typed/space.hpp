@@ -15,7 +15,10 @@
 //   dot(normal, direction)        = quantity<dim::proj>  (the rendering equation's cosine)
 //   dot(normal, normal)           = dimensionless
 //   dot(direction|normal, vector<S,D>) = quantity<D>     (the component along the unit vector)
-//   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
+//   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S, 1>
+//   cross(vector<S,D>, direction or normal) = vector<S, D> (either order)
+// Sums of unit vectors (direction or normal ± direction or normal) are vector<S, 1>;
+// vector<S, D> ± a unit vector needs D dimensionless (as in the shader language).
 #pragma once
 
 #include <cstdio>
@@ -473,6 +476,110 @@ template <class S, class S2>
 constexpr basic_vector<S, dim::dimensionless> operator-(basic_direction<S> a, basic_direction<S2> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
+// Sums, differences and cross products of unit vectors with each other and with vectors,
+// as the shader language has them (docs/language.md, "Geometric operations": any two of
+// vector, direction and normal in one space, dimensions consistent, give a vector).
+namespace detail {
+template <class X>
+struct unit_vector_traits {
+  static constexpr bool value = false;
+};
+template <class S>
+struct unit_vector_traits<basic_direction<S>> {
+  static constexpr bool value = true;
+  static constexpr bool is_direction = true;
+  using space = S;
+};
+template <class S>
+struct unit_vector_traits<basic_normal<S>> {
+  static constexpr bool value = true;
+  static constexpr bool is_direction = false;
+  using space = S;
+};
+/// A direction or a normal: unit length, dimensionless.
+template <class X>
+concept unit_vector = unit_vector_traits<X>::value;
+template <unit_vector U>
+using space_of_unit = typename unit_vector_traits<U>::space;
+/// Two unit vectors, at least one a normal (direction ± direction is above).
+template <class A, class B>
+concept unit_vector_pair_with_normal =
+    unit_vector<A> && unit_vector<B> && !(unit_vector_traits<A>::is_direction && unit_vector_traits<B>::is_direction);
+}  // namespace detail
+
+/// normal ± normal, normal ± direction, direction ± normal: a dimensionless vector (an
+/// averaged or bisecting normal before normalize, n - ng, the half vector ω + n).
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::plus, detail::space_of_unit<A>, detail::space_of_unit<B>> operator+(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> operator+(A a, B b) {
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::minus, detail::space_of_unit<A>, detail::space_of_unit<B>> operator-(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> operator-(A a, B b) {
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+
+/// vector<S, D> ± direction or normal, and direction or normal ± vector<S, D>: D must be
+/// dimensionless, as a unit vector is; a displacement plus a unit vector lacks a length
+/// (v + n where v + n * epsilon was meant).
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::plus, S, detail::space_of_unit<U>> operator+(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<dim::dimensionless>,
+                             ratio_in_words<D, dim::dimensionless>>
+operator+(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator+(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, v.raw_value() + u.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::minus, S, detail::space_of_unit<U>> operator-(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<dim::dimensionless>,
+                             ratio_in_words<D, dim::dimensionless>>
+operator-(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator-(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, v.raw_value() - u.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::plus, detail::space_of_unit<U>, S> operator+(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<dim::dimensionless>, in_words<D>,
+                             ratio_in_words<dim::dimensionless, D>>
+operator+(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator+(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, u.raw_value() + v.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::minus, detail::space_of_unit<U>, S> operator-(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<dim::dimensionless>, in_words<D>,
+                             ratio_in_words<dim::dimensionless, D>>
+operator-(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator-(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, u.raw_value() - v.raw_value()};
+}
+
 template <class S, class S2>
 diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_direction<S>, basic_direction<S2>);
 template <class S, class S2>
@@ -516,6 +623,32 @@ diagnose::space_mismatch<diagnose::op::cross, S, S2> cross(basic_direction<S>, b
 template <class S, class S2>
   requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::dimensionless> cross(basic_direction<S> a, basic_direction<S2> b) {
+  return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
+}
+/// cross of a vector<S, D> and a direction or normal (either order): vector<S, D>; of two
+/// unit vectors at least one of which is a normal: a dimensionless vector (a tangent
+/// from a normal and a direction, cross(n, w)).
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::cross, S, detail::space_of_unit<U>> cross(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+constexpr basic_vector<S, D> cross(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, glm::cross(v.raw_value(), u.raw_value())};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::cross, detail::space_of_unit<U>, S> cross(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+constexpr basic_vector<S, D> cross(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::cross(u.raw_value(), v.raw_value())};
+}
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::cross, detail::space_of_unit<A>, detail::space_of_unit<B>> cross(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> cross(A a, B b) {
   return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
 }
 /// The projected-cosine factor n·ω: the only way to get a quantity<dim::proj>.
