@@ -8,6 +8,7 @@
 #include "safegi/typed/dimension_name.hpp"
 #include "safegi/typed/frame.hpp"
 #include "safegi/typed/map.hpp"
+#include "safegi/typed/orientation.hpp"
 #include "safegi/typed/print.hpp"
 #include "safegi/typed/quantity.hpp"
 #include "safegi/typed/radiometry.hpp"

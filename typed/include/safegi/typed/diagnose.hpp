@@ -45,6 +45,10 @@ template <class Map, class Argument> struct map_applied_to_wrong_space;  // a ma
 template <class Outer, class Inner> struct maps_do_not_meet;  // maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C>
 template <class Operation, class Left, class Right> struct representation_mismatch;  // float and double quantities do not mix: convert one, from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real
 template <class Space> struct cannot_add_points;  // point + point has no meaning: subtract points to get a vector, or blend them with lerp / barycentric
+template <class Function, class Space> struct not_a_frame_space;  // cos_theta and the other polar angles read a frame's local space, where the normal is +z: take frame.to_local(w) first, or dot(n, w) in Space; declare local spaces SAFEGI_NORMAL_FRAME_SPACE(name) or SAFEGI_TANGENT_FRAME_SPACE(name)
+template <class Function, class Space> struct azimuth_is_arbitrary;  // a frame built from a normal alone has an arbitrary azimuth, so it is no tangent frame: build it with frame<S, L>::from_tangent(dpdu, n); cos_delta_phi compares azimuths in any frame
+template <class Given, class Wanted, class Value> struct orientation_mismatch;  // the value points the other way relative to the shaded point: q - P is away from P, P - q toward it; negate it (-w) if the other one was meant
+template <class Wanted, class Value> struct orientation_unknown;  // this parameter needs an orientation: derive the value from the shaded point (q - shaded(p)) or state one, as_away(x) / as_toward(x)
 template <class Kind, class SpaceOrDimension> struct no_numeric_limits;  // a point, vector, direction, normal or spectrum has no numeric limits (std::numeric_limits would answer zero): take a component's, std::numeric_limits<quantity<D>>::infinity(), and build the value from it
 template <class Expected, class Given, class Space> struct wrong_geometric_kind;  // kinds transform differently, so convert explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v
 // clang-format on
@@ -80,6 +84,14 @@ struct reflect;
 struct barycentric;
 struct to_local;
 struct from_local;
+struct cos_theta;
+struct abs_cos_theta;
+struct sin_theta;
+struct sin2_theta;
+struct cos_phi;
+struct sin_phi;
+struct cos_delta_phi;
+struct from_normal;
 }  // namespace op
 
 /// Geometric kinds.
@@ -205,6 +217,10 @@ struct refused_numeric_limits {
 #endif
 
 namespace safegi {
+namespace space_detail {
+struct frame_space_marker;
+struct tangent_frame_marker;
+}  // namespace space_detail
 inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
 
@@ -221,6 +237,16 @@ template <class D>
 concept angle = !is_checked || std::is_same_v<D, dim::angle>;
 template <class D>
 concept even_exponents = !is_checked || dim::has_root<D, 2>;
+/// A frame's local space (SAFEGI_NORMAL_FRAME_SPACE or SAFEGI_TANGENT_FRAME_SPACE).
+template <class S>
+concept frame_space = !is_checked || std::is_base_of_v<::safegi::space_detail::frame_space_marker, S>;
+/// A tangent frame's local space (+x along dp/du).
+template <class S>
+concept tangent_frame_space = !is_checked || std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>;
+/// The local space of a frame built from a normal alone: a frame space, not a tangent one.
+template <class S>
+concept normal_frame_space =
+    !is_checked || (std::is_base_of_v<::safegi::space_detail::frame_space_marker, S> && !std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>);
 
 }  // namespace rules
 }  // namespace SAFEGI_MODE_NAMESPACE

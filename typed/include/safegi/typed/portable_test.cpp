@@ -104,4 +104,18 @@ TEST(Portable, UnitVectorArithmetic) {
   EXPECT_EQ(sg::raw(sg::cross(v, w)), glm::vec3(0, 0, -2));
 }
 
+// Orientation (opt-in) builds in both modes: unchecked, oriented<O, X> is X.
+float light_facing(sg::oriented<sg::away, sg::direction<world>> lens_to_light, sg::normal<world> n) {
+  return -sg::raw(sg::dot(n, lens_to_light));
+}
+
+TEST(Portable, OrientedDirectionsToALight) {
+  const sg::point<world> light(0.0f * sg::units::metre, 0.0f * sg::units::metre, 2.0f * sg::units::metre);
+  const sg::shaded_point<world> lens = sg::shaded(sg::point<world>(sg::zero, sg::zero, sg::zero));
+  const sg::oriented<sg::away, sg::direction<world>> wi = sg::normalize(light - lens);
+  EXPECT_EQ(light_facing(wi, sg::normal<world>(0, 0, -1)), 1.0f);
+  EXPECT_EQ(light_facing(-sg::normalize(lens - light), sg::normal<world>(0, 0, -1)), 1.0f);
+  EXPECT_EQ(light_facing(sg::as_away(sg::direction<world>(0, 0, 1)), sg::normal<world>(0, 0, -1)), 1.0f);
+}
+
 }  // namespace

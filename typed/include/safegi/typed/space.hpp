@@ -46,14 +46,43 @@ concept space_type = requires {
   requires std::is_base_of_v<space_tag<S::name>, S>;
 };
 
+namespace space_detail {
+struct frame_space_marker {};
+struct tangent_frame_marker {};
+}  // namespace space_detail
+
+/// The local space of a frame built from a normal alone (frame<S, L>::from_normal): the
+/// normal is +z, and x and y are some orthonormal pair around it: the azimuth is
+/// arbitrary, so it is not the dp/du-aligned tangent frame a normal map or an
+/// anisotropic BSDF needs. cos_theta and the other polar angles read it.
+///   struct shading : safegi::normal_frame_tag<"shading"> {};   or   SAFEGI_NORMAL_FRAME_SPACE(shading);
+template <fixed_string Name>
+struct normal_frame_tag : space_tag<Name>, ::safegi::space_detail::frame_space_marker {};
+/// The local space of a tangent frame (frame<S, L>::from_tangent(dpdu, n)): +z the
+/// normal, +x along dp/du, +y along dp/dv's part orthogonal to both. Normal-map texels
+/// and anisotropic roughness live here; from_normal refuses it.
+///   struct tangent : safegi::tangent_frame_tag<"tangent"> {};  or   SAFEGI_TANGENT_FRAME_SPACE(tangent);
+template <fixed_string Name>
+struct tangent_frame_tag : space_tag<Name>, ::safegi::space_detail::frame_space_marker, ::safegi::space_detail::tangent_frame_marker {};
+
+/// A frame's local space (either kind): the normal is +z.
+template <class S>
+inline constexpr bool is_frame_space = std::is_base_of_v<::safegi::space_detail::frame_space_marker, S>;
+/// A tangent frame's local space: +x is dp/du.
+template <class S>
+inline constexpr bool is_tangent_frame_space = std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>;
+
 /// Spaces most renderers need; declare your own the same way.
 namespace spaces {
 struct world : space_tag<"world"> {};
 struct object : space_tag<"object"> {};
 struct camera : space_tag<"camera"> {};
 struct light : space_tag<"light"> {};
-/// The local shading frame: the surface normal is +z.
-struct shading : space_tag<"shading"> {};
+/// The local shading frame built from the shading normal alone: the normal is +z, the
+/// azimuth arbitrary (frame<S>::from_normal).
+struct shading : normal_frame_tag<"shading"> {};
+/// The local space of a tangent frame: +z the normal, +x along dp/du (frame::from_tangent).
+struct tangent : tangent_frame_tag<"tangent"> {};
 struct clip : space_tag<"clip"> {};
 struct ndc : space_tag<"ndc"> {};
 struct raster : space_tag<"raster"> {};
@@ -148,7 +177,10 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
  public:
   using space_type = S;
   constexpr basic_point() = default;
-  constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
+  /// Coordinates in S: a claim that they are S's (nothing checks it), so it is explicit and
+  /// every claim spells its space where it is made: point<S>(x, y, z). from_raw<point<S>>(v)
+  /// is the other (for data in reference units). Grep "point<" and "from_raw<" for them.
+  constexpr explicit basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
       : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_point(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   // Conversions that are always mistakes; they exist so the error names both sides.
@@ -183,7 +215,9 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   using space_type = S;
   using dimension_type = D;
   constexpr basic_vector() = default;
-  constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(vec3_rep(raw(x), raw(y), raw(z))) {}
+  /// Components in S: a claim of the space, explicit like point<S>(x, y, z).
+  constexpr explicit basic_vector(quantity<D> x, quantity<D> y, quantity<D> z)
+      : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2, class E>
     requires(!std::is_same_v<S2, S>)
@@ -833,3 +867,9 @@ struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_hpoint<S>>
 /// Declares a coordinate space in one line: SAFEGI_SPACE(world);
 #define SAFEGI_SPACE(name) \
   struct name : ::safegi::space_tag<#name> {}
+/// Declares the local space of frames built from a normal alone (arbitrary azimuth).
+#define SAFEGI_NORMAL_FRAME_SPACE(name) \
+  struct name : ::safegi::normal_frame_tag<#name> {}
+/// Declares the local space of tangent frames (+x along dp/du).
+#define SAFEGI_TANGENT_FRAME_SPACE(name) \
+  struct name : ::safegi::tangent_frame_tag<#name> {}
