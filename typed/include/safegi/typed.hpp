@@ -7,6 +7,7 @@
 #include "safegi/typed/dimension.hpp"
 #include "safegi/typed/dimension_name.hpp"
 #include "safegi/typed/frame.hpp"
+#include "safegi/typed/geometric_normal.hpp"
 #include "safegi/typed/map.hpp"
 #include "safegi/typed/orientation.hpp"
 #include "safegi/typed/print.hpp"

@@ -49,6 +49,7 @@ template <class Function, class Space> struct not_a_frame_space;  // cos_theta a
 template <class Function, class Space> struct azimuth_is_arbitrary;  // a frame built from a normal alone has an arbitrary azimuth, so it is no tangent frame: build it with frame<S, L>::from_tangent(dpdu, n); cos_delta_phi compares azimuths in any frame
 template <class Given, class Wanted, class Value> struct orientation_mismatch;  // the value points the other way relative to the shaded point: q - P is away from P, P - q toward it; negate it (-w) if the other one was meant
 template <class Wanted, class Value> struct orientation_unknown;  // this parameter needs an orientation: derive the value from the shaded point (q - shaded(p)) or state one, as_away(x) / as_toward(x)
+template <class Space> struct shading_normal_as_geometric;  // this needs the true surface's normal: an interpolated or bumped normal leaks light or lets a ray hit the surface it left; face_normal(p0, p1, p2), or geometric(n) for a normal known to be the surface's
 template <class Kind, class SpaceOrDimension> struct no_numeric_limits;  // a point, vector, direction, normal or spectrum has no numeric limits (std::numeric_limits would answer zero): take a component's, std::numeric_limits<quantity<D>>::infinity(), and build the value from it
 template <class Expected, class Given, class Space> struct wrong_geometric_kind;  // kinds transform differently, so convert explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v
 // clang-format on
@@ -92,6 +93,7 @@ struct cos_phi;
 struct sin_phi;
 struct cos_delta_phi;
 struct from_normal;
+struct offset_ray_origin;
 }  // namespace op
 
 /// Geometric kinds.

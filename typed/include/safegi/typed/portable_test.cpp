@@ -118,4 +118,17 @@ TEST(Portable, OrientedDirectionsToALight) {
   EXPECT_EQ(light_facing(sg::as_away(sg::direction<world>(0, 0, 1)), sg::normal<world>(0, 0, -1)), 1.0f);
 }
 
+// Geometric normals (opt-in) build in both modes: unchecked, geometric_normal<S> is normal<S>.
+TEST(Portable, RayOffsetAlongTheGeometricNormal) {
+  const sg::point<world> p0 = sg::from_raw<sg::point<world>>(glm::vec3(0, 0, 0));
+  const sg::point<world> p1 = sg::from_raw<sg::point<world>>(glm::vec3(1, 0, 0));
+  const sg::point<world> p2 = sg::from_raw<sg::point<world>>(glm::vec3(0, 1, 0));
+  const sg::geometric_normal<world> ng = sg::face_normal(p0, p1, p2);
+  const sg::point<world> o = sg::offset_ray_origin(p0, ng, 0.25f * sg::units::metre, sg::direction<world>(0, 0, -1));
+  EXPECT_EQ(sg::raw(o), glm::vec3(0, 0, -0.25f));
+  EXPECT_EQ(sg::raw(sg::offset_ray_origin(p0, sg::geometric(sg::normal<world>(0, 0, 1)), 0.25f * sg::units::metre,
+                                          sg::direction<world>(0, 0, 1))),
+            glm::vec3(0, 0, 0.25f));
+}
+
 }  // namespace
