@@ -15,8 +15,10 @@
 // eps, w) compiled checked and unchecked (GCC 12, -O2, testsuite/zero_overhead's flags)
 // gives bodies of the same length whose instructions are scheduled and allocated
 // differently, also with geometric_normal a sibling of normal instead of a class derived
-// from it; so it is not in the zero-overhead kernel list. Until that is understood, use
-// it where a few instructions do not matter (ray spawning), not in the traversal loop.
+// from it; face_normal alone gives the same instructions in a stack frame 16 bytes larger
+// (GCC keeps a slot for the geometric_normal temporary, as for a named shaded_point). So it
+// is not in the zero-overhead kernel list. Until that is understood, use it where a few
+// instructions do not matter (ray spawning), not in the traversal loop.
 #pragma once
 
 #include <type_traits>
