@@ -18,8 +18,9 @@
 
 namespace safegi::render {
 
-// The Phong lobe's own frame: its axis is the mirror direction.
-struct PhongLobe : space_tag<"phong_lobe"> {};
+// The Phong lobe's own frame: its axis is the mirror direction (built from it alone,
+// so its azimuth is arbitrary: a normal-frame space).
+struct PhongLobe : normal_frame_tag<"phong_lobe"> {};
 
 // What a path carries: radiance (traced from the camera) or importance (from
 // the lights: photons). Refraction compresses radiance by 1/η² but not flux.

@@ -14,8 +14,9 @@
 
 namespace safegi::render {
 
-// The phase function's own frame: its axis is the direction the light was travelling.
-struct PhaseLobe : space_tag<"phase_lobe"> {};
+// The phase function's own frame: its axis is the direction the light was travelling
+// (built from it alone, so its azimuth is arbitrary: a normal-frame space).
+struct PhaseLobe : normal_frame_tag<"phase_lobe"> {};
 
 // Where a ray's free flight through a medium ended before `reach` (the surface
 // it hits, or infinity), or that it got there, and what the path's throughput

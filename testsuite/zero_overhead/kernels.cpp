@@ -57,4 +57,25 @@ float elevation_degrees(sg::direction<world> w) {
   return sg::in(sg::asin(w.z()), sg::units::degree);
 }
 
+// A light's facing factor toward a lens, through the opt-in orientation words: the
+// direction handed to the light is oriented (lens to light), which costs nothing.
+float oriented_light_facing(sg::point<world> lens_position, sg::point<world> light, sg::normal<world> n) {
+  // shaded(p) in place: a named shaded_point local costs GCC 12 a larger stack frame
+  // (orientation.hpp says so), the orientation itself nothing.
+  const sg::oriented<sg::away, sg::direction<world>> lens_to_light = sg::normalize(light - sg::shaded(lens_position));
+  return -sg::raw(sg::dot(n, lens_to_light));
+}
+
+// A tangent frame from dp/du and the azimuth of a direction in it.
+float tangent_azimuth(sg::normal<world> n, sg::vector<world> dpdu, sg::direction<world> w) {
+  const auto tbn = sg::frame<world, sg::spaces::tangent>::from_tangent(dpdu, n);
+  const sg::direction<sg::spaces::tangent> local = tbn.to_local(w);
+  return sg::cos_phi(local) * sg::sin_theta(local);
+}
+
+// A ray's reach clipped by a hit distance, from std::numeric_limits of a quantity.
+sg::quantity<sg::dim::length> clipped_reach(sg::quantity<sg::dim::length> hit, bool found) {
+  return found ? hit : std::numeric_limits<sg::quantity<sg::dim::length>>::infinity();
+}
+
 }  // extern "C"

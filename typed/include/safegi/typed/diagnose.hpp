@@ -21,6 +21,7 @@
 // constructor is marked unavailable with the report's words instead.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 
 #include "safegi/typed/config.hpp"
@@ -44,6 +45,12 @@ template <class Map, class Argument> struct map_applied_to_wrong_space;  // a ma
 template <class Outer, class Inner> struct maps_do_not_meet;  // maps compose only where spaces meet: map<B, C> * map<A, B> gives map<A, C>
 template <class Operation, class Left, class Right> struct representation_mismatch;  // float and double quantities do not mix: convert one, from_raw<quantity<D, double>>(raw(q)), or build both from safegi::real
 template <class Space> struct cannot_add_points;  // point + point has no meaning: subtract points to get a vector, or blend them with lerp / barycentric
+template <class Function, class Space> struct not_a_frame_space;  // cos_theta and the other polar angles read a frame's local space, where the normal is +z: take frame.to_local(w) first, or dot(n, w) in Space; declare local spaces SAFEGI_NORMAL_FRAME_SPACE(name) or SAFEGI_TANGENT_FRAME_SPACE(name)
+template <class Function, class Space> struct azimuth_is_arbitrary;  // a frame built from a normal alone has an arbitrary azimuth, so it is no tangent frame: build it with frame<S, L>::from_tangent(dpdu, n); cos_delta_phi compares azimuths in any frame
+template <class Given, class Wanted, class Value> struct orientation_mismatch;  // the value points the other way relative to the shaded point: q - P is away from P, P - q toward it; negate it (-w) if the other one was meant
+template <class Wanted, class Value> struct orientation_unknown;  // this parameter needs an orientation: derive the value from the shaded point (q - shaded(p)) or state one, as_away(x) / as_toward(x)
+template <class Space> struct shading_normal_as_geometric;  // this needs the true surface's normal: an interpolated or bumped normal leaks light or lets a ray hit the surface it left; face_normal(p0, p1, p2), or geometric(n) for a normal known to be the surface's
+template <class Kind, class SpaceOrDimension> struct no_numeric_limits;  // a point, vector, direction, normal or spectrum has no numeric limits (std::numeric_limits would answer zero): take a component's, std::numeric_limits<quantity<D>>::infinity(), and build the value from it
 template <class Expected, class Given, class Space> struct wrong_geometric_kind;  // kinds transform differently, so convert explicitly: normalize(v), to_direction(n), to_normal(d), dehomogenize(h), p + v
 // clang-format on
 
@@ -78,6 +85,15 @@ struct reflect;
 struct barycentric;
 struct to_local;
 struct from_local;
+struct cos_theta;
+struct abs_cos_theta;
+struct sin_theta;
+struct sin2_theta;
+struct cos_phi;
+struct sin_phi;
+struct cos_delta_phi;
+struct from_normal;
+struct offset_ray_origin;
 }  // namespace op
 
 /// Geometric kinds.
@@ -89,6 +105,7 @@ struct direction;
 struct normal;
 struct hpoint;
 struct ray;
+struct spectrum;
 }  // namespace kind
 
 /// Labels for the spaces of map reports, so two mentions of one space say which is which.
@@ -168,6 +185,26 @@ template <dimension_type L, dimension_type R>
 using ratio_in_words = in_words<dim::quotient<L, R>>;
 }  // namespace safegi
 
+namespace safegi {
+namespace diagnose {
+/// What std::numeric_limits says of a geometric kind: nothing. The primary template would
+/// answer point<S>() (the origin) for infinity(); each question is a report instead.
+template <class Kind, class Of>
+struct refused_numeric_limits {
+  static constexpr bool is_specialized = false;
+  static diagnose::no_numeric_limits<Kind, Of> min() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> max() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> lowest() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> epsilon() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> round_error() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> infinity() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> quiet_NaN() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> signaling_NaN() noexcept;
+  static diagnose::no_numeric_limits<Kind, Of> denorm_min() noexcept;
+};
+}  // namespace diagnose
+}  // namespace safegi
+
 // A converting constructor that only mistakes select is declared
 //   SAFEGI_MISTAKE("words") basic_x(basic_x<Other> SAFEGI_REPORTED_AS(diagnose::report<...>));
 // g++ reports the defaulted parameter of the report's type on the user's line, naming the
@@ -182,6 +219,10 @@ using ratio_in_words = in_words<dim::quotient<L, R>>;
 #endif
 
 namespace safegi {
+namespace space_detail {
+struct frame_space_marker;
+struct tangent_frame_marker;
+}  // namespace space_detail
 inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
 
@@ -198,6 +239,16 @@ template <class D>
 concept angle = !is_checked || std::is_same_v<D, dim::angle>;
 template <class D>
 concept even_exponents = !is_checked || dim::has_root<D, 2>;
+/// A frame's local space (SAFEGI_NORMAL_FRAME_SPACE or SAFEGI_TANGENT_FRAME_SPACE).
+template <class S>
+concept frame_space = !is_checked || std::is_base_of_v<::safegi::space_detail::frame_space_marker, S>;
+/// A tangent frame's local space (+x along dp/du).
+template <class S>
+concept tangent_frame_space = !is_checked || std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>;
+/// The local space of a frame built from a normal alone: a frame space, not a tangent one.
+template <class S>
+concept normal_frame_space =
+    !is_checked || (std::is_base_of_v<::safegi::space_detail::frame_space_marker, S> && !std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>);
 
 }  // namespace rules
 }  // namespace SAFEGI_MODE_NAMESPACE

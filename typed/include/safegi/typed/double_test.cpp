@@ -42,4 +42,13 @@ TEST(Double, SpectraAndUnitsInDouble) {
   EXPECT_DOUBLE_EQ(sg::pi, 3.14159265358979323846);
 }
 
+TEST(Double, NumericLimitsAreDoubles) {
+  using length = sg::quantity<sg::dim::length>;
+  static_assert(std::is_same_v<decltype(std::numeric_limits<length>::infinity()), length>);
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::max()), std::numeric_limits<double>::max());
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::epsilon()), std::numeric_limits<double>::epsilon());
+  EXPECT_TRUE(sg::isinf(std::numeric_limits<length>::infinity()));
+  EXPECT_TRUE(sg::isnan(std::numeric_limits<sg::quantity<sg::dim::radiance>>::quiet_NaN()));
+}
+
 }  // namespace

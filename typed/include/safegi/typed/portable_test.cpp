@@ -77,4 +77,58 @@ TEST(Portable, AnglesAndUnits) {
   EXPECT_NEAR(sg::raw(sg::cos_theta(frame.to_local(sg::direction<world>(0.6f, 0, 0.8f)))), 0.8f, 1e-6f);
   EXPECT_EQ(sg::describe<sg::spectrum<radiance>>().kind, sg::type_kind::spectrum);
 }
+// std::numeric_limits of a quantity is the representation's in both modes (checked, it
+// was the primary template's zero before: every ray reaching infinity() missed).
+TEST(Portable, NumericLimitsOfQuantities) {
+  using length = sg::quantity<sg::dim::length>;
+  const length reach = std::numeric_limits<length>::infinity();
+  EXPECT_EQ(sg::raw(reach), std::numeric_limits<sg::real>::infinity());
+  EXPECT_TRUE(sg::isinf(reach));
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::max()), std::numeric_limits<sg::real>::max());
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::lowest()), std::numeric_limits<sg::real>::lowest());
+  EXPECT_EQ(sg::raw(std::numeric_limits<length>::epsilon()), std::numeric_limits<sg::real>::epsilon());
+  EXPECT_TRUE(sg::isnan(std::numeric_limits<sg::quantity<sg::dim::radiance>>::quiet_NaN()));
+  EXPECT_LT(1.0f * sg::units::kilometre, reach);
+}
+
+// Unit vectors with each other and with vectors (the shader language's rules) compile
+// and give the same numbers in both modes.
+TEST(Portable, UnitVectorArithmetic) {
+  const sg::normal<world> n(0.0f, 0.0f, 1.0f);
+  const sg::normal<world> ng(0.0f, 1.0f, 0.0f);
+  const sg::direction<world> w(1.0f, 0.0f, 0.0f);
+  const sg::vector<world, sg::dim::dimensionless> bent = n - ng;
+  EXPECT_EQ(sg::raw(bent + w), glm::vec3(1, -1, 1));
+  EXPECT_EQ(sg::raw(sg::cross(n, w)), glm::vec3(0, 1, 0));
+  const sg::vector<world> v(0.0f * sg::units::metre, 2.0f * sg::units::metre, 0.0f * sg::units::metre);
+  EXPECT_EQ(sg::raw(sg::cross(v, w)), glm::vec3(0, 0, -2));
+}
+
+// Orientation (opt-in) builds in both modes: unchecked, oriented<O, X> is X.
+float light_facing(sg::oriented<sg::away, sg::direction<world>> lens_to_light, sg::normal<world> n) {
+  return -sg::raw(sg::dot(n, lens_to_light));
+}
+
+TEST(Portable, OrientedDirectionsToALight) {
+  const sg::point<world> light(0.0f * sg::units::metre, 0.0f * sg::units::metre, 2.0f * sg::units::metre);
+  const sg::shaded_point<world> lens = sg::shaded(sg::point<world>(sg::zero, sg::zero, sg::zero));
+  const sg::oriented<sg::away, sg::direction<world>> wi = sg::normalize(light - lens);
+  EXPECT_EQ(light_facing(wi, sg::normal<world>(0, 0, -1)), 1.0f);
+  EXPECT_EQ(light_facing(-sg::normalize(lens - light), sg::normal<world>(0, 0, -1)), 1.0f);
+  EXPECT_EQ(light_facing(sg::as_away(sg::direction<world>(0, 0, 1)), sg::normal<world>(0, 0, -1)), 1.0f);
+}
+
+// Geometric normals (opt-in) build in both modes: unchecked, geometric_normal<S> is normal<S>.
+TEST(Portable, RayOffsetAlongTheGeometricNormal) {
+  const sg::point<world> p0 = sg::from_raw<sg::point<world>>(glm::vec3(0, 0, 0));
+  const sg::point<world> p1 = sg::from_raw<sg::point<world>>(glm::vec3(1, 0, 0));
+  const sg::point<world> p2 = sg::from_raw<sg::point<world>>(glm::vec3(0, 1, 0));
+  const sg::geometric_normal<world> ng = sg::face_normal(p0, p1, p2);
+  const sg::point<world> o = sg::offset_ray_origin(p0, ng, 0.25f * sg::units::metre, sg::direction<world>(0, 0, -1));
+  EXPECT_EQ(sg::raw(o), glm::vec3(0, 0, -0.25f));
+  EXPECT_EQ(sg::raw(sg::offset_ray_origin(p0, sg::geometric(sg::normal<world>(0, 0, 1)), 0.25f * sg::units::metre,
+                                          sg::direction<world>(0, 0, 1))),
+            glm::vec3(0, 0, 0.25f));
+}
+
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <compare>
 #include <concepts>
+#include <limits>
 #include <type_traits>
 
 #include "safegi/typed/config.hpp"
@@ -72,6 +73,11 @@ class basic_quantity {
   SAFEGI_MISTAKE("cannot convert a quantity of one dimension into another")
   basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(
       diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  template <class E, std::floating_point U>
+    requires(!std::is_same_v<U, T>)
+  SAFEGI_MISTAKE("float and double quantities do not mix: build it in safegi::real (real(2) * units::metre, 2.0f * units::metre in a float build), or convert with from_raw<quantity<D, T>>(T(raw(q)))")
+  basic_quantity(basic_quantity<E, U> SAFEGI_REPORTED_AS(
+      diagnose::representation_mismatch<diagnose::op::conversion, U, T>));  // NOLINT
   template <arithmetic U>
   SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
   basic_quantity(U SAFEGI_REPORTED_AS(
@@ -483,9 +489,43 @@ template <quantity_like Q>
 constexpr bool isnan(Q q) {
   return std::isnan(raw(q));
 }
+template <quantity_like Q>
+constexpr bool isinf(Q q) {
+  return std::isinf(raw(q));
+}
+/// True for negative values, -0 and NaNs with the sign bit (std::signbit): any dimension.
+template <quantity_like Q>
+constexpr bool signbit(Q q) {
+  return std::signbit(raw(q));
+}
 
 /// π as a plain number (an angle is `pi * units::radian`), in the representation's precision.
 inline constexpr real pi = real(3.14159265358979323846);
 
 }  // namespace SAFEGI_MODE_NAMESPACE
 }  // namespace safegi
+
+/// std::numeric_limits<quantity<D, T>>: T's limits, in D's reference unit.
+/// Without it the primary template answers every question with T() (zero): a ray's
+/// reach of std::numeric_limits<Length>::infinity() was 0 m, and every ray missed.
+/// The unchecked build needs nothing here: its quantity<D, T> is T itself.
+/// epsilon() and round_error() keep T's numbers too (1 + epsilon is a relative step;
+/// in a dimension they are only what the type says: the same number, with the unit).
+template <class D, class T>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_quantity<D, T>> : std::numeric_limits<T> {
+ private:
+  using Q = safegi::SAFEGI_MODE_NAMESPACE::basic_quantity<D, T>;
+  using Limits = std::numeric_limits<T>;
+  static constexpr Q of(T value) noexcept { return safegi::from_raw<Q>(value); }
+
+ public:
+  static constexpr Q min() noexcept { return of(Limits::min()); }
+  static constexpr Q max() noexcept { return of(Limits::max()); }
+  static constexpr Q lowest() noexcept { return of(Limits::lowest()); }
+  static constexpr Q epsilon() noexcept { return of(Limits::epsilon()); }
+  static constexpr Q round_error() noexcept { return of(Limits::round_error()); }
+  static constexpr Q infinity() noexcept { return of(Limits::infinity()); }
+  static constexpr Q quiet_NaN() noexcept { return of(Limits::quiet_NaN()); }
+  static constexpr Q signaling_NaN() noexcept { return of(Limits::signaling_NaN()); }
+  static constexpr Q denorm_min() noexcept { return of(Limits::denorm_min()); }
+};

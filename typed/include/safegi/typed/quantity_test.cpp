@@ -118,6 +118,48 @@ TEST(Quantity, ExpLogAndHelpers) {
   EXPECT_TRUE(safegi::isnan(metres(std::numeric_limits<float>::quiet_NaN())));
 }
 
+// std::numeric_limits of a quantity: the representation's numbers, in the quantity's
+// dimension (the primary template answered zero: a ray reaching infinity() missed everything).
+static_assert(std::numeric_limits<length>::is_specialized);
+static_assert(std::numeric_limits<length>::has_infinity);
+static_assert(std::numeric_limits<length>::digits == std::numeric_limits<float>::digits);
+static_assert(std::is_same_v<decltype(std::numeric_limits<quantity<dim::radiance>>::infinity()), quantity<dim::radiance>>);
+static_assert(std::is_same_v<decltype(std::numeric_limits<quantity<dim::length, double>>::max()),
+                             quantity<dim::length, double>>);
+static_assert(raw(std::numeric_limits<length>::infinity()) == std::numeric_limits<float>::infinity());
+static_assert(raw(std::numeric_limits<length>::max()) == std::numeric_limits<float>::max());
+static_assert(raw(std::numeric_limits<length>::lowest()) == std::numeric_limits<float>::lowest());
+static_assert(raw(std::numeric_limits<length>::min()) == std::numeric_limits<float>::min());
+static_assert(raw(std::numeric_limits<length>::epsilon()) == std::numeric_limits<float>::epsilon());
+static_assert(raw(std::numeric_limits<length>::denorm_min()) == std::numeric_limits<float>::denorm_min());
+static_assert(raw(std::numeric_limits<quantity<dim::area, double>>::max()) == std::numeric_limits<double>::max());
+
+TEST(Quantity, NumericLimitsAreTheRepresentationsInTheDimension) {
+  const length far = std::numeric_limits<length>::infinity();
+  EXPECT_TRUE(safegi::isinf(far));
+  EXPECT_GT(far, metres(1e30f));
+  EXPECT_LT(std::numeric_limits<length>::lowest(), metres(-1e30f));
+  EXPECT_TRUE(safegi::isnan(std::numeric_limits<length>::quiet_NaN()));
+  EXPECT_TRUE(safegi::isnan(std::numeric_limits<quantity<dim::radiance>>::signaling_NaN()));
+  EXPECT_EQ(metres(1.0f) + std::numeric_limits<length>::epsilon(), metres(1.0f + std::numeric_limits<float>::epsilon()));
+  EXPECT_TRUE(safegi::isinf(std::numeric_limits<quantity<dim::time, double>>::infinity()));
+}
+
+TEST(Quantity, IsinfIsnanIsfiniteSignbitTakeAnyDimension) {
+  const length inf = std::numeric_limits<length>::infinity();
+  EXPECT_TRUE(safegi::isinf(inf));
+  EXPECT_TRUE(safegi::isinf(-inf));
+  EXPECT_FALSE(safegi::isinf(metres(1.0f)));
+  EXPECT_FALSE(safegi::isinf(std::numeric_limits<length>::quiet_NaN()));
+  EXPECT_FALSE(safegi::isfinite(inf));
+  EXPECT_FALSE(safegi::isnan(inf));
+  EXPECT_TRUE(safegi::signbit(-inf));
+  EXPECT_TRUE(safegi::signbit(metres(-0.0f)));
+  EXPECT_FALSE(safegi::signbit(metres(0.0f)));
+  EXPECT_TRUE(safegi::isinf(std::numeric_limits<float>::infinity() * units::radiance_unit));
+  EXPECT_TRUE(safegi::isinf(std::numeric_limits<float>::infinity()));  // plain numbers too
+}
+
 TEST(Quantity, DimensionCastIsTheOneEscapeHatch) {
   const quantity<dim::brdf> f = dimension_cast<dim::brdf>(0.25f);
   EXPECT_EQ(raw(f), 0.25f);

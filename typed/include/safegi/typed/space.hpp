@@ -15,11 +15,15 @@
 //   dot(normal, direction)        = quantity<dim::proj>  (the rendering equation's cosine)
 //   dot(normal, normal)           = dimensionless
 //   dot(direction|normal, vector<S,D>) = quantity<D>     (the component along the unit vector)
-//   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S>
+//   cross(vector<S,D>, vector<S,E>) = vector<S, D·E>;  cross(direction, direction) = vector<S, 1>
+//   cross(vector<S,D>, direction or normal) = vector<S, D> (either order)
+// Sums of unit vectors (direction or normal ± direction or normal) are vector<S, 1>;
+// vector<S, D> ± a unit vector needs D dimensionless (as in the shader language).
 #pragma once
 
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -42,14 +46,43 @@ concept space_type = requires {
   requires std::is_base_of_v<space_tag<S::name>, S>;
 };
 
+namespace space_detail {
+struct frame_space_marker {};
+struct tangent_frame_marker {};
+}  // namespace space_detail
+
+/// The local space of a frame built from a normal alone (frame<S, L>::from_normal): the
+/// normal is +z, and x and y are some orthonormal pair around it: the azimuth is
+/// arbitrary, so it is not the dp/du-aligned tangent frame a normal map or an
+/// anisotropic BSDF needs. cos_theta and the other polar angles read it.
+///   struct shading : safegi::normal_frame_tag<"shading"> {};   or   SAFEGI_NORMAL_FRAME_SPACE(shading);
+template <fixed_string Name>
+struct normal_frame_tag : space_tag<Name>, ::safegi::space_detail::frame_space_marker {};
+/// The local space of a tangent frame (frame<S, L>::from_tangent(dpdu, n)): +z the
+/// normal, +x along dp/du, +y along dp/dv's part orthogonal to both. Normal-map texels
+/// and anisotropic roughness live here; from_normal refuses it.
+///   struct tangent : safegi::tangent_frame_tag<"tangent"> {};  or   SAFEGI_TANGENT_FRAME_SPACE(tangent);
+template <fixed_string Name>
+struct tangent_frame_tag : space_tag<Name>, ::safegi::space_detail::frame_space_marker, ::safegi::space_detail::tangent_frame_marker {};
+
+/// A frame's local space (either kind): the normal is +z.
+template <class S>
+inline constexpr bool is_frame_space = std::is_base_of_v<::safegi::space_detail::frame_space_marker, S>;
+/// A tangent frame's local space: +x is dp/du.
+template <class S>
+inline constexpr bool is_tangent_frame_space = std::is_base_of_v<::safegi::space_detail::tangent_frame_marker, S>;
+
 /// Spaces most renderers need; declare your own the same way.
 namespace spaces {
 struct world : space_tag<"world"> {};
 struct object : space_tag<"object"> {};
 struct camera : space_tag<"camera"> {};
 struct light : space_tag<"light"> {};
-/// The local shading frame: the surface normal is +z.
-struct shading : space_tag<"shading"> {};
+/// The local shading frame built from the shading normal alone: the normal is +z, the
+/// azimuth arbitrary (frame<S>::from_normal).
+struct shading : normal_frame_tag<"shading"> {};
+/// The local space of a tangent frame: +z the normal, +x along dp/du (frame::from_tangent).
+struct tangent : tangent_frame_tag<"tangent"> {};
 struct clip : space_tag<"clip"> {};
 struct ndc : space_tag<"ndc"> {};
 struct raster : space_tag<"raster"> {};
@@ -144,7 +177,10 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
  public:
   using space_type = S;
   constexpr basic_point() = default;
-  constexpr basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
+  /// Coordinates in S: a claim that they are S's (nothing checks it), so it is explicit and
+  /// every claim spells its space where it is made: point<S>(x, y, z). from_raw<point<S>>(v)
+  /// is the other (for data in reference units). Grep "point<" and "from_raw<" for them.
+  constexpr explicit basic_point(quantity<dim::length> x, quantity<dim::length> y, quantity<dim::length> z)
       : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_point(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   // Conversions that are always mistakes; they exist so the error names both sides.
@@ -179,7 +215,9 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   using space_type = S;
   using dimension_type = D;
   constexpr basic_vector() = default;
-  constexpr basic_vector(quantity<D> x, quantity<D> y, quantity<D> z) : base(vec3_rep(raw(x), raw(y), raw(z))) {}
+  /// Components in S: a claim of the space, explicit like point<S>(x, y, z).
+  constexpr explicit basic_vector(quantity<D> x, quantity<D> y, quantity<D> z)
+      : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   template <class S2, class E>
     requires(!std::is_same_v<S2, S>)
@@ -472,6 +510,110 @@ template <class S, class S2>
 constexpr basic_vector<S, dim::dimensionless> operator-(basic_direction<S> a, basic_direction<S2> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
+// Sums, differences and cross products of unit vectors with each other and with vectors,
+// as the shader language has them (docs/language.md, "Geometric operations": any two of
+// vector, direction and normal in one space, dimensions consistent, give a vector).
+namespace detail {
+template <class X>
+struct unit_vector_traits {
+  static constexpr bool value = false;
+};
+template <class S>
+struct unit_vector_traits<basic_direction<S>> {
+  static constexpr bool value = true;
+  static constexpr bool is_direction = true;
+  using space = S;
+};
+template <class S>
+struct unit_vector_traits<basic_normal<S>> {
+  static constexpr bool value = true;
+  static constexpr bool is_direction = false;
+  using space = S;
+};
+/// A direction or a normal: unit length, dimensionless.
+template <class X>
+concept unit_vector = unit_vector_traits<X>::value;
+template <unit_vector U>
+using space_of_unit = typename unit_vector_traits<U>::space;
+/// Two unit vectors, at least one a normal (direction ± direction is above).
+template <class A, class B>
+concept unit_vector_pair_with_normal =
+    unit_vector<A> && unit_vector<B> && !(unit_vector_traits<A>::is_direction && unit_vector_traits<B>::is_direction);
+}  // namespace detail
+
+/// normal ± normal, normal ± direction, direction ± normal: a dimensionless vector (an
+/// averaged or bisecting normal before normalize, n - ng, the half vector ω + n).
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::plus, detail::space_of_unit<A>, detail::space_of_unit<B>> operator+(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> operator+(A a, B b) {
+  return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
+}
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::minus, detail::space_of_unit<A>, detail::space_of_unit<B>> operator-(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> operator-(A a, B b) {
+  return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
+}
+
+/// vector<S, D> ± direction or normal, and direction or normal ± vector<S, D>: D must be
+/// dimensionless, as a unit vector is; a displacement plus a unit vector lacks a length
+/// (v + n where v + n * epsilon was meant).
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::plus, S, detail::space_of_unit<U>> operator+(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<dim::dimensionless>,
+                             ratio_in_words<D, dim::dimensionless>>
+operator+(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator+(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, v.raw_value() + u.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::minus, S, detail::space_of_unit<U>> operator-(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<dim::dimensionless>,
+                             ratio_in_words<D, dim::dimensionless>>
+operator-(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator-(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, v.raw_value() - u.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::plus, detail::space_of_unit<U>, S> operator+(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::plus, in_words<dim::dimensionless>, in_words<D>,
+                             ratio_in_words<dim::dimensionless, D>>
+operator+(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator+(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, u.raw_value() + v.raw_value()};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::minus, detail::space_of_unit<U>, S> operator-(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+diagnose::dimension_mismatch<diagnose::op::minus, in_words<dim::dimensionless>, in_words<D>,
+                             ratio_in_words<dim::dimensionless, D>>
+operator-(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>> && rules::same_dimension<D, dim::dimensionless>
+constexpr basic_vector<S, D> operator-(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, u.raw_value() - v.raw_value()};
+}
+
 template <class S, class S2>
 diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_direction<S>, basic_direction<S2>);
 template <class S, class S2>
@@ -515,6 +657,32 @@ diagnose::space_mismatch<diagnose::op::cross, S, S2> cross(basic_direction<S>, b
 template <class S, class S2>
   requires rules::same_space<S, S2>
 constexpr basic_vector<S, dim::dimensionless> cross(basic_direction<S> a, basic_direction<S2> b) {
+  return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
+}
+/// cross of a vector<S, D> and a direction or normal (either order): vector<S, D>; of two
+/// unit vectors at least one of which is a normal: a dimensionless vector (a tangent
+/// from a normal and a direction, cross(n, w)).
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::cross, S, detail::space_of_unit<U>> cross(basic_vector<S, D>, U);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+constexpr basic_vector<S, D> cross(basic_vector<S, D> v, U u) {
+  return {detail::raw_tag{}, glm::cross(v.raw_value(), u.raw_value())};
+}
+template <class S, class D, detail::unit_vector U>
+diagnose::space_mismatch<diagnose::op::cross, detail::space_of_unit<U>, S> cross(U, basic_vector<S, D>);
+template <class S, class D, detail::unit_vector U>
+  requires rules::same_space<S, detail::space_of_unit<U>>
+constexpr basic_vector<S, D> cross(U u, basic_vector<S, D> v) {
+  return {detail::raw_tag{}, glm::cross(u.raw_value(), v.raw_value())};
+}
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B>
+diagnose::space_mismatch<diagnose::op::cross, detail::space_of_unit<A>, detail::space_of_unit<B>> cross(A, B);
+template <class A, class B>
+  requires detail::unit_vector_pair_with_normal<A, B> &&
+           rules::same_space<detail::space_of_unit<A>, detail::space_of_unit<B>>
+constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> cross(A a, B b) {
   return {detail::raw_tag{}, glm::cross(a.raw_value(), b.raw_value())};
 }
 /// The projected-cosine factor n·ω: the only way to get a quantity<dim::proj>.
@@ -677,8 +845,31 @@ constexpr basic_point<S> dehomogenize(basic_hpoint<S> h) {
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE
+
 }  // namespace safegi
+
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_point<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::point, S> {};
+template <class S, class D>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_vector<S, D>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::vector, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_direction<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::direction, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_normal<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::normal, S> {};
+template <class S>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_hpoint<S>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::hpoint, S> {};
 
 /// Declares a coordinate space in one line: SAFEGI_SPACE(world);
 #define SAFEGI_SPACE(name) \
   struct name : ::safegi::space_tag<#name> {}
+/// Declares the local space of frames built from a normal alone (arbitrary azimuth).
+#define SAFEGI_NORMAL_FRAME_SPACE(name) \
+  struct name : ::safegi::normal_frame_tag<#name> {}
+/// Declares the local space of tangent frames (+x along dp/du).
+#define SAFEGI_TANGENT_FRAME_SPACE(name) \
+  struct name : ::safegi::tangent_frame_tag<#name> {}

@@ -127,4 +127,46 @@ TEST(Space, DefaultsAreUsable) {
   EXPECT_EQ(raw(normal<world>{}), glm::vec3(0, 0, 1));
   EXPECT_EQ(raw(hpoint<world>{}), glm::vec4(0, 0, 0, 1));
 }
+
+// Unit vectors with each other and with vectors, as in the shader language: any two of
+// vector, direction and normal in one space give a vector when the dimensions agree.
+using unitless = vector<world, dim::dimensionless>;
+static_assert(std::is_same_v<decltype(normal<world>{} - normal<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(normal<world>{} + normal<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(normal<world>{} + direction<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(direction<world>{} - normal<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(unitless{} + direction<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(unitless{} - normal<world>{}), unitless>);
+static_assert(std::is_same_v<decltype(direction<world>{} + unitless{}), unitless>);
+static_assert(std::is_same_v<decltype(normal<world>{} - unitless{}), unitless>);
+static_assert(std::is_same_v<decltype(cross(vector<world>{}, direction<world>{})), vector<world>>);
+static_assert(std::is_same_v<decltype(cross(direction<world>{}, vector<world, dim::radiance>{})),
+                             vector<world, dim::radiance>>);
+static_assert(std::is_same_v<decltype(cross(vector<world>{}, normal<world>{})), vector<world>>);
+static_assert(std::is_same_v<decltype(cross(normal<world>{}, vector<world>{})), vector<world>>);
+static_assert(std::is_same_v<decltype(cross(normal<world>{}, direction<world>{})), unitless>);
+static_assert(std::is_same_v<decltype(cross(direction<world>{}, normal<world>{})), unitless>);
+static_assert(std::is_same_v<decltype(cross(normal<world>{}, normal<world>{})), unitless>);
+
+TEST(Space, UnitVectorSumsDifferencesAndCrossProducts) {
+  const normal<world> n(0.0f, 0.0f, 1.0f);
+  const normal<world> ng(0.0f, 1.0f, 0.0f);
+  const direction<world> w(1.0f, 0.0f, 0.0f);
+  EXPECT_EQ(raw(n - ng), glm::vec3(0, -1, 1));
+  EXPECT_EQ(raw(n + ng), glm::vec3(0, 1, 1));
+  EXPECT_EQ(raw(n + w), glm::vec3(1, 0, 1));
+  EXPECT_EQ(raw(w - n), glm::vec3(1, 0, -1));
+  const unitless h = n + w;
+  EXPECT_EQ(raw(h + w), glm::vec3(2, 0, 1));
+  EXPECT_EQ(raw(w - h), glm::vec3(0, 0, -1));
+  EXPECT_EQ(raw(normalize(n + w)), glm::normalize(glm::vec3(1, 0, 1)));
+  // A tangent from a normal and a direction, and a displacement turned about a direction.
+  EXPECT_EQ(raw(cross(n, w)), glm::vec3(0, 1, 0));
+  EXPECT_EQ(raw(cross(w, n)), glm::vec3(0, -1, 0));
+  const vector<world> v(0.0f * units::metre, 2.0f * units::metre, 0.0f * units::metre);
+  EXPECT_EQ(raw(cross(v, w)), glm::vec3(0, 0, -2));
+  EXPECT_EQ(raw(cross(n, v)), glm::vec3(-2, 0, 0));
+  // The displacement along a unit vector needs its length: v + n * epsilon.
+  EXPECT_EQ(raw(v + n * (1.0f * units::metre)), glm::vec3(0, 2, 1));
+}
 }  // namespace

@@ -205,3 +205,9 @@ constexpr basic_spectrum<D> lerp(basic_spectrum<D> a, basic_spectrum<D> b, real 
 
 }  // namespace SAFEGI_MODE_NAMESPACE
 }  // namespace safegi
+
+/// A spectrum has no numeric limits (the primary template would answer black): a
+/// channel's are std::numeric_limits<quantity<D>>.
+template <class D>
+struct std::numeric_limits<safegi::SAFEGI_MODE_NAMESPACE::basic_spectrum<D>>
+    : safegi::diagnose::refused_numeric_limits<safegi::diagnose::kind::spectrum, safegi::in_words<D>> {};
