@@ -27,7 +27,9 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
+sys.path.insert(0, str(ROOT / "testsuite" / "bugs"))
 import generated_section  # noqa: E402
+from measure import first_error  # noqa: E402  (the catalogue's: one reading of the checker's output)
 
 BEGIN, END = "<!-- real-bugs-measure:begin -->", "<!-- real-bugs-measure:end -->"
 
@@ -58,25 +60,11 @@ def apply_edits(bug: dict, text: str) -> str:
 
 
 def diagnostics(check_file: str, path: pathlib.Path) -> str:
+    """What the checker prints for `path`, run by its bare name (so no folder name reaches a message)."""
     run = subprocess.run([check_file, path.name], cwd=path.parent, capture_output=True, text=True)
     if run.returncode not in (0, 1):
         sys.exit(f"{path}: safegi_check_file failed ({run.returncode}): {run.stderr}")
     return run.stdout + run.stderr
-
-
-def first_error(output: str) -> str:
-    """The first error's message and help lines (not its source lines or notes)."""
-    lines = output.splitlines()
-    start = next((i for i, line in enumerate(lines) if ": error:" in line), None)
-    if start is None:
-        return ""
-    text = [lines[start]]
-    for line in lines[start + 1:]:
-        if ": error:" in line or ": note:" in line or ": warning:" in line:
-            break
-        if line.startswith("help:"):
-            text.append(line)
-    return "\n".join(text)
 
 
 def error_code(message: str) -> str:
