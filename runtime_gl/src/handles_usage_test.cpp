@@ -29,7 +29,7 @@ TEST_F(HandlesUsageTest, AProgramFromOtherSourcesIsRefused) {
   } catch (const BindingError& error) {
     EXPECT_STREQ(error.what(),
                  "emission: error: the handles were generated from emission.sgl.frag with source hash "
-                 "fnv1a64:0000000000000000, but the program was built from source hash fnv1a64:ee060cbb90728da8; "
+                 "fnv1a64:0000000000000000, but the program was built from source hash fnv1a64:2c14201eeb22e19d; "
                  "regenerate the header");
   }
 }

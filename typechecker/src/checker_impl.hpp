@@ -170,6 +170,7 @@ class Checker {
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
+  std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).
   bool rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value);
   // The source text of an operand, for a hint's code: its name, else its text when that is one short line, else `fallback`.

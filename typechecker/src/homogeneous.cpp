@@ -38,6 +38,36 @@ std::optional<Type> Checker::affine_part(const Type& vec4, const std::string& sw
   return *vec4.affine;
 }
 
+// (p, 1) - (q, 1) is the vector (p - q, 0), (p, 1) + (v, 0) the point (p + v, 1): sums and
+// differences of vec4s that remember their xyz keep it when w comes out as the kind needs
+// (1 for a point, 0 for a vector); a w left at 1 on a vector (`(l, 1) - vec4(p, 0.0)`, the
+// stray w that then reaches length()) is told. Nothing when either operand is no such vec4.
+std::optional<Value> Checker::affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range) {
+  if ((op != ast::BinaryOp::Add && op != ast::BinaryOp::Sub) || !lhs.type.affine || !rhs.type.affine) return std::nullopt;
+  const bool add = op == ast::BinaryOp::Add;
+  Value x = lhs, y = rhs;
+  x.type = *lhs.type.affine;
+  y.type = *rhs.type.affine;
+  Value xyz = arithmetic(nullptr, op, x, y, op_range, range);  // the 3D rules: point + point, spaces, dimensions
+  if (xyz.type.is_error()) return error_value(range);
+  const int w = add ? lhs.type.affine_w + rhs.type.affine_w : lhs.type.affine_w - rhs.type.affine_w;
+  const int wanted = xyz.type.geometry == Geometry::point ? 1 : 0;
+  if (w != wanted) {
+    operand_mismatch(std::string("cannot ") + (add ? "add " : "subtract ") + name_of(rhs.type) + (add ? " to " : " from ") +
+                         name_of(lhs.type) + ": the result's homogeneous w is " + std::to_string(w) + ", and a " +
+                         geometry_name(xyz.type.geometry) + " needs w = " + std::to_string(wanted),
+                     lhs, rhs, op_range,
+                     "give each point w = 1 and each vector w = 0, or subtract the xyz parts (a.xyz - b.xyz)", code::E_KIND_MISMATCH);
+    return error_value(range);
+  }
+  Value out;
+  out.range = range;
+  out.type = Type::vector_of(lhs.type.scalar, 4);
+  out.type.affine = std::make_shared<const Type>(xyz.type);
+  out.type.affine_w = static_cast<std::int8_t>(w);
+  return out;
+}
+
 // transpose(m) and inverse(m) of a map or a normal matrix: the normal matrix of m is
 // transpose(inverse(m)); transposing twice, or inverting, keeps what the matrix carries.
 std::optional<Value> Checker::map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range) {
