@@ -176,6 +176,7 @@ class Checker {
   // The source text of an operand, for a hint's code: its name, else its text when that is one short line, else `fallback`.
   std::string operand_text(const Value& v, const std::string& fallback) const;
   std::optional<std::string> literal_sum_hint(const Value& lhs, const Value& rhs) const;
+  std::optional<std::string> unnormalized_dot_hint(const Value& v) const;
   Value builtin_call(const ast::CallExpr* node, const std::string& name, const std::vector<Signature>& sigs,
                      std::vector<Value>& args, SourceRange callee_range, SourceRange call_range);
   Value rule_call(const ast::CallExpr* node, const Signature& sig, std::vector<Value>& args, SourceRange call_range);

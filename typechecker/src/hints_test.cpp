@@ -129,6 +129,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "ambientLight * albedo", "0.03 * ambientLight * albedo"},
         HintCase{"regularised_falloff", "uniform float<length> d;", "float<1> f = @;", "1.0 / (1.0 + d * d)",
                  "the sum would change with the unit", "1.0 * square_meter", "square_meter / (1.0 * square_meter + d * d)"},
+        HintCase{"cosine_of_an_unnormalised_axis", "uniform vector<world> s; uniform direction<world> l; uniform float<1> cutOff;",
+                 "bool inside = @;", "dot(-s, l) > cutOff", "normalize(-s)", "normalize(-s)", "dot(normalize(-s), l) > cutOff"},
         HintCase{"point_with_w_zero", kModel, "vec3 pW = (@).xyz;", "model * vec4(pObj, 0.0)", "for a point",
                  "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });

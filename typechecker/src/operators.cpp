@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <safegi/parser/printer.hpp>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -134,7 +136,8 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       // Comparisons need equal dimensions; a zero literal compares with anything.
       const DimSlot da = value_dimension(a, result_.registry), db = value_dimension(b, result_.registry);
       if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_as_number(da, db) && !cosine_as_number(db, da)) {
-        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range, physics_hint(da, db),
+        operand_mismatch("cannot compare " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
+                         unnormalized_dot_hint(lhs).value_or(unnormalized_dot_hint(rhs).value_or(physics_hint(da, db))),
                          code::E_DIMENSION_MISMATCH);
         return error_value(range);
       }
@@ -257,6 +260,25 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (op == ast::BinaryOp::Div && y != 0.0) out.number = x / y;
   }
   return out;
+}
+
+// A "cosine" that is a dot product with a vector of some length (`dot(-s, l)` where the spot
+// axis s was not normalised): the hint names the vector to normalise.
+std::optional<std::string> Checker::unnormalized_dot_hint(const Value& v) const {
+  const ast::Expr* e = expression_at(v.origin && v.origin->inferred ? v.origin->range : v.range);
+  while (e != nullptr && ast::isa<ast::ParenExpr>(e)) e = static_cast<const ast::ParenExpr*>(e)->inner;
+  const auto* call = e ? ast::dyn_cast<ast::CallExpr>(e) : nullptr;
+  if (call == nullptr || call->callee != "dot" || call->args.size() != 2) return std::nullopt;
+  for (const ast::Expr* arg : call->args) {
+    const auto type = result_.types.find(arg);
+    if (type == result_.types.end() || type->second.geometry != Geometry::vector) continue;
+    const DimSlot d = value_dimension(type->second, result_.registry);
+    if (!d.is_known() || d.value.is_dimensionless()) continue;
+    const std::string text = print_expression(*arg);
+    return "a cosine is the dot product of unit vectors, and " + text + " is a vector of " + result_.registry.format(d.value) +
+           ": normalize(" + text + ")";
+  }
+  return std::nullopt;
 }
 
 // A number added to a quantity (`1.0 + d * d`, a regularised falloff) means that number of
