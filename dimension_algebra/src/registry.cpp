@@ -66,9 +66,10 @@ bool DimensionRegistry::add_unit(std::string name, Dimension dimension, double s
   return true;
 }
 
-std::optional<SpaceId> DimensionRegistry::add_space(std::string name) {
+std::optional<SpaceId> DimensionRegistry::add_space(std::string name, bool eye) {
   if (!claim(name, Kind::space)) return std::nullopt;
   spaces_.push_back(std::move(name));
+  eye_spaces_.push_back(eye);
   return static_cast<SpaceId>(spaces_.size() - 1);
 }
 

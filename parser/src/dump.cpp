@@ -228,7 +228,10 @@ class Dumper {
         node(u->scale, level + 1);
         return;
       }
-      case NodeKind::SpaceDecl: text(static_cast<const SpaceDecl*>(n)->name); break;
+      case NodeKind::SpaceDecl:
+        text(static_cast<const SpaceDecl*>(n)->name);
+        if (static_cast<const SpaceDecl*>(n)->eye) text("eye");
+        break;
       case NodeKind::CompoundStmt:
         close();
         for (const Stmt* s : static_cast<const CompoundStmt*>(n)->statements) node(s, level + 1);

@@ -448,6 +448,12 @@ Decl* Parser::parse_annotation_declaration() {
     auto* decl = make<SpaceDecl>(begin);
     decl->name = std::string(name.text);
     decl->name_range = name.range;
+    if (accept(T::Colon)) {
+      // `space view : eye;`: the one property a space may be given.
+      if (!(at(T::Ident) && peek().text == "eye")) fail_expected("'eye'", "after ':' in a space declaration");
+      advance();
+      decl->eye = true;
+    }
     expect_semicolon("after space declaration");
     result = decl;
   }

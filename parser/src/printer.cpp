@@ -423,7 +423,7 @@ void GlslPrinter::declaration(const Decl& d, bool top_level) {
     }
     case NodeKind::SpaceDecl:
       if (!options_.annotations) return;
-      out_ += "space " + static_cast<const SpaceDecl&>(d).name + ';';
+      out_ += "space " + static_cast<const SpaceDecl&>(d).name + (static_cast<const SpaceDecl&>(d).eye ? " : eye" : "") + ';';
       break;
     case NodeKind::EmptyDecl: out_ += ';'; break;
     default: break;

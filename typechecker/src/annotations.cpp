@@ -153,8 +153,14 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
 
 void Checker::declare_space(const ast::SpaceDecl& d) {
   DimensionRegistry& reg = result_.registry;
-  if (reg.find_space(d.name)) return;
-  if (!reg.add_space(d.name))
+  if (const std::optional<SpaceId> s = reg.find_space(d.name)) {
+    if (reg.is_eye_space(*s) == d.eye) return;  // repeated identically: a header included twice
+    report(Diagnostic::error(d.name_range, "space '" + d.name + "' is redeclared " +
+                                               (d.eye ? "with its origin at the eye; it was not" : "without its origin at the eye; it had it"))
+               .with_code(code::E_REDECLARED));
+    return;
+  }
+  if (!reg.add_space(d.name, d.eye))
     report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
 }
 

@@ -177,6 +177,23 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
     return error_value(call_range);
   }
   const Signature& sig = *match->signature;
+  if (sig.rule == BuiltinRule::point_misuse && (name == "normalize" || name == "length") && args.size() == 1 &&
+      args[0].type.from.is_known() && result_.registry.is_eye_space(args[0].type.from.id)) {
+    // In a space whose origin is the eye a point is the vector from the eye to it: normalize(P) is
+    // the direction of the eye's ray, toward P; length(P) its distance.
+    Value out;
+    out.range = call_range;
+    out.type = args[0].type;
+    if (name == "length") {
+      out.type = Type::scalar_of(Scalar::float_);
+      out.type.dim = value_dimension(args[0].type, result_.registry);
+    } else {
+      out.type.geometry = Geometry::direction;
+      out.type.dim = DimSlot::known(Dimension{});
+      out.type.orientation = args[0].type.orientation == Orientation::shaded ? Orientation::toward : Orientation::none;
+    }
+    return out;
+  }
   if (sig.rule == BuiltinRule::point_misuse) {
     point_given_for_vector(name, sig, args);
     return error_value(call_range);

@@ -223,7 +223,9 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     const bool cosine_a = cosine_as_number(db, da), cosine_b = cosine_as_number(da, db);  // 1 - cos θ is a number
     if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b) {
       operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
-                       literal_sum_hint(lhs, rhs).value_or(operand_hint(da, db, rhs.range)), code::E_DIMENSION_MISMATCH);
+                       unnormalized_dot_hint(lhs).value_or(unnormalized_dot_hint(rhs).value_or(
+                           literal_sum_hint(lhs, rhs).value_or(operand_hint(da, db, rhs.range)))),
+                       code::E_DIMENSION_MISMATCH);
       return error_value(range);
     }
     if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
@@ -266,8 +268,15 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
 // axis s was not normalised): the hint names the vector to normalise.
 std::optional<std::string> Checker::unnormalized_dot_hint(const Value& v) const {
   const ast::Expr* e = expression_at(v.origin && v.origin->inferred ? v.origin->range : v.range);
-  while (e != nullptr && ast::isa<ast::ParenExpr>(e)) e = static_cast<const ast::ParenExpr*>(e)->inner;
-  const auto* call = e ? ast::dyn_cast<ast::CallExpr>(e) : nullptr;
+  const ast::CallExpr* call = nullptr;
+  for (;;) {  // through parentheses and the usual guards: abs(dot(n, v)), max(dot(n, v), 0.0)
+    while (e != nullptr && ast::isa<ast::ParenExpr>(e)) e = static_cast<const ast::ParenExpr*>(e)->inner;
+    call = e ? ast::dyn_cast<ast::CallExpr>(e) : nullptr;
+    if (call == nullptr || call->args.empty() ||
+        (call->callee != "abs" && call->callee != "max" && call->callee != "min" && call->callee != "clamp"))
+      break;
+    e = call->args[0];
+  }
   if (call == nullptr || call->callee != "dot" || call->args.size() != 2) return std::nullopt;
   for (const ast::Expr* arg : call->args) {
     const auto type = result_.types.find(arg);

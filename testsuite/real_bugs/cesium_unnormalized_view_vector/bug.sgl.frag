@@ -3,7 +3,7 @@
 // Procedural image-based lighting in eye coordinates (the camera at the
 // origin): the view vector is the unit vector from the surface to the eye,
 // and N.V the cosine the split-sum lookup needs.
-space eye;
+space eye : eye;                                 // eye coordinates: the camera at the origin
 space world;
 
 uniform rigidmap<eye, world> czm_inverseViewRotation;

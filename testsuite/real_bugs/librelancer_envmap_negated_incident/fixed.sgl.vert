@@ -5,7 +5,7 @@
 // so the incident ray is the normalised view-space position and reflect()
 // takes it as it is (GLSL's I points toward the surface).
 space object;
-space view;
+space view : eye;                                // the camera at the origin
 space clip;
 
 uniform map<object, view> worldView;

@@ -58,7 +58,10 @@ class DimensionRegistry {
   std::optional<BaseId> add_base(std::string name, BaseKind kind = BaseKind::physical);
   bool add_derived(std::string name, Dimension value);
   bool add_unit(std::string name, Dimension dimension, double scale);
-  std::optional<SpaceId> add_space(std::string name);
+  // eye: the space's origin is the eye (`space view : eye;`), so a point's coordinates are the
+  // vector from the eye to it.
+  std::optional<SpaceId> add_space(std::string name, bool eye = false);
+  bool is_eye_space(SpaceId id) const { return id < eye_spaces_.size() && eye_spaces_[id]; }
 
   bool is_declared(std::string_view name) const { return kinds_.count(std::string(name)) != 0; }
   std::optional<BaseId> find_base(std::string_view name) const;
@@ -146,6 +149,7 @@ class DimensionRegistry {
   std::vector<DerivedDimension> derived_;
   std::vector<Unit> units_;
   std::vector<std::string> spaces_;
+  std::vector<bool> eye_spaces_;  // per space: its origin is the eye
   std::unordered_map<std::string, std::pair<Kind, std::size_t>> kinds_;
 };
 

@@ -505,6 +505,7 @@ struct SpaceDecl : Decl {
   static bool classof(NodeKind k) { return k == NodeKind::SpaceDecl; }
   std::string name;
   SourceRange name_range;
+  bool eye = false;  // `space view : eye;`: the space's origin is the eye
 };
 
 // A stray `;` at global scope.
