@@ -74,7 +74,8 @@ std::optional<Value> Checker::map_matrix_call(const std::string& name, const std
   if ((name != "transpose" && name != "inverse") || args.size() != 1) return std::nullopt;
   const Type& m = args[0].type;
   if (!is_map(m.geometry) || m.is_array() || m.geometry == Geometry::projmap) return std::nullopt;
-  if (name == "inverse" && !m.normal_matrix) return std::nullopt;  // the table's inverse(map<S, T>) -> map<T, S>
+  // The table's inverse(map<S, T>) -> map<T, S> is for 4×4 maps; a 3×3 one would match its plain matF there.
+  if (name == "inverse" && !m.normal_matrix && m.rows == 4) return std::nullopt;
   Value out;
   out.range = call_range;
   out.type = m;
