@@ -11,8 +11,6 @@
 namespace safegi::detail {
 namespace {
 
-bool vectorish(Geometry g) { return g == Geometry::vector || g == Geometry::direction || g == Geometry::normal; }
-
 bool is_vec4(const Type& t) {
   return t.shape == Shape::vector && t.rows == 4 && t.is_floating() && !t.is_array() && t.geometry == Geometry::none;
 }

@@ -27,8 +27,6 @@ const char* verb(ast::BinaryOp op) {
   }
 }
 
-bool vectorish(Geometry g) { return g == Geometry::vector || g == Geometry::direction || g == Geometry::normal; }
-
 // GLSL's result shape of an arithmetic operator, or nothing when the operands do not fit.
 std::optional<Type> arithmetic_shape(ast::BinaryOp op, const Type& a, const Type& b) {
   if (a.is_array() || b.is_array() || !a.is_numeric() || !b.is_numeric()) return std::nullopt;

@@ -40,6 +40,7 @@ bool has_space(Geometry g) {
 }
 
 bool is_map(Geometry g) { return g == Geometry::map || g == Geometry::rigidmap || g == Geometry::projmap; }
+bool vectorish(Geometry g) { return g == Geometry::vector || g == Geometry::direction || g == Geometry::normal; }
 
 bool kind_fits(Geometry value, Geometry wanted) {
   return value == wanted || (value == Geometry::rigidmap && wanted == Geometry::map);

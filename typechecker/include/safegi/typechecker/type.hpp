@@ -51,6 +51,8 @@ inline bool orientations_clash(Orientation a, Orientation b) {
 const char* geometry_name(Geometry g);
 bool has_space(Geometry g);
 bool is_map(Geometry g);
+// A vector, direction or normal: a displacement, with no position.
+bool vectorish(Geometry g);
 // A value of kind `value` may stand where kind `wanted` is expected: the same
 // kind, or a rigidmap where a map is expected (a rigid map is affine).
 bool kind_fits(Geometry value, Geometry wanted);
