@@ -52,10 +52,7 @@ bool Checker::combined_sampler(const Type& t, const std::vector<Value>& args) co
 bool Checker::cast_keeps_physics(const Type& to_type, const Value& value) {
   const Type& from_type = value.type;
   const std::string what = name_of(to_type);
-  const auto space_moved = [](const SpaceSlot& from, const SpaceSlot& to) {
-    return from.state != SpaceSlot::State::unknown && to.state != SpaceSlot::State::unknown && !(from == to);
-  };
-  if (space_moved(from_type.from, to_type.from) || space_moved(from_type.to, to_type.to)) {
+  if (!consistent(from_type.from, to_type.from) || !consistent(from_type.to, to_type.to)) {
     const bool maps = is_map(to_type.geometry);
     Diagnostic d = Diagnostic::error(value.range, "a cast cannot move " + name_of(from_type) + " to " + what +
                                                       ": a cast keeps the coordinates, and the spaces differ")
