@@ -164,6 +164,16 @@ template <class L>
 inline real sin_theta(basic_direction<L> w) {
   return std::sqrt(sin2_theta(w));
 }
+namespace detail {
+/// A cosine or sine computed as a ratio, kept in [-1, 1] against rounding.
+constexpr real clamp_unit(real c) { return c < real(-1) ? real(-1) : (c > real(1) ? real(1) : c); }
+/// cos φ (component x) or sin φ (component y) of w: that component over sin θ, `at_pole` where sin θ = 0.
+template <class L>
+inline real azimuth_component(basic_direction<L> w, real component, real at_pole) {
+  const real s = sin_theta(w);
+  return s > real(0) ? clamp_unit(component / s) : at_pole;
+}
+}  // namespace detail
 /// cos(φa - φb) of two directions of one frame: independent of the frame's azimuth, so
 /// any frame space takes it (Oren–Nayar's term).
 template <class L, class L2>
@@ -176,8 +186,7 @@ template <class L, class L2>
 inline real cos_delta_phi(basic_direction<L> a, basic_direction<L2> b) {
   const real xy = (a.x() * a.x() + a.y() * a.y()) * (b.x() * b.x() + b.y() * b.y());
   if (!(xy > real(0))) return real(1);
-  const real c = (a.x() * b.x() + a.y() * b.y()) / std::sqrt(xy);
-  return c < real(-1) ? real(-1) : (c > real(1) ? real(1) : c);
+  return detail::clamp_unit((a.x() * b.x() + a.y() * b.y()) / std::sqrt(xy));
 }
 /// cos φ and sin φ, the azimuth from the tangent (dp/du): only in a tangent frame's space.
 /// In a frame built from a normal alone the azimuth is arbitrary
@@ -190,10 +199,7 @@ diagnose::azimuth_is_arbitrary<diagnose::op::cos_phi, L> cos_phi(basic_direction
 template <class L>
   requires rules::frame_space<L> && rules::tangent_frame_space<L>
 inline real cos_phi(basic_direction<L> w) {
-  const real s = sin_theta(w);
-  if (!(s > real(0))) return real(1);
-  const real c = w.x() / s;
-  return c < real(-1) ? real(-1) : (c > real(1) ? real(1) : c);
+  return detail::azimuth_component(w, w.x(), real(1));
 }
 template <class L>
 diagnose::not_a_frame_space<diagnose::op::sin_phi, L> sin_phi(basic_direction<L>);
@@ -203,10 +209,7 @@ diagnose::azimuth_is_arbitrary<diagnose::op::sin_phi, L> sin_phi(basic_direction
 template <class L>
   requires rules::frame_space<L> && rules::tangent_frame_space<L>
 inline real sin_phi(basic_direction<L> w) {
-  const real s = sin_theta(w);
-  if (!(s > real(0))) return real(0);
-  const real c = w.y() / s;
-  return c < real(-1) ? real(-1) : (c > real(1) ? real(1) : c);
+  return detail::azimuth_component(w, w.y(), real(0));
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE
