@@ -114,20 +114,23 @@ constexpr auto shaded(basic_point<S> p) {
     return p;
 }
 
-/// States an orientation (greppable, like a cast): a value the types cannot follow.
-template <class X>
-constexpr auto as_away(X x) {
+namespace detail {
+template <class O, class X>
+constexpr auto stated(X x) {
   if constexpr (is_checked)
-    return basic_oriented<away, X>(detail::raw_tag{}, x);
+    return basic_oriented<O, X>(raw_tag{}, x);
   else
     return x;
 }
+}  // namespace detail
+/// States an orientation (greppable, like a cast): a value the types cannot follow.
+template <class X>
+constexpr auto as_away(X x) {
+  return detail::stated<away>(x);
+}
 template <class X>
 constexpr auto as_toward(X x) {
-  if constexpr (is_checked)
-    return basic_oriented<toward, X>(detail::raw_tag{}, x);
-  else
-    return x;
+  return detail::stated<toward>(x);
 }
 /// The value without its orientation (the identity unchecked, and on plain values).
 template <class X>
