@@ -254,7 +254,7 @@ bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, 
   if (id == nullptr || scopes_.size() < 2) return false;
   Variable* var = nullptr;
   std::size_t depth = scopes_.size() - 1;
-  for (; depth > 0 && var == nullptr; --depth)
+  for (; depth > 0; --depth)
     if (auto found = scopes_[depth].find(id->name); found != scopes_[depth].end()) {
       var = &found->second;
       break;
