@@ -51,6 +51,7 @@ struct Value {
   // Read-only because it is memory a buffer_reference of this (readonly) block refers to,
   // whatever `name` is (a reference held in a uniform block is read-only, its memory is not).
   const StructInfo* readonly_reference = nullptr;
+  bool stage_output = false;     // an `out` of the stage, or a member or component of one
 };
 
 struct Variable {
@@ -63,6 +64,7 @@ struct Variable {
   Origin origin;
   std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
   bool constant_expression = false;  // const with a constant initializer (GLSL 4.60 §4.3.3)
+  bool stage_output = false;          // what it holds leaves the stage
 };
 
 struct Function {
@@ -169,6 +171,7 @@ class Checker {
   std::optional<Type> affine_part(const Type& vec4, const std::string& swizzle) const;
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
+  bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

@@ -25,6 +25,11 @@ constexpr BuiltinVariableEntry kBuiltinVariables[] = {
 #undef BUILTIN_VARIABLE
 };
 
+// Whether what a declaration holds leaves the stage: an `out`, or a `varying` of a vertex shader.
+bool is_stage_output(const ast::TypeQualifiers& q, Stage stage) {
+  return q.has("out") || (q.has("varying") && stage == Stage::vertex);
+}
+
 // Whether one of `extensions` (space-separated) is enabled; true when the language is unknown.
 bool any_enabled(std::string_view extensions, const LanguageLevel* level) {
   if (!level) return true;
@@ -319,6 +324,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     v.name = decl.name;
     v.range = decl.name_range;
     v.read_only = is_const || (global && is_input);
+    v.stage_output = global && is_stage_output(d.qualifiers, options_.stage);
     v.origin = {decl.name_range, "'" + decl.name + "' declared here"};
     if (declared.shape == Shape::void_) {
       report(Diagnostic::error(decl.name_range, "variable '" + decl.name + "' declared void").with_code(code::E_VOID_VARIABLE));
@@ -414,6 +420,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
         symbols_.declare_variable(decl.name, decl.name_range, t);
         Variable v{decl.name, t, decl.name_range, read_only || member->qualifiers.has("readonly"), false, std::nullopt,
                    {decl.name_range, "'" + decl.name + "' declared here"}};
+        v.stage_output = is_stage_output(d.qualifiers, options_.stage);
         declare_variable(std::move(v));
       }
     }
@@ -426,6 +433,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
     for (const ast::ArrayDim& dim : d.instance_array_dims) t.array.push_back(static_cast<int>(array_size(dim).value_or(-1)));
     Variable v{d.instance_name, t, d.instance_name_range, read_only, false, std::nullopt,
                {d.instance_name_range, "'" + d.instance_name + "' declared here"}};
+    v.stage_output = is_stage_output(d.qualifiers, options_.stage);
     symbols_.declare_variable(d.instance_name, d.instance_name_range, t);
     declare_variable(std::move(v));
   }

@@ -47,6 +47,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.range = e.range;
     v.lvalue = true;
     v.read_only = var->read_only;
+    v.stage_output = var->stage_output;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
@@ -267,7 +268,10 @@ bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, 
   ++muted_;
   const bool fits = check_assignable(lhs.type, value, e.lhs->range, id->name, lhs.origin, "assign");
   --muted_;
-  if (fits) return false;
+  // h /= h.w makes the homogeneous point the point it stands for (w = 1), which fits an hpoint
+  // but is no longer one: a map now applies to it as to vec4(p, 1.0).
+  const bool divided = a.geometry == Geometry::hpoint && b.affine;
+  if (fits && !divided) return false;
   if (depth + 1 == scopes_.size()) {
     var->type = b;
     var->origin = {e.range, "type of '" + id->name + "' set by this assignment", true};
@@ -314,6 +318,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     out.origin.reset();
     return out;
   }
+  if (lhs.stage_output && !homogeneous_part_kept(value, e.lhs->range, member_path(e.lhs, lhs.name))) return error_value(e.range);
   if (!check_assignable(lhs.type, value, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
   Value out = lhs;
   out.range = e.range;

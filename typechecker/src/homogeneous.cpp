@@ -91,6 +91,17 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   const auto vec3 = [](const Type& t) { return t.shape == Shape::vector && t.rows == 3 && t.is_floating() && !t.is_array(); };
   const bool frame = (square_map(lhs.type, 3) && vec3(rhs.type)) || (vec3(lhs.type) && square_map(rhs.type, 3));
   const bool row = frame ? square_map(rhs.type, 3) : (is_vec4(lhs.type) && square_map(rhs.type, 4));
+  if (square_map(lhs.type, 4) && lhs.type.geometry != Geometry::projmap && rhs.type.geometry == Geometry::hpoint &&
+      rhs.type.shape == Shape::vector && rhs.type.rows == 4 && rhs.type.weight == 1) {
+    // An affine map takes points with w = 1; a projection's output has any w until it is divided.
+    const std::string h = operand_text(rhs, "h");
+    operand_mismatch("cannot apply " + name_of(lhs.type) + " to " + name_of(rhs.type) +
+                         ": an affine map takes a point as (p, 1.0), and a homogeneous point's w is 1 only once it is divided by it",
+                     lhs, rhs, op_range,
+                     "divide the whole vec4 by its w first: " + h + " / " + h + ".w (dividing only " + h + ".xyz leaves w as it was)",
+                     code::E_KIND_MISMATCH);
+    return error_value(range);
+  }
   if (!frame && !row && !(square_map(lhs.type, 4) && is_vec4(rhs.type))) return std::nullopt;
   const Value& map = row ? rhs : lhs;
   const Value& v = row ? lhs : rhs;
@@ -167,6 +178,22 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   out.type.affine = std::make_shared<const Type>(moved);
   out.type.affine_w = static_cast<std::int8_t>(w);
   return out;
+}
+
+// Components of a homogeneous point stored into a stage output leave without their w: the
+// perspective divide can no longer happen (a shadow-map coordinate taken as spos.xyz * 0.5 + 0.5).
+// The whole vec4 may leave, and so may the divided coordinates.
+bool Checker::homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name) {
+  const Type& v = value.type;
+  if (v.geometry != Geometry::hpoint || v.shape != Shape::vector || v.rows == 4 || v.weight == 0 || v.is_array()) return true;
+  Diagnostic d = Diagnostic::error(value.range, "cannot assign '" + target_name + "' with a value of type " + name_of(v) +
+                                                    ": the output keeps these coordinates of the homogeneous point but not the w they are divided by")
+                     .with_code(code::E_KIND_MISMATCH);
+  if (target_range.valid()) d.with_highlight(target_range);
+  add_origin_note(d, value);
+  d.with_hint("divide by w before the value leaves the shader (h.xyz / h.w), or pass the whole vec4 and divide where it is used");
+  report(std::move(d));
+  return false;
 }
 
 std::string Checker::operand_text(const Value& v, const std::string& fallback) const {

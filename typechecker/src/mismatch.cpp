@@ -222,8 +222,20 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
                        : "the value has an extra solid angle per area: the inverse-square falloff applied twice?";
   if (area_per_sr) return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
   if (sr_per_area) return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
-  if (is({{"solid_angle", -1}, {"proj", -1}}))
-    return "radiance where irradiance is expected: integrate over projected solid angle (× cos θ dω) to get irradiance";
+  if (is({{"solid_angle", -1}, {"proj", -1}})) {
+    if (named("irradiance", expected.value))
+      return "radiance where irradiance is expected: integrate over projected solid angle (× cos θ dω) to get irradiance";
+    // One brdf too many: a BRDF applied to light that is already reflected (a cosine-convolved
+    // irradiance probe holds E/π, which the albedo alone reflects).
+    std::string brdf;
+    for (const ProductFactor& f : factors)
+      if (brdf.empty() && f.sign > 0 && !f.name.empty() && f.dim.state == DimSlot::State::known && named("brdf", f.dim.value))
+        brdf = f.name;
+    return brdf.empty() ? "the value has an extra factor of brdf (1/(solid_angle·proj)): a BRDF applied twice?"
+                        : "the value has an extra factor of brdf (1/(solid_angle·proj)): '" + brdf +
+                              "' is a brdf, applied here to radiance: a BRDF reflects irradiance (a cosine-convolved probe, E/π, "
+                              "is reflected by the albedo alone)";
+  }
   if (is({{"solid_angle", 1}, {"proj", 1}}))
     return "irradiance where radiance is expected: reflect it with a brdf (1/(solid_angle·proj)) to get radiance";
   if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";

@@ -445,6 +445,16 @@ Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Val
   }
   // Weight 0: plain coordinates. Not a point<S>: after a projection they are
   // NDC, not lengths (homogenize(h), or a declared point<S>, says otherwise).
+  // The whole vec4 divided by its own w is the point with w = 1, homogenize(h) as a vec4:
+  // an affine map then carries it (NDC through the inverse projection, then to world).
+  if (weight == 0 && op == ast::BinaryOp::Div && ha && hb && a.shape == Shape::vector && a.rows == 4 && b.shape == Shape::scalar) {
+    Type point = Type::vector_of(a.scalar, 3);
+    point.geometry = Geometry::point;
+    point.from = space;
+    point.dim = value_dimension(point, result_.registry);
+    out.type.affine = std::make_shared<const Type>(point);
+    out.type.affine_w = 1;
+  }
   return out;
 }
 

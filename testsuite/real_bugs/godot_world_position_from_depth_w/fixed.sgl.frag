@@ -22,6 +22,6 @@ void main() {
     vec4 depth_view = inv_projection_matrix * vec4(ndc, 1.0);
     depth_view /= depth_view.w;
     vec3 world_position = (inv_view_matrix * depth_view).xyz;
-    float<length> height = world_position.y * meter;
+    float<length> height = world_position.y;
     albedo = vec4(vec3(clamp(height / fade_height, 0.0, 1.0)), 1.0);
 }

@@ -12,7 +12,7 @@ uniform map<object, view> worldView;
 uniform mat3<object, view, normal> normalMatrix;
 uniform projmap<view, clip> projection;
 
-in point<object> position;
+in point<object, shaded> position;
 in normal<object> normalIn;
 out direction<view> viewSpaceReflection;
 
