@@ -108,6 +108,7 @@ Value Checker::call(const ast::CallExpr& e) {
       return v;
     }
     Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
+    if (!v.type.is_error() && !unit_length_arguments(e.callee, args)) return error_value(e.range);
     const auto info = result_.calls.find(&e);
     symbols_.use_builtin_function(e.callee, e.callee_range, info == result_.calls.end() ? "" : info->second.signature, v.type);
     return v;
@@ -641,6 +642,13 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};
   std::optional<Type> result = unify_call(e.callee, shape, args, e.range);
   if (!result) return error_value(e.range);
+  for (std::size_t i = 0; i < args.size() && i < best->params.size(); ++i) {
+    const Geometry want = best->params[i].geometry;
+    if (args[i].type.interpolated && (want == Geometry::normal || want == Geometry::direction)) {
+      report_interpolated(args[i], "argument " + std::to_string(i + 1) + " of '" + e.callee + "' is");
+      return error_value(e.range);
+    }
+  }
   symbols_.call_result(*result);
   Value out;
   out.range = e.range;

@@ -172,6 +172,11 @@ class Checker {
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
+  // Interpolated normals and directions (unit_length.cpp).
+  void mark_interpolated(Type& t, const ast::TypeQualifiers& q) const;
+  void report_interpolated(const Value& v, const std::string& where);
+  bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
+  bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

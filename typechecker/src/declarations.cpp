@@ -319,6 +319,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
   if (global) validate_interface(d, base);
   for (const ast::Declarator& decl : d.declarators) {
     Type declared = base.is_error() ? base : with_array_dims(base, decl.array_dims);
+    if (global) mark_interpolated(declared, d.qualifiers);
     Variable v;
     bool poisoned = false;
     v.name = decl.name;
@@ -397,6 +398,8 @@ void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
   for (const ast::VariableDecl* member : d.members)
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
+      mark_interpolated(t, d.qualifiers);
+      if (t.interpolated && member->qualifiers.has("flat")) t.interpolated = false;
       result_.declarators[&decl] = t;
       info->fields.push_back({decl.name, t, member->qualifiers.has("readonly")});
     }

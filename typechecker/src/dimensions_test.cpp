@@ -44,7 +44,7 @@ TEST(Dimensions, LiteralPolicy) {
 }
 
 TEST(Dimensions, UnannotatedLocalsAreInferredFromTheirInitialiser) {
-  auto c = check_source("space world; in normal<world> n; in direction<world> wi; void main() {\n"
+  auto c = check_source("space world; uniform normal<world> n; in direction<world> wi; void main() {\n"
                         "  float c = dot(n, wi);\n  float<length> d = 3.0 * meter;\n  float a = d * d;\n  vec3 zero = vec3(0.0);\n  float one = 1.0;\n}");
   EXPECT_EQ(c->rendered(), "");
   EXPECT_EQ(declared_type(*c, "c"), "float<proj>");

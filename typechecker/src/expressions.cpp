@@ -372,6 +372,12 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
     return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
+  if (v.interpolated && !target.interpolated && (target.geometry == Geometry::normal || target.geometry == Geometry::direction)) {
+    const std::string name = value.name.empty() ? operand_text(value, "n") : value.name;
+    return fail(std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with the interpolated " +
+                    geometry_name(v.geometry) + " '" + name + "': it is not of unit length until normalize()",
+                "normalize it first: normalize(" + name + ")", code::E_KIND_MISMATCH);
+  }
   if (orientations_clash(target.orientation, v.orientation))
     return fail(sentence, orientation_hint(value, target.orientation), code::E_ORIENTATION);
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&

@@ -184,6 +184,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   }
 
   // + - * / %
+  if (!unit_length_offset(op, lhs, rhs)) return error_value(range);
   if (std::optional<Value> v = affine_sum(op, lhs, rhs, op_range, range)) return *v;
   std::optional<Type> shape = arithmetic_shape(op, a, b);
   const bool map_operand = is_map(a.geometry) || is_map(b.geometry);

@@ -12,7 +12,7 @@ uniform spectrum<radiance> emissive;
 uniform spectrum<1> throughput;
 
 in point<world> hitPosition;                        // the emitter point the ray hit
-in normal<world> hitNormal;
+flat in normal<world> hitNormal;                   // the emitter's normal at the hit (not interpolated)
 in point<world> previousPosition;                   // where the ray started
 in float<pdf_solid_angle> brdfPdf;                  // the BRDF sample's pdf
 out vec4 radianceOut;

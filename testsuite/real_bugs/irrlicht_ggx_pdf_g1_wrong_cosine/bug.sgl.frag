@@ -11,7 +11,7 @@ uniform spectrum<1> F0;
 
 in direction<world, away> V;
 in direction<world, away> L;                          // the sampled direction
-in normal<world> N;
+flat in normal<world> N;                               // the shading normal, given (not interpolated)
 out vec4 fragColor;
 
 const float PI = 3.141592653589793;

@@ -11,7 +11,7 @@ in normal<world> N;
 out vec4 c;
 void main() {
   float<length> d = distance(lightPos, P);
-  float<proj> cosTheta = max(dot(N, normalize(lightPos - P)), 0.0);
+  float<proj> cosTheta = max(dot(normalize(N), normalize(lightPos - P)), 0.0);
   spectrum<irradiance> E = I * inverse_square(d) * cosTheta;
   spectrum<irradiance> E2 = I * inverse_square(d + offset) * cosTheta;
   c = vec4(E + E2, 1.0);

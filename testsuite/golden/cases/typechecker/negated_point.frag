@@ -8,5 +8,5 @@ out vec4 c;
 void main() {
   direction<view, away> V = normalize(-P);
   vector<view, toward> wrong = -P;
-  c = vec4(V, dot(N, V));
+  c = vec4(V, dot(normalize(N), V));
 }

@@ -112,6 +112,9 @@ struct Type {
   // A map's matrix that is the inverse transpose of the map from `from` to `to`
   // (transpose(inverse(m))): it carries normals from `from` to `to`, as vec4(n, 0.0).
   bool normal_matrix = false;
+  // Geometry::normal and direction: interpolated across a primitive (a fragment shader's
+  // input), so not of unit length until normalize().
+  bool interpolated = false;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }

@@ -1,0 +1,48 @@
+// Interpolated normals and directions (docs/language.md, "Unit length"): a fragment
+// shader's `in normal<S>` or `in direction<S>` is interpolated across the primitive, so
+// it is shorter than 1 until normalize(). Where its length matters — a cosine, a
+// reflection, an offset along it, a declared normal or direction — the checker says so.
+
+#include "checker_impl.hpp"
+
+namespace safegi::detail {
+
+void Checker::mark_interpolated(Type& t, const ast::TypeQualifiers& q) const {
+  const bool input = q.has("in") || q.has("varying");
+  if (options_.stage != Stage::fragment || !input || q.has("flat") || t.is_array()) return;
+  if (t.geometry == Geometry::normal) t.interpolated = true;
+}
+
+void Checker::report_interpolated(const Value& v, const std::string& where) {
+  const std::string name = v.name.empty() ? operand_text(v, "n") : v.name;
+  Diagnostic d = Diagnostic::error(v.range, where + " '" + name + "', a " + geometry_name(v.type.geometry) +
+                                                " interpolated across the primitive: it is not of unit length until normalize()")
+                     .with_code(code::E_KIND_MISMATCH);
+  add_origin_note(d, v);
+  d.with_hint("normalize it first: normalize(" + name + ")");
+  report(std::move(d));
+}
+
+bool Checker::unit_length_arguments(const std::string& name, const std::vector<Value>& args) {
+  if (name != "dot" && name != "reflect" && name != "refract" && name != "faceforward") return true;
+  for (std::size_t i = 0; i < args.size(); ++i)
+    if (args[i].type.interpolated) {
+      report_interpolated(args[i], "argument " + std::to_string(i + 1) + " of '" + name + "' is");
+      return false;
+    }
+  return true;
+}
+
+// n * bias moves a point by bias only along a unit n.
+bool Checker::unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs) {
+  if (op != ast::BinaryOp::Mul) return true;
+  const Value* n = lhs.type.interpolated ? &lhs : rhs.type.interpolated ? &rhs : nullptr;
+  if (n == nullptr) return true;
+  const Type& scale = (n == &lhs ? rhs : lhs).type;
+  const DimSlot d = value_dimension(scale, result_.registry);
+  if (scale.shape != Shape::scalar || !d.is_known() || d.value.is_dimensionless()) return true;
+  report_interpolated(*n, "an offset of " + name_of(scale) + " along");
+  return false;
+}
+
+}  // namespace safegi::detail
