@@ -87,7 +87,7 @@ const Shader& shader() {
       blocks.push_back(i);
     }
     out.text += "void main() {\n    spectrum<radiance> L = spectrum<radiance>(0.0);\n";
-    for (int b = 0; b < static_cast<int>(blocks.size()); b += 64) out.text += "    L += shade" + std::to_string(b) + "(P, N, " + std::to_string(b) + ");\n";
+    for (int b = 0; b < static_cast<int>(blocks.size()); b += 64) out.text += "    L += shade" + std::to_string(b) + "(P, normalize(N), " + std::to_string(b) + ");\n";
     out.text += "    fragColor = vec4(L, 1.0);\n}\n";
     out.lines = lines_of(out.text);
     return out;
