@@ -66,10 +66,11 @@ bool DimensionRegistry::add_unit(std::string name, Dimension dimension, double s
   return true;
 }
 
-std::optional<SpaceId> DimensionRegistry::add_space(std::string name, bool eye) {
+std::optional<SpaceId> DimensionRegistry::add_space(std::string name, bool eye, bool frame) {
   if (!claim(name, Kind::space)) return std::nullopt;
   spaces_.push_back(std::move(name));
   eye_spaces_.push_back(eye);
+  frame_spaces_.push_back(frame);
   return static_cast<SpaceId>(spaces_.size() - 1);
 }
 

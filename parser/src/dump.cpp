@@ -231,6 +231,7 @@ class Dumper {
       case NodeKind::SpaceDecl:
         text(static_cast<const SpaceDecl*>(n)->name);
         if (static_cast<const SpaceDecl*>(n)->eye) text("eye");
+        if (static_cast<const SpaceDecl*>(n)->frame) text("frame");
         break;
       case NodeKind::CompoundStmt:
         close();

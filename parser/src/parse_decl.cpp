@@ -449,10 +449,11 @@ Decl* Parser::parse_annotation_declaration() {
     decl->name = std::string(name.text);
     decl->name_range = name.range;
     if (accept(T::Colon)) {
-      // `space view : eye;`: the one property a space may be given.
-      if (!(at(T::Ident) && peek().text == "eye")) fail_expected("'eye'", "after ':' in a space declaration");
+      // `space view : eye;` or `space shading : frame;`: the one property a space may be given.
+      if (!(at(T::Ident) && (peek().text == "eye" || peek().text == "frame")))
+        fail_expected("'eye' or 'frame'", "after ':' in a space declaration");
+      (peek().text == "frame" ? decl->frame : decl->eye) = true;
       advance();
-      decl->eye = true;
     }
     expect_semicolon("after space declaration");
     result = decl;

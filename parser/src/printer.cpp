@@ -423,7 +423,8 @@ void GlslPrinter::declaration(const Decl& d, bool top_level) {
     }
     case NodeKind::SpaceDecl:
       if (!options_.annotations) return;
-      out_ += "space " + static_cast<const SpaceDecl&>(d).name + (static_cast<const SpaceDecl&>(d).eye ? " : eye" : "") + ';';
+      out_ += "space " + static_cast<const SpaceDecl&>(d).name + (static_cast<const SpaceDecl&>(d).eye ? " : eye" : "") +
+              (static_cast<const SpaceDecl&>(d).frame ? " : frame" : "") + ';';
       break;
     case NodeKind::EmptyDecl: out_ += ';'; break;
     default: break;

@@ -154,13 +154,15 @@ void Checker::declare_unit(const ast::UnitDecl& d) {
 void Checker::declare_space(const ast::SpaceDecl& d) {
   DimensionRegistry& reg = result_.registry;
   if (const std::optional<SpaceId> s = reg.find_space(d.name)) {
-    if (reg.is_eye_space(*s) == d.eye) return;  // repeated identically: a header included twice
-    report(Diagnostic::error(d.name_range, "space '" + d.name + "' is redeclared " +
-                                               (d.eye ? "with its origin at the eye; it was not" : "without its origin at the eye; it had it"))
+    if (reg.is_eye_space(*s) == d.eye && reg.is_frame_space(*s) == d.frame) return;  // a header included twice
+    const std::string was = reg.is_eye_space(*s) ? " : eye" : reg.is_frame_space(*s) ? " : frame" : "";
+    const std::string now = d.eye ? " : eye" : d.frame ? " : frame" : "";
+    report(Diagnostic::error(d.name_range, "space '" + d.name + "' is redeclared as 'space " + d.name + now + ";'; it was 'space " +
+                                               d.name + was + ";'")
                .with_code(code::E_REDECLARED));
     return;
   }
-  if (!reg.add_space(d.name, d.eye))
+  if (!reg.add_space(d.name, d.eye, d.frame))
     report(Diagnostic::error(d.name_range, "'" + d.name + "' is already declared").with_code(code::E_REDECLARED));
 }
 

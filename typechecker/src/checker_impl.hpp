@@ -177,6 +177,7 @@ class Checker {
   void report_interpolated(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
+  std::optional<Dimension> frame_cosine(const Type& t) const;
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

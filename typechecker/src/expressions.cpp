@@ -534,6 +534,7 @@ Value Checker::member(const ast::MemberExpr& e) {
       out.type = Type::vector_of(t.scalar, static_cast<int>(s.size()));
       out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
       if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
+      if (s == "z" && frame_cosine(t)) out.type.dim = DimSlot::known(*frame_cosine(t));
     }
     out.lvalue = base.lvalue && !repeated;
     return out;

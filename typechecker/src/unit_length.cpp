@@ -1,7 +1,8 @@
-// Interpolated normals and directions (docs/language.md, "Unit length"): a fragment
-// shader's `in normal<S>` or `in direction<S>` is interpolated across the primitive, so
-// it is shorter than 1 until normalize(). Where its length matters — a cosine, a
-// reflection, an offset along it, a declared normal or direction — the checker says so.
+// Unit length (docs/language.md, "What spaces do not reach"). A fragment shader's
+// `in normal<S>` is interpolated across the primitive, so it is shorter than 1 until
+// normalize(); where its length matters (a cosine, a reflection, an offset along it, a
+// declared normal or direction) the checker says so. And a unit direction's z in a
+// normal-aligned frame is its cosine.
 
 #include "checker_impl.hpp"
 
@@ -43,6 +44,14 @@ bool Checker::unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value
   if (scale.shape != Shape::scalar || !d.is_known() || d.value.is_dimensionless()) return true;
   report_interpolated(*n, "an offset of " + name_of(scale) + " along");
   return false;
+}
+
+// In a frame whose z axis is the surface normal (`space shading : frame;`, pbrt's shading space)
+// a unit direction's z is its cosine to the normal: CosTheta(w) = w.z.
+std::optional<Dimension> Checker::frame_cosine(const Type& t) const {
+  const bool unit = t.geometry == Geometry::direction || t.geometry == Geometry::normal;
+  if (!unit || t.interpolated || !t.from.is_known() || !result_.registry.is_frame_space(t.from.id)) return std::nullopt;
+  return result_.registry.find_dimension("proj");
 }
 
 }  // namespace safegi::detail

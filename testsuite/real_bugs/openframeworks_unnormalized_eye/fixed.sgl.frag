@@ -3,7 +3,7 @@
 // A creative-coding toolkit's built-in Phong shader, in eye coordinates (the
 // camera at the origin): Blinn's half vector between the unit vectors to the
 // light and to the eye.
-space view;
+space view : eye;                      // eye space: the camera at the origin
 
 uniform point<view> lightPosition;
 uniform spectrum<1> lightDiffuse;
@@ -28,7 +28,7 @@ void pointLight(normal<view> normal, direction<view, away> eye, point<view, shad
 
 void main() {
     vec3 transformedNormal = normalize(v_transformedNormal);
-    direction<view, away> eye = -normalize(vector<view>(v_eyePosition));
+    direction<view, away> eye = -normalize(v_eyePosition);
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     pointLight(transformedNormal, eye, v_eyePosition, diffuse, specular);

@@ -4,7 +4,7 @@
 // asymmetrically (it is indexed by the outgoing direction first, the way the
 // sampling routine draws the incident one from it), so evaluating f for a
 // light sample must pass (wo, wi) in the order sampling uses.
-space shading;
+space shading : frame;                  // the shading frame: z is the normal
 
 uniform sampler2D measuredTable;                      // rows: outgoing elevation, columns: half-vector elevation
 uniform spectrum<brdf> tableScale;
@@ -22,6 +22,6 @@ spectrum<brdf> measuredF(direction<shading> o, direction<shading> i) {
 
 void main() {
     float cosI = max(wi.z, 0.0);
-    spectrum<radiance> L = measuredF(wi, wo) * lightRadiance * float<proj>(cosI) / lightPdf;
+    spectrum<radiance> L = measuredF(wi, wo) * lightRadiance * cosI / lightPdf;
     fragColor = vec4(L, 1.0);
 }

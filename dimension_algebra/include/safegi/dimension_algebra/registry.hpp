@@ -60,8 +60,11 @@ class DimensionRegistry {
   bool add_unit(std::string name, Dimension dimension, double scale);
   // eye: the space's origin is the eye (`space view : eye;`), so a point's coordinates are the
   // vector from the eye to it.
-  std::optional<SpaceId> add_space(std::string name, bool eye = false);
+  // frame: a local frame whose z axis is the surface normal (`space shading : frame;`), so a
+  // direction's z coordinate is its cosine to the normal.
+  std::optional<SpaceId> add_space(std::string name, bool eye = false, bool frame = false);
   bool is_eye_space(SpaceId id) const { return id < eye_spaces_.size() && eye_spaces_[id]; }
+  bool is_frame_space(SpaceId id) const { return id < frame_spaces_.size() && frame_spaces_[id]; }
 
   bool is_declared(std::string_view name) const { return kinds_.count(std::string(name)) != 0; }
   std::optional<BaseId> find_base(std::string_view name) const;
@@ -149,7 +152,8 @@ class DimensionRegistry {
   std::vector<DerivedDimension> derived_;
   std::vector<Unit> units_;
   std::vector<std::string> spaces_;
-  std::vector<bool> eye_spaces_;  // per space: its origin is the eye
+  std::vector<bool> eye_spaces_;    // per space: its origin is the eye
+  std::vector<bool> frame_spaces_;  // per space: its z axis is the surface normal
   std::unordered_map<std::string, std::pair<Kind, std::size_t>> kinds_;
 };
 

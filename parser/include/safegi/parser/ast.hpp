@@ -505,7 +505,8 @@ struct SpaceDecl : Decl {
   static bool classof(NodeKind k) { return k == NodeKind::SpaceDecl; }
   std::string name;
   SourceRange name_range;
-  bool eye = false;  // `space view : eye;`: the space's origin is the eye
+  bool eye = false;    // `space view : eye;`: the space's origin is the eye
+  bool frame = false;  // `space shading : frame;`: a local frame whose z axis is the surface normal
 };
 
 // A stray `;` at global scope.
