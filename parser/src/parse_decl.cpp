@@ -124,7 +124,16 @@ bool Parser::is_annotated_type_word(const PToken& token) const {
       std::end(kAnnotatedTypeWords)) {
     return false;
   }
-  return lookup(token.text) == nullptr;  // a program's own declaration shadows the word
+  const NameKind* own = lookup(token.text);
+  if (own == nullptr) return true;
+  if (*own == NameKind::Type) return false;  // a program's own type shadows the word
+  // A variable of that name (`in normal<object> normal;`) leaves the word a type where only a
+  // type can stand: `normal<world> n` and `normal<world>(x)` would otherwise compare a bool.
+  if (&token < tokens_.data() || &token >= tokens_.data() + tokens_.size()) return false;
+  const std::size_t at = static_cast<std::size_t>(&token - tokens_.data());
+  if (at + 1 >= tokens_.size() || tokens_[at + 1].kind != T::Lt) return false;
+  const std::size_t end = scan_annotation(at + 1, 0);
+  return end != 0 && (tokens_[end].kind == T::Ident || tokens_[end].kind == T::LParen);
 }
 
 // ----------------------------------------------------------------- lookahead

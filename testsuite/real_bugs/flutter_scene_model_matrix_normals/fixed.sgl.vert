@@ -13,10 +13,10 @@ uniform FrameInfo {
     point<world> camera_position;
 } frame_info;
 
-out point<world> v_position;
-out normal<world> v_normal;
 in point<object> position;
 in normal<object> normal;
+out point<world> v_position;
+out normal<world> v_normal;
 in vec2 texture_coords;
 out vector<world> v_viewvector;
 out vec2 v_texture_coords;
