@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -97,17 +98,33 @@ std::size_t count_errors(const std::string& log) {
   return count;
 }
 
+bool names_spirv(const std::string& path) { return path.size() > 4 && path.compare(path.size() - 4, 4, ".spv") == 0; }
+
+// --target-env sets the environment only; the outputs say the form: SPIR-V when each is named
+// .spv, or when none is named (glslangValidator's vert.spv, ...); plain GLSL of that environment
+// otherwise (a Vulkan build whose glslc compiles the checked text). Empty: a mix of both.
+std::optional<bool> target_env_writes_spirv(const std::vector<std::string>& outputs) {
+  const auto spv = static_cast<std::size_t>(std::count_if(outputs.begin(), outputs.end(), names_spirv));
+  if (spv != 0 && spv != outputs.size()) return std::nullopt;
+  return outputs.empty() || spv == outputs.size();
+}
+
 }  // namespace
 
 bool wants_spirv(const std::vector<std::string>& raw_args) {
-  static const std::string_view kSpirvOnly[] = {"--client", "--target-env", "--aml", "--auto-map-locations",
-                                                "--amb", "--auto-map-bindings", "-R", "-g"};
-  for (const std::string& a : normalise(raw_args)) {
-    const std::string_view flag = std::string_view(a).substr(0, a.find('='));
+  static const std::string_view kSpirvOnly[] = {"--client", "--aml", "--auto-map-locations", "--amb", "--auto-map-bindings",
+                                                "-R", "-g"};
+  const std::vector<std::string> args = normalise(raw_args);
+  bool target_env = false;
+  std::vector<std::string> outputs;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view flag = std::string_view(args[i]).substr(0, args[i].find('='));
     for (std::string_view name : kSpirvOnly)
       if (flag == name) return true;
+    target_env = target_env || flag == "--target-env";
+    if (args[i] == "-o" && i + 1 < args.size()) outputs.push_back(args[i + 1]);
   }
-  return false;
+  return target_env && target_env_writes_spirv(outputs).value_or(true);
 }
 
 int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, SpirvBackend spirv_backend) {
@@ -227,16 +244,29 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     }
     spirv = candidate;
   }
-  if (spirv) {
+  // The environment (Vulkan or OpenGL rules) and the output form are independent: -V, -G and
+  // --client write SPIR-V; --target-env alone writes what the outputs are named.
+  bool write_spirv = spirv.has_value();
+  if (spirv && client.empty()) {
+    const std::optional<bool> form = target_env_writes_spirv(outputs);
+    if (!form) {
+      io.err << "safeglslc: error: some -o outputs are named .spv and some are not; with --target-env the names choose "
+                "SPIR-V (.spv) or plain GLSL for every input alike\n";
+      return kExitUsage;
+    }
+    write_spirv = *form;
+  }
+  if (spirv && !write_spirv && spirv->client == SpirvClient::opengl) spirv.reset();  // plain OpenGL GLSL: the default rules
+  if (write_spirv) {
     if (auto_map_locations) spirv->auto_map_locations = true;
     if (auto_map_bindings) spirv->auto_map_bindings = true;
     spirv->relaxed_vulkan_rules = relaxed;
     spirv->debug_info = debug_info;
   } else if (auto_map_locations || auto_map_bindings || relaxed || debug_info) {
-    io.err << "safeglslc: error: --aml, --amb, -R and -g are for SPIR-V output; give -V or -G too\n";
+    io.err << "safeglslc: error: --aml, --amb, -R and -g are for SPIR-V output; give -V or -G too (or name the outputs .spv)\n";
     return kExitUsage;
   }
-  if (spirv && !spirv_backend) {
+  if (write_spirv && !spirv_backend) {
     io.err << "safeglslc: error: this safeglslc cannot write SPIR-V (it is safeglslc-spirv's job, which was not found "
               "beside it)\n";
     return kExitUsage;
@@ -307,7 +337,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
 
   std::vector<std::string> texts;
   for (const StageOutput& stage : result.stages) texts.push_back(stage.glsl);
-  if (spirv) {
+  if (write_spirv) {
     SpirvResult modules = spirv_backend(result, *spirv);
     io.err << modules.log;
     if (!modules.success) {

@@ -159,5 +159,26 @@ TEST(Safeglslc, QuotesAWindowOfAVeryLongLine) {
   EXPECT_NE(r.err.find("\n..."), std::string::npos);
 }
 
+// The environment and the output form are independent: --target-env vulkan1.2 with a GLSL-named
+// output checks Vulkan GLSL and writes it plain (this test's safeglslc has no SPIR-V backend);
+// .spv names, or none, ask for SPIR-V as glslangValidator's --target-env does.
+TEST(Safeglslc, TargetEnvironmentWithAGlslOutputWritesPlainVulkanGlsl) {
+  const std::string vulkan =
+      "#version 450\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(float(gl_VertexIndex)); gl_Position = c; }\n";
+  CliRun plain = run({"-", "-S", "vert", "--target-env", "vulkan1.2", "-o", "-"}, vulkan);
+  EXPECT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.out.find("gl_VertexIndex"), std::string::npos) << plain.out;
+  CliRun gl = run({"-", "-S", "vert", "-o", "-"}, vulkan);
+  EXPECT_NE(gl.status, 0);
+  EXPECT_NE(gl.err.find("gl_VertexIndex"), std::string::npos) << gl.err;
+  EXPECT_TRUE(wants_spirv({"x.vert", "--target-env", "vulkan1.2"}));
+  EXPECT_TRUE(wants_spirv({"x.vert", "--target-env", "vulkan1.2", "-o", "x.spv"}));
+  EXPECT_FALSE(wants_spirv({"x.vert", "--target-env", "vulkan1.2", "-o", "x.vert.glsl"}));
+  EXPECT_TRUE(wants_spirv({"x.vert", "-V", "-o", "x.vert.glsl"}));
+  CliRun mixed = run({"a.vert", "b.frag", "--target-env", "vulkan1.2", "-o", "a.spv", "-o", "b.frag.glsl"});
+  EXPECT_EQ(mixed.status, 2);
+  EXPECT_NE(mixed.err.find("some -o outputs are named .spv and some are not"), std::string::npos) << mixed.err;
+}
+
 }  // namespace
 }  // namespace safegi
