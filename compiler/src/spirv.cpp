@@ -81,6 +81,7 @@ bool is_builtin_glsl_type(const std::string& type) {
 struct UniformLocations {
   std::vector<std::pair<std::string, int>> assigned;
   int next_free = 0;
+  bool explicit_locations = false;  // some uniform has layout(location)
 };
 
 UniformLocations program_uniform_locations(const CompileResult& compiled) {
@@ -88,11 +89,14 @@ UniformLocations program_uniform_locations(const CompileResult& compiled) {
   for (const gl::StageSymbols& stage : compiled.symbols.stages) stages.push_back(&stage);
   std::stable_sort(stages.begin(), stages.end(),
                    [](const auto* a, const auto* b) { return static_cast<int>(a->stage) < static_cast<int>(b->stage); });
+  // In glslang's order (TVarEntryInfo::TOrderByPriority): a layout(binding) first, then
+  // layout(set), then declaration order.
   auto uniforms = [](const gl::StageSymbols& stage) {
     std::vector<const gl::Symbol*> out;
     for (const gl::Symbol& symbol : stage.symbols)
       if (symbol.storage == gl::Storage::uniform && symbol.block.empty() && symbol.type.kind != gl::Kind::block)
         out.push_back(&symbol);
+    std::stable_sort(out.begin(), out.end(), [](const gl::Symbol* a, const gl::Symbol* b) { return a->binding && !b->binding; });
     return out;
   };
   std::vector<bool> taken;
@@ -101,10 +105,13 @@ UniformLocations program_uniform_locations(const CompileResult& compiled) {
     for (int i = first; i < first + count; ++i) taken[static_cast<std::size_t>(i)] = true;
   };
   auto size_of = [](const gl::Symbol& symbol) { return std::max(1, symbol.array_size.value_or(1)); };
+  UniformLocations result;
   for (const auto* stage : stages)
     for (const gl::Symbol* symbol : uniforms(*stage))
-      if (symbol->location) take(*symbol->location, size_of(*symbol));
-  UniformLocations result;
+      if (symbol->location) {
+        take(*symbol->location, size_of(*symbol));
+        result.explicit_locations = true;
+      }
   std::vector<std::string> named;
   for (const auto* stage : stages) {
     for (const gl::Symbol* symbol : uniforms(*stage)) {
@@ -187,7 +194,10 @@ SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options)
     shader->setEnvTarget(glslang::EShTargetSpv, kSpirvVersions[spirv_minor]);
     if (options.relaxed_vulkan_rules && vulkan) shader->setEnvInputVulkanRulesRelaxed();
     shader->setAutoMapLocations(map_locations);
-    if (map_locations && !vulkan) {
+    // One stage: glslang's own numbering, as glslangValidator -G gives it. Several, or an
+    // explicit layout(location) that glslang's numbering would alias: one location space for
+    // the program, stepping around the explicit ones (docs/safeglslc.md).
+    if (map_locations && !vulkan && (compiled.stages.size() > 1 || uniform_locations.explicit_locations)) {
       for (const auto& [name, location] : uniform_locations.assigned) shader->addUniformLocationOverride(name.c_str(), location);
       shader->setUniformLocationBase(uniform_locations.next_free);
     }
