@@ -13,7 +13,7 @@ uniform projmap<view, clip> uProjectionMatrix;
 uniform mat3<object, view, normal> uNormalMatrix;
 uniform int uDirectionalLightCount;
 uniform direction<view, toward> uLightingDirection[5];   // the light's travel direction
-uniform spectrum<irradiance> uDirectionalDiffuseColors[5];
+uniform spectrum<irradiance / proj> uDirectionalDiffuseColors[5];   // on a surface facing the light
 
 in point<object> aPosition;
 in normal<object> aNormal;

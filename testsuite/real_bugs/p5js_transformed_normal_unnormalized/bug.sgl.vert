@@ -13,7 +13,7 @@ uniform projmap<view, clip> uProjectionMatrix;
 uniform mat3<object, view, normal> uNormalMatrix;
 uniform int uPointLightCount;
 uniform point<view> uPointLightLocation[5];
-uniform spectrum<irradiance> uPointLightColor[5];
+uniform spectrum<irradiance / proj> uPointLightColor[5];   // on a surface facing the light
 
 in point<object, shaded> aPosition;
 in normal<object> aNormal;
