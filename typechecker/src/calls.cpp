@@ -250,8 +250,9 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   if (!result) return error_value(call_range);
   std::optional<Orientation> orientation = builtin_orientation(name, args, call_range);
   if (!orientation) return error_value(call_range);
-  if (result->geometry == Geometry::vector || result->geometry == Geometry::direction ||
-      (result->geometry == Geometry::point && *orientation == Orientation::shaded))
+  if (result->geometry == Geometry::vector || result->geometry == Geometry::direction || result->geometry == Geometry::normal ||
+      (result->geometry == Geometry::point && *orientation == Orientation::shaded) ||
+      (name == "dot" && result->shape == Shape::scalar))
     result->orientation = *orientation;
   std::vector<DimSlot> argument_dims;
   for (const Value& a : args) argument_dims.push_back(value_dimension(a.type, result_.registry));

@@ -127,9 +127,48 @@ std::optional<Orientation> Checker::builtin_orientation(const std::string& name,
     if (name == "faceforward") return Orientation::none;
     return incident.type.orientation == Orientation::toward ? Orientation::away : Orientation::none;
   }
+  if (name == "dot" && args.size() == 2) {
+    // The shaded point's normal points away from it: a cosine with a direction toward the
+    // surface (a light's travel direction, an incident ray) is negative where the surface faces it.
+    auto sign = [](Orientation o) { return o == Orientation::away ? 1 : o == Orientation::toward ? -1 : 0; };
+    return sign(args[0].type.orientation) * sign(args[1].type.orientation) < 0 ? Orientation::toward : Orientation::none;
+  }
+  if ((name == "max" || name == "clamp") && !negative_cosine_kept(name, args, call_range)) return std::nullopt;
   if (name == "normalize" && args.size() == 1) return args[0].type.orientation;
   if (name == "transform" && args.size() == 2) return args[1].type.orientation;  // the shaded point moves with its space
   return Orientation::none;
+}
+
+// max(dot(n, d), 0.0) with d toward the surface is 0 wherever the surface faces d: the sign of
+// the cosine of incidence is the real bug (a light's travel direction not negated).
+bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range) {
+  const Value* cosine = nullptr;
+  bool zero_bound = false;
+  for (const Value& a : args) {
+    if (a.type.shape == Shape::scalar && a.type.orientation == Orientation::toward) cosine = &a;
+    zero_bound = zero_bound || (a.number && *a.number == 0.0);
+  }
+  if (cosine == nullptr || !zero_bound) return true;
+  std::string fixed;  // dot(n, -d) when the argument is the dot product itself
+  if (const auto* call = ast::dyn_cast<ast::CallExpr>(without_parens(expression_at(cosine->range)));
+      call && call->callee == "dot" && call->args.size() == 2) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto found = result_.types.find(call->args[i]);
+      if (found != result_.types.end() && found->second.orientation == Orientation::toward && found->second.geometry != Geometry::none)
+        fixed = "dot(" + (i == 0 ? reversed_expression(call->args[0]) + ", " + print_expression(*call->args[1])
+                                 : print_expression(*call->args[0]) + ", " + reversed_expression(call->args[1])) + ")";
+    }
+  }
+  Diagnostic d = Diagnostic::error(cosine->range, "'" + name + "' bounds at 0 a cosine between the shaded point's normal and a "
+                                                      "direction toward the surface: it is negative wherever the surface faces "
+                                                      "that direction, so the result is 0 there")
+                     .with_code(code::E_ORIENTATION)
+                     .with_highlight(call_range);
+  add_origin_note(d, *cosine);
+  d.with_hint("the cosine of incidence takes the direction away from the surface" +
+              (fixed.empty() ? std::string(": negate the direction toward it") : ": " + fixed));
+  report(std::move(d));
+  return false;
 }
 
 }  // namespace safegi::detail

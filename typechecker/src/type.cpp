@@ -207,7 +207,9 @@ std::string type_name(const Type& t, const DimensionRegistry& registry, const st
         if (!(t.dim.is_known() && length && t.dim.value == *length))
           out += ", " + dim_name(t.dim, registry, dim_params);
       }
-      if (t.orientation != Orientation::none) out += std::string(", ") + orientation_name(t.orientation);
+      // A stage input's normal points away from the shaded point without saying so: its own word.
+      if (t.orientation != Orientation::none && t.geometry != Geometry::normal)
+        out += std::string(", ") + orientation_name(t.orientation);
     }
     return out + ">" + suffix;
   }

@@ -9,9 +9,12 @@
 namespace safegi::detail {
 
 void Checker::mark_interpolated(Type& t, const ast::TypeQualifiers& q) const {
-  const bool input = q.has("in") || q.has("varying");
-  if (options_.stage != Stage::fragment || !input || q.has("flat") || t.is_array()) return;
-  if (t.geometry == Geometry::normal) t.interpolated = true;
+  const bool input = q.has("in") || q.has("attribute") || (q.has("varying") && options_.stage != Stage::vertex);
+  if (!input || t.is_array() || t.geometry != Geometry::normal) return;
+  // A stage's own normal (a vertex's attribute, a fragment's interpolated one) is the shaded point's:
+  // it points away from it (docs/language.md, "Orientation").
+  if (options_.stage == Stage::vertex || options_.stage == Stage::fragment) t.orientation = Orientation::away;
+  if (options_.stage == Stage::fragment && !q.has("flat")) t.interpolated = true;
 }
 
 void Checker::report_interpolated(const Value& v, const std::string& where) {
