@@ -65,6 +65,7 @@ struct Variable {
   std::optional<double> number;  // a const float/double's value (pow's exponent, int(x) array sizes)
   bool constant_expression = false;  // const with a constant initializer (GLSL 4.60 §4.3.3)
   bool stage_output = false;          // what it holds leaves the stage
+  bool zero_start = false;            // an unannotated local that starts at zero: its first value names its type
 };
 
 struct Function {
@@ -183,6 +184,7 @@ class Checker {
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).
   bool rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value);
+  bool infer_from_zero(bool global, const Type& declared, const Value& init) const;
   // The source text of an operand, for a hint's code: its name, else its text when that is one short line, else `fallback`.
   std::string operand_text(const Value& v, const std::string& fallback) const;
   std::optional<std::string> literal_sum_hint(const Value& lhs, const Value& rhs) const;

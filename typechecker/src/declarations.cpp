@@ -355,6 +355,8 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
         } else {
           poisoned = true;
         }
+      } else if (infer_from_zero(global, declared, init)) {
+        v.zero_start = true;  // an accumulator: `vec3 sum = vec3(0.0); sum += …`
       } else if (!declared.is_error() && !check_assignable(declared, init, decl.name_range, decl.name, v.origin, "initialize")) {
         poisoned = true;  // one mistake, one error: later uses of this variable stay silent
       }

@@ -250,6 +250,12 @@ std::string Checker::member_path(const ast::Expr* target, const std::string& var
 // normalised lobe. An assignment of another type rebinds it from there on, in the same
 // block; in a nested block (a branch, a loop) the value after it is either, so unknown.
 // An annotated variable never changes: the assignment is checked against it.
+// `vec3 sum = vec3(0.0);`: an unannotated local whose start is zero, which fits any dimension.
+bool Checker::infer_from_zero(bool global, const Type& declared, const Value& init) const {
+  return !global && init.zero && !declared.is_annotated() && !declared.is_error() && !declared.is_array() &&
+         (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating();
+}
+
 bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value) {
   const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e.lhs);
   if (id == nullptr || scopes_.size() < 2) return false;
@@ -260,8 +266,19 @@ bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, 
       var = &found->second;
       break;
     }
-  if (var == nullptr || var->builtin || !var->origin.inferred || var->read_only) return false;
+  if (var == nullptr || var->builtin || var->read_only) return false;
   Type a = var->type, b = value.type;
+  if (var->zero_start && !a.is_annotated() && b.is_annotated() && implicitly_converts(b.scalar, a.scalar)) {
+    // Zero has every dimension: the first annotated value stored (or added) names the type, from
+    // any block (a loop's `sum += x`), and later values are checked against it.
+    b.scalar = a.scalar;
+    if (!same_glsl_type(a, b)) return false;
+    var->type = b;
+    var->zero_start = false;
+    var->origin = {e.range, "type of '" + id->name + "' set by this assignment (it started at zero)", true};
+    return true;
+  }
+  if (!var->origin.inferred) return false;
   if (!implicitly_converts(b.scalar, a.scalar)) return false;
   b.scalar = a.scalar;
   if (!same_glsl_type(a, b)) return false;
@@ -311,7 +328,9 @@ Value Checker::assign(const ast::AssignExpr& e) {
     value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
     if (value.type.is_error()) return error_value(e.range);
   }
-  if (rebind_inferred_local(e, lhs, value)) {
+  // `sum += x` of a local that starts at zero: the sum is x's quantity (plain + x is x's, unchecked).
+  const bool summed = e.op == ast::AssignOp::Add || e.op == ast::AssignOp::Sub;
+  if (rebind_inferred_local(e, lhs, summed && !lhs.type.is_annotated() ? rhs : value)) {
     Value out = value;
     out.range = e.range;
     out.lvalue = false;

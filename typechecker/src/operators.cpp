@@ -347,10 +347,15 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
                         ? "divide each by its own w first (h.xy / h.w): two projections' coordinates meet only after the perspective divide"
                         : space_hint(a.from, b.from),
                     code::E_SPACE_MISMATCH);
-    if (!lhs.zero && !rhs.zero && !consistent(da, db))
+    // Colours as numbers, as scalars are: a plain colour times a cosine (a Lambert term of
+    // unannotated lights) beside one times a lobe (Phong's specular) is a plain colour.
+    const bool colours = ga != Geometry::point && gb != Geometry::point && !vectorish(ga) && !vectorish(gb) &&
+                         ga != Geometry::hpoint && gb != Geometry::hpoint;
+    const bool cosine_a = colours && cosine_as_number(db, da), cosine_b = colours && cosine_as_number(da, db);
+    if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b)
       return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), code::E_DIMENSION_MISMATCH);
     const bool unknown = da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown;
-    out.type.dim = unknown ? DimSlot::unknown() : (lhs.zero ? db : da);
+    out.type.dim = unknown ? DimSlot::unknown() : (cosine_a ? db : cosine_b ? da : lhs.zero ? db : da);
     keep_shared_spelling(out.type.dim, {da, db});
     out.type.from = space;
     if (gb == Geometry::point && !add && (ga == Geometry::point || ga == Geometry::none)) {
