@@ -645,8 +645,8 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   if (!result) return error_value(e.range);
   for (std::size_t i = 0; i < args.size() && i < best->params.size(); ++i) {
     const Geometry want = best->params[i].geometry;
-    if (args[i].type.interpolated && (want == Geometry::normal || want == Geometry::direction)) {
-      report_interpolated(args[i], "argument " + std::to_string(i + 1) + " of '" + e.callee + "' is");
+    if (args[i].type.length_loss != Type::LengthLoss::none && (want == Geometry::normal || want == Geometry::direction)) {
+      report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + e.callee + "' is");
       return error_value(e.range);
     }
   }

@@ -175,7 +175,8 @@ class Checker {
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   // Interpolated normals and directions (unit_length.cpp).
   void mark_interpolated(Type& t, const ast::TypeQualifiers& q) const;
-  void report_interpolated(const Value& v, const std::string& where);
+  std::string not_unit_subject(const Value& v) const;
+  void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   std::optional<Dimension> frame_cosine(const Type& t) const;

@@ -401,7 +401,7 @@ void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
       mark_interpolated(t, d.qualifiers);
-      if (t.interpolated && member->qualifiers.has("flat")) t.interpolated = false;
+      if (member->qualifiers.has("flat") && t.length_loss == Type::LengthLoss::interpolated) t.length_loss = Type::LengthLoss::none;
       result_.declarators[&decl] = t;
       info->fields.push_back({decl.name, t, member->qualifiers.has("readonly")});
     }

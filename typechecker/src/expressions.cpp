@@ -338,7 +338,9 @@ Value Checker::assign(const ast::AssignExpr& e) {
     return out;
   }
   if (lhs.stage_output && !homogeneous_part_kept(value, e.lhs->range, member_path(e.lhs, lhs.name))) return error_value(e.range);
-  if (!check_assignable(lhs.type, value, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
+  Value stored = value;
+  if (lhs.stage_output) stored.type.length_loss = Type::LengthLoss::none;  // the next stage normalizes what it interpolates
+  if (!check_assignable(lhs.type, stored, e.lhs->range, member_path(e.lhs, lhs.name), lhs.origin, "assign")) return error_value(e.range);
   Value out = lhs;
   out.range = e.range;
   out.lvalue = false;
@@ -391,10 +393,11 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
     return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
-  if (v.interpolated && !target.interpolated && (target.geometry == Geometry::normal || target.geometry == Geometry::direction)) {
+  if (v.length_loss != Type::LengthLoss::none && target.length_loss == Type::LengthLoss::none &&
+      (target.geometry == Geometry::normal || target.geometry == Geometry::direction)) {
     const std::string name = value.name.empty() ? operand_text(value, "n") : value.name;
-    return fail(std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with the interpolated " +
-                    geometry_name(v.geometry) + " '" + name + "': it is not of unit length until normalize()",
+    return fail(std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with " + not_unit_subject(value) +
+                    ": it is not of unit length until normalize()",
                 "normalize it first: normalize(" + name + ")", code::E_KIND_MISMATCH);
   }
   if (orientations_clash(target.orientation, v.orientation))

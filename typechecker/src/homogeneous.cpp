@@ -167,6 +167,8 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   }
   Type moved = x;
   moved.from = target;
+  // A normal matrix scales a normal unless its map is rigid: the length is lost until normalize().
+  if (normal && carries_normals && !rigid) moved.length_loss = Type::LengthLoss::scaled;
   if (x.geometry == Geometry::direction && !rigid) {
     moved.geometry = Geometry::vector;  // a scaled direction is no longer of unit length
     moved.dim = DimSlot::known(Dimension{});

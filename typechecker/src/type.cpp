@@ -56,7 +56,7 @@ Type Type::plain() const {
   t.affine = nullptr;
   t.affine_w = 0;
   t.normal_matrix = false;
-  t.interpolated = false;
+  t.length_loss = LengthLoss::none;
   return t;
 }
 

@@ -14,13 +14,20 @@ void Checker::mark_interpolated(Type& t, const ast::TypeQualifiers& q) const {
   // A stage's own normal (a vertex's attribute, a fragment's interpolated one) is the shaded point's:
   // it points away from it (docs/language.md, "Orientation").
   if (options_.stage == Stage::vertex || options_.stage == Stage::fragment) t.orientation = Orientation::away;
-  if (options_.stage == Stage::fragment && !q.has("flat")) t.interpolated = true;
+  if (options_.stage == Stage::fragment && !q.has("flat")) t.length_loss = Type::LengthLoss::interpolated;
 }
 
-void Checker::report_interpolated(const Value& v, const std::string& where) {
+// "'vN', a normal interpolated across the primitive", "'n', a normal carried by a normal matrix that may scale".
+std::string Checker::not_unit_subject(const Value& v) const {
   const std::string name = v.name.empty() ? operand_text(v, "n") : v.name;
-  Diagnostic d = Diagnostic::error(v.range, where + " '" + name + "', a " + geometry_name(v.type.geometry) +
-                                                " interpolated across the primitive: it is not of unit length until normalize()")
+  return "'" + name + "', a " + geometry_name(v.type.geometry) +
+         (v.type.length_loss == Type::LengthLoss::scaled ? " carried by a normal matrix that may scale"
+                                                         : " interpolated across the primitive");
+}
+
+void Checker::report_not_unit(const Value& v, const std::string& where) {
+  const std::string name = v.name.empty() ? operand_text(v, "n") : v.name;
+  Diagnostic d = Diagnostic::error(v.range, where + " " + not_unit_subject(v) + ": it is not of unit length until normalize()")
                      .with_code(code::E_KIND_MISMATCH);
   add_origin_note(d, v);
   d.with_hint("normalize it first: normalize(" + name + ")");
@@ -30,8 +37,8 @@ void Checker::report_interpolated(const Value& v, const std::string& where) {
 bool Checker::unit_length_arguments(const std::string& name, const std::vector<Value>& args) {
   if (name != "dot" && name != "reflect" && name != "refract" && name != "faceforward") return true;
   for (std::size_t i = 0; i < args.size(); ++i)
-    if (args[i].type.interpolated) {
-      report_interpolated(args[i], "argument " + std::to_string(i + 1) + " of '" + name + "' is");
+    if (args[i].type.length_loss != Type::LengthLoss::none) {
+      report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + name + "' is");
       return false;
     }
   return true;
@@ -40,12 +47,13 @@ bool Checker::unit_length_arguments(const std::string& name, const std::vector<V
 // n * bias moves a point by bias only along a unit n.
 bool Checker::unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs) {
   if (op != ast::BinaryOp::Mul) return true;
-  const Value* n = lhs.type.interpolated ? &lhs : rhs.type.interpolated ? &rhs : nullptr;
+  const auto lost = [](const Value& v) { return v.type.length_loss != Type::LengthLoss::none; };
+  const Value* n = lost(lhs) ? &lhs : lost(rhs) ? &rhs : nullptr;
   if (n == nullptr) return true;
   const Type& scale = (n == &lhs ? rhs : lhs).type;
   const DimSlot d = value_dimension(scale, result_.registry);
   if (scale.shape != Shape::scalar || !d.is_known() || d.value.is_dimensionless()) return true;
-  report_interpolated(*n, "an offset of " + name_of(scale) + " along");
+  report_not_unit(*n, "an offset of " + name_of(scale) + " along");
   return false;
 }
 
@@ -53,7 +61,7 @@ bool Checker::unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value
 // a unit direction's z is its cosine to the normal: CosTheta(w) = w.z.
 std::optional<Dimension> Checker::frame_cosine(const Type& t) const {
   const bool unit = t.geometry == Geometry::direction || t.geometry == Geometry::normal;
-  if (!unit || t.interpolated || !t.from.is_known() || !result_.registry.is_frame_space(t.from.id)) return std::nullopt;
+  if (!unit || t.length_loss != Type::LengthLoss::none || !t.from.is_known() || !result_.registry.is_frame_space(t.from.id)) return std::nullopt;
   return result_.registry.find_dimension("proj");
 }
 

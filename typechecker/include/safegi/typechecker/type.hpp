@@ -112,9 +112,11 @@ struct Type {
   // A map's matrix that is the inverse transpose of the map from `from` to `to`
   // (transpose(inverse(m))): it carries normals from `from` to `to`, as vec4(n, 0.0).
   bool normal_matrix = false;
-  // Geometry::normal and direction: interpolated across a primitive (a fragment shader's
-  // input), so not of unit length until normalize().
-  bool interpolated = false;
+  // Geometry::normal: why it is not of unit length until normalize() (docs/language.md,
+  // "What spaces do not reach"): interpolated across a primitive (a fragment shader's
+  // input), or carried by a normal matrix that may scale.
+  enum class LengthLoss : std::uint8_t { none, interpolated, scaled };
+  LengthLoss length_loss = LengthLoss::none;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }
