@@ -181,6 +181,7 @@ class Checker {
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   std::optional<Dimension> frame_cosine(const Type& t) const;
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
+  bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

@@ -256,6 +256,12 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
   auto simple = [&](const Dimension& d) { return d.factors().size() == 1 && d.factors()[0].exponent == 1; };
   if (simple(expected.value) && simple(found.value))
     return found_name + " where " + expected_name + " is expected: a different quantity, not a missing factor (another variable meant?)";
+  // An extra light quantity by its name: two light quantities multiplied that should be added.
+  if (energy && r.exponent(*energy) == 1 && expected.value.exponent(*energy) == 1)
+    for (const DerivedDimension& d : reg.derived())
+      if (d.value == r)
+        return found_name + " where " + expected_name + " is expected: the value has an extra factor of " + d.name + " (" +
+               reg.format_product(r) + "), a light quantity: two light quantities multiplied where they add?";
   return found_name + " where " + expected_name + " is expected: the value differs by a factor of " + reg.format_product(r);
 }
 

@@ -323,6 +323,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
 
   if (op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub) {
     const bool add = op == ast::BinaryOp::Add;
+    if (!add && !written_reflection_ok(lhs, rhs, op_range)) return error_value(range);
     if (ga == Geometry::point && gb == Geometry::point && add)
       return reject("cannot add two points (" + both + ")", "subtract them to get a vector, or average them with mix(p, q, 0.5)",
                     code::E_POINT_ARITHMETIC);

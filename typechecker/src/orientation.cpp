@@ -139,6 +139,40 @@ std::optional<Orientation> Checker::builtin_orientation(const std::string& name,
   return Orientation::none;
 }
 
+// The reflection written out, 2 n (n·w) - w, mirrors w about n only for a w that points away
+// from the surface (pbrt's wo); an incident direction (toward it) comes out pointing into the
+// surface: that one is reflect(w, n).
+bool Checker::written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range) {
+  if (rhs.type.orientation != Orientation::toward || !vectorish(rhs.type.geometry) || !vectorish(lhs.type.geometry)) return true;
+  const ast::Expr* minuend = without_parens(expression_at(lhs.range));
+  const ast::Expr* w = without_parens(expression_at(rhs.range));
+  if (minuend == nullptr || w == nullptr) return true;
+  const std::string w_text = print_expression(*w);
+  // A dot(n, w) or dot(w, n) among the factors of the minuend; n is its other argument.
+  std::string n_text;
+  std::vector<const ast::Expr*> factors{minuend};
+  while (!factors.empty() && n_text.empty()) {
+    const ast::Expr* f = without_parens(factors.back());
+    factors.pop_back();
+    if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(f); b && b->op == ast::BinaryOp::Mul) {
+      factors.push_back(b->lhs);
+      factors.push_back(b->rhs);
+    } else if (const auto* dot = ast::dyn_cast<ast::CallExpr>(f); dot && dot->callee == "dot" && dot->args.size() == 2) {
+      const std::string a = print_expression(*dot->args[0]), b = print_expression(*dot->args[1]);
+      if (a == w_text || b == w_text) n_text = a == w_text ? b : a;
+    }
+  }
+  if (n_text.empty()) return true;
+  Diagnostic d = Diagnostic::error(rhs.range, "2 n (n·w) - w mirrors w about n only when w points away from the surface, and '" +
+                                                  w_text + "' points toward it: the result points into the surface")
+                     .with_code(code::E_ORIENTATION)
+                     .with_highlight(op_range);
+  add_origin_note(d, rhs);
+  d.with_hint("the reflection of an incident direction is reflect(" + w_text + ", " + n_text + ")");
+  report(std::move(d));
+  return false;
+}
+
 // max(dot(n, d), 0.0) with d toward the surface is 0 wherever the surface faces d: the sign of
 // the cosine of incidence is the real bug (a light's travel direction not negated).
 bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range) {
