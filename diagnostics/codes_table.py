@@ -11,12 +11,14 @@ as a string literal ("E-…"/"W-…") outside codes.def and tests (call sites us
 the constants, code::E_…), on a constant code::E_… that codes.def lacks, and on
 a declared code no source emits. Tests may spell codes: they are expected values.
 
---goldens reads the expected outputs (*.expected) under each DIR and fails on a diagnostic line with
-a location (`file:line:col: error:` or `warning:`) that has no [CODE], or whose
-code codes.def lacks. Lines of the driver (`safeglslc: error:`, usage) and the
-ones glslangValidator prints for SPIR-V (`file:line: error:`) are not the stages'.
+--goldens reads the expected outputs (*.expected) under each DIR and fails on
+a diagnostic with a location (a line `file:line:col: error:` or `warning:`, or
+a JSON diagnostic with a range) that has no code, or one codes.def lacks. Lines
+of the driver (`safeglslc: error:`, usage) and the ones glslangValidator prints
+for SPIR-V (`file:line: error:`) are not the stages'.
 """
 import argparse
+import json
 import pathlib
 import re
 import sys
@@ -94,6 +96,11 @@ def check_goldens(folders) -> int:
     for path in sorted(p for folder in folders for p in pathlib.Path(folder).rglob("*.expected")):
         for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
             line = ANSI.sub("", line).rstrip()
+            if line.startswith('{"diagnostics":'):  # --diagnostics-format=json
+                for d in json.loads(line)["diagnostics"]:
+                    if d.get("severity") in ("error", "warning") and "range" in d and d.get("code") not in declared:
+                        bad.append(f"{path}:{number}: a diagnostic without a declared code: {d.get('message')}")
+                continue
             if not LOCATED.match(line):
                 continue
             m = CODE_AT_END.search(line)
