@@ -3,13 +3,22 @@
 
     diagnostics/codes_table.py --write docs/typechecker.md    # the table between the codes markers
     diagnostics/codes_table.py --check docs/typechecker.md    # ctest: the page lists exactly codes.def
-    diagnostics/codes_table.py --sources .                     # ctest: every code the sources spell is declared
+    diagnostics/codes_table.py --sources .                     # ctest: sources emit codes through code::
+    diagnostics/codes_table.py --goldens DIR...                # ctest: every located diagnostic has a code
 
---sources reads every C++ source of the repository (tests too) and fails on a
-string literal "E-…"/"W-…" or a constant code::E_… that codes.def lacks, and
-on a declared code no source emits.
+--sources reads every C++ source of the repository and fails on a code spelled
+as a string literal ("E-…"/"W-…") outside codes.def and tests (call sites use
+the constants, code::E_…), on a constant code::E_… that codes.def lacks, and on
+a declared code no source emits. Tests may spell codes: they are expected values.
+
+--goldens reads the expected outputs (*.expected) under each DIR and fails on
+a diagnostic with a location (a line `file:line:col: error:` or `warning:`, or
+a JSON diagnostic with a range) that has no code, or one codes.def lacks. Lines
+of the driver (`safeglslc: error:`, usage) and the ones glslangValidator prints
+for SPIR-V (`file:line: error:`) are not the stages'.
 """
 import argparse
+import json
 import pathlib
 import re
 import sys
@@ -41,6 +50,10 @@ def table():
     return "\n".join(rows) + "\n"
 
 
+def is_test(path: pathlib.Path) -> bool:
+    return path.stem.endswith("_test") or "test_support" in path.stem or "testsuite" in path.parts
+
+
 def check_sources(root: pathlib.Path) -> int:
     declared = {code for _, code, _ in codes()}
     identifiers = {ident for ident, _, _ in codes()}
@@ -55,9 +68,11 @@ def check_sources(root: pathlib.Path) -> int:
         for m in re.finditer(r'"([EW]-[A-Z][A-Z0-9-]*)"', text):
             if m.group(1) in NOT_CODES:
                 continue
-            used.add(m.group(1))
+            where = f"{path.relative_to(root)}:{text.count(chr(10), 0, m.start()) + 1}"
             if m.group(1) not in declared:
-                bad.append(f"{path.relative_to(root)}: \"{m.group(1)}\" is not in codes.def")
+                bad.append(f"{where}: \"{m.group(1)}\" is not in codes.def")
+            elif not is_test(path.relative_to(root)):
+                bad.append(f"{where}: the literal \"{m.group(1)}\"; use code::{m.group(1).replace('-', '_')} (codes.def)")
         for m in re.finditer(r"\bcode::([EW]_[A-Z0-9_]+)", text):
             used.add(m.group(1).replace("_", "-"))
             if m.group(1) not in identifiers:
@@ -69,12 +84,44 @@ def check_sources(root: pathlib.Path) -> int:
     return 1 if bad else 0
 
 
+# A diagnostic with a location as the text renderer prints it (colour codes removed).
+LOCATED = re.compile(r"^\S.*?:\d+:\d+: (error|warning): ")
+ANSI = re.compile(r"\x1b\[[0-9;]*m")
+CODE_AT_END = re.compile(r"\[([EW]-[A-Z0-9-]+)\]$")
+
+
+def check_goldens(folders) -> int:
+    declared = {code for _, code, _ in codes()}
+    bad = []
+    for path in sorted(p for folder in folders for p in pathlib.Path(folder).rglob("*.expected")):
+        for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+            line = ANSI.sub("", line).rstrip()
+            if line.startswith('{"diagnostics":'):  # --diagnostics-format=json
+                for d in json.loads(line)["diagnostics"]:
+                    if d.get("severity") in ("error", "warning") and "range" in d and d.get("code") not in declared:
+                        bad.append(f"{path}:{number}: a diagnostic without a declared code: {d.get('message')}")
+                continue
+            if not LOCATED.match(line):
+                continue
+            m = CODE_AT_END.search(line)
+            if not m:
+                bad.append(f"{path}:{number}: a diagnostic without a code: {line}")
+            elif m.group(1) not in declared:
+                bad.append(f"{path}:{number}: {m.group(1)} is not in codes.def")
+    for line in bad:
+        print(line)
+    return 1 if bad else 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--write")
     parser.add_argument("--check")
     parser.add_argument("--sources")
+    parser.add_argument("--goldens", nargs="+", metavar="DIR")
     args = parser.parse_args()
+    if args.goldens:
+        return check_goldens(args.goldens)
     if args.sources:
         return check_sources(pathlib.Path(args.sources).resolve())
     doc = pathlib.Path(args.write or args.check)

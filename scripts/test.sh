@@ -2,6 +2,7 @@
 # The test command: installs dependencies, builds, and runs the whole test suite.
 #   scripts/test.sh               Release build + every ctest test
 #   scripts/test.sh --sanitize    also rebuilds the compiler under ASan+UBSan and runs its tests there
+#   SAFEGI_WERROR=ON scripts/test.sh   a compiler warning fails the build (CI; both passes, GCC and Clang)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 sanitize=0
@@ -9,10 +10,11 @@ sanitize=0
 
 "$root/scripts/install-deps.sh"
 jobs=${SAFEGI_JOBS:-$(nproc)}
+werror=-DSAFEGI_WERROR=${SAFEGI_WERROR:-OFF}
 
 # The Release pass with CMake's default generator (Unix Makefiles: what a user
 # types, and stricter than Ninja about output folders), the sanitizer pass with Ninja.
-SAFEGI_GENERATOR=${SAFEGI_GENERATOR:-default} "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
+SAFEGI_GENERATOR=${SAFEGI_GENERATOR:-default} "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release "$werror"
 (cd "$root/build" && ctest --output-on-failure -j "$jobs")
 
 if ((sanitize)); then
@@ -27,7 +29,7 @@ if ((sanitize)); then
   # folder when SAFEGI_FUZZ_BUILD_DIR names it, as CI does), so the pipeline is
   # compiled twice in CI, not three times; clang also compiles this pass about
   # 25 % faster than GCC. The Release pass stays GCC, so both compilers build it.
-  SAFEGI_GENERATOR=Ninja "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON \
+  SAFEGI_GENERATOR=Ninja "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSAFEGI_SANITIZE=ON "$werror" \
       -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
       "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link" -DSAFEGI_FUZZ=ON \
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <safegi/diagnostics/codes.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/elider/elider.hpp>
 #include <safegi/lexer/preprocessor.hpp>
@@ -243,6 +244,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     if (!stage || *stage == Stage::unknown) {
       diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
                                      "cannot tell the shader stage of '" + sources[i].path + "' from its name")
+                       .with_code(code::E_PROGRAM)
                        .with_hint("name it *.vert, *.frag, … (or *.sgl.frag), or give the stage with -S"));
       continue;
     }
@@ -251,8 +253,8 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     for (std::size_t j = 0; j < i && one_per_program; ++j)
       if (work[j].stage == *stage) {
         diags.report(Diagnostic::error(manager->range_of(w.file, 0, 0),
-                                       "a program has at most one " + std::string(stage_extension(*stage)) +
-                                           " stage")
+                                       "a program has at most one " + std::string(stage_extension(*stage)) + " stage")
+                         .with_code(code::E_PROGRAM)
                          .with_note(Diagnostic::note(manager->range_of(work[j].file, 0, 0), "the other one is here")));
       }
     w.stage = *stage;

@@ -28,8 +28,8 @@ std::string explain_diagnostic_code(std::string_view code) {
   if (!c) return {};
   const bool warning = code.starts_with("W-");
   return std::string(c->code) + ": " + std::string(c->meaning) + ".\n\n" + (warning ? "A warning" : "An error") +
-         " of safeglslc's checker. docs/typechecker.md (\"Diagnostics\") lists every code; docs/language.md gives the rules "
-         "it enforces.\n";
+         " of safeglslc. docs/typechecker.md (\"Diagnostics\") lists every code of every stage; docs/language.md "
+         "and docs/preprocessor.md give the rules they enforce.\n";
 }
 
 }  // namespace safegi

@@ -41,7 +41,7 @@ bool is_known_version(int v) {
 void Preprocessor::directive_define(FileState& f, const Token& hash) {
   std::vector<Token> line = read_directive_line(f, DirectiveKind::define, hash);
   if (line.empty()) {
-    error(directive_range(hash, line), "macro name missing in #define");
+    error(code::E_DIRECTIVE, directive_range(hash, line), "macro name missing in #define");
     return;
   }
   if (!check_macro_name(line[0], true, f.is_command_line)) return;
@@ -59,11 +59,12 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
     }
     while (!closed) {
       if (i >= line.size() || line[i].kind != TokenKind::identifier) {
-        error(i < line.size() ? line[i].range : line.back().range, "expected a parameter name in macro parameter list");
+        error(code::E_MACRO, i < line.size() ? line[i].range : line.back().range,
+              "expected a parameter name in macro parameter list");
         return;
       }
       if (macro->param_index(line[i].text) >= 0) {
-        error(line[i].range, "duplicate macro parameter '" + std::string(line[i].text) + "'");
+        error(code::E_MACRO, line[i].range, "duplicate macro parameter '" + std::string(line[i].text) + "'");
         return;
       }
       macro->params.push_back(line[i].text);
@@ -74,7 +75,8 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
         ++i;
         closed = true;
       } else {
-        error(i < line.size() ? line[i].range : line.back().range, "expected ',' or ')' in macro parameter list");
+        error(code::E_MACRO, i < line.size() ? line[i].range : line.back().range,
+              "expected ',' or ')' in macro parameter list");
         return;
       }
     }
@@ -86,12 +88,14 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
     // rejects a use, so this warns here and expand_macro() errs on a use.
     const Token& bad = body.front().kind == TokenKind::hash_hash ? body.front() : body.back();
     diagnostics_.report(Diagnostic::warning(bad.range, "'##' cannot appear at either end of a macro body")
+                            .with_code(code::W_MACRO)
                             .with_hint("using this macro is an error"));
     macro->paste_at_edge = bad.range;
   }
   for (const Token& t : body) {
     if (t.kind == TokenKind::hash) {
       diagnostics_.report(Diagnostic::error(t.range, "'#' is not allowed in a macro body")
+                              .with_code(code::E_MACRO)
                               .with_hint("GLSL has no stringizing operator; only '##' (token pasting) is supported"));
       return;
     }
@@ -99,7 +103,8 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
   auto it = macros_.find(macro->name);
   if (it != macros_.end()) {
     if (!it->second->same_definition(*macro)) {
-      Diagnostic d = Diagnostic::error(macro->name_range, "'" + std::string(macro->name) + "' macro redefined");
+      Diagnostic d = Diagnostic::error(macro->name_range, "'" + std::string(macro->name) + "' macro redefined")
+                         .with_code(code::E_MACRO);
       if (it->second->name_range.valid()) d.with_note(Diagnostic::note(it->second->name_range, "previous definition is here"));
       diagnostics_.report(std::move(d));
     }
@@ -112,7 +117,7 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
 void Preprocessor::directive_undef(FileState& f, const Token& hash) {
   std::vector<Token> line = read_directive_line(f, DirectiveKind::undef, hash);
   if (line.empty()) {
-    error(directive_range(hash, line), "macro name missing in #undef");
+    error(code::E_DIRECTIVE, directive_range(hash, line), "macro name missing in #undef");
     return;
   }
   if (!check_macro_name(line[0], false, f.is_command_line)) return;
@@ -126,35 +131,39 @@ void Preprocessor::directive_version(FileState& f, const Token& hash) {
   std::vector<Token> line = read_directive_line(f, DirectiveKind::version, hash);
   SourceRange directive = directive_range(hash, line);
   if (!f.is_main) {
-    error(directive, "#version is only allowed in the main file, not in an included file");
+    error(code::E_VERSION_DIRECTIVE, directive, "#version is only allowed in the main file, not in an included file");
     return;
   }
   if (unit_.version_given) {
     diagnostics_.report(Diagnostic::error(directive, "#version may appear only once")
+                            .with_code(code::E_VERSION_DIRECTIVE)
                             .with_note(Diagnostic::note(unit_.version_range, "first #version is here")));
     return;
   }
   if (saw_content_) {
-    error(directive, "#version must come first in a shader, before anything but comments and white space");
+    error(code::E_VERSION_DIRECTIVE, directive,
+          "#version must come first in a shader, before anything but comments and white space");
     return;
   }
   if (line.empty() || line[0].kind != TokenKind::int_literal) {
-    error(line.empty() ? directive : line[0].range, "expected a version number after #version");
+    error(code::E_VERSION_DIRECTIVE, line.empty() ? directive : line[0].range,
+          "expected a version number after #version");
     return;
   }
   auto number = integer_literal_value(line[0].text);
   int version = number && *number <= 1000 ? static_cast<int>(*number) : 0;
   if (!is_known_version(version)) {
-    error(line[0].range, "unknown GLSL version " + std::string(line[0].text) +
-                             " (expected 100, 110 ... 150, 300, 310, 320, or 330 ... 460)");
+    error(code::E_VERSION_DIRECTIVE, line[0].range,
+          "unknown GLSL version " + std::string(line[0].text) +
+              " (expected 100, 110 ... 150, 300, 310, 320, or 330 ... 460)");
     return;
   }
   std::string profile;
   if (line.size() > 1) {
     if (line[1].kind != TokenKind::identifier ||
         (line[1].text != "es" && line[1].text != "core" && line[1].text != "compatibility")) {
-      error(line[1].range, "unknown profile '" + std::string(line[1].text) +
-                               "' (expected 'core', 'compatibility' or 'es')");
+      error(code::E_VERSION_DIRECTIVE, line[1].range,
+            "unknown profile '" + std::string(line[1].text) + "' (expected 'core', 'compatibility' or 'es')");
       return;
     }
     profile = line[1].text;
@@ -162,15 +171,15 @@ void Preprocessor::directive_version(FileState& f, const Token& hash) {
   }
   bool es_version = version == 100 || version == 300 || version == 310 || version == 320;
   if (es_version && version != 100 && profile != "es") {
-    error(directive, "#version " + std::to_string(version) + " requires the 'es' profile");
+    error(code::E_VERSION_DIRECTIVE, directive, "#version " + std::to_string(version) + " requires the 'es' profile");
     return;
   }
   if (!es_version && profile == "es") {
-    error(line[1].range, "the 'es' profile requires version 300, 310 or 320");
+    error(code::E_VERSION_DIRECTIVE, line[1].range, "the 'es' profile requires version 300, 310 or 320");
     return;
   }
   if (!profile.empty() && profile != "es" && version < 150) {
-    error(line[1].range, "profiles are only allowed from #version 150 on");
+    error(code::E_VERSION_DIRECTIVE, line[1].range, "profiles are only allowed from #version 150 on");
     return;
   }
   if (options_.override_version == 0) {
@@ -233,27 +242,28 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
   std::vector<Token> line = read_directive_line(f, DirectiveKind::extension, hash);
   SourceRange directive = directive_range(hash, line);
   if (line.empty() || line[0].kind != TokenKind::identifier) {
-    error(line.empty() ? directive : line[0].range, "expected an extension name after #extension");
+    error(code::E_DIRECTIVE, line.empty() ? directive : line[0].range, "expected an extension name after #extension");
     return;
   }
   if (line.size() < 2 || line[1].kind != TokenKind::colon) {
-    error(line.size() < 2 ? line[0].range : line[1].range, "expected ':' after the extension name");
+    error(code::E_DIRECTIVE, line.size() < 2 ? line[0].range : line[1].range, "expected ':' after the extension name");
     return;
   }
   if (line.size() < 3 || line[2].kind != TokenKind::identifier) {
-    error(line.size() < 3 ? line[1].range : line[2].range,
+    error(code::E_DIRECTIVE, line.size() < 3 ? line[1].range : line[2].range,
           "expected 'require', 'enable', 'warn' or 'disable' after ':'");
     return;
   }
   std::string_view name = line[0].text;
   std::string_view behavior = line[2].text;
   if (behavior != "require" && behavior != "enable" && behavior != "warn" && behavior != "disable") {
-    error(line[2].range, "unknown extension behavior '" + std::string(behavior) +
-                             "' (expected 'require', 'enable', 'warn' or 'disable')");
+    error(code::E_DIRECTIVE, line[2].range,
+          "unknown extension behavior '" + std::string(behavior) +
+              "' (expected 'require', 'enable', 'warn' or 'disable')");
     return;
   }
   if (name == "all" && (behavior == "require" || behavior == "enable")) {
-    error(line[2].range, "'all' can only be used with 'warn' or 'disable'");
+    error(code::E_DIRECTIVE, line[2].range, "'all' can only be used with 'warn' or 'disable'");
     return;
   }
   extra_tokens_warning(line, 3, "extension");
@@ -276,9 +286,9 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
       std::find(supported.begin(), supported.end(), name) == supported.end()) {
     std::string message = "extension '" + std::string(name) + "' is not supported";
     if (behavior == "require") {
-      error(line[0].range, std::move(message));
+      error(code::E_EXTENSION, line[0].range, std::move(message));
     } else {
-      diagnostics_.report(Diagnostic::warning(line[0].range, std::move(message)));
+      diagnostics_.report(Diagnostic::warning(line[0].range, std::move(message)).with_code(code::W_EXTENSION));
     }
   } else if (name != "all" && behavior != "disable" && !find_extension(name) && !glslang_knows_extension(name)) {
     // A typo or a name no compiler has: glslangValidator warns (refuses it with require); the
@@ -322,7 +332,8 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
   result.range = directive;
   auto line_number = number(0);
   if (!line_number) {
-    error(expanded.empty() ? directive : expanded[0].token.range, "expected a line number after #line");
+    error(code::E_DIRECTIVE, expanded.empty() ? directive : expanded[0].token.range,
+          "expected a line number after #line");
     return;
   }
   result.line = *line_number;
@@ -333,11 +344,12 @@ void Preprocessor::directive_line(FileState& f, const Token& hash) {
     } else if (auto source_string = number(1)) {
       result.source_string = *source_string;
     } else {
-      error(second.range, "expected a source-string number or a file name after the line number");
+      error(code::E_DIRECTIVE, second.range, "expected a source-string number or a file name after the line number");
       return;
     }
     if (expanded.size() > 2) {
-      diagnostics_.report(Diagnostic::warning(expanded[2].token.range, "extra tokens at end of #line directive"));
+      diagnostics_.report(Diagnostic::warning(expanded[2].token.range, "extra tokens at end of #line directive")
+                              .with_code(code::W_EXTRA_TOKENS));
     }
   }
   // Before GLSL 3.30 (desktop), `#line N` named the directive's own line, so
@@ -361,7 +373,8 @@ void Preprocessor::directive_error(FileState& f, const Token& hash, const Token&
   SourceRange text = f.lexer.rest_of_line();
   record_directive(DirectiveKind::error, hash, text.end);
   std::string message(sources_.text(f.file).substr(text.begin.offset, text.length()));
-  diagnostics_.report(Diagnostic::error(name.range, message.empty() ? "#error" : "#error: " + message));
+  diagnostics_.report(Diagnostic::error(name.range, message.empty() ? "#error" : "#error: " + message)
+                          .with_code(code::E_ERROR_DIRECTIVE));
 }
 
 // ------------------------------------------------------------ #include ---
@@ -379,7 +392,7 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
     for (const Token& t : line) raw.push_back(PPToken{t});
     std::vector<PPToken> expanded = expand_list(std::move(raw), kNoExpansion, 0);
     if (expanded.empty()) {
-      error(line[0].range, "expected \"FILENAME\" or <FILENAME> after #include");
+      error(code::E_DIRECTIVE, line[0].range, "expected \"FILENAME\" or <FILENAME> after #include");
       return;
     }
     line.clear();
@@ -402,7 +415,8 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
   if (!header) {
     if (line.empty() || line[0].kind != TokenKind::string_literal || line[0].text.size() < 2 ||
         line[0].text.back() != '"') {
-      error(line.empty() ? name.range : line[0].range, "expected \"FILENAME\" or <FILENAME> after #include");
+      error(code::E_DIRECTIVE, line.empty() ? name.range : line[0].range,
+            "expected \"FILENAME\" or <FILENAME> after #include");
       return;
     }
     header = line[0];
@@ -411,11 +425,12 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
   extra_tokens_warning(line, 0, "include");
   std::string requested(header->text.substr(1, header->text.size() - 2));
   if (requested.empty()) {
-    error(header->range, "empty file name in #include");
+    error(code::E_INCLUDE, header->range, "empty file name in #include");
     return;
   }
   if (static_cast<int>(files_.size()) > options_.max_include_depth) {
-    error(directive, "#include nested too deeply (limit " + std::to_string(options_.max_include_depth) + ")");
+    error(code::E_LIMIT, directive,
+          "#include nested too deeply (limit " + std::to_string(options_.max_include_depth) + ")");
     aborted_ = true;
     return;
   }
@@ -443,7 +458,7 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
     }
   }
   if (resolved.empty()) {
-    Diagnostic d = Diagnostic::error(header->range, "'" + requested + "' file not found");
+    Diagnostic d = Diagnostic::error(header->range, "'" + requested + "' file not found").with_code(code::E_INCLUDE);
     if (!candidates.empty()) {
       std::string searched;
       for (const std::string& c : candidates) searched += (searched.empty() ? "" : ", ") + c;
@@ -459,7 +474,7 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
       for (const auto& g : files_) {
         if (!g->is_command_line) chain += g->path + " -> ";
       }
-      error(header->range, "#include cycle: " + chain + resolved);
+      error(code::E_INCLUDE, header->range, "#include cycle: " + chain + resolved);
       return;
     }
   }
@@ -468,8 +483,9 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
     id = sources_.add_inclusion(it->second, directive);
   } else {
     if (contents->size() > options_.max_source_bytes) {
-      error(header->range, "'" + requested + "' is too large (" + std::to_string(contents->size()) +
-                               " bytes; limit " + std::to_string(options_.max_source_bytes) + ")");
+      error(code::E_INCLUDE, header->range,
+            "'" + requested + "' is too large (" + std::to_string(contents->size()) + " bytes; limit " +
+                std::to_string(options_.max_source_bytes) + ")");
       return;
     }
     id = sources_.add_file(resolved, std::move(*contents));
@@ -478,7 +494,8 @@ void Preprocessor::directive_include(FileState& f, const Token& hash, const Toke
     if (refuse_non_text(id)) return;
   }
   if (unit_.includes.size() >= options_.max_include_count) {
-    error(directive, "more than " + std::to_string(options_.max_include_count) + " #include directives processed");
+    error(code::E_LIMIT, directive,
+          "more than " + std::to_string(options_.max_include_count) + " #include directives processed");
     aborted_ = true;
     return;
   }

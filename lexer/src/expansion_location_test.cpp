@@ -91,7 +91,7 @@ TEST_F(ExpansionLocations, PredefinedMacroTokensPointAtTheirUse) {
 TEST_F(ExpansionLocations, ErrorsInsideMacroBodiesShowTheExpansion) {
   run("#define BAD(x) x # x\nBAD(1)\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:18: error: '#' is not allowed in a macro body\n"
+            "main.glsl:1:18: error: '#' is not allowed in a macro body [E-MACRO]\n"
             "#define BAD(x) x # x\n"
             "                 ^\n"
             "help: GLSL has no stringizing operator; only '##' (token pasting) is supported\n");
@@ -100,7 +100,7 @@ TEST_F(ExpansionLocations, ErrorsInsideMacroBodiesShowTheExpansion) {
 TEST_F(ExpansionLocations, JsonCarriesTheChain) {
   auto unit = run("#define F(x) x @\nF(1)\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:16: error: invalid character '@' in program\n"
+            "main.glsl:1:16: error: invalid character '@' in program [E-CHARACTER]\n"
             "#define F(x) x @\n"
             "               ^\n"
             "main.glsl:2:1: note: in expansion of macro 'F' (defined at main.glsl:1:9)\n"

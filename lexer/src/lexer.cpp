@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include <safegi/diagnostics/codes.hpp>
+
 namespace safegi {
 namespace {
 
@@ -32,10 +34,12 @@ std::size_t Lexer::skip_splices(std::size_t p) const {
   return p;
 }
 
-void Lexer::error(std::size_t begin, std::size_t end, std::string message) {
+void Lexer::error(const char* code, std::size_t begin, std::size_t end, std::string message) {
   if (!report_errors_) return;
-  diagnostics_.error(sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)),
-                     std::move(message));
+  diagnostics_.report(
+      Diagnostic::error(sources_.range_of(file_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)),
+                        std::move(message))
+          .with_code(code));
 }
 
 bool Lexer::skip_blanks_and_comments() {
@@ -60,7 +64,7 @@ bool Lexer::skip_blanks_and_comments() {
           // Reported even in skipped groups: it swallows the rest of the file.
           bool report = report_errors_;
           report_errors_ = true;
-          error(start, start + 2, "unterminated /* comment");
+          error(code::E_UNTERMINATED_COMMENT, start, start + 2, "unterminated /* comment");
           report_errors_ = report;
           pos_ = text_.size();
           return true;
@@ -121,7 +125,7 @@ Token Lexer::next() {
     if (peek() == '"') {
       advance();
     } else {
-      error(begin, pos_, "missing terminating '\"' character");
+      error(code::E_CHARACTER, begin, pos_, "missing terminating '\"' character");
     }
     token.kind = TokenKind::string_literal;
     finish(token, begin);
@@ -161,9 +165,9 @@ void Lexer::lex_number(Token& token) {
   token.kind = check.kind;
   if (check.error.empty() || !options_.check_numbers) return;
   if (token.range.length() == token.text.size()) {
-    error(begin + check.error_begin, begin + check.error_end, std::move(check.error));
+    error(code::E_LITERAL, begin + check.error_begin, begin + check.error_end, std::move(check.error));
   } else {
-    error(begin, pos_, std::move(check.error));
+    error(code::E_LITERAL, begin, pos_, std::move(check.error));
   }
 }
 
@@ -258,7 +262,7 @@ void Lexer::lex_invalid(Token& token) {
     ++pos_;
   }
   finish(token, begin);
-  if (options_.check_characters) error(begin, pos_, invalid_character_message(token.text));
+  if (options_.check_characters) error(code::E_CHARACTER, begin, pos_, invalid_character_message(token.text));
 }
 
 std::string invalid_character_message(std::string_view spelling) {

@@ -100,28 +100,28 @@ TEST_F(LexerTest, BadLiterals) {
   lex("int a = 09;\nfloat b = 1.0x;\nint c = 4294967296;\nint d = 0x;\nfloat e = 1e+;\nfloat f = 2f;\n"
       "int g = 5q;\nfloat h = 1.5e;\n");
   EXPECT_EQ(errors(),
-            "t.glsl:1:9: error: invalid digit '9' in octal literal\n"
+            "t.glsl:1:9: error: invalid digit '9' in octal literal [E-LITERAL]\n"
             "int a = 09;\n"
             "        ^~\n"
-            "t.glsl:2:14: error: invalid suffix 'x' on floating-point literal\n"
+            "t.glsl:2:14: error: invalid suffix 'x' on floating-point literal [E-LITERAL]\n"
             "float b = 1.0x;\n"
             "             ^\n"
-            "t.glsl:3:9: error: integer literal '4294967296' does not fit in 32 bits\n"
+            "t.glsl:3:9: error: integer literal '4294967296' does not fit in 32 bits [E-LITERAL]\n"
             "int c = 4294967296;\n"
             "        ^~~~~~~~~~\n"
-            "t.glsl:4:9: error: hexadecimal literal has no digits\n"
+            "t.glsl:4:9: error: hexadecimal literal has no digits [E-LITERAL]\n"
             "int d = 0x;\n"
             "        ^~\n"
-            "t.glsl:5:11: error: exponent has no digits\n"
+            "t.glsl:5:11: error: exponent has no digits [E-LITERAL]\n"
             "float e = 1e+;\n"
             "          ^~~\n"
-            "t.glsl:6:11: error: a floating-point literal needs a '.' or an exponent (write '2.0f')\n"
+            "t.glsl:6:11: error: a floating-point literal needs a '.' or an exponent (write '2.0f') [E-LITERAL]\n"
             "float f = 2f;\n"
             "          ^~\n"
-            "t.glsl:7:10: error: invalid suffix 'q' on integer literal\n"
+            "t.glsl:7:10: error: invalid suffix 'q' on integer literal [E-LITERAL]\n"
             "int g = 5q;\n"
             "         ^\n"
-            "t.glsl:8:14: error: exponent has no digits\n"
+            "t.glsl:8:14: error: exponent has no digits [E-LITERAL]\n"
             "float h = 1.5e;\n"
             "             ^\n");
 }
@@ -188,7 +188,7 @@ TEST_F(LexerTest, UnterminatedComment) {
   auto tokens = lex("a\n  /* never\nclosed");
   EXPECT_EQ(tokens.size(), 2u);
   EXPECT_EQ(errors(),
-            "t.glsl:2:3: error: unterminated /* comment\n"
+            "t.glsl:2:3: error: unterminated /* comment [E-UNTERMINATED-COMMENT]\n"
             "  /* never\n"
             "  ^~\n");
 }
@@ -197,25 +197,25 @@ TEST_F(LexerTest, InvalidCharacters) {
   auto tokens = lex("a @ $b;\nc \\ d;\nfloat \xC3\xA9t\xC3\xA9 = 1; // caf\xC3\xA9 ok\n`\x01");
   EXPECT_EQ(tokens[1].kind, K::invalid);
   EXPECT_EQ(errors(),
-            "t.glsl:1:3: error: invalid character '@' in program\n"
+            "t.glsl:1:3: error: invalid character '@' in program [E-CHARACTER]\n"
             "a @ $b;\n"
             "  ^\n"
-            "t.glsl:1:5: error: invalid character '$' in program\n"
+            "t.glsl:1:5: error: invalid character '$' in program [E-CHARACTER]\n"
             "a @ $b;\n"
             "    ^\n"
-            "t.glsl:2:3: error: stray '\\' in program (a line continuation must be the last character on its line)\n"
+            "t.glsl:2:3: error: stray '\\' in program (a line continuation must be the last character on its line) [E-CHARACTER]\n"
             "c \\ d;\n"
             "  ^\n"
-            "t.glsl:3:7: error: non-ASCII character '\xC3\xA9' outside a comment\n"
+            "t.glsl:3:7: error: non-ASCII character '\xC3\xA9' outside a comment [E-CHARACTER]\n"
             "float \xC3\xA9t\xC3\xA9 = 1; // caf\xC3\xA9 ok\n"
             "      ^\n"
-            "t.glsl:3:10: error: non-ASCII character '\xC3\xA9' outside a comment\n"
+            "t.glsl:3:10: error: non-ASCII character '\xC3\xA9' outside a comment [E-CHARACTER]\n"
             "float \xC3\xA9t\xC3\xA9 = 1; // caf\xC3\xA9 ok\n"
             "        ^\n"
-            "t.glsl:4:1: error: invalid character '`' in program\n"
+            "t.glsl:4:1: error: invalid character '`' in program [E-CHARACTER]\n"
             "`\\x01\n"  // the control byte quoted as text, four columns wide
             "^\n"
-            "t.glsl:4:2: error: invalid control character 0x01 in program\n"
+            "t.glsl:4:2: error: invalid control character 0x01 in program [E-CHARACTER]\n"
             "`\\x01\n"
             " ^~~~\n");
 }
@@ -227,7 +227,7 @@ TEST_F(LexerTest, StringLiterals) {
   EXPECT_EQ(tokens[1].kind, K::string_literal);
   EXPECT_EQ(tokens[2].text, "x");
   EXPECT_EQ(errors(),
-            "t.glsl:1:7: error: missing terminating '\"' character\n"
+            "t.glsl:1:7: error: missing terminating '\"' character [E-CHARACTER]\n"
             "\"a b\" \"open\n"
             "      ^~~~~\n");
 }

@@ -17,7 +17,7 @@ Macro* Preprocessor::find_macro(std::string_view name) {
 bool Preprocessor::over_budget(std::size_t more) {
   produced_tokens_ += more;
   if (produced_tokens_ <= options_.max_output_tokens || aborted_) return aborted_;
-  error(SourceRange{last_location_, last_location_},
+  error(code::E_LIMIT, SourceRange{last_location_, last_location_},
         "preprocessing produces more than " + std::to_string(options_.max_output_tokens) +
             " tokens (runaway macro expansion?)");
   aborted_ = true;
@@ -90,7 +90,8 @@ bool Preprocessor::expand_macro(Stream& s, Macro& m, const PPToken& name, Expans
     for (;;) {
       PPToken t = next_unexpanded(s);
       if (t.token.kind == TokenKind::eof) {
-        error(name.token.range, "unterminated argument list invoking macro '" + std::string(m.name) + "'");
+        error(code::E_MACRO, name.token.range,
+              "unterminated argument list invoking macro '" + std::string(m.name) + "'");
         push_back(s, t);
         return false;
       }
@@ -111,7 +112,7 @@ bool Preprocessor::expand_macro(Stream& s, Macro& m, const PPToken& name, Expans
     }
     if (m.params.empty() && args.size() == 1 && args[0].empty()) args.clear();
     if (args.size() != m.params.size()) {
-      error(SourceRange{name.token.range.begin, site.end},
+      error(code::E_MACRO, SourceRange{name.token.range.begin, site.end},
             "macro '" + std::string(m.name) + "' expects " + std::to_string(m.params.size()) + " argument" +
                 (m.params.size() == 1 ? "" : "s") + ", but " + std::to_string(args.size()) +
                 (args.size() == 1 ? " was" : " were") + " given");
@@ -119,18 +120,20 @@ bool Preprocessor::expand_macro(Stream& s, Macro& m, const PPToken& name, Expans
     }
   }
   if (m.paste_at_edge.valid()) {
-    diagnostics_.report(Diagnostic::error(SourceRange{name.token.range.begin, site.end},
-                                          "macro '" + std::string(m.name) + "' cannot be used: '##' at an end of its body")
-                            .with_note(Diagnostic::note(m.paste_at_edge, "'##' is here"))
-                            .with_expansion(name.token.expansion));
+    diagnostics_.report(
+        Diagnostic::error(SourceRange{name.token.range.begin, site.end},
+                          "macro '" + std::string(m.name) + "' cannot be used: '##' at an end of its body")
+            .with_code(code::E_MACRO)
+            .with_note(Diagnostic::note(m.paste_at_edge, "'##' is here"))
+            .with_expansion(name.token.expansion));
     return true;  // the invocation is consumed; nothing replaces it
   }
   int live = 0;
   for (const Buffer& b : s.buffers) live += b.macro != nullptr;
   if (depth + live >= options_.max_expansion_depth) {
-    error(name.token.range, "macro expansion nested too deeply (limit " +
-                                std::to_string(options_.max_expansion_depth) + ") while expanding '" +
-                                std::string(m.name) + "'");
+    error(code::E_LIMIT, name.token.range,
+          "macro expansion nested too deeply (limit " + std::to_string(options_.max_expansion_depth) +
+              ") while expanding '" + std::string(m.name) + "'");
     aborted_ = true;
     return false;
   }
@@ -211,8 +214,8 @@ std::optional<PPToken> Preprocessor::paste(const PPToken& lhs, const PPToken& rh
   if (first.kind == TokenKind::invalid || second.kind != TokenKind::eof || quiet.has_errors() ||
       first.range.length() != joined.size()) {
     diagnostics_.report(Diagnostic::error(op.range, "pasting '" + std::string(lhs.token.text) + "' and '" +
-                                                        std::string(rhs.token.text) +
-                                                        "' does not give a valid token")
+                                                        std::string(rhs.token.text) + "' does not give a valid token")
+                            .with_code(code::E_MACRO)
                             .with_expansion(lhs.token.expansion));
     return std::nullopt;
   }
@@ -226,7 +229,7 @@ std::optional<PPToken> Preprocessor::paste(const PPToken& lhs, const PPToken& rh
 std::vector<PPToken> Preprocessor::expand_list(std::vector<PPToken> tokens, ExpansionId default_parent, int depth) {
   if (depth >= options_.max_expansion_depth) {
     if (!aborted_) {
-      error(tokens.empty() ? SourceRange{last_location_, last_location_} : tokens.front().token.range,
+      error(code::E_LIMIT, tokens.empty() ? SourceRange{last_location_, last_location_} : tokens.front().token.range,
             "macro arguments nested too deeply (limit " + std::to_string(options_.max_expansion_depth) + ")");
     }
     aborted_ = true;

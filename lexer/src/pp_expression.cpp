@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include <safegi/diagnostics/codes.hpp>
+
 #include "preprocessor_internal.hpp"
 
 namespace safegi::detail {
@@ -19,12 +21,13 @@ class ExpressionEvaluator {
 
   std::optional<std::int64_t> run() {
     if (tokens_.empty()) {
-      fail(directive_, "expected an expression after the directive");
+      fail(code::E_PP_EXPRESSION, directive_, "expected an expression after the directive");
       return std::nullopt;
     }
     std::int64_t value = binary(0, true, false);
     if (!failed_ && pos_ < tokens_.size()) {
-      fail(tokens_[pos_].range, "unexpected " + describe(tokens_[pos_]) + " in preprocessor expression");
+      fail(code::E_PP_EXPRESSION, tokens_[pos_].range,
+           "unexpected " + describe(tokens_[pos_]) + " in preprocessor expression");
     }
     if (failed_) return std::nullopt;
     return value;
@@ -36,10 +39,10 @@ class ExpressionEvaluator {
     return std::string(token_kind_description(t.kind));
   }
 
-  void fail(SourceRange range, std::string message, ExpansionId expansion = kNoExpansion) {
+  void fail(const char* code, SourceRange range, std::string message, ExpansionId expansion = kNoExpansion) {
     if (failed_) return;
     failed_ = true;
-    diagnostics_.report(Diagnostic::error(range, std::move(message)).with_expansion(expansion));
+    diagnostics_.report(Diagnostic::error(range, std::move(message)).with_code(code).with_expansion(expansion));
   }
 
   const Token* peek() const { return pos_ < tokens_.size() ? &tokens_[pos_] : nullptr; }
@@ -121,7 +124,9 @@ class ExpressionEvaluator {
       case TokenKind::less_less:
       case TokenKind::greater_greater:
         if (b < 0 || b > 31) {
-          if (evaluated) fail(op.range, "shift count " + std::to_string(b) + " is out of range", op.expansion);
+          if (evaluated)
+            fail(code::E_PP_EXPRESSION, op.range, "shift count " + std::to_string(b) + " is out of range",
+                 op.expansion);
           return 0;
         }
         return kind == TokenKind::less_less ? wrap(ua << b) : wrap(static_cast<std::uint64_t>(a >> b));
@@ -129,8 +134,9 @@ class ExpressionEvaluator {
       case TokenKind::percent:
         if (b == 0) {
           if (evaluated) {
-            fail(op.range, kind == TokenKind::slash ? "division by zero in preprocessor expression"
-                                                    : "remainder by zero in preprocessor expression",
+            fail(code::E_PP_EXPRESSION, op.range,
+                 kind == TokenKind::slash ? "division by zero in preprocessor expression"
+                                          : "remainder by zero in preprocessor expression",
                  op.expansion);
           }
           return 0;
@@ -143,7 +149,7 @@ class ExpressionEvaluator {
 
   std::int64_t unary(bool evaluated, bool quiet) {
     if (++depth_ > context_.max_depth) {
-      fail(peek() ? peek()->range : end_range(), "preprocessor expression nested too deeply");
+      fail(code::E_LIMIT, peek() ? peek()->range : end_range(), "preprocessor expression nested too deeply");
       return 0;
     }
     struct DepthGuard {
@@ -152,7 +158,7 @@ class ExpressionEvaluator {
     } guard{depth_};
     const Token* t = peek();
     if (!t) {
-      fail(end_range(), "expected a value at the end of the preprocessor expression");
+      fail(code::E_PP_EXPRESSION, end_range(), "expected a value at the end of the preprocessor expression");
       return 0;
     }
     ++pos_;
@@ -166,7 +172,7 @@ class ExpressionEvaluator {
         if (failed_) return 0;
         const Token* close = peek();
         if (!close || close->kind != TokenKind::r_paren) {
-          fail(close ? close->range : end_range(), "expected ')' in preprocessor expression");
+          fail(code::E_PP_EXPRESSION, close ? close->range : end_range(), "expected ')' in preprocessor expression");
           return 0;
         }
         ++pos_;
@@ -179,12 +185,12 @@ class ExpressionEvaluator {
       case TokenKind::int16_literal:
       case TokenKind::uint16_literal: {
         if (NumericLiteralCheck check = check_numeric_literal(t->text); !check.error.empty()) {
-          fail(t->range, check.error, t->expansion);
+          fail(code::E_LITERAL, t->range, check.error, t->expansion);
           return 0;
         }
         auto value = integer_literal_value(t->text);
         if (!value) {
-          fail(t->range, "invalid integer literal '" + std::string(t->text) + "'", t->expansion);
+          fail(code::E_LITERAL, t->range, "invalid integer literal '" + std::string(t->text) + "'", t->expansion);
           return 0;
         }
         return wrap(*value);
@@ -192,28 +198,31 @@ class ExpressionEvaluator {
       case TokenKind::float_literal:
       case TokenKind::double_literal:
       case TokenKind::float16_literal:
-        fail(t->range, "floating-point literal '" + std::string(t->text) + "' in preprocessor expression",
-             t->expansion);
+        fail(code::E_PP_EXPRESSION, t->range,
+             "floating-point literal '" + std::string(t->text) + "' in preprocessor expression", t->expansion);
         return 0;
       case TokenKind::identifier:
         if (t->text == "true" || t->text == "false") {
-          fail(t->range, "'" + std::string(t->text) + "' is not allowed in a preprocessor expression (use 1 or 0)",
-               t->expansion);
+          fail(code::E_PP_EXPRESSION, t->range,
+               "'" + std::string(t->text) + "' is not allowed in a preprocessor expression (use 1 or 0)", t->expansion);
           return 0;
         }
         if (context_.es && !quiet) {
-          fail(t->range, "'" + std::string(t->text) + "' is not defined (undefined macros are errors in #if in ES)",
+          fail(code::E_PP_EXPRESSION, t->range,
+               "'" + std::string(t->text) + "' is not defined (undefined macros are errors in #if in ES)",
                t->expansion);
           return 0;
         }
         if (evaluated) {
-          diagnostics_.report(Diagnostic::warning(t->range, "'" + std::string(t->text) +
-                                                                "' is not defined, evaluates to 0")
-                                  .with_expansion(t->expansion));
+          diagnostics_.report(
+              Diagnostic::warning(t->range, "'" + std::string(t->text) + "' is not defined, evaluates to 0")
+                  .with_code(code::W_UNDEFINED_MACRO)
+                  .with_expansion(t->expansion));
         }
         return 0;
       default:
-        fail(t->range, "expected a value in preprocessor expression, found " + describe(*t), t->expansion);
+        fail(code::E_PP_EXPRESSION, t->range, "expected a value in preprocessor expression, found " + describe(*t),
+             t->expansion);
         return 0;
     }
   }

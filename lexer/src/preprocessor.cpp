@@ -114,7 +114,7 @@ PPToken Preprocessor::read_file_token() {
 
 void Preprocessor::end_of_file(FileState& f) {
   while (conditionals_.size() > f.conditional_base) {
-    error(conditionals_.back().directive, "unterminated conditional directive");
+    error(code::E_CONDITIONAL, conditionals_.back().directive, "unterminated conditional directive");
     conditionals_.pop_back();
   }
   set_skipping(false);
@@ -182,37 +182,40 @@ void Preprocessor::handle_directive(FileState& f, const Token& hash) {
     default: break;
   }
   std::vector<Token> rest = read_line(f);
-  error(name.range, "invalid preprocessing directive '#" + std::string(name.text) + "'");
+  error(code::E_DIRECTIVE, name.range, "invalid preprocessing directive '#" + std::string(name.text) + "'");
   record_directive(DirectiveKind::unknown, hash, rest.empty() ? name.range.end : rest.back().range.end);
 }
 
 void Preprocessor::extra_tokens_warning(const std::vector<Token>& line, std::size_t from, std::string_view directive) {
   if (line.size() <= from) return;
   diagnostics_.report(Diagnostic::warning(SourceRange{line[from].range.begin, line.back().range.end},
-                                          "extra tokens at end of #" + std::string(directive) + " directive"));
+                                          "extra tokens at end of #" + std::string(directive) + " directive")
+                          .with_code(code::W_EXTRA_TOKENS));
 }
 
 bool Preprocessor::check_macro_name(const Token& name, bool defining, bool command_line) {
   if (name.kind != TokenKind::identifier) {
-    error(name.range, "macro name must be an identifier");
+    error(code::E_MACRO, name.range, "macro name must be an identifier");
     return false;
   }
   if (name.text == "defined") {
-    error(name.range, "'defined' cannot be used as a macro name");
+    error(code::E_MACRO, name.range, "'defined' cannot be used as a macro name");
     return false;
   }
   if (Macro* m = find_macro(name.text); m && m->predefined) {
-    error(name.range, std::string(defining ? "cannot redefine" : "cannot undefine") + " predefined macro '" +
-                          std::string(name.text) + "'");
+    error(code::E_MACRO, name.range,
+          std::string(defining ? "cannot redefine" : "cannot undefine") + " predefined macro '" +
+              std::string(name.text) + "'");
     return false;
   }
   if (command_line) return true;
   if (name.text.starts_with("GL_")) {
-    error(name.range, "macro names beginning with 'GL_' are reserved");
+    error(code::E_MACRO, name.range, "macro names beginning with 'GL_' are reserved");
     return false;
   }
   if (name.text.find("__") != std::string_view::npos) {
-    diagnostics_.report(Diagnostic::warning(name.range, "macro names containing '__' are reserved"));
+    diagnostics_.report(
+        Diagnostic::warning(name.range, "macro names containing '__' are reserved").with_code(code::W_MACRO));
   }
   return true;
 }
@@ -223,7 +226,8 @@ void Preprocessor::directive_if(FileState& f, const Token& hash, DirectiveKind k
   std::vector<Token> line = read_directive_line(f, kind, hash);
   SourceRange directive = directive_range(hash, line);
   if (static_cast<int>(conditionals_.size()) >= options_.max_conditional_depth) {
-    error(directive, "#if nested too deeply (limit " + std::to_string(options_.max_conditional_depth) + ")");
+    error(code::E_LIMIT, directive,
+          "#if nested too deeply (limit " + std::to_string(options_.max_conditional_depth) + ")");
     aborted_ = true;
     return;
   }
@@ -233,9 +237,9 @@ void Preprocessor::directive_if(FileState& f, const Token& hash, DirectiveKind k
   } else {
     std::string_view spelled = kind == DirectiveKind::ifdef ? "ifdef" : "ifndef";
     if (line.empty()) {
-      error(directive, "macro name missing in #" + std::string(spelled));
+      error(code::E_DIRECTIVE, directive, "macro name missing in #" + std::string(spelled));
     } else if (line[0].kind != TokenKind::identifier) {
-      error(line[0].range, "macro name must be an identifier");
+      error(code::E_MACRO, line[0].range, "macro name must be an identifier");
     } else {
       extra_tokens_warning(line, 1, spelled);
       value = (find_macro(line[0].text) != nullptr) == (kind == DirectiveKind::ifdef);
@@ -250,7 +254,7 @@ void Preprocessor::directive_elif_else_endif(FileState& f, const Token& hash, Di
   SourceRange directive = directive_range(hash, line);
   std::string_view spelled = kind == DirectiveKind::elif ? "elif" : kind == DirectiveKind::else_ ? "else" : "endif";
   if (conditionals_.size() <= f.conditional_base) {
-    error(directive, "#" + std::string(spelled) + " without #if");
+    error(code::E_CONDITIONAL, directive, "#" + std::string(spelled) + " without #if");
     set_skipping(false);
     return;
   }
@@ -263,6 +267,7 @@ void Preprocessor::directive_elif_else_endif(FileState& f, const Token& hash, Di
   }
   if (c.seen_else) {
     diagnostics_.report(Diagnostic::error(directive, "#" + std::string(spelled) + " after #else")
+                            .with_code(code::E_CONDITIONAL)
                             .with_note(Diagnostic::note(c.directive, "the conditional started here")));
     set_skipping(true);
     return;
@@ -296,13 +301,13 @@ bool Preprocessor::evaluate_condition(const std::vector<Token>& line, const Toke
     bool paren = j < line.size() && line[j].kind == TokenKind::l_paren;
     if (paren) ++j;
     if (j >= line.size() || line[j].kind != TokenKind::identifier) {
-      error(j < line.size() ? line[j].range : t.range, "expected a macro name after 'defined'");
+      error(code::E_PP_EXPRESSION, j < line.size() ? line[j].range : t.range, "expected a macro name after 'defined'");
       return false;
     }
     bool defined = find_macro(line[j].text) != nullptr;
     if (paren) {
       if (j + 1 >= line.size() || line[j + 1].kind != TokenKind::r_paren) {
-        error(line[j].range, "expected ')' after 'defined(" + std::string(line[j].text) + "'");
+        error(code::E_PP_EXPRESSION, line[j].range, "expected ')' after 'defined(" + std::string(line[j].text) + "'");
         return false;
       }
       ++j;
@@ -330,14 +335,16 @@ void Preprocessor::emit(const PPToken& t) {
   Token token = t.token;
   switch (token.kind) {
     case TokenKind::invalid:
-      diagnostics_.report(
-          Diagnostic::error(token.range, invalid_character_message(token.text)).with_expansion(token.expansion));
+      diagnostics_.report(Diagnostic::error(token.range, invalid_character_message(token.text))
+                              .with_code(code::E_CHARACTER)
+                              .with_expansion(token.expansion));
       return;
     case TokenKind::identifier: token.kind = classify_word(token.text, unit_.keywords); break;
     case TokenKind::hash:
     case TokenKind::hash_hash:
       diagnostics_.report(Diagnostic::error(token.range, "'" + std::string(token.text) +
                                                              "' is only allowed at the start of a directive line")
+                              .with_code(code::E_CHARACTER)
                               .with_expansion(token.expansion));
       return;
     case TokenKind::int_literal:
@@ -358,17 +365,21 @@ void Preprocessor::emit(const PPToken& t) {
           range.end.offset += check.error_end - check.error_begin;
           range.end.column += check.error_end - check.error_begin;
         }
-        diagnostics_.report(Diagnostic::error(range, std::move(check.error)).with_expansion(token.expansion));
+        diagnostics_.report(Diagnostic::error(range, std::move(check.error))
+                                .with_code(code::E_LITERAL)
+                                .with_expansion(token.expansion));
       } else if (check.kind == TokenKind::double_literal && !unit_.language.allows(LanguageFeature::double_literals)) {
         diagnostics_.report(
             Diagnostic::error(token.range, feature_requirement(LanguageFeature::double_literals, unit_.es))
+                .with_code(code::E_VERSION)
                 .with_expansion(token.expansion));
       }
       break;
     case TokenKind::string_literal:
       if (strings_allowed_) break;  // GL_EXT_debug_printf
-      diagnostics_.report(
-          Diagnostic::error(token.range, "string literals are not allowed in GLSL").with_expansion(token.expansion));
+      diagnostics_.report(Diagnostic::error(token.range, "string literals are not allowed in GLSL")
+                              .with_code(code::E_CHARACTER)
+                              .with_expansion(token.expansion));
       return;
     default: break;
   }
@@ -433,8 +444,9 @@ PreprocessedUnit Preprocessor::run(FileId main_file) {
   end.range = sources_.range_of(main_file, static_cast<std::uint32_t>(text.size()),
                                 static_cast<std::uint32_t>(text.size()));
   if (text.size() > options_.max_source_bytes) {
-    error(sources_.range_of(main_file, 0, 0), "the shader is too large (" + std::to_string(text.size()) +
-                                                  " bytes; limit " + std::to_string(options_.max_source_bytes) + ")");
+    error(code::E_LIMIT, sources_.range_of(main_file, 0, 0),
+          "the shader is too large (" + std::to_string(text.size()) + " bytes; limit " +
+              std::to_string(options_.max_source_bytes) + ")");
     unit_.tokens.push_back(end);
     return std::move(unit_);
   }

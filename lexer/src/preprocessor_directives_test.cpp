@@ -61,37 +61,37 @@ TEST_F(Directives, ExpressionErrors) {
   output("#if 1 / 0\n#endif\n#if 5 % (2 - 2)\n#endif\n#if 1.5\n#endif\n#if (1\n#endif\n#if\n#endif\n#if 1 2\n#endif\n"
          "#if 1 << 32\n#endif\n#if 1 +\n#endif\n#if defined\n#endif\n#if true\n#endif\n#if 1 ? 2 : 3\n#endif\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:7: error: division by zero in preprocessor expression\n"
+            "main.glsl:1:7: error: division by zero in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 1 / 0\n"
             "      ^\n"
-            "main.glsl:3:7: error: remainder by zero in preprocessor expression\n"
+            "main.glsl:3:7: error: remainder by zero in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 5 % (2 - 2)\n"
             "      ^\n"
-            "main.glsl:5:5: error: floating-point literal '1.5' in preprocessor expression\n"
+            "main.glsl:5:5: error: floating-point literal '1.5' in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 1.5\n"
             "    ^~~\n"
-            "main.glsl:7:7: error: expected ')' in preprocessor expression\n"
+            "main.glsl:7:7: error: expected ')' in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if (1\n"
             "      ^\n"
-            "main.glsl:9:1: error: expected an expression after the directive\n"
+            "main.glsl:9:1: error: expected an expression after the directive [E-PP-EXPRESSION]\n"
             "#if\n"
             "^~~\n"
-            "main.glsl:11:7: error: unexpected '2' in preprocessor expression\n"
+            "main.glsl:11:7: error: unexpected '2' in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 1 2\n"
             "      ^\n"
-            "main.glsl:13:7: error: shift count 32 is out of range\n"
+            "main.glsl:13:7: error: shift count 32 is out of range [E-PP-EXPRESSION]\n"
             "#if 1 << 32\n"
             "      ^~\n"
-            "main.glsl:15:8: error: expected a value at the end of the preprocessor expression\n"
+            "main.glsl:15:8: error: expected a value at the end of the preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 1 +\n"
             "       ^\n"
-            "main.glsl:17:5: error: expected a macro name after 'defined'\n"
+            "main.glsl:17:5: error: expected a macro name after 'defined' [E-PP-EXPRESSION]\n"
             "#if defined\n"
             "    ^~~~~~~\n"
-            "main.glsl:19:5: error: 'true' is not allowed in a preprocessor expression (use 1 or 0)\n"
+            "main.glsl:19:5: error: 'true' is not allowed in a preprocessor expression (use 1 or 0) [E-PP-EXPRESSION]\n"
             "#if true\n"
             "    ^~~~\n"
-            "main.glsl:21:7: error: unexpected '?' in preprocessor expression\n"
+            "main.glsl:21:7: error: unexpected '?' in preprocessor expression [E-PP-EXPRESSION]\n"
             "#if 1 ? 2 : 3\n"
             "      ^\n");
 }
@@ -99,13 +99,13 @@ TEST_F(Directives, ExpressionErrors) {
 TEST_F(Directives, UndefinedIdentifiersInConditions) {
   EXPECT_EQ(output("#if UNDEFINED_THING\nx\n#else\ny\n#endif\n"), "y");
   EXPECT_EQ(errors(),
-            "main.glsl:1:5: warning: 'UNDEFINED_THING' is not defined, evaluates to 0\n"
+            "main.glsl:1:5: warning: 'UNDEFINED_THING' is not defined, evaluates to 0 [W-UNDEFINED-MACRO]\n"
             "#if UNDEFINED_THING\n"
             "    ^~~~~~~~~~~~~~~\n");
   diagnostics.clear();
   output("#version 300 es\n#if UNDEFINED_THING\n#endif\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:5: error: 'UNDEFINED_THING' is not defined (undefined macros are errors in #if in ES)\n"
+            "main.glsl:2:5: error: 'UNDEFINED_THING' is not defined (undefined macros are errors in #if in ES) [E-PP-EXPRESSION]\n"
             "#if UNDEFINED_THING\n"
             "    ^~~~~~~~~~~~~~~\n");
 }
@@ -131,25 +131,25 @@ TEST_F(Directives, UndefinedIdentifiersInEsConditionsFollowGlslangsShortCircuit)
 TEST_F(Directives, ConditionalStructureErrors) {
   output("#endif\n#else\n#elif 1\n#if 1\n#else\n#else\n#endif\n#ifdef\n#endif\n#ifdef 3\n#endif\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:1: error: #endif without #if\n"
+            "main.glsl:1:1: error: #endif without #if [E-CONDITIONAL]\n"
             "#endif\n"
             "^~~~~~\n"
-            "main.glsl:2:1: error: #else without #if\n"
+            "main.glsl:2:1: error: #else without #if [E-CONDITIONAL]\n"
             "#else\n"
             "^~~~~\n"
-            "main.glsl:3:1: error: #elif without #if\n"
+            "main.glsl:3:1: error: #elif without #if [E-CONDITIONAL]\n"
             "#elif 1\n"
             "^~~~~~~\n"
-            "main.glsl:6:1: error: #else after #else\n"
+            "main.glsl:6:1: error: #else after #else [E-CONDITIONAL]\n"
             "#else\n"
             "^~~~~\n"
             "main.glsl:4:1: note: the conditional started here\n"
             "#if 1\n"
             "^~~~~\n"
-            "main.glsl:8:1: error: macro name missing in #ifdef\n"
+            "main.glsl:8:1: error: macro name missing in #ifdef [E-DIRECTIVE]\n"
             "#ifdef\n"
             "^~~~~~\n"
-            "main.glsl:10:8: error: macro name must be an identifier\n"
+            "main.glsl:10:8: error: macro name must be an identifier [E-MACRO]\n"
             "#ifdef 3\n"
             "       ^\n");
 }
@@ -157,10 +157,10 @@ TEST_F(Directives, ConditionalStructureErrors) {
 TEST_F(Directives, UnterminatedConditionalIsReportedAtTheIf) {
   output("a\n#if 1\nb\n#ifdef X\nc\n");
   EXPECT_EQ(errors(),
-            "main.glsl:4:1: error: unterminated conditional directive\n"
+            "main.glsl:4:1: error: unterminated conditional directive [E-CONDITIONAL]\n"
             "#ifdef X\n"
             "^~~~~~~~\n"
-            "main.glsl:2:1: error: unterminated conditional directive\n"
+            "main.glsl:2:1: error: unterminated conditional directive [E-CONDITIONAL]\n"
             "#if 1\n"
             "^~~~~\n");
 }
@@ -175,20 +175,20 @@ TEST_F(Directives, Extension) {
   EXPECT_EQ(errors(), "");
   run("#extension\n#extension GL_X\n#extension GL_X :\n#extension GL_X : maybe\n#extension all : enable\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:1: error: expected an extension name after #extension\n"
+            "main.glsl:1:1: error: expected an extension name after #extension [E-DIRECTIVE]\n"
             "#extension\n"
             "^~~~~~~~~~\n"
-            "main.glsl:2:12: error: expected ':' after the extension name\n"
+            "main.glsl:2:12: error: expected ':' after the extension name [E-DIRECTIVE]\n"
             "#extension GL_X\n"
             "           ^~~~\n"
-            "main.glsl:3:17: error: expected 'require', 'enable', 'warn' or 'disable' after ':'\n"
+            "main.glsl:3:17: error: expected 'require', 'enable', 'warn' or 'disable' after ':' [E-DIRECTIVE]\n"
             "#extension GL_X :\n"
             "                ^\n"
             "main.glsl:4:19: error: unknown extension behavior 'maybe' (expected 'require', 'enable', 'warn' or "
-            "'disable')\n"
+            "'disable') [E-DIRECTIVE]\n"
             "#extension GL_X : maybe\n"
             "                  ^~~~~\n"
-            "main.glsl:5:18: error: 'all' can only be used with 'warn' or 'disable'\n"
+            "main.glsl:5:18: error: 'all' can only be used with 'warn' or 'disable' [E-DIRECTIVE]\n"
             "#extension all : enable\n"
             "                 ^~~~~~\n");
 }
@@ -205,10 +205,10 @@ TEST_F(Directives, Pragma) {
 TEST_F(Directives, Error) {
   auto unit = run("#define X\n#ifdef X\n#error X must not be defined, sorry // why\n#endif\n#error\n");
   EXPECT_EQ(errors(),
-            "main.glsl:3:2: error: #error: X must not be defined, sorry\n"
+            "main.glsl:3:2: error: #error: X must not be defined, sorry [E-ERROR-DIRECTIVE]\n"
             "#error X must not be defined, sorry // why\n"
             " ^~~~~\n"
-            "main.glsl:5:2: error: #error\n"
+            "main.glsl:5:2: error: #error [E-ERROR-DIRECTIVE]\n"
             "#error\n"
             " ^~~~~\n");
 }
@@ -253,13 +253,13 @@ TEST_F(Directives, FileFollowsTheLastLineDirective) {
 TEST_F(Directives, LineErrors) {
   run("#line\n#line x\n#line 1 y\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:1: error: expected a line number after #line\n"
+            "main.glsl:1:1: error: expected a line number after #line [E-DIRECTIVE]\n"
             "#line\n"
             "^~~~~\n"
-            "main.glsl:2:7: error: expected a line number after #line\n"
+            "main.glsl:2:7: error: expected a line number after #line [E-DIRECTIVE]\n"
             "#line x\n"
             "      ^\n"
-            "main.glsl:3:9: error: expected a source-string number or a file name after the line number\n"
+            "main.glsl:3:9: error: expected a source-string number or a file name after the line number [E-DIRECTIVE]\n"
             "#line 1 y\n"
             "        ^\n");
 }
@@ -267,10 +267,10 @@ TEST_F(Directives, LineErrors) {
 TEST_F(Directives, UnknownDirective) {
   run("#foo bar\n# 12\n#\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:2: error: invalid preprocessing directive '#foo'\n"
+            "main.glsl:1:2: error: invalid preprocessing directive '#foo' [E-DIRECTIVE]\n"
             "#foo bar\n"
             " ^~~\n"
-            "main.glsl:2:3: error: invalid preprocessing directive '#12'\n"
+            "main.glsl:2:3: error: invalid preprocessing directive '#12' [E-DIRECTIVE]\n"
             "# 12\n"
             "  ^~\n");
 }
@@ -278,10 +278,10 @@ TEST_F(Directives, UnknownDirective) {
 TEST_F(Directives, HashOutsideDirectivesAndStrings) {
   run("a # b\n\"str\"\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:3: error: '#' is only allowed at the start of a directive line\n"
+            "main.glsl:1:3: error: '#' is only allowed at the start of a directive line [E-CHARACTER]\n"
             "a # b\n"
             "  ^\n"
-            "main.glsl:2:1: error: string literals are not allowed in GLSL\n"
+            "main.glsl:2:1: error: string literals are not allowed in GLSL [E-CHARACTER]\n"
             "\"str\"\n"
             "^~~~~\n");
 }
@@ -291,13 +291,13 @@ TEST_F(Directives, NumbersAreCheckedWhereTheyAreUsed) {
   EXPECT_EQ(errors(), "");
   output("#define SUFFIX 1D\nSUFFIX\n#if 1D\n#endif\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:17: error: invalid suffix 'D' on integer literal\n"
+            "main.glsl:1:17: error: invalid suffix 'D' on integer literal [E-LITERAL]\n"
             "#define SUFFIX 1D\n"
             "                ^\n"
             "main.glsl:2:1: note: in expansion of macro 'SUFFIX' (defined at main.glsl:1:9)\n"
             "SUFFIX\n"
             "^~~~~~\n"
-            "main.glsl:3:5: error: invalid suffix 'D' on integer literal\n"
+            "main.glsl:3:5: error: invalid suffix 'D' on integer literal [E-LITERAL]\n"
             "#if 1D\n"
             "    ^~\n");
 }
@@ -307,7 +307,7 @@ TEST_F(Directives, InvalidCharactersAreReportedWhereUsed) {
   EXPECT_EQ(errors(), "");
   output("#define AT @\nAT\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:12: error: invalid character '@' in program\n"
+            "main.glsl:1:12: error: invalid character '@' in program [E-CHARACTER]\n"
             "#define AT @\n"
             "           ^\n"
             "main.glsl:2:1: note: in expansion of macro 'AT' (defined at main.glsl:1:9)\n"
@@ -329,10 +329,10 @@ TEST_F(Directives, ExtensionMacros) {
   run("#extension GL_ARB_gpu_shader5 : require\n#extension GL_FOO_bar : require\n#extension GL_FOO_baz : enable\n"
       "#extension GL_FOO_baz : disable\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:12: error: extension 'GL_FOO_bar' is not supported\n"
+            "main.glsl:2:12: error: extension 'GL_FOO_bar' is not supported [E-EXTENSION]\n"
             "#extension GL_FOO_bar : require\n"
             "           ^~~~~~~~~~\n"
-            "main.glsl:3:12: warning: extension 'GL_FOO_baz' is not supported\n"
+            "main.glsl:3:12: warning: extension 'GL_FOO_baz' is not supported [W-EXTENSION]\n"
             "#extension GL_FOO_baz : enable\n"
             "           ^~~~~~~~~~\n");
 }
@@ -350,7 +350,7 @@ TEST_F(Directives, KnownExtensionsArePredefinedByDefault) {
             "#extension GL_FOO_bar : require\n"
             "           ^~~~~~~~~~\n"
             "help: glslangValidator refuses a shader that requires an extension it does not know\n"
-            "main.glsl:2:8: error: cannot undefine predefined macro 'GL_ARB_gpu_shader5'\n"
+            "main.glsl:2:8: error: cannot undefine predefined macro 'GL_ARB_gpu_shader5' [E-MACRO]\n"
             "#undef GL_ARB_gpu_shader5\n"
             "       ^~~~~~~~~~~~~~~~~~\n");
 }
@@ -401,11 +401,11 @@ TEST_F(Directives, DoubleLiteralsNeedVersion400OrFp64) {
   output("#version 400\ndouble d = 1.0lf;\n");
   EXPECT_EQ(errors(),
             "main.glsl:2:12: error: double-precision literals ('lf' suffix) require #version 400 or "
-            "GL_ARB_gpu_shader_fp64\n"
+            "GL_ARB_gpu_shader_fp64 [E-VERSION]\n"
             "double d = 1.0lf;\n"
             "           ^~~~~\n"
             "main.glsl:2:5: error: double-precision literals ('lf' suffix) are not available in GLSL ES (without "
-            "GL_ARB_gpu_shader_fp64)\n"
+            "GL_ARB_gpu_shader_fp64) [E-VERSION]\n"
             "x = 1.0lf;\n"
             "    ^~~~~\n");
 }
@@ -415,15 +415,15 @@ TEST_F(Directives, PasteAtAnEndOfTheBodyWarnsAndErrsWhenUsed) {
   EXPECT_FALSE(diagnostics.has_errors());
   output("#define P(a) a ##\nP(1)\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:23: warning: '##' cannot appear at either end of a macro body\n"
+            "main.glsl:1:23: warning: '##' cannot appear at either end of a macro body [W-MACRO]\n"
             "#define UNUSED(arg) x ##\n"
             "                      ^~\n"
             "help: using this macro is an error\n"
-            "main.glsl:1:16: warning: '##' cannot appear at either end of a macro body\n"
+            "main.glsl:1:16: warning: '##' cannot appear at either end of a macro body [W-MACRO]\n"
             "#define P(a) a ##\n"
             "               ^~\n"
             "help: using this macro is an error\n"
-            "main.glsl:2:1: error: macro 'P' cannot be used: '##' at an end of its body\n"
+            "main.glsl:2:1: error: macro 'P' cannot be used: '##' at an end of its body [E-MACRO]\n"
             "P(1)\n"
             "^~~~\n"
             "main.glsl:1:16: note: '##' is here\n"

@@ -10,6 +10,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include <safegi/diagnostics/codes.hpp>
 #include <safegi/lexer/lexer.hpp>
 #include <safegi/lexer/preprocessor.hpp>
 
@@ -114,7 +115,10 @@ class Preprocessor {
 
   void emit(const PPToken& t);
   std::string_view save(std::string s) { return sources_.save_string(s); }
-  void error(SourceRange range, std::string message) { diagnostics_.error(range, std::move(message)); }
+  // Every diagnostic of the preprocessor has its code (codes.def).
+  void error(const char* code, SourceRange range, std::string message) {
+    diagnostics_.report(Diagnostic::error(range, std::move(message)).with_code(code));
+  }
 
   SourceManager& sources_;
   const PreprocessorOptions& options_;

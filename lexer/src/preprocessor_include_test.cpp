@@ -50,7 +50,7 @@ TEST_F(Includes, MacroNamesTheFile) {
   EXPECT_EQ(errors(), "");
   output("#define NOTHING\n#include NOTHING\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:10: error: expected \"FILENAME\" or <FILENAME> after #include\n"
+            "main.glsl:2:10: error: expected \"FILENAME\" or <FILENAME> after #include [E-DIRECTIVE]\n"
             "#include NOTHING\n"
             "         ^~~~~~~\n");
 }
@@ -64,21 +64,21 @@ TEST_F(Includes, MissingFile) {
   options.include_paths = {"inc"};
   run("#include \"nowhere.glsl\"\n#include <also_missing.glsl>\n#include\n#include nope\n#include \"\"\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:10: error: 'nowhere.glsl' file not found\n"
+            "main.glsl:1:10: error: 'nowhere.glsl' file not found [E-INCLUDE]\n"
             "#include \"nowhere.glsl\"\n"
             "         ^~~~~~~~~~~~~~\n"
             "help: searched nowhere.glsl, inc/nowhere.glsl\n"
-            "main.glsl:2:10: error: 'also_missing.glsl' file not found\n"
+            "main.glsl:2:10: error: 'also_missing.glsl' file not found [E-INCLUDE]\n"
             "#include <also_missing.glsl>\n"
             "         ^~~~~~~~~~~~~~~~~~~\n"
             "help: searched inc/also_missing.glsl\n"
-            "main.glsl:3:2: error: expected \"FILENAME\" or <FILENAME> after #include\n"
+            "main.glsl:3:2: error: expected \"FILENAME\" or <FILENAME> after #include [E-DIRECTIVE]\n"
             "#include\n"
             " ^~~~~~~\n"
-            "main.glsl:4:10: error: expected \"FILENAME\" or <FILENAME> after #include\n"
+            "main.glsl:4:10: error: expected \"FILENAME\" or <FILENAME> after #include [E-DIRECTIVE]\n"
             "#include nope\n"
             "         ^~~~\n"
-            "main.glsl:5:10: error: empty file name in #include\n"
+            "main.glsl:5:10: error: empty file name in #include [E-INCLUDE]\n"
             "#include \"\"\n"
             "         ^~\n");
 }
@@ -90,7 +90,7 @@ TEST_F(Includes, CycleIsReportedWithTheChain) {
   EXPECT_EQ(errors(),
             "In file included from main.glsl:1:1:\n"
             "In file included from a.glsl:1:1:\n"
-            "b.glsl:2:10: error: #include cycle: main.glsl -> a.glsl -> b.glsl -> a.glsl\n"
+            "b.glsl:2:10: error: #include cycle: main.glsl -> a.glsl -> b.glsl -> a.glsl [E-INCLUDE]\n"
             "#include \"a.glsl\"\n"
             "         ^~~~~~~~\n");
 }
@@ -100,7 +100,7 @@ TEST_F(Includes, ErrorsInIncludedFilesShowTheIncludeChain) {
   run("#version 330\n#include \"a.glsl\"\n");
   EXPECT_EQ(errors(),
             "In file included from main.glsl:2:1:\n"
-            "a.glsl:2:1: error: invalid character '@' in program\n"
+            "a.glsl:2:1: error: invalid character '@' in program [E-CHARACTER]\n"
             "@\n"
             "^\n");
 }
@@ -129,10 +129,10 @@ TEST_F(Includes, UnterminatedConditionalInAnIncludeIsReportedThere) {
   EXPECT_EQ(output("#include \"open.glsl\"\nafter\n#endif\n"), "open\nafter");
   EXPECT_EQ(errors(),
             "In file included from main.glsl:1:1:\n"
-            "open.glsl:1:1: error: unterminated conditional directive\n"
+            "open.glsl:1:1: error: unterminated conditional directive [E-CONDITIONAL]\n"
             "#if 1\n"
             "^~~~~\n"
-            "main.glsl:3:1: error: #endif without #if\n"
+            "main.glsl:3:1: error: #endif without #if [E-CONDITIONAL]\n"
             "#endif\n"
             "^~~~~~\n");
 }
@@ -142,7 +142,7 @@ TEST_F(Includes, VersionInIncludedFile) {
   run("#include \"v.glsl\"\n");
   EXPECT_EQ(errors(),
             "In file included from main.glsl:1:1:\n"
-            "v.glsl:1:1: error: #version is only allowed in the main file, not in an included file\n"
+            "v.glsl:1:1: error: #version is only allowed in the main file, not in an included file [E-VERSION-DIRECTIVE]\n"
             "#version 330\n"
             "^~~~~~~~~~~~\n");
 }
@@ -156,7 +156,7 @@ TEST_F(Includes, DepthLimit) {
   EXPECT_EQ(errors(),
             "In file included from main.glsl:1:1:\n"
             "In file included from self.glsl:1:1:\n"
-            "self2.glsl:1:1: error: #include nested too deeply (limit 2)\n"
+            "self2.glsl:1:1: error: #include nested too deeply (limit 2) [E-LIMIT]\n"
             "#include \"self3.glsl\"\n"
             "^~~~~~~~~~~~~~~~~~~~~\n");
 }
@@ -165,7 +165,7 @@ TEST_F(Includes, FromDisk) {
   options.read_file = nullptr;  // the default reads the file system
   run("#include \"/nonexistent/safegi/x.glsl\"\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:10: error: '/nonexistent/safegi/x.glsl' file not found\n"
+            "main.glsl:1:10: error: '/nonexistent/safegi/x.glsl' file not found [E-INCLUDE]\n"
             "#include \"/nonexistent/safegi/x.glsl\"\n"
             "         ^~~~~~~~~~~~~~~~~~~~~~~~~~~~\n"
             "help: searched /nonexistent/safegi/x.glsl\n");

@@ -35,7 +35,7 @@ TEST_F(Preprocess, VersionDefaultsTo110) {
 TEST_F(Preprocess, VersionMustComeFirst) {
   run("float x;\n#version 330\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:1: error: #version must come first in a shader, before anything but comments and white space\n"
+            "main.glsl:2:1: error: #version must come first in a shader, before anything but comments and white space [E-VERSION-DIRECTIVE]\n"
             "#version 330\n"
             "^~~~~~~~~~~~\n");
 }
@@ -48,22 +48,22 @@ TEST_F(Preprocess, VersionErrors) {
   run("#version 450 foo\n");
   run("#version\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:10: error: unknown GLSL version 331 (expected 100, 110 ... 150, 300, 310, 320, or 330 ... 460)\n"
+            "main.glsl:1:10: error: unknown GLSL version 331 (expected 100, 110 ... 150, 300, 310, 320, or 330 ... 460) [E-VERSION-DIRECTIVE]\n"
             "#version 331\n"
             "         ^~~\n"
-            "main.glsl:1:1: error: #version 300 requires the 'es' profile\n"
+            "main.glsl:1:1: error: #version 300 requires the 'es' profile [E-VERSION-DIRECTIVE]\n"
             "#version 300\n"
             "^~~~~~~~~~~~\n"
-            "main.glsl:1:14: error: the 'es' profile requires version 300, 310 or 320\n"
+            "main.glsl:1:14: error: the 'es' profile requires version 300, 310 or 320 [E-VERSION-DIRECTIVE]\n"
             "#version 330 es\n"
             "             ^~\n"
-            "main.glsl:1:14: error: profiles are only allowed from #version 150 on\n"
+            "main.glsl:1:14: error: profiles are only allowed from #version 150 on [E-VERSION-DIRECTIVE]\n"
             "#version 120 core\n"
             "             ^~~~\n"
-            "main.glsl:1:14: error: unknown profile 'foo' (expected 'core', 'compatibility' or 'es')\n"
+            "main.glsl:1:14: error: unknown profile 'foo' (expected 'core', 'compatibility' or 'es') [E-VERSION-DIRECTIVE]\n"
             "#version 450 foo\n"
             "             ^~~\n"
-            "main.glsl:1:1: error: expected a version number after #version\n"
+            "main.glsl:1:1: error: expected a version number after #version [E-VERSION-DIRECTIVE]\n"
             "#version\n"
             "^~~~~~~~\n");
 }
@@ -71,7 +71,7 @@ TEST_F(Preprocess, VersionErrors) {
 TEST_F(Preprocess, VersionTwice) {
   run("#version 330\n#version 330\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:1: error: #version may appear only once\n"
+            "main.glsl:2:1: error: #version may appear only once [E-VERSION-DIRECTIVE]\n"
             "#version 330\n"
             "^~~~~~~~~~~~\n"
             "main.glsl:1:1: note: first #version is here\n"
@@ -132,7 +132,7 @@ TEST_F(Preprocess, TokenPasting) {
 TEST_F(Preprocess, PastingErrors) {
   output("#define CAT(a, b) a ## b\nCAT(+, -)\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:21: error: pasting '+' and '-' does not give a valid token\n"
+            "main.glsl:1:21: error: pasting '+' and '-' does not give a valid token [E-MACRO]\n"
             "#define CAT(a, b) a ## b\n"
             "                    ^~\n"
             "main.glsl:2:1: note: in expansion of macro 'CAT' (defined at main.glsl:1:9)\n"
@@ -144,33 +144,33 @@ TEST_F(Preprocess, MacroDefinitionErrors) {
   output("#define\n#define 3\n#define F(a, a) a\n#define G(a b) a\n#define H(a, ) a\n#define S(x) #x\n"
          "#define P ## x\n#define defined 1\n#define GL_FOO 1\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:1: error: macro name missing in #define\n"
+            "main.glsl:1:1: error: macro name missing in #define [E-DIRECTIVE]\n"
             "#define\n"
             "^~~~~~~\n"
-            "main.glsl:2:9: error: macro name must be an identifier\n"
+            "main.glsl:2:9: error: macro name must be an identifier [E-MACRO]\n"
             "#define 3\n"
             "        ^\n"
-            "main.glsl:3:14: error: duplicate macro parameter 'a'\n"
+            "main.glsl:3:14: error: duplicate macro parameter 'a' [E-MACRO]\n"
             "#define F(a, a) a\n"
             "             ^\n"
-            "main.glsl:4:13: error: expected ',' or ')' in macro parameter list\n"
+            "main.glsl:4:13: error: expected ',' or ')' in macro parameter list [E-MACRO]\n"
             "#define G(a b) a\n"
             "            ^\n"
-            "main.glsl:5:14: error: expected a parameter name in macro parameter list\n"
+            "main.glsl:5:14: error: expected a parameter name in macro parameter list [E-MACRO]\n"
             "#define H(a, ) a\n"
             "             ^\n"
-            "main.glsl:6:14: error: '#' is not allowed in a macro body\n"
+            "main.glsl:6:14: error: '#' is not allowed in a macro body [E-MACRO]\n"
             "#define S(x) #x\n"
             "             ^\n"
             "help: GLSL has no stringizing operator; only '##' (token pasting) is supported\n"
-            "main.glsl:7:11: warning: '##' cannot appear at either end of a macro body\n"
+            "main.glsl:7:11: warning: '##' cannot appear at either end of a macro body [W-MACRO]\n"
             "#define P ## x\n"
             "          ^~\n"
             "help: using this macro is an error\n"
-            "main.glsl:8:9: error: 'defined' cannot be used as a macro name\n"
+            "main.glsl:8:9: error: 'defined' cannot be used as a macro name [E-MACRO]\n"
             "#define defined 1\n"
             "        ^~~~~~~\n"
-            "main.glsl:9:9: error: macro names beginning with 'GL_' are reserved\n"
+            "main.glsl:9:9: error: macro names beginning with 'GL_' are reserved [E-MACRO]\n"
             "#define GL_FOO 1\n"
             "        ^~~~~~\n");
 }
@@ -178,7 +178,7 @@ TEST_F(Preprocess, MacroDefinitionErrors) {
 TEST_F(Preprocess, DoubleUnderscoreNamesWarn) {
   EXPECT_EQ(output("#define MY__NAME 1\nMY__NAME\n"), "1");
   EXPECT_EQ(errors(),
-            "main.glsl:1:9: warning: macro names containing '__' are reserved\n"
+            "main.glsl:1:9: warning: macro names containing '__' are reserved [W-MACRO]\n"
             "#define MY__NAME 1\n"
             "        ^~~~~~~~\n");
 }
@@ -186,13 +186,13 @@ TEST_F(Preprocess, DoubleUnderscoreNamesWarn) {
 TEST_F(Preprocess, Redefinition) {
   output("#define A 1 + 2\n#define A 1 + 2\n#define A 1+2\n#define F(x) x\n#define F(y) y\n");
   EXPECT_EQ(errors(),
-            "main.glsl:3:9: error: 'A' macro redefined\n"
+            "main.glsl:3:9: error: 'A' macro redefined [E-MACRO]\n"
             "#define A 1+2\n"
             "        ^\n"
             "main.glsl:1:9: note: previous definition is here\n"
             "#define A 1 + 2\n"
             "        ^\n"
-            "main.glsl:5:9: error: 'F' macro redefined\n"
+            "main.glsl:5:9: error: 'F' macro redefined [E-MACRO]\n"
             "#define F(y) y\n"
             "        ^\n"
             "main.glsl:4:9: note: previous definition is here\n"
@@ -203,13 +203,13 @@ TEST_F(Preprocess, Redefinition) {
 TEST_F(Preprocess, PredefinedMacrosCannotChange) {
   output("#version 300 es\n#define __LINE__ 3\n#undef GL_ES\n#undef __VERSION__\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:9: error: cannot redefine predefined macro '__LINE__'\n"
+            "main.glsl:2:9: error: cannot redefine predefined macro '__LINE__' [E-MACRO]\n"
             "#define __LINE__ 3\n"
             "        ^~~~~~~~\n"
-            "main.glsl:3:8: error: cannot undefine predefined macro 'GL_ES'\n"
+            "main.glsl:3:8: error: cannot undefine predefined macro 'GL_ES' [E-MACRO]\n"
             "#undef GL_ES\n"
             "       ^~~~~\n"
-            "main.glsl:4:8: error: cannot undefine predefined macro '__VERSION__'\n"
+            "main.glsl:4:8: error: cannot undefine predefined macro '__VERSION__' [E-MACRO]\n"
             "#undef __VERSION__\n"
             "       ^~~~~~~~~~~\n");
 }
@@ -218,10 +218,10 @@ TEST_F(Preprocess, Undef) {
   EXPECT_EQ(output("#define A 1\nA\n#undef A\nA\n#undef NEVER_DEFINED\n"), "1\nA");
   output("#undef\n#undef X Y\n");
   EXPECT_EQ(errors(),
-            "main.glsl:1:1: error: macro name missing in #undef\n"
+            "main.glsl:1:1: error: macro name missing in #undef [E-DIRECTIVE]\n"
             "#undef\n"
             "^~~~~~\n"
-            "main.glsl:2:10: warning: extra tokens at end of #undef directive\n"
+            "main.glsl:2:10: warning: extra tokens at end of #undef directive [W-EXTRA-TOKENS]\n"
             "#undef X Y\n"
             "         ^\n");
 }
@@ -229,13 +229,13 @@ TEST_F(Preprocess, Undef) {
 TEST_F(Preprocess, ArgumentCountErrors) {
   output("#define F(a, b) a b\nF(1)\nF(1, 2, 3)\n#define G() 0\nG(1)\n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:1: error: macro 'F' expects 2 arguments, but 1 was given\n"
+            "main.glsl:2:1: error: macro 'F' expects 2 arguments, but 1 was given [E-MACRO]\n"
             "F(1)\n"
             "^~~~\n"
-            "main.glsl:3:1: error: macro 'F' expects 2 arguments, but 3 were given\n"
+            "main.glsl:3:1: error: macro 'F' expects 2 arguments, but 3 were given [E-MACRO]\n"
             "F(1, 2, 3)\n"
             "^~~~~~~~~~\n"
-            "main.glsl:5:1: error: macro 'G' expects 0 arguments, but 1 was given\n"
+            "main.glsl:5:1: error: macro 'G' expects 0 arguments, but 1 was given [E-MACRO]\n"
             "G(1)\n"
             "^~~~\n");
 }
@@ -243,7 +243,7 @@ TEST_F(Preprocess, ArgumentCountErrors) {
 TEST_F(Preprocess, UnterminatedInvocation) {
   output("#define F(a) a\nF(1, \n");
   EXPECT_EQ(errors(),
-            "main.glsl:2:1: error: unterminated argument list invoking macro 'F'\n"
+            "main.glsl:2:1: error: unterminated argument list invoking macro 'F' [E-MACRO]\n"
             "F(1, \n"
             "^\n");
 }

@@ -94,7 +94,7 @@ TEST_F(Robustness, HugeSourceIsRefused) {
   options.max_source_bytes = 1000;
   run(std::string(2000, ' '));
   // The line is quoted as its first 157 columns (TextStyle::max_line_columns, "..." included).
-  EXPECT_EQ(errors(), "main.glsl:1:1: error: the shader is too large (2000 bytes; limit 1000)\n" + std::string(157, ' ') +
+  EXPECT_EQ(errors(), "main.glsl:1:1: error: the shader is too large (2000 bytes; limit 1000) [E-LIMIT]\n" + std::string(157, ' ') +
                           "...\n^\n");
 }
 

@@ -141,7 +141,7 @@ TEST(Annotation, RationalPowersAreRejected) {
   auto parsed = parse_text("dimension d = length^0.5;");
   EXPECT_EQ(parsed->errors(),
             "test.glsl:1:22: error: dimension exponents must be integers: rational powers are not part of the "
-            "language\ndimension d = length^0.5;\n                     ^~~\n");
+            "language [E-SYNTAX]\ndimension d = length^0.5;\n                     ^~~\n");
 }
 
 // `e in target` converts a value to a space or a unit (docs/language.md, "Conversions").

@@ -46,7 +46,7 @@ Parser::Parser(std::vector<PToken> tokens, DiagnosticEngine& diagnostics, const 
 
 // ----------------------------------------------------------------- errors
 
-void Parser::fail(SourceRange range, std::string message) {
+void Parser::fail(const char* code, SourceRange range, std::string message) {
   // One "end of file" error per run: the enclosing constructs that are also
   // left open would only repeat it.
   if (at(T::Eof) && range == peek().range) {
@@ -54,7 +54,7 @@ void Parser::fail(SourceRange range, std::string message) {
     eof_reported_ = true;
     range = {prev_end_, prev_end_};  // where the missing text should have been
   }
-  diagnostics_.report(Diagnostic::error(range, std::move(message)));
+  diagnostics_.report(Diagnostic::error(range, std::move(message)).with_code(code));
   throw ParseError{};
 }
 
@@ -62,7 +62,7 @@ void Parser::fail_expected(std::string_view what, std::string_view context) {
   std::string message = "expected " + std::string(what);
   if (!context.empty()) message += " " + std::string(context);
   message += ", found " + describe(peek());
-  fail(peek().range, std::move(message));
+  fail(code::E_SYNTAX, peek().range, std::move(message));
 }
 
 const PToken& Parser::expect(T kind, std::string_view what, std::string_view context) {
@@ -75,7 +75,7 @@ void Parser::expect_semicolon(std::string_view context) {
   // Like clang: the caret goes just after the previous token, where the ';' is missing.
   std::string message = "expected ';' " + std::string(context) + ", found " + describe(peek());
   SourceRange at_end{prev_end_, prev_end_};
-  diagnostics_.report(Diagnostic::error(at_end, std::move(message)));
+  diagnostics_.report(Diagnostic::error(at_end, std::move(message)).with_code(code::E_SYNTAX));
   throw ParseError{};
 }
 
@@ -84,8 +84,9 @@ void Parser::enter_level() {
     --depth_;
     if (!depth_reported_) {
       depth_reported_ = true;
-      fail(peek().range, "nesting too deep: more than " + std::to_string(options_.max_nesting) +
-                             " levels of blocks, parentheses, brackets or operators");
+      fail(code::E_LIMIT, peek().range,
+           "nesting too deep: more than " + std::to_string(options_.max_nesting) +
+               " levels of blocks, parentheses, brackets or operators");
     }
     throw ParseError{};
   }
@@ -291,7 +292,7 @@ Decl* Parser::parse_declaration(bool global) {
   std::vector<TemplateParam> template_params;
   SourceRange template_range;
   if (at(T::Template)) {
-    if (!global) fail(peek().range, "a generic function must be declared at global scope");
+    if (!global) fail(code::E_SYNTAX, peek().range, "a generic function must be declared at global scope");
     parse_template_header(template_params, template_range);
   } else if (global && at_annotation_declaration()) {
     return parse_annotation_declaration();
@@ -525,13 +526,15 @@ DimExpr* Parser::parse_dim_term() {
   if (at(T::Minus) || at(T::Plus)) negative = advance().kind == T::Minus;
   const PToken& exponent = peek();
   if (exponent.kind == T::FloatLit || exponent.kind == T::DoubleLit) {
-    fail(exponent.range, "dimension exponents must be integers: rational powers are not part of the language");
+    fail(code::E_SYNTAX, exponent.range,
+         "dimension exponents must be integers: rational powers are not part of the language");
   }
   expect(T::IntLit, "an integer exponent", "after '^'");
   int value = 0;
   auto [ptr, ec] = std::from_chars(exponent.text.data(), exponent.text.data() + exponent.text.size(), value);
   if (ec != std::errc{} || ptr != exponent.text.data() + exponent.text.size() || value > 1000) {
-    fail(exponent.range, "dimension exponent '" + std::string(exponent.text) + "' is not a small decimal integer");
+    fail(code::E_SYNTAX, exponent.range,
+         "dimension exponent '" + std::string(exponent.text) + "' is not a small decimal integer");
   }
   power->base = base;
   power->exponent = negative ? -value : value;
@@ -551,7 +554,8 @@ DimExpr* Parser::parse_dim_primary() {
   }
   if (at(T::IntLit)) {
     if (peek().text != "1") {
-      fail(peek().range, "only the literal 1 may appear in a dimension expression, found " + describe(peek()));
+      fail(code::E_SYNTAX, peek().range,
+           "only the literal 1 may appear in a dimension expression, found " + describe(peek()));
     }
     auto* one = make<DimOne>(begin);
     advance();
@@ -674,7 +678,8 @@ TypeSpecifier* Parser::parse_type_specifier_nonarray() {
     if (!annotated && !is_type_name(type->name)) {
       // Reported without unwinding: the declaration still parses, so its
       // names exist and later uses do not cascade.
-      diagnostics_.report(Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'"));
+      diagnostics_.report(Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'")
+                              .with_code(code::E_UNKNOWN_TYPE));
     }
     if (annotated) type->annotation = parse_annotation();
   } else {
@@ -769,7 +774,7 @@ FunctionDecl* Parser::parse_function_rest(TypeQualifiers qualifiers, TypeSpecifi
   }
   expect(T::RParen, "')'", "to close parameter list");
   if (at(T::LBrace)) {
-    if (!global) fail(peek().range, "a function cannot be defined inside another function");
+    if (!global) fail(code::E_SYNTAX, peek().range, "a function cannot be defined inside another function");
     fn->body = parse_compound(false);
   } else {
     expect_semicolon("after function prototype");

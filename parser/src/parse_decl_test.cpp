@@ -113,8 +113,8 @@ TEST(ParseDecl, SubroutineArrayElementCall) {
 TEST(ParseDecl, UnknownTypeNameIsReportedOnceAndParsingGoesOn) {
   auto parsed = parse_text("B x[1];\nvoid f(B y);\ngl_LightSourceParameters light;\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:1: error: unknown type name 'B'\nB x[1];\n^\n"
-            "test.glsl:2:8: error: unknown type name 'B'\nvoid f(B y);\n       ^\n");
+            "test.glsl:1:1: error: unknown type name 'B' [E-UNKNOWN-TYPE]\nB x[1];\n^\n"
+            "test.glsl:2:8: error: unknown type name 'B' [E-UNKNOWN-TYPE]\nvoid f(B y);\n       ^\n");
   EXPECT_EQ(parsed->unit().decls.size(), 3u);
 }
 
@@ -141,16 +141,16 @@ TEST(ParseDecl, ArraysOfArraysNeedVersion430OrTheirExtension) {
                            "float c[4];\nfloat[5] d;\n",
                            options);
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "test.glsl:1:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays [E-VERSION]\n"
             "float a[2][3];\n"
             "          ^~~\n"
-            "test.glsl:2:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "test.glsl:2:11: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays [E-VERSION]\n"
             "float[2] b[3];\n"
             "          ^~~\n"
-            "test.glsl:3:21: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "test.glsl:3:21: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays [E-VERSION]\n"
             "struct S { vec2 m[1][2]; };\n"
             "                    ^~~\n"
-            "test.glsl:4:16: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays\n"
+            "test.glsl:4:16: error: arrays of arrays require #version 430 or GL_ARB_arrays_of_arrays [E-VERSION]\n"
             "void f(int p[2][2]);\n"
             "               ^~~\n");
   options.language->extensions = {"GL_ARB_arrays_of_arrays"};
@@ -165,16 +165,16 @@ TEST(ParseDecl, GlobalInOutAndIntegerOperatorsNeedVersion130) {
   options.language = LanguageLevel{120, false, {}};
   auto parsed = parse_text("in vec4 v;\nvoid f(in int a, out int b) { b = a % 2; b <<= ~a; }\n", options);
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:1: error: 'in' and 'out' on global variables require #version 130\n"
+            "test.glsl:1:1: error: 'in' and 'out' on global variables require #version 130 [E-VERSION]\n"
             "in vec4 v;\n"
             "^~\n"
-            "test.glsl:2:37: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "test.glsl:2:37: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4 [E-VERSION]\n"
             "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
             "                                    ^\n"
-            "test.glsl:2:44: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "test.glsl:2:44: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4 [E-VERSION]\n"
             "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
             "                                           ^~~\n"
-            "test.glsl:2:48: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4\n"
+            "test.glsl:2:48: error: the integer operators % << >> & | ^ ~ require #version 130 or GL_EXT_gpu_shader4 [E-VERSION]\n"
             "void f(in int a, out int b) { b = a % 2; b <<= ~a; }\n"
             "                                               ^\n");
   options.language = LanguageLevel{100, true, {}};
@@ -194,14 +194,14 @@ TEST(ParseDecl, LayoutIdentifiersOfLaterVersionsAreGated) {
                            "layout(location = 1 + 1) out vec4 c;\nlayout(location = 0, index = 1) out vec4 d;\n",
                            options);
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:8: error: layout(binding) requires #version 420 or GL_ARB_shading_language_420pack\n"
+            "test.glsl:1:8: error: layout(binding) requires #version 420 or GL_ARB_shading_language_420pack [E-VERSION]\n"
             "layout(binding = 1) uniform sampler2D s;\n"
             "       ^~~~~~~\n"
-            "test.glsl:2:8: error: layout(std430) requires #version 430 or GL_ARB_shader_storage_buffer_object\n"
+            "test.glsl:2:8: error: layout(std430) requires #version 430 or GL_ARB_shader_storage_buffer_object [E-VERSION]\n"
             "layout(std430) buffer B { float x[]; };\n"
             "       ^~~~~~\n"
             "test.glsl:3:19: error: constant expressions in layout qualifiers require #version 440 or "
-            "GL_ARB_enhanced_layouts\n"
+            "GL_ARB_enhanced_layouts [E-VERSION]\n"
             "layout(location = 1 + 1) out vec4 c;\n"
             "                  ^~~~~\n");
   options.language->extensions = {"GL_ARB_shading_language_420pack", "GL_ARB_shader_storage_buffer_object",
@@ -218,14 +218,14 @@ TEST(ParseDecl, BlockLayoutsOnlyOnBlocks) {
                            "uniform U { layout(shared) vec4 b; layout(row_major) mat4 c; };\n"
                            "layout(std140, row_major) uniform;\nlayout(std430) buffer B { vec4 d[]; };\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:8: error: layout(std140) applies to uniform and buffer blocks, not to variables\n"
+            "test.glsl:1:8: error: layout(std140) applies to uniform and buffer blocks, not to variables [E-LAYOUT]\n"
             "layout(std140) vec4 a;\n"
             "       ^~~~~~\n"
             "test.glsl:2:19: error: layout(row_major) applies to uniform and buffer blocks and their members, not to "
-            "struct members\n"
+            "struct members [E-LAYOUT]\n"
             "struct S { layout(row_major) mat4 m; };\n"
             "                  ^~~~~~~~~\n"
-            "test.glsl:3:20: error: layout(shared) applies to uniform and buffer blocks, not to members\n"
+            "test.glsl:3:20: error: layout(shared) applies to uniform and buffer blocks, not to members [E-LAYOUT]\n"
             "uniform U { layout(shared) vec4 b; layout(row_major) mat4 c; };\n"
             "                   ^~~~~~\n");
 }
@@ -235,19 +235,19 @@ TEST(ParseDecl, SampleQualifiesOnlyInputsAndOutputs) {
   auto parsed = parse_text("sample uniform vec4 a;\nsample centroid in vec4 b;\nstruct S { sample vec4 c; };\n"
                            "uniform U { sample vec4 d; };\nvoid f() { sample vec4 e; }\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:1:1: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "test.glsl:1:1: error: 'sample' applies only to 'in' and 'out' variables and blocks [E-QUALIFIER]\n"
             "sample uniform vec4 a;\n"
             "^~~~~~\n"
-            "test.glsl:2:1: error: 'sample' and 'centroid' cannot qualify the same declaration\n"
+            "test.glsl:2:1: error: 'sample' and 'centroid' cannot qualify the same declaration [E-QUALIFIER]\n"
             "sample centroid in vec4 b;\n"
             "^~~~~~\n"
-            "test.glsl:3:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "test.glsl:3:12: error: 'sample' applies only to 'in' and 'out' variables and blocks [E-QUALIFIER]\n"
             "struct S { sample vec4 c; };\n"
             "           ^~~~~~\n"
-            "test.glsl:4:13: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "test.glsl:4:13: error: 'sample' applies only to 'in' and 'out' variables and blocks [E-QUALIFIER]\n"
             "uniform U { sample vec4 d; };\n"
             "            ^~~~~~\n"
-            "test.glsl:5:12: error: 'sample' applies only to 'in' and 'out' variables and blocks\n"
+            "test.glsl:5:12: error: 'sample' applies only to 'in' and 'out' variables and blocks [E-QUALIFIER]\n"
             "void f() { sample vec4 e; }\n"
             "           ^~~~~~\n");
 }

@@ -14,7 +14,7 @@ namespace {
 TEST(ParseErrors, MissingSemicolonPointsAfterThePreviousToken) {
   auto parsed = parse_text("void f() {\n  float x = 1.0\n  x = 2.0;\n}\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:2:16: error: expected ';' after declaration, found 'x'\n"
+            "test.glsl:2:16: error: expected ';' after declaration, found 'x' [E-SYNTAX]\n"
             "  float x = 1.0\n"
             "               ^\n");
 }
@@ -31,19 +31,19 @@ TEST(ParseErrors, SeveralErrorsOneEachNoCascade) {
       "float g(float x) { return x * 2.0; }\n"
       "vec3 h() { return vec3(1.0) }\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:2:13: error: expected an expression, found ';'\n"
+            "test.glsl:2:13: error: expected an expression, found ';' [E-SYNTAX]\n"
             "  float a = ;\n"
             "            ^\n"
-            "test.glsl:3:10: error: expected an expression, found ';'\n"
+            "test.glsl:3:10: error: expected an expression, found ';' [E-SYNTAX]\n"
             "  a = a +;\n"
             "         ^\n"
-            "test.glsl:4:15: error: expected ')' after if condition, found '{'\n"
+            "test.glsl:4:15: error: expected ')' after if condition, found '{' [E-SYNTAX]\n"
             "  if (a > 0.0 { a = 1.0; }\n"
             "              ^\n"
-            "test.glsl:7:14: error: expected a name after type 'vec3', found '4'\n"
+            "test.glsl:7:14: error: expected a name after type 'vec3', found '4' [E-SYNTAX]\n"
             "uniform vec3 4;\n"
             "             ^\n"
-            "test.glsl:9:28: error: expected ';' after return statement, found '}'\n"
+            "test.glsl:9:28: error: expected ';' after return statement, found '}' [E-SYNTAX]\n"
             "vec3 h() { return vec3(1.0) }\n"
             "                           ^\n");
   // Everything around the errors was still parsed.
@@ -57,7 +57,7 @@ TEST(ParseErrors, SeveralErrorsOneEachNoCascade) {
 TEST(ParseErrors, UnclosedBlockAtEndOfFile) {
   auto parsed = parse_text("void f() {\n  if (true) {\n    return;\n");
   EXPECT_EQ(parsed->errors(),
-            "test.glsl:3:12: error: expected '}' to close the block opened at line 2, found end of file\n"
+            "test.glsl:3:12: error: expected '}' to close the block opened at line 2, found end of file [E-SYNTAX]\n"
             "    return;\n"
             "           ^\n");
 }
@@ -70,23 +70,23 @@ TEST(ParseErrors, StrayClosingBraceAtGlobalScope) {
 
 TEST(ParseErrors, MessagesForAnnotations) {
   EXPECT_EQ(parse_text("dimension d = length^;")->errors(),
-            "test.glsl:1:22: error: expected an integer exponent after '^', found ';'\n"
+            "test.glsl:1:22: error: expected an integer exponent after '^', found ';' [E-SYNTAX]\n"
             "dimension d = length^;\n"
             "                     ^\n");
   EXPECT_EQ(parse_text("dimension d = 2 * length;")->errors(),
-            "test.glsl:1:15: error: only the literal 1 may appear in a dimension expression, found '2'\n"
+            "test.glsl:1:15: error: only the literal 1 may appear in a dimension expression, found '2' [E-SYNTAX]\n"
             "dimension d = 2 * length;\n"
             "              ^\n");
   EXPECT_EQ(parse_text("uniform float<length x;")->errors(),
-            "test.glsl:1:22: error: expected ',' or '>' in annotation, found 'x'\n"
+            "test.glsl:1:22: error: expected ',' or '>' in annotation, found 'x' [E-SYNTAX]\n"
             "uniform float<length x;\n"
             "                     ^\n");
   EXPECT_EQ(parse_text("template<dimension D> float<D> x;")->errors(),
-            "test.glsl:1:32: error: expected a function declaration after 'template<...>', found 'x'\n"
+            "test.glsl:1:32: error: expected a function declaration after 'template<...>', found 'x' [E-SYNTAX]\n"
             "template<dimension D> float<D> x;\n"
             "                               ^\n");
   EXPECT_EQ(parse_text("template<typename D> float<D> f();")->errors(),
-            "test.glsl:1:10: error: expected 'dimension' or 'space' in template parameter list, found 'typename'\n"
+            "test.glsl:1:10: error: expected 'dimension' or 'space' in template parameter list, found 'typename' [E-SYNTAX]\n"
             "template<typename D> float<D> f();\n"
             "         ^~~~~~~~\n");
 }
@@ -128,7 +128,7 @@ TEST(ParseErrors, NestingCountsEachLevelOnce) {
   EXPECT_EQ(parse_text("void f() { x = " + nested(255, "(", "1.0", ")") + "; }")->errors(), "");
   const std::string parens = "void f() { x = " + nested(256, "(", "1.0", ")") + "; }";
   EXPECT_EQ(parse_text(parens)->errors(),
-            std::string("test.glsl:1:271: error: nesting too deep: more than 256 levels of blocks, parentheses, brackets or operators\n") +
+            std::string("test.glsl:1:271: error: nesting too deep: more than 256 levels of blocks, parentheses, brackets or operators [E-LIMIT]\n") +
                 "..." + parens.substr(194, 154) + "...\n" + std::string(3 + 76, ' ') + "^\n");  // cut around the caret
   EXPECT_EQ(parse_text("void f() " + nested(256, "{", "", "}"))->errors(), "");
   EXPECT_EQ(parse_text("void f() " + nested(257, "{", "", "}"))->diagnostics.error_count(), 1u);

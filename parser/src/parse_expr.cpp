@@ -58,8 +58,9 @@ void Parser::check_height(Expr* e) {
   if (e->height > options_.max_expression_height) {
     if (!depth_reported_) {
       depth_reported_ = true;
-      fail(e->range, "expression too deeply nested: more than " +
-                         std::to_string(options_.max_expression_height) + " levels of operators");
+      fail(code::E_LIMIT, e->range,
+           "expression too deeply nested: more than " + std::to_string(options_.max_expression_height) +
+               " levels of operators");
     }
     throw ParseError{};
   }
@@ -278,7 +279,8 @@ Expr* Parser::parse_conversion() {
     convert->operand = e;
     convert->in_range = advance().range;
     convert->target = parse_dim_primary();  // a name, or a parenthesised unit expression
-    if (at(T::Caret)) fail(peek().range, "a power of a unit after 'in' needs parentheses, e.g. x in (meter^2)");
+    if (at(T::Caret))
+      fail(code::E_SYNTAX, peek().range, "a power of a unit after 'in' needs parentheses, e.g. x in (meter^2)");
     convert->height = height_of({e});
     e = finish_expr(convert, begin);
     check_height(e);

@@ -65,8 +65,9 @@ CompoundStmt* Parser::parse_compound(bool new_scope) {
   }
   if (new_scope) pop_scope();
   if (!at(T::RBrace)) {
-    fail(peek().range, "expected '}' to close the block opened at line " + std::to_string(begin.line) + ", found " +
-                           describe(peek()));
+    fail(
+        code::E_SYNTAX, peek().range,
+        "expected '}' to close the block opened at line " + std::to_string(begin.line) + ", found " + describe(peek()));
   }
   advance();
   block->range = range_from(begin);

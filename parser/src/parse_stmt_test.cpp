@@ -29,7 +29,7 @@ TEST(ParseStmt, AttributesBeforeLoopsIfsAndSwitches) {
   EXPECT_EQ(dump_first("void f() { [[flatten]] if (a) x(); }"),
             "IfStmt [[flatten]]\n  condition: IdentifierExpr a\n  then: ExprStmt\n    CallExpr x\n");
   auto parsed = parse_text("void f() { [[unroll]] x(); }");
-  EXPECT_EQ(parsed->errors(), "test.glsl:1:23: error: expected 'if', 'switch', 'for', 'while' or 'do' after '[[ ]]' attributes, found 'x'\n"
+  EXPECT_EQ(parsed->errors(), "test.glsl:1:23: error: expected 'if', 'switch', 'for', 'while' or 'do' after '[[ ]]' attributes, found 'x' [E-SYNTAX]\n"
                               "void f() { [[unroll]] x(); }\n"
                               "                      ^\n");
 }

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <safegi/diagnostics/codes.hpp>
 #include <safegi/diagnostics/diagnostic.hpp>
 #include <safegi/parser/ast.hpp>
 #include <safegi/parser/parser.hpp>
@@ -50,7 +51,8 @@ class Parser {
   }
   const PToken& expect(T kind, std::string_view what, std::string_view context);
   void expect_semicolon(std::string_view context);
-  [[noreturn]] void fail(SourceRange range, std::string message);
+  // Reports an error with its code (codes.def) and unwinds to the enclosing recovery point.
+  [[noreturn]] void fail(const char* code, SourceRange range, std::string message);
   [[noreturn]] void fail_expected(std::string_view what, std::string_view context);
   SourceRange range_from(SourceLocation begin) const { return {begin, prev_end_}; }
   SourceLocation here() const { return peek().range.begin; }

@@ -133,7 +133,7 @@ void check_payload_match(const CheckResult& tracer, const CheckResult& receiver,
     Diagnostic d = Diagnostic::error(in.range, "the " + std::string(stage_name(receiver.stage)) + " shader's payload '" +
                                                    in.name + "' has type " + in_text + ", but the " +
                                                    stage_name(tracer.stage) + " shader traces no payload of that type")
-                       .with_code("E-STAGE-MISMATCH");
+                       .with_code(code::E_STAGE_MISMATCH);
     for (const InterfaceVariable* p : traced)
       d.with_note(Diagnostic::note(p->range, "payload '" + p->name + "'" +
                                                  (p->location >= 0 ? " at location " + std::to_string(p->location) : "") +

@@ -19,7 +19,7 @@ Value Checker::buffer_reference_constructor(const ast::CallExpr& e, const Value&
   if (args.size() == 1 && (uvec2 || reference)) return out;
   report(Diagnostic::error(e.range, "a buffer reference '" + out.type.structure->name +
                                         "' is made from one 64-bit address (uint64_t or uvec2) or another reference")
-             .with_code("E-CONSTRUCTOR"));
+             .with_code(code::E_CONSTRUCTOR));
   return error_value(e.range);
 }
 

@@ -141,7 +141,7 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
   } else if (const ast::Qualifier* misplaced = storage_of_another_stage(q)) {
     reject(misplaced->range, "'" + misplaced->word + "' variables belong to " + stage_list(stages_of_storage(misplaced->word)) +
                                  " shaders, not to " + stage_name(options_.stage) + " shaders",
-           "E-QUALIFIER");
+           code::E_QUALIFIER);
     return;
   } else if (const ast::Qualifier* inout = find_qualifier(q, "inout")) {
     reject(inout->range, "'inout' qualifies only function parameters, not global variables", code::E_QUALIFIER,

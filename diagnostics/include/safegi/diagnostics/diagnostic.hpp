@@ -23,7 +23,7 @@ struct Diagnostic {
   std::vector<SourceRange> highlights;   // extra underlines
   std::vector<Diagnostic> notes;         // rendered below, each in the same style
   std::string hint;                      // "help: ..."
-  std::string code;                      // stable id such as "E-DIMENSION-MISMATCH" (codes.def); may be empty
+  std::string code;                      // stable id (codes.def: code::E_DIMENSION_MISMATCH); empty on a note
   ExpansionId expansion = kNoExpansion;  // macro expansion that produced `range`, if any
 
   static Diagnostic error(SourceRange range, std::string message);

@@ -75,7 +75,7 @@ class Lexer {
   void lex_punctuator(Token& token);
   void lex_invalid(Token& token);
   void finish(Token& token, std::size_t begin);
-  void error(std::size_t begin, std::size_t end, std::string message);
+  void error(const char* code, std::size_t begin, std::size_t end, std::string message);  // code: codes.def
 
   SourceManager& sources_;
   DiagnosticEngine& diagnostics_;
