@@ -2,10 +2,16 @@
 """Compile-time cost of the typed library's checks, as a ratio against the unchecked
 build of the same program in the same run.
 
-Programs: docs/typed/quick-start.md's file (a small renderer-style host program) and
-testsuite/zero_overhead/kernels.cpp (seven hot kernels), each compiled with -O2 -c
-checked and with -DSAFEGI_UNCHECKED=1, interleaved. Time is the compiler's CPU time
-(user + system), which a loaded machine disturbs less than wall time.
+Programs: docs/typed/quick-start.md's file (a small renderer-style host program),
+testsuite/zero_overhead/kernels.cpp (seven hot kernels) and bench/typed_compile/smallpt.cpp
+(smallpt ported to the library), each compiled with -O2 -c checked and with
+-DSAFEGI_UNCHECKED=1, interleaved. Time is the compiler's CPU time (user + system),
+which a loaded machine disturbs less than wall time.
+
+The include cost: a file that only includes <safegi/typed.hpp>, -fsyntax-only, under
+g++ and clang++ (whichever are installed), beside a file that includes only the GLM and
+standard headers the library itself includes (the floor no library over GLM can go
+below); the library's own cost is the difference.
 
 SAFEGI_TYPED_BASELINE=<commit> adds the same measurement against the headers of that
 commit (extracted with git archive), for a before/after comparison; programs that do
@@ -37,7 +43,39 @@ def programs(tmp: Path) -> dict[str, Path]:
     page = (h.ROOT / "docs/typed/quick-start.md").read_text()
     quick_start = tmp / "lighting.cpp"
     quick_start.write_text(re.findall(r"```cpp\n(.*?)```", page, flags=re.S)[0])
-    return {"quick-start host program": quick_start, "zero_overhead kernels": h.ROOT / "testsuite/zero_overhead/kernels.cpp"}
+    return {"quick-start host program": quick_start, "zero_overhead kernels": h.ROOT / "testsuite/zero_overhead/kernels.cpp",
+            "smallpt port": h.ROOT / "bench/typed_compile/smallpt.cpp"}
+
+
+# The GLM and standard headers typed.hpp includes (representation.hpp, space.hpp,
+# map.hpp, spectrum.hpp, quantity.hpp): what a file pays for GLM alone.
+FLOOR_HEADERS = ["glm/gtc/matrix_transform.hpp", "glm/mat3x3.hpp", "glm/mat4x4.hpp", "glm/matrix.hpp",
+                 "glm/common.hpp", "glm/geometric.hpp", "glm/exponential.hpp", "cmath", "limits", "compare",
+                 "concepts", "cstdio", "cstdlib"]
+
+
+def include_cost(trees: list[tuple[str, Path]], tmp: Path, repeats: int) -> list[list[str]]:
+    only_typed = tmp / "only_typed.cpp"
+    only_typed.write_text("#include <safegi/typed.hpp>\n")
+    floor = tmp / "floor.cpp"
+    floor.write_text("".join(f"#include <{header}>\n" for header in FLOOR_HEADERS))
+    rows = []
+    for cxx in ("g++", "clang++"):
+        if subprocess.run(["which", cxx], capture_output=True).returncode != 0:
+            continue
+        commands = {"floor": [cxx, "-std=c++20", "-O2", "-fsyntax-only", str(floor)]}
+        for label, include in trees:
+            commands[label] = [cxx, "-std=c++20", "-O2", "-fsyntax-only", f"-I{include}", str(only_typed)]
+        samples: dict[str, list[float]] = {name: [] for name in commands}
+        for _ in range(repeats):
+            for name, command in commands.items():
+                samples[name].append(cpu_seconds(command))
+        floor_median = statistics.median(samples["floor"])
+        for label, _ in trees:
+            timing = h.Timing(samples[label])
+            rows.append([cxx, label, timing.cell(), h.Timing(samples["floor"]).cell(),
+                         f"{timing.median - floor_median:.3f}"])
+    return rows
 
 
 def measure(include: Path, sources: dict[str, Path], tmp: Path, repeats: int) -> list[tuple[str, h.Timing, h.Timing]]:
@@ -70,6 +108,7 @@ def main() -> None:
                                      capture_output=True).stdout
             subprocess.run(["tar", "-x", "-C", str(old)], input=archive, check=True)
             trees.append((f"headers at {baseline}", old / "typed/include"))
+        include_rows = include_cost(trees, tmp, repeats)
         table_rows = []
         for label, include in trees:
             for name, checked, unchecked in measure(include, sources, tmp, repeats):
@@ -83,7 +122,13 @@ Each program compiled with `g++ -std=c++20 -O2 -DNDEBUG -c`, checked and with
 median (min–max); ratio = checked / unchecked. `SAFEGI_TYPED_BASELINE=<commit>` adds rows
 for the headers of an older commit.
 
-""" + h.table(["program", "headers", "checked (s)", "unchecked (s)", "ratio"], table_rows)
+""" + h.table(["program", "headers", "checked (s)", "unchecked (s)", "ratio"], table_rows) + f"""
+
+The include cost: a file holding only `#include <safegi/typed.hpp>`, `-std=c++20 -O2
+-fsyntax-only`, beside a file holding only the GLM and standard headers the library
+includes (the floor); the library's own cost is the difference of the medians.
+
+""" + h.table(["compiler", "headers", "typed.hpp alone (s)", "GLM floor (s)", "library's own (s)"], include_rows)
     h.write_section("typed_compile", text)
 
 

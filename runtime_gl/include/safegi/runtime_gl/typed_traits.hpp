@@ -4,6 +4,7 @@
 // plain representation (safegi::raw, safegi::matrix). Works in both builds; in
 // the unchecked one the descriptions are never consulted.
 #include <safegi/typed.hpp>
+#include <safegi/typed/reflection.hpp>
 
 #include "safegi/runtime_gl/value_traits.hpp"
 

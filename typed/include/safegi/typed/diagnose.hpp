@@ -205,18 +205,34 @@ struct refused_numeric_limits {
 }  // namespace diagnose
 }  // namespace safegi
 
-// A converting constructor that only mistakes select is declared
-//   SAFEGI_MISTAKE("words") basic_x(basic_x<Other> SAFEGI_REPORTED_AS(diagnose::report<...>));
+// A converting constructor that only mistakes select is declared with its report as a
+// defaulted template parameter named Report:
+//   template <class Other, class Report = diagnose::report<...>>
+//   SAFEGI_MISTAKE basic_x(basic_x<Other> SAFEGI_REPORTED_AS(Report))
+//       SAFEGI_SAYS("words");
 // g++ reports the defaulted parameter of the report's type on the user's line, naming the
-// report; clang++ would report that default argument inside the library, so there the
-// parameter is left out and the constructor is unavailable, with the report's words.
+// report. clang++ would report that default argument inside the library, so there the
+// constructor is consteval instead, and its body calls a function that is not constexpr:
+// clang++ reports on the user's line that the call "to consteval function
+// 'basic_x<...>::basic_x<Other, safegi::diagnose::report<...>>' is not a constant
+// expression" (the report, with both dimensions or spaces named, in the function's
+// template arguments), then quotes the SAFEGI_SAYS line, words included.
 #if defined(__clang__)
-#define SAFEGI_MISTAKE(words) __attribute__((unavailable(words)))
+#define SAFEGI_MISTAKE consteval
 #define SAFEGI_REPORTED_AS(...)
+#define SAFEGI_SAYS(words) \
+  { ::safegi::diagnose::reported<Report>(); }
 #else
-#define SAFEGI_MISTAKE(words)
+#define SAFEGI_MISTAKE
 #define SAFEGI_REPORTED_AS(...) , __VA_ARGS__ = {}
+#define SAFEGI_SAYS(words)
 #endif
+
+namespace safegi::diagnose {
+/// Not constexpr, and never defined: a consteval mistake that calls it is refused at the call.
+template <class Report>
+void reported();
+}  // namespace safegi::diagnose
 
 namespace safegi {
 namespace space_detail {

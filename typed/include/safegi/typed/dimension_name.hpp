@@ -4,7 +4,6 @@
 // name dimensions (diagnose.hpp).
 #pragma once
 
-#include <string>
 #include <string_view>
 
 #include "safegi/typed/dimension.hpp"

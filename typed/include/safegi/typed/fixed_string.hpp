@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstddef>
-#include <string>
 #include <string_view>
 
 namespace safegi {
@@ -30,7 +29,9 @@ constexpr bool operator==(const fixed_string<N>& a, const fixed_string<M>& b) {
   return a.view() == b.view();
 }
 
-namespace detail {
+// Compile-time text, in a namespace of its own so that headers whose own detail is
+// inside the mode's inline namespace can name it (safegi::detail would be ambiguous).
+namespace text_detail {
 /// A small constexpr string builder (g++ 12's constexpr std::string trips over its
 /// small-string buffer, so compile-time text is built here instead).
 struct text_buffer {
@@ -68,6 +69,11 @@ constexpr auto freeze(Producer produce) {
   for (std::size_t i = 0; i < length; ++i) out.text[i] = text.chars[i];
   return out;
 }
+}  // namespace text_detail
+
+namespace detail {
+using text_detail::freeze;
+using text_detail::text_buffer;
 }  // namespace detail
 
 }  // namespace safegi

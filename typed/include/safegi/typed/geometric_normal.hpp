@@ -34,8 +34,9 @@ class basic_geometric_normal : public basic_normal<S> {
  public:
   constexpr basic_geometric_normal(detail::raw_tag, vec3_rep xyz) : basic_normal<S>(detail::raw_tag{}, xyz) {}
   /// A normal<S> is not known to be the geometric one: face_normal(p0, p1, p2), or state it.
-  SAFEGI_MISTAKE("a shading normal (interpolated, bumped) is not the surface's: face_normal(p0, p1, p2), or geometric(n) for a normal known to be the true surface's")
-  basic_geometric_normal(basic_normal<S> SAFEGI_REPORTED_AS(diagnose::shading_normal_as_geometric<S>));  // NOLINT
+  template <class Report = diagnose::shading_normal_as_geometric<S>>
+  SAFEGI_MISTAKE basic_geometric_normal(const basic_normal<S>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a shading normal (interpolated, bumped) is not the surface's: face_normal(p0, p1, p2), or geometric(n) for a normal known to be the true surface's");  // NOLINT
   /// Flipped, still the surface's normal.
   constexpr basic_geometric_normal operator-() const { return {detail::raw_tag{}, -this->raw_value()}; }
 };

@@ -38,11 +38,10 @@ class basic_map {
   constexpr basic_map() = default;
   constexpr basic_map(detail::raw_tag, matrix_pair m) : m_(m) {}
   /// A map between other spaces never converts; declared to say so in words.
-  template <class A2, class B2>
+  template <class A2, class B2, class Report = diagnose::map_conversion<diagnose::given<diagnose::map<A2, B2>>, diagnose::wanted<diagnose::map<A, B>>>>
     requires(!std::is_same_v<A2, A> || !std::is_same_v<B2, B>)
-  SAFEGI_MISTAKE("a map<A, B> is never a map between other spaces; inverse(m) turns map<A, B> into map<B, A>")
-  basic_map(const basic_map<A2, B2>& SAFEGI_REPORTED_AS(diagnose::map_conversion<diagnose::given<diagnose::map<A2, B2>>,
-                                                             diagnose::wanted<diagnose::map<A, B>>>));  // NOLINT
+  SAFEGI_MISTAKE basic_map(const basic_map<A2, B2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a map<A, B> is never a map between other spaces; inverse(m) turns map<A, B> into map<B, A>");  // NOLINT
 
   [[nodiscard]] constexpr const matrix_pair& raw_value() const { return m_; }
 

@@ -65,12 +65,13 @@ class basic_oriented : public X {
 
   constexpr basic_oriented(detail::raw_tag, X x) : X(x) {}
   /// The opposite orientation is a mistake, and so is a value without one.
-  template <class O2>
+  template <class O2, class Report = diagnose::orientation_mismatch<O2, O, X>>
     requires(!std::is_same_v<O2, O>)
-  SAFEGI_MISTAKE("the value points the other way relative to the shaded point: negate it (-w) if the other one was meant")
-  basic_oriented(basic_oriented<O2, X> SAFEGI_REPORTED_AS(diagnose::orientation_mismatch<O2, O, X>));  // NOLINT
-  SAFEGI_MISTAKE("this parameter needs an orientation: derive the value from the shaded point (q - shaded(p)) or state one, as_away(x) / as_toward(x)")
-  basic_oriented(X SAFEGI_REPORTED_AS(diagnose::orientation_unknown<O, X>));  // NOLINT
+  SAFEGI_MISTAKE basic_oriented(const basic_oriented<O2, X>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("the value points the other way relative to the shaded point: negate it (-w) if the other one was meant");  // NOLINT
+  template <class Report = diagnose::orientation_unknown<O, X>>
+  SAFEGI_MISTAKE basic_oriented(const X& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("this parameter needs an orientation: derive the value from the shaded point (q - shaded(p)) or state one, as_away(x) / as_toward(x)");  // NOLINT
 
   /// The value itself, its orientation forgotten (also an implicit conversion to X).
   [[nodiscard]] constexpr X value() const { return *this; }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <safegi/typed.hpp>
+#include <safegi/typed/reflection.hpp>
 
 namespace {
 namespace sg = safegi;

@@ -7,35 +7,26 @@
 // A user base dimension is shown by its name. The unchecked build has no dimensions or
 // spaces left to print: there a quantity is a float and a point prints as point(1, 2, 0).
 //
-// With a standard library that has <format> (__cpp_lib_format), std::format("{:.2f}", q)
-// formats the number with the given spec and appends the same unit and name.
+// std::format support is in format.hpp (not included by typed.hpp).
 #pragma once
 
-#include <ostream>
-#include <sstream>
-#include <string>
+#include <cstdio>
+#include <iosfwd>
 #include <string_view>
 
 #include "safegi/typed/ray.hpp"
 #include "safegi/typed/space.hpp"
 #include "safegi/typed/spectrum.hpp"
 
-#if defined(__has_include)
-#if __has_include(<version>)
-#include <version>
-#endif
-#endif
-#if defined(__cpp_lib_format)
-#include <algorithm>
-#include <format>
-#endif
+// Printing costs a file that does not print nothing: only <iosfwd> is included. The
+// unit text is computed at compile time; operator<< is a template over the stream, so
+// it needs <ostream> only where it is used (which std::cout or a std::ostringstream
+// brings anyway), and to_string needs <string>.
 
-namespace safegi {
-inline namespace SAFEGI_MODE_NAMESPACE {
-
-namespace detail {
+// The unit text, the same in every mode (computed at compile time).
+namespace safegi::text_detail {
 /// The symbol of a base dimension's reference unit; proj has none.
-inline std::string_view reference_unit_symbol(std::string_view base) {
+constexpr std::string_view reference_unit_symbol(std::string_view base) {
   if (base == "length") return "m";
   if (base == "time") return "s";
   if (base == "energy") return "J";
@@ -45,15 +36,17 @@ inline std::string_view reference_unit_symbol(std::string_view base) {
   return base;  // a user base dimension: its own name
 }
 
-inline void append_superscript(std::string& text, int exponent) {
-  static constexpr std::string_view digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+constexpr void append_superscript(text_buffer& text, int exponent) {
+  constexpr std::string_view digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
   if (exponent == 1) return;
   if (exponent < 0) text += "⁻";
-  const std::string decimal = std::to_string(exponent < 0 ? -static_cast<long long>(exponent) : exponent);
-  for (char c : decimal) text += digits[c - '0'];
+  long long magnitude = exponent < 0 ? -static_cast<long long>(exponent) : exponent;
+  long long place = 1;
+  while (place * 10 <= magnitude) place *= 10;
+  for (; place > 0; place /= 10) text += digits[(magnitude / place) % 10];
 }
 
-inline void append_unit_power(std::string& text, std::string_view symbol, int exponent) {
+constexpr void append_unit_power(text_buffer& text, std::string_view symbol, int exponent) {
   if (symbol.empty() || exponent == 0) return;
   if (!text.empty()) text += "·";
   text += symbol;
@@ -62,12 +55,12 @@ inline void append_unit_power(std::string& text, std::string_view symbol, int ex
 
 /// Energy and time with opposite exponents print as watts (W·m⁻² rather than J·m⁻²·s⁻¹).
 template <class... Terms>
-std::string unit_text(dimension<Terms...>) {
+constexpr text_buffer unit_text(dimension<Terms...>) {
   int energy = 0, time = 0;
   ((Terms::base::name.view() == "energy" ? energy = Terms::exponent : 0), ...);
   ((Terms::base::name.view() == "time" ? time = Terms::exponent : 0), ...);
   const int watts = energy != 0 && energy == -time ? energy : 0;
-  std::string text;
+  text_buffer text;
   append_unit_power(text, "W", watts);
   append_unit_power(text, "J", energy - watts);
   // The remaining bases in the canonical (alphabetical) order, time after them as in SI.
@@ -82,91 +75,145 @@ std::string unit_text(dimension<Terms...>) {
 }
 
 /// " W·m⁻²·sr⁻¹ (radiance)": what follows a number of dimension D.
-template <dimension_type D>
-std::string unit_suffix() {
-  std::string unit = unit_text(D{});
-  std::string suffix;
-  if (!unit.empty()) (suffix += " ") += unit;
-  if constexpr (!std::is_same_v<D, dim::dimensionless>) ((suffix += " (") += dimension_name<D>()) += ")";
+template <class D>
+constexpr text_buffer unit_suffix() {
+  const text_buffer unit = unit_text(D{});
+  text_buffer suffix;
+  if (!unit.empty()) (suffix += " ") += unit.view();
+  if (!std::is_same_v<D, dim::dimensionless>) ((suffix += " (") += dimension_name<D>()) += ")";
   return suffix;
 }
-
-template <class S>
-std::string_view space_label() {
-  return is_checked ? std::string_view(S::name.view()) : std::string_view();
+/// " m" for a length: the unit alone, as each component of a vector shows it.
+template <class D>
+constexpr text_buffer component_unit() {
+  const text_buffer unit = unit_text(D{});
+  text_buffer text;
+  if (!unit.empty()) (text += " ") += unit.view();
+  return text;
 }
-
-/// kind<space>(a, b, c): each component followed by `unit` (" m" for a point).
-inline void print_components(std::ostream& os, std::string_view kind, std::string_view arguments, const real* xyz,
-                             int count, std::string_view unit) {
-  os << kind;
-  if (!arguments.empty()) os << '<' << arguments << '>';
-  os << '(';
-  for (int i = 0; i < count; ++i) os << (i ? ", " : "") << xyz[i] << unit;
-  os << ')';
-}
-}  // namespace detail
-
-template <class D, class T>
-std::ostream& operator<<(std::ostream& os, basic_quantity<D, T> q) {
-  return os << q.raw_value() << detail::unit_suffix<D>();
+/// "world" or "world, radiance": a vector's arguments (its dimension unless a length).
+template <class S, class D>
+constexpr text_buffer vector_arguments() {
+  text_buffer text;
+  text += S::name.view();
+  if (!std::is_same_v<D, dim::length>) (text += ", ") += dimension_name<D>();
+  return text;
 }
 
 template <class D>
-std::ostream& operator<<(std::ostream& os, basic_spectrum<D> s) {
-  const vec3_rep rgb = s.raw_value();
-  os << '(' << rgb.r << ", " << rgb.g << ", " << rgb.b << ')';
-  if constexpr (is_checked) os << detail::unit_suffix<D>();
-  return os;
-}
-
-template <class S>
-std::ostream& operator<<(std::ostream& os, basic_point<S> p) {
-  const vec3_rep xyz = p.raw_value();
-  detail::print_components(os, "point", detail::space_label<S>(), &xyz.x, 3, is_checked ? " m" : "");
-  return os;
-}
-
-/// vector<world>(1 m, 0 m, 0 m); a vector of another dimension names it: vector<world, radiance>(…).
+inline constexpr auto frozen_unit_suffix = freeze([] { return unit_suffix<D>(); });
+template <class D>
+inline constexpr auto frozen_component_unit = freeze([] { return component_unit<D>(); });
 template <class S, class D>
-std::ostream& operator<<(std::ostream& os, basic_vector<S, D> v) {
-  const vec3_rep xyz = v.raw_value();
-  std::string arguments(detail::space_label<S>());
-  std::string unit;
-  if constexpr (is_checked) {
-    if constexpr (!std::is_same_v<D, dim::length>) (arguments += ", ") += dimension_name<D>();
-    const std::string symbol = detail::unit_text(D{});
-    if (!symbol.empty()) unit = " " + symbol;
+inline constexpr auto frozen_vector_arguments = freeze([] { return vector_arguments<S, D>(); });
+}  // namespace safegi::text_detail
+
+namespace safegi {
+inline namespace SAFEGI_MODE_NAMESPACE {
+namespace detail {
+
+template <class D>
+constexpr std::string_view suffix_of() {
+  if constexpr (is_checked) return text_detail::frozen_unit_suffix<D>.view();
+  return {};
+}
+template <class S>
+constexpr std::string_view space_label() {
+  if constexpr (is_checked) return S::name.view();
+  return {};
+}
+
+/// Where printed text goes: a stream (the number as the stream's flags format it), or a
+/// string (the number as a default-formatted stream would write it, %g).
+template <class Stream>
+struct stream_sink {
+  Stream& out;
+  void text(std::string_view piece) { out << piece; }
+  template <class T>
+  void number(T value) {
+    out << value;
   }
-  detail::print_components(os, "vector", arguments, &xyz.x, 3, unit);
-  return os;
+};
+template <class String>
+struct string_sink {
+  String& out;
+  void text(std::string_view piece) { out.append(piece.data(), piece.size()); }
+  void number(double value) {
+    char digits[32];
+    const int length = std::snprintf(digits, sizeof digits, "%g", value);
+    out.append(digits, static_cast<std::size_t>(length));
+  }
+};
+
+/// kind<arguments>(a, b, c): each component followed by `unit` (" m" for a point).
+template <class Sink, class T>
+void print_components(Sink sink, std::string_view kind, std::string_view arguments, const T* xyz, int count,
+                      std::string_view unit) {
+  sink.text(kind);
+  if (!arguments.empty()) {
+    sink.text("<");
+    sink.text(arguments);
+    sink.text(">");
+  }
+  sink.text("(");
+  for (int i = 0; i < count; ++i) {
+    if (i) sink.text(", ");
+    sink.number(xyz[i]);
+    sink.text(unit);
+  }
+  sink.text(")");
 }
 
-template <class S>
-std::ostream& operator<<(std::ostream& os, basic_direction<S> d) {
+template <class Sink, class D, class T>
+void print(Sink sink, basic_quantity<D, T> q) {
+  sink.number(q.raw_value());
+  sink.text(suffix_of<D>());
+}
+template <class Sink, class D>
+void print(Sink sink, basic_spectrum<D> s) {
+  const vec3_rep rgb = s.raw_value();
+  print_components(sink, "", "", &rgb.r, 3, "");
+  sink.text(suffix_of<D>());
+}
+template <class Sink, class S>
+void print(Sink sink, basic_point<S> p) {
+  const vec3_rep xyz = p.raw_value();
+  print_components(sink, "point", space_label<S>(), &xyz.x, 3, is_checked ? " m" : "");
+}
+/// vector<world>(1 m, 0 m, 0 m); a vector of another dimension names it: vector<world, radiance>(…).
+template <class Sink, class S, class D>
+void print(Sink sink, basic_vector<S, D> v) {
+  const vec3_rep xyz = v.raw_value();
+  if constexpr (is_checked)
+    print_components(sink, "vector", text_detail::frozen_vector_arguments<S, D>.view(), &xyz.x, 3,
+                     text_detail::frozen_component_unit<D>.view());
+  else
+    print_components(sink, "vector", "", &xyz.x, 3, "");
+}
+template <class Sink, class S>
+void print(Sink sink, basic_direction<S> d) {
   const vec3_rep xyz = d.raw_value();
-  detail::print_components(os, "direction", detail::space_label<S>(), &xyz.x, 3, "");
-  return os;
+  print_components(sink, "direction", space_label<S>(), &xyz.x, 3, "");
 }
-
-template <class S>
-std::ostream& operator<<(std::ostream& os, basic_normal<S> n) {
+template <class Sink, class S>
+void print(Sink sink, basic_normal<S> n) {
   const vec3_rep xyz = n.raw_value();
-  detail::print_components(os, "normal", detail::space_label<S>(), &xyz.x, 3, "");
-  return os;
+  print_components(sink, "normal", space_label<S>(), &xyz.x, 3, "");
 }
-
-template <class S>
-std::ostream& operator<<(std::ostream& os, basic_hpoint<S> h) {
+template <class Sink, class S>
+void print(Sink sink, basic_hpoint<S> h) {
   const vec4_rep xyzw = h.raw_value();
-  detail::print_components(os, "hpoint", detail::space_label<S>(), &xyzw.x, 4, "");
-  return os;
+  print_components(sink, "hpoint", space_label<S>(), &xyzw.x, 4, "");
 }
-
-template <class S>
-std::ostream& operator<<(std::ostream& os, const basic_ray<S>& r) {
-  return os << "ray(" << r.o << ", " << r.d << ')';
+template <class Sink, class S>
+void print(Sink sink, const basic_ray<S>& r) {
+  sink.text("ray(");
+  print(sink, r.o);
+  sink.text(", ");
+  print(sink, r.d);
+  sink.text(")");
 }
+}  // namespace detail
 
 namespace detail {
 template <class X>
@@ -193,35 +240,22 @@ struct printable_kind<basic_ray<S>> : std::true_type {};
 template <class X>
 concept printable = detail::printable_kind<X>::value;
 
-/// What operator<< writes, as a string: to_string(2.0f * units::watt) is "2 W (power)".
-template <printable X>
-std::string to_string(const X& x) {
-  std::ostringstream text;
-  text << x;
-  return std::move(text).str();
+/// std::cout << L: the number as the stream's flags format it, its unit and dimension.
+template <class Traits, printable X>
+std::basic_ostream<char, Traits>& operator<<(std::basic_ostream<char, Traits>& os, const X& x) {
+  detail::print(detail::stream_sink<std::basic_ostream<char, Traits>>{os}, x);
+  return os;
+}
+
+/// What operator<< writes to a default-formatted stream, as a string: to_string(2.0f *
+/// units::watt) is "2 W (power)". (The second parameter only defers std::string to the
+/// call, so that a file which never calls it need not include <string>.)
+template <printable X, class String = std::string>
+String to_string(const X& x) {
+  String text;
+  detail::print(detail::string_sink<String>{text}, x);
+  return text;
 }
 
 }  // namespace SAFEGI_MODE_NAMESPACE
 }  // namespace safegi
-
-#if defined(__cpp_lib_format)
-/// std::format("{:.3g}", q): the spec formats the number; the unit and name follow.
-template <class D, class T>
-struct std::formatter<safegi::basic_quantity<D, T>, char> : std::formatter<T, char> {
-  template <class Context>
-  auto format(safegi::basic_quantity<D, T> q, Context& context) const {
-    auto out = std::formatter<T, char>::format(q.raw_value(), context);
-    const std::string suffix = safegi::SAFEGI_MODE_NAMESPACE::detail::unit_suffix<D>();
-    return std::copy(suffix.begin(), suffix.end(), out);
-  }
-};
-/// Spectra, points and the other kinds format as operator<< prints them (no spec).
-template <class X>
-  requires(safegi::printable<X> && !safegi::quantity_like<X>)
-struct std::formatter<X, char> : std::formatter<std::string_view, char> {
-  template <class Context>
-  auto format(const X& x, Context& context) const {
-    return std::formatter<std::string_view, char>::format(safegi::to_string(x), context);
-  }
-};
-#endif

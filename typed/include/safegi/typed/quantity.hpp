@@ -67,21 +67,18 @@ class basic_quantity {
   constexpr basic_quantity(detail::raw_tag, T value) : value_(value) {}
 
   // Conversions that are always mistakes, declared so that the error names both sides
-  // (diagnose.hpp); never defined.
-  template <class E>
+  // (diagnose.hpp); never called.
+  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
     requires(!std::is_same_v<E, D>)
-  SAFEGI_MISTAKE("cannot convert a quantity of one dimension into another")
-  basic_quantity(basic_quantity<E, T> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
-  template <class E, std::floating_point U>
+  SAFEGI_MISTAKE basic_quantity(const basic_quantity<E, T>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a quantity of one dimension into another");  // NOLINT
+  template <class E, std::floating_point U, class Report = diagnose::representation_mismatch<diagnose::op::conversion, U, T>>
     requires(!std::is_same_v<U, T>)
-  SAFEGI_MISTAKE("float and double quantities do not mix: build it in safegi::real (real(2) * units::metre, 2.0f * units::metre in a float build), or convert with from_raw<quantity<D, T>>(T(raw(q)))")
-  basic_quantity(basic_quantity<E, U> SAFEGI_REPORTED_AS(
-      diagnose::representation_mismatch<diagnose::op::conversion, U, T>));  // NOLINT
-  template <arithmetic U>
-  SAFEGI_MISTAKE("a plain number has no dimension: give it a unit (2.0f * units::metre)")
-  basic_quantity(U SAFEGI_REPORTED_AS(
-      diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>));  // NOLINT
+  SAFEGI_MISTAKE basic_quantity(const basic_quantity<E, U>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("float and double quantities do not mix: build it in safegi::real (real(2) * units::metre, 2.0f * units::metre in a float build), or convert with from_raw<quantity<D, T>>(T(raw(q)))");  // NOLINT
+  template <arithmetic U, class Report = diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>>
+  SAFEGI_MISTAKE basic_quantity(const U& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a plain number has no dimension: give it a unit (2.0f * units::metre)");  // NOLINT
 
   /// The value in the reference unit of D. Prefer safegi::raw(q), which also works unchecked.
   [[nodiscard]] constexpr T raw_value() const { return value_; }

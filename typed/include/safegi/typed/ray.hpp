@@ -16,11 +16,10 @@ struct basic_ray {
   constexpr basic_ray() = default;
   constexpr basic_ray(basic_point<S> origin, basic_direction<S> dir) : o(origin), d(dir) {}
   /// A ray of another space never converts; this only exists to say so in words.
-  template <class S2>
+  template <class S2, class Report = diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>>
     requires(!std::is_same_v<S2, S>)
-  SAFEGI_MISTAKE("cannot convert a ray from one space into another by assignment: transform(m, r)")
-  basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_spaces<diagnose::kind::ray, S2, S>));  // NOLINT
+  SAFEGI_MISTAKE basic_ray(const basic_ray<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a ray from one space into another by assignment: transform(m, r)");  // NOLINT
 
   /// The point at distance t along the ray.
   constexpr basic_point<S> operator()(quantity<dim::length> t) const { return o + d * t; }

@@ -184,19 +184,16 @@ class basic_point : public detail::vec3_storage<basic_point<S>> {
       : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_point(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
   // Conversions that are always mistakes; they exist so the error names both sides.
-  template <class S2>
+  template <class S2, class Report = diagnose::conversion_between_spaces<diagnose::kind::point, S2, S>>
     requires(!std::is_same_v<S2, S>)
-  SAFEGI_MISTAKE("cannot convert a point from one space into another by assignment: apply a map<From, To>")
-  basic_point(basic_point<S2> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_spaces<diagnose::kind::point, S2, S>));  // NOLINT
-  template <class S2, class D>
-  SAFEGI_MISTAKE("a vector is not a point: p + v moves a point")
-  basic_point(basic_vector<S2, D> SAFEGI_REPORTED_AS(
-      diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::vector, S2>));  // NOLINT
-  template <class S2>
-  SAFEGI_MISTAKE("an hpoint is not a point: dehomogenize(h)")
-  basic_point(basic_hpoint<S2> SAFEGI_REPORTED_AS(
-      diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::hpoint, S2>));  // NOLINT
+  SAFEGI_MISTAKE basic_point(const basic_point<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a point from one space into another by assignment: apply a map<From, To>");  // NOLINT
+  template <class S2, class D, class Report = diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::vector, S2>>
+  SAFEGI_MISTAKE basic_point(const basic_vector<S2, D>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a vector is not a point: p + v moves a point");  // NOLINT
+  template <class S2, class Report = diagnose::wrong_geometric_kind<diagnose::kind::point, diagnose::kind::hpoint, S2>>
+  SAFEGI_MISTAKE basic_point(const basic_hpoint<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("an hpoint is not a point: dehomogenize(h)");  // NOLINT
 
   [[nodiscard]] constexpr quantity<dim::length> x() const { return detail::component<dim::length>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<dim::length> y() const { return detail::component<dim::length>(this->xyz_.y); }
@@ -219,16 +216,14 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   constexpr explicit basic_vector(quantity<D> x, quantity<D> y, quantity<D> z)
       : base(vec3_rep(raw(x), raw(y), raw(z))) {}
   constexpr basic_vector(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
-  template <class S2, class E>
+  template <class S2, class E, class Report = diagnose::conversion_between_spaces<diagnose::kind::vector, S2, S>>
     requires(!std::is_same_v<S2, S>)
-  SAFEGI_MISTAKE("cannot convert a vector from one space into another by assignment: apply a map<From, To>")
-  basic_vector(basic_vector<S2, E> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_spaces<diagnose::kind::vector, S2, S>));  // NOLINT
-  template <class E>
+  SAFEGI_MISTAKE basic_vector(const basic_vector<S2, E>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a vector from one space into another by assignment: apply a map<From, To>");  // NOLINT
+  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
     requires(!std::is_same_v<E, D>)
-  SAFEGI_MISTAKE("cannot convert a vector of one dimension into another")
-  basic_vector(basic_vector<S, E> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  SAFEGI_MISTAKE basic_vector(const basic_vector<S, E>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a vector of one dimension into another");  // NOLINT
 
   [[nodiscard]] constexpr quantity<D> x() const { return detail::component<D>(this->xyz_.x); }
   [[nodiscard]] constexpr quantity<D> y() const { return detail::component<D>(this->xyz_.y); }
@@ -278,19 +273,16 @@ class basic_direction : public detail::vec3_storage<basic_direction<S>> {
   constexpr explicit basic_direction(real x, real y, real z)
       : base(detail::unit_length_checked<S>("direction", vec3_rep(x, y, z))) {}
   constexpr basic_direction(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
-  template <class S2>
+  template <class S2, class Report = diagnose::conversion_between_spaces<diagnose::kind::direction, S2, S>>
     requires(!std::is_same_v<S2, S>)
-  SAFEGI_MISTAKE("cannot convert a direction from one space into another by assignment: apply a map<From, To>")
-  basic_direction(basic_direction<S2> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_spaces<diagnose::kind::direction, S2, S>));  // NOLINT
-  template <class S2, class D>
-  SAFEGI_MISTAKE("a vector is not a direction: normalize(v)")
-  basic_direction(basic_vector<S2, D> SAFEGI_REPORTED_AS(
-      diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::vector_to_normalize, S2>));  // NOLINT
-  template <class S2>
-  SAFEGI_MISTAKE("a normal is not a direction: to_direction(n)")
-  basic_direction(basic_normal<S2> SAFEGI_REPORTED_AS(
-      diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::normal, S2>));  // NOLINT
+  SAFEGI_MISTAKE basic_direction(const basic_direction<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a direction from one space into another by assignment: apply a map<From, To>");  // NOLINT
+  template <class S2, class D, class Report = diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::vector_to_normalize, S2>>
+  SAFEGI_MISTAKE basic_direction(const basic_vector<S2, D>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a vector is not a direction: normalize(v)");  // NOLINT
+  template <class S2, class Report = diagnose::wrong_geometric_kind<diagnose::kind::direction, diagnose::kind::normal, S2>>
+  SAFEGI_MISTAKE basic_direction(const basic_normal<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a normal is not a direction: to_direction(n)");  // NOLINT
 
   [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr real y() const { return this->xyz_.y; }
@@ -311,15 +303,13 @@ class basic_normal : public detail::vec3_storage<basic_normal<S>> {
   constexpr explicit basic_normal(real x, real y, real z)
       : base(detail::unit_length_checked<S>("normal", vec3_rep(x, y, z))) {}
   constexpr basic_normal(detail::raw_tag, vec3_rep xyz) : base(xyz) {}
-  template <class S2>
+  template <class S2, class Report = diagnose::conversion_between_spaces<diagnose::kind::normal, S2, S>>
     requires(!std::is_same_v<S2, S>)
-  SAFEGI_MISTAKE("cannot convert a normal from one space into another by assignment: apply a map<From, To>")
-  basic_normal(basic_normal<S2> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_spaces<diagnose::kind::normal, S2, S>));  // NOLINT
-  template <class S2>
-  SAFEGI_MISTAKE("a direction is not a normal: to_normal(d)")
-  basic_normal(basic_direction<S2> SAFEGI_REPORTED_AS(
-      diagnose::wrong_geometric_kind<diagnose::kind::normal, diagnose::kind::direction, S2>));  // NOLINT
+  SAFEGI_MISTAKE basic_normal(const basic_normal<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a normal from one space into another by assignment: apply a map<From, To>");  // NOLINT
+  template <class S2, class Report = diagnose::wrong_geometric_kind<diagnose::kind::normal, diagnose::kind::direction, S2>>
+  SAFEGI_MISTAKE basic_normal(const basic_direction<S2>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("a direction is not a normal: to_normal(d)");  // NOLINT
 
   [[nodiscard]] constexpr real x() const { return this->xyz_.x; }
   [[nodiscard]] constexpr real y() const { return this->xyz_.y; }

@@ -26,11 +26,10 @@ class basic_spectrum {
   constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
   constexpr basic_spectrum(detail::raw_tag, vec3_rep rgb) : rgb_(rgb) {}
   /// Converting between dimensions is always a mistake, declared to say so in words.
-  template <class E>
+  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
     requires(!std::is_same_v<E, D>)
-  SAFEGI_MISTAKE("cannot convert a spectrum of one dimension into another")
-  basic_spectrum(basic_spectrum<E> SAFEGI_REPORTED_AS(
-      diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>));  // NOLINT
+  SAFEGI_MISTAKE basic_spectrum(const basic_spectrum<E>& SAFEGI_REPORTED_AS(Report))
+      SAFEGI_SAYS("cannot convert a spectrum of one dimension into another");  // NOLINT
 
   [[nodiscard]] constexpr vec3_rep raw_value() const { return rgb_; }
   [[nodiscard]] constexpr quantity<D> r() const { return make_quantity<D, real>(rgb_.r); }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <safegi/typed.hpp>
+#include <safegi/typed/reflection.hpp>
 #include <typeinfo>
 
 #if !SAFEGI_UNCHECKED
