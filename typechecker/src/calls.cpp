@@ -156,6 +156,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
                             std::vector<Value>& args, SourceRange callee_range, SourceRange call_range) {
   if (!has_signature(sigs.front().rule)) return rule_call(node, sigs.front(), args, call_range);
   if (std::optional<Value> v = map_matrix_call(name, args, call_range)) return *v;
+  radians_of_pi_multiple(name, args);
   std::vector<ArgInfo> infos;
   for (const Value& a : args) infos.push_back({a.type, a.lvalue});
   std::optional<ShapeMatch> match = match_shapes(sigs, infos);

@@ -35,6 +35,8 @@ struct Value;
 Orientation point_difference_orientation(const Type& a, const Type& b);
 Orientation sum_orientation(bool add, Orientation a, Orientation b);
 Orientation scaled_orientation(Orientation o, const Value& scale);
+// dimension_rules.cpp: k π for k a multiple of 1/4 (π/4 … 16π): a literal that makes a plain number an angle.
+bool is_pi_multiple(double value);
 
 // The result of checking an expression.
 struct Value {
@@ -52,6 +54,7 @@ struct Value {
   // whatever `name` is (a reference held in a uniform block is read-only, its memory is not).
   const StructInfo* readonly_reference = nullptr;
   bool stage_output = false;     // an `out` of the stage, or a member or component of one
+  bool pi_multiple = false;      // a plain number made with a multiple of π (2.0 * PI * u): an angle in radians
 };
 
 struct Variable {
@@ -66,6 +69,7 @@ struct Variable {
   bool constant_expression = false;  // const with a constant initializer (GLSL 4.60 §4.3.3)
   bool stage_output = false;          // what it holds leaves the stage
   bool zero_start = false;            // an unannotated local that starts at zero: its first value names its type
+  bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
 };
 
 struct Function {
@@ -182,6 +186,7 @@ class Checker {
   std::optional<Dimension> frame_cosine(const Type& t) const;
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
+  void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

@@ -331,6 +331,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       report(Diagnostic::error(decl.name_range, "variable '" + decl.name + "' declared void").with_code(code::E_VOID_VARIABLE));
       declared = Type::error();
     }
+    bool pi_multiple = false;
     if (const auto* list = ast::dyn_cast<ast::InitializerList>(decl.initializer)) {
       if (list->elements.empty() && !declared.array.empty() && declared.array[0] < 0) {  // glslang's rule
         report(Diagnostic::error(list->range, "an empty initializer '{}' cannot size the unsized array '" + decl.name + "'")
@@ -339,6 +340,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       initializer_list(*list, declared);
     } else if (decl.initializer) {
       Value init = expr(decl.initializer);
+      pi_multiple = init.pi_multiple;
       // Unsized arrays take their size from the initialiser.
       if (!declared.array.empty() && declared.array[0] < 0 && !init.type.array.empty()) declared.array[0] = init.type.array[0];
       const bool infer = !global && !declared.is_annotated() && !declared.is_error() && !init.type.is_error() &&
@@ -365,6 +367,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     } else if (is_const && !global) {
       report(Diagnostic::error(decl.name_range, "const variable '" + decl.name + "' needs an initializer").with_code(code::E_CONST_INIT));
     }
+    v.pi_multiple = pi_multiple && !base.is_annotated();  // a declared float<1> has said what it is
     if (is_const && decl.initializer) validate_const_initializer(decl, global);
     else if (global && decl.initializer) validate_global_initializer(decl);
     v.constant_expression = is_const && decl.initializer && !non_constant_part(decl.initializer);

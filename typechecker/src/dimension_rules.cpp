@@ -4,6 +4,8 @@
 
 #include <numbers>
 
+#include <cmath>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -48,6 +50,21 @@ DimSlot Checker::projected_component(const DimSlot& scale) const {
   if (scale.state != DimSlot::State::known || proj_exponent(scale.value, result_.registry) <= 0) return scale;
   Checked<Dimension> d = divide(scale.value, Dimension::base(*result_.registry.find_base("proj"), 1));
   return d ? DimSlot::known(*d) : scale;
+}
+
+// A plain number made with a multiple of π (2.0 * PI * u, the azimuth of a sample; x * PI / 180.0)
+// is an angle in radians for sin, cos and tan: writing the unit would restate the π. A plain
+// number without one (sin(0.5), sin(angleInDegrees)) still asks: radians or degrees?
+void Checker::radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const {
+  if ((name != "sin" && name != "cos" && name != "tan") || args.size() != 1 || !args[0].pi_multiple) return;
+  const DimSlot d = value_dimension(args[0].type, result_.registry);
+  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  if (d.is_known() && d.value.is_dimensionless() && angle) args[0].type.dim = DimSlot::known(*angle);
+}
+
+bool is_pi_multiple(double value) {
+  const double quarters = value / 3.141592653589793 * 4.0;
+  return value != 0.0 && std::fabs(quarters) <= 64.0 && std::fabs(quarters - std::round(quarters)) < 1e-4;
 }
 
 // radians(x) of an angle in degrees is the angle (in radians); degrees(x) of

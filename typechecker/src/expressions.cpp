@@ -48,6 +48,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.lvalue = true;
     v.read_only = var->read_only;
     v.stage_output = var->stage_output;
+    v.pi_multiple = var->pi_multiple;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
@@ -123,7 +124,11 @@ Value Checker::literal(const ast::LiteralExpr& e) {
       v.number = static_cast<double>(*v.constant);
       break;
     }
-    case ast::LiteralKind::Float: v.type = Type::scalar_of(Scalar::float_); v.number = std::strtod(e.spelling.c_str(), nullptr); break;
+    case ast::LiteralKind::Float:
+      v.type = Type::scalar_of(Scalar::float_);
+      v.number = std::strtod(e.spelling.c_str(), nullptr);
+      v.pi_multiple = is_pi_multiple(*v.number);
+      break;
     case ast::LiteralKind::Double: v.type = Type::scalar_of(Scalar::double_); v.number = std::strtod(e.spelling.c_str(), nullptr); break;
     case ast::LiteralKind::Bool:
       v.type = Type::scalar_of(Scalar::bool_);

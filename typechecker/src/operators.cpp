@@ -252,6 +252,10 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (out.constant && (*out.constant > 0xffffffffll || *out.constant < -0x80000000ll)) out.constant.reset();
   }
   if (out.constant) out.number = static_cast<double>(*out.constant);
+  // 2.0 * PI * u, x * PI / 180.0: a multiple of π scaled by plain numbers is an angle in radians.
+  const auto plain = [&](const Value& v, const DimSlot& d) { return v.type.shape == Shape::scalar && d.is_known() && d.value.is_dimensionless(); };
+  if ((op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div) && plain(lhs, da) && plain(rhs, db))
+    out.pi_multiple = op == ast::BinaryOp::Mul ? lhs.pi_multiple != rhs.pi_multiple : lhs.pi_multiple && !rhs.pi_multiple;
   // Float constants fold too (pow's exponent `n + 1.0`, `int(N * 0.5)` array sizes).
   if (lhs.number && rhs.number && out.type.shape == Shape::scalar && out.type.is_floating()) {
     const double x = *lhs.number, y = *rhs.number;

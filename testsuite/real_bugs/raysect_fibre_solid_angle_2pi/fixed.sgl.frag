@@ -17,7 +17,7 @@ out vec4 collected;
 direction<fibre> sampleCone(float<1> u1, float<1> u2, float<1> cosMax) {
     float cosTheta = 1.0 - u1 * (1.0 - cosMax);
     float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-    float phi = 6.283185307179586 * u2 * radian;
+    float phi = 6.283185307179586 * u2;
     return direction<fibre>(vec3(cos(phi) * sinTheta, sin(phi) * sinTheta, cosTheta));
 }
 
