@@ -130,6 +130,24 @@ TEST(PbrtImportLights, WhittedSamplesEveryLightOnce) {
   EXPECT_EQ(scene.scene.environment->samples, 1);
 }
 
+// Exporters write `"string mapname" [ "" ]` for a light without a map; pbrt-v3
+// reads an empty name as none (no file "./" to read).
+TEST(PbrtImportLights, AnEmptyMapNameIsNoMap) {
+  PbrtScene infinite = import(world("LightSource \"infinite\" \"rgb L\" [2 2 2] \"string mapname\" [ \"\" ]"), with_map());
+  ASSERT_TRUE(infinite.scene.environment.has_value());
+  EXPECT_FALSE(infinite.scene.environment->map);
+  EXPECT_EQ(infinite.scene.environment->file, "");
+  EXPECT_EQ(sg::raw(infinite.scene.environment->radiance), glm::vec3(2));
+  EXPECT_EQ(infinite.warnings, "");
+  for (const char* type : {"goniometric", "projection"}) {
+    PbrtScene mapped = import(world("LightSource \"" + std::string(type) + "\" \"string mapname\" \"\""), with_map());
+    ASSERT_EQ(mapped.scene.point_lights.size(), 1u) << type;
+    ASSERT_TRUE(mapped.scene.point_lights[0].profile) << type;
+    EXPECT_FALSE(mapped.scene.point_lights[0].profile->map) << type;
+    EXPECT_EQ(mapped.warnings, "") << type;
+  }
+}
+
 TEST(PbrtImportLights, PathChoosesLightsAsItsLightSampleStrategySays) {
   EXPECT_EQ(import(world("")).scene.settings.light_strategy, LightStrategy::spatial);  // pbrt-v3's default integrator
   for (auto [name, strategy] : {std::pair{"uniform", LightStrategy::uniform}, std::pair{"power", LightStrategy::power},

@@ -259,6 +259,16 @@ TEST(PbrtImport, OptionsBecomeRenderSettings) {
   EXPECT_EQ(import("Sampler \"stratified\" \"integer xsamples\" 3 \"integer ysamples\" 5\n" + world("")).scene.settings.spp, 15);
 }
 
+// pbrt-v3's Film multiplies the image by "scale" as it writes it.
+TEST(PbrtImport, FilmScaleScalesTheImage) {
+  EXPECT_EQ(import(world("")).scene.settings.film_scale, 1.0);
+  PbrtScene scaled = import("Film \"image\" \"float scale\" [ 2.5 ]\n" + world(""));
+  EXPECT_EQ(scaled.scene.settings.film_scale, 2.5);
+  EXPECT_EQ(scaled.warnings, "");
+  EXPECT_EQ(first_line(import_error("Film \"image\" \"float scale\" -1\n" + world(""))),
+            "scene.pbrt:1:14: error: Film \"float scale\" must be positive and finite");
+}
+
 // pbrt-v3's camera space: x is the image's right, y up, z forward. LookAt
 // makes that frame right-handed in the world, where our camera (right =
 // forward × up) would mirror the image: the import mirrors the world across

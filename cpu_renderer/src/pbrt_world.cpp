@@ -201,6 +201,15 @@ Rgb scaled_output(ParamSet& params) {
   return output;
 }
 
+// A light's "string mapname", or nullptr without one: pbrt-v3 reads an empty
+// name as no map (exporters write `"string mapname" [ "" ]` for none).
+const Param* light_map_name(ParamSet& params) {
+  const Param* map = params.find("mapname", {ParamType::string});
+  if (!map) return nullptr;
+  if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  return map->strings[0].empty() ? nullptr : map;
+}
+
 }  // namespace
 
 // pbrt-v3's DistantLight: irradiance L × scale on a surface facing it (read
@@ -245,8 +254,7 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   // Shadow rays per shading point under pbrt's directlighting (its "all" strategy).
   const int samples = params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
   light.samples = light_samples_per_light_ ? std::min(samples, kMaxEmitterSamples) : 1;
-  if (const Param* map = params.find("mapname", {ParamType::string})) {
-    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  if (const Param* map = light_map_name(params)) {
     light.file = map->strings[0];
     light.map = std::make_shared<MipMap>(read_image(*map), TextureWrap::longitude_latitude);
   }
@@ -276,8 +284,7 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
     if (!(fov > 0 && fov < 180)) fail(d.range, "\"float fov\" must lie in (0, 180) degrees");
     profile.fov = static_cast<Real>(fov) * units::degree;
   }
-  if (const Param* map = params.find("mapname", {ParamType::string})) {
-    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  if (const Param* map = light_map_name(params)) {
     profile.file = map->strings[0];
     profile.map = std::make_shared<MipMap>(read_image(*map), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
   }
@@ -325,11 +332,20 @@ void Importer::shape(const Directive& d) {
     source.kind = ShapeSource::Kind::mesh;
     const Param* p = params.find("P", {ParamType::point3});
     if (!p) fail(d.range, "Shape \"trianglemesh\" needs \"point P\" (its vertices)");
-    if (p->numbers.size() % 3 != 0 || p->numbers.empty())
+    const Param* indices = params.find("indices", {ParamType::integer});
+    if (p->numbers.empty() || (indices && indices->numbers.empty())) {
+      // Exporters write meshes of nothing (Blender: `"point P" [ ]`); pbrt-v3 makes no shape of one and goes on.
+      warn(d.string_ranges[0],
+           std::string("an empty triangle mesh (no ") + (p->numbers.empty() ? "\"point P\"" : "\"integer indices\"") +
+               ") makes nothing",
+           "pbrt-v3 makes nothing of it either");
+      params.ignore_the_rest();
+      return;
+    }
+    if (p->numbers.size() % 3 != 0)
       fail(p->values, "\"point P\" takes x y z per vertex: " + std::to_string(p->numbers.size()) + " numbers");
     for (size_t i = 0; i < p->numbers.size(); i += 3)
       source.positions.emplace_back(p->numbers[i], p->numbers[i + 1], p->numbers[i + 2]);
-    const Param* indices = params.find("indices", {ParamType::integer});
     if (!indices && source.positions.size() == 3) {
       source.indices = {0, 1, 2};
     } else {

@@ -403,6 +403,8 @@ struct RenderSettings {
   // radius of the density estimate (zero: chosen from the scene's size).
   int photons = 200000;
   Length photon_radius = sg::zero;
+  // Every pixel of the finished image times this (pbrt-v3's Film "scale").
+  double film_scale = 1;
 };
 
 struct Scene {
