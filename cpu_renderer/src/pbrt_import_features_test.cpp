@@ -652,6 +652,24 @@ TEST(PbrtImport, SpectrumFilesAreReadAsPbrtV3ReadsThem) {
             "comment");
 }
 
+// pbrt-v3's path, directlighting and whitted stop shadow rays at every
+// surface, one of material "none" too; volpath, bdpt and mlt let them through.
+TEST(PbrtImport, SurfacesWithoutMaterialOccludeLightWhereThePbrtV3IntegratorSaysSo) {
+  const std::string emitter = "AreaLightSource \"diffuse\" \"bool twosided\" \"true\"\nMaterial \"none\"\nShape \"sphere\"";
+  for (const char* integrator : {"path", "directlighting", "whitted"}) {
+    PbrtScene scene = import("Integrator \"" + std::string(integrator) + "\"\n" + world(emitter));
+    ASSERT_EQ(scene.scene.shapes.size(), 1u);
+    EXPECT_TRUE(scene.scene.shapes[0].invisible);
+    EXPECT_TRUE(scene.scene.shapes[0].occludes_light) << integrator;
+  }
+  for (const char* integrator : {"volpath", "bdpt", "mlt"}) {
+    PbrtScene scene = import("Integrator \"" + std::string(integrator) + "\"\n" + world(emitter));
+    ASSERT_EQ(scene.scene.shapes.size(), 1u);
+    EXPECT_FALSE(scene.scene.shapes[0].occludes_light) << integrator;
+  }
+  EXPECT_FALSE(import(world(used("Material \"matte\""))).scene.shapes[0].occludes_light);  // visible: blocks as any surface
+}
+
 // pbrt-v3's SPPM traces "iterations" (older: "numiterations", default 64)
 // passes of "photonsperiteration" photons (default: the cropped film's pixels);
 // the photon integrator traces as many in its one map, at most 2^24.
