@@ -182,6 +182,7 @@ class Importer {
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
   Material convert_mix(ParamSet& params, SourceRange at);
+  Material mixed_with_pass_through(Material opaque, const TexturedReflectance& opacity);
   TextureEntry combined_texture(const std::string& name, const std::string& texture_class, ParamSet& params,
                                 bool spectrum);
   int mixed_material(ParamSet& params, const char* name, SourceRange at);

@@ -21,7 +21,8 @@ bool has_outside(const Scene& scene, int index, bool plastic = true) {
   const Material& material = scene.materials[index];
   if (material.mix)
     return has_outside(scene, material.mix->first, plastic) || has_outside(scene, material.mix->second, plastic);
-  return std::visit(Overloaded{[](const GlassMaterial&) { return true; },
+  // (A glass of index 1, uber's transparent part, bends nothing: it has no outside.)
+  return std::visit(Overloaded{[](const GlassMaterial& g) { return g.ior != 1; },
                                [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
                                [&](const PlasticMaterial& p) { return plastic && p.pbrt_v3_fresnel; },
                                [](const auto&) { return false; }},

@@ -1,7 +1,8 @@
 // Whole renders of pbrt-v3 scenes whose answer pbrt-v3's rules give in closed
 // form: Film "scale" multiplies the image; a closed two-sided emitter without a
 // surface (Material "none") lights the scene through its near side only, as
-// pbrt-v3's shadow rays stop there.
+// pbrt-v3's shadow rays stop there; uber's opacity lets the rest of the light
+// straight through.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -87,6 +88,34 @@ TEST(RenderPbrt, ClosedEmittersWithoutASurfaceHideTheirFarSide) {
         const Estimate estimate = channel_estimate(render_scene(scene, 256, 2, std::nullopt, knobs.apply), 1);
         EXPECT_NEAR(estimate.mean, expected, 4 * estimate.standard_error + 5e-3 * expected)
             << integrator << ", " << emitter.substr(0, 20) << ", " << knobs.name;
+      }
+    }
+  }
+}
+
+// An uber sheet (Kd, no Ks) filling the view in a uniform sky of radiance 1:
+// its lobes times the opacity reflect opacity · Kd of the sky above (a
+// Lambertian surface under a uniform hemisphere reflects Kd · L), and 1 −
+// opacity of the sky behind comes straight through: opacity · Kd + 1 − opacity,
+// per channel.
+TEST(RenderPbrt, UberOpacityLetsTheRestOfTheLightStraightThrough) {
+  const double opacity[3] = {0.2, 0.5, 0.8};
+  for (double kd : {0.5, 0.0}) {
+    const std::string k = std::to_string(kd);
+    const Scene scene = pbrt_scene(
+        "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 10\n"
+        "Film \"image\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+        "LightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+        "Material \"uber\" \"rgb Kd\" [" + k + " " + k + " " + k + "] \"rgb Ks\" [0 0 0] \"rgb opacity\" [0.2 0.5 0.8]\n"
+        "Shape \"trianglemesh\" \"point P\" [-10 -10 0  10 -10 0  10 10 0  -10 10 0] \"integer indices\" [0 1 2 0 2 3]\n"
+        "WorldEnd\n");
+    for (const Knobs& knobs : estimator_knobs()) {
+      const Image image = render_scene(scene, 256, 2, std::nullopt, knobs.apply);
+      for (int c = 0; c < 3; ++c) {
+        const double expected = opacity[c] * kd + 1 - opacity[c];
+        const Estimate estimate = channel_estimate(image, c);
+        EXPECT_NEAR(estimate.mean, expected, 4 * estimate.standard_error + 2e-3 * expected)
+            << "Kd " << kd << ", channel " << c << ", " << knobs.name;
       }
     }
   }
