@@ -3,8 +3,8 @@
 // materials, shapes and lights are in pbrt_world.cpp.
 #include "pbrt_importer.hpp"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
