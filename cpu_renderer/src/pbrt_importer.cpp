@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string_view>
@@ -69,42 +70,9 @@ bool invertible(const Matrix& m) {
   return std::isnormal(det) && finite(glm::inverse(m));
 }
 
-// How far a linear map is from a uniformly scaled rotation or mirroring: the
-// largest entry of FᵀF/s² − I, s² the mean squared column length (0 for a
-// similarity; cosines between columns and relative differences of squared lengths).
-double deviation_from_similarity(const glm::dmat3& f) {
-  const glm::dmat3 gram = glm::transpose(f) * f;
-  const double mean_square = (gram[0][0] + gram[1][1] + gram[2][2]) / 3;
-  double deviation = 0;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) deviation = std::max(deviation, std::fabs(gram[c][r] / mean_square - (r == c ? 1 : 0)));
-  return deviation;
-}
-
-// The similarity nearest an invertible map: its orthogonal polar factor
-// (Newton's iteration R ← (R + R⁻ᵀ)/2, which keeps the determinant's sign)
-// times the cube root of |det|, the scale that keeps its volume.
-glm::dmat3 nearest_similarity(const glm::dmat3& f) {
-  const double scale = std::cbrt(std::fabs(glm::determinant(f)));
-  glm::dmat3 rotation = f / scale;
-  for (int iteration = 0; iteration < 64; ++iteration) {
-    const glm::dmat3 next = 0.5 * (rotation + glm::transpose(glm::inverse(rotation)));
-    double change = 0;
-    for (int c = 0; c < 3; ++c) change = std::max(change, glm::length(next[c] - rotation[c]));
-    rotation = next;
-    if (change < 1e-15) break;
-  }
-  return scale * rotation;
-}
-
 // The photons of sppm's iterations the photon integrator traces at most:
 // about 1 GB of photon map (memory_estimate.cpp's bytes per photon).
 constexpr uint64_t kMaxSppmPhotons = uint64_t{1} << 24;
-
-// Camera frames: what double arithmetic on exact rotations leaves, and what
-// numbers rounded to 3 significant digits leave (up to ~2e-3; 4 digits, ~2e-4).
-constexpr double kExactSimilarity = 1e-5;
-constexpr double kRoundedSimilarity = 1e-2;
 
 SourceRange span(const Directive& d) {
   return d.arguments.begin.file == d.range.begin.file ? SourceRange{d.range.begin, d.arguments.end} : d.range;
@@ -156,6 +124,42 @@ const IntegratorSubstitute* substitute_for(const std::string& type) {
 }
 
 }  // namespace
+
+// How far a linear map is from a uniformly scaled rotation or mirroring: the
+// largest entry of FᵀF/s² − I, s² the mean squared column length (0 for a
+// similarity; cosines between columns and relative differences of squared lengths).
+double deviation_from_similarity(const glm::dmat3& f) {
+  const glm::dmat3 gram = glm::transpose(f) * f;
+  const double mean_square = (gram[0][0] + gram[1][1] + gram[2][2]) / 3;
+  // A map that collapses space (or overflows) is no similarity at all.
+  if (!(mean_square > 0) || !std::isfinite(mean_square)) return std::numeric_limits<double>::infinity();
+  double deviation = 0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) deviation = std::max(deviation, std::fabs(gram[c][r] / mean_square - (r == c ? 1 : 0)));
+  return deviation;
+}
+
+// The similarity nearest an invertible map: its orthogonal polar factor
+// (Newton's iteration R ← (R + R⁻ᵀ)/2, which keeps the determinant's sign)
+// times the cube root of |det|, the scale that keeps its volume.
+glm::dmat3 nearest_similarity(const glm::dmat3& f) {
+  const double scale = std::cbrt(std::fabs(glm::determinant(f)));
+  glm::dmat3 rotation = f / scale;
+  for (int iteration = 0; iteration < 64; ++iteration) {
+    const glm::dmat3 next = 0.5 * (rotation + glm::transpose(glm::inverse(rotation)));
+    double change = 0;
+    for (int c = 0; c < 3; ++c) change = std::max(change, glm::length(next[c] - rotation[c]));
+    rotation = next;
+    if (change < 1e-15) break;
+  }
+  return scale * rotation;
+}
+
+std::string deviation_text(double deviation) {
+  std::ostringstream text;
+  text << std::setprecision(2) << deviation;
+  return text.str();
+}
 
 Importer::Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory)
     : sources_(sources), options_(options), search_directory_(std::move(search_directory)) {
@@ -572,16 +576,21 @@ double Importer::screen_window_scale(ParamSet& params, SourceRange at) {
 // purpose, which pbrt-v3 renders and we cannot: an error.
 glm::dmat3 Importer::similarity_camera_frame(const glm::dmat3& frame, SourceRange at) {
   const double deviation = deviation_from_similarity(frame);
-  if (deviation <= kExactSimilarity) return nearest_similarity(frame);
-  std::ostringstream amount;
-  amount << std::setprecision(2) << deviation;
   if (deviation > kRoundedSimilarity)
-    fail(at, "the camera transform scales unevenly or shears (off a rotation by " + amount.str() + ")",
+    fail(at, "the camera transform scales unevenly or shears (off a rotation by " + deviation_text(deviation) + ")",
          "only rotations, mirrorings and uniform scales place a camera here; numbers rounded to 3 or more "
          "significant digits are accepted");
-  warn(at, "the camera transform is a rotation only to within " + amount.str() + ": rendered with the nearest rotation",
-       "numbers rounded by an exporter? pbrt-v3 renders the transform as written, its image sheared by as much");
+  warn_if_rounded(at, "the camera transform", deviation);
   return nearest_similarity(frame);
+}
+
+// A transform that should be a scaled rotation, off by `deviation`
+// (deviation_from_similarity) within what rounded numbers leave: said when
+// it is more than double arithmetic leaves.
+void Importer::warn_if_rounded(SourceRange at, const std::string& subject, double deviation) {
+  if (deviation <= kExactSimilarity) return;
+  warn(at, subject + " is a rotation only to within " + deviation_text(deviation) + ": rendered with the nearest rotation",
+       "numbers rounded by an exporter? pbrt-v3 renders the transform as written, sheared by as much");
 }
 
 void Importer::finish_camera(SourceRange world_begin) {

@@ -146,6 +146,19 @@ SubdivisionSurface loop_subdivide(std::vector<glm::dvec3> control_points, const 
 // render may take (memory_estimate.hpp) is refused.
 uint64_t loop_subdivision_bytes_per_triangle();
 
+// How far a linear map is from a uniformly scaled rotation or mirroring: the
+// largest entry of FᵀF/s² − I, s² the mean squared column length.
+double deviation_from_similarity(const glm::dmat3& f);
+// The uniformly scaled rotation (or mirroring) nearest an invertible map.
+glm::dmat3 nearest_similarity(const glm::dmat3& f);
+std::string deviation_text(double deviation);  // as messages quote it: 2 significant digits
+// What double arithmetic on exact rotations leaves, and what numbers rounded
+// to 3 significant digits leave (up to ~2e-3; 4 digits, ~2e-4): a transform
+// that should be a scaled rotation is taken as the nearest one up to the
+// second, with a warning beyond the first (Importer::warn_if_rounded).
+inline constexpr double kExactSimilarity = 1e-5;
+inline constexpr double kRoundedSimilarity = 1e-2;
+
 class Importer {
  public:
   Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory);
@@ -173,6 +186,8 @@ class Importer {
   void set_sppm_photons();
   void finish_camera(SourceRange world_begin);
   glm::dmat3 similarity_camera_frame(const glm::dmat3& frame, SourceRange at);
+  void warn_if_rounded(SourceRange at, const std::string& subject, double deviation);
+  glm::dmat3 light_rotation(const Matrix& m, SourceRange at, const std::string& type);
   double screen_window_scale(ParamSet& params, SourceRange at);
 
   // Materials and textures (pbrt_materials.cpp).

@@ -150,9 +150,12 @@ void Importer::light_source(const Directive& d) {
       Triple to = params.one_point("to").value_or(Triple{0, 0, 1});
       glm::dvec3 axis = glm::dvec3(to[0], to[1], to[2]) - from_v;
       if (!(glm::length(axis) > 0)) fail(d.range, "the spot light's \"from\" and \"to\" coincide");
-      if (!is_similarity(state_.transform.start, 1e-6))
+      // Its position and direction are pbrt-v3's under any transform; only its cone would be elliptic.
+      const double deviation = deviation_from_similarity(glm::dmat3(state_.transform.start));
+      if (deviation > kRoundedSimilarity)
         fail(d.range, "a spot light under a transform that scales unevenly or shears is not supported",
              "it would make the cone elliptic");
+      warn_if_rounded(d.range, "the spot light's transform", deviation);
       Matrix m = world_from_pbrt_world_ * state_.transform.start;
       SpotLight spot;
       spot.position = to_world_point(m, from_v, d.range);
@@ -259,13 +262,25 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
     light.file = map->strings[0];
     light.map = std::make_shared<MipMap>(read_image(*map), TextureWrap::longitude_latitude);
   }
-  Matrix m = world_from_pbrt_world_ * state_.transform.start;
-  if (!is_similarity(m, 1e-6))
-    fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
-         "it would distort the map; rotate it only");
-  light.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  const Matrix world_from_light = world_from_pbrt_world_ * state_.transform.start;
+  light.render_from_light = orthogonal_map<RenderFromLight>(light_rotation(world_from_light, d.range, "infinite"));
   result_.scene.environment = std::move(light);
   environment_at_ = d.string_ranges[0];
+}
+
+// The rotation (or mirroring) of a light whose map turns with its transform
+// `m` (world ← light): a uniform scale changes no direction; a transform off a
+// scaled rotation by rounding only (an exporter's) is taken as the nearest one,
+// with a warning; one that distorts the map is refused.
+glm::dmat3 Importer::light_rotation(const Matrix& m, SourceRange at, const std::string& type) {
+  const double deviation = deviation_from_similarity(glm::dmat3(m));
+  if (deviation > kRoundedSimilarity)
+    fail(at, std::string(type == "infinite" ? "an " : "a ") + type +
+                 " light under a transform that scales unevenly or shears is not supported",
+         "it would distort the map; rotate it only");
+  warn_if_rounded(at, "the " + type + " light's transform", deviation);
+  const glm::dmat3 similarity = nearest_similarity(glm::dmat3(m));
+  return similarity / glm::length(similarity[0]);
 }
 
 // pbrt-v3's goniometric and projection lights: a point light at the light
@@ -275,9 +290,7 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
   const std::string& type = d.strings[0];
   const bool projection = type == "projection";
   Matrix m = world_from_pbrt_world_ * state_.transform.start;
-  if (!is_similarity(m, 1e-6))
-    fail(d.range, "a " + type + " light under a transform that scales unevenly or shears is not supported",
-         "it would distort the map; rotate it only");
+  const glm::dmat3 rotation = light_rotation(m, d.range, type);
   IntensityMap profile;
   profile.layout = projection ? IntensityMap::Layout::projection : IntensityMap::Layout::goniometric;
   if (projection) {
@@ -289,7 +302,7 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
     profile.file = map->strings[0];
     profile.map = std::make_shared<MipMap>(read_image(*map), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
   }
-  profile.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  profile.render_from_light = orthogonal_map<RenderFromLight>(rotation);
   return {to_world_point(m, {0, 0, 0}, d.range), intensity, std::move(profile)};
 }
 
