@@ -137,7 +137,7 @@ Reflectance Integrator::visibility(const TimedRay& shadow, Length t_max, int med
       if (medium >= 0) through *= transmittance(scene_.media[medium], blocked ? hit->distance : t_max);
       if (!blocked) return through;
       const Shape& shape = scene_.shapes[hit->shape];
-      if (!shape.invisible) return Reflectance{};
+      if (!shape.invisible || shape.occludes_light) return Reflectance{};
       medium = medium_beyond(shape, hit->normal, ray.d, medium);
       ray = spawn_ray(*hit, ray.d, ray.time);
       t_max = sg::dot(target - ray.o, ray.d);
@@ -246,6 +246,10 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
   const Real light_sample_count = static_cast<Real>(one_light_sample ? 1 : light_samples_);
   int medium = start.medium;
   int crossings = 0;  // invisible boundaries crossed (media only)
+  // Since the last scattering, the ray crossed an invisible surface that
+  // occludes light (Shape::occludes_light): the emission it finds is not the
+  // scattering point's (media only).
+  bool light_hidden = false;
   const bool lights_paired = paired_scatter_samples_ && !lights_.empty();
 
   // After a scattering event that chose a non-specular direction: direct
@@ -295,6 +299,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
           if (!direct_lighting_goes_on(false)) break;
           // The phase function is its own density: the throughput stays.
           specular_bounce = false;
+          light_hidden = false;
           if constexpr (textured) sharp_cone = false;
           previous_pdf = phase.pdf(wi);
           previous_position = point.position;
@@ -312,7 +317,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
           if (specular_bounce) {
             if (!(gather && after_diffuse)) radiance += throughput * sky;
           }
-          else if (mis_)
+          else if (mis_ && !light_hidden)
             radiance += throughput * sky *
                         mis_weight(previous_pdf, lights_.environment_pdf(previous_position, ray.d) * light_sample_count);
         }
@@ -324,7 +329,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
       if (!sg::is_black(emitted)) {
         if (specular_bounce) {
           if (!(gather && after_diffuse)) radiance += throughput * emitted;
-        } else if (mis_) {
+        } else if (mis_ && !light_hidden) {
           PdfSolidAngle light_pdf = lights_.pdf(previous_position, *hit, ray.time) * light_sample_count;
           radiance += throughput * emitted * mis_weight(previous_pdf, light_pdf);
         }
@@ -336,6 +341,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
     if constexpr (media) {
       if (shape.invisible) {  // no surface: the ray goes on, into the medium beyond
         if (++crossings > kMaxCrossings) break;
+        light_hidden = light_hidden || (shape.occludes_light && !specular_bounce);
         medium = medium_beyond(shape, hit->normal, ray.d, medium);
         ray = spawn_ray(*hit, ray.d, ray.time);
         --depth;
@@ -448,6 +454,7 @@ Radiance Integrator::trace(const PathStart& start, Sampler& sampler, RayCounters
     compression = next->compression;
     if constexpr (media) medium = next->medium;
     specular_bounce = scattered->specular;
+    light_hidden = false;
     if constexpr (textured) {
       sharp_cone = sharp_cone && scattered->specular;
       cone = next->cone;

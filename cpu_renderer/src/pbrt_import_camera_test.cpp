@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
 #include <numbers>
+#include <sstream>
 
 #include "pbrt_import_test_support.hpp"
 
@@ -54,6 +56,65 @@ TEST(PbrtImportCamera, EnvironmentSeesEveryDirectionAndReadsNoLens) {
   EXPECT_EQ(scene.scene.camera.projection, CameraProjection::environment);
   EXPECT_EQ(sg::raw(scene.scene.camera.lens_radius), 0.0f);
   EXPECT_NE(scene.warnings.find("parameter \"float lensradius\" of Camera \"environment\" is not used"),
+            std::string::npos);
+}
+
+// A camera transform as an exporter writes it: `Transform` with world → camera
+// (a rotation about y by 30° after one about x by 20°, the eye at (1, 2, 3)),
+// each number rounded to `digits` significant digits.
+std::string rounded_camera_transform(int digits) {
+  const double a = 30 * std::numbers::pi / 180, b = 20 * std::numbers::pi / 180;
+  // camera → world: Ry(a) Rx(b), by rows.
+  const double r[3][3] = {{std::cos(a), std::sin(a) * std::sin(b), std::sin(a) * std::cos(b)},
+                          {0, std::cos(b), -std::sin(b)},
+                          {-std::sin(a), std::cos(a) * std::sin(b), std::cos(a) * std::cos(b)}};
+  const double eye[3] = {1, 2, 3};
+  std::ostringstream text;
+  text << std::setprecision(digits) << "Transform [";
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row) {
+      // world → camera = [Rᵀ | −Rᵀ eye], column by column as pbrt-v3 reads it.
+      double value = row == 3 ? (column == 3 ? 1 : 0) : 0;
+      if (row < 3 && column < 3) value = r[column][row];
+      if (row < 3 && column == 3)
+        value = -(r[0][row] * eye[0] + r[1][row] * eye[1] + r[2][row] * eye[2]);
+      text << " " << value;
+    }
+  text << " ]\n";
+  return text.str();
+}
+
+glm::dvec3 direction(const Camera& camera) {
+  return glm::normalize(glm::dvec3(sg::raw(camera.look_at)) - glm::dvec3(sg::raw(camera.position)));
+}
+
+TEST(PbrtImportCamera, ARotationRoundedByAnExporterIsReorthonormalisedWithAWarning) {
+  const PbrtScene exact = import(kFilm + rounded_camera_transform(17) + "Camera \"perspective\"\n" + world(""));
+  EXPECT_EQ(exact.warnings, "");
+  // Houdini's 4 significant digits: a rotation off by ~1e-4, which pbrt-v3 renders.
+  const PbrtScene rounded = import(kFilm + rounded_camera_transform(4) + "Camera \"perspective\"\n" + world(""));
+  EXPECT_EQ(first_line(rounded.warnings),
+            "scene.pbrt:3:1: warning: the camera transform is a rotation only to within 5.3e-05: rendered with the "
+            "nearest rotation");
+  // The nearest rotation: the camera looks where the exact one does, to the rounding.
+  const Camera &e = exact.scene.camera, &r = rounded.scene.camera;
+  EXPECT_LT(glm::length(glm::dvec3(sg::raw(r.position)) - glm::dvec3(sg::raw(e.position))), 1e-3);
+  EXPECT_LT(glm::length(direction(r) - direction(e)), 2e-4);
+  EXPECT_LT(glm::length(glm::dvec3(sg::raw(r.up)) - glm::dvec3(sg::raw(e.up))), 2e-4);
+  EXPECT_NEAR(glm::length(glm::dvec3(sg::raw(r.up))), 1.0, 1e-6);
+  // 3 significant digits are still a rotation, rounded.
+  const PbrtScene three = import(kFilm + rounded_camera_transform(3) + "Camera \"perspective\"\n" + world(""));
+  EXPECT_NE(three.warnings.find("warning: the camera transform is a rotation only to within"), std::string::npos);
+  EXPECT_LT(glm::length(direction(three.scene.camera) - direction(e)), 2e-3);
+}
+
+TEST(PbrtImportCamera, ACameraThatShearsOrScalesUnevenlyIsRefused) {
+  EXPECT_EQ(first_line(import_error(kFilm + std::string("Scale 1 1.5 1\nCamera \"perspective\"\n") + world(""))),
+            "scene.pbrt:3:1: error: the camera transform scales unevenly or shears (off a rotation by 0.45)");
+  // 2 significant digits are no rounding the camera can take.
+  EXPECT_NE(import_error(kFilm + std::string("ConcatTransform [1 0 0 0  0.05 1 0 0  0 0 1 0  0 0 0 1]\n") +
+                         "Camera \"perspective\"\n" + world(""))
+                .find("error: the camera transform scales unevenly or shears (off a rotation by 0.05)"),
             std::string::npos);
 }
 

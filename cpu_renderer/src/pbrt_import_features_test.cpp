@@ -356,6 +356,27 @@ TEST(PbrtImport, LoopSubdivisionErrorsSayWhatPbrtV3CannotSubdivide) {
   EXPECT_EQ(import(world("Shape \"loopsubdiv\" \"integer levels\" 2 " + kTetrahedron)).scene.shapes.size(), 1u);
 }
 
+// Blender's exporter writes meshes of nothing; pbrt-v3 makes no shape of one
+// and goes on: so do we, with a warning, even under an area light.
+TEST(PbrtImport, AnEmptyTriangleMeshMakesNothing) {
+  PbrtScene scene = import(world("AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+                                 "Shape \"trianglemesh\" \"point P\" [ ] \"integer indices\" [ ] \"normal N\" [ ] \"float uv\" [ ]\n"
+                                 "Shape \"trianglemesh\" \"point P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [ ]\n"
+                                 "Shape \"sphere\""));
+  ASSERT_EQ(scene.scene.shapes.size(), 1u);  // the sphere alone
+  EXPECT_EQ(scene.scene.shapes[0].type, Shape::Type::sphere);
+  EXPECT_EQ(scene.warnings.find("not used"), std::string::npos) << scene.warnings;
+  EXPECT_NE(scene.warnings.find("scene.pbrt:3:7: warning: an empty triangle mesh (no \"point P\") makes nothing"),
+            std::string::npos)
+      << scene.warnings;
+  EXPECT_NE(scene.warnings.find("scene.pbrt:4:7: warning: an empty triangle mesh (no \"integer indices\") makes nothing"),
+            std::string::npos)
+      << scene.warnings;
+  // A mesh with vertices but its indices left out is still an error (pbrt-v3's too).
+  EXPECT_EQ(first_line(import_error(world("Shape \"trianglemesh\" \"point P\" [0 0 0  1 0 0  0 1 0  1 1 0]"))),
+            "scene.pbrt:2:1: error: Shape \"trianglemesh\" needs \"integer indices\" (three per triangle)");
+}
+
 // ActiveTransform: a shape's transform at pbrt-v3's two TransformTimes becomes its poses at
 // shutter open and close (the camera's shutter is those times), which the renderer
 // interpolates as pbrt-v3's AnimatedTransform does. Every point is where pbrt-v3 puts it
@@ -629,6 +650,59 @@ TEST(PbrtImport, SpectrumFilesAreReadAsPbrtV3ReadsThem) {
   EXPECT_EQ(first_line(import_error(world(used("Material \"metal\" \"spectrum eta\" \"spds/words.spd\"")), files)),
             "scene.pbrt:2:33: error: spectrum file 'dir/spds/words.spd', line 2: 'o' is neither a number nor a '#' "
             "comment");
+}
+
+// pbrt-v3's path, directlighting and whitted stop shadow rays at every
+// surface, one of material "none" too; volpath, bdpt and mlt let them through.
+TEST(PbrtImport, SurfacesWithoutMaterialOccludeLightWhereThePbrtV3IntegratorSaysSo) {
+  const std::string emitter = "AreaLightSource \"diffuse\" \"bool twosided\" \"true\"\nMaterial \"none\"\nShape \"sphere\"";
+  for (const char* integrator : {"path", "directlighting", "whitted"}) {
+    PbrtScene scene = import("Integrator \"" + std::string(integrator) + "\"\n" + world(emitter));
+    ASSERT_EQ(scene.scene.shapes.size(), 1u);
+    EXPECT_TRUE(scene.scene.shapes[0].invisible);
+    EXPECT_TRUE(scene.scene.shapes[0].occludes_light) << integrator;
+  }
+  for (const char* integrator : {"volpath", "bdpt", "mlt"}) {
+    PbrtScene scene = import("Integrator \"" + std::string(integrator) + "\"\n" + world(emitter));
+    ASSERT_EQ(scene.scene.shapes.size(), 1u);
+    EXPECT_FALSE(scene.scene.shapes[0].occludes_light) << integrator;
+  }
+  EXPECT_FALSE(import(world(used("Material \"matte\""))).scene.shapes[0].occludes_light);  // visible: blocks as any surface
+}
+
+// pbrt-v3's SPPM traces "iterations" (older: "numiterations", default 64)
+// passes of "photonsperiteration" photons (default: the cropped film's pixels);
+// the photon integrator traces as many in its one map, at most 2^24.
+TEST(PbrtImport, SppmIterationsCountThePhotonsTraced) {
+  const std::string film = "Film \"image\" \"integer xresolution\" 40 \"integer yresolution\" 30\n";
+  PbrtScene given = import("Integrator \"sppm\" \"integer iterations\" 10 \"integer photonsperiteration\" 5000\n" + world(""));
+  EXPECT_EQ(given.scene.settings.photons, 50000);
+  EXPECT_EQ(given.warnings.find("not used"), std::string::npos) << given.warnings;
+  // "iterations" wins over "numiterations", as in pbrt-v3.
+  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3 \"integer iterations\" 7 "
+                   "\"integer photonsperiteration\" 100\n" + world(""))
+                .scene.settings.photons,
+            700);
+  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3 \"integer photonsperiteration\" 100\n" + world(""))
+                .scene.settings.photons,
+            300);
+  // Defaults: 64 iterations of one photon per pixel, of the film whether it comes before or after.
+  EXPECT_EQ(import("Integrator \"sppm\"\n" + film + world("")).scene.settings.photons, 64 * 40 * 30);
+  EXPECT_EQ(import(film + "Integrator \"sppm\" \"integer photonsperiteration\" -1\n" + world("")).scene.settings.photons,
+            64 * 40 * 30);
+  EXPECT_EQ(import("Film \"image\" \"integer xresolution\" 40 \"integer yresolution\" 30 \"float cropwindow\" [0 0.5 0 1]\n"
+                   "Integrator \"sppm\" \"integer iterations\" 2\n" + world(""))
+                .scene.settings.photons,
+            2 * 20 * 30);
+  // More than one map takes: capped, with a warning.
+  PbrtScene many = import("Integrator \"sppm\" \"integer iterations\" 1000 \"integer photonsperiteration\" 1000000\n" + world(""));
+  EXPECT_EQ(many.scene.settings.photons, 1 << 24);
+  EXPECT_NE(many.warnings.find("scene.pbrt:1:12: warning: sppm's 1000 iterations of 1000000 photons: tracing 16777216 of them"),
+            std::string::npos)
+      << many.warnings;
+  // Another integrator keeps the photon integrator's own default.
+  EXPECT_EQ(import("Integrator \"sppm\" \"integer iterations\" 2\nIntegrator \"path\"\n" + world("")).scene.settings.photons,
+            RenderSettings{}.photons);
 }
 
 // pbrt-v3's integrators we do not have render with the nearest we do, and a

@@ -130,6 +130,48 @@ TEST(PbrtImportLights, WhittedSamplesEveryLightOnce) {
   EXPECT_EQ(scene.scene.environment->samples, 1);
 }
 
+// Exporters write `"string mapname" [ "" ]` for a light without a map; pbrt-v3
+// reads an empty name as none (no file "./" to read).
+TEST(PbrtImportLights, AnEmptyMapNameIsNoMap) {
+  PbrtScene infinite = import(world("LightSource \"infinite\" \"rgb L\" [2 2 2] \"string mapname\" [ \"\" ]"), with_map());
+  ASSERT_TRUE(infinite.scene.environment.has_value());
+  EXPECT_FALSE(infinite.scene.environment->map);
+  EXPECT_EQ(infinite.scene.environment->file, "");
+  EXPECT_EQ(sg::raw(infinite.scene.environment->radiance), glm::vec3(2));
+  EXPECT_EQ(infinite.warnings, "");
+  for (const char* type : {"goniometric", "projection"}) {
+    PbrtScene mapped = import(world("LightSource \"" + std::string(type) + "\" \"string mapname\" \"\""), with_map());
+    ASSERT_EQ(mapped.scene.point_lights.size(), 1u) << type;
+    ASSERT_TRUE(mapped.scene.point_lights[0].profile) << type;
+    EXPECT_FALSE(mapped.scene.point_lights[0].profile->map) << type;
+    EXPECT_EQ(mapped.warnings, "") << type;
+  }
+}
+
+// Exporters place lights with rotations rounded to 4 significant digits, as
+// they do cameras: the nearest rotation, with a warning; a shear is still refused.
+TEST(PbrtImportLights, ARotationRoundedByAnExporterTurnsAMapWithAWarning) {
+  // Rotate 30 about z, rounded: cos 30° = 0.8660254, sin 30° = 0.5.
+  const std::string rounded = "Transform [0.866 0.5 0 0  -0.5 0.866 0 0  0 0 1 0  0 0 0 1]\n";
+  for (const char* light : {"LightSource \"infinite\"", "LightSource \"goniometric\"", "LightSource \"spot\""}) {
+    PbrtScene scene = import(world(rounded + light));
+    EXPECT_NE(scene.warnings.find("is a rotation only to within 2.9e-05: rendered with the nearest rotation"),
+              std::string::npos)
+        << light << ": " << scene.warnings;
+  }
+  PbrtScene scene = import(world(rounded + "LightSource \"infinite\""));
+  // Light +x goes to pbrt's (cos 30°, sin 30°, 0), which the mirrored import world has at x < 0.
+  const glm::vec3 x = sg::raw(scene.scene.environment->render_from_light(direction<LightSpace>(1, 0, 0)));
+  EXPECT_NEAR(x.x, -std::cos(std::numbers::pi / 6), 1e-4);
+  EXPECT_NEAR(x.y, 0.5, 1e-4);
+  EXPECT_NEAR(glm::length(x), 1.0f, 1e-6f);
+  EXPECT_EQ(first_line(import_error(world("ConcatTransform [1 0 0 0  0.05 1 0 0  0 0 1 0  0 0 0 1]\n"
+                                          "LightSource \"infinite\""))),
+            "scene.pbrt:3:1: error: an infinite light under a transform that scales unevenly or shears is not supported");
+  EXPECT_EQ(first_line(import_error(world("Scale 0 0 0\nLightSource \"spot\""))),
+            "scene.pbrt:3:1: error: a spot light under a transform that scales unevenly or shears is not supported");
+}
+
 TEST(PbrtImportLights, PathChoosesLightsAsItsLightSampleStrategySays) {
   EXPECT_EQ(import(world("")).scene.settings.light_strategy, LightStrategy::spatial);  // pbrt-v3's default integrator
   for (auto [name, strategy] : {std::pair{"uniform", LightStrategy::uniform}, std::pair{"power", LightStrategy::power},

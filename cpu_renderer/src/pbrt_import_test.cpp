@@ -259,6 +259,16 @@ TEST(PbrtImport, OptionsBecomeRenderSettings) {
   EXPECT_EQ(import("Sampler \"stratified\" \"integer xsamples\" 3 \"integer ysamples\" 5\n" + world("")).scene.settings.spp, 15);
 }
 
+// pbrt-v3's Film multiplies the image by "scale" as it writes it.
+TEST(PbrtImport, FilmScaleScalesTheImage) {
+  EXPECT_EQ(import(world("")).scene.settings.film_scale, 1.0);
+  PbrtScene scaled = import("Film \"image\" \"float scale\" [ 2.5 ]\n" + world(""));
+  EXPECT_EQ(scaled.scene.settings.film_scale, 2.5);
+  EXPECT_EQ(scaled.warnings, "");
+  EXPECT_EQ(first_line(import_error("Film \"image\" \"float scale\" -1\n" + world(""))),
+            "scene.pbrt:1:14: error: Film \"float scale\" must be positive and finite");
+}
+
 // pbrt-v3's camera space: x is the image's right, y up, z forward. LookAt
 // makes that frame right-handed in the world, where our camera (right =
 // forward × up) would mirror the image: the import mirrors the world across
@@ -499,10 +509,22 @@ TEST(PbrtImport, PlasticGlassAndUberAsPbrtV3DefinesThem) {
             "(Kr, Kt) is not supported\nMaterial \"uber\" \"rgb Kr\" [0.5 0.5 0.5]\n         ^~~~~~\n"
             "help: no material here sums them; uber renders as matte, plastic or glass when one of the two parts is "
             "black\n");
-  EXPECT_EQ(import_error(world(used("Material \"uber\" \"rgb opacity\" [0.5 0.5 0.5]"))),
-            "scene.pbrt:2:17: error: \"opacity\" other than 1 of Material \"uber\" is not supported\n"
-            "Material \"uber\" \"rgb opacity\" [0.5 0.5 0.5]\n                ^~~~~~~~~~~~~\n"
-            "help: pbrt-v3 passes the rest of the light straight through, a material the renderer does not have\n");
+  // Opacity below 1: pbrt-v3's lobes times opacity, and the rest straight through (a glass of index 1), as a mix.
+  PbrtScene leaf = import(world(used("Material \"uber\" \"rgb Kd\" [0.5 0.5 0.5] \"rgb Ks\" [0 0 0] "
+                                     "\"rgb opacity\" [0.25 0.5 0.75]")));
+  ASSERT_EQ(leaf.scene.shapes.size(), 1u);
+  const Material& leaf_material = leaf.scene.materials.at(leaf.scene.shapes[0].material);
+  ASSERT_TRUE(leaf_material.mix.has_value());
+  EXPECT_EQ(sg::raw(leaf_material.mix->amount.value), glm::vec3(0.25f, 0.5f, 0.75f));
+  EXPECT_EQ(sg::raw(diffuse(leaf.scene.materials.at(leaf_material.mix->first)).value), glm::vec3(0.5f));
+  const GlassMaterial pass_through = as<GlassMaterial>(leaf.scene.materials.at(leaf_material.mix->second));
+  EXPECT_EQ(sg::raw(pass_through.reflectance), glm::vec3(0));
+  EXPECT_EQ(sg::raw(pass_through.transmittance), glm::vec3(1));
+  EXPECT_EQ(pass_through.ior, 1.0f);
+  EXPECT_EQ(leaf.warnings, "");
+  EXPECT_FALSE(import(world(used("Material \"uber\" \"rgb opacity\" [1 1 1]"))).scene.materials.back().mix);
+  EXPECT_EQ(first_line(import_error(world(used("Material \"uber\" \"rgb opacity\" [1.5 1 1]")))),
+            "scene.pbrt:2:17: error: \"opacity\" of Material \"uber\" must lie in [0, 1] in every channel");
   EXPECT_EQ(import_error(world(used("Material \"uber\" \"float uroughness\" 0.1 \"float vroughness\" 0.2"))),
             "scene.pbrt:2:10: error: an anisotropic Material \"uber\" (\"uroughness\" 0.1, \"vroughness\" 0.2) is not "
             "supported\nMaterial \"uber\" \"float uroughness\" 0.1 \"float vroughness\" 0.2\n         ^~~~~~\n"

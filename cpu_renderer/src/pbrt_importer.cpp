@@ -3,8 +3,11 @@
 // materials, shapes and lights are in pbrt_world.cpp.
 #include "pbrt_importer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string_view>
@@ -67,6 +70,10 @@ bool invertible(const Matrix& m) {
   return std::isnormal(det) && finite(glm::inverse(m));
 }
 
+// The photons of sppm's iterations the photon integrator traces at most:
+// about 1 GB of photon map (memory_estimate.cpp's bytes per photon).
+constexpr uint64_t kMaxSppmPhotons = uint64_t{1} << 24;
+
 SourceRange span(const Directive& d) {
   return d.arguments.begin.file == d.range.begin.file ? SourceRange{d.range.begin, d.arguments.end} : d.range;
 }
@@ -105,8 +112,9 @@ constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
      "the path tracer converges to the same image; Metropolis sampling only spreads its noise differently",
      {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
     {"sppm", IntegratorType::photon, "photon",
-     "the photon integrator renders the caustics SPPM is chosen for, from a photon map of its own fixed radius",
-     {"numiterations", "photonsperiteration", "imagewritefrequency", "radius", "seed"}},
+     "the photon integrator renders the caustics SPPM is chosen for, from one photon map of as many photons as "
+     "SPPM's iterations trace in all, of its own fixed radius",
+     {"imagewritefrequency", "radius", "seed"}},
 };
 
 const IntegratorSubstitute* substitute_for(const std::string& type) {
@@ -116,6 +124,42 @@ const IntegratorSubstitute* substitute_for(const std::string& type) {
 }
 
 }  // namespace
+
+// How far a linear map is from a uniformly scaled rotation or mirroring: the
+// largest entry of FᵀF/s² − I, s² the mean squared column length (0 for a
+// similarity; cosines between columns and relative differences of squared lengths).
+double deviation_from_similarity(const glm::dmat3& f) {
+  const glm::dmat3 gram = glm::transpose(f) * f;
+  const double mean_square = (gram[0][0] + gram[1][1] + gram[2][2]) / 3;
+  // A map that collapses space (or overflows) is no similarity at all.
+  if (!(mean_square > 0) || !std::isfinite(mean_square)) return std::numeric_limits<double>::infinity();
+  double deviation = 0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) deviation = std::max(deviation, std::fabs(gram[c][r] / mean_square - (r == c ? 1 : 0)));
+  return deviation;
+}
+
+// The similarity nearest an invertible map: its orthogonal polar factor
+// (Newton's iteration R ← (R + R⁻ᵀ)/2, which keeps the determinant's sign)
+// times the cube root of |det|, the scale that keeps its volume.
+glm::dmat3 nearest_similarity(const glm::dmat3& f) {
+  const double scale = std::cbrt(std::fabs(glm::determinant(f)));
+  glm::dmat3 rotation = f / scale;
+  for (int iteration = 0; iteration < 64; ++iteration) {
+    const glm::dmat3 next = 0.5 * (rotation + glm::transpose(glm::inverse(rotation)));
+    double change = 0;
+    for (int c = 0; c < 3; ++c) change = std::max(change, glm::length(next[c] - rotation[c]));
+    rotation = next;
+    if (change < 1e-15) break;
+  }
+  return scale * rotation;
+}
+
+std::string deviation_text(double deviation) {
+  std::ostringstream text;
+  text << std::setprecision(2) << deviation;
+  return text.str();
+}
 
 Importer::Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory)
     : sources_(sources), options_(options), search_directory_(std::move(search_directory)) {
@@ -303,7 +347,10 @@ void Importer::film(const Directive& d) {
   settings.height = params.one_int("yresolution", 720, 1, kMaxImageSide);
   result_.film_filename = params.one_string("filename", "pbrt.exr");
   params.one_float("diagonal", 35);  // the realistic camera's sensor size
-  params.reject("scale", "our images are not scaled", 1.0);
+  // pbrt-v3's Film multiplies every pixel by it as it writes the image.
+  settings.film_scale = params.one_float("scale", 1);
+  if (!(settings.film_scale > 0) || !std::isfinite(settings.film_scale))
+    params.fail_at(*params.find("scale", {ParamType::floating}), "Film \"float scale\" must be positive and finite");
   params.reject("maxsampleluminance", "samples are not clamped");
   result_.crop.reset();
   if (const Param* crop = params.find("cropwindow", {ParamType::floating})) {
@@ -364,6 +411,7 @@ void Importer::integrator(const Directive& d) {
   RenderSettings& settings = result_.scene.settings;
   integrator_name_ = type;
   integrator_at_ = d.string_ranges[0];
+  sppm_.reset();
   integrator_traces_media_ = type == "volpath" || type == "bdpt" || type == "mlt";
   if (type == "path" || type == "volpath") {  // volpath: the path tracer, which traces media
     settings.integrator = IntegratorType::path;
@@ -388,6 +436,7 @@ void Importer::integrator(const Directive& d) {
     warn(d.string_ranges[0],
          "integrator \"" + type + "\" is not implemented: rendering with \"" + std::string(substitute->ours_name) + "\"",
          std::string(substitute->why));
+    if (type == "sppm") read_sppm_photons(params, d.string_ranges[0]);
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
          "supported: \"path\", \"volpath\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", "
@@ -396,6 +445,34 @@ void Importer::integrator(const Directive& d) {
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");
   report_unused(params);
+}
+
+// pbrt-v3's SPPM traces "iterations" (or, in older versions, "numiterations";
+// 64) passes of "photonsperiteration" photons (the film's pixels when not
+// positive). The photon map is counted once the film is known (WorldBegin).
+void Importer::read_sppm_photons(ParamSet& params, SourceRange at) {
+  SppmPhotons sppm;
+  sppm.iterations = params.one_int("iterations", params.one_int("numiterations", 64, 1, 1 << 30), 1, 1 << 30);
+  sppm.per_iteration = params.one_int("photonsperiteration", -1, -(1 << 30), 1 << 30);
+  sppm.at = at;
+  sppm_ = sppm;
+}
+
+// SPPM's photons in all as the photon integrator's one map, as many as fit
+// (kMaxSppmPhotons; more is a warning).
+void Importer::set_sppm_photons() {
+  if (!sppm_ || result_.scene.settings.integrator != IntegratorType::photon) return;
+  const RenderSettings& settings = result_.scene.settings;
+  const uint64_t pixels = result_.crop ? static_cast<uint64_t>(result_.crop->width) * result_.crop->height
+                                       : static_cast<uint64_t>(settings.width) * settings.height;
+  const uint64_t per_iteration = sppm_->per_iteration > 0 ? static_cast<uint64_t>(sppm_->per_iteration) : pixels;
+  const uint64_t photons = per_iteration * static_cast<uint64_t>(sppm_->iterations);
+  if (photons > kMaxSppmPhotons)
+    warn(sppm_->at,
+         "sppm's " + std::to_string(sppm_->iterations) + " iterations of " + std::to_string(per_iteration) +
+             " photons: tracing " + std::to_string(kMaxSppmPhotons) + " of them",
+         "the most one photon map takes here; --photons traces another number");
+  result_.scene.settings.photons = static_cast<int>(std::min<uint64_t>(photons, kMaxSppmPhotons));
 }
 
 // A light-choice parameter of pbrt-v3's integrators as our strategy ("one":
@@ -459,6 +536,7 @@ void Importer::pixel_filter(const Directive& d) {
 
 void Importer::world_begin(const Directive& d) {
   finish_camera(d.range);
+  set_sppm_photons();
   block_ = Block::world;
   state_.transform.start = state_.transform.end = Matrix(1.0);
   coordinate_systems_["world"] = {state_.transform.start, state_.transform.end};
@@ -489,19 +567,40 @@ double Importer::screen_window_scale(ParamSet& params, SourceRange at) {
   return s;
 }
 
+// The camera frame (the linear part of camera → pbrt world) as a uniformly
+// scaled rotation or mirroring, the only frames our cameras have. Exporters
+// write transforms rounded to a few significant digits (Houdini: 4, a rotation
+// off by ~1e-4), which pbrt-v3 renders as written, sheared by as little: such a
+// frame is replaced by the nearest similarity, with a warning saying how far off
+// it was. One further off than rounding explains scales unevenly or shears on
+// purpose, which pbrt-v3 renders and we cannot: an error.
+glm::dmat3 Importer::similarity_camera_frame(const glm::dmat3& frame, SourceRange at) {
+  const double deviation = deviation_from_similarity(frame);
+  if (deviation > kRoundedSimilarity)
+    fail(at, "the camera transform scales unevenly or shears (off a rotation by " + deviation_text(deviation) + ")",
+         "only rotations, mirrorings and uniform scales place a camera here; numbers rounded to 3 or more "
+         "significant digits are accepted");
+  warn_if_rounded(at, "the camera transform", deviation);
+  return nearest_similarity(frame);
+}
+
+// A transform that should be a scaled rotation, off by `deviation`
+// (deviation_from_similarity) within what rounded numbers leave: said when
+// it is more than double arithmetic leaves.
+void Importer::warn_if_rounded(SourceRange at, const std::string& subject, double deviation) {
+  if (deviation <= kExactSimilarity) return;
+  warn(at, subject + " is a rotation only to within " + deviation_text(deviation) + ": rendered with the nearest rotation",
+       "numbers rounded by an exporter? pbrt-v3 renders the transform as written, sheared by as much");
+}
+
 void Importer::finish_camera(SourceRange world_begin) {
   Camera& camera = result_.scene.camera;
   SourceRange at = camera_ ? camera_->range : world_begin;
   if (!invertible(camera_from_world_)) fail(at, "the camera transform is singular");
   Matrix pbrt_world_from_camera = glm::inverse(camera_from_world_);
-  glm::dmat3 frame(pbrt_world_from_camera);
-  double sx = glm::length(frame[0]), sy = glm::length(frame[1]), sz = glm::length(frame[2]);
-  double tolerance = 1e-6 * sx;
-  if (std::fabs(sx - sy) > tolerance || std::fabs(sx - sz) > tolerance ||
-      std::fabs(glm::dot(frame[0], frame[1])) > tolerance * sx || std::fabs(glm::dot(frame[0], frame[2])) > tolerance * sx ||
-      std::fabs(glm::dot(frame[1], frame[2])) > tolerance * sx)
-    fail(at, "the camera transform scales unevenly or shears",
-         "only rotations, mirrorings and uniform scales place a camera here");
+  glm::dmat3 frame = similarity_camera_frame(glm::dmat3(pbrt_world_from_camera), at);
+  for (int c = 0; c < 3; ++c) pbrt_world_from_camera[c] = glm::dvec4(frame[c], 0);
+  const double sx = glm::length(frame[0]);
   // Our image's right is forward × up: a right-handed camera frame (pbrt's
   // LookAt) needs the world mirrored for the image to come out as pbrt's.
   bool mirror = glm::determinant(frame) > 0;

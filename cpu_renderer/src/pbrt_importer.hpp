@@ -146,6 +146,19 @@ SubdivisionSurface loop_subdivide(std::vector<glm::dvec3> control_points, const 
 // render may take (memory_estimate.hpp) is refused.
 uint64_t loop_subdivision_bytes_per_triangle();
 
+// How far a linear map is from a uniformly scaled rotation or mirroring: the
+// largest entry of FᵀF/s² − I, s² the mean squared column length.
+double deviation_from_similarity(const glm::dmat3& f);
+// The uniformly scaled rotation (or mirroring) nearest an invertible map.
+glm::dmat3 nearest_similarity(const glm::dmat3& f);
+std::string deviation_text(double deviation);  // as messages quote it: 2 significant digits
+// What double arithmetic on exact rotations leaves, and what numbers rounded
+// to 3 significant digits leave (up to ~2e-3; 4 digits, ~2e-4): a transform
+// that should be a scaled rotation is taken as the nearest one up to the
+// second, with a warning beyond the first (Importer::warn_if_rounded).
+inline constexpr double kExactSimilarity = 1e-5;
+inline constexpr double kRoundedSimilarity = 1e-2;
+
 class Importer {
  public:
   Importer(SourceManager& sources, const PbrtImportOptions& options, std::filesystem::path search_directory);
@@ -169,7 +182,12 @@ class Importer {
   LightStrategy light_strategy(ParamSet& params, std::string_view name, std::string_view fallback,
                                std::initializer_list<std::string_view> known);
   void pixel_filter(const Directive& d);
+  void read_sppm_photons(ParamSet& params, SourceRange at);
+  void set_sppm_photons();
   void finish_camera(SourceRange world_begin);
+  glm::dmat3 similarity_camera_frame(const glm::dmat3& frame, SourceRange at);
+  void warn_if_rounded(SourceRange at, const std::string& subject, double deviation);
+  glm::dmat3 light_rotation(const Matrix& m, SourceRange at, const std::string& type);
   double screen_window_scale(ParamSet& params, SourceRange at);
 
   // Materials and textures (pbrt_materials.cpp).
@@ -179,6 +197,7 @@ class Importer {
   Material convert_material(const std::string& type, ParamSet& params, SourceRange at);
   Material convert_uber(ParamSet& params, SourceRange at);
   Material convert_mix(ParamSet& params, SourceRange at);
+  Material mixed_with_pass_through(Material opaque, const TexturedReflectance& opacity);
   TextureEntry combined_texture(const std::string& name, const std::string& texture_class, ParamSet& params,
                                 bool spectrum);
   int mixed_material(ParamSet& params, const char* name, SourceRange at);
@@ -260,6 +279,12 @@ class Importer {
   std::optional<SourceRange> integrator_at_;
   bool integrator_traces_media_ = false;       // volpath, bdpt, mlt
   bool light_samples_per_light_ = false;      // directlighting: area lights' "nsamples" count
+  struct SppmPhotons {
+    int iterations = 64;
+    int per_iteration = -1;  // not positive: one per pixel of the (cropped) film
+    SourceRange at;          // the integrator's name
+  };
+  std::optional<SppmPhotons> sppm_;  // under "sppm", its photon budget
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;

@@ -221,7 +221,8 @@ TexturedReflectance Importer::textured_reflectance(ParamSet& params, const char*
         warn(param->values,
              "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
                  params.context() + " it is clamped to 1 where it exceeds 1",
-             "a mix's amount is a weight in [0, 1]; pbrt-v3 would give its second material a negative weight there");
+             "a weight lies in [0, 1]: pbrt-v3 clamps uber's opacity too, but would give a mix's second material a "
+             "negative weight there");
       else
         warn(param->values,
              "this texture reaches " + format_number(reaches) + ": as \"" + std::string(name) + "\" of " +
@@ -346,18 +347,18 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
 }
 
 // pbrt-v3's uber is Lambert (Kd) + Fresnel-weighted microfacet reflection (Ks)
-// + specular reflection (Kr) and transmission (Kt), all times opacity. With
-// opacity 1 and either Kd/Ks or Kr/Kt black it is exactly matte, plastic (with
-// the Fresnel term the right way round: FresnelDielectric(1, eta)) or glass.
+// + specular reflection (Kr) and transmission (Kt), all times opacity, plus a
+// specular transmission of 1 − opacity that goes straight on (index 1). With
+// either Kd/Ks or Kr/Kt black the lobes are exactly matte, plastic (with the
+// Fresnel term the right way round: FresnelDielectric(1, eta)) or glass; with
+// opacity below 1, that material mixed with a pass-through one, weighed by
+// opacity: the same BSDF in expectation, a ray going on straight through with
+// probability 1 − opacity (pbrt-v3's stochastic transparency).
 Material Importer::convert_uber(ParamSet& params, SourceRange at) {
   Material material;
   material.name = "uber";
   material.bump = bump_map(params);
-  const Param* opacity_param = nullptr;
-  if (std::optional<TextureEntry> opacity = spectrum_or_texture(params, "opacity", opacity_param))
-    if (opacity->image >= 0 || opacity->value != Rgb{1, 1, 1})
-      params.fail_at(*opacity_param, "\"opacity\" other than 1 of " + params.context() + " is not supported",
-                     "pbrt-v3 passes the rest of the light straight through, a material the renderer does not have");
+  const TexturedReflectance opacity = textured_reflectance(params, "opacity", 1, TextureUse::weight);
   TexturedReflectance kd = textured_reflectance(params, "Kd", 0.25, TextureUse::reflectance);
   Reflectance ks = reflectance(params, "Ks", 0.25), kr = reflectance(params, "Kr", 0), kt = reflectance(params, "Kt", 0);
   bool remap = params.one_bool("remaproughness", true);
@@ -374,7 +375,23 @@ Material Importer::convert_uber(ParamSet& params, SourceRange at) {
   } else {
     material.model = plastic(kd, ks, microfacet_alpha(u, remap), eta, false, params, at);
   }
-  return material;
+  if (!opacity.textured() && sg::raw(opacity.value) == sg::vec3_rep(1)) return material;
+  return mixed_with_pass_through(std::move(material), opacity);
+}
+
+// `opaque` where `opacity` says, elsewhere a surface that light goes straight
+// through (a specular transmission of index 1): a mix of the two.
+Material Importer::mixed_with_pass_through(Material opaque, const TexturedReflectance& opacity) {
+  std::vector<Material>& materials = result_.scene.materials;
+  Material pass_through;
+  pass_through.name = opaque.name + " (its transparent part)";
+  pass_through.model = GlassMaterial{Reflectance{}, Reflectance(1.0f), 1.0f};
+  Material mixed;
+  mixed.name = opaque.name;
+  materials.push_back(std::move(opaque));
+  materials.push_back(std::move(pass_through));
+  mixed.mix = MaterialMix{static_cast<int>(materials.size()) - 2, static_cast<int>(materials.size()) - 1, opacity};
+  return mixed;
 }
 
 // pbrt-v3's MixMaterial: "namedmaterial1" weighted by "amount" (a spectrum,

@@ -101,6 +101,10 @@ std::optional<MediumInterface> Importer::shape_media() {
 void Importer::finish_media(SourceRange world_end) {
   Scene& scene = result_.scene;
   scene.camera.medium = medium_index(state_.outside_medium);
+  // Those integrators' shadow rays stop at any surface, one of material "none" too
+  // (pbrt-v3's VisibilityTester::Unoccluded); volpath's, bdpt's and mlt's pass through it.
+  if (!integrator_traces_media_)
+    for (Shape& shape : scene.shapes) shape.occludes_light = shape.invisible;
   if (!media_used_ || integrator_traces_media_) return;
   warn(integrator_at_ ? *integrator_at_ : world_end,
        "the scene has participating media, which pbrt-v3's integrator \"" + integrator_name_ +

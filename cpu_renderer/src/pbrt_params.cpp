@@ -194,6 +194,8 @@ std::vector<const Param*> ParamSet::unused() const {
   return result;
 }
 
+void ParamSet::ignore_the_rest() { used_.assign(used_.size(), true); }
+
 std::string format_number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);

@@ -53,6 +53,9 @@ class ParamSet {
 
   // Parameters nobody looked up (pbrt-v3 would ignore them too).
   std::vector<const Param*> unused() const;
+  // Every parameter counted as used: for a directive that makes nothing, whose
+  // other parameters nothing reads.
+  void ignore_the_rest();
   const std::string& context() const { return context_; }
   void set_fallback(ParamSet* fallback) { fallback_ = fallback; }
   bool contains(std::string_view name) const;

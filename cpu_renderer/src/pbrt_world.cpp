@@ -21,7 +21,8 @@ bool has_outside(const Scene& scene, int index, bool plastic = true) {
   const Material& material = scene.materials[index];
   if (material.mix)
     return has_outside(scene, material.mix->first, plastic) || has_outside(scene, material.mix->second, plastic);
-  return std::visit(Overloaded{[](const GlassMaterial&) { return true; },
+  // (A glass of index 1, uber's transparent part, bends nothing: it has no outside.)
+  return std::visit(Overloaded{[](const GlassMaterial& g) { return g.ior != 1; },
                                [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
                                [&](const PlasticMaterial& p) { return plastic && p.pbrt_v3_fresnel; },
                                [](const auto&) { return false; }},
@@ -149,9 +150,12 @@ void Importer::light_source(const Directive& d) {
       Triple to = params.one_point("to").value_or(Triple{0, 0, 1});
       glm::dvec3 axis = glm::dvec3(to[0], to[1], to[2]) - from_v;
       if (!(glm::length(axis) > 0)) fail(d.range, "the spot light's \"from\" and \"to\" coincide");
-      if (!is_similarity(state_.transform.start, 1e-6))
+      // Its position and direction are pbrt-v3's under any transform; only its cone would be elliptic.
+      const double deviation = deviation_from_similarity(glm::dmat3(state_.transform.start));
+      if (deviation > kRoundedSimilarity)
         fail(d.range, "a spot light under a transform that scales unevenly or shears is not supported",
              "it would make the cone elliptic");
+      warn_if_rounded(d.range, "the spot light's transform", deviation);
       Matrix m = world_from_pbrt_world_ * state_.transform.start;
       SpotLight spot;
       spot.position = to_world_point(m, from_v, d.range);
@@ -201,6 +205,15 @@ Rgb scaled_output(ParamSet& params) {
   return output;
 }
 
+// A light's "string mapname", or nullptr without one: pbrt-v3 reads an empty
+// name as no map (exporters write `"string mapname" [ "" ]` for none).
+const Param* light_map_name(ParamSet& params) {
+  const Param* map = params.find("mapname", {ParamType::string});
+  if (!map) return nullptr;
+  if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  return map->strings[0].empty() ? nullptr : map;
+}
+
 }  // namespace
 
 // pbrt-v3's DistantLight: irradiance L × scale on a surface facing it (read
@@ -245,18 +258,29 @@ void Importer::infinite_light(const Directive& d, ParamSet& params) {
   // Shadow rays per shading point under pbrt's directlighting (its "all" strategy).
   const int samples = params.one_int("samples", params.one_int("nsamples", 1, 1, 1 << 20), 1, 1 << 20);
   light.samples = light_samples_per_light_ ? std::min(samples, kMaxEmitterSamples) : 1;
-  if (const Param* map = params.find("mapname", {ParamType::string})) {
-    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  if (const Param* map = light_map_name(params)) {
     light.file = map->strings[0];
     light.map = std::make_shared<MipMap>(read_image(*map), TextureWrap::longitude_latitude);
   }
-  Matrix m = world_from_pbrt_world_ * state_.transform.start;
-  if (!is_similarity(m, 1e-6))
-    fail(d.range, "an infinite light under a transform that scales unevenly or shears is not supported",
-         "it would distort the map; rotate it only");
-  light.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  const Matrix world_from_light = world_from_pbrt_world_ * state_.transform.start;
+  light.render_from_light = orthogonal_map<RenderFromLight>(light_rotation(world_from_light, d.range, "infinite"));
   result_.scene.environment = std::move(light);
   environment_at_ = d.string_ranges[0];
+}
+
+// The rotation (or mirroring) of a light whose map turns with its transform
+// `m` (world ← light): a uniform scale changes no direction; a transform off a
+// scaled rotation by rounding only (an exporter's) is taken as the nearest one,
+// with a warning; one that distorts the map is refused.
+glm::dmat3 Importer::light_rotation(const Matrix& m, SourceRange at, const std::string& type) {
+  const double deviation = deviation_from_similarity(glm::dmat3(m));
+  if (deviation > kRoundedSimilarity)
+    fail(at, std::string(type == "infinite" ? "an " : "a ") + type +
+                 " light under a transform that scales unevenly or shears is not supported",
+         "it would distort the map; rotate it only");
+  warn_if_rounded(at, "the " + type + " light's transform", deviation);
+  const glm::dmat3 similarity = nearest_similarity(glm::dmat3(m));
+  return similarity / glm::length(similarity[0]);
 }
 
 // pbrt-v3's goniometric and projection lights: a point light at the light
@@ -266,9 +290,7 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
   const std::string& type = d.strings[0];
   const bool projection = type == "projection";
   Matrix m = world_from_pbrt_world_ * state_.transform.start;
-  if (!is_similarity(m, 1e-6))
-    fail(d.range, "a " + type + " light under a transform that scales unevenly or shears is not supported",
-         "it would distort the map; rotate it only");
+  const glm::dmat3 rotation = light_rotation(m, d.range, type);
   IntensityMap profile;
   profile.layout = projection ? IntensityMap::Layout::projection : IntensityMap::Layout::goniometric;
   if (projection) {
@@ -276,12 +298,11 @@ PointLight Importer::mapped_point_light(const Directive& d, ParamSet& params, In
     if (!(fov > 0 && fov < 180)) fail(d.range, "\"float fov\" must lie in (0, 180) degrees");
     profile.fov = static_cast<Real>(fov) * units::degree;
   }
-  if (const Param* map = params.find("mapname", {ParamType::string})) {
-    if (map->strings.size() != 1) fail(map->values, "\"string mapname\" takes 1 value");
+  if (const Param* map = light_map_name(params)) {
     profile.file = map->strings[0];
     profile.map = std::make_shared<MipMap>(read_image(*map), projection ? TextureWrap::clamp : TextureWrap::longitude_latitude);
   }
-  profile.render_from_light = orthogonal_map<RenderFromLight>(glm::dmat3(m) / glm::length(glm::dmat3(m)[0]));
+  profile.render_from_light = orthogonal_map<RenderFromLight>(rotation);
   return {to_world_point(m, {0, 0, 0}, d.range), intensity, std::move(profile)};
 }
 
@@ -325,11 +346,20 @@ void Importer::shape(const Directive& d) {
     source.kind = ShapeSource::Kind::mesh;
     const Param* p = params.find("P", {ParamType::point3});
     if (!p) fail(d.range, "Shape \"trianglemesh\" needs \"point P\" (its vertices)");
-    if (p->numbers.size() % 3 != 0 || p->numbers.empty())
+    const Param* indices = params.find("indices", {ParamType::integer});
+    if (p->numbers.empty() || (indices && indices->numbers.empty())) {
+      // Exporters write meshes of nothing (Blender: `"point P" [ ]`); pbrt-v3 makes no shape of one and goes on.
+      warn(d.string_ranges[0],
+           std::string("an empty triangle mesh (no ") + (p->numbers.empty() ? "\"point P\"" : "\"integer indices\"") +
+               ") makes nothing",
+           "pbrt-v3 makes nothing of it either");
+      params.ignore_the_rest();
+      return;
+    }
+    if (p->numbers.size() % 3 != 0)
       fail(p->values, "\"point P\" takes x y z per vertex: " + std::to_string(p->numbers.size()) + " numbers");
     for (size_t i = 0; i < p->numbers.size(); i += 3)
       source.positions.emplace_back(p->numbers[i], p->numbers[i + 1], p->numbers[i + 2]);
-    const Param* indices = params.find("indices", {ParamType::integer});
     if (!indices && source.positions.size() == 3) {
       source.indices = {0, 1, 2};
     } else {

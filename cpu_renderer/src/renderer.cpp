@@ -289,6 +289,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     for (size_t i = 0; i < sums.size(); ++i)
       image.rgb[i] = filter ? filtered_pixel(sums[i], weight_sums[i / 3]) : static_cast<float>(sums[i] * scale);
   }
+  if (settings.film_scale != 1)
+    for (float& value : image.rgb) value = static_cast<float>(value * settings.film_scale);
 
   if (stats) {
     *stats = RenderStats{};

@@ -210,6 +210,12 @@ struct Shape {
   // No surface at all (pbrt-v3's material "" or "none"): rays pass through it,
   // which only matters where it bounds a participating medium (or emits).
   bool invisible = false;
+  // An invisible surface that still stops the light sent to a scattering
+  // point: shadow rays, and emission that a scattered ray finds beyond it
+  // (camera rays and the paths go on through it). pbrt-v3's integrators
+  // without media (path, directlighting, whitted) test shadow rays against
+  // every surface, so an emitter of material "none" hides its own far side.
+  bool occludes_light = false;
   // pbrt-v3's alpha masks (on triangle meshes): where `alpha` is exactly 0 the
   // surface is not there for any ray; where `shadow_alpha` is, it casts no
   // shadow. A mask's first channel counts (float textures are grey here).
@@ -403,6 +409,8 @@ struct RenderSettings {
   // radius of the density estimate (zero: chosen from the scene's size).
   int photons = 200000;
   Length photon_radius = sg::zero;
+  // Every pixel of the finished image times this (pbrt-v3's Film "scale").
+  double film_scale = 1;
 };
 
 struct Scene {
