@@ -187,6 +187,7 @@ class Checker {
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
   void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
+  std::optional<DimSlot> conversion_written_out(const Value& a, const DimSlot& da, const Value& b, const DimSlot& db) const;
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   // An unannotated local reused for another quantity takes the type of what is assigned (expressions.cpp).

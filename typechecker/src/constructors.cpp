@@ -372,6 +372,12 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
       out.type = (shadow && !gather && !legacy_shadow) ? Type::scalar_of(Scalar::float_) : Type::vector_of(texel_scalar, 4);
       if (sampler.texel) out.type.dim = value_dimension(*sampler.texel, result_.registry);
       out.type.dim.spelling = sampler.texel ? sampler.texel->dim.spelling : std::string();
+      // A G-buffer of normals, directions or positions: the texel's xyz is that kind in that space.
+      if (const Type* texel = sampler.texel.get(); texel && out.type.rows == 4 && texel->rows == 3 &&
+                                                     (texel->geometry == Geometry::point || vectorish(texel->geometry))) {
+        out.type.affine = sampler.texel;
+        out.type.affine_w = texel->geometry == Geometry::point ? 1 : 0;
+      }
       return out;
     }
     case BuiltinRule::texture_size: {

@@ -62,6 +62,25 @@ void Checker::radians_of_pi_multiple(const std::string& name, std::vector<Value>
   if (d.is_known() && d.value.is_dimensionless() && angle) args[0].type.dim = DimSlot::known(*angle);
 }
 
+// A quantity in a unit times the plain number that is that unit's scale is the quantity in
+// reference units: the conversion written out (`fov * (3.14159265 / 180.0)` of an angle in
+// degrees is radians, `lengthCm * 0.01` metres), as `x in radian` would give it.
+std::optional<DimSlot> Checker::conversion_written_out(const Value& a, const DimSlot& da, const Value& b, const DimSlot& db) const {
+  const DimensionRegistry& reg = result_.registry;
+  for (int side = 0; side < 2; ++side) {
+    const DimSlot& quantity = side == 0 ? da : db;
+    const Value& factor = side == 0 ? b : a;
+    const DimSlot& factor_dim = side == 0 ? db : da;
+    if (!quantity.is_known() || !reg.has_unit_factors(quantity.value) || !factor.number || !factor_dim.is_known() ||
+        !factor_dim.value.is_dimensionless())
+      continue;
+    const double scale = reg.scale(quantity.value);
+    if (scale <= 0.0 || std::fabs(*factor.number / scale - 1.0) > 1e-5) continue;
+    if (Checked<Dimension> reference = reg.reference(quantity.value)) return DimSlot::known(*reference);
+  }
+  return std::nullopt;
+}
+
 bool is_pi_multiple(double value) {
   const double quarters = value / 3.141592653589793 * 4.0;
   return value != 0.0 && std::fabs(quarters) <= 64.0 && std::fabs(quarters - std::round(quarters)) < 1e-4;

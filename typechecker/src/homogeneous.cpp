@@ -146,6 +146,12 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   if (x.geometry != Geometry::point && w == 1 && !sky_box)
     return reject(cannot + ": a " + kind + " needs w = 0, and w = 1 adds the map's translation to it",
                   "write vec4(v, 0.0) for a " + kind + " (w = 1 is for points)", code::E_KIND_MISMATCH);
+  // The inverse of the map a normal should go by, without the transpose: the inverse transpose carries
+  // normals forward, the inverse alone takes points and vectors backward.
+  if (!consistent(x.from, source) && normal && !carries_normals && !row && consistent(x.from, target) && !rigid)
+    return reject(cannot + ": this matrix takes values from " + name_of_space(source) + " to " + name_of_space(target) +
+                      "; a normal of " + name_of_space(x.from) + " goes by its transpose, the normal matrix transpose(inverse(m))",
+                  "missing transpose: transpose(" + m_name + ") * " + operand_text(v, "n"), code::E_SPACE_MISMATCH);
   if (!consistent(x.from, source))
     return reject(cannot + ": the " + (row ? "transposed " : "") + "map takes values in " + name_of_space(source) + ", not in " +
                       name_of_space(x.from),

@@ -240,6 +240,8 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     }
     out.type.dim = *d;
     keep_scaled_spelling(out.type.dim, da, db, op == ast::BinaryOp::Div);
+    if (op == ast::BinaryOp::Mul)
+      if (std::optional<DimSlot> reference = conversion_written_out(lhs, da, rhs, db)) out.type.dim = *reference;
     out.zero = op == ast::BinaryOp::Mul && (lhs.zero || rhs.zero);
     if (out.zero) out.type.dim = DimSlot::zero();
   }
