@@ -132,7 +132,18 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"cosine_of_an_unnormalised_axis", "uniform vector<world> s; uniform direction<world> l; uniform float<1> cutOff;",
                  "bool inside = @;", "dot(-s, l) > cutOff", "normalize(-s)", "normalize(-s)", "dot(normalize(-s), l) > cutOff"},
         HintCase{"point_with_w_zero", kModel, "vec3 pW = (@).xyz;", "model * vec4(pObj, 0.0)", "for a point",
-                 "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"}),
+                 "vec4(p, 1.0)", "model * vec4(pObj, 1.0)"},
+        HintCase{"interpolated_normal_in_a_cosine", "in normal<world> vN; uniform direction<world> l;", "float<proj> c = max(@, 0.0);",
+                 "dot(vN, l)", "normalize it first", "normalize(vN)", "dot(normalize(vN), l)"},
+        HintCase{"cosine_with_a_travel_direction", "in normal<world> vN; uniform direction<world, toward> travel;",
+                 "float<proj> c = @;", "max(dot(normalize(vN), travel), 0.0)", "takes the direction away from the surface",
+                 "dot(normalize(vN), -travel)", "max(dot(normalize(vN), -travel), 0.0)"},
+        HintCase{"reflection_written_out_for_an_incident_direction", "uniform normal<world> n; uniform direction<world, toward> I;",
+                 "vec3 r = @;", "2.0 * n * dot(n, I) - I", "the reflection of an incident direction", "reflect(I, n)",
+                 "reflect(I, n)"},
+        HintCase{"normal_by_the_inverse_without_its_transpose", "space view; uniform map<world, view> viewFromWorld; uniform normal<world> nW;",
+                 "vec3 nV = @;", "inverse(mat3(viewFromWorld)) * nW", "missing transpose",
+                 "transpose(inverse(mat3(viewFromWorld))) * nW", "transpose(inverse(mat3(viewFromWorld))) * nW"}),
     [](const ::testing::TestParamInfo<HintCase>& info) { return std::string(info.param.name); });
 
 TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {
