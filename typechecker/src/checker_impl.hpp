@@ -178,7 +178,7 @@ class Checker {
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   // Interpolated normals and directions (unit_length.cpp).
-  void mark_interpolated(Type& t, const ast::TypeQualifiers& q) const;
+  void mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const;
   std::string not_unit_subject(const Value& v) const;
   void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);

@@ -319,7 +319,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
   if (global) validate_interface(d, base);
   for (const ast::Declarator& decl : d.declarators) {
     Type declared = base.is_error() ? base : with_array_dims(base, decl.array_dims);
-    if (global) mark_interpolated(declared, d.qualifiers);
+    if (global) mark_stage_normal(declared, d.qualifiers);
     Variable v;
     bool poisoned = false;
     v.name = decl.name;
@@ -403,7 +403,7 @@ void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
   for (const ast::VariableDecl* member : d.members)
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
-      mark_interpolated(t, d.qualifiers);
+      mark_stage_normal(t, d.qualifiers);
       if (member->qualifiers.has("flat") && t.length_loss == Type::LengthLoss::interpolated) t.length_loss = Type::LengthLoss::none;
       result_.declarators[&decl] = t;
       info->fields.push_back({decl.name, t, member->qualifiers.has("readonly")});

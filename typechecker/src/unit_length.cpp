@@ -8,7 +8,7 @@
 
 namespace safegi::detail {
 
-void Checker::mark_interpolated(Type& t, const ast::TypeQualifiers& q) const {
+void Checker::mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const {
   const bool input = q.has("in") || q.has("attribute") || (q.has("varying") && options_.stage != Stage::vertex);
   if (!input || t.is_array() || t.geometry != Geometry::normal) return;
   // A stage's own normal (a vertex's attribute, a fragment's interpolated one) is the shaded point's:
