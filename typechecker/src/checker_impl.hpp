@@ -180,6 +180,7 @@ class Checker {
   // Interpolated normals and directions (unit_length.cpp).
   void mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const;
   std::string not_unit_subject(const Value& v) const;
+  std::string written_name(const Value& v) const;
   void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);

@@ -250,17 +250,17 @@ std::string Checker::member_path(const ast::Expr* target, const std::string& var
   return path && path->has_member ? path->text : variable;
 }
 
-// A local whose type was inferred from its initializer (no annotation written) is a name,
-// not a quantity: `float blinn = pow(…); blinn *= (n + 8.0) / (8.0 * PI);` reuses it for the
-// normalised lobe. An assignment of another type rebinds it from there on, in the same
-// block; in a nested block (a branch, a loop) the value after it is either, so unknown.
-// An annotated variable never changes: the assignment is checked against it.
 // `vec3 sum = vec3(0.0);`: an unannotated local whose start is zero, which fits any dimension.
 bool Checker::infer_from_zero(bool global, const Type& declared, const Value& init) const {
   return !global && init.zero && !declared.is_annotated() && !declared.is_error() && !declared.is_array() &&
          (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating();
 }
 
+// A local whose type was inferred from its initializer (no annotation written) is a name,
+// not a quantity: `float blinn = pow(…); blinn *= (n + 8.0) / (8.0 * PI);` reuses it for the
+// normalised lobe. An assignment of another type rebinds it from there on, in the same
+// block; in a nested block (a branch, a loop) the value after it is either, so unknown.
+// An annotated variable never changes: the assignment is checked against it.
 bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, const Value& value) {
   const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e.lhs);
   if (id == nullptr || scopes_.size() < 2) return false;
@@ -400,7 +400,7 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
     return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
   if (v.length_loss != Type::LengthLoss::none && target.length_loss == Type::LengthLoss::none &&
       (target.geometry == Geometry::normal || target.geometry == Geometry::direction)) {
-    const std::string name = value.name.empty() ? operand_text(value, "n") : value.name;
+    const std::string name = written_name(value);
     return fail(std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with " + not_unit_subject(value) +
                     ": it is not of unit length until normalize()",
                 "normalize it first: normalize(" + name + ")", code::E_KIND_MISMATCH);

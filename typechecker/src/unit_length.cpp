@@ -19,14 +19,21 @@ void Checker::mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const {
 
 // "'vN', a normal interpolated across the primitive", "'n', a normal carried by a normal matrix that may scale".
 std::string Checker::not_unit_subject(const Value& v) const {
-  const std::string name = v.name.empty() ? operand_text(v, "n") : v.name;
+  const std::string name = written_name(v);
   return "'" + name + "', a " + geometry_name(v.type.geometry) +
          (v.type.length_loss == Type::LengthLoss::scaled ? " carried by a normal matrix that may scale"
                                                          : " interpolated across the primitive");
 }
 
+// The value as written (`vs.n`, not the block `vs`), where it is one short line.
+std::string Checker::written_name(const Value& v) const {
+  Value unnamed = v;
+  unnamed.name.clear();
+  return operand_text(unnamed, v.name.empty() ? "n" : v.name);
+}
+
 void Checker::report_not_unit(const Value& v, const std::string& where) {
-  const std::string name = v.name.empty() ? operand_text(v, "n") : v.name;
+  const std::string name = written_name(v);
   Diagnostic d = Diagnostic::error(v.range, where + " " + not_unit_subject(v) + ": it is not of unit length until normalize()")
                      .with_code(code::E_KIND_MISMATCH);
   add_origin_note(d, v);
