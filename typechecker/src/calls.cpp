@@ -644,13 +644,7 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};
   std::optional<Type> result = unify_call(e.callee, shape, args, e.range);
   if (!result) return error_value(e.range);
-  for (std::size_t i = 0; i < args.size() && i < best->params.size(); ++i) {
-    const Geometry want = best->params[i].geometry;
-    if (args[i].type.length_loss != Type::LengthLoss::none && (want == Geometry::normal || want == Geometry::direction)) {
-      report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + e.callee + "' is");
-      return error_value(e.range);
-    }
-  }
+  if (!unit_length_parameters(e.callee, best->params, args)) return error_value(e.range);
   symbols_.call_result(*result);
   Value out;
   out.range = e.range;

@@ -178,11 +178,12 @@ class Checker {
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   // Interpolated normals and directions (unit_length.cpp).
-  void mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const;
+  void mark_stage_normal(Type& t, const ast::TypeQualifiers& q, bool flat = false) const;
   std::string not_unit_subject(const Value& v) const;
   std::string written_name(const Value& v) const;
   void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
+  bool unit_length_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   std::optional<Dimension> frame_cosine(const Type& t) const;
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);

@@ -418,8 +418,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
   for (const ast::VariableDecl* member : d.members) {
     for (const ast::Declarator& decl : member->declarators) {
       Type t = resolve_type(member->type, &decl.array_dims);
-      mark_stage_normal(t, d.qualifiers);
-      if (member->qualifiers.has("flat") && t.length_loss == Type::LengthLoss::interpolated) t.length_loss = Type::LengthLoss::none;
+      mark_stage_normal(t, d.qualifiers, member->qualifiers.has("flat"));
       result_.declarators[&decl] = t;
       info->fields.push_back({decl.name, t});
       const std::string full = d.instance_name.empty() ? decl.name : d.instance_name + "." + decl.name;

@@ -273,20 +273,18 @@ bool Checker::rebind_inferred_local(const ast::AssignExpr& e, const Value& lhs, 
     }
   if (var == nullptr || var->builtin || var->read_only) return false;
   Type a = var->type, b = value.type;
-  if (var->zero_start && !a.is_annotated() && b.is_annotated() && implicitly_converts(b.scalar, a.scalar)) {
+  if (!implicitly_converts(b.scalar, a.scalar)) return false;
+  b.scalar = a.scalar;
+  if (!same_glsl_type(a, b)) return false;
+  if (var->zero_start && !a.is_annotated() && b.is_annotated()) {
     // Zero has every dimension: the first annotated value stored (or added) names the type, from
     // any block (a loop's `sum += x`), and later values are checked against it.
-    b.scalar = a.scalar;
-    if (!same_glsl_type(a, b)) return false;
     var->type = b;
     var->zero_start = false;
     var->origin = {e.range, "type of '" + id->name + "' set by this assignment (it started at zero)", true};
     return true;
   }
   if (!var->origin.inferred) return false;
-  if (!implicitly_converts(b.scalar, a.scalar)) return false;
-  b.scalar = a.scalar;
-  if (!same_glsl_type(a, b)) return false;
   ++muted_;
   const bool fits = check_assignable(lhs.type, value, e.lhs->range, id->name, lhs.origin, "assign");
   --muted_;

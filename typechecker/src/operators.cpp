@@ -12,6 +12,9 @@
 namespace safegi::detail {
 namespace {
 
+// A spectrum or a kind-less value: what colour arithmetic takes (no point, vector or map).
+bool colour_like(Geometry g) { return g == Geometry::spectrum || g == Geometry::none; }
+
 bool is_arith(ast::BinaryOp op) {
   return op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div;
 }
@@ -356,8 +359,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
                     code::E_SPACE_MISMATCH);
     // Colours as numbers, as scalars are: a plain colour times a cosine (a Lambert term of
     // unannotated lights) beside one times a lobe (Phong's specular) is a plain colour.
-    const bool colours = ga != Geometry::point && gb != Geometry::point && !vectorish(ga) && !vectorish(gb) &&
-                         ga != Geometry::hpoint && gb != Geometry::hpoint;
+    const bool colours = colour_like(ga) && colour_like(gb);
     const bool cosine_a = colours && cosine_as_number(db, da), cosine_b = colours && cosine_as_number(da, db);
     if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b)
       return reject(std::string("cannot ") + verb(op) + " " + both, unit_vector_sum_hint(lhs, rhs, da, db), code::E_DIMENSION_MISMATCH);
@@ -372,8 +374,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       out.type.geometry = Geometry::point;   // point ± displacement: an offset shaded point is still the shaded one
       out.type.orientation = (ga == Geometry::point ? a : b).orientation;
     } else if (ga == Geometry::spectrum || gb == Geometry::spectrum) {
-      out.type.geometry = (ga == Geometry::spectrum || ga == Geometry::none) && (gb == Geometry::spectrum || gb == Geometry::none)
-                              ? Geometry::spectrum : Geometry::none;
+      out.type.geometry = colour_like(ga) && colour_like(gb) ? Geometry::spectrum : Geometry::none;
       out.type.from = SpaceSlot::unknown();
     } else if (ga == Geometry::hpoint || gb == Geometry::hpoint) {
       out.type.geometry = Geometry::hpoint;
@@ -420,7 +421,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     return out;
   }
   // Component-wise products of two vec3-shaped values.
-  if ((ga == Geometry::spectrum || ga == Geometry::none) && (gb == Geometry::spectrum || gb == Geometry::none)) {
+  if (colour_like(ga) && colour_like(gb)) {
     out.type.geometry = Geometry::spectrum;
     return out;
   }

@@ -8,13 +8,14 @@
 
 namespace safegi::detail {
 
-void Checker::mark_stage_normal(Type& t, const ast::TypeQualifiers& q) const {
+// `q`: the declaration's qualifiers (a block's, for its members); `flat`: the member says flat itself.
+void Checker::mark_stage_normal(Type& t, const ast::TypeQualifiers& q, bool flat) const {
   const bool input = q.has("in") || q.has("attribute") || (q.has("varying") && options_.stage != Stage::vertex);
   if (!input || t.is_array() || t.geometry != Geometry::normal) return;
   // A stage's own normal (a vertex's attribute, a fragment's interpolated one) is the shaded point's:
   // it points away from it (docs/language.md, "Orientation").
   if (options_.stage == Stage::vertex || options_.stage == Stage::fragment) t.orientation = Orientation::away;
-  if (options_.stage == Stage::fragment && !q.has("flat")) t.length_loss = Type::LengthLoss::interpolated;
+  if (options_.stage == Stage::fragment && !flat && !q.has("flat")) t.length_loss = Type::LengthLoss::interpolated;
 }
 
 // "'vN', a normal interpolated across the primitive", "'n', a normal carried by a normal matrix that may scale".
@@ -48,6 +49,18 @@ bool Checker::unit_length_arguments(const std::string& name, const std::vector<V
       report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + name + "' is");
       return false;
     }
+  return true;
+}
+
+// A user function's normal or direction parameter takes a unit vector.
+bool Checker::unit_length_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args) {
+  for (std::size_t i = 0; i < args.size() && i < params.size(); ++i) {
+    const Geometry want = params[i].geometry;
+    if (args[i].type.length_loss != Type::LengthLoss::none && (want == Geometry::normal || want == Geometry::direction)) {
+      report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + callee + "' is");
+      return false;
+    }
+  }
   return true;
 }
 
