@@ -164,6 +164,36 @@ TEST(PbrtImport, NurbsAreDicedAsPbrtDoes) {
             "scene.pbrt:2:7: error: Shape \"nurbs\" needs \"point P\" or \"float Pw\" (its control points)");
 }
 
+// pbrt-v3's heightfield is its mesh over the unit square: vertex (i, j) at (i/(nu−1), j/(nv−1), Pz),
+// those two numbers its texture coordinates, and each cell split along its (i, j)–(i+1, j+1)
+// diagonal. With one corner of a single cell raised by 1 that split makes the area
+// (1 + √3)/2 ≈ 1.366; the other diagonal would make √2 ≈ 1.414.
+TEST(PbrtImport, HeightfieldsAreMeshedAsPbrtDoes) {
+  PbrtScene scene = import(world("Shape \"heightfield\" \"integer nu\" 3 \"integer nv\" 2 \"float Pz\" [0 1 2  3 4 5]"));
+  ASSERT_EQ(scene.scene.shapes.size(), 1u);
+  const Shape& grid = scene.scene.shapes[0];
+  ASSERT_EQ(grid.positions.size(), 6u);
+  EXPECT_EQ(grid.indices.size(), 3u * 2 * 2);
+  EXPECT_TRUE(grid.normals.empty());  // shaded flat, as pbrt-v3 does
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const glm::vec3 p = sg::raw(grid.positions[j * 3 + i]);
+      EXPECT_NEAR(-p.x, i / 2.0, 1e-6);  // mirrored: see Handedness
+      EXPECT_NEAR(p.y, j, 1e-6);
+      EXPECT_EQ(p.z, static_cast<float>(j * 3 + i));
+      EXPECT_NEAR(grid.uvs[j * 3 + i].u, i / 2.0, 1e-6);
+      EXPECT_NEAR(grid.uvs[j * 3 + i].v, j, 1e-6);
+    }
+  PbrtScene corner = import(world("Shape \"heightfield\" \"integer nu\" 2 \"integer nv\" 2 \"float Pz\" [0 1 0 0]"));
+  EXPECT_NEAR(measure(corner.scene.shapes.at(0)).area, (1 + std::sqrt(3.0)) / 2, 1e-6);
+
+  EXPECT_EQ(first_line(import_error(world("Shape \"heightfield\" \"integer nu\" 2 \"integer nv\" 2 \"float Pz\" [0 1 2]"))),
+            "scene.pbrt:2:62: error: \"float Pz\" of Shape \"heightfield\" needs nu × nv = 4 heights, found 3");
+  EXPECT_EQ(first_line(import_error(world("Shape \"heightfield\" \"float Pz\" [0]"))),
+            "scene.pbrt:2:7: error: Shape \"heightfield\" needs \"integer nu\" and \"integer nv\", each at least 2 (its "
+            "grid of heights)");
+}
+
 // pbrt-v3's "loopsubdiv" is the mesh its LoopSubdivide makes. The expected
 // positions follow from pbrt-v3's rules by hand: an interior vertex of valence
 // n moves to (1 − nγ)·p + γ·Σ ring, γ = 1/(n + 3/(8β)), β = 3/16 for n = 3 and

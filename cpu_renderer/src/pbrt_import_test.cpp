@@ -130,10 +130,10 @@ TEST(PbrtImport, StructureErrors) {
 }
 
 TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
-  EXPECT_EQ(import_error(world("Shape \"heightfield\"")),
-            "scene.pbrt:2:7: error: shape \"heightfield\" is not supported\nShape \"heightfield\"\n      ^~~~~~~~~~~~~\n"
+  EXPECT_EQ(import_error(world("Shape \"bilinearmesh\"")),
+            "scene.pbrt:2:7: error: shape \"bilinearmesh\" is not supported\nShape \"bilinearmesh\"\n      ^~~~~~~~~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
-            "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\", \"curve\"\n");
+            "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"heightfield\", \"loopsubdiv\", \"curve\"\n");
   EXPECT_EQ(import_error(world(used("Material \"disney\""))),
             "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
             "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
@@ -424,11 +424,11 @@ TEST(PbrtImport, IncludeAndPlyMeshesResolveAgainstTheMainFile) {
   ASSERT_EQ(scene.scene.shapes.size(), 1u);
   EXPECT_EQ(scene.scene.shapes[0].indices.size(), 3u);
   // Errors inside an included file name the chain that led there.
-  options = in_memory({{"dir/inc.pbrt", "Shape \"heightfield\"\n"}});
+  options = in_memory({{"dir/inc.pbrt", "Shape \"bilinearmesh\"\n"}});
   EXPECT_EQ(import_error(world("Include \"inc.pbrt\""), options),
-            "In file included from scene.pbrt:2:1:\ndir/inc.pbrt:1:7: error: shape \"heightfield\" is not supported\n"
-            "Shape \"heightfield\"\n      ^~~~~~~~~~~~~\nhelp: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", "
-            "\"cylinder\", \"cone\", \"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\", \"curve\"\n");
+            "In file included from scene.pbrt:2:1:\ndir/inc.pbrt:1:7: error: shape \"bilinearmesh\" is not supported\n"
+            "Shape \"bilinearmesh\"\n      ^~~~~~~~~~~~~~\nhelp: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", "
+            "\"cylinder\", \"cone\", \"paraboloid\", \"hyperboloid\", \"nurbs\", \"heightfield\", \"loopsubdiv\", \"curve\"\n");
   EXPECT_EQ(import_error(world("Shape \"plymesh\" \"string filename\" \"missing.ply\"")),
             "scene.pbrt:2:35: error: cannot read mesh 'dir/missing.ply': no such file\n"
             "Shape \"plymesh\" \"string filename\" \"missing.ply\"\n                                  ^~~~~~~~~~~~~\n");

@@ -121,6 +121,8 @@ bool sphere_mesh(double radius, bool even_if_whole, ParamSet& params, SourceRang
 void triangulate_grid(int columns, int rows, ShapeSource& source);
 // pbrt-v3's "nurbs" as the mesh pbrt-v3 dices it into (pbrt_nurbs.cpp); false for any other type.
 bool nurbs_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
+// pbrt-v3's "heightfield" as the mesh pbrt-v3 makes of it (pbrt_heightfield.cpp); false for any other type.
+bool heightfield_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);
 // pbrt-v3's "loopsubdiv" as the mesh its LoopSubdivide makes (pbrt_loopsubdiv.cpp),
 // its limit normals as "N"; false for any other type.
 bool loopsubdiv_mesh(const std::string& type, ParamSet& params, SourceRange at, ShapeSource& source);

@@ -412,8 +412,9 @@ void Importer::shape(const Directive& d) {
       source.kind = ShapeSource::Kind::sphere;
       source.radius = radius;
     }
-  } else if (quadric_mesh(type, params, d.string_ranges[0], source) || nurbs_mesh(type, params, d.string_ranges[0], source) ||
-             loopsubdiv_mesh(type, params, d.string_ranges[0], source)) {
+  } else if (const SourceRange name = d.string_ranges[0];
+             quadric_mesh(type, params, name, source) || nurbs_mesh(type, params, name, source) ||
+             heightfield_mesh(type, params, name, source) || loopsubdiv_mesh(type, params, name, source)) {
     source.kind = ShapeSource::Kind::mesh;
   } else if (curve_mesh(type, params, d.string_ranges[0], source, curve_triangles_)) {
     source.kind = ShapeSource::Kind::mesh;
@@ -424,10 +425,11 @@ void Importer::shape(const Directive& d) {
   } else {
     fail(d.string_ranges[0], "shape \"" + type + "\" is not supported",
          "supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
-         "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"loopsubdiv\", \"curve\"");
+         "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"heightfield\", \"loopsubdiv\", \"curve\"");
   }
   // pbrt-v3's quadrics are one shape each; its meshes, nurbs and subdivision surfaces, triangles.
-  if (type == "trianglemesh" || type == "plymesh" || type == "nurbs" || type == "loopsubdiv")
+  if (type == "trianglemesh" || type == "plymesh" || type == "nurbs" || type == "heightfield" ||
+      type == "loopsubdiv")
     source.pbrt_lights = static_cast<int>(std::min<size_t>(source.indices.size() / 3, 1 << 30));
   source.material = material_index(*state_.material, params);
   source.invisible = state_.material->invisible;
