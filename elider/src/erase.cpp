@@ -12,12 +12,12 @@
 #include <safegi/diagnostics/codes.hpp>
 
 #include "safegi/elider/elider.hpp"
-#include "walk.hpp"
+#include <safegi/parser/walk.hpp>
 
 namespace safegi {
 namespace {
 
-using elider_detail::walk;
+using ast::walk;
 
 struct Edit {
   std::uint32_t begin = 0;

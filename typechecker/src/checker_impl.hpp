@@ -31,6 +31,13 @@ struct Origin {
 };
 
 struct Value;
+// The length of a variable as it was when measured (`float d = length(L)`): L / d is a unit
+// direction while L keeps that value (unit_length.cpp, Checker::divided_by_own_length).
+struct LengthOf {
+  std::string name;          // the vector measured
+  SourceRange declared_at;   // which declaration of that name
+  unsigned version = 0;      // its Variable::version then
+};
 // orientation.cpp: q - p of two points, one of them the shaded one; a ± b of oriented vectors; s * v.
 Orientation point_difference_orientation(const Type& a, const Type& b);
 Orientation sum_orientation(bool add, Orientation a, Orientation b);
@@ -55,6 +62,7 @@ struct Value {
   const StructInfo* readonly_reference = nullptr;
   bool stage_output = false;     // an `out` of the stage, or a member or component of one
   bool pi_multiple = false;      // a plain number made with a multiple of π (2.0 * PI * u): an angle in radians
+  std::optional<LengthOf> length_of;  // length(L) of a variable L, or a local that holds it
 };
 
 struct Variable {
@@ -70,6 +78,8 @@ struct Variable {
   bool stage_output = false;          // what it holds leaves the stage
   bool zero_start = false;            // an unannotated local that starts at zero: its first value names its type
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
+  std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
+  unsigned version = 0;               // how often it may have been written so far (LengthOf::version)
 };
 
 struct Function {
@@ -185,6 +195,14 @@ class Checker {
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
   bool unit_length_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
+  // length(L) of a variable whose value is known not to change behind the checker's back.
+  std::optional<LengthOf> length_of_variable(const ast::Expr* arg);
+  // `L / length(L)`, `L / d` with d that length, `L /= d`: normalize(L) written out, its type.
+  std::optional<Value> divided_by_own_length(const ast::Expr* numerator, const Value& lhs, const Value& rhs, SourceRange range);
+  // Everything `n` may write (assignments, ++/--, arguments of calls that can write them) gets a new
+  // version; a loop's writes are noted on entry, as its next iteration sees them.
+  void note_writes(const ast::Node* n);
+  void note_write(const ast::Expr* target);
   std::optional<Dimension> frame_cosine(const Type& t) const;
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);

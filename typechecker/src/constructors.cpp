@@ -377,6 +377,13 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
                                                      (texel->geometry == Geometry::point || vectorish(texel->geometry))) {
         out.type.affine = sampler.texel;
         out.type.affine_w = texel->geometry == Geometry::point ? 1 : 0;
+        // A filtered lookup blends neighbouring texels (and 8-bit storage rounds them): the normal it gives
+        // is shorter than 1 until normalize(), as an interpolated one is. texelFetch reads one texel as stored.
+        if (texel->geometry == Geometry::normal && sig.name.rfind("texelFetch", 0) != 0) {
+          Type filtered = *texel;
+          filtered.length_loss = Type::LengthLoss::filtered;
+          out.type.affine = std::make_shared<const Type>(filtered);
+        }
       }
       return out;
     }

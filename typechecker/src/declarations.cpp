@@ -341,6 +341,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     } else if (decl.initializer) {
       Value init = expr(decl.initializer);
       pi_multiple = init.pi_multiple;
+      if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) v.length_of = init.length_of;
       // Unsized arrays take their size from the initialiser.
       if (!declared.array.empty() && declared.array[0] < 0 && !init.type.array.empty()) declared.array[0] = init.type.array[0];
       const bool infer = !global && !declared.is_annotated() && !declared.is_error() && !init.type.is_error() &&
@@ -551,10 +552,12 @@ void Checker::statement(const ast::Stmt* s) {
       else if (const auto* st = ast::dyn_cast<ast::StructDecl>(d)) global_decl(st);
       else if (const auto* qd = ast::dyn_cast<ast::QualifierDecl>(d)) validate_qualifier_decl(*qd, false);
       else if (const auto* pd = ast::dyn_cast<ast::PrecisionDecl>(d)) validate_precision(*pd);
+      note_writes(s);
       break;
     }
     case ast::NodeKind::ExprStmt:
       if (const ast::Expr* e = static_cast<const ast::ExprStmt*>(s)->expr) expr(e);
+      note_writes(s);
       break;
     case ast::NodeKind::IfStmt: {
       const auto* i = static_cast<const ast::IfStmt*>(s);
@@ -584,6 +587,7 @@ void Checker::statement(const ast::Stmt* s) {
       break;
     case ast::NodeKind::WhileStmt: {
       const auto* w = static_cast<const ast::WhileStmt*>(s);
+      note_writes(s);  // what the body writes, the next iteration sees from the start
       push_scope();
       if (w->condition.decl) variable_decl(*w->condition.decl, false);
       else condition(w->condition.expr);
@@ -595,6 +599,7 @@ void Checker::statement(const ast::Stmt* s) {
     }
     case ast::NodeKind::DoStmt: {
       const auto* w = static_cast<const ast::DoStmt*>(s);
+      note_writes(s);  // what the body writes, the next iteration sees from the start
       ++loop_depth_;
       statement(w->body);
       --loop_depth_;
@@ -603,6 +608,7 @@ void Checker::statement(const ast::Stmt* s) {
     }
     case ast::NodeKind::ForStmt: {
       const auto* f = static_cast<const ast::ForStmt*>(s);
+      note_writes(s);  // what the body writes, the next iteration sees from the start
       push_scope();
       statement(f->init);
       if (f->condition.decl) variable_decl(*f->condition.decl, false);

@@ -49,6 +49,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.read_only = var->read_only;
     v.stage_output = var->stage_output;
     v.pi_multiple = var->pi_multiple;
+    v.length_of = var->length_of;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
@@ -330,7 +331,10 @@ Value Checker::assign(const ast::AssignExpr& e) {
                                          ast::BinaryOp::BitAnd, ast::BinaryOp::BitXor, ast::BinaryOp::BitOr};
     value = arithmetic(nullptr, kOps[static_cast<int>(e.op)], lhs, rhs, e.op_range, e.range);
     if (value.type.is_error()) return error_value(e.range);
+    if (e.op == ast::AssignOp::Div)
+      if (std::optional<Value> unit = divided_by_own_length(e.lhs, lhs, rhs, e.range)) value = *unit;
   }
+  note_write(e.lhs);
   // `sum += x` of a local that starts at zero: the sum is x's quantity (plain + x is x's, unchecked).
   const bool summed = e.op == ast::AssignOp::Add || e.op == ast::AssignOp::Sub;
   if (rebind_inferred_local(e, lhs, summed && !lhs.type.is_annotated() ? rhs : value)) {

@@ -77,6 +77,9 @@ INSTANTIATE_TEST_SUITE_P(
         HintCase{"jacobian_without_light_cosine",
                  "uniform float<area> lightArea; uniform float<solid_angle / (area * proj)> invR2;",
                  "float<pdf_solid_angle> pdf = @;", "1.0 / (lightArea * invR2)", "light-side cos θ", ""},
+        HintCase{"area_light_as_a_point", "uniform spectrum<radiance> Le; uniform spectrum<brdf> f; uniform float<length> d;"
+                 " uniform float<area> A; uniform float<proj> cosLight; uniform float<proj> cosSurf;",
+                 "spectrum<radiance> L = @;", "f * Le * cosSurf * inverse_square(d)", "the emitter's projected area", ""},
         HintCase{"angle_given_its_unit_twice", "uniform float<angle in degree> coneDeg;", "float c = cos(@);", "coneDeg * degree",
                  "'coneDeg' already is angle", "coneDeg in radian",
                  "coneDeg in radian"},

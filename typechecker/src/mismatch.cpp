@@ -239,6 +239,11 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
   if (is({{"solid_angle", 1}, {"proj", 1}}))
     return "irradiance where radiance is expected: reflect it with a brdf (1/(solid_angle·proj)) to get radiance";
   if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";
+  // An area light's sample counted as a point light's: its radiance reaches a receiver through the solid angle
+  // its area subtends, A cos θ_light / r², and the inverse square alone leaves A cos θ_light out.
+  if (is({{"length", -2}, {"proj", -1}}))
+    return "the value lacks a factor of area·proj: an area light's radiance needs the emitter's projected area, "
+           "A · cos θ at the light (dω = A cos θ / r²)";
   if (is({{"length", -2}}))
     return "the value lacks a factor of area: a squared distance missing from the numerator (the r² of a Jacobian), or divided by twice?";
   if (is({{"angle", -1}}))

@@ -93,7 +93,11 @@ Value Checker::binary(const ast::BinaryExpr& e) {
   for (auto it = spine.rbegin(); it != spine.rend(); ++it) {
     const ast::BinaryExpr& node = **it;
     Value rhs = expr(node.rhs);
-    value = arithmetic(&node, node.op, value, rhs, node.op_range, node.range);
+    const Value lhs = std::move(value);
+    value = arithmetic(&node, node.op, lhs, rhs, node.op_range, node.range);
+    // Only the leftmost operand is a variable as written: `L / d`, not `a * L / d`.
+    if (node.op == ast::BinaryOp::Div && it == spine.rbegin() && !value.type.is_error())
+      if (std::optional<Value> unit = divided_by_own_length(node.lhs, lhs, rhs, node.range)) value = *unit;
     if (&node != &e) value = record(&node, std::move(value));  // expr() records the outermost
   }
   return value;

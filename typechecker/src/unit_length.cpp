@@ -4,6 +4,10 @@
 // declared normal or direction) the checker says so. And a unit direction's z in a
 // normal-aligned frame is its cosine.
 
+#include <algorithm>
+
+#include <safegi/parser/walk.hpp>
+
 #include "checker_impl.hpp"
 
 namespace safegi::detail {
@@ -22,8 +26,9 @@ void Checker::mark_stage_normal(Type& t, const ast::TypeQualifiers& q, bool flat
 std::string Checker::not_unit_subject(const Value& v) const {
   const std::string name = written_name(v);
   return "'" + name + "', a " + geometry_name(v.type.geometry) +
-         (v.type.length_loss == Type::LengthLoss::scaled ? " carried by a normal matrix that may scale"
-                                                         : " interpolated across the primitive");
+         (v.type.length_loss == Type::LengthLoss::scaled     ? " carried by a normal matrix that may scale"
+          : v.type.length_loss == Type::LengthLoss::filtered ? " filtered by a texture lookup"
+                                                             : " interpolated across the primitive");
 }
 
 // The value as written (`vs.n`, not the block `vs`), where it is one short line.
@@ -83,6 +88,81 @@ std::optional<Dimension> Checker::frame_cosine(const Type& t) const {
   const bool unit = t.geometry == Geometry::direction || t.geometry == Geometry::normal;
   if (!unit || t.length_loss != Type::LengthLoss::none || !t.from.is_known() || !result_.registry.is_frame_space(t.from.id)) return std::nullopt;
   return result_.registry.find_dimension("proj");
+}
+
+namespace {
+
+const ast::Expr* without_parens(const ast::Expr* e) {
+  while (const auto* p = e ? ast::dyn_cast<ast::ParenExpr>(e) : nullptr) e = p->inner;
+  return e;
+}
+
+// The variable an assignment, ++/-- or out argument writes: `L` of `L`, `L.x`, `L[i]`.
+const ast::IdentifierExpr* written_variable(const ast::Expr* e) {
+  for (e = without_parens(e); e != nullptr; e = without_parens(e)) {
+    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(e)) return id;
+    if (const auto* m = ast::dyn_cast<ast::MemberExpr>(e)) e = m->base;
+    else if (const auto* i = ast::dyn_cast<ast::IndexExpr>(e)) e = i->base;
+    else return nullptr;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+// Only a local, a parameter or a read-only global: any call may write another global.
+std::optional<LengthOf> Checker::length_of_variable(const ast::Expr* arg) {
+  const auto* id = ast::dyn_cast<ast::IdentifierExpr>(without_parens(arg));
+  const Variable* var = id ? lookup(id->name) : nullptr;
+  if (var == nullptr || var->builtin || !var->range.valid()) return std::nullopt;
+  const bool global = scopes_.front().contains(id->name) && &scopes_.front().at(id->name) == var;
+  if (global && !var->read_only) return std::nullopt;
+  return LengthOf{id->name, var->range, var->version};
+}
+
+std::optional<Value> Checker::divided_by_own_length(const ast::Expr* numerator, const Value& lhs, const Value& rhs,
+                                                    SourceRange range) {
+  const auto* id = numerator ? ast::dyn_cast<ast::IdentifierExpr>(without_parens(numerator)) : nullptr;
+  if (id == nullptr || !rhs.length_of || rhs.length_of->name != id->name) return std::nullopt;
+  const Variable* var = lookup(id->name);
+  if (var == nullptr || var->range != rhs.length_of->declared_at || var->version != rhs.length_of->version) return std::nullopt;
+  if (lhs.type.shape != Shape::vector || !lhs.type.is_floating()) return std::nullopt;
+  std::vector<Value> args{lhs};
+  Value unit = builtin_call(nullptr, "normalize", *builtins_->find("normalize"), args, range, range);
+  if (unit.type.is_error()) return std::nullopt;
+  unit.range = range;
+  return unit;
+}
+
+void Checker::note_write(const ast::Expr* target) {
+  const ast::IdentifierExpr* id = written_variable(target);
+  if (id == nullptr) return;
+  for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
+    if (auto found = scope->find(id->name); found != scope->end()) {
+      ++found->second.version;
+      found->second.length_of.reset();
+      return;
+    }
+}
+
+void Checker::note_writes(const ast::Node* n) {
+  ast::walk(n, [this](const ast::Node& node) {
+    if (const auto* a = ast::dyn_cast<ast::AssignExpr>(&node)) {
+      note_write(a->lhs);
+    } else if (const auto* u = ast::dyn_cast<ast::UnaryExpr>(&node)) {
+      if (u->op == ast::UnaryOp::PreInc || u->op == ast::UnaryOp::PreDec || u->op == ast::UnaryOp::PostInc ||
+          u->op == ast::UnaryOp::PostDec)
+        note_write(u->operand);
+    } else if (const auto* c = ast::dyn_cast<ast::CallExpr>(&node); c && !c->constructor_type) {
+      // A builtin without out parameters writes nothing; a function of the program may write any argument.
+      const std::vector<Signature>* sigs = functions_.contains(c->callee) ? nullptr : builtins_->find(c->callee);
+      const bool writes = sigs == nullptr || std::any_of(sigs->begin(), sigs->end(), [](const Signature& s) {
+                            return std::any_of(s.params.begin(), s.params.end(), [](const auto& p) { return p.is_out; });
+                          });
+      if (writes)
+        for (const ast::Expr* arg : c->args) note_write(arg);
+    }
+  });
 }
 
 }  // namespace safegi::detail

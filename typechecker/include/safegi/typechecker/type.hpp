@@ -114,8 +114,9 @@ struct Type {
   bool normal_matrix = false;
   // Geometry::normal: why it is not of unit length until normalize() (docs/language.md,
   // "What spaces do not reach"): interpolated across a primitive (a fragment shader's
-  // input), or carried by a normal matrix that may scale.
-  enum class LengthLoss : std::uint8_t { none, interpolated, scaled };
+  // input), carried by a normal matrix that may scale, or filtered by a texture lookup
+  // (a G-buffer's normal read with texture(); texelFetch reads it as stored).
+  enum class LengthLoss : std::uint8_t { none, interpolated, scaled, filtered };
   LengthLoss length_loss = LengthLoss::none;
 
   static Type error() { return {}; }

@@ -1,9 +1,7 @@
-#include "walk.hpp"
+#include <safegi/parser/walk.hpp>
 
-namespace safegi::elider_detail {
+namespace safegi::ast {
 namespace {
-
-using namespace ast;
 
 void walk_array_dims(const std::vector<ArrayDim>& dims, const Visitor& visit) {
   for (const ArrayDim& d : dims) walk(d.size, visit);
@@ -198,4 +196,4 @@ void walk(const Node* node, const Visitor& visit) {
   }
 }
 
-}  // namespace safegi::elider_detail
+}  // namespace safegi::ast

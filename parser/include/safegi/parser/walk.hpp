@@ -5,11 +5,11 @@
 
 #include <functional>
 
-#include <safegi/parser/ast.hpp>
+#include "ast.hpp"
 
-namespace safegi::elider_detail {
+namespace safegi::ast {
 
 using Visitor = std::function<void(const ast::Node&)>;
 void walk(const ast::Node* node, const Visitor& visit);
 
-}  // namespace safegi::elider_detail
+}  // namespace safegi::ast
