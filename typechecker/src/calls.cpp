@@ -305,8 +305,8 @@ void Checker::point_given_for_vector(const std::string& name, const Signature& s
   std::size_t i = 0;
   while (i + 1 < args.size() && sig.params[i].type.geometry != Geometry::point) ++i;
   const Value& p = args[i];
-  const std::string what = name_of(p.type) + (p.name.empty() ? std::string() : " '" + p.name + "'");
-  const std::string q = p.name.empty() ? "p" : p.name;
+  const std::string q = p.name.empty() ? "p" : written_name(p);  // `m[3].xyz`, not the matrix `m`
+  const std::string what = name_of(p.type) + (p.name.empty() ? std::string() : " '" + q + "'");
   const std::string origin = "if it is measured from the origin of " + name_of_space(p.type.from) + ", say so: vector<" +
                              name_of_space(p.type.from) + ">(" + q + ")";
   std::string message, hint;

@@ -183,6 +183,7 @@ class Checker {
   bool cast_keeps_physics(const Type& to, const Value& value);
   // Homogeneous idioms (homogeneous.cpp).
   void remember_affine_part(Type& vec4, const std::vector<Value>& args) const;
+  void map_column(Type& column, const Type& map, long long index) const;
   std::optional<Type> affine_part(const Type& vec4, const std::string& swizzle) const;
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
@@ -207,6 +208,7 @@ class Checker {
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
   void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
+  std::optional<Value> pi_multiple_as_angle(const Type& target, const Value& value) const;
   std::optional<DimSlot> conversion_written_out(const Value& a, const DimSlot& da, const Value& b, const DimSlot& db) const;
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);

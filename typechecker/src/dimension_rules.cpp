@@ -62,6 +62,20 @@ void Checker::radians_of_pi_multiple(const std::string& name, std::vector<Value>
   if (d.is_known() && d.value.is_dimensionless() && angle) args[0].type.dim = DimSlot::known(*angle);
 }
 
+// The same number stored into a declared angle (`float<angle> phi = 2.0 * PI * u;`): radians.
+std::optional<Value> Checker::pi_multiple_as_angle(const Type& target, const Value& value) const {
+  if (!value.pi_multiple || target.shape != Shape::scalar || target.is_array()) return std::nullopt;
+  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  const DimSlot want = value_dimension(target, result_.registry), have = value_dimension(value.type, result_.registry);
+  if (!angle || !want.is_known() || !have.is_known() || !have.value.is_dimensionless()) return std::nullopt;
+  const Checked<Dimension> reference = result_.registry.reference(want.value);
+  if (!reference || *reference != *angle) return std::nullopt;
+  Value radians = value;
+  radians.type.dim = DimSlot::known(*angle);
+  radians.pi_multiple = false;
+  return radians;
+}
+
 // A quantity in a unit times the plain number that is that unit's scale is the quantity in
 // reference units: the conversion written out (`fov * (3.14159265 / 180.0)` of an angle in
 // degrees is radians, `lengthCm * 0.01` metres), as `x in radian` would give it.

@@ -358,6 +358,8 @@ Value Checker::assign(const ast::AssignExpr& e) {
 bool Checker::check_assignable(const Type& target, const Value& value, SourceRange target_range,
                                const std::string& target_name, const std::optional<Origin>& target_origin,
                                const char* action) {
+  if (std::optional<Value> radians = pi_multiple_as_angle(target, value))
+    return check_assignable(target, *radians, target_range, target_name, target_origin, action);
   const Type& v = value.type;
   if (target.is_error() || v.is_error()) return true;
   const std::string subject = target_name.empty() ? std::string("a value") : "'" + target_name + "'";
@@ -491,6 +493,7 @@ Value Checker::index(const ast::IndexExpr& e) {
     size = t.columns;
     out.type = Type::vector_of(t.scalar, t.rows);
     out.type.dim = is_map(t.geometry) ? DimSlot::unknown() : t.dim;
+    if (idx.constant) map_column(out.type, t, *idx.constant);
   } else {
     report(Diagnostic::error(e.base->range, "subscripted value of type " + name_of(t) + " is not an array, vector or matrix")
                .with_code(code::E_INDEX_BASE));

@@ -29,6 +29,31 @@ void Checker::remember_affine_part(Type& vec4, const std::vector<Value>& args) c
   vec4.affine_w = static_cast<std::int8_t>(*w);
 }
 
+// A column of an affine map<A, B> (`m[0]` … `m[3]`): the first three are A's axes as vectors of B
+// (unit directions under a rigidmap), the last A's origin as a point of B — as vec4s (w 0 and 1) of
+// a 4×4 map, whose `.xyz` is that, or the vector itself of a 3×3 one. A normal matrix's columns and a
+// projective map's are not: they stay plain.
+void Checker::map_column(Type& column, const Type& map, long long index) const {
+  if ((map.geometry != Geometry::map && map.geometry != Geometry::rigidmap) || map.normal_matrix || map.is_array() ||
+      map.columns != map.rows || (map.rows != 3 && map.rows != 4) || index < 0 || index >= map.columns || !map.to.is_known())
+    return;
+  Type part = Type::vector_of(map.scalar, 3);
+  part.from = map.to;
+  if (index == 3) {
+    part.geometry = Geometry::point;
+  } else {
+    part.geometry = map.geometry == Geometry::rigidmap ? Geometry::direction : Geometry::vector;
+    part.dim = DimSlot::known(Dimension{});
+  }
+  if (part.geometry == Geometry::point) part.dim = value_dimension(part, result_.registry);
+  if (map.rows == 3) {
+    column = part;
+    return;
+  }
+  column.affine = std::make_shared<const Type>(part);
+  column.affine_w = index == 3 ? 1 : 0;
+}
+
 // `.xyz` (`.rgb`, `.stp`) or vec3(v) of a vec4 that remembers its x: x, moved by the maps applied since.
 std::optional<Type> Checker::affine_part(const Type& vec4, const std::string& swizzle) const {
   if (!vec4.affine || vec4.is_array()) return std::nullopt;

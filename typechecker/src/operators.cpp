@@ -397,10 +397,20 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   if (ga == Geometry::point || gb == Geometry::point)
     return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
                   "subtract another point to get a vector, which can be scaled", code::E_POINT_ARITHMETIC);
-  if (op == ast::BinaryOp::Div && !b_scalar && gb != Geometry::spectrum && gb != Geometry::none)
+  const bool per_axis = op == ast::BinaryOp::Div && !b_scalar && vectorish(gb) && (a_scalar || vectorish(ga) || ga == Geometry::none);
+  if (op == ast::BinaryOp::Div && !b_scalar && gb != Geometry::spectrum && gb != Geometry::none && !per_axis)
     return reject("cannot divide by " + name_of(b), "", code::E_INVALID_OPERANDS);
   std::optional<DimSlot> d = combine(da, db, op == ast::BinaryOp::Mul ? 1 : -1);
   if (!d) return reject("dimension exponent overflows in this product", "", code::E_DIMENSION_OVERFLOW);
+  if (per_axis) {
+    // Component-wise quotients by a vector's components (a slab test's `1.0 / d`, `(lower - o) / d`):
+    // a number per axis, no longer a vector of the space.
+    if (!a_scalar && !consistent(a.from, b.from))
+      return reject("cannot divide " + name_of(a) + " by " + name_of(b) + ": they are in different spaces",
+                    space_hint(a.from, b.from), code::E_SPACE_MISMATCH);
+    out.type.dim = *d;  // `shape`: the plain vector type
+    return out;
+  }
   out.type.dim = *d;
   keep_scaled_spelling(out.type.dim, da, db, op == ast::BinaryOp::Div);
   const Geometry g = a_scalar ? gb : ga;
