@@ -38,6 +38,20 @@ struct LengthOf {
   SourceRange declared_at;   // which declaration of that name
   unsigned version = 0;      // its Variable::version then
 };
+// An unannotated `const float PI = 3.14159…;` (or 2π, π/2, 1/π …): which quantity π is depends on
+// its use — a plain number (πr²), radians, steradians (2π the hemisphere, 4π the sphere) or projected
+// steradians (π for the cosine-weighted hemisphere). A product of it with known dimensions is
+// `known · X^exponent`, X one of those for `multiple` (k of kπ); a declared target decides X.
+struct PiFactor {
+  std::string name;      // the constant
+  double multiple = 1;   // k of kπ
+  int exponent = 1;      // X^exponent: −1 for 1/π constants and for dividing by one
+  DimSlot known;         // the rest of the product
+};
+// dimension_rules.cpp: the quantities kπ can be (X of PiFactor).
+bool pi_can_measure(double multiple, const Dimension& x, const DimensionRegistry& registry);
+// The PiFactor of `const float name = value;` when value is kπ or 1/(kπ).
+std::optional<PiFactor> pi_constant(const std::string& name, double value);
 // orientation.cpp: q - p of two points, one of them the shaded one; a ± b of oriented vectors; s * v.
 Orientation point_difference_orientation(const Type& a, const Type& b);
 Orientation sum_orientation(bool add, Orientation a, Orientation b);
@@ -63,6 +77,7 @@ struct Value {
   bool stage_output = false;     // an `out` of the stage, or a member or component of one
   bool pi_multiple = false;      // a plain number made with a multiple of π (2.0 * PI * u): an angle in radians
   std::optional<LengthOf> length_of;  // length(L) of a variable L, or a local that holds it
+  std::optional<PiFactor> pi_factor;  // of unknown dimension only through an unannotated π constant
 };
 
 struct Variable {
@@ -80,6 +95,7 @@ struct Variable {
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   unsigned version = 0;               // how often it may have been written so far (LengthOf::version)
+  std::optional<PiFactor> pi_constant;  // an unannotated const float initialised with kπ or 1/(kπ)
 };
 
 struct Function {
@@ -209,6 +225,12 @@ class Checker {
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
   void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
   std::optional<Value> pi_multiple_as_angle(const Type& target, const Value& value) const;
+  // `known · X^e` of a product or quotient with an unannotated π constant (PiFactor).
+  void carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out) const;
+  // A value that is the target's dimension for no quantity its π constant can be: the dimension it has
+  // with π read as the likeliest quantity (pi_reading), for the message; nothing when it fits.
+  std::optional<DimSlot> pi_factor_misfit(const Type& target, const Value& value) const;
+  std::string pi_reading(const PiFactor& pi, const DimSlot& as) const;
   std::optional<DimSlot> conversion_written_out(const Value& a, const DimSlot& da, const Value& b, const DimSlot& db) const;
   std::optional<Type> frame_constructor(const Type& target, const std::vector<Value>& args) const;
   std::optional<Value> affine_sum(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);

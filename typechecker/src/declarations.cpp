@@ -342,6 +342,9 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       Value init = expr(decl.initializer);
       pi_multiple = init.pi_multiple;
       if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) v.length_of = init.length_of;
+      if (is_const && init.literal && init.number && !declared.is_annotated() && declared.shape == Shape::scalar &&
+          declared.is_floating() && !declared.is_array())
+        v.pi_constant = pi_constant(decl.name, *init.number);
       // Unsized arrays take their size from the initialiser.
       if (!declared.array.empty() && declared.array[0] < 0 && !init.type.array.empty()) declared.array[0] = init.type.array[0];
       const bool infer = !global && !declared.is_annotated() && !declared.is_error() && !init.type.is_error() &&

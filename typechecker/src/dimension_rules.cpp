@@ -2,9 +2,9 @@
 // and "Units"): where a cosine stops being a projection factor, and
 // radians()/degrees() of an angle measured in a unit.
 
-#include <numbers>
-
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
@@ -149,6 +149,103 @@ std::optional<Value> Checker::angle_conversion(const std::string& name, const Va
   e.with_hint(hint);
   report(std::move(e));
   return error_value(call_range);
+}
+
+}  // namespace safegi::detail
+
+namespace safegi::detail {
+
+namespace {
+
+// "π", "2π", "π/2", "3π/4": k of kπ in quarters, as the π rules take them.
+std::string pi_text(double multiple) {
+  const long long quarters = std::llround(std::fabs(multiple) * 4.0);
+  long long num = quarters, den = 4;
+  while (den > 1 && num % 2 == 0) num /= 2, den /= 2;
+  std::string text = (multiple < 0 ? "-" : "") + (num == 1 ? std::string() : std::to_string(num)) + "π";
+  return den == 1 ? text : text + "/" + std::to_string(den);
+}
+
+std::optional<Dimension> projected_solid_angle(const DimensionRegistry& registry) {
+  const std::optional<Dimension> sr = registry.find_dimension("solid_angle"), proj = registry.find_dimension("proj");
+  if (!sr || !proj) return std::nullopt;
+  Checked<Dimension> product = multiply(*sr, *proj);
+  return product ? std::optional<Dimension>(*product) : std::nullopt;
+}
+
+}  // namespace
+
+// kπ is a plain number (πr², 4πr²) or radians for any k; steradians as the hemisphere (2π) or the
+// sphere (4π); projected steradians as the cosine-weighted hemisphere (π) and the lobe normalisations
+// written with 2π, 4π, 8π (Phong's (n + 2)/2π, Blinn's (n + 8)/8π).
+bool pi_can_measure(double multiple, const Dimension& x, const DimensionRegistry& registry) {
+  if (x.is_dimensionless()) return true;
+  const Checked<Dimension> reference = registry.reference(x);
+  const Dimension& q = reference ? *reference : x;
+  const auto one_of = [&](std::initializer_list<double> ks) {
+    return std::any_of(ks.begin(), ks.end(), [&](double k) { return std::fabs(std::fabs(multiple) - k) < 1e-6; });
+  };
+  if (const std::optional<Dimension> angle = registry.find_dimension("angle"); angle && q == *angle) return true;
+  if (const std::optional<Dimension> sr = registry.find_dimension("solid_angle"); sr && q == *sr) return one_of({2, 4});
+  if (const std::optional<Dimension> psa = projected_solid_angle(registry); psa && q == *psa) return one_of({1, 2, 4, 8});
+  return false;
+}
+
+void Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out) const {
+  if ((op != ast::BinaryOp::Mul && op != ast::BinaryOp::Div) || lhs.pi_factor.has_value() == rhs.pi_factor.has_value() ||
+      value_dimension(out.type, result_.registry).is_known())
+    return;
+  const bool left = lhs.pi_factor.has_value();
+  const DimSlot other = value_dimension((left ? rhs : lhs).type, result_.registry);
+  if (!other.is_known()) return;
+  PiFactor pi = *(left ? lhs : rhs).pi_factor;
+  const int sign = op == ast::BinaryOp::Mul ? 1 : -1;
+  const std::optional<DimSlot> known = left ? combine(pi.known, other, sign) : combine(other, pi.known, sign);
+  if (!known || !known->is_known()) return;
+  if (!left && op == ast::BinaryOp::Div) pi.exponent = -pi.exponent;
+  pi.known = *known;
+  out.pi_factor = pi;
+}
+
+std::optional<DimSlot> Checker::pi_factor_misfit(const Type& target, const Value& value) const {
+  if (!value.pi_factor || std::abs(value.pi_factor->exponent) != 1 || !value.pi_factor->known.is_known()) return std::nullopt;
+  const DimensionRegistry& reg = result_.registry;
+  const DimSlot want = value_dimension(target, reg);
+  if (!want.is_known() || value_dimension(value.type, reg).state != DimSlot::State::unknown) return std::nullopt;
+  const PiFactor& pi = *value.pi_factor;
+  Checked<Dimension> x = divide(want.value, pi.known.value);
+  if (x && pi.exponent < 0) x = divide(Dimension{}, *x);
+  if (!x || pi_can_measure(pi.multiple, *x, reg)) return std::nullopt;
+  // A radiometric target (steradians or proj in it) reads π as a lobe's or a pdf's projected
+  // steradians where kπ can be that; any other, as the plain number (4πr² for an area).
+  Dimension as{};
+  const std::optional<Dimension> psa = projected_solid_angle(reg);
+  bool radiometric = false;
+  for (const Factor& f : want.value.factors())
+    if (psa && psa->exponent(f.base) != 0) radiometric = true;
+  if (radiometric && pi_can_measure(pi.multiple, *psa, reg)) as = *psa;
+  Checked<Dimension> power = as;
+  if (pi.exponent < 0) power = divide(Dimension{}, as);
+  Checked<Dimension> found = power ? multiply(pi.known.value, *power) : power;
+  if (!found) return std::nullopt;
+  return DimSlot::known(*found);
+}
+
+// "π projected steradians", "the plain number 2π".
+std::string Checker::pi_reading(const PiFactor& pi, const DimSlot& as) const {
+  const std::string k = pi_text(pi.multiple);
+  const std::optional<Dimension> psa = projected_solid_angle(result_.registry);
+  Checked<Dimension> x = divide(as.value, pi.known.value);
+  if (x && pi.exponent < 0) x = divide(Dimension{}, *x);
+  if (x && psa && *x == *psa) return k + " projected steradians (the cosine-weighted hemisphere)";
+  return "the plain number " + k;
+}
+
+std::optional<PiFactor> pi_constant(const std::string& name, double value) {
+  if (is_pi_multiple(value)) return PiFactor{name, value / std::numbers::pi, 1, DimSlot::known(Dimension{})};
+  if (value != 0.0 && is_pi_multiple(1.0 / value))
+    return PiFactor{name, 1.0 / (value * std::numbers::pi), -1, DimSlot::known(Dimension{})};
+  return std::nullopt;
 }
 
 }  // namespace safegi::detail

@@ -45,6 +45,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     Value v;
     v.type = var->type;
     v.range = e.range;
+    v.pi_factor = var->pi_constant;
     v.lvalue = true;
     v.read_only = var->read_only;
     v.stage_output = var->stage_output;
@@ -333,6 +334,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     if (value.type.is_error()) return error_value(e.range);
     if (e.op == ast::AssignOp::Div)
       if (std::optional<Value> unit = divided_by_own_length(e.lhs, lhs, rhs, e.range)) value = *unit;
+    carry_pi_factor(kOps[static_cast<int>(e.op)], lhs, rhs, value);
   }
   note_write(e.lhs);
   // `sum += x` of a local that starts at zero: the sum is x's quantity (plain + x is x's, unchecked).
@@ -402,6 +404,16 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
     return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
+  if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, value)) {
+    Type shown = v;
+    shown.dim = *as_pi;
+    const std::string taken = std::string(action) == "return"
+        ? "cannot return a value of type " + name_of(shown) + " from '" + target_name + "', which returns " + name_of(target)
+        : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(shown);
+    return fail(taken + ", taking '" + value.pi_factor->name + "' as " + pi_reading(*value.pi_factor, *as_pi) +
+                    ": no quantity π measures makes it " + name_of(target),
+                physics_hint(target.dim, *as_pi, value.range), code::E_DIMENSION_MISMATCH);
+  }
   if (v.length_loss != Type::LengthLoss::none && target.length_loss == Type::LengthLoss::none &&
       (target.geometry == Geometry::normal || target.geometry == Geometry::direction)) {
     const std::string name = written_name(value);
