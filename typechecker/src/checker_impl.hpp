@@ -78,6 +78,7 @@ struct Value {
   bool pi_multiple = false;      // a plain number made with a multiple of π (2.0 * PI * u): an angle in radians
   std::optional<LengthOf> length_of;  // length(L) of a variable L, or a local that holds it
   std::optional<PiFactor> pi_factor;  // of unknown dimension only through an unannotated π constant
+  std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
 };
 
 struct Variable {
@@ -96,6 +97,7 @@ struct Variable {
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   unsigned version = 0;               // how often it may have been written so far (LengthOf::version)
   std::optional<PiFactor> pi_constant;  // an unannotated const float initialised with kπ or 1/(kπ)
+  std::optional<SourceRange> w_divided_at;  // Value::w_divided_at
 };
 
 struct Function {
@@ -204,6 +206,11 @@ class Checker {
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
+  // A user function's parameters: homogeneous coordinates without their w for a parameter that is not
+  // an hpoint, and a vec4 whose xyz were divided by its w (divided_in_place) for one that is.
+  bool homogeneous_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args);
+  // `h.xyz /= h.w;`, `h.xyz = h.xyz / h.w;` of an hpoint variable h: from here h is a plain vec4, remembered as divided.
+  void divided_in_place(const ast::AssignExpr& e);
   // Interpolated normals and directions (unit_length.cpp).
   void mark_stage_normal(Type& t, const ast::TypeQualifiers& q, bool flat = false) const;
   std::string not_unit_subject(const Value& v) const;

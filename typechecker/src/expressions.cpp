@@ -46,6 +46,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.type = var->type;
     v.range = e.range;
     v.pi_factor = var->pi_constant;
+    v.w_divided_at = var->w_divided_at;
     v.lvalue = true;
     v.read_only = var->read_only;
     v.stage_output = var->stage_output;
@@ -337,6 +338,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     carry_pi_factor(kOps[static_cast<int>(e.op)], lhs, rhs, value);
   }
   note_write(e.lhs);
+  divided_in_place(e);
   // `sum += x` of a local that starts at zero: the sum is x's quantity (plain + x is x's, unchecked).
   const bool summed = e.op == ast::AssignOp::Add || e.op == ast::AssignOp::Sub;
   if (rebind_inferred_local(e, lhs, summed && !lhs.type.is_annotated() ? rhs : value)) {

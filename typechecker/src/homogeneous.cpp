@@ -269,3 +269,69 @@ std::optional<Type> Checker::frame_constructor(const Type& target, const std::ve
 }
 
 }  // namespace safegi::detail
+
+namespace safegi::detail {
+
+namespace {
+
+// `h.<member>` of a variable h: its name, else empty.
+std::string member_of_variable(const ast::Expr* e, std::string_view member) {
+  const auto* m = ast::dyn_cast<ast::MemberExpr>(e);
+  const auto* id = m ? ast::dyn_cast<ast::IdentifierExpr>(m->base) : nullptr;
+  return id && m->member == member ? id->name : std::string();
+}
+
+}  // namespace
+
+bool Checker::homogeneous_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args) {
+  for (std::size_t i = 0; i < args.size() && i < params.size(); ++i) {
+    const Type& a = args[i].type;
+    const std::string argument = "argument " + std::to_string(i + 1) + " of '" + callee + "'";
+    if (params[i].geometry == Geometry::hpoint && args[i].w_divided_at && a.shape == Shape::vector && a.rows == 4) {
+      Diagnostic d = Diagnostic::error(args[i].range, argument + " is '" + written_name(args[i]) +
+                                                          "', whose xyz were divided by its w: it is no longer the homogeneous point '" +
+                                                          callee + "' takes")
+                         .with_code(code::E_KIND_MISMATCH);
+      d.with_note(Diagnostic::note(*args[i].w_divided_at, "divided here"));
+      d.with_hint("divide by w in one place: pass the vec4 as the projection made it, or take the divided coordinates");
+      report(std::move(d));
+      return false;
+    }
+    if (params[i].geometry != Geometry::hpoint && a.geometry == Geometry::hpoint && a.shape == Shape::vector && a.rows < 4 &&
+        a.weight != 0 && !a.is_array()) {
+      Diagnostic d = Diagnostic::error(args[i].range, argument + " has type " + name_of(a) +
+                                                          ": the parameter takes these coordinates of the homogeneous point but not the w they are divided by")
+                         .with_code(code::E_KIND_MISMATCH);
+      add_origin_note(d, args[i]);
+      d.with_hint("divide by w first (h.xy / h.w), or pass the whole vec4 and divide where it is used");
+      report(std::move(d));
+      return false;
+    }
+  }
+  return true;
+}
+
+void Checker::divided_in_place(const ast::AssignExpr& e) {
+  const auto* target = ast::dyn_cast<ast::MemberExpr>(e.lhs);
+  const auto* id = target ? ast::dyn_cast<ast::IdentifierExpr>(target->base) : nullptr;
+  if (id == nullptr || target->member.find_first_of("wq") != std::string::npos || target->member.size() < 2) return;
+  bool by_own_w = false;
+  if (e.op == ast::AssignOp::Div) {
+    by_own_w = member_of_variable(e.rhs, "w") == id->name;
+  } else if (e.op == ast::AssignOp::Assign) {
+    const auto* quotient = ast::dyn_cast<ast::BinaryExpr>(e.rhs);
+    by_own_w = quotient && quotient->op == ast::BinaryOp::Div && member_of_variable(quotient->rhs, "w") == id->name &&
+               member_of_variable(quotient->lhs, target->member) == id->name;
+  }
+  if (!by_own_w) return;
+  for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
+    if (auto found = scope->find(id->name); found != scope->end()) {
+      Variable& h = found->second;
+      if (h.type.geometry != Geometry::hpoint || h.type.shape != Shape::vector || h.type.rows != 4 || h.type.is_array()) return;
+      h.type = Type::vector_of(h.type.scalar, 4);  // coordinates and a stale w: plain from here on
+      h.w_divided_at = e.range;
+      return;
+    }
+}
+
+}  // namespace safegi::detail
