@@ -116,11 +116,15 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   const auto vec3 = [](const Type& t) { return t.shape == Shape::vector && t.rows == 3 && t.is_floating() && !t.is_array(); };
   const bool frame = (square_map(lhs.type, 3) && vec3(rhs.type)) || (vec3(lhs.type) && square_map(rhs.type, 3));
   const bool row = frame ? square_map(rhs.type, 3) : (is_vec4(lhs.type) && square_map(rhs.type, 4));
-  if (square_map(lhs.type, 4) && lhs.type.geometry != Geometry::projmap && rhs.type.geometry == Geometry::hpoint &&
-      rhs.type.shape == Shape::vector && rhs.type.rows == 4 && rhs.type.weight == 1) {
+  // h.xyz /= h.w left h's w as it was (divided_in_place): not 1 either.
+  const bool stale_w = rhs.w_divided_at && is_vec4(rhs.type);
+  if (square_map(lhs.type, 4) && lhs.type.geometry != Geometry::projmap &&
+      ((rhs.type.geometry == Geometry::hpoint && rhs.type.shape == Shape::vector && rhs.type.rows == 4 && rhs.type.weight == 1) ||
+       stale_w)) {
     // An affine map takes points with w = 1; a projection's output has any w until it is divided.
     const std::string h = operand_text(rhs, "h");
-    operand_mismatch("cannot apply " + name_of(lhs.type) + " to " + name_of(rhs.type) +
+    operand_mismatch("cannot apply " + name_of(lhs.type) + " to " +
+                         (stale_w ? "'" + h + "', whose xyz alone were divided by its w" : name_of(rhs.type)) +
                          ": an affine map takes a point as (p, 1.0), and a homogeneous point's w is 1 only once it is divided by it",
                      lhs, rhs, op_range,
                      "divide the whole vec4 by its w first: " + h + " / " + h + ".w (dividing only " + h + ".xyz leaves w as it was)",
