@@ -19,10 +19,21 @@ void trace(std::string line);
 // "bytes <count> fnv1a64:<hex>": what a call hands over, for the trace.
 void trace_bytes(std::string_view what, std::span<const std::byte> bytes);
 
+// What the trace shows of the create infos and descriptor writes (sizes,
+// formats, sets, bindings, ranges); other pointers are "h" (their address varies).
+std::string describe(const VkBufferCreateInfo* info);
+std::string describe(const VkImageCreateInfo* info);
+std::string describe(const VkDescriptorSetLayoutCreateInfo* info);
+std::string describe(const VkPipelineLayoutCreateInfo* info);
+std::string describe(const VkWriteDescriptorSet* write);
+std::string describe(const VkComputePipelineCreateInfo* info);
+
 template <class A>
 void append_argument(std::string& line, const A& argument) {
   line += ' ';
-  if constexpr (std::is_pointer_v<A>) line += argument ? "h" : "0";  // handles and structs: their address varies
+  if constexpr (requires { describe(argument); }) line += argument ? describe(argument) : "0";
+  else if constexpr (std::is_null_pointer_v<A>) line += '0';
+  else if constexpr (std::is_pointer_v<A>) line += argument ? "h" : "0";
   else if constexpr (std::is_enum_v<A>) line += std::to_string(static_cast<long long>(argument));
   else if constexpr (std::is_floating_point_v<A>) line += std::to_string(argument);
   else if constexpr (std::is_integral_v<A>) line += std::to_string(argument);

@@ -182,6 +182,41 @@ void trace_bytes(std::string_view what, std::span<const std::byte> bytes) {
   trace(std::string(what) + " bytes " + std::to_string(bytes.size()) + " fnv1a64:" + hex);
 }
 
+std::string describe(const VkBufferCreateInfo* info) {
+  return "{size " + std::to_string(info->size) + " usage " + std::to_string(info->usage) + '}';
+}
+std::string describe(const VkImageCreateInfo* info) {
+  return "{format " + std::to_string(info->format) + ' ' + std::to_string(info->extent.width) + 'x' +
+         std::to_string(info->extent.height) + " usage " + std::to_string(info->usage) + '}';
+}
+std::string describe(const VkDescriptorSetLayoutCreateInfo* info) {
+  std::string text = "{";
+  for (std::uint32_t i = 0; i < info->bindingCount; ++i) {
+    const VkDescriptorSetLayoutBinding& b = info->pBindings[i];
+    text += (i ? " " : "") + std::string("binding ") + std::to_string(b.binding) + " type " +
+            std::to_string(b.descriptorType) + " count " + std::to_string(b.descriptorCount);
+  }
+  return text + '}';
+}
+std::string describe(const VkPipelineLayoutCreateInfo* info) {
+  std::string text = "{sets " + std::to_string(info->setLayoutCount);
+  for (std::uint32_t i = 0; i < info->pushConstantRangeCount; ++i)
+    text += " push " + std::to_string(info->pPushConstantRanges[i].offset) + '+' +
+            std::to_string(info->pPushConstantRanges[i].size);
+  return text + '}';
+}
+std::string describe(const VkWriteDescriptorSet* write) {
+  return "{binding " + std::to_string(write->dstBinding) + " type " + std::to_string(write->descriptorType) +
+         " count " + std::to_string(write->descriptorCount) + '}';
+}
+std::string describe(const VkComputePipelineCreateInfo* info) {
+  const VkSpecializationInfo* s = info->stage.pSpecializationInfo;
+  std::string text = "{entry " + std::string(info->stage.pName);
+  for (std::uint32_t i = 0; s && i < s->mapEntryCount; ++i)
+    text += " constant " + std::to_string(s->pMapEntries[i].constantID) + '@' + std::to_string(s->pMapEntries[i].offset);
+  return text + '}';
+}
+
 std::string result_name(VkResult result) {
   switch (result) {
     case VK_SUCCESS: return "VK_SUCCESS";

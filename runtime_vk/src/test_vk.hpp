@@ -1,21 +1,16 @@
 #pragma once
 // Vulkan test helpers: one context per test suite (lavapipe unless
 // SAFEGI_VK_DEVICE says otherwise; validation as SAFEGI_VK_VALIDATION says,
-// which ctest sets to fatal), and the test shaders safeglslc compiled at
-// build time (SAFEGI_VK_SHADER_DIR).
+// which ctest sets to fatal) and error_of().
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <string>
 
 #include "safegi/runtime_vk/runtime_vk.hpp"
+#include "test_shaders.hpp"
 
 namespace safegi::vk::testing {
-
-inline ComputeShader test_shader(const std::string& stem) {
-  const std::string base = std::string(SAFEGI_VK_SHADER_DIR) + "/" + stem;
-  return {read_spirv_file(base + ".spv"), read_symbol_table_file(base + ".json"), stem};
-}
 
 class VulkanTest : public ::testing::Test {
  protected:
