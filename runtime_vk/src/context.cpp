@@ -29,8 +29,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverity
                                                      VkDebugUtilsMessageTypeFlagsEXT,
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
   auto* impl = static_cast<ContextImpl*>(user);
-  const std::string message = std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning") +
-                              ": " + (data && data->pMessage ? data->pMessage : "(no message)");
+  const std::string message =
+      std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning") + ": " +
+      (data && data->pMessage ? data->pMessage : "(no message)");
   if (impl->info.validation == Validation::fatal) {
     std::fprintf(stderr, "safegi::vk: validation layer %s\n", message.c_str());
     std::fflush(stderr);
@@ -46,14 +47,16 @@ bool layer_available(const char* name) {
   vkEnumerateInstanceLayerProperties(&count, nullptr);
   std::vector<VkLayerProperties> layers(count);
   vkEnumerateInstanceLayerProperties(&count, layers.data());
-  return std::any_of(layers.begin(), layers.end(), [name](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
+  return std::any_of(layers.begin(), layers.end(),
+                     [name](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
 void create_instance(ContextImpl& impl) {
   const bool validation = impl.info.validation != Validation::off;
   if (validation && !layer_available(kValidationLayer))
-    throw ContextError("safegi::vk: the validation layer VK_LAYER_KHRONOS_validation is not installed "
-                       "(Debian: vulkan-validationlayers), or set SAFEGI_VK_VALIDATION=0");
+    throw ContextError(
+        "safegi::vk: the validation layer VK_LAYER_KHRONOS_validation is not installed "
+        "(Debian: vulkan-validationlayers), or set SAFEGI_VK_VALIDATION=0");
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "safegi";
   app.pEngineName = "safegi runtime_vk";
@@ -61,8 +64,7 @@ void create_instance(ContextImpl& impl) {
   VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messenger.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                          VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = on_validation_message;
   messenger.pUserData = &impl;
@@ -101,7 +103,8 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
   std::vector<VkPhysicalDevice> devices(count);
   check(SAFEGI_VK(vkEnumeratePhysicalDevices, impl.instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
   if (devices.empty())
-    throw ContextError("safegi::vk: no Vulkan device (is a driver installed? Debian: mesa-vulkan-drivers for lavapipe)");
+    throw ContextError(
+        "safegi::vk: no Vulkan device (is a driver installed? Debian: mesa-vulkan-drivers for lavapipe)");
   std::vector<std::string> names;
   for (VkPhysicalDevice d : devices) {
     VkPhysicalDeviceProperties p;
@@ -119,15 +122,17 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
     return std::nullopt;
   };
   std::optional<std::uint32_t> chosen;
-  const bool by_index = !choice.empty() && std::all_of(choice.begin(), choice.end(), [](unsigned char c) { return std::isdigit(c); });
+  const bool by_index =
+      !choice.empty() && std::all_of(choice.begin(), choice.end(), [](unsigned char c) { return std::isdigit(c); });
   for (std::uint32_t i = 0; i < devices.size() && !chosen; ++i) {
-    if (by_index ? std::to_string(i) == choice
-                 : choice.empty() ? compute_family(devices[i]).has_value()
-                                  : lower(names[i]).find(lower(choice)) != std::string::npos)
+    if (by_index         ? std::to_string(i) == choice
+        : choice.empty() ? compute_family(devices[i]).has_value()
+                         : lower(names[i]).find(lower(choice)) != std::string::npos)
       chosen = i;
   }
   if (!chosen)
-    throw ContextError("safegi::vk: no Vulkan device " + (choice.empty() ? std::string("with a compute queue") : "matching '" + choice + "'") +
+    throw ContextError("safegi::vk: no Vulkan device " +
+                       (choice.empty() ? std::string("with a compute queue") : "matching '" + choice + "'") +
                        " (SAFEGI_VK_DEVICE: an index or part of a name); the devices are:" + device_list(names));
   const auto family = compute_family(devices[*chosen]);
   if (!family) throw ContextError("safegi::vk: device " + names[*chosen] + " has no compute queue");
@@ -213,32 +218,46 @@ std::string describe(const VkComputePipelineCreateInfo* info) {
   const VkSpecializationInfo* s = info->stage.pSpecializationInfo;
   std::string text = "{entry " + std::string(info->stage.pName);
   for (std::uint32_t i = 0; s && i < s->mapEntryCount; ++i)
-    text += " constant " + std::to_string(s->pMapEntries[i].constantID) + '@' + std::to_string(s->pMapEntries[i].offset);
+    text +=
+        " constant " + std::to_string(s->pMapEntries[i].constantID) + '@' + std::to_string(s->pMapEntries[i].offset);
   return text + '}';
 }
 
 std::string result_name(VkResult result) {
   switch (result) {
-    case VK_SUCCESS: return "VK_SUCCESS";
-    case VK_NOT_READY: return "VK_NOT_READY";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    case VK_INCOMPLETE: return "VK_INCOMPLETE";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
-    case VK_ERROR_INVALID_SHADER_NV: return "VK_ERROR_INVALID_SHADER_NV";
-    default: return "VkResult " + std::to_string(static_cast<int>(result));
+    case VK_SUCCESS:
+      return "VK_SUCCESS";
+    case VK_NOT_READY:
+      return "VK_NOT_READY";
+    case VK_TIMEOUT:
+      return "VK_TIMEOUT";
+    case VK_INCOMPLETE:
+      return "VK_INCOMPLETE";
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+      return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+      return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED:
+      return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST:
+      return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_LAYER_NOT_PRESENT:
+      return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT:
+      return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_FEATURE_NOT_PRESENT:
+      return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+      return "VK_ERROR_INCOMPATIBLE_DRIVER";
+    case VK_ERROR_INVALID_SHADER_NV:
+      return "VK_ERROR_INVALID_SHADER_NV";
+    default:
+      return "VkResult " + std::to_string(static_cast<int>(result));
   }
 }
 
 void check(VkResult result, std::string_view what) {
-  if (result != VK_SUCCESS)
-    throw VulkanError("safegi::vk: " + std::string(what) + " failed: " + result_name(result));
+  if (result != VK_SUCCESS) throw VulkanError("safegi::vk: " + std::string(what) + " failed: " + result_name(result));
 }
 
 ContextImpl::~ContextImpl() {

@@ -30,8 +30,9 @@ VkDeviceMemory allocate(ContextImpl& context, VkMemoryRequirements requirements,
   return memory;
 }
 
-void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags from_access,
-                VkAccessFlags to_access, VkPipelineStageFlags from_stage, VkPipelineStageFlags to_stage);
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                VkAccessFlags from_access, VkAccessFlags to_access, VkPipelineStageFlags from_stage,
+                VkPipelineStageFlags to_stage);
 
 }  // namespace
 
@@ -56,8 +57,8 @@ Buffer::Buffer(ContextImpl& context, std::size_t bytes, BufferUse use) : context
   try {
     VkMemoryRequirements requirements;
     SAFEGI_VK(vkGetBufferMemoryRequirements, context_->device, buffer_, &requirements);
-    memory_ = allocate(*context_, requirements,
-                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    memory_ =
+        allocate(*context_, requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     check(SAFEGI_VK(vkBindBufferMemory, context_->device, buffer_, memory_, VkDeviceSize{0}), "vkBindBufferMemory");
     void* mapped = nullptr;
     check(SAFEGI_VK(vkMapMemory, context_->device, memory_, VkDeviceSize{0}, VkDeviceSize{VK_WHOLE_SIZE},
@@ -198,8 +199,9 @@ namespace {
 
 // Moves the whole image from one layout to another, ordering `from_access`
 // work in `from_stage` before `to_access` work in `to_stage`.
-void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags from_access,
-                VkAccessFlags to_access, VkPipelineStageFlags from_stage, VkPipelineStageFlags to_stage) {
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                VkAccessFlags from_access, VkAccessFlags to_access, VkPipelineStageFlags from_stage,
+                VkPipelineStageFlags to_stage) {
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = from_access;
   barrier.dstAccessMask = to_access;
@@ -227,9 +229,11 @@ void copy(ContextImpl& context, VkImage image, VkBuffer buffer, int width, int h
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
     if (to_image)
-      SAFEGI_VK(vkCmdCopyBufferToImage, commands, buffer, image, during, 1u, static_cast<const VkBufferImageCopy*>(&region));
+      SAFEGI_VK(vkCmdCopyBufferToImage, commands, buffer, image, during, 1u,
+                static_cast<const VkBufferImageCopy*>(&region));
     else
-      SAFEGI_VK(vkCmdCopyImageToBuffer, commands, image, during, buffer, 1u, static_cast<const VkBufferImageCopy*>(&region));
+      SAFEGI_VK(vkCmdCopyImageToBuffer, commands, image, during, buffer, 1u,
+                static_cast<const VkBufferImageCopy*>(&region));
     transition(commands, image, during, VK_IMAGE_LAYOUT_GENERAL, transfer,
                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
