@@ -57,6 +57,15 @@ auto call(const char* name, Function* function, Arguments... arguments) {
   return function(arguments...);
 }
 
+// A Vulkan struct with its sType set and every other member zero (a
+// designated sType alone leaves the rest to -Wmissing-field-initializers).
+template <class Info>
+Info make(VkStructureType type) {
+  Info info{};
+  info.sType = type;
+  return info;
+}
+
 // Throws VulkanError "safegi::vk: <what> failed: VK_ERROR_..." unless VK_SUCCESS.
 void check(VkResult result, std::string_view what);
 std::string result_name(VkResult result);

@@ -58,11 +58,11 @@ void create_instance(ContextImpl& impl) {
     throw ContextError(
         "safegi::vk: the validation layer VK_LAYER_KHRONOS_validation is not installed "
         "(Debian: vulkan-validationlayers), or set SAFEGI_VK_VALIDATION=0");
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   app.pApplicationName = "safegi";
   app.pEngineName = "safegi runtime_vk";
   app.apiVersion = VK_API_VERSION_1_2;
-  VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  auto messenger = make<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
   messenger.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
   messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
@@ -71,7 +71,7 @@ void create_instance(ContextImpl& impl) {
   messenger.pUserData = &impl;
   const char* layers[] = {kValidationLayer};
   const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-  VkInstanceCreateInfo create{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  auto create = make<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
   create.pApplicationInfo = &app;
   if (validation) {
     create.enabledLayerCount = 1;
@@ -147,8 +147,8 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
   impl.info.device_name = properties.deviceName;
   impl.info.api_version = properties.apiVersion;
   impl.info.software = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-  VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  auto driver = make<VkPhysicalDeviceDriverProperties>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
+  auto properties2 = make<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
   properties2.pNext = &driver;
   if (VK_API_VERSION_MINOR(properties.apiVersion) >= 2 || VK_API_VERSION_MAJOR(properties.apiVersion) > 1) {
     vkGetPhysicalDeviceProperties2(impl.physical, &properties2);
@@ -158,16 +158,16 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
 
 void create_device(ContextImpl& impl) {
   const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  auto queue = make<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
   queue.queueFamilyIndex = impl.queue_family;
   queue.queueCount = 1;
   queue.pQueuePriorities = &priority;
-  VkDeviceCreateInfo create{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  auto create = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
   create.queueCreateInfoCount = 1;
   create.pQueueCreateInfos = &queue;
   check(SAFEGI_VK(vkCreateDevice, impl.physical, &create, nullptr, &impl.device), "vkCreateDevice");
   SAFEGI_VK(vkGetDeviceQueue, impl.device, impl.queue_family, 0u, &impl.queue);
-  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  auto pool = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = impl.queue_family;
   check(SAFEGI_VK(vkCreateCommandPool, impl.device, &pool, nullptr, &impl.pool), "vkCreateCommandPool");
@@ -283,7 +283,7 @@ std::uint32_t ContextImpl::memory_type(std::uint32_t type_bits, VkMemoryProperty
 }
 
 void ContextImpl::submit(const std::function<void(VkCommandBuffer)>& record) {
-  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  auto allocate = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   allocate.commandPool = pool;
   allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocate.commandBufferCount = 1;
@@ -291,14 +291,14 @@ void ContextImpl::submit(const std::function<void(VkCommandBuffer)>& record) {
   check(SAFEGI_VK(vkAllocateCommandBuffers, device, &allocate, &commands), "vkAllocateCommandBuffers");
   VkFence fence = VK_NULL_HANDLE;
   try {
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(SAFEGI_VK(vkBeginCommandBuffer, commands, &begin), "vkBeginCommandBuffer");
     record(commands);
     check(SAFEGI_VK(vkEndCommandBuffer, commands), "vkEndCommandBuffer");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    auto fence_info = make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
     check(SAFEGI_VK(vkCreateFence, device, &fence_info, nullptr, &fence), "vkCreateFence");
-    VkSubmitInfo submit_info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    auto submit_info = make<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
     submit_info.commandBufferCount = 1;
     submit_info.pCommandBuffers = &commands;
     check(SAFEGI_VK(vkQueueSubmit, queue, 1u, &submit_info, fence), "vkQueueSubmit");

@@ -119,7 +119,7 @@ void create_layouts(PipelineImpl& p) {
     std::vector<VkDescriptorSetLayoutBinding> entries;
     for (const Binding& b : p.bindings)
       if (b.slot.set == set) entries.push_back({b.slot.binding, b.type, b.count, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-    VkDescriptorSetLayoutCreateInfo create{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    auto create = make<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     create.bindingCount = static_cast<std::uint32_t>(entries.size());
     create.pBindings = entries.data();
     VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
@@ -128,7 +128,7 @@ void create_layouts(PipelineImpl& p) {
     p.set_layouts.push_back(set_layout);
   }
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, p.push_size};
-  VkPipelineLayoutCreateInfo create{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  auto create = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   create.setLayoutCount = static_cast<std::uint32_t>(p.set_layouts.size());
   create.pSetLayouts = p.set_layouts.data();
   create.pushConstantRangeCount = p.push_block ? 1u : 0u;
@@ -139,12 +139,12 @@ void create_layouts(PipelineImpl& p) {
   for (const Binding& b : p.bindings) counts[b.type] += b.count;
   std::vector<VkDescriptorPoolSize> sizes;
   for (const auto& [type, count] : counts) sizes.push_back({type, count});
-  VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  auto pool = make<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.maxSets = set_count;
   pool.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   pool.pPoolSizes = sizes.data();
   check(SAFEGI_VK(vkCreateDescriptorPool, device, &pool, kNoAllocator, &p.pool), "vkCreateDescriptorPool");
-  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  auto allocate = make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   allocate.descriptorPool = p.pool;
   allocate.descriptorSetCount = set_count;
   allocate.pSetLayouts = p.set_layouts.data();
@@ -188,7 +188,7 @@ void resolve_specialization(const PipelineImpl& p, const Specialization& special
 
 void create_pipeline(PipelineImpl& p, const std::vector<std::uint32_t>& spirv, const Specialization& specialization) {
   VkDevice device = p.context->device;
-  VkShaderModuleCreateInfo module{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  auto module = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
   module.codeSize = spirv.size() * 4;
   module.pCode = spirv.data();
   trace_bytes("shader module", std::as_bytes(std::span(spirv)));
@@ -198,8 +198,8 @@ void create_pipeline(PipelineImpl& p, const std::vector<std::uint32_t>& spirv, c
   resolve_specialization(p, specialization, entries, data);
   trace_bytes("specialization", std::as_bytes(std::span(data)));
   VkSpecializationInfo info{static_cast<std::uint32_t>(entries.size()), entries.data(), data.size() * 4, data.data()};
-  VkComputePipelineCreateInfo create{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  create.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  auto create = make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+  create.stage = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   create.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   create.stage.module = p.module;
   create.stage.pName = "main";
@@ -236,6 +236,7 @@ bool block_named(const gl::Symbol& s, std::string_view name) {
 }  // namespace detail
 
 using detail::block_named;
+using detail::make;
 using detail::PipelineImpl;
 
 ComputePipeline::ComputePipeline(Context& context, ComputeShader shader, Specialization specialization)
@@ -440,7 +441,7 @@ void ComputePipeline::bind_buffer(descriptor_slot slot, const detail::Buffer& bu
     throw ResourceError(p.at(s) + "block '" + s.name + "' is " + std::to_string(*s.size) +
                         " bytes but the buffer bound to it holds " + std::to_string(buffer.size()));
   VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   write.dstSet = p.sets[slot.set];
   write.dstBinding = slot.binding;
   write.descriptorCount = 1;
@@ -458,7 +459,7 @@ void ComputePipeline::bind_image(descriptor_slot slot, const detail::Image& imag
     throw BindingError(p.name + ": error: no storage image at set " + std::to_string(slot.set) + ", binding " +
                        std::to_string(slot.binding));
   VkDescriptorImageInfo info{VK_NULL_HANDLE, image.view(), VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   write.dstSet = p.sets[slot.set];
   write.dstBinding = slot.binding;
   write.descriptorCount = 1;
@@ -486,7 +487,7 @@ void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x
   if (p.push_block && push_constants.block() != *p.push_block)
     detail::throw_wrong_block(push_constants.name(), static_cast<std::uint32_t>(*p.push_block), push_constants.block());
   p.context->submit([&](VkCommandBuffer commands) {
-    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    auto before = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
     SAFEGI_VK(vkCmdPipelineBarrier, commands,
@@ -506,7 +507,7 @@ void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x
                 p.push_size, static_cast<const void*>(push_constants.bytes().data()));
     }
     SAFEGI_VK(vkCmdDispatch, commands, x, y, z);
-    VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    auto after = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
     SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},

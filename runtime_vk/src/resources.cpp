@@ -22,7 +22,7 @@ VkFormat format_of(ScalarType scalar, int components) {
 }
 
 VkDeviceMemory allocate(ContextImpl& context, VkMemoryRequirements requirements, VkMemoryPropertyFlags flags) {
-  VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  auto allocate = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
   allocate.allocationSize = requirements.size;
   allocate.memoryTypeIndex = context.memory_type(requirements.memoryTypeBits, flags);
   VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -48,7 +48,7 @@ void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkI
 }
 
 Buffer::Buffer(ContextImpl& context, std::size_t bytes, BufferUse use) : context_(&context), size_(bytes), use_(use) {
-  VkBufferCreateInfo create{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  auto create = make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
   create.size = bytes == 0 ? 16 : bytes;  // Vulkan has no empty buffer
   create.usage = (use == BufferUse::uniform ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -120,7 +120,7 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
   if (width <= 0 || height <= 0)
     throw ResourceError("safegi::vk: an image of " + std::to_string(width) + 'x' + std::to_string(height) + " texels");
   const VkFormat format = format_of(scalar, components);
-  VkImageCreateInfo create{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  auto create = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   create.imageType = VK_IMAGE_TYPE_2D;
   create.format = format;
   create.extent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
@@ -137,7 +137,7 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
     SAFEGI_VK(vkGetImageMemoryRequirements, context_->device, image_, &requirements);
     memory_ = allocate(*context_, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     check(SAFEGI_VK(vkBindImageMemory, context_->device, image_, memory_, VkDeviceSize{0}), "vkBindImageMemory");
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    auto view = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     view.image = image_;
     view.viewType = VK_IMAGE_VIEW_TYPE_2D;
     view.format = format;
@@ -202,7 +202,7 @@ namespace {
 void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                 VkAccessFlags from_access, VkAccessFlags to_access, VkPipelineStageFlags from_stage,
                 VkPipelineStageFlags to_stage) {
-  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  auto barrier = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
   barrier.srcAccessMask = from_access;
   barrier.dstAccessMask = to_access;
   barrier.oldLayout = from;
@@ -238,7 +238,7 @@ void copy(ContextImpl& context, VkImage image, VkBuffer buffer, int width, int h
                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
     if (!to_image) {  // the host reads the buffer next
-      VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      auto host = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
       host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
       host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
       SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_TRANSFER_BIT},
