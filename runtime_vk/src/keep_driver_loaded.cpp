@@ -5,13 +5,17 @@
 // then). Keeping the driver loaded for the whole process (RTLD_NODELETE)
 // leaves the memory reachable, so no suppression is needed and every other
 // leak is still reported. Elsewhere (an NVIDIA driver) the dlopen simply fails.
+// A GoogleTest environment, so listing the tests (gtest_discover_tests at
+// build time) does not load the driver.
 #include <dlfcn.h>
+#include <gtest/gtest.h>
 
 namespace {
 
-struct KeepLavapipeLoaded {
-  KeepLavapipeLoaded() { dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE); }
+class KeepLavapipeLoaded : public ::testing::Environment {
+ public:
+  void SetUp() override { dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE); }
 };
-const KeepLavapipeLoaded keep_lavapipe_loaded;
+::testing::Environment* const keep_lavapipe_loaded = ::testing::AddGlobalTestEnvironment(new KeepLavapipeLoaded);
 
 }  // namespace
