@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <tuple>
 #include <vector>
 
 #include "test_types.hpp"
@@ -109,6 +110,37 @@ TEST_F(ComputeTest, UploadsAnArrayOfStd430Structs) {
   const std::vector<area> result = areas.read_back();
   for (std::size_t i = 0; i < expected.size(); ++i)
     EXPECT_NEAR(raw(result[i]), expected[i], 1e-6f * expected[i]) << "triangle " << i;
+}
+
+// Two pipelines in one submission: the second reads what the first wrote
+// (the batch's barrier between them), and run() repeats the batch.
+TEST_F(ComputeTest, RunsABatchOfDispatchesInOneSubmission) {
+  ComputePipeline first(context(), test_shader("scale")), second(context(), test_shader("scale"));
+  const std::vector<radiance> input = {rgb(1, 2, 3), rgb(-4, 0.5f, 8)};
+  storage_buffer<radiance> source(context(), input), middle(context(), 2), target(context(), 2);
+  image2d<glm::vec4> image(context(), 4, 1);
+  block_data params = first.block("Params");  // no tint
+  block_buffer params_buffer(context(), params);
+  std::vector<block_data> pushes;
+  for (auto [pipeline, from, to, factor] :
+       {std::tuple{&first, &source, &middle, 2.0f}, std::tuple{&second, &middle, &target, 3.0f}}) {
+    pipeline->bind(pipeline->storage_array<radiance>("Input.values"), *from);
+    pipeline->bind(pipeline->storage_array<radiance>("Output.scaled"), *to);
+    pipeline->bind(pipeline->image<glm::vec4>("image"), image);
+    pipeline->bind(pipeline->block_binding("Params"), params_buffer);
+    pushes.push_back(pipeline->push_constants());
+    pushes.back().set(pipeline->push_constant<float>("factor"), factor);
+    pushes.back().set(pipeline->push_constant<std::uint32_t>("count"), 2u);
+  }
+  Batch batch(context());
+  batch.dispatch(first, pushes[0], 2).dispatch(second, pushes[1], 2);  // workgroups of 1 (the default width)
+  EXPECT_EQ(batch.size(), 2u);
+  for (int run = 0; run < 2; ++run) {
+    batch.run();
+    const std::vector<radiance> result = target.read_back();
+    EXPECT_EQ(raw(result[0]), glm::vec3(6, 12, 18));  // × 2, then × 3: exact
+    EXPECT_EQ(raw(result[1]), glm::vec3(-24, 3, 48));
+  }
 }
 
 // The same results through a whole storage block: sized by the table for a

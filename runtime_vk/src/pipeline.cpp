@@ -479,8 +479,7 @@ void ComputePipeline::dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z
   dispatch(block_data("", 0, 0, BufferUse::storage), x, y, z);
 }
 
-void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x, std::uint32_t y,
-                               std::uint32_t z) const {
+void ComputePipeline::check_dispatch(const block_data& push_constants) const {
   const PipelineImpl& p = *impl_;
   for (const detail::Binding& b : p.bindings)
     if (!b.bound)
@@ -488,35 +487,61 @@ void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x
                          std::to_string(b.slot.set) + ", binding " + std::to_string(b.slot.binding) + ") unbound");
   if (p.push_block && push_constants.block() != *p.push_block)
     detail::throw_wrong_block(push_constants.name(), static_cast<std::uint32_t>(*p.push_block), push_constants.block());
-  p.context->submit([&](VkCommandBuffer commands) {
-    auto before = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
-    SAFEGI_VK(vkCmdPipelineBarrier, commands,
-              VkPipelineStageFlags{VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
-                                   VK_PIPELINE_STAGE_TRANSFER_BIT},
-              VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT}, VkDependencyFlags{0}, 1u, &before, 0u,
-              static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u,
-              static_cast<const VkImageMemoryBarrier*>(nullptr));
-    SAFEGI_VK(vkCmdBindPipeline, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
-    if (!p.sets.empty())
-      SAFEGI_VK(vkCmdBindDescriptorSets, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0u,
-                static_cast<std::uint32_t>(p.sets.size()), p.sets.data(), 0u,
-                static_cast<const std::uint32_t*>(nullptr));
-    if (p.push_block) {
-      detail::trace_bytes("push constants", push_constants.bytes());
-      SAFEGI_VK(vkCmdPushConstants, commands, p.layout, VkShaderStageFlags{VK_SHADER_STAGE_COMPUTE_BIT}, 0u,
-                p.push_size, static_cast<const void*>(push_constants.bytes().data()));
-    }
-    SAFEGI_VK(vkCmdDispatch, commands, x, y, z);
-    auto after = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
-    SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},
-              VkPipelineStageFlags{VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},
-              VkDependencyFlags{0}, 1u, &after, 0u, static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u,
-              static_cast<const VkImageMemoryBarrier*>(nullptr));
+}
+
+void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x, std::uint32_t y,
+                               std::uint32_t z) const {
+  check_dispatch(push_constants);
+  impl_->context->submit([&](VkCommandBuffer commands) { record_dispatch(commands, push_constants, x, y, z); });
+}
+
+void ComputePipeline::record_dispatch(VkCommandBuffer commands, const block_data& push_constants, std::uint32_t x,
+                                      std::uint32_t y, std::uint32_t z) const {
+  const PipelineImpl& p = *impl_;
+  auto before = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+  SAFEGI_VK(vkCmdPipelineBarrier, commands,
+            VkPipelineStageFlags{VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT},
+            VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT}, VkDependencyFlags{0}, 1u, &before, 0u,
+            static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u, static_cast<const VkImageMemoryBarrier*>(nullptr));
+  SAFEGI_VK(vkCmdBindPipeline, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+  if (!p.sets.empty())
+    SAFEGI_VK(vkCmdBindDescriptorSets, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0u,
+              static_cast<std::uint32_t>(p.sets.size()), p.sets.data(), 0u, static_cast<const std::uint32_t*>(nullptr));
+  if (p.push_block) {
+    detail::trace_bytes("push constants", push_constants.bytes());
+    SAFEGI_VK(vkCmdPushConstants, commands, p.layout, VkShaderStageFlags{VK_SHADER_STAGE_COMPUTE_BIT}, 0u, p.push_size,
+              static_cast<const void*>(push_constants.bytes().data()));
+  }
+  SAFEGI_VK(vkCmdDispatch, commands, x, y, z);
+  auto after = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
+  SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},
+            VkPipelineStageFlags{VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},
+            VkDependencyFlags{0}, 1u, &after, 0u, static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u,
+            static_cast<const VkImageMemoryBarrier*>(nullptr));
+}
+
+Batch::Batch(Context& context) : context_(&context.impl()) {}
+
+Batch& Batch::dispatch(const ComputePipeline& pipeline, const block_data& push_constants, std::uint32_t x,
+                       std::uint32_t y, std::uint32_t z) {
+  entries_.push_back({&pipeline, push_constants, x, y, z});
+  return *this;
+}
+
+Batch& Batch::dispatch(const ComputePipeline& pipeline, std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  return dispatch(pipeline, block_data("", 0, 0, BufferUse::storage), x, y, z);
+}
+
+void Batch::run() const {
+  for (const Entry& e : entries_) e.pipeline->check_dispatch(e.push);
+  context_->submit([&](VkCommandBuffer commands) {
+    for (const Entry& e : entries_) e.pipeline->record_dispatch(commands, e.push, e.x, e.y, e.z);
   });
 }
 

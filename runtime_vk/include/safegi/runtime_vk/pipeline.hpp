@@ -201,6 +201,12 @@ class ComputePipeline {
   // handles header checks it was made from this shader).
   void expect_source_hash(std::string_view hash) const;
 
+  // What dispatch does in two steps, for Batch: the checks (unbound
+  // descriptors, push constants of another block), and the recording.
+  void check_dispatch(const block_data& push_constants) const;
+  void record_dispatch(VkCommandBuffer commands, const block_data& push_constants, std::uint32_t x, std::uint32_t y,
+                       std::uint32_t z) const;
+
   // The untyped core of every lookup. With `host` (checked build) the type is
   // compared too; without (unchecked build) only the location is read.
   Location locate(Lookup lookup, std::string_view name, const detail::HostLayout* host) const;
@@ -216,6 +222,31 @@ class ComputePipeline {
       return nullptr;
   }
   std::unique_ptr<detail::PipelineImpl> impl_;
+};
+
+// Several dispatches, of one pipeline or several, in one submission: recorded
+// in order with a barrier between each (a dispatch sees what the one before
+// it wrote), submitted and waited for by run(), which may be called again.
+// Each dispatch keeps a copy of its push constants; the descriptors are those
+// bound when run() is called. The pipelines must outlive the batch.
+class Batch {
+ public:
+  explicit Batch(Context& context);
+  Batch& dispatch(const ComputePipeline& pipeline, const block_data& push_constants, std::uint32_t x,
+                  std::uint32_t y = 1, std::uint32_t z = 1);
+  Batch& dispatch(const ComputePipeline& pipeline, std::uint32_t x, std::uint32_t y = 1, std::uint32_t z = 1);
+  // Throws as ComputePipeline::dispatch, before anything is submitted.
+  void run() const;
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  struct Entry {
+    const ComputePipeline* pipeline;
+    block_data push;
+    std::uint32_t x, y, z;
+  };
+  detail::ContextImpl* context_;
+  std::vector<Entry> entries_;
 };
 
 // Reads a SPIR-V file (what safeglslc -V -o x.spv wrote). Throws ShaderError.
