@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
     std::ofstream out(argv[1]);
     for (const auto& call : trace) out << call << '\n';
     out << "result " << result.r << ' ' << result.g << ' ' << result.b << '\n';
-    std::cout << (build_mode::checks ? "checked" : "unchecked") << ": " << trace.size() << " Vulkan calls\n";
+    std::cout << (build_mode::checks ? "checked" : "unchecked") << ": " << trace.size()
+              << " trace lines (Vulkan calls and the bytes they hand over)\n";
   } catch (const std::exception& error) {
     std::cerr << error.what() << '\n';
     return 1;
