@@ -108,7 +108,21 @@ TEST_F(BindingErrorsTest, MissingNames) {
   EXPECT_EQ(error_of([&] { scale_->image<glm::vec4>("picture"); }),
             "scale: error: no image named 'picture' in scale.sgl.comp");
   EXPECT_EQ(error_of([&] { scale_->image<glm::vec4>("Params"); }),
-            "scale.sgl.comp:14:38: error: 'Params' is a block, not a storage image2D");
+            "scale.sgl.comp:14:38: error: 'Params' is declared as a block, not as a storage image2D");
+}
+
+TEST_F(BindingErrorsTest, Samplers) {
+  ComputePipeline sample(context(), test_shader("sample"));
+  EXPECT_EQ(error_of([&] { sample.sampler<irradiance>("environment"); }),
+            "sample.sgl.comp:7:68: error: sampler 'environment' is declared with texels of type spectrum<radiance> but "
+            "the host uses spectrum<irradiance> (dimension differs)");
+  EXPECT_EQ(error_of([&] { sample.sampler<glm::vec4>("environment"); }),
+            "sample.sgl.comp:7:68: error: sampler 'environment' is declared with texels of type spectrum<radiance> but "
+            "the host uses vec4 (kind, GLSL type and dimension differ)");
+  EXPECT_EQ(error_of([&] { sample.sampler<radiance>("Texels"); }),
+            "sample.sgl.comp:8:55: error: 'Texels' is declared as a block, not as a sampler2D");
+  EXPECT_EQ(error_of([&] { scale_->sampler<glm::vec4>("image"); }),
+            "scale.sgl.comp:13:65: error: 'image' is declared as image2D, not as a sampler2D");
 }
 
 TEST_F(BindingErrorsTest, SpecializationConstants) {

@@ -143,6 +143,30 @@ TEST_F(ComputeTest, RunsABatchOfDispatchesInOneSubmission) {
   }
 }
 
+// sample.sgl.comp: a texture of radiance (three components, stored as
+// rgba32f) read texel by texel and bilinearly halfway between neighbours.
+TEST_F(ComputeTest, SamplesATextureOfRadiance) {
+  ComputePipeline pipeline(context(), test_shader("sample"));
+  const std::vector<radiance> texels = {rgb(1, 2, 3), rgb(3, 4, 5), rgb(5, 6, 7), rgb(7, 8, 9),
+                                        rgb(0, 0, 0), rgb(0, 0, 0), rgb(0, 0, 0), rgb(0, 0, 0)};
+  texture2d<radiance> environment(context(), 4, 2, texels);
+  storage_buffer<radiance> fetched(context(), 3), filtered(context(), 3);
+  pipeline.bind(pipeline.sampler<radiance>("environment"), environment);
+  pipeline.bind(pipeline.storage_array<radiance>("Texels.texels"), fetched);
+  pipeline.bind(pipeline.storage_array<radiance>("Between.between"), filtered);
+  pipeline.dispatch(3);
+  const std::vector<radiance> exact = fetched.read_back(), between = filtered.read_back();
+  for (std::size_t i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(raw(exact[i]), raw(texels[i]));  // texelFetch: the uploaded values exactly
+    // Bilinear weights 1/2 and 1/2 within the first row: the mean of the two
+    // texels; filtering may round weights to 8 bits of fraction (Vulkan's
+    // minimum): within 1/256 of the larger value.
+    const glm::vec3 mean = (raw(texels[i]) + raw(texels[i + 1])) * 0.5f;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(raw(between[i])[c], mean[c], raw(texels[i + 1])[c] / 256.0f);
+  }
+}
+
 // The same results through a whole storage block: sized by the table for a
 // runtime-sized array of 3, bound by the block's name, read back member by member.
 TEST_F(ComputeTest, ReadsARuntimeSizedStorageBlockBack) {

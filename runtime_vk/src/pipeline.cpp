@@ -37,10 +37,13 @@ struct PipelineImpl {
   VkPipeline pipeline = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> sets;
+  VkSampler samplers[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // by Filter, made on first use
 
   ~PipelineImpl() {
     VkDevice device = context->device;
     if (pool) SAFEGI_VK(vkDestroyDescriptorPool, device, pool, kNoAllocator);  // frees the sets
+    for (VkSampler sampler : samplers)
+      if (sampler) SAFEGI_VK(vkDestroySampler, device, sampler, kNoAllocator);
     if (pipeline) SAFEGI_VK(vkDestroyPipeline, device, pipeline, kNoAllocator);
     if (layout) SAFEGI_VK(vkDestroyPipelineLayout, device, layout, kNoAllocator);
     for (VkDescriptorSetLayout set_layout : set_layouts)
@@ -224,6 +227,8 @@ std::string_view lookup_words(Lookup lookup) {
       return "storage array";
     case Lookup::image:
       return "image";
+    case Lookup::sampler:
+      return "sampler";
   }
   return "name";
 }
@@ -236,6 +241,7 @@ bool block_named(const gl::Symbol& s, std::string_view name) {
 }  // namespace detail
 
 using detail::block_named;
+using detail::check;
 using detail::make;
 using detail::PipelineImpl;
 
@@ -324,14 +330,36 @@ Location ComputePipeline::locate(Lookup lookup, std::string_view name, const det
     return BindingError(p.name + ": error: no " + what + " named '" + std::string(name) + "' in " + p.stage.file);
   };
   Location location;
+  if (lookup == Lookup::sampler) {
+    for (const detail::Binding& b : p.bindings) {
+      const gl::Symbol& s = p.symbol(b.symbol);
+      if (s.name != name) continue;
+      if (s.type.glsl_type != "sampler2D")
+        throw BindingError(p.at(s) + "'" + s.name + "' is declared as " +
+                           (s.type.kind == gl::Kind::block ? std::string("a block") : s.type.glsl_type) +
+                           ", not as a sampler2D");
+      if (host) {
+        const gl::ValueType declared =
+            s.texel ? *s.texel : gl::ValueType{gl::Kind::plain, "vec4", {}, {}};  // unannotated: what texture() returns
+        const std::vector<std::string> parts = gl::differences(declared, host->type);
+        if (!parts.empty())
+          throw BindingError(p.at(s) + "sampler '" + s.name + "' is declared with texels of type " +
+                             gl::in_words(declared, p.namer) + " but the host uses " +
+                             gl::in_words(host->type, p.namer) + " (" + detail::differ_words(parts) + ")");
+      }
+      location.slot = b.slot;
+      return location;
+    }
+    throw missing();
+  }
   if (lookup == Lookup::image) {
     for (const detail::Binding& b : p.bindings) {
       const gl::Symbol& s = p.symbol(b.symbol);
       if (s.name != name) continue;
       if (s.type.glsl_type != "image2D" && s.type.glsl_type != "iimage2D" && s.type.glsl_type != "uimage2D")
-        throw BindingError(p.at(s) + "'" + s.name + "' is a " +
-                           (s.type.kind == gl::Kind::block ? std::string("block") : s.type.glsl_type) +
-                           ", not a storage image2D");
+        throw BindingError(p.at(s) + "'" + s.name + "' is declared as " +
+                           (s.type.kind == gl::Kind::block ? std::string("a block") : s.type.glsl_type) +
+                           ", not as a storage image2D");
       if (host) {
         const bool is_float = s.type.glsl_type == "image2D";
         const bool host_float = host->type.glsl_type.find_first_of("iu") != 0;  // vec4, float; not ivec4, uint
@@ -477,6 +505,41 @@ void ComputePipeline::dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z
     throw BindingError(impl_->name + ": error: the shader has push constants ('" +
                        impl_->symbol(*impl_->push_block).name + "'); dispatch with push_constants()");
   dispatch(block_data("", 0, 0, BufferUse::storage), x, y, z);
+}
+
+void ComputePipeline::bind_texture(descriptor_slot slot, const detail::Image& image, Filter filter) {
+  PipelineImpl& p = *impl_;
+  detail::Binding* b = p.binding(slot);
+  if (!b || b->type != VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)
+    throw BindingError(p.name + ": error: no sampler2D at set " + std::to_string(slot.set) + ", binding " +
+                       std::to_string(slot.binding));
+  if (filter == Filter::linear) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(p.context->physical, image.format(), &properties);
+    if (!(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+      throw ResourceError(p.at(p.symbol(b->symbol)) + "device " + p.context->info.device_name +
+                          " cannot filter this texture's format (VkFormat " + std::to_string(image.format()) +
+                          ") linearly; bind it with Filter::nearest");
+  }
+  VkSampler& sampler = p.samplers[filter == Filter::linear ? 1 : 0];
+  if (!sampler) {
+    auto create = make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    create.magFilter = create.minFilter = filter == Filter::linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    create.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    create.addressModeU = create.addressModeV = create.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    create.maxLod = 0.0f;
+    check(SAFEGI_VK(vkCreateSampler, p.context->device, &create, detail::kNoAllocator, &sampler), "vkCreateSampler");
+  }
+  VkDescriptorImageInfo info{sampler, image.view(), VK_IMAGE_LAYOUT_GENERAL};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.dstSet = p.sets[slot.set];
+  write.dstBinding = slot.binding;
+  write.descriptorCount = 1;
+  write.descriptorType = b->type;
+  write.pImageInfo = &info;
+  SAFEGI_VK(vkUpdateDescriptorSets, p.context->device, 1u, static_cast<const VkWriteDescriptorSet*>(&write), 0u,
+            static_cast<const VkCopyDescriptorSet*>(nullptr));
+  b->bound = true;
 }
 
 void ComputePipeline::check_dispatch(const block_data& push_constants) const {

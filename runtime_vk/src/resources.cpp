@@ -120,6 +120,7 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
   if (width <= 0 || height <= 0)
     throw ResourceError("safegi::vk: an image of " + std::to_string(width) + 'x' + std::to_string(height) + " texels");
   const VkFormat format = format_of(scalar, components);
+  format_ = format;
   auto create = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   create.imageType = VK_IMAGE_TYPE_2D;
   create.format = format;
@@ -128,7 +129,8 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
   create.arrayLayers = 1;
   create.samples = VK_SAMPLE_COUNT_1_BIT;
   create.tiling = VK_IMAGE_TILING_OPTIMAL;
-  create.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  create.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   create.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   create.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   check(SAFEGI_VK(vkCreateImage, context_->device, &create, kNoAllocator, &image_), "vkCreateImage");
@@ -169,7 +171,8 @@ Image::Image(Image&& other) noexcept
       view_(std::exchange(other.view_, VK_NULL_HANDLE)),
       width_(other.width_),
       height_(other.height_),
-      texel_bytes_(other.texel_bytes_) {}
+      texel_bytes_(other.texel_bytes_),
+      format_(other.format_) {}
 
 Image& Image::operator=(Image&& other) noexcept {
   if (this != &other) {
@@ -181,6 +184,7 @@ Image& Image::operator=(Image&& other) noexcept {
     width_ = other.width_;
     height_ = other.height_;
     texel_bytes_ = other.texel_bytes_;
+    format_ = other.format_;
   }
   return *this;
 }

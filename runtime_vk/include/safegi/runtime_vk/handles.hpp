@@ -73,4 +73,10 @@ struct image_id {
   descriptor_slot slot;
 };
 
+// A combined image sampler (sampler2D) whose texels are T, bound from a texture2d<T>.
+template <class T>
+struct sampler_id {
+  descriptor_slot slot;
+};
+
 }  // namespace safegi::vk

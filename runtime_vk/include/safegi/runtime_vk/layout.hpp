@@ -167,8 +167,9 @@ struct element_of<std::array<T, N>> {
       #Host "::" #field ": the type differs from the shader's " #Member);                                            \
   static_assert(offsetof(Host, field) == Member::offset,                                                             \
                 #Host "::" #field ": the offset differs from the shader's " #Member);                                \
-  static_assert(sizeof(Host::field) == Member::size, #Host "::" #field ": the size differs from the "                \
-                                                                       "shader's " #Member)
+  static_assert(sizeof(Host::field) == Member::size, #Host "::" #field                                               \
+                                                           ": the size differs from the "                            \
+                                                           "shader's " #Member)
 
 // A descriptor set and binding written by hand (raw Vulkan code beside
 // runtime_vk), checked against the generated layout at compile time.

@@ -112,8 +112,10 @@ namespace detail {
 struct PipelineImpl;
 }
 
+enum class Filter { nearest, linear };
+
 // What a lookup is for: decides where the name is searched and what it must be.
-enum class Lookup { push_constant, member, array_member, storage_array, image };
+enum class Lookup { push_constant, member, array_member, storage_array, image, sampler };
 
 // Where a name lives, as the table says.
 struct Location {
@@ -179,6 +181,15 @@ class ComputePipeline {
     return {at.slot};
   }
 
+  // A sampler2D whose texels the host gives as T (checked against the
+  // declaration's texel type: sampler2D<spectrum<radiance>> takes a
+  // texture2d<spectrum<radiance>>; an unannotated sampler2D, a glm::vec4).
+  template <gl_storable T, class Mode = build_mode>
+  sampler_id<T> sampler(std::string_view name) const {
+    const Location at = locate(Lookup::sampler, name, host<T, Mode>().get());
+    return {at.slot};
+  }
+
   // Points the descriptor at the resource (vkUpdateDescriptorSets). A block
   // buffer smaller than the block throws ResourceError.
   void bind(block_binding_id id, const block_buffer& buffer);
@@ -189,6 +200,12 @@ class ComputePipeline {
   template <gl_storable T>
   void bind(image_id<T> id, const image2d<T>& image) {
     bind_image(id.slot, image.raw());
+  }
+  // Samples with `filter` (linear: bilinear, if the device filters the
+  // format; nearest otherwise) and repeats at the edges.
+  template <gl_storable T>
+  void bind(sampler_id<T> id, const texture2d<T>& texture, Filter filter = Filter::linear) {
+    bind_texture(id.slot, texture.raw(), filter);
   }
 
   // Records, submits and waits for one dispatch of x*y*z workgroups. Throws
@@ -212,6 +229,7 @@ class ComputePipeline {
   Location locate(Lookup lookup, std::string_view name, const detail::HostLayout* host) const;
   void bind_buffer(descriptor_slot slot, const detail::Buffer& buffer);
   void bind_image(descriptor_slot slot, const detail::Image& image);
+  void bind_texture(descriptor_slot slot, const detail::Image& image, Filter filter);
 
  private:
   template <class T, class Mode>

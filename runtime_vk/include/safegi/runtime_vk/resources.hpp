@@ -52,7 +52,7 @@ class Buffer {
   BufferUse use_ = BufferUse::storage;
 };
 
-// One VkImage (2D, VK_IMAGE_LAYOUT_GENERAL, usable as a storage image) and its view.
+// One VkImage (2D, VK_IMAGE_LAYOUT_GENERAL, usable as a storage or sampled image) and its view.
 class Image {
  public:
   Image(Context& context, int width, int height, ScalarType scalar, int components);
@@ -70,6 +70,7 @@ class Image {
   int width() const { return width_; }
   int height() const { return height_; }
   std::size_t texel_bytes() const { return texel_bytes_; }
+  VkFormat format() const { return format_; }
 
  private:
   void release() noexcept;
@@ -79,6 +80,7 @@ class Image {
   VkImageView view_ = VK_NULL_HANDLE;
   int width_ = 0, height_ = 0;
   std::size_t texel_bytes_ = 0;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
 };
 
 [[noreturn]] void throw_wrong_block(const std::string& data_name, std::uint32_t expected, std::uint32_t found);
@@ -208,6 +210,42 @@ class storage_buffer {
  private:
   detail::Buffer buffer_;
   std::size_t count_;
+};
+
+// A 2D texture of T that shaders sample (a sampler2D): 1, 2, 3 or 4 32-bit
+// components; three are stored as four (rgba32f, the fourth 1), since Vulkan
+// need not sample rgb32f. Rows from the top (y = 0 first).
+template <gl_storable T>
+class texture2d {
+  using data = gl_type_of<T>;
+  static constexpr int components = gl_layout_of<T>::components;
+  static constexpr int stored = components == 3 ? 4 : components;
+  static_assert(gl_layout_of<T>::columns == 1, "a texel is a scalar or a vector");
+
+ public:
+  texture2d(Context& context, int width, int height, std::span<const T> texels)
+      : image_(context, width, height, gl_layout_of<T>::scalar, stored) {
+    if (texels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+      throw ResourceError("safegi::vk: texture2d of " + std::to_string(texels.size()) + " texels for " +
+                          std::to_string(width) + 'x' + std::to_string(height));
+    std::vector<std::uint32_t> words(texels.size() * stored, 0);
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+      const data d = value_traits<T>::to_gl(texels[i]);
+      std::memcpy(&words[i * stored], &d, sizeof(d));
+      if constexpr (components == 3) {  // alpha 1 in the texel's own scalar type
+        using scalar = std::conditional_t<gl_layout_of<T>::scalar == ScalarType::float32, float, std::uint32_t>;
+        const scalar one = 1;
+        std::memcpy(&words[i * stored + 3], &one, 4);
+      }
+    }
+    image_.upload(std::as_bytes(std::span(words)));
+  }
+  int width() const { return image_.width(); }
+  int height() const { return image_.height(); }
+  const detail::Image& raw() const { return image_; }
+
+ private:
+  detail::Image image_;
 };
 
 // A 2D storage image of T: float, vec2, vec4 (r32f, rg32f, rgba32f) and
