@@ -34,6 +34,34 @@ TEST(HandlesHeader, MatchesTheGoldenHeaderForTheExampleProgram) {
             read_testdata("emission_handles.hpp.expected"));
 }
 
+// --api vulkan: handles for a runtime_vk compute pipeline (its use is tested in
+// runtime_vk/src/handles_usage_test.cpp), refused for a table without a Vulkan compute stage.
+TEST(HandlesHeader, VulkanHandlesNeedAVulkanComputeStage) {
+  HandlesHeaderOptions options;
+  options.api = Client::vulkan;
+  options.origin = "emission.program.json";
+  EXPECT_EQ(error_of(parse_symbol_table(read_testdata("emission.program.json")), options),
+            "emission.program.json: error: Vulkan handles need a Vulkan compute stage (safeglslc -V or "
+            "--target-env vulkan1.x)");
+  const SymbolTable compute =
+      parse_symbol_table(R"({"format":"safegi-symbol-table","version":2,"mode":"shader","stages":[
+      {"stage":"compute","client":"vulkan","file":"c.sgl.comp","glsl_version":{"number":450},"symbols":[
+        {"name":"Push","storage":"uniform","kind":"block","glsl_type":"Push","push_constant":true,"packing":"std430",
+         "size":16,"declared_at":{"file":"c.sgl.comp","line":2,"column":30},"members":[
+          {"name":"scale","storage":"uniform","kind":"spectrum","glsl_type":"vec3","offset":0,"size":12,
+           "dimension":{"exponents":{}},"declared_at":{"file":"c.sgl.comp","line":2,"column":50}}]}
+      ]}]})");
+  const std::string header = generate_handles_header(compute, options);
+  EXPECT_NE(header.find("safegi::vk::member_id<safegi::spectrum<safegi::dim::dimensionless>> Push_scale;"),
+            std::string::npos)
+      << header;
+  EXPECT_NE(header.find("static constexpr std::uint32_t offset = 0, size = 12;"), std::string::npos) << header;
+  EXPECT_NE(
+      header.find("Push_scale(pipeline.push_constant<safegi::spectrum<safegi::dim::dimensionless>>(\"Push.scale\"))"),
+      std::string::npos)
+      << header;
+}
+
 TEST(HandlesHeader, SpacesAndBasesOutsideTheTypedLibraryNeedASpelling) {
   const SymbolTable table = one_uniform(R"("kind":"point","glsl_type":"vec3","spaces":["tangent"])");
   EXPECT_EQ(error_of(table, {}),
