@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "safegi/cpu_renderer/scene_loader.hpp"
+#include "safegi/typed/reflection.hpp"
 #include "scene_packing.hpp"
 
 namespace safegi::gpu {
