@@ -142,6 +142,7 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
   if (scene.camera.lens_radius > sg::zero) packed.unsupported.push_back("camera: thin lens (drawn as a pinhole)");
   if (!scene.media.empty()) packed.unsupported.push_back("participating media (ignored)");
   pack_camera(scene, width, height, packed.frame);
+  pack_materials(scene, packed);
 
   std::vector<Triangle> triangles;
   std::vector<Sphere> spheres;

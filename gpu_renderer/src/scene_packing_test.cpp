@@ -93,8 +93,14 @@ void expect_matches_table(const PackedScene& packed) {
 }
 
 TEST(ScenePacking, CornellBoxArraysMatchTheSymbolTable) {
-  const PackedScene packed = pack_scene(load("cornell-box/cornell-box.json"), 64, 64);
+  const render::Scene scene = load("cornell-box/cornell-box.json");
+  const PackedScene packed = pack_scene(scene, 64, 64);
   expect_matches_table(packed);
+  // One entry per material and shape, each material Lambert.
+  ASSERT_EQ(packed.material_kind.size(), scene.materials.size());
+  EXPECT_EQ(packed.material_diffuse.size(), scene.materials.size());
+  EXPECT_EQ(packed.shape_material.size(), scene.shapes.size());
+  for (std::uint32_t kind : packed.material_kind) EXPECT_EQ(kind, static_cast<std::uint32_t>(MaterialKind::lambert));
   // The BVH as built: 12 slab planes and 4 children per node.
   EXPECT_EQ(packed.node_lower.size() % 12, 0u);
   EXPECT_EQ(packed.node_child.size() * 3, packed.node_lower.size());
