@@ -15,6 +15,7 @@
 // noise, and a real error (a lost cosine, π, or light) is far larger.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -98,18 +99,27 @@ TEST(GpuRender, GlassSphereMeanMatchesTheConvergedCpuImage) {
 class GpuRenderScene : public testing::TestWithParam<const char*> {};
 
 TEST_P(GpuRenderScene, MeanMatchesSafegiRender) {
-  const render::Scene scene = render::load_scene(kScenes / GetParam());
+  const std::filesystem::path file = GetParam();
+  const render::Scene scene = render::load_scene(file.is_absolute() ? file : kScenes / file);
   const Image cpu = cpu_render(scene, 48, 32, 256);
   const Image gpu = gpu_render(scene, 48, 32, 128, 3);
   expect_means_within(gpu, cpu, 0.03, GetParam());
 }
 
-// phong.json: Phong spheres under a point light; mirror.json: mirrors and an
-// area light; environment.json: plastic, glass and a constant sky.
-INSTANTIATE_TEST_SUITE_P(BundledScenes, GpuRenderScene, testing::Values("phong.json", "mirror.json", "environment.json"),
+// phong.json: Phong spheres under an area and a point light; mirror.json:
+// mirrors and an area light; spot-sky-plastic.json (gpu_renderer/testdata):
+// what the bundled scenes leave out or draw with features the GPU renderer
+// lacks (environment.json's sky is a map, materials.json's floor a texture):
+// a spot, a constant sky, a spherical and a two-sided emitter, plastic. Not
+// here: caustic.json is the photon integrator's, many-lights.json's 25 point
+// lights need ~512 spp before uniform light choice brings the GPU mean within
+// 3 % (measured: 4.4 % off in green at 128 spp, 0.9 % at 512), too slow for CI.
+INSTANTIATE_TEST_SUITE_P(Scenes, GpuRenderScene,
+                         testing::Values("phong.json", "mirror.json", SAFEGI_GPU_TESTDATA "/spot-sky-plastic.json"),
                          [](const testing::TestParamInfo<const char*>& info) {
-                           std::string name = info.param;
-                           return name.substr(0, name.find('.'));
+                           std::string name = std::filesystem::path(info.param).stem().string();
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
                          });
 
 TEST(GpuRender, ErrorFallsAsOneOverSqrtSpp) {
