@@ -10,6 +10,7 @@
 
 #include "gpu_render.hpp"
 #include "safegi/cpu_renderer/image_io.hpp"
+#include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -29,14 +30,15 @@ int main(int argc, char** argv) {
   CLI::App app{"SafeGI GPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG on a Vulkan "
                "device, with annotated GLSL compute shaders (docs/gpu-renderer.md)",
                std::filesystem::path(argv[0]).filename().string()};
-  std::string scene_file, output = "render", resolution, device;
+  std::string scene_file, output = "render", resolution, device, length_unit;
   int spp = 0;
   std::uint32_t seed = 0;
   bool quiet = false, stats_json = false, pfm = false;
   safegi::gpu::GpuRenderOptions options;
   options.spirv_file = safegi::gpu::default_spirv_file();
   options.symbols_file = safegi::gpu::default_symbols_file();
-  app.add_option("scene", scene_file, "scene file (.json)")->required();
+  app.add_option("scene", scene_file, "scene file (.json, or a pbrt-v3 .pbrt)")->required();
+  app.add_option("--length-unit", length_unit, "what one pbrt length unit is (m, cm, mm, in, ...; .pbrt scenes only)");
   app.add_option("-o,--output", output, "output name; writes NAME.exr (linear) and NAME.png (sRGB)");
   app.add_option("--spp", spp, "samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
   app.add_option("--seed", seed, "seed of the per-pixel sample sequences");
@@ -53,9 +55,24 @@ int main(int argc, char** argv) {
     return safegi::exit_after_parse_error(app, error);
   }
   try {
-    if (std::filesystem::path(scene_file).extension() == ".pbrt")
-      throw CommandLineError(scene_file + ": safegi-render-gpu reads JSON scenes (import pbrt ones with safegi-render)");
-    Scene scene = load_scene(scene_file, SceneLoadOptions{read_image});
+    Scene scene;
+    if (std::filesystem::path(scene_file).extension() == ".pbrt") {  // as safegi-render reads them
+      if (length_unit.empty())
+        throw CommandLineError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
+                               "with --length-unit (m, cm, mm, in, ...)");
+      double metres_per_unit = 0;
+      try {
+        metres_per_unit = parse_length_unit(length_unit);
+      } catch (const SceneError& error) {
+        throw CommandLineError(error.what());
+      }
+      PbrtScene imported = load_pbrt_scene(scene_file, {metres_per_unit, {}, read_image});
+      std::cerr << imported.warnings;
+      scene = std::move(imported.scene);
+    } else {
+      if (!length_unit.empty()) throw CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
+      scene = load_scene(scene_file, SceneLoadOptions{read_image});
+    }
     if (!resolution.empty()) {
       ImageSize size = parse_resolution(resolution);
       options.width = size.width;
