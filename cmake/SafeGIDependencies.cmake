@@ -48,6 +48,15 @@ if(SAFEGI_BUILD_RENDERER OR SAFEGI_BUILD_GL)
   endif()
 endif()
 
+if(SAFEGI_BUILD_VK)
+  # Debian's libvulkan-dev: the loader and the headers (scripts/install-deps.sh).
+  find_package(Vulkan QUIET)
+  if(NOT Vulkan_FOUND)
+    message(FATAL_ERROR "SAFEGI_BUILD_VK is ON but the Vulkan loader and headers were not found: "
+                        "install libvulkan-dev (scripts/install-deps.sh), or configure with -DSAFEGI_BUILD_VK=OFF")
+  endif()
+endif()
+
 if(SAFEGI_BUILD_GL)
   find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
   find_library(OSMESA_LIBRARY NAMES OSMesa REQUIRED)

@@ -13,6 +13,9 @@ packages=(
   spirv-tools                        # spirv-val: the tests validate every SPIR-V module safeglslc writes
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   python3-glad                       # generates the GL loader at build time
+  libvulkan-dev                      # runtime_vk: the Vulkan loader and headers
+  vulkan-validationlayers            # runtime_vk's tests run with VK_LAYER_KHRONOS_validation on
+  mesa-vulkan-drivers                # lavapipe: the software Vulkan device the tests run on (no GPU on CI)
   libglm-dev
   libopenimageio-dev openimageio-tools # the tools: OpenImageIO's CMake config imports /usr/bin/iconvert etc.
   libopenexr-dev libpng-dev          # the renderer writes EXR and PNG without OpenImageIO's start-up cost

@@ -2,7 +2,7 @@
 // Stand-ins for typed-library types in tests that must not depend on it:
 // three floats that describe themselves as a spectrum of one dimension or a
 // point in one space.
-#include "safegi/runtime_gl/value_traits.hpp"
+#include "safegi/symbol_table/value_traits.hpp"
 
 namespace safegi::gl::testing {
 

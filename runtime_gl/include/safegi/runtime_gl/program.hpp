@@ -19,7 +19,7 @@
 #include "safegi/runtime_gl/resources.hpp"
 #include "safegi/symbol_table/spirv_interface.hpp"
 #include "safegi/symbol_table/symbol_table.hpp"
-#include "safegi/runtime_gl/value_traits.hpp"
+#include "safegi/symbol_table/value_traits.hpp"
 
 namespace safegi::gl {
 

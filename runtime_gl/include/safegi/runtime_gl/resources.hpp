@@ -11,7 +11,7 @@
 
 #include "safegi/symbol_table/error.hpp"
 #include "safegi/runtime_gl/handles.hpp"
-#include "safegi/runtime_gl/value_traits.hpp"
+#include "safegi/symbol_table/value_traits.hpp"
 
 namespace safegi::gl {
 

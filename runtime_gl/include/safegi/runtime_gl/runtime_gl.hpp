@@ -7,9 +7,9 @@
 #include "safegi/runtime_gl/program.hpp"
 #include "safegi/runtime_gl/resources.hpp"
 #include "safegi/symbol_table/symbol_table.hpp"
-#include "safegi/runtime_gl/value_traits.hpp"
+#include "safegi/symbol_table/value_traits.hpp"
 // With the typed library on the include path (SafeGI::runtime_gl links it),
 // its types are GL values too.
 #if __has_include(<safegi/typed.hpp>)
-#include "safegi/runtime_gl/typed_traits.hpp"
+#include "safegi/symbol_table/typed_traits.hpp"
 #endif

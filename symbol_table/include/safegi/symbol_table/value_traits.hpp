@@ -1,5 +1,6 @@
 #pragma once
-// How a host (C++) type travels to GL and what it means there.
+// How a host (C++) type travels to the GPU (OpenGL, Vulkan) and what it means
+// there; shared by runtime_gl and runtime_vk.
 //
 // gl_layout<G> describes plain GL data G (float, int32, uint32, GLM vectors and
 // matrices): scalar type, components per column, columns, GLSL name.

@@ -6,7 +6,7 @@
 #include <safegi/typed.hpp>
 #include <safegi/typed/reflection.hpp>
 
-#include "safegi/runtime_gl/value_traits.hpp"
+#include "safegi/symbol_table/value_traits.hpp"
 
 namespace safegi::gl {
 
