@@ -22,6 +22,9 @@
 #include <string>
 
 #include "gpu_render.hpp"
+#include "safegi/runtime_vk/runtime_vk.hpp"
+#include "scene_packing.hpp"
+#include "safegi/cpu_renderer/pbrt_import.hpp"
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
@@ -82,6 +85,24 @@ double relative_rmse(const Image& image, const Image& reference) {
   return std::sqrt(sum / static_cast<double>(image.rgb.size()));
 }
 
+// The host binds by name and runtime_vk checks each C++ type against the
+// shaders' symbol table: the right ones bind, the near misses throw.
+TEST(GpuRender, ThePipelineRefusesWronglyTypedHostValues) {
+  vk::Context context;
+  vk::ComputePipeline pipeline(context, vk::ComputeShader{vk::read_spirv_file(SAFEGI_GPU_SPIRV),
+                                                          vk::read_symbol_table_file(SAFEGI_GPU_SYMBOLS),
+                                                          "path_tracer.comp"});
+  EXPECT_NO_THROW(pipeline.storage_array<Radiance>("ShapeEmission.shapeEmission"));
+  EXPECT_NO_THROW(pipeline.storage_array<NormalIrradiance>("LightIrradiance.lightIrradiance"));
+  EXPECT_NO_THROW(pipeline.member<Length>("frame.rayOffset"));
+  // Intensity where radiance is declared; irradiance where it is per projected
+  // area; object-space points for world-space vertices; a length for a ratio.
+  EXPECT_THROW(pipeline.storage_array<Intensity>("ShapeEmission.shapeEmission"), vk::BindingError);
+  EXPECT_THROW(pipeline.storage_array<spectrum<dim::irradiance>>("LightIrradiance.lightIrradiance"), vk::BindingError);
+  EXPECT_THROW(pipeline.storage_array<point<spaces::object>>("TriangleVertices.triangleVertex"), vk::BindingError);
+  EXPECT_THROW(pipeline.member<Length>("frame.imageHalfWidth"), vk::BindingError);
+}
+
 TEST(GpuRender, CornellBoxMeanMatchesTheConvergedCpuImage) {
   // The committed reference: safegi-render at 16384 spp, 64 × 64.
   const Image reference = render::read_pfm(kTestdata / "cornell-box-64x64-16384spp.pfm");
@@ -124,6 +145,17 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuRenderScene,
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
+
+// A distant light comes only from pbrt scenes (the importer makes it):
+// gpu_renderer/testdata/distant-sun.pbrt, a sun, a point light, matte and glass.
+TEST(GpuRender, DistantLightPbrtSceneMeanMatchesSafegiRender) {
+  const render::Scene scene =
+      render::load_pbrt_scene(std::filesystem::path(SAFEGI_GPU_TESTDATA) / "distant-sun.pbrt", {1.0, {}, {}}).scene;
+  ASSERT_EQ(scene.distant_lights.size(), 1u);
+  const Image cpu = cpu_render(scene, 48, 32, 256);
+  const Image gpu = gpu_render(scene, 48, 32, 128, 4);
+  expect_means_within(gpu, cpu, 0.03, "distant-sun.pbrt");
+}
 
 TEST(GpuRender, ErrorFallsAsOneOverSqrtSpp) {
   // Against the converged reference, the error of an unbiased estimator
