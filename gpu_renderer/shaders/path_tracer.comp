@@ -13,7 +13,8 @@ void main() {
     // A box filter's sample: uniform over the pixel's area.
     vec2<1> imagePoint = vec2<1>(vec2(pixel)) + nextUniform2(random);
     uint rays = 0u;
-    spectrum<radiance> radiance = tracePath(cameraRay(imagePoint), random, rays);
+    vec2<1> uLens = nextUniform2(random);
+    spectrum<radiance> radiance = tracePath(cameraRay(imagePoint, uLens), random, rays);
     radianceSum[index] += radiance;
     rayCount[index] += rays;
 }

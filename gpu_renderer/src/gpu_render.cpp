@@ -45,6 +45,8 @@ void set_frame_constants(const vk::ComputePipeline& pipeline, vk::block_data& bl
   block.set(pipeline.member<std::uint32_t>("frame.maxDepth"), frame.max_depth);
   block.set(pipeline.member<std::uint32_t>("frame.rouletteDepth"), frame.roulette_depth);
   block.set(pipeline.member<std::uint32_t>("frame.environmentLight"), frame.environment_light);
+  block.set(pipeline.member<Length>("frame.lensRadius"), frame.lens_radius);
+  block.set(pipeline.member<Length>("frame.focusDistance"), frame.focus_distance);
 }
 
 std::string beside_program_or(const char* file, const char* build_path) {

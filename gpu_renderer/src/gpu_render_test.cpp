@@ -131,7 +131,8 @@ TEST_P(GpuRenderScene, MeanMatchesSafegiRender) {
 }
 
 // phong.json: Phong spheres under an area and a point light; mirror.json:
-// mirrors and an area light; spot-sky-plastic.json (gpu_renderer/testdata):
+// mirrors and an area light; depth-of-field.json: the thin lens and a large
+// spherical light (4.5 % dark before the shadow-ray fix); spot-sky-plastic.json (gpu_renderer/testdata):
 // what the bundled scenes leave out or draw with features the GPU renderer
 // lacks (environment.json's sky is a map, materials.json's floor a texture):
 // a spot, a constant sky, a spherical and a two-sided emitter, plastic. Not
@@ -139,12 +140,30 @@ TEST_P(GpuRenderScene, MeanMatchesSafegiRender) {
 // lights need ~512 spp before uniform light choice brings the GPU mean within
 // 3 % (measured: 4.4 % off in green at 128 spp, 0.9 % at 512), too slow for CI.
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuRenderScene,
-                         testing::Values("phong.json", "mirror.json", SAFEGI_GPU_TESTDATA "/spot-sky-plastic.json"),
+                         testing::Values("phong.json", "mirror.json", "depth-of-field.json",
+                                         SAFEGI_GPU_TESTDATA "/spot-sky-plastic.json"),
                          [](const testing::TestParamInfo<const char*>& info) {
                            std::string name = std::filesystem::path(info.param).stem().string();
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
+
+// Direct light from a spherical emitter, against the closed form: a floor
+// point of albedo ρ = 0.5 at d = 4 m below a sphere of radius r = 0.6 m and
+// radiance L sees it fill a cone of sin²α = (r/d)², so Lo = ρ/π · L π sin²α
+// = 0.5 · 0.0225 · L. Every pixel sees the same point (a 0.01° camera):
+// 16 × 16 × 400 paths put the mean's noise near 0.5 % (seeds 0–6 measured
+// 0.988–1.005), so 2 % is four standard deviations; the shadow rays'
+// self-intersection with the light, fixed in lights.sgl, made it 2 % dark.
+TEST(GpuRender, SphereLightMatchesTheClosedForm) {
+  const render::Scene scene = render::load_scene(std::filesystem::path(SAFEGI_GPU_TESTDATA) / "sphere-light-closed-form.json");
+  const Image gpu = gpu_render(scene, 16, 16, 400, 5);
+  const double expected[3] = {0.5 * 0.0225 * 20, 0.5 * 0.0225 * 19, 0.5 * 0.0225 * 17};
+  for (int c = 0; c < 3; ++c) {
+    std::printf("sphere light, channel %d: GPU / closed form = %.4f\n", c, channel_mean(gpu, c) / expected[c]);
+    EXPECT_NEAR(channel_mean(gpu, c) / expected[c], 1.0, 0.02) << "channel " << c;
+  }
+}
 
 // A distant light comes only from pbrt scenes (the importer makes it):
 // gpu_renderer/testdata/distant-sun.pbrt, a sun, a point light, matte and glass.

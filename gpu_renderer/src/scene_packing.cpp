@@ -129,6 +129,8 @@ void pack_camera(const Scene& scene, int width, int height, FrameValues& frame) 
   const float tangent = sg::tan(0.5f * camera.fov);
   frame.image_half_width = tangent * static_cast<float>(width) / shorter;
   frame.image_half_height = tangent * static_cast<float>(height) / shorter;
+  frame.lens_radius = camera.lens_radius;
+  frame.focus_distance = camera.focus_distance;
   frame.image_width = static_cast<std::uint32_t>(width);
   frame.image_height = static_cast<std::uint32_t>(height);
 }
@@ -139,7 +141,6 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
   PackedScene packed;
   if (scene.camera.projection != render::CameraProjection::perspective)
     packed.unsupported.push_back("camera: only the perspective projection (drawn as one)");
-  if (scene.camera.lens_radius > sg::zero) packed.unsupported.push_back("camera: thin lens (drawn as a pinhole)");
   if (!scene.media.empty()) packed.unsupported.push_back("participating media (ignored)");
   pack_camera(scene, width, height, packed.frame);
   pack_materials(scene, packed);

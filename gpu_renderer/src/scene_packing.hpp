@@ -46,6 +46,7 @@ struct FrameValues {
   std::uint32_t triangle_root = kNone, sphere_root = kNone;
   std::uint32_t light_count = 0, max_depth = 0, roulette_depth = 0;
   std::uint32_t environment_light = kNone;
+  Length lens_radius = sg::zero, focus_distance = sg::zero;
 };
 
 struct PackedScene {
