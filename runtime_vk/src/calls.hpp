@@ -31,13 +31,20 @@ std::string describe(const VkComputePipelineCreateInfo* info);
 template <class A>
 void append_argument(std::string& line, const A& argument) {
   line += ' ';
-  if constexpr (requires { describe(argument); }) line += argument ? describe(argument) : "0";
-  else if constexpr (std::is_null_pointer_v<A>) line += '0';
-  else if constexpr (std::is_pointer_v<A>) line += argument ? "h" : "0";
-  else if constexpr (std::is_enum_v<A>) line += std::to_string(static_cast<long long>(argument));
-  else if constexpr (std::is_floating_point_v<A>) line += std::to_string(argument);
-  else if constexpr (std::is_integral_v<A>) line += std::to_string(argument);
-  else line += '?';
+  if constexpr (requires { describe(argument); })
+    line += argument ? describe(argument) : "0";
+  else if constexpr (std::is_null_pointer_v<A>)
+    line += '0';
+  else if constexpr (std::is_pointer_v<A>)
+    line += argument ? "h" : "0";
+  else if constexpr (std::is_enum_v<A>)
+    line += std::to_string(static_cast<long long>(argument));
+  else if constexpr (std::is_floating_point_v<A>)
+    line += std::to_string(argument);
+  else if constexpr (std::is_integral_v<A>)
+    line += std::to_string(argument);
+  else
+    line += '?';
 }
 
 template <class Function, class... Arguments>
@@ -48,6 +55,15 @@ auto call(const char* name, Function* function, Arguments... arguments) {
     trace(std::move(line));
   }
   return function(arguments...);
+}
+
+// A Vulkan struct with its sType set and every other member zero (a
+// designated sType alone leaves the rest to -Wmissing-field-initializers).
+template <class Info>
+Info make(VkStructureType type) {
+  Info info{};
+  info.sType = type;
+  return info;
 }
 
 // Throws VulkanError "safegi::vk: <what> failed: VK_ERROR_..." unless VK_SUCCESS.

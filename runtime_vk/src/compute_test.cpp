@@ -23,9 +23,9 @@ TEST_F(ComputeTest, ScalesRadianceByAPushConstantAndWritesAnImage) {
   specialization.set("gl_WorkGroupSize.x", 4u).set("exposure", 2.0f).set(2u, 4u);  // id 2: row_length
   ComputePipeline pipeline(context(), test_shader("scale"), specialization);
 
-  const std::vector<radiance> input = {rgb(1, 2, 3),     rgb(0.5f, 0.25f, 0.125f), rgb(0, 0, 0), rgb(4, 8, 16),
-                                       rgb(-1, 1, -1),   rgb(10, 20, 30),          rgb(0.75f, 1.5f, 2.25f),
-                                       rgb(100, 100, 100)};
+  const std::vector<radiance> input = {
+      rgb(1, 2, 3),    rgb(0.5f, 0.25f, 0.125f), rgb(0, 0, 0),      rgb(4, 8, 16), rgb(-1, 1, -1),
+      rgb(10, 20, 30), rgb(0.75f, 1.5f, 2.25f),  rgb(100, 100, 100)};
   storage_buffer<radiance> source(context(), input);
   storage_buffer<radiance> target(context(), input.size());
   image2d<glm::vec4> image(context(), 4, 2);
@@ -45,11 +45,11 @@ TEST_F(ComputeTest, ScalesRadianceByAPushConstantAndWritesAnImage) {
   EXPECT_EQ(push.bytes().size(), 8u);
   push.set(pipeline.push_constant<float>("factor"), 3.0f);
   push.set(pipeline.push_constant<std::uint32_t>("Push.count"), 7u);  // the last element is left alone
-  pipeline.dispatch(push, 2);                                           // 2 workgroups of 4
+  pipeline.dispatch(push, 2);                                         // 2 workgroups of 4
 
   // Every value is exact in binary floating point: compared exactly.
-  const std::vector<glm::vec3> expected = {{7, 14, 22},   {4, 3.5f, 4.75f},  {1, 2, 4},   {25, 50, 100},
-                                           {-5, 8, -2},   {61, 122, 184},    {5.5f, 11, 17.5f}, {0, 0, 0}};
+  const std::vector<glm::vec3> expected = {{7, 14, 22}, {4, 3.5f, 4.75f}, {1, 2, 4},         {25, 50, 100},
+                                           {-5, 8, -2}, {61, 122, 184},   {5.5f, 11, 17.5f}, {0, 0, 0}};
   const std::vector<radiance> scaled = target.read_back();
   const std::vector<glm::vec4> texels = image.read_back();
   ASSERT_EQ(scaled.size(), expected.size());

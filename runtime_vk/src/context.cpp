@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "calls.hpp"
 #include "context_impl.hpp"
@@ -29,8 +30,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverity
                                                      VkDebugUtilsMessageTypeFlagsEXT,
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
   auto* impl = static_cast<ContextImpl*>(user);
-  const std::string message = std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning") +
-                              ": " + (data && data->pMessage ? data->pMessage : "(no message)");
+  const std::string message =
+      std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning") + ": " +
+      (data && data->pMessage ? data->pMessage : "(no message)");
   if (impl->info.validation == Validation::fatal) {
     std::fprintf(stderr, "safegi::vk: validation layer %s\n", message.c_str());
     std::fflush(stderr);
@@ -46,29 +48,30 @@ bool layer_available(const char* name) {
   vkEnumerateInstanceLayerProperties(&count, nullptr);
   std::vector<VkLayerProperties> layers(count);
   vkEnumerateInstanceLayerProperties(&count, layers.data());
-  return std::any_of(layers.begin(), layers.end(), [name](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
+  return std::any_of(layers.begin(), layers.end(),
+                     [name](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
 void create_instance(ContextImpl& impl) {
   const bool validation = impl.info.validation != Validation::off;
   if (validation && !layer_available(kValidationLayer))
-    throw ContextError("safegi::vk: the validation layer VK_LAYER_KHRONOS_validation is not installed "
-                       "(Debian: vulkan-validationlayers), or set SAFEGI_VK_VALIDATION=0");
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    throw ContextError(
+        "safegi::vk: the validation layer VK_LAYER_KHRONOS_validation is not installed "
+        "(Debian: vulkan-validationlayers), or set SAFEGI_VK_VALIDATION=0");
+  auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   app.pApplicationName = "safegi";
   app.pEngineName = "safegi runtime_vk";
   app.apiVersion = VK_API_VERSION_1_2;
-  VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  auto messenger = make<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
   messenger.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                          VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = on_validation_message;
   messenger.pUserData = &impl;
   const char* layers[] = {kValidationLayer};
   const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-  VkInstanceCreateInfo create{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  auto create = make<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
   create.pApplicationInfo = &app;
   if (validation) {
     create.enabledLayerCount = 1;
@@ -101,7 +104,8 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
   std::vector<VkPhysicalDevice> devices(count);
   check(SAFEGI_VK(vkEnumeratePhysicalDevices, impl.instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
   if (devices.empty())
-    throw ContextError("safegi::vk: no Vulkan device (is a driver installed? Debian: mesa-vulkan-drivers for lavapipe)");
+    throw ContextError(
+        "safegi::vk: no Vulkan device (is a driver installed? Debian: mesa-vulkan-drivers for lavapipe)");
   std::vector<std::string> names;
   for (VkPhysicalDevice d : devices) {
     VkPhysicalDeviceProperties p;
@@ -119,15 +123,17 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
     return std::nullopt;
   };
   std::optional<std::uint32_t> chosen;
-  const bool by_index = !choice.empty() && std::all_of(choice.begin(), choice.end(), [](unsigned char c) { return std::isdigit(c); });
+  const bool by_index =
+      !choice.empty() && std::all_of(choice.begin(), choice.end(), [](unsigned char c) { return std::isdigit(c); });
   for (std::uint32_t i = 0; i < devices.size() && !chosen; ++i) {
-    if (by_index ? std::to_string(i) == choice
-                 : choice.empty() ? compute_family(devices[i]).has_value()
-                                  : lower(names[i]).find(lower(choice)) != std::string::npos)
+    if (by_index         ? std::to_string(i) == choice
+        : choice.empty() ? compute_family(devices[i]).has_value()
+                         : lower(names[i]).find(lower(choice)) != std::string::npos)
       chosen = i;
   }
   if (!chosen)
-    throw ContextError("safegi::vk: no Vulkan device " + (choice.empty() ? std::string("with a compute queue") : "matching '" + choice + "'") +
+    throw ContextError("safegi::vk: no Vulkan device " +
+                       (choice.empty() ? std::string("with a compute queue") : "matching '" + choice + "'") +
                        " (SAFEGI_VK_DEVICE: an index or part of a name); the devices are:" + device_list(names));
   const auto family = compute_family(devices[*chosen]);
   if (!family) throw ContextError("safegi::vk: device " + names[*chosen] + " has no compute queue");
@@ -141,8 +147,8 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
   impl.info.device_name = properties.deviceName;
   impl.info.api_version = properties.apiVersion;
   impl.info.software = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-  VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  auto driver = make<VkPhysicalDeviceDriverProperties>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
+  auto properties2 = make<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
   properties2.pNext = &driver;
   if (VK_API_VERSION_MINOR(properties.apiVersion) >= 2 || VK_API_VERSION_MAJOR(properties.apiVersion) > 1) {
     vkGetPhysicalDeviceProperties2(impl.physical, &properties2);
@@ -152,16 +158,16 @@ void choose_device(ContextImpl& impl, const std::string& choice) {
 
 void create_device(ContextImpl& impl) {
   const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  auto queue = make<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
   queue.queueFamilyIndex = impl.queue_family;
   queue.queueCount = 1;
   queue.pQueuePriorities = &priority;
-  VkDeviceCreateInfo create{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  auto create = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
   create.queueCreateInfoCount = 1;
   create.pQueueCreateInfos = &queue;
   check(SAFEGI_VK(vkCreateDevice, impl.physical, &create, nullptr, &impl.device), "vkCreateDevice");
   SAFEGI_VK(vkGetDeviceQueue, impl.device, impl.queue_family, 0u, &impl.queue);
-  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  auto pool = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = impl.queue_family;
   check(SAFEGI_VK(vkCreateCommandPool, impl.device, &pool, nullptr, &impl.pool), "vkCreateCommandPool");
@@ -213,32 +219,46 @@ std::string describe(const VkComputePipelineCreateInfo* info) {
   const VkSpecializationInfo* s = info->stage.pSpecializationInfo;
   std::string text = "{entry " + std::string(info->stage.pName);
   for (std::uint32_t i = 0; s && i < s->mapEntryCount; ++i)
-    text += " constant " + std::to_string(s->pMapEntries[i].constantID) + '@' + std::to_string(s->pMapEntries[i].offset);
+    text +=
+        " constant " + std::to_string(s->pMapEntries[i].constantID) + '@' + std::to_string(s->pMapEntries[i].offset);
   return text + '}';
 }
 
 std::string result_name(VkResult result) {
   switch (result) {
-    case VK_SUCCESS: return "VK_SUCCESS";
-    case VK_NOT_READY: return "VK_NOT_READY";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    case VK_INCOMPLETE: return "VK_INCOMPLETE";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
-    case VK_ERROR_INVALID_SHADER_NV: return "VK_ERROR_INVALID_SHADER_NV";
-    default: return "VkResult " + std::to_string(static_cast<int>(result));
+    case VK_SUCCESS:
+      return "VK_SUCCESS";
+    case VK_NOT_READY:
+      return "VK_NOT_READY";
+    case VK_TIMEOUT:
+      return "VK_TIMEOUT";
+    case VK_INCOMPLETE:
+      return "VK_INCOMPLETE";
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+      return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+      return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED:
+      return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST:
+      return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_LAYER_NOT_PRESENT:
+      return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT:
+      return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_FEATURE_NOT_PRESENT:
+      return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+      return "VK_ERROR_INCOMPATIBLE_DRIVER";
+    case VK_ERROR_INVALID_SHADER_NV:
+      return "VK_ERROR_INVALID_SHADER_NV";
+    default:
+      return "VkResult " + std::to_string(static_cast<int>(result));
   }
 }
 
 void check(VkResult result, std::string_view what) {
-  if (result != VK_SUCCESS)
-    throw VulkanError("safegi::vk: " + std::string(what) + " failed: " + result_name(result));
+  if (result != VK_SUCCESS) throw VulkanError("safegi::vk: " + std::string(what) + " failed: " + result_name(result));
 }
 
 ContextImpl::~ContextImpl() {
@@ -263,7 +283,7 @@ std::uint32_t ContextImpl::memory_type(std::uint32_t type_bits, VkMemoryProperty
 }
 
 void ContextImpl::submit(const std::function<void(VkCommandBuffer)>& record) {
-  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  auto allocate = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   allocate.commandPool = pool;
   allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocate.commandBufferCount = 1;
@@ -271,14 +291,14 @@ void ContextImpl::submit(const std::function<void(VkCommandBuffer)>& record) {
   check(SAFEGI_VK(vkAllocateCommandBuffers, device, &allocate, &commands), "vkAllocateCommandBuffers");
   VkFence fence = VK_NULL_HANDLE;
   try {
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(SAFEGI_VK(vkBeginCommandBuffer, commands, &begin), "vkBeginCommandBuffer");
     record(commands);
     check(SAFEGI_VK(vkEndCommandBuffer, commands), "vkEndCommandBuffer");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    auto fence_info = make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
     check(SAFEGI_VK(vkCreateFence, device, &fence_info, nullptr, &fence), "vkCreateFence");
-    VkSubmitInfo submit_info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    auto submit_info = make<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
     submit_info.commandBufferCount = 1;
     submit_info.pCommandBuffers = &commands;
     check(SAFEGI_VK(vkQueueSubmit, queue, 1u, &submit_info, fence), "vkQueueSubmit");

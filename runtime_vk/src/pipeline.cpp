@@ -119,7 +119,7 @@ void create_layouts(PipelineImpl& p) {
     std::vector<VkDescriptorSetLayoutBinding> entries;
     for (const Binding& b : p.bindings)
       if (b.slot.set == set) entries.push_back({b.slot.binding, b.type, b.count, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-    VkDescriptorSetLayoutCreateInfo create{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    auto create = make<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     create.bindingCount = static_cast<std::uint32_t>(entries.size());
     create.pBindings = entries.data();
     VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
@@ -128,7 +128,7 @@ void create_layouts(PipelineImpl& p) {
     p.set_layouts.push_back(set_layout);
   }
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, p.push_size};
-  VkPipelineLayoutCreateInfo create{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  auto create = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   create.setLayoutCount = static_cast<std::uint32_t>(p.set_layouts.size());
   create.pSetLayouts = p.set_layouts.data();
   create.pushConstantRangeCount = p.push_block ? 1u : 0u;
@@ -139,12 +139,12 @@ void create_layouts(PipelineImpl& p) {
   for (const Binding& b : p.bindings) counts[b.type] += b.count;
   std::vector<VkDescriptorPoolSize> sizes;
   for (const auto& [type, count] : counts) sizes.push_back({type, count});
-  VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  auto pool = make<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.maxSets = set_count;
   pool.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   pool.pPoolSizes = sizes.data();
   check(SAFEGI_VK(vkCreateDescriptorPool, device, &pool, kNoAllocator, &p.pool), "vkCreateDescriptorPool");
-  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  auto allocate = make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   allocate.descriptorPool = p.pool;
   allocate.descriptorSetCount = set_count;
   allocate.pSetLayouts = p.set_layouts.data();
@@ -188,7 +188,7 @@ void resolve_specialization(const PipelineImpl& p, const Specialization& special
 
 void create_pipeline(PipelineImpl& p, const std::vector<std::uint32_t>& spirv, const Specialization& specialization) {
   VkDevice device = p.context->device;
-  VkShaderModuleCreateInfo module{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  auto module = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
   module.codeSize = spirv.size() * 4;
   module.pCode = spirv.data();
   trace_bytes("shader module", std::as_bytes(std::span(spirv)));
@@ -198,26 +198,32 @@ void create_pipeline(PipelineImpl& p, const std::vector<std::uint32_t>& spirv, c
   resolve_specialization(p, specialization, entries, data);
   trace_bytes("specialization", std::as_bytes(std::span(data)));
   VkSpecializationInfo info{static_cast<std::uint32_t>(entries.size()), entries.data(), data.size() * 4, data.data()};
-  VkComputePipelineCreateInfo create{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  create.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  auto create = make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+  create.stage = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   create.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   create.stage.module = p.module;
   create.stage.pName = "main";
   create.stage.pSpecializationInfo = entries.empty() ? nullptr : &info;
   create.layout = p.layout;
-  const VkResult result = SAFEGI_VK(vkCreateComputePipelines, device, VkPipelineCache{VK_NULL_HANDLE}, 1u,
-                                    static_cast<const VkComputePipelineCreateInfo*>(&create), kNoAllocator, &p.pipeline);
+  const VkResult result =
+      SAFEGI_VK(vkCreateComputePipelines, device, VkPipelineCache{VK_NULL_HANDLE}, 1u,
+                static_cast<const VkComputePipelineCreateInfo*>(&create), kNoAllocator, &p.pipeline);
   if (result != VK_SUCCESS)
     throw ShaderError(p.name + ": error: the driver refused the compute pipeline (" + result_name(result) + ")");
 }
 
 std::string_view lookup_words(Lookup lookup) {
   switch (lookup) {
-    case Lookup::push_constant: return "push-constant member";
-    case Lookup::member: return "block member";
-    case Lookup::array_member: return "block member";
-    case Lookup::storage_array: return "storage array";
-    case Lookup::image: return "image";
+    case Lookup::push_constant:
+      return "push-constant member";
+    case Lookup::member:
+      return "block member";
+    case Lookup::array_member:
+      return "block member";
+    case Lookup::storage_array:
+      return "storage array";
+    case Lookup::image:
+      return "image";
   }
   return "name";
 }
@@ -229,8 +235,9 @@ bool block_named(const gl::Symbol& s, std::string_view name) {
 }  // namespace
 }  // namespace detail
 
-using detail::PipelineImpl;
 using detail::block_named;
+using detail::make;
+using detail::PipelineImpl;
 
 ComputePipeline::ComputePipeline(Context& context, ComputeShader shader, Specialization specialization)
     : impl_(std::make_unique<PipelineImpl>()) {
@@ -240,7 +247,8 @@ ComputePipeline::ComputePipeline(Context& context, ComputeShader shader, Special
   const std::string label = shader.name.empty() ? (stage ? stage->file : "compute pipeline") : shader.name;
   if (!stage) throw ShaderError(label + ": error: the symbol table has no compute stage");
   if (stage->client != gl::Client::vulkan)
-    throw ShaderError(stage->file + ": error: the stage was compiled for OpenGL; a Vulkan pipeline needs the table "
+    throw ShaderError(stage->file +
+                      ": error: the stage was compiled for OpenGL; a Vulkan pipeline needs the table "
                       "safeglslc writes with -V or --target-env vulkan1.x");
   if (shader.spirv.size() < 5 || shader.spirv[0] != 0x07230203u)
     throw ShaderError(label + ": error: not a SPIR-V module (" + std::to_string(shader.spirv.size()) + " words)");
@@ -258,6 +266,17 @@ ComputePipeline& ComputePipeline::operator=(ComputePipeline&&) noexcept = defaul
 
 const std::string& ComputePipeline::name() const { return impl_->name; }
 const StageSymbols& ComputePipeline::stage() const { return impl_->stage; }
+
+void ComputePipeline::expect_source_hash(std::string_view hash) const {
+  const PipelineImpl& p = *impl_;
+  if (p.stage.source_hash != hash)
+    throw BindingError(p.stage.file +
+                       ": error: the handles were generated from another version of this shader "
+                       "(source hash " +
+                       std::string(hash) + ", the table says " +
+                       (p.stage.source_hash.empty() ? std::string("none") : p.stage.source_hash) +
+                       "); regenerate them");
+}
 
 block_data ComputePipeline::push_constants() const {
   const PipelineImpl& p = *impl_;
@@ -317,8 +336,8 @@ Location ComputePipeline::locate(Lookup lookup, std::string_view name, const det
         const bool is_float = s.type.glsl_type == "image2D";
         const bool host_float = host->type.glsl_type.find_first_of("iu") != 0;  // vec4, float; not ivec4, uint
         if (is_float != host_float)
-          throw BindingError(p.at(s) + "image '" + s.name + "' is a " + s.type.glsl_type + " but the host's texels are " +
-                             gl::in_words(host->type, p.namer));
+          throw BindingError(p.at(s) + "image '" + s.name + "' is a " + s.type.glsl_type +
+                             " but the host's texels are " + gl::in_words(host->type, p.namer));
       }
       location.slot = b.slot;
       return location;
@@ -351,33 +370,37 @@ Location ComputePipeline::locate(Lookup lookup, std::string_view name, const det
   const bool wants_array = lookup == Lookup::array_member || lookup == Lookup::storage_array;
   if (lookup == Lookup::storage_array) {
     if (block->storage != gl::Storage::buffer)
-      throw BindingError(where + " is in uniform block '" + block->name + "'; a storage_buffer binds to a buffer block");
+      throw BindingError(where + " is in uniform block '" + block->name +
+                         "'; a storage_buffer binds to a buffer block");
     if (block->members.size() != 1)
-      throw BindingError(where + " is one of " + std::to_string(block->members.size()) + " members of '" +
-                         block->name + "'; a storage_buffer binds a block that is one array (use block() and array_member<T>)");
-    const auto b = std::find_if(p.bindings.begin(), p.bindings.end(), [&](const auto& x) { return x.symbol == block_index; });
+      throw BindingError(where + " is one of " + std::to_string(block->members.size()) + " members of '" + block->name +
+                         "'; a storage_buffer binds a block that is one array (use block() and array_member<T>)");
+    const auto b =
+        std::find_if(p.bindings.begin(), p.bindings.end(), [&](const auto& x) { return x.symbol == block_index; });
     location.slot = b->slot;
   }
   if (!member->offset)
-    throw BindingError(where + " has no offset in the symbol table (its block has no std140, std430 or scalar "
-                               "packing, or a member before it is of a type the checker does not model)");
+    throw BindingError(where +
+                       " has no offset in the symbol table (its block has no std140, std430 or scalar "
+                       "packing, or a member before it is of a type the checker does not model)");
   location.block = static_cast<std::uint32_t>(block_index);
   location.offset = static_cast<std::uint32_t>(*member->offset);
   location.stride = static_cast<std::uint32_t>(member->array_stride.value_or(0));
   location.count = static_cast<std::uint32_t>(member->array_size.value_or(0));
   location.matrix_stride = static_cast<std::uint32_t>(member->matrix_stride.value_or(16));
-  if (member->row_major)
-    throw BindingError(where + " is a row_major matrix; runtime_vk writes matrices by columns");
+  if (member->row_major) throw BindingError(where + " is a row_major matrix; runtime_vk writes matrices by columns");
   if (!host) return location;
 
   if (is_array != wants_array)
-    throw BindingError(where + (is_array ? " is an array" + (member->array_size ? " of " + std::to_string(*member->array_size) : std::string()) +
-                                               "; look it up with array_member<T>"
-                                         : " is not an array; look it up with member<T>"));
+    throw BindingError(
+        where + (is_array ? " is an array" +
+                                (member->array_size ? " of " + std::to_string(*member->array_size) : std::string()) +
+                                "; look it up with array_member<T>"
+                          : " is not an array; look it up with member<T>"));
   const std::vector<std::string> parts = gl::differences(member->type, host->type);
   if (!parts.empty())
-    throw BindingError(where + " is declared with type " + gl::in_words(member->type, p.namer) +
-                       " but the host uses " + gl::in_words(host->type, p.namer) + " (" + detail::differ_words(parts) + ")");
+    throw BindingError(where + " is declared with type " + gl::in_words(member->type, p.namer) + " but the host uses " +
+                       gl::in_words(host->type, p.namer) + " (" + detail::differ_words(parts) + ")");
   const bool is_struct = host->is_struct;
   if (!is_array && host->columns == 1 && member->size && *member->size != host->size)
     throw BindingError(where + " is " + std::to_string(*member->size) + " bytes in the shader but " +
@@ -411,14 +434,14 @@ void ComputePipeline::bind_buffer(descriptor_slot slot, const detail::Buffer& bu
   const VkDescriptorType wanted =
       buffer.use() == BufferUse::uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   if (b->type != wanted)
-    throw BindingError(p.at(s) + "'" + s.name + "' is a " +
-                       (s.storage == gl::Storage::buffer ? "storage" : "uniform") + " block but the host binds a " +
-                       (buffer.use() == BufferUse::uniform ? "uniform" : "storage") + " buffer");
+    throw BindingError(p.at(s) + "'" + s.name + "' is a " + (s.storage == gl::Storage::buffer ? "storage" : "uniform") +
+                       " block but the host binds a " + (buffer.use() == BufferUse::uniform ? "uniform" : "storage") +
+                       " buffer");
   if (s.size && buffer.size() < static_cast<std::size_t>(*s.size))
     throw ResourceError(p.at(s) + "block '" + s.name + "' is " + std::to_string(*s.size) +
                         " bytes but the buffer bound to it holds " + std::to_string(buffer.size()));
   VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   write.dstSet = p.sets[slot.set];
   write.dstBinding = slot.binding;
   write.descriptorCount = 1;
@@ -436,7 +459,7 @@ void ComputePipeline::bind_image(descriptor_slot slot, const detail::Image& imag
     throw BindingError(p.name + ": error: no storage image at set " + std::to_string(slot.set) + ", binding " +
                        std::to_string(slot.binding));
   VkDescriptorImageInfo info{VK_NULL_HANDLE, image.view(), VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   write.dstSet = p.sets[slot.set];
   write.dstBinding = slot.binding;
   write.descriptorCount = 1;
@@ -464,25 +487,27 @@ void ComputePipeline::dispatch(const block_data& push_constants, std::uint32_t x
   if (p.push_block && push_constants.block() != *p.push_block)
     detail::throw_wrong_block(push_constants.name(), static_cast<std::uint32_t>(*p.push_block), push_constants.block());
   p.context->submit([&](VkCommandBuffer commands) {
-    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    auto before = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
     SAFEGI_VK(vkCmdPipelineBarrier, commands,
               VkPipelineStageFlags{VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
                                    VK_PIPELINE_STAGE_TRANSFER_BIT},
               VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT}, VkDependencyFlags{0}, 1u, &before, 0u,
-              static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u, static_cast<const VkImageMemoryBarrier*>(nullptr));
+              static_cast<const VkBufferMemoryBarrier*>(nullptr), 0u,
+              static_cast<const VkImageMemoryBarrier*>(nullptr));
     SAFEGI_VK(vkCmdBindPipeline, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
     if (!p.sets.empty())
       SAFEGI_VK(vkCmdBindDescriptorSets, commands, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0u,
-                static_cast<std::uint32_t>(p.sets.size()), p.sets.data(), 0u, static_cast<const std::uint32_t*>(nullptr));
+                static_cast<std::uint32_t>(p.sets.size()), p.sets.data(), 0u,
+                static_cast<const std::uint32_t*>(nullptr));
     if (p.push_block) {
       detail::trace_bytes("push constants", push_constants.bytes());
-      SAFEGI_VK(vkCmdPushConstants, commands, p.layout, VkShaderStageFlags{VK_SHADER_STAGE_COMPUTE_BIT}, 0u, p.push_size,
-                static_cast<const void*>(push_constants.bytes().data()));
+      SAFEGI_VK(vkCmdPushConstants, commands, p.layout, VkShaderStageFlags{VK_SHADER_STAGE_COMPUTE_BIT}, 0u,
+                p.push_size, static_cast<const void*>(push_constants.bytes().data()));
     }
     SAFEGI_VK(vkCmdDispatch, commands, x, y, z);
-    VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    auto after = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
     SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT},

@@ -22,7 +22,7 @@ VkFormat format_of(ScalarType scalar, int components) {
 }
 
 VkDeviceMemory allocate(ContextImpl& context, VkMemoryRequirements requirements, VkMemoryPropertyFlags flags) {
-  VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  auto allocate = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
   allocate.allocationSize = requirements.size;
   allocate.memoryTypeIndex = context.memory_type(requirements.memoryTypeBits, flags);
   VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -30,8 +30,9 @@ VkDeviceMemory allocate(ContextImpl& context, VkMemoryRequirements requirements,
   return memory;
 }
 
-void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags from_access,
-                VkAccessFlags to_access, VkPipelineStageFlags from_stage, VkPipelineStageFlags to_stage);
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                VkAccessFlags from_access, VkAccessFlags to_access, VkPipelineStageFlags from_stage,
+                VkPipelineStageFlags to_stage);
 
 }  // namespace
 
@@ -47,7 +48,7 @@ void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkI
 }
 
 Buffer::Buffer(ContextImpl& context, std::size_t bytes, BufferUse use) : context_(&context), size_(bytes), use_(use) {
-  VkBufferCreateInfo create{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  auto create = make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
   create.size = bytes == 0 ? 16 : bytes;  // Vulkan has no empty buffer
   create.usage = (use == BufferUse::uniform ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -56,8 +57,8 @@ Buffer::Buffer(ContextImpl& context, std::size_t bytes, BufferUse use) : context
   try {
     VkMemoryRequirements requirements;
     SAFEGI_VK(vkGetBufferMemoryRequirements, context_->device, buffer_, &requirements);
-    memory_ = allocate(*context_, requirements,
-                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    memory_ =
+        allocate(*context_, requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     check(SAFEGI_VK(vkBindBufferMemory, context_->device, buffer_, memory_, VkDeviceSize{0}), "vkBindBufferMemory");
     void* mapped = nullptr;
     check(SAFEGI_VK(vkMapMemory, context_->device, memory_, VkDeviceSize{0}, VkDeviceSize{VK_WHOLE_SIZE},
@@ -119,7 +120,7 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
   if (width <= 0 || height <= 0)
     throw ResourceError("safegi::vk: an image of " + std::to_string(width) + 'x' + std::to_string(height) + " texels");
   const VkFormat format = format_of(scalar, components);
-  VkImageCreateInfo create{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  auto create = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   create.imageType = VK_IMAGE_TYPE_2D;
   create.format = format;
   create.extent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
@@ -136,7 +137,7 @@ Image::Image(Context& context, int width, int height, ScalarType scalar, int com
     SAFEGI_VK(vkGetImageMemoryRequirements, context_->device, image_, &requirements);
     memory_ = allocate(*context_, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     check(SAFEGI_VK(vkBindImageMemory, context_->device, image_, memory_, VkDeviceSize{0}), "vkBindImageMemory");
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    auto view = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     view.image = image_;
     view.viewType = VK_IMAGE_VIEW_TYPE_2D;
     view.format = format;
@@ -198,9 +199,10 @@ namespace {
 
 // Moves the whole image from one layout to another, ordering `from_access`
 // work in `from_stage` before `to_access` work in `to_stage`.
-void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags from_access,
-                VkAccessFlags to_access, VkPipelineStageFlags from_stage, VkPipelineStageFlags to_stage) {
-  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                VkAccessFlags from_access, VkAccessFlags to_access, VkPipelineStageFlags from_stage,
+                VkPipelineStageFlags to_stage) {
+  auto barrier = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
   barrier.srcAccessMask = from_access;
   barrier.dstAccessMask = to_access;
   barrier.oldLayout = from;
@@ -227,14 +229,16 @@ void copy(ContextImpl& context, VkImage image, VkBuffer buffer, int width, int h
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
     if (to_image)
-      SAFEGI_VK(vkCmdCopyBufferToImage, commands, buffer, image, during, 1u, static_cast<const VkBufferImageCopy*>(&region));
+      SAFEGI_VK(vkCmdCopyBufferToImage, commands, buffer, image, during, 1u,
+                static_cast<const VkBufferImageCopy*>(&region));
     else
-      SAFEGI_VK(vkCmdCopyImageToBuffer, commands, image, during, buffer, 1u, static_cast<const VkBufferImageCopy*>(&region));
+      SAFEGI_VK(vkCmdCopyImageToBuffer, commands, image, during, buffer, 1u,
+                static_cast<const VkBufferImageCopy*>(&region));
     transition(commands, image, during, VK_IMAGE_LAYOUT_GENERAL, transfer,
                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
     if (!to_image) {  // the host reads the buffer next
-      VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      auto host = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
       host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
       host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
       SAFEGI_VK(vkCmdPipelineBarrier, commands, VkPipelineStageFlags{VK_PIPELINE_STAGE_TRANSFER_BIT},

@@ -1,6 +1,8 @@
 // safegi-gl-handles: writes a C++ header of typed handles for a program from its
-// symbol table (docs/runtime-gl.md, "Generated handles").
+// symbol table (docs/runtime-gl.md, "Generated handles"), or with --api vulkan
+// for a runtime_vk compute pipeline (docs/runtime-vk.md).
 //   safegi-gl-handles emission.program.json -o emission_handles.hpp --namespace shaders::emission
+//   safegi-gl-handles --api vulkan scale.json -o scale_handles.hpp --namespace shaders::scale
 // Exit codes: 0 written, 1 the table is invalid or has a type without C++ spelling, 2 usage or I/O.
 #include <CLI/CLI.hpp>
 #include <fstream>
@@ -11,7 +13,7 @@
 #include "safegi/symbol_table/handles_header.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Writes a C++ header of typed runtime_gl handles from a SafeGI symbol table"};
+  CLI::App app{"Writes a C++ header of typed runtime_gl (or runtime_vk) handles from a SafeGI symbol table"};
   std::string input, output = "-";
   std::vector<std::string> cpp_names;
   safegi::gl::HandlesHeaderOptions options;
@@ -20,11 +22,15 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", options.namespace_name, "C++ namespace of the handles struct");
   app.add_option("--struct", options.struct_name, "name of the handles struct");
   app.add_option("--cpp", cpp_names, "NAME=TYPE: C++ spelling of a base dimension or space");
+  std::string api = "opengl";
+  app.add_option("--api", api, "opengl (runtime_gl handles) or vulkan (runtime_vk handles and block layouts)")
+      ->check(CLI::IsMember({"opengl", "vulkan"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : 2;
   }
+  options.api = api == "vulkan" ? safegi::gl::Client::vulkan : safegi::gl::Client::opengl;
   for (const auto& mapping : cpp_names) {
     const auto equals = mapping.find('=');
     if (equals == std::string::npos || equals == 0) {

@@ -3,6 +3,7 @@
 // value_traits (shared with runtime_gl: float, int, uint, GLM vectors and
 // matrices, and the typed library's types), plus plain structs the host
 // declares as std430 structs (a scene's triangles, BVH nodes).
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -36,7 +37,8 @@ struct std430_struct;
 template <class T>
 concept host_struct = requires {
   { std430_struct<T>::glsl_name } -> std::convertible_to<std::string_view>;
-} && std::is_trivially_copyable_v<T>;
+}
+&&std::is_trivially_copyable_v<T>;
 
 // What a buffer or block member can hold.
 template <class T>
@@ -44,7 +46,7 @@ concept buffer_element = gl_value<T> || host_struct<T>;
 
 // What can also be read back.
 template <class T>
-concept readable_element = host_struct<T> || (gl_value<T> && requires(const gl_type_of<T>& g) {
+concept readable_element = host_struct<T> ||(gl_value<T>&& requires(const gl_type_of<T>& g) {
   { value_traits<T>::from_gl(g) } -> std::convertible_to<T>;
 });
 
@@ -70,8 +72,10 @@ constexpr std::uint32_t value_size(std::uint32_t matrix_stride) {
     return static_cast<std::uint32_t>(sizeof(T));
   } else {
     using L = gl_layout_of<T>;
-    if constexpr (L::columns == 1) return 4u * L::components;
-    else return matrix_stride * L::columns;
+    if constexpr (L::columns == 1)
+      return 4u * L::components;
+    else
+      return matrix_stride * L::columns;
   }
 }
 
@@ -111,11 +115,11 @@ T decode(const std::byte* in, std::uint32_t matrix_stride) {
 
 // What the checked build compares with the symbol table.
 struct HostLayout {
-  gl::ValueType type;          // as value_traits<T>::describe(); structs: plain, their GLSL name
-  std::uint32_t size = 0;      // value_size with the table's matrix stride of 16
-  std::uint32_t stride = 0;    // std430_stride
+  gl::ValueType type;        // as value_traits<T>::describe(); structs: plain, their GLSL name
+  std::uint32_t size = 0;    // value_size with the table's matrix stride of 16
+  std::uint32_t stride = 0;  // std430_stride
   int columns = 1;
-  bool is_struct = false;      // a std430_struct
+  bool is_struct = false;  // a std430_struct
 };
 
 template <buffer_element T>
@@ -133,6 +137,41 @@ HostLayout host_layout() {
   return layout;
 }
 
+template <class T>
+struct element_of {
+  using type = T;
+};
+template <class T, std::size_t N>
+struct element_of<T[N]> {
+  using type = T;
+};
+template <class T, std::size_t N>
+struct element_of<std::array<T, N>> {
+  using type = T;
+};
+
 }  // namespace detail
 
 }  // namespace safegi::vk
+
+// Compile-time checks of a host struct that mirrors a block, against the
+// layout a generated handles header gives (safegi-gl-handles --api vulkan):
+//   struct PushHost { float factor; std::uint32_t count; };
+//   SAFEGI_VK_EXPECT_MEMBER(PushHost, count, shaders::scale::layout::Push::count);
+// fails to compile when the field's type (dimension, space, GLSL type), byte
+// offset or size is not the shader's. Arrays: T[N] or std::array<T, N> of the
+// member's element type, N * stride bytes.
+#define SAFEGI_VK_EXPECT_MEMBER(Host, field, Member)                                                                 \
+  static_assert(                                                                                                     \
+      std::is_same_v<typename ::safegi::vk::detail::element_of<decltype(Host::field)>::type, typename Member::type>, \
+      #Host "::" #field ": the type differs from the shader's " #Member);                                            \
+  static_assert(offsetof(Host, field) == Member::offset,                                                             \
+                #Host "::" #field ": the offset differs from the shader's " #Member);                                \
+  static_assert(sizeof(Host::field) == Member::size, #Host "::" #field ": the size differs from the "                \
+                                                                       "shader's " #Member)
+
+// A descriptor set and binding written by hand (raw Vulkan code beside
+// runtime_vk), checked against the generated layout at compile time.
+#define SAFEGI_VK_EXPECT_SLOT(Block, set_number, binding_number)                                        \
+  static_assert(Block::block_slot.set == (set_number) && Block::block_slot.binding == (binding_number), \
+                #Block ": the descriptor set or binding differs from the shader's")

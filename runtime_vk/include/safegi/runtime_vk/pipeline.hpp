@@ -93,13 +93,17 @@ class Specialization {
   }
   template <class T, class Mode>
   static std::optional<gl::ValueType> host_type() {
-    if constexpr (Mode::checks) return value_traits<T>::describe();
-    else return std::nullopt;
+    if constexpr (Mode::checks)
+      return value_traits<T>::describe();
+    else
+      return std::nullopt;
   }
   template <class Mode>
   static std::optional<gl::ValueType> bool_type() {
-    if constexpr (Mode::checks) return gl::ValueType{gl::Kind::plain, "bool", {}, {}};
-    else return std::nullopt;
+    if constexpr (Mode::checks)
+      return gl::ValueType{gl::Kind::plain, "bool", {}, {}};
+    else
+      return std::nullopt;
   }
   std::vector<Entry> entries_;
 };
@@ -193,6 +197,10 @@ class ComputePipeline {
   void dispatch(std::uint32_t x, std::uint32_t y = 1, std::uint32_t z = 1) const;
   void dispatch(const block_data& push_constants, std::uint32_t x, std::uint32_t y = 1, std::uint32_t z = 1) const;
 
+  // Throws BindingError unless the symbol table carries `hash` (a generated
+  // handles header checks it was made from this shader).
+  void expect_source_hash(std::string_view hash) const;
+
   // The untyped core of every lookup. With `host` (checked build) the type is
   // compared too; without (unchecked build) only the location is read.
   Location locate(Lookup lookup, std::string_view name, const detail::HostLayout* host) const;
@@ -202,8 +210,10 @@ class ComputePipeline {
  private:
   template <class T, class Mode>
   static std::unique_ptr<detail::HostLayout> host() {
-    if constexpr (Mode::checks) return std::make_unique<detail::HostLayout>(detail::host_layout<T>());
-    else return nullptr;
+    if constexpr (Mode::checks)
+      return std::make_unique<detail::HostLayout>(detail::host_layout<T>());
+    else
+      return nullptr;
   }
   std::unique_ptr<detail::PipelineImpl> impl_;
 };

@@ -120,6 +120,16 @@ class block_data {
     return detail::decode<T>(bytes_.data() + member.offset + index * member.stride, member.matrix_stride);
   }
 
+  // Copies a host struct that mirrors the block byte for byte (check it
+  // against a generated header's layout:: with SAFEGI_VK_EXPECT_MEMBER).
+  template <class Host>
+  requires std::is_trivially_copyable_v<Host>
+  void copy_from(const Host& host) {
+    if (sizeof(Host) > bytes_.size())
+      detail::throw_out_of_range("block '" + name_ + "': a host struct", sizeof(Host), bytes_.size());
+    std::memcpy(bytes_.data(), &host, sizeof(Host));
+  }
+
   const std::string& name() const { return name_; }
   std::uint32_t block() const { return block_; }
   BufferUse use() const { return use_; }
@@ -184,9 +194,7 @@ class storage_buffer {
     for (std::size_t i = 0; i < values.size(); ++i) detail::encode(bytes.data() + i * stride, values[i], 16);
     buffer_.write(0, bytes);
   }
-  std::vector<T> read_back() const
-    requires readable_element<T>
-  {
+  std::vector<T> read_back() const requires readable_element<T> {
     std::vector<std::byte> bytes(count_ * stride);
     buffer_.read(0, bytes);
     std::vector<T> values;

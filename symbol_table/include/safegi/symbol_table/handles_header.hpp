@@ -18,9 +18,14 @@ struct HandlesHeaderOptions {
   // C++ spelling of base dimensions and spaces beyond the typed library's own
   // (pixel -> "::my::pixel"): a base maps to a dimension type, a space to a tag.
   std::map<std::string, std::string> cpp_names;
+  // opengl: handles for a runtime_gl Program. vulkan: handles for a runtime_vk
+  // ComputePipeline, and every block's layout (offsets, sizes, strides, sets,
+  // bindings) as constants that static_asserts on host structs can use.
+  Client api = Client::opengl;
 };
 
-// Throws SymbolTableError when a symbol's type has no C++ spelling.
+// Throws SymbolTableError when a symbol's type has no C++ spelling (or, for
+// Vulkan, the table has no Vulkan compute stage).
 std::string generate_handles_header(const SymbolTable& table, const HandlesHeaderOptions& options);
 
 }  // namespace safegi::gl
