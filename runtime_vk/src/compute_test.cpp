@@ -111,5 +111,26 @@ TEST_F(ComputeTest, UploadsAnArrayOfStd430Structs) {
     EXPECT_NEAR(raw(result[i]), expected[i], 1e-6f * expected[i]) << "triangle " << i;
 }
 
+// The same results through a whole storage block: sized by the table for a
+// runtime-sized array of 3, bound by the block's name, read back member by member.
+TEST_F(ComputeTest, ReadsARuntimeSizedStorageBlockBack) {
+  ComputePipeline pipeline(context(), test_shader("triangles"));
+  const std::vector<Triangle> scene = {{at(0, 0, 0), 0, at(2, 0, 0), 0, at(0, 3, 0), 0},
+                                       {at(0, 0, 1), 0, at(1, 0, 1), 0, at(0, 1, 1), 1},
+                                       {at(0, 0, 0), 0, at(4, 0, 0), 0, at(0, 0, 4), 2}};
+  storage_buffer<Triangle> triangles(context(), scene);
+  pipeline.bind(pipeline.storage_array<Triangle>("Triangles.triangles"), triangles);
+  block_data areas = pipeline.block("Areas", scene.size());
+  EXPECT_EQ(areas.bytes().size(), 12u);  // std430: floats 4 bytes apart
+  block_buffer areas_buffer(context(), areas);
+  pipeline.bind(pipeline.block_binding("result"), areas_buffer);
+  pipeline.dispatch(pipeline.push_constants(), static_cast<std::uint32_t>(scene.size()));
+  areas_buffer.read(areas);
+  const auto area_of = pipeline.array_member<area>("Areas.areas");
+  const std::vector<float> expected = {3.0f, 1.0f, 24.0f};  // 1e-6 relative, as above
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(raw(areas.get(area_of, i)), expected[i], 1e-6f * expected[i]) << "triangle " << i;
+}
+
 }  // namespace
 }  // namespace safegi::vk

@@ -377,6 +377,8 @@ Location ComputePipeline::locate(Lookup lookup, std::string_view name, const det
                          "'; a storage_buffer binds a block that is one array (use block() and array_member<T>)");
     const auto b =
         std::find_if(p.bindings.begin(), p.bindings.end(), [&](const auto& x) { return x.symbol == block_index; });
+    if (b == p.bindings.end())
+      throw BindingError(where + " is in block '" + block->name + "', which is in no descriptor set");
     location.slot = b->slot;
   }
   if (!member->offset)
