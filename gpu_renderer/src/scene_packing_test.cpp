@@ -1,0 +1,139 @@
+// Every array pack_scene makes against the symbol table safeglslc wrote for
+// the shaders: the block exists at its binding, the member is what the host
+// wrote (kind, dimension exponents, space) and the host's element size is
+// the table's std430 array stride. runtime_vk checks the same when it binds;
+// this test keeps the packing honest without a Vulkan device.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <type_traits>
+
+#include "safegi/cpu_renderer/scene_loader.hpp"
+#include "safegi/typed/reflection.hpp"
+#include "scene_packing.hpp"
+
+namespace safegi::gpu {
+namespace {
+
+using nlohmann::json;
+
+json read_symbols() {
+  std::ifstream in(SAFEGI_GPU_SYMBOLS);
+  EXPECT_TRUE(in) << SAFEGI_GPU_SYMBOLS;
+  return json::parse(in);
+}
+
+// The member "Block.member" of the compute stage's storage blocks, or null.
+const json* find_member(const json& symbols, std::string_view name) {
+  const auto dot = name.find('.');
+  const std::string block(name.substr(0, dot)), member(name.substr(dot + 1));
+  for (const json& symbol : symbols["stages"][0]["symbols"])
+    if (symbol.value("name", "") == block && symbol.value("storage", "") == "buffer")
+      for (const json& m : symbol["members"])
+        if (m["name"] == member) return &m;
+  return nullptr;
+}
+
+// What the table says for a C++ element type T: its kind word, std430 stride,
+// dimension exponents (base name -> exponent) and space.
+struct Expected {
+  std::string kind;
+  std::uint32_t stride;
+  std::map<std::string, int> exponents;
+  std::string space;
+};
+
+template <class T>
+Expected expected_for() {
+  Expected e;
+  if constexpr (std::is_same_v<T, std::uint32_t>) {
+    return {"plain", 4, {}, ""};
+  } else if constexpr (std::is_same_v<T, float>) {
+    return {"scalar", 4, {}, ""};  // float<1>: a dimensionless quantity
+  } else {
+    const type_description d = describe<T>();
+    e.kind = d.kind == type_kind::scalar ? "scalar" : std::string(to_string(d.kind));
+    e.stride = d.kind == type_kind::scalar ? 4 : 16;  // a vec3 in std430 arrays takes 16 bytes
+    for (const dimension_term& term : d.dimension) e.exponents[std::string(term.base)] = term.exponent;
+    e.space = std::string(d.space);
+    // Points, directions and normals are lengths and ratios by their kind: the table gives no dimension.
+    if (d.kind == type_kind::point || d.kind == type_kind::direction || d.kind == type_kind::normal) e.exponents.clear();
+    return e;
+  }
+}
+
+render::Scene load(const std::string& name) { return render::load_scene(std::string(SAFEGI_SCENES_DIR) + "/" + name); }
+
+void expect_matches_table(const PackedScene& packed) {
+  const json symbols = read_symbols();
+  int arrays = 0;
+  for_each_array(packed, [&](std::string_view name, const auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    ++arrays;
+    SCOPED_TRACE(std::string(name));
+    const json* member = find_member(symbols, name);
+    ASSERT_NE(member, nullptr) << "no storage block member " << name << " in the shaders' symbol table";
+    const Expected e = expected_for<T>();
+    EXPECT_EQ((*member)["kind"], e.kind);
+    EXPECT_EQ((*member)["array_stride"], e.stride);
+    EXPECT_TRUE(member->value("unsized", false));
+    std::map<std::string, int> exponents;
+    if (member->contains("dimension"))
+      for (const auto& [base, exponent] : (*member)["dimension"]["exponents"].items()) exponents[base] = exponent;
+    EXPECT_EQ(exponents, e.exponents);
+    const std::string space = member->contains("spaces") ? (*member)["spaces"][0].get<std::string>() : "";
+    EXPECT_EQ(space, e.space);
+  });
+  EXPECT_EQ(arrays, 29);
+}
+
+TEST(ScenePacking, CornellBoxArraysMatchTheSymbolTable) {
+  const render::Scene scene = load("cornell-box/cornell-box.json");
+  const PackedScene packed = pack_scene(scene, 64, 64);
+  expect_matches_table(packed);
+  // One entry per material and shape, each material Lambert.
+  ASSERT_EQ(packed.material_kind.size(), scene.materials.size());
+  EXPECT_EQ(packed.material_diffuse.size(), scene.materials.size());
+  EXPECT_EQ(packed.shape_material.size(), scene.shapes.size());
+  for (std::uint32_t kind : packed.material_kind) EXPECT_EQ(kind, static_cast<std::uint32_t>(MaterialKind::lambert));
+  // The BVH as built: 12 slab planes and 4 children per node.
+  EXPECT_EQ(packed.node_lower.size() % 12, 0u);
+  EXPECT_EQ(packed.node_child.size() * 3, packed.node_lower.size());
+  EXPECT_EQ(packed.triangle_vertex.size(), 3 * packed.triangle_shape.size());
+  EXPECT_EQ(packed.frame.sphere_root, kNone);
+  // The light's two triangles are its only lights.
+  EXPECT_EQ(packed.frame.light_count, 2u);
+  EXPECT_TRUE(packed.unsupported.empty());
+}
+
+TEST(ScenePacking, EveryLeafPrimitiveIsPackedOnce) {
+  const PackedScene packed = pack_scene(load("phong.json"), 40, 16);
+  std::vector<int> seen_triangles(packed.triangle_shape.size()), seen_spheres(packed.sphere_shape.size());
+  const std::uint32_t sphere_root = packed.frame.sphere_root;
+  for (std::size_t slot = 0; slot < packed.node_child.size(); ++slot) {
+    const std::uint32_t count = packed.node_primitive_count[slot];
+    if (count == 0) continue;
+    const bool sphere_node = sphere_root != kNone && slot / 4 >= sphere_root;
+    for (std::uint32_t k = 0; k < count; ++k) ++(sphere_node ? seen_spheres : seen_triangles)[packed.node_child[slot] + k];
+  }
+  for (int n : seen_triangles) EXPECT_EQ(n, 1);
+  for (int n : seen_spheres) EXPECT_EQ(n, 1);
+  EXPECT_GT(seen_spheres.size(), 0u);
+}
+
+TEST(ScenePacking, LightsOfEveryKind) {
+  const PackedScene environment = pack_scene(load("environment.json"), 32, 20);
+  ASSERT_NE(environment.frame.environment_light, kNone);
+  EXPECT_EQ(environment.light_kind[environment.frame.environment_light],
+            static_cast<std::uint32_t>(LightKind::environment));
+  const PackedScene phong = pack_scene(load("phong.json"), 40, 16);
+  EXPECT_EQ(std::count(phong.light_kind.begin(), phong.light_kind.end(), static_cast<std::uint32_t>(LightKind::point)), 1);
+}
+
+}  // namespace
+}  // namespace safegi::gpu
