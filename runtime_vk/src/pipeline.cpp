@@ -237,6 +237,21 @@ bool block_named(const gl::Symbol& s, std::string_view name) {
   return s.name == name || (!s.instance_name.empty() && s.instance_name == name);
 }
 
+// One buffer or image descriptor written into the pipeline's set at `slot`, which then counts as bound.
+void write_descriptor(PipelineImpl& p, descriptor_slot slot, Binding& b, const VkDescriptorBufferInfo* buffer,
+                      const VkDescriptorImageInfo* image) {
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.dstSet = p.sets[slot.set];
+  write.dstBinding = slot.binding;
+  write.descriptorCount = 1;
+  write.descriptorType = b.type;
+  write.pBufferInfo = buffer;
+  write.pImageInfo = image;
+  SAFEGI_VK(vkUpdateDescriptorSets, p.context->device, 1u, static_cast<const VkWriteDescriptorSet*>(&write), 0u,
+            static_cast<const VkCopyDescriptorSet*>(nullptr));
+  b.bound = true;
+}
+
 }  // namespace
 }  // namespace detail
 
@@ -470,16 +485,8 @@ void ComputePipeline::bind_buffer(descriptor_slot slot, const detail::Buffer& bu
   if (s.size && buffer.size() < static_cast<std::size_t>(*s.size))
     throw ResourceError(p.at(s) + "block '" + s.name + "' is " + std::to_string(*s.size) +
                         " bytes but the buffer bound to it holds " + std::to_string(buffer.size()));
-  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  write.dstSet = p.sets[slot.set];
-  write.dstBinding = slot.binding;
-  write.descriptorCount = 1;
-  write.descriptorType = b->type;
-  write.pBufferInfo = &info;
-  SAFEGI_VK(vkUpdateDescriptorSets, p.context->device, 1u, static_cast<const VkWriteDescriptorSet*>(&write), 0u,
-            static_cast<const VkCopyDescriptorSet*>(nullptr));
-  b->bound = true;
+  const VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+  detail::write_descriptor(p, slot, *b, &info, nullptr);
 }
 
 void ComputePipeline::bind_image(descriptor_slot slot, const detail::Image& image) {
@@ -488,16 +495,8 @@ void ComputePipeline::bind_image(descriptor_slot slot, const detail::Image& imag
   if (!b || b->type != VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
     throw BindingError(p.name + ": error: no storage image at set " + std::to_string(slot.set) + ", binding " +
                        std::to_string(slot.binding));
-  VkDescriptorImageInfo info{VK_NULL_HANDLE, image.view(), VK_IMAGE_LAYOUT_GENERAL};
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  write.dstSet = p.sets[slot.set];
-  write.dstBinding = slot.binding;
-  write.descriptorCount = 1;
-  write.descriptorType = b->type;
-  write.pImageInfo = &info;
-  SAFEGI_VK(vkUpdateDescriptorSets, p.context->device, 1u, static_cast<const VkWriteDescriptorSet*>(&write), 0u,
-            static_cast<const VkCopyDescriptorSet*>(nullptr));
-  b->bound = true;
+  const VkDescriptorImageInfo info{VK_NULL_HANDLE, image.view(), VK_IMAGE_LAYOUT_GENERAL};
+  detail::write_descriptor(p, slot, *b, nullptr, &info);
 }
 
 void ComputePipeline::dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) const {
@@ -530,16 +529,8 @@ void ComputePipeline::bind_texture(descriptor_slot slot, const detail::Image& im
     create.maxLod = 0.0f;
     check(SAFEGI_VK(vkCreateSampler, p.context->device, &create, detail::kNoAllocator, &sampler), "vkCreateSampler");
   }
-  VkDescriptorImageInfo info{sampler, image.view(), VK_IMAGE_LAYOUT_GENERAL};
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  write.dstSet = p.sets[slot.set];
-  write.dstBinding = slot.binding;
-  write.descriptorCount = 1;
-  write.descriptorType = b->type;
-  write.pImageInfo = &info;
-  SAFEGI_VK(vkUpdateDescriptorSets, p.context->device, 1u, static_cast<const VkWriteDescriptorSet*>(&write), 0u,
-            static_cast<const VkCopyDescriptorSet*>(nullptr));
-  b->bound = true;
+  const VkDescriptorImageInfo info{sampler, image.view(), VK_IMAGE_LAYOUT_GENERAL};
+  detail::write_descriptor(p, slot, *b, nullptr, &info);
 }
 
 void ComputePipeline::check_dispatch(const block_data& push_constants) const {
