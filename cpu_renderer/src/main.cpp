@@ -95,25 +95,10 @@ int main(int argc, char** argv) {
   std::string doing = "loading the scene";
   try {
     std::optional<CropWindow> scene_crop;
-    Scene scene;
-    if (std::filesystem::path(scene_file).extension() == ".pbrt") {
-      if (length_unit.empty())
-        throw CommandLineError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
-                               "with --length-unit (m, cm, mm, in, ...)");
-      double metres_per_unit = 0;
-      try {
-        metres_per_unit = parse_length_unit(length_unit);
-      } catch (const SceneError& error) {
-        throw CommandLineError(error.what());
-      }
-      PbrtScene imported = load_pbrt_scene(scene_file, {metres_per_unit, {}, read_image});
-      if (session.is_root()) std::cerr << imported.warnings;
-      scene = std::move(imported.scene);
-      scene_crop = imported.crop;
-    } else {
-      if (!length_unit.empty()) throw CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
-      scene = load_scene(scene_file, SceneLoadOptions{read_image});
-    }
+    PbrtScene loaded = read_scene_file(scene_file, length_unit, read_image);
+    if (session.is_root()) std::cerr << loaded.warnings;
+    Scene scene = std::move(loaded.scene);
+    scene_crop = loaded.crop;
     if (std::optional<PrecisionReport> unresolved = check_precision(scene); unresolved && session.is_root())
       std::cerr << describe(*unresolved, scene);
     RenderOptions options;

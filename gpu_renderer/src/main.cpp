@@ -55,24 +55,9 @@ int main(int argc, char** argv) {
     return safegi::exit_after_parse_error(app, error);
   }
   try {
-    Scene scene;
-    if (std::filesystem::path(scene_file).extension() == ".pbrt") {  // as safegi-render reads them
-      if (length_unit.empty())
-        throw CommandLineError(scene_file + ": pbrt scenes carry no units: say what one pbrt length unit is "
-                               "with --length-unit (m, cm, mm, in, ...)");
-      double metres_per_unit = 0;
-      try {
-        metres_per_unit = parse_length_unit(length_unit);
-      } catch (const SceneError& error) {
-        throw CommandLineError(error.what());
-      }
-      PbrtScene imported = load_pbrt_scene(scene_file, {metres_per_unit, {}, read_image});
-      std::cerr << imported.warnings;
-      scene = std::move(imported.scene);
-    } else {
-      if (!length_unit.empty()) throw CommandLineError("--length-unit: only for pbrt scenes (JSON scenes carry units)");
-      scene = load_scene(scene_file, SceneLoadOptions{read_image});
-    }
+    PbrtScene loaded = read_scene_file(scene_file, length_unit, read_image);  // as safegi-render reads it
+    std::cerr << loaded.warnings;
+    Scene scene = std::move(loaded.scene);
     if (!resolution.empty()) {
       ImageSize size = parse_resolution(resolution);
       options.width = size.width;

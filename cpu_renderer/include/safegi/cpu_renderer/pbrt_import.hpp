@@ -55,4 +55,9 @@ PbrtScene parse_pbrt_scene(std::string text, const std::string& display_name,
 // throws SceneError naming the flag when it is not a positive length.
 double parse_length_unit(const std::string& text);
 
+// A scene file as the programs take it: pbrt-v3 by its `.pbrt` extension, its lengths in
+// `length_unit` (which it needs: pbrt scenes carry no units), else the JSON format (which carries
+// its units, so a `length_unit` is refused). The unit's misuse is a CommandLineError.
+PbrtScene read_scene_file(const std::string& path, const std::string& length_unit, const ImageFileReader& read_image);
+
 }  // namespace safegi::render
