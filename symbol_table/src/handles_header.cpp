@@ -67,13 +67,7 @@ std::string generate_handles_header(const SymbolTable& table, const HandlesHeade
          "#include <safegi/typed.hpp>\n\n"
          "namespace "
       << options.namespace_name << " {\n\n";
-  for (const auto& note : skipped) out << "// not generated: " << note << '\n';
-  if (!skipped.empty()) out << '\n';
-  if (!speller.dimension_aliases().empty()) {
-    out << "namespace dimensions {\n";
-    for (const auto& [alias, product] : speller.dimension_aliases()) out << "using " << alias << " = " << product << ";\n";
-    out << "}  // namespace dimensions\n\n";
-  }
+  write_skipped_and_aliases(out, skipped, speller);
   out << "// The host type of each variable (samplers: of one texel).\n";
   for (const auto& member : members) {
     const Symbol& symbol = *member.symbol;

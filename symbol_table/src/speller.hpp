@@ -2,6 +2,7 @@
 // C++ spellings of the symbol table's types, for the generated handles
 // headers (OpenGL: handles_header.cpp; Vulkan: vk_handles_header.cpp). Internal.
 #include <map>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -106,5 +107,16 @@ class Speller {
 
 // The Vulkan header (vk_handles_header.cpp).
 std::string generate_vk_handles_header(const SymbolTable& table, const HandlesHeaderOptions& options);
+
+// What both handle headers write after opening their namespace: the symbols left out, then
+// the aliases of the dimensions the handles spell (dimensions::dimension_N).
+inline void write_skipped_and_aliases(std::ostream& out, const std::vector<std::string>& skipped, const Speller& speller) {
+  for (const auto& note : skipped) out << "// not generated: " << note << '\n';
+  if (!skipped.empty()) out << '\n';
+  if (speller.dimension_aliases().empty()) return;
+  out << "namespace dimensions {\n";
+  for (const auto& [alias, product] : speller.dimension_aliases()) out << "using " << alias << " = " << product << ";\n";
+  out << "}  // namespace dimensions\n\n";
+}
 
 }  // namespace safegi::gl::detail

@@ -99,14 +99,7 @@ std::string generate_vk_handles_header(const SymbolTable& table, const HandlesHe
          "#include <safegi/typed.hpp>\n\n"
          "namespace "
       << options.namespace_name << " {\n\n";
-  for (const auto& note : skipped) out << "// not generated: " << note << '\n';
-  if (!skipped.empty()) out << '\n';
-  if (!speller.dimension_aliases().empty()) {
-    out << "namespace dimensions {\n";
-    for (const auto& [alias, product] : speller.dimension_aliases())
-      out << "using " << alias << " = " << product << ";\n";
-    out << "}  // namespace dimensions\n\n";
-  }
+  write_skipped_and_aliases(out, skipped, speller);
   out << "// The table's layout: bytes from the block's start, sizes, array strides and counts,\n"
          "// descriptor set and binding.\nnamespace layout {\n"
       << layout.str() << "}  // namespace layout\n\n";
