@@ -208,6 +208,42 @@ TEST(VulkanInterface, MemberOffsetsAndStridesAreTheModulesOwn) {
   EXPECT_EQ(stage.module.decoration("kScale", kSpecId), 7);
 }
 
+// An array of structs in a buffer (a scene's triangles, a BVH's nodes): the table lists the
+// struct's fields, annotations included, each placed from the start of the struct, as glslang
+// decorates the struct type's members; nested structs likewise.
+TEST(VulkanInterface, StructFieldsArePlacedAsTheModuleDecoratesThem) {
+  const VulkanStage stage = compile_for_vulkan(
+      "s.comp", "#version 460\n#include <safegi/prelude.sgl>\nspace world;\n"
+                "struct Emitter { spectrum<radiance> Le; float<area> area; };\n"
+                "struct Triangle { point<world> p0; vector<world> e1; Emitter emitter; mat2 uvs; float<length> r[2]; };\n"
+                "layout(local_size_x = 1) in;\n"
+                "layout(std430, set = 0, binding = 0) buffer Scene { uint count; Triangle triangles[]; } scene;\n"
+                "layout(std140, set = 0, binding = 1) uniform Light { Emitter lamp; } light;\n"
+                "void main() { scene.triangles[0].emitter.Le = light.lamp.Le * scene.triangles[0].r[1] / "
+                "scene.triangles[0].r[0]; }\n");
+  const gl::Symbol& triangles = symbol(stage.symbols, "Scene").members.at(1);
+  ASSERT_EQ(triangles.fields.size(), 5u);
+  for (const gl::Symbol& f : triangles.fields) {
+    SCOPED_TRACE("Triangle." + f.name);
+    ASSERT_TRUE(f.offset.has_value());
+    EXPECT_EQ(*f.offset, stage.module.member("Triangle", f.name, kOffset));
+  }
+  EXPECT_EQ(triangles.fields[0].type.kind, gl::Kind::point);
+  EXPECT_EQ(triangles.fields[0].type.spaces, std::vector<std::string>{"world"});
+  EXPECT_EQ(triangles.fields[3].matrix_stride, stage.module.member("Triangle", "uvs", kMatrixStride));
+  EXPECT_EQ(triangles.fields[4].array_stride, 4);  // std430: floats pack
+  const gl::Symbol& emitter = triangles.fields[2];
+  ASSERT_EQ(emitter.fields.size(), 2u);
+  EXPECT_EQ(emitter.fields[0].type.dimension.name, "radiance");
+  EXPECT_EQ(emitter.fields[1].offset, stage.module.member("Emitter", "area", kOffset));
+  EXPECT_EQ(triangles.array_stride, stage.module.array_stride("Scene", "triangles"));
+
+  // The same struct under std140 in a uniform block: the same field order, std140's offsets.
+  const gl::Symbol& lamp = symbol(stage.symbols, "Light").members.at(0);
+  ASSERT_EQ(lamp.fields.size(), 2u);
+  EXPECT_EQ(lamp.fields[1].offset, 12);  // after a vec3 (12 bytes), a float packs in
+}
+
 TEST(VulkanInterface, WorkGroupSizeIdsAreSpecializationConstants) {
   const VulkanStage stage = compile_for_vulkan(
       "w.comp", "#version 450\nlayout(local_size_x_id = 4, local_size_y_id = 5) in;\n"

@@ -87,6 +87,37 @@ class SymbolBuilder {
     return s;
   }
 
+  // A struct's fields (an array of structs': its element's) as symbols at the declaration that holds
+  // the struct; lay_out places them.
+  std::vector<gl::Symbol> fields(const Type& t, gl::Storage storage, const gl::SourceLocation& at) const {
+    const Type element = t.is_array() ? t.element() : t;
+    std::vector<gl::Symbol> out;
+    if (element.shape != Shape::structure || !element.structure || element.structure->buffer_reference) return out;
+    for (const StructField& f : element.structure->fields) {
+      gl::Symbol field;
+      field.name = f.name;
+      field.storage = storage;
+      field.type = value_type(f.type);
+      field.printed_type = type_name(f.type.element(), registry_);
+      if (f.type.is_array() && f.type.array.front() > 0) field.array_size = f.type.array.front();
+      field.unsized = f.type.is_array() && !field.array_size;
+      field.declared_at = at;
+      field.fields = fields(f.type, storage, at);
+      out.push_back(std::move(field));
+    }
+    return out;
+  }
+
+  static void place(gl::Symbol& symbol, const MemberLayout& at) {
+    symbol.offset = at.offset;
+    if (at.size >= 0) symbol.size = at.size;
+    if (at.array_stride > 0) symbol.array_stride = at.array_stride;
+    if (at.matrix_stride > 0) symbol.matrix_stride = at.matrix_stride;
+    symbol.row_major = at.row_major;
+    if (symbol.fields.size() == at.fields.size())
+      for (std::size_t i = 0; i < at.fields.size(); ++i) place(symbol.fields[i], at.fields[i]);
+  }
+
   // layout(set = N), or 0 for a Vulkan uniform or buffer resource that names
   // none (GL_KHR_vulkan_glsl); push constants and shader records are in no set.
   std::optional<int> descriptor_set(const InterfaceVariable& iv, gl::Storage storage) const {
@@ -109,12 +140,7 @@ class SymbolBuilder {
           if (d.name != member.name) continue;
           const auto placed = layout.members.find(&d);
           if (placed == layout.members.end()) continue;
-          const MemberLayout& at = placed->second;
-          member.offset = at.offset;
-          if (at.size >= 0) member.size = at.size;
-          if (at.array_stride > 0) member.array_stride = at.array_stride;
-          if (at.matrix_stride > 0) member.matrix_stride = at.matrix_stride;
-          member.row_major = at.row_major;
+          place(member, placed->second);
         }
   }
 
@@ -194,6 +220,7 @@ class SymbolBuilder {
         member = member.substr(block->instance_name.size() + 1);
       gl::Symbol m = symbol(iv, *storage, member);
       m.block = block->block_name;
+      m.fields = fields(iv.type, *storage, m.declared_at);
       out.back().members.push_back(std::move(m));
     }
     close_block();

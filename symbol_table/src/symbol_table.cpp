@@ -200,6 +200,8 @@ Symbol read_symbol(const Node& node, Storage storage) {
   } else if (node.has("members")) {
     node.at("members").fail("only a block has members");
   }
+  if (node.has("fields"))
+    for (const auto& field : node.at("fields").elements()) symbol.fields.push_back(read_symbol(field, storage));
   return symbol;
 }
 
@@ -402,6 +404,10 @@ json write_symbol(const Symbol& symbol) {
   if (symbol.type.kind == Kind::block) {
     node["members"] = json::array();
     for (const auto& member : symbol.members) node["members"].push_back(write_symbol(member));
+  }
+  if (!symbol.fields.empty()) {
+    node["fields"] = json::array();
+    for (const auto& field : symbol.fields) node["fields"].push_back(write_symbol(field));
   }
   node["declared_at"] = write_location(symbol.declared_at);
   return node;

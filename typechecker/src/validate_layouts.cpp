@@ -176,6 +176,24 @@ Packing packing_of(const Type& t, PackingRules rules, bool row_major) {
   return {scalar, scalar};
 }
 
+// Where the fields of a struct (the element of an array of them) lie from its start, as packing_of
+// placed them; nothing for another type, or for a struct holding a type the checker does not model.
+std::vector<MemberLayout> field_layouts(const Type& t, PackingRules rules, bool row_major) {
+  const Type element = t.is_array() ? t.element() : t;
+  if (element.shape != Shape::structure || !element.structure || element.structure->buffer_reference) return {};
+  std::vector<MemberLayout> fields;
+  long long offset = 0;
+  for (const StructField& f : element.structure->fields) {
+    const Packing p = packing_of(f.type, rules, row_major);
+    if (!p.known) return {};
+    offset = (offset + p.align - 1) / p.align * p.align;
+    fields.push_back({offset, p.size, f.type.is_array() ? p.array_stride : 0, p.matrix_stride,
+                      row_major && f.type.shape == Shape::matrix, field_layouts(f.type, rules, row_major)});
+    offset += p.size;
+  }
+  return fields;
+}
+
 std::string storage_of(const ast::TypeQualifiers& q) {
   for (const char* s : {"in", "out", "uniform", "buffer", "shared", "attribute", "varying"})
     if (q.has(s)) return s;
@@ -660,7 +678,7 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
         at = scalar ? *v : (*v + member_align - 1) / member_align * member_align;
       }
       layout.members[&decl] = {at, runtime_sized ? -1 : p.size, t->is_array() ? p.array_stride : 0, p.matrix_stride,
-                               row_major && (t->shape == Shape::matrix)};
+                               row_major && (t->shape == Shape::matrix), field_layouts(*t, rules, row_major)};
       if (runtime_sized) {  // the last member: the block's size depends on the buffer bound
         result_.block_layouts[&d] = std::move(layout);
         return;

@@ -65,6 +65,9 @@ struct Symbol {
   std::string instance_name;           // blocks: instance name, may be empty
   std::string block;                   // block members: the enclosing block's name
   std::vector<Symbol> members;         // blocks: members in declaration order
+  // A member of struct type (or an array of structs) in a block with a known packing: the struct's
+  // fields, each placed from the start of the struct (of each element), nested structs likewise.
+  std::vector<Symbol> fields;
 };
 
 // layout(constant_id = N) const ... (and local_size_x_id, named

@@ -104,6 +104,7 @@ struct MemberLayout {
   long long array_stride = 0;   // arrays: bytes from one element to the next
   long long matrix_stride = 0;  // matrices and arrays of them: bytes from one column (row_major: row) to the next
   bool row_major = false;
+  std::vector<MemberLayout> fields;  // a struct's (or an array of structs'), from the start of the struct
 };
 
 struct BlockLayout {
