@@ -82,6 +82,13 @@ struct ShapeMatch {
   const Signature* signature = nullptr;
   int n = 1, columns = 1, rows = 1;  // bound sizes
   int cost = 0;                      // implicit conversions + geometry dropped
+  // The width the signature's float, int and uint words stand for: a row over genF also takes
+  // float16_t, one over genI and genU the 8-, 16- and 64-bit integers, all of one width, as
+  // glslang's overloads for the explicit arithmetic types do (docs/language.md).
+  Scalar float_as = Scalar::float_, int_as = Scalar::int_, uint_as = Scalar::uint_;
+  Scalar width_of(Scalar s) const {
+    return s == Scalar::float_ ? float_as : s == Scalar::int_ ? int_as : s == Scalar::uint_ ? uint_as : s;
+  }
 };
 
 // The best signature whose GLSL shapes (and geometric kinds) accept the

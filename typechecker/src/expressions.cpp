@@ -11,6 +11,24 @@
 #include "dim_slot.hpp"
 
 namespace safegi::detail {
+namespace {
+
+// The type an integer literal's suffix gives it: u, l (int64_t), ul, s (int16_t), us (GL_EXT_shader_explicit_arithmetic_types).
+Scalar integer_literal_scalar(std::string_view spelling, bool is_signed) {
+  auto lower = [&](std::size_t from_end) { return static_cast<char>(spelling.size() > from_end ? spelling[spelling.size() - 1 - from_end] | 0x20 : 0); };
+  const char last = lower(0), before = lower(1);
+  if (last == 'l') return before == 'u' ? Scalar::uint64_ : Scalar::int64_;
+  if (last == 's') return before == 'u' ? Scalar::uint16_ : Scalar::int16_;
+  return is_signed ? Scalar::int_ : Scalar::uint_;
+}
+
+// hf: float16_t; lf (a double literal) is LiteralKind::Double.
+Scalar float_literal_scalar(std::string_view spelling) {
+  const std::size_t n = spelling.size();
+  return n >= 2 && (spelling[n - 1] | 0x20) == 'f' && (spelling[n - 2] | 0x20) == 'h' ? Scalar::float16_ : Scalar::float_;
+}
+
+}  // namespace
 
 Value Checker::expr(const ast::Expr* e) {
   if (!e) return error_value({});
@@ -114,18 +132,22 @@ Value Checker::literal(const ast::LiteralExpr& e) {
   switch (e.literal_kind) {
     case ast::LiteralKind::Int:
     case ast::LiteralKind::Uint: {
-      v.type = Type::scalar_of(e.literal_kind == ast::LiteralKind::Int ? Scalar::int_ : Scalar::uint_);
+      v.type = Type::scalar_of(integer_literal_scalar(e.spelling, e.literal_kind == ast::LiteralKind::Int));
       const char* text = e.spelling.c_str();
       int base = 10;
       if (e.spelling.size() > 1 && e.spelling[0] == '0') base = (e.spelling[1] == 'x' || e.spelling[1] == 'X') ? 16 : 8;
       unsigned long long value = std::strtoull(text, nullptr, base);
-      v.constant = static_cast<long long>(value & 0xffffffffull);
-      if (e.literal_kind == ast::LiteralKind::Int && *v.constant > 0x7fffffff) *v.constant -= 0x100000000ll;
+      const int bits = 8 * scalar_bytes(v.type.scalar);
+      const unsigned long long mask = bits == 64 ? ~0ull : (1ull << bits) - 1;
+      v.constant = static_cast<long long>(value & mask);
+      if (!is_float_scalar(v.type.scalar) && v.type.scalar != Scalar::uint_ && v.type.scalar != Scalar::uint16_ &&
+          v.type.scalar != Scalar::uint64_ && bits < 64 && *v.constant >= (1ll << (bits - 1)))
+        *v.constant -= 1ll << bits;
       v.number = static_cast<double>(*v.constant);
       break;
     }
     case ast::LiteralKind::Float:
-      v.type = Type::scalar_of(Scalar::float_);
+      v.type = Type::scalar_of(float_literal_scalar(e.spelling));
       v.number = std::strtod(e.spelling.c_str(), nullptr);
       v.pi_multiple = is_pi_multiple(*v.number);
       break;

@@ -33,13 +33,10 @@ const char* verb(ast::BinaryOp op) {
 // GLSL's result shape of an arithmetic operator, or nothing when the operands do not fit.
 std::optional<Type> arithmetic_shape(ast::BinaryOp op, const Type& a, const Type& b) {
   if (a.is_array() || b.is_array() || !a.is_numeric() || !b.is_numeric()) return std::nullopt;
-  Scalar scalar;
-  if (implicitly_converts(a.scalar, b.scalar)) scalar = b.scalar;
-  else if (implicitly_converts(b.scalar, a.scalar)) scalar = a.scalar;
-  else return std::nullopt;
-  if (op == ast::BinaryOp::Mod && (a.scalar == Scalar::float_ || a.scalar == Scalar::double_ ||
-                                   b.scalar == Scalar::float_ || b.scalar == Scalar::double_))
-    return std::nullopt;
+  const std::optional<Scalar> common = common_scalar(a.scalar, b.scalar);
+  if (!common) return std::nullopt;
+  const Scalar scalar = *common;
+  if (op == ast::BinaryOp::Mod && (a.is_floating() || b.is_floating())) return std::nullopt;
   auto with = [&](Type t) {
     t.scalar = scalar;
     return t.plain();
@@ -129,8 +126,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     case ast::BinaryOp::Ne: {
       const bool ordering = op != ast::BinaryOp::Eq && op != ast::BinaryOp::Ne;
       Type pa = a, pb = b;
-      if (implicitly_converts(pa.scalar, pb.scalar)) pa.scalar = pb.scalar;
-      else if (implicitly_converts(pb.scalar, pa.scalar)) pb.scalar = pa.scalar;
+      if (const std::optional<Scalar> common = common_scalar(pa.scalar, pb.scalar)) pa.scalar = pb.scalar = *common;
       if (!same_glsl_type(pa.plain(), pb.plain())) return invalid();
       if (ordering && !(a.shape == Shape::scalar && a.is_numeric() && !a.is_array())) return invalid();
       if (!ordering && (a.shape == Shape::opaque || a.shape == Shape::void_)) return invalid();
@@ -171,8 +167,9 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       if (shift && a.shape == Shape::scalar && b.shape == Shape::vector) return invalid();
       out.type = (shift || a.shape == Shape::vector) ? a.plain() : b.plain();
       if (!shift && a.scalar != b.scalar) {
-        if (!implicitly_converts(a.scalar, b.scalar) && !implicitly_converts(b.scalar, a.scalar)) return invalid();
-        out.type.scalar = Scalar::uint_;
+        const std::optional<Scalar> common = common_scalar(a.scalar, b.scalar);
+        if (!common) return invalid();
+        out.type.scalar = *common;
       }
       if (lhs.constant && rhs.constant) {
         const long long x = *lhs.constant, y = *rhs.constant;
