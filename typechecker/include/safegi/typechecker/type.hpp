@@ -175,7 +175,7 @@ bool same_glsl_type(const Type& a, const Type& b);
 bool implicitly_converts(Scalar from, Scalar to);
 // The scalar type two operands of a binary operator are converted to, or nothing: the one the
 // other converts to, else a signed and a narrower unsigned integer meet at the signed one's
-// unsigned twin (int + uint8_t is uint), as glslang does.
+// unsigned twin (int + uint8_t is uint), as glslang does (float + int64_t has none).
 std::optional<Scalar> common_scalar(Scalar a, Scalar b);
 
 // The GLSL spelling: float, vec3, mat4x3, sampler2D, S, float[4].
