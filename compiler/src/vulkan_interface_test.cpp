@@ -253,6 +253,21 @@ TEST(VulkanInterface, SixtyFourBitMembersArePlacedAndAShaderRecordHasNoSet) {
   EXPECT_EQ(record.members.at(0).offset, 0);
 }
 
+// GL_EXT_scalar_block_layout: 8-, 16- and 64-bit members align to their scalars.
+TEST(VulkanInterface, ScalarBlocksPackSixteenBitMembers) {
+  const VulkanStage stage = compile_for_vulkan(
+      "s.comp", "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types : require\n"
+                "#extension GL_EXT_scalar_block_layout : require\nlayout(local_size_x = 1) in;\n"
+                "layout(scalar, binding = 2) buffer C { uint8_t a; f16vec3 b; int64_t c; u16vec3 d; } c;\n"
+                "void main() { c.c = int64_t(c.d.x) + 3l; }\n");
+  const gl::Symbol& block = symbol(stage.symbols, "C");
+  EXPECT_EQ(block.packing, "scalar");
+  EXPECT_EQ(block.members.at(1).offset, 2);
+  EXPECT_EQ(block.members.at(2).offset, 8);
+  EXPECT_EQ(block.members.at(3).offset, 16);
+  EXPECT_EQ(block.size, 22);
+}
+
 // The same shader for OpenGL: no client, no sets, no push constants.
 TEST(VulkanInterface, AnOpenGLStageSaysNothingOfVulkan) {
   CompileResult compiled = compile(

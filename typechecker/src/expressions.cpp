@@ -110,7 +110,9 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     // state, extensions) are left to the driver rather than reported wrongly.
     if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {
       Value v;
-      v.type = Type::scalar_of(Scalar::int_);
+      // The two vector limits (GLSL 4.60 §7.4): ivec3; their components are not folded.
+      const bool vector = e.name == "gl_MaxComputeWorkGroupCount" || e.name == "gl_MaxComputeWorkGroupSize";
+      v.type = vector ? Type::vector_of(Scalar::int_, 3) : Type::scalar_of(Scalar::int_);
       v.range = e.range;
       v.read_only = true;
       v.constant = builtin_constant(e.name);

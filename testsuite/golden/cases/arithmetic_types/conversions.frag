@@ -1,4 +1,3 @@
-// ARGS: --target-env vulkan1.2
 // Implicit conversions widen (glslang's rules with explicit types); literal suffixes give the
 // type; built-ins take every width; a mixed operation meets at the wider type.
 #version 450
