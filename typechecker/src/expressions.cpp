@@ -189,7 +189,7 @@ Value Checker::unary(const ast::UnaryExpr& e) {
         return out;
       }
       if (e.op == ast::UnaryOp::Minus) out.type.orientation = flipped(out.type.orientation);
-      if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = -*out.constant;
+      if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = static_cast<long long>(0ull - static_cast<unsigned long long>(*out.constant));
       if (out.number && e.op == ast::UnaryOp::Minus) *out.number = -*out.number;
       return out;
     case ast::UnaryOp::Not:

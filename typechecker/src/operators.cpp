@@ -1,6 +1,7 @@
 // Binary operators: GLSL's shape rules, then dimensions (Abelian group) and
 // the affine rules of points, vectors, directions and normals.
 
+#include <climits>
 #include <cstdint>
 #include <vector>
 
@@ -176,7 +177,8 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
         if (op == ast::BinaryOp::BitAnd) out.constant = x & y;
         if (op == ast::BinaryOp::BitOr) out.constant = x | y;
         if (op == ast::BinaryOp::BitXor) out.constant = x ^ y;
-        if (shift && y >= 0 && y < 32) out.constant = op == ast::BinaryOp::Shl ? (x << y) & 0xffffffffll : x >> y;
+        if (shift && y >= 0 && y < 32)
+          out.constant = op == ast::BinaryOp::Shl ? static_cast<long long>((static_cast<unsigned long long>(x) << y) & 0xffffffffull) : x >> y;
       }
       return out;
     }
@@ -246,11 +248,15 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (out.zero) out.type.dim = DimSlot::zero();
   }
   if (lhs.constant && rhs.constant && out.type.shape == Shape::scalar && out.type.is_integer()) {
+    // Wrapping, as the 64-bit types (INT64_MIN / -1L) do not fit the folding otherwise; a result
+    // beyond 32 bits is not folded.
     const long long x = *lhs.constant, y = *rhs.constant;
-    if (op == ast::BinaryOp::Add) out.constant = x + y;
-    if (op == ast::BinaryOp::Sub) out.constant = x - y;
-    if (op == ast::BinaryOp::Mul) out.constant = x * y;
-    if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0) out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
+    const auto ux = static_cast<unsigned long long>(x), uy = static_cast<unsigned long long>(y);
+    if (op == ast::BinaryOp::Add) out.constant = static_cast<long long>(ux + uy);
+    if (op == ast::BinaryOp::Sub) out.constant = static_cast<long long>(ux - uy);
+    if (op == ast::BinaryOp::Mul) out.constant = static_cast<long long>(ux * uy);
+    if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0 && !(y == -1 && x == LLONG_MIN))
+      out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
     if (out.constant && (*out.constant > 0xffffffffll || *out.constant < -0x80000000ll)) out.constant.reset();
   }
   if (out.constant) out.number = static_cast<double>(*out.constant);
