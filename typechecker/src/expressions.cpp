@@ -277,7 +277,9 @@ std::string Checker::member_path(const ast::Expr* target, const std::string& var
 // `vec3 sum = vec3(0.0);`: an unannotated local whose start is zero, which fits any dimension.
 bool Checker::infer_from_zero(bool global, const Type& declared, const Value& init) const {
   return !global && init.zero && !declared.is_annotated() && !declared.is_error() && !declared.is_array() &&
-         (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating();
+         (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating() &&
+         init.type.shape == declared.shape && init.type.rows == declared.rows && !init.type.is_array() &&
+         implicitly_converts(init.type.scalar, declared.scalar);  // `vec4 a = vec2(0.0);` is still a GLSL error
 }
 
 // A local whose type was inferred from its initializer (no annotation written) is a name,

@@ -138,6 +138,14 @@ TEST(Glsl, Textures) {
             Messages{"error: no matching overload for call to 'texture(vec2, vec2)'"});
 }
 
+// A local that starts at zero is an accumulator, but its GLSL type is still checked (piglit's
+// initialization-incompatible-type-propagation-1.frag).
+TEST(Glsl, ZeroStartKeepsGlslTypes) {
+  EXPECT_EQ(plain("void main() { vec4 a = vec2(0.0); }"),
+            Messages{"error: cannot initialize 'a' of type vec4 with a value of type vec2"});
+  EXPECT_EQ(plain("void main() { vec3 a = vec3(0.0); a += vec3(1.0); }"), Messages{});
+}
+
 // GL_EXT_shader_explicit_arithmetic_types: glslang's conversions, literal suffixes, built-ins at every width.
 TEST(Glsl, ExplicitArithmeticTypes) {
   // (check_source's words are GLSL 4.60's with every extension group: the types are keywords.)
