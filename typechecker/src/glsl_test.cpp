@@ -162,6 +162,10 @@ TEST(Glsl, ExplicitArithmeticTypes) {
   EXPECT_EQ(check("f16vec3 v = f16vec3(1.0hf); float16_t l = length(v); f16vec3 m = max(v, f16vec3(0.0hf)); i16vec3 e; v = frexp(v, e);"),
             Messages{});
   EXPECT_EQ(check("i64vec2 v = i64vec2(1l); i64vec2 a = abs(v); int64_t m = min(v.x, 3l);"), Messages{});
+  // Folding wraps at 64 bits instead of trapping (glslang's constFoldIntMin.frag).
+  EXPECT_EQ(plain("const int64_t a = -9223372036854775808L; const int64_t b = a / -1L; const int64_t c = a % -1L;"
+                  "const int64_t d = a * a - a; const int64_t e = -a; const int64_t f = 1l << 63l; void main() {}"),
+            Messages{});
   EXPECT_EQ(check("f16mat2x3 m = f16mat2x3(1.0hf); f16vec3 c = m[0]; f64vec2 d = dvec2(1.0lf); i32vec2 i = ivec2(1);"), Messages{});
 }
 
