@@ -350,7 +350,10 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
   }
   if (a.geometry != Geometry::none && a.geometry != Geometry::spectrum) cost += 4;  // geometry dropped
   if (a.shape == Shape::opaque || a.shape == Shape::structure || a.shape == Shape::void_) return std::nullopt;
-  const Scalar want = m.width_of(p.scalar);
+  // A fixed `int` or `float` is the call's width when the argument has it (min(i64vec2, int64_t),
+  // atomicMin(inout int64_t, int64_t)), else itself, reached by conversion (bitfieldExtract(i16, 0, 3)).
+  const Scalar wide = m.width_of(p.scalar);
+  const Scalar want = param.size != SizeClass::fixed || a.scalar == wide ? wide : p.scalar;
   if (param.is_out) {
     if (a.scalar != want) return std::nullopt;
   } else if (a.scalar != want) {
@@ -421,10 +424,6 @@ std::vector<ShapeMatch> width_variants(const std::vector<ArgInfo>& args) {
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // `sig` matched at one width, or nothing.
 std::optional<ShapeMatch> match_at(const Signature& sig, const std::vector<ArgInfo>& args, const ShapeMatch& width) {
   ShapeMatch m = width;
@@ -456,9 +455,9 @@ std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates,
   return best;
 }
 
-Type instantiate_shape(const SigType& t, const ShapeMatch& m) {
+Type instantiate_shape(const SigType& t, const ShapeMatch& m, bool result) {
   Type out = t.type;
-  if (out.shape != Shape::opaque) out.scalar = m.width_of(out.scalar);
+  if (out.shape != Shape::opaque && (result || t.size != SizeClass::fixed)) out.scalar = m.width_of(out.scalar);
   switch (t.size) {
     case SizeClass::fixed: break;
     case SizeClass::gen:

@@ -209,7 +209,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   }
   CallShape shape;
   for (const SigType& p : sig.params) shape.params.push_back(instantiate_shape(p, *match));
-  shape.result = instantiate_shape(sig.result, *match);
+  shape.result = instantiate_shape(sig.result, *match, true);
   shape.dim_params = &sig.dim_params;
   shape.space_params = &sig.space_params;
 

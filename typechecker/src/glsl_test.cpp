@@ -161,6 +161,9 @@ TEST(Glsl, ExplicitArithmeticTypes) {
             Messages{"error: invalid operands to binary expression (float<1> and int64_t<1>)"});
   EXPECT_EQ(check("f16vec3 v = f16vec3(1.0hf); float16_t l = length(v); f16vec3 m = max(v, f16vec3(0.0hf)); i16vec3 e; v = frexp(v, e);"),
             Messages{});
+  // A fixed parameter keeps its type (bitfieldExtract's int offsets); the result takes the call's width.
+  EXPECT_EQ(check("int16_t a = 1s; int16_t b = bitfieldExtract(a, 0, 3); float16_t d = dot(f16vec2(1.0hf), f16vec2(2.0hf));"),
+            Messages{});
   EXPECT_EQ(check("i64vec2 v = i64vec2(1l); i64vec2 a = abs(v); int64_t m = min(v.x, 3l);"), Messages{});
   // Folding wraps at 64 bits instead of trapping (glslang's constFoldIntMin.frag).
   EXPECT_EQ(plain("const int64_t a = -9223372036854775808L; const int64_t b = a / -1L; const int64_t c = a % -1L;"
