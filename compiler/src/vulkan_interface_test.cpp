@@ -259,30 +259,49 @@ TEST(VulkanInterface, WorkGroupSizeIdsAreSpecializationConstants) {
 // Offsets stop at the first member of a type the checker does not model
 // (64-bit and 16-bit arithmetic types): left out, never guessed. A
 // shader-record block is in no descriptor set.
-TEST(VulkanInterface, WhatCannotBePlacedIsLeftOut) {
+TEST(VulkanInterface, SixtyFourBitMembersArePlacedAndAShaderRecordHasNoSet) {
   const VulkanStage stage = compile_for_vulkan(
       "r.rchit", "#version 460\n#extension GL_EXT_ray_tracing : require\n"
                  "#extension GL_EXT_shader_explicit_arithmetic_types : require\n"
                  "struct Node { int texture; uint64_t address; };\n"
                  "layout(set = 0, binding = 4) buffer Nodes { vec2 scale; Node nodes[]; } nodes;\n"
-                 "layout(set = 0, binding = 5) buffer Address { float t; uint64_t next; } address;\n"
+                 "layout(set = 0, binding = 5) buffer Address { float t; uint64_t next; f16vec3 h; } address;\n"
                  "layout(shaderRecordEXT) buffer Record { vec4 tint; };\n"
                  "layout(location = 0) rayPayloadInEXT vec3 hit;\n"
                  "void main() { hit = tint.rgb * nodes.scale.x * float(nodes.nodes[0].texture); }\n");
   const gl::Symbol& block = symbol(stage.symbols, "Nodes");
   EXPECT_EQ(block.members.at(0).offset, 0);
-  EXPECT_FALSE(block.members.at(1).offset.has_value());
+  EXPECT_EQ(block.members.at(1).offset, 8);  // a struct with a uint64_t aligns to 8
+  EXPECT_EQ(block.members.at(1).array_stride, 16);
   EXPECT_EQ(block.members.at(1).type.glsl_type, "Node");
-  EXPECT_FALSE(block.size.has_value());
+  EXPECT_FALSE(block.size.has_value());  // runtime-sized
   const gl::Symbol& address = symbol(stage.symbols, "Address");
   EXPECT_EQ(address.members.at(0).offset, 0);
-  EXPECT_EQ(address.members.at(1).type.glsl_type, "uint64_t");  // as written, though unmodelled
-  EXPECT_EQ(address.members.at(1).printed_type, "uint64_t");
-  EXPECT_FALSE(address.members.at(1).offset.has_value());
+  EXPECT_EQ(address.members.at(1).type.glsl_type, "uint64_t");
+  EXPECT_EQ(address.members.at(1).offset, 8);
+  EXPECT_EQ(address.members.at(1).size, 8);
+  EXPECT_EQ(address.members.at(2).offset, 16);  // f16vec3: 6 bytes aligned to 8
+  EXPECT_EQ(address.members.at(2).size, 6);
+  EXPECT_EQ(address.size, 22);
   const gl::Symbol& record = symbol(stage.symbols, "Record");
   EXPECT_TRUE(record.shader_record);
   EXPECT_FALSE(record.set.has_value());
   EXPECT_EQ(record.members.at(0).offset, 0);
+}
+
+// GL_EXT_scalar_block_layout: 8-, 16- and 64-bit members align to their scalars.
+TEST(VulkanInterface, ScalarBlocksPackSixteenBitMembers) {
+  const VulkanStage stage = compile_for_vulkan(
+      "s.comp", "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types : require\n"
+                "#extension GL_EXT_scalar_block_layout : require\nlayout(local_size_x = 1) in;\n"
+                "layout(scalar, binding = 2) buffer C { uint8_t a; f16vec3 b; int64_t c; u16vec3 d; } c;\n"
+                "void main() { c.c = int64_t(c.d.x) + 3l; }\n");
+  const gl::Symbol& block = symbol(stage.symbols, "C");
+  EXPECT_EQ(block.packing, "scalar");
+  EXPECT_EQ(block.members.at(1).offset, 2);
+  EXPECT_EQ(block.members.at(2).offset, 8);
+  EXPECT_EQ(block.members.at(3).offset, 16);
+  EXPECT_EQ(block.size, 22);
 }
 
 // The same shader for OpenGL: no client, no sets, no push constants.

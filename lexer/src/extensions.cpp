@@ -26,6 +26,7 @@ constexpr std::uint32_t kArithmetic = bit(G::arithmetic_types);
 constexpr std::array kExtensions = {
     ExtensionInfo{"GL_AMD_conservative_depth", kLayout},
     ExtensionInfo{"GL_AMD_gpu_shader_half_float", kArithmetic},
+    ExtensionInfo{"GL_AMD_gpu_shader_half_float_fetch", bit(G::half_float_fetch) | kArithmetic},
     ExtensionInfo{"GL_AMD_gpu_shader_int16", kArithmetic},
     ExtensionInfo{"GL_AMD_shader_stencil_export", 0},
     ExtensionInfo{"GL_AMD_shader_trinary_minmax", 0},
@@ -126,15 +127,15 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int32", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int64", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_explicit_arithmetic_types_int8", kArithmetic},
-    ExtensionInfo{"GL_EXT_shader_image_int64", 0},
+    ExtensionInfo{"GL_EXT_shader_image_int64", bit(G::image_int64)},
     ExtensionInfo{"GL_EXT_shader_image_load_store", kImages},
     ExtensionInfo{"GL_EXT_shader_integer_mix", 0},
     ExtensionInfo{"GL_EXT_shader_io_blocks", 0},
     ExtensionInfo{"GL_EXT_shader_realtime_clock", 0},
-    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_float16", 0},
-    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int16", 0},
-    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int64", 0},
-    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int8", 0},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_float16", kArithmetic},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int16", kArithmetic},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int64", kArithmetic},
+    ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int8", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_texture_lod", 0},
     ExtensionInfo{"GL_EXT_tessellation_shader", bit(G::tessellation)},
     ExtensionInfo{"GL_EXT_texture_array", bit(G::texture_array)},
@@ -294,6 +295,39 @@ const ExtensionInfo* find_extension(std::string_view name) {
   if (it != kExtensions.end() && it->name == name) return &*it;
   if (name == kVulkanGlsl.name) return &kVulkanGlsl;
   return nullptr;
+}
+
+namespace {
+
+// The extensions that make each family of type words keywords (glslang's Scan.cpp; this
+// front end turns on the whole family with any of them, see ExtensionGroup::arithmetic_types).
+struct TypeFamily {
+  std::array<std::string_view, 4> prefixes;
+  std::string_view extensions;
+};
+constexpr TypeFamily kTypeFamilies[] = {
+    {{"int8_t", "uint8_t", "i8vec", "u8vec"}, "GL_EXT_shader_explicit_arithmetic_types_int8 (or GL_EXT_shader_8bit_storage)"},
+    {{"int16_t", "uint16_t", "i16vec", "u16vec"},
+     "GL_EXT_shader_explicit_arithmetic_types_int16 (or GL_EXT_shader_16bit_storage, GL_AMD_gpu_shader_int16)"},
+    {{"int32_t", "uint32_t", "i32vec", "u32vec"}, "GL_EXT_shader_explicit_arithmetic_types_int32"},
+    {{"int64_t", "uint64_t", "i64vec", "u64vec"}, "GL_EXT_shader_explicit_arithmetic_types_int64 (or GL_ARB_gpu_shader_int64)"},
+    {{"float16_t", "f16vec", "f16mat", ""},
+     "GL_EXT_shader_explicit_arithmetic_types_float16 (or GL_EXT_shader_16bit_storage, GL_AMD_gpu_shader_half_float)"},
+    {{"float32_t", "f32vec", "f32mat", ""}, "GL_EXT_shader_explicit_arithmetic_types_float32"},
+    {{"float64_t", "f64vec", "f64mat", ""}, "GL_EXT_shader_explicit_arithmetic_types_float64"},
+    {{"i64image", "u64image", "", ""}, "GL_EXT_shader_image_int64"},
+    {{"f16sampler", "f16image", "f16texture", "f16subpassInput"}, "GL_AMD_gpu_shader_half_float_fetch"},
+};
+
+}  // namespace
+
+std::string_view extensions_declaring_type(std::string_view word) {
+  const TokenKind kind = classify_word(word, KeywordContext::everything());
+  if (!is_type_keyword(kind)) return {};
+  for (const TypeFamily& f : kTypeFamilies)
+    for (std::string_view prefix : f.prefixes)
+      if (!prefix.empty() && word.substr(0, prefix.size()) == prefix) return f.extensions;
+  return {};
 }
 
 std::vector<std::string> default_extension_macros() {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include <safegi/lexer/extensions.hpp>
+
 #include "parser_impl.hpp"
 
 namespace safegi::parser_detail {
@@ -678,8 +680,10 @@ TypeSpecifier* Parser::parse_type_specifier_nonarray() {
     if (!annotated && !is_type_name(type->name)) {
       // Reported without unwinding: the declaration still parses, so its
       // names exist and later uses do not cascade.
-      diagnostics_.report(Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'")
-                              .with_code(code::E_UNKNOWN_TYPE));
+      Diagnostic d = Diagnostic::error(type->name_range, "unknown type name '" + type->name + "'").with_code(code::E_UNKNOWN_TYPE);
+      if (const std::string_view extensions = extensions_declaring_type(type->name); !extensions.empty())
+        d.with_hint("'" + type->name + "' is a type only where an extension declares it: #extension " + std::string(extensions));
+      diagnostics_.report(std::move(d));
     }
     if (annotated) type->annotation = parse_annotation();
   } else {

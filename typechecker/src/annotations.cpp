@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <string_view>
 
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
@@ -10,33 +11,59 @@
 namespace safegi::detail {
 namespace {
 
+// GLSL's scalar, vector and matrix type names, with the explicit arithmetic types'
+// (GL_EXT_shader_explicit_arithmetic_types: int32_t is int, f64vec3 is dvec3, ...).
+struct NumericNames {
+  const char* scalar;         // the scalar's names (a second one, or nullptr)
+  const char* scalar_alias;
+  const char* vector_prefix;  // ...vec2..4
+  const char* vector_alias;
+  const char* matrix_prefix;  // ...mat2..4 and ...matCxR, or nullptr
+  const char* matrix_alias;
+  Scalar value;
+};
+constexpr NumericNames kNumericNames[] = {
+    {"float", "float32_t", "vec", "f32vec", "mat", "f32mat", Scalar::float_},
+    {"double", "float64_t", "dvec", "f64vec", "dmat", "f64mat", Scalar::double_},
+    {"int", "int32_t", "ivec", "i32vec", nullptr, nullptr, Scalar::int_},
+    {"uint", "uint32_t", "uvec", "u32vec", nullptr, nullptr, Scalar::uint_},
+    {"bool", nullptr, "bvec", nullptr, nullptr, nullptr, Scalar::bool_},
+    {"float16_t", nullptr, "f16vec", nullptr, "f16mat", nullptr, Scalar::float16_},
+    {"int8_t", nullptr, "i8vec", nullptr, nullptr, nullptr, Scalar::int8_},
+    {"uint8_t", nullptr, "u8vec", nullptr, nullptr, nullptr, Scalar::uint8_},
+    {"int16_t", nullptr, "i16vec", nullptr, nullptr, nullptr, Scalar::int16_},
+    {"uint16_t", nullptr, "u16vec", nullptr, nullptr, nullptr, Scalar::uint16_},
+    {"int64_t", nullptr, "i64vec", nullptr, nullptr, nullptr, Scalar::int64_},
+    {"uint64_t", nullptr, "u64vec", nullptr, nullptr, nullptr, Scalar::uint64_},
+};
+
+std::optional<Type> numeric_type(std::string_view name) {
+  auto digit = [](char c) { return c >= '2' && c <= '4'; };
+  auto after = [&](const char* prefix) -> std::optional<std::string_view> {
+    if (!prefix || name.substr(0, std::char_traits<char>::length(prefix)) != prefix) return std::nullopt;
+    return name.substr(std::char_traits<char>::length(prefix));
+  };
+  for (const NumericNames& n : kNumericNames) {
+    if (name == n.scalar || (n.scalar_alias && name == n.scalar_alias)) return Type::scalar_of(n.value);
+    for (const char* prefix : {n.vector_prefix, n.vector_alias})
+      if (auto rest = after(prefix); rest && rest->size() == 1 && digit((*rest)[0])) return Type::vector_of(n.value, (*rest)[0] - '0');
+    for (const char* prefix : {n.matrix_prefix, n.matrix_alias}) {
+      auto rest = after(prefix);
+      if (!rest) continue;
+      if (rest->size() == 1 && digit((*rest)[0])) return Type::matrix_of(n.value, (*rest)[0] - '0', (*rest)[0] - '0');
+      if (rest->size() == 3 && digit((*rest)[0]) && (*rest)[1] == 'x' && digit((*rest)[2]))
+        return Type::matrix_of(n.value, (*rest)[0] - '0', (*rest)[2] - '0');
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<Type> glsl_builtin_type(const std::string& name) {
   if (name == "void") return Type::void_type();
-  if (name == "float") return Type::scalar_of(Scalar::float_);
-  if (name == "double") return Type::scalar_of(Scalar::double_);
-  if (name == "int") return Type::scalar_of(Scalar::int_);
-  if (name == "uint") return Type::scalar_of(Scalar::uint_);
-  if (name == "bool") return Type::scalar_of(Scalar::bool_);
-  static const struct {
-    const char* prefix;
-    Scalar scalar;
-  } kVectors[] = {{"vec", Scalar::float_}, {"dvec", Scalar::double_}, {"ivec", Scalar::int_}, {"uvec", Scalar::uint_},
-                  {"bvec", Scalar::bool_}};
-  for (const auto& v : kVectors) {
-    const std::string p = v.prefix;
-    if (name.size() == p.size() + 1 && name.compare(0, p.size(), p) == 0 && name.back() >= '2' && name.back() <= '4')
-      return Type::vector_of(v.scalar, name.back() - '0');
-  }
-  for (const auto& [prefix, scalar] : {std::pair{std::string("mat"), Scalar::float_}, std::pair{std::string("dmat"), Scalar::double_}}) {
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string rest = name.substr(prefix.size());
-    auto digit = [](char c) { return c >= '2' && c <= '4'; };
-    if (rest.size() == 1 && digit(rest[0])) return Type::matrix_of(scalar, rest[0] - '0', rest[0] - '0');
-    if (rest.size() == 3 && digit(rest[0]) && rest[1] == 'x' && digit(rest[2]))
-      return Type::matrix_of(scalar, rest[0] - '0', rest[2] - '0');
-  }
+  if (std::optional<Type> t = numeric_type(name)) return t;
   for (const char* opaque : {"sampler", "isampler", "usampler", "image", "iimage", "uimage", "texture", "itexture",
                              "utexture", "subpassInput", "isubpassInput", "usubpassInput", "atomic_uint",
+                             "f16sampler", "f16image", "f16texture", "f16subpassInput", "i64image", "u64image",
                              "accelerationStructure", "rayQuery"}) {
     const std::string p = opaque;
     if (name.compare(0, p.size(), p) == 0) {

@@ -216,7 +216,11 @@ class SignatureReader {
     static const struct {
       const char* prefix;
       Scalar scalar;
-    } kVectors[] = {{"vec", Scalar::float_}, {"dvec", Scalar::double_}, {"ivec", Scalar::int_}, {"uvec", Scalar::uint_}, {"bvec", Scalar::bool_}};
+    } kVectors[] = {{"vec", Scalar::float_}, {"dvec", Scalar::double_}, {"ivec", Scalar::int_}, {"uvec", Scalar::uint_}, {"bvec", Scalar::bool_},
+                    {"f16vec", Scalar::float16_}, {"i64vec", Scalar::int64_}, {"u64vec", Scalar::uint64_}};
+    if (w == "float16_t") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::float16_));
+    if (w == "int64_t") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::int64_));
+    if (w == "uint64_t") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::uint64_));
     if (w == "float") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::float_));
     if (w == "double") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::double_));
     if (w == "int") return set(t, SizeClass::fixed, Type::scalar_of(Scalar::int_));
@@ -231,7 +235,8 @@ class SignatureReader {
     if (w.size() == 6 && w.compare(0, 3, "mat") == 0 && w[4] == 'x')  // mat4x3: 4 columns of 3
       return set(t, SizeClass::fixed, Type::matrix_of(Scalar::float_, w[3] - '0', w[5] - '0'));
     for (const char* opaque : {"accelerationStructureEXT", "rayQueryEXT", "subpassInput", "subpassInputMS",
-                               "isubpassInput", "isubpassInputMS", "usubpassInput", "usubpassInputMS"}) {
+                               "isubpassInput", "isubpassInputMS", "usubpassInput", "usubpassInputMS", "f16subpassInput",
+                               "f16subpassInputMS"}) {
       if (w != opaque) continue;
       Type o;
       o.shape = Shape::opaque;
@@ -345,7 +350,10 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
   }
   if (a.geometry != Geometry::none && a.geometry != Geometry::spectrum) cost += 4;  // geometry dropped
   if (a.shape == Shape::opaque || a.shape == Shape::structure || a.shape == Shape::void_) return std::nullopt;
-  const Scalar want = p.scalar;
+  // A fixed `int` or `float` is the call's width when the argument has it (min(i64vec2, int64_t),
+  // atomicMin(inout int64_t, int64_t)), else itself, reached by conversion (bitfieldExtract(i16, 0, 3)).
+  const Scalar wide = m.width_of(p.scalar);
+  const Scalar want = param.size != SizeClass::fixed || a.scalar == wide ? wide : p.scalar;
   if (param.is_out) {
     if (a.scalar != want) return std::nullopt;
   } else if (a.scalar != want) {
@@ -379,37 +387,77 @@ std::optional<int> param_cost(const SigType& param, const ArgInfo& arg, ShapeMat
       if (a.shape != Shape::vector || !bind(c, a.rows)) return std::nullopt;
       break;
   }
-  (void)m;
   return cost;
+}
+
+// The widths a call's arguments ask the signatures to be tried at: as written, each
+// explicit arithmetic width an argument has (float16_t; int8_t/uint8_t, 16 or 64), and
+// the float and the first integer width together.
+std::vector<ShapeMatch> width_variants(const std::vector<ArgInfo>& args) {
+  std::vector<ShapeMatch> out(1);
+  auto add = [&](ShapeMatch m) {
+    for (const ShapeMatch& o : out)
+      if (o.float_as == m.float_as && o.int_as == m.int_as && o.uint_as == m.uint_as) return;
+    out.push_back(m);
+  };
+  for (const ArgInfo& a : args) {
+    ShapeMatch m;
+    switch (a.type.scalar) {
+      case Scalar::float16_: m.float_as = Scalar::float16_; break;
+      case Scalar::int8_:
+      case Scalar::uint8_: m.int_as = Scalar::int8_, m.uint_as = Scalar::uint8_; break;
+      case Scalar::int16_:
+      case Scalar::uint16_: m.int_as = Scalar::int16_, m.uint_as = Scalar::uint16_; break;
+      case Scalar::int64_:
+      case Scalar::uint64_: m.int_as = Scalar::int64_, m.uint_as = Scalar::uint64_; break;
+      default: continue;
+    }
+    add(m);
+  }
+  // Both at once: frexp(f16vec3, out i16vec3) (GL_AMD_gpu_shader_int16).
+  ShapeMatch both;
+  for (const ShapeMatch& m : out) {
+    if (m.float_as != Scalar::float_) both.float_as = m.float_as;
+    if (m.int_as != Scalar::int_ && both.int_as == Scalar::int_) both.int_as = m.int_as, both.uint_as = m.uint_as;
+  }
+  add(both);
+  return out;
+}
+
+// `sig` matched at one width, or nothing.
+std::optional<ShapeMatch> match_at(const Signature& sig, const std::vector<ArgInfo>& args, const ShapeMatch& width) {
+  ShapeMatch m = width;
+  m.signature = &sig;
+  int n = 0, c = 0, r = 0;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::optional<int> cost = param_cost(sig.params[i], args[i], m, n, c, r);
+    if (!cost) return std::nullopt;
+    m.cost += *cost;
+  }
+  m.n = n == 0 ? 1 : n;
+  m.columns = c == 0 ? 2 : c;
+  m.rows = r == 0 ? 2 : r;
+  return m;
 }
 
 }  // namespace
 
 std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates, const std::vector<ArgInfo>& args) {
   std::optional<ShapeMatch> best;
+  const std::vector<ShapeMatch> widths = width_variants(args);
   for (const Signature& sig : candidates) {
-    if (!has_signature(sig.rule)) continue;
-    if (sig.params.size() != args.size()) continue;
-    ShapeMatch m;
-    m.signature = &sig;
-    int n = 0, c = 0, r = 0;
-    bool ok = true;
-    for (std::size_t i = 0; i < args.size() && ok; ++i) {
-      std::optional<int> cost = param_cost(sig.params[i], args[i], m, n, c, r);
-      if (!cost) ok = false;
-      else m.cost += *cost;
+    if (!has_signature(sig.rule) || sig.params.size() != args.size()) continue;
+    for (const ShapeMatch& width : widths) {
+      std::optional<ShapeMatch> m = match_at(sig, args, width);
+      if (m && (!best || m->cost < best->cost)) best = m;
     }
-    if (!ok) continue;
-    m.n = n == 0 ? 1 : n;
-    m.columns = c == 0 ? 2 : c;
-    m.rows = r == 0 ? 2 : r;
-    if (!best || m.cost < best->cost) best = m;
   }
   return best;
 }
 
-Type instantiate_shape(const SigType& t, const ShapeMatch& m) {
+Type instantiate_shape(const SigType& t, const ShapeMatch& m, bool result) {
   Type out = t.type;
+  if (out.shape != Shape::opaque && (result || t.size != SizeClass::fixed)) out.scalar = m.width_of(out.scalar);
   switch (t.size) {
     case SizeClass::fixed: break;
     case SizeClass::gen:

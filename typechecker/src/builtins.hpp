@@ -82,15 +82,24 @@ struct ShapeMatch {
   const Signature* signature = nullptr;
   int n = 1, columns = 1, rows = 1;  // bound sizes
   int cost = 0;                      // implicit conversions + geometry dropped
+  // The width the signature's float, int and uint words stand for: a row over genF also takes
+  // float16_t, one over genI and genU the 8-, 16- and 64-bit integers, all of one width, as
+  // glslang's overloads for the explicit arithmetic types do (docs/language.md). A fixed
+  // parameter type (`float`, `int`) is of that width for an argument of it, else of its own.
+  Scalar float_as = Scalar::float_, int_as = Scalar::int_, uint_as = Scalar::uint_;
+  Scalar width_of(Scalar s) const {
+    return s == Scalar::float_ ? float_as : s == Scalar::int_ ? int_as : s == Scalar::uint_ ? uint_as : s;
+  }
 };
 
 // The best signature whose GLSL shapes (and geometric kinds) accept the
 // arguments, or nothing. Annotations (dimensions, spaces) are not looked at.
 std::optional<ShapeMatch> match_shapes(const std::vector<Signature>& candidates, const std::vector<ArgInfo>& args);
 
-// The concrete type a signature type stands for under the bound sizes, with
-// its annotation slots left as written (generic).
-Type instantiate_shape(const SigType& t, const ShapeMatch& m);
+// The concrete type a signature type stands for under the bound sizes and width, with
+// its annotation slots left as written (generic). A fixed parameter type (`int` of
+// bitfieldExtract) is left as written; a result takes the call's width (`length(f16vec3)` is a float16_t).
+Type instantiate_shape(const SigType& t, const ShapeMatch& m, bool result = false);
 
 // The dimension and kind a value brings to a numeric parameter: directions and
 // normals are dimensionless, points are lengths.

@@ -68,11 +68,10 @@ bool Checker::extension_name(const std::string& name) {
       starts("readFirstInvocation") || starts("nonuniform") || starts("traceRay") || starts("reportIntersection") ||
       starts("executeCallable") || starts("debugPrintf") || starts("coopMat"))
     return true;
-  // Explicit arithmetic types and their vectors (GL_EXT_shader_explicit_arithmetic_types) and their conversions.
-  for (const char* p : {"int8_t", "int16_t", "int32_t", "int64_t", "uint8_t", "uint16_t", "uint32_t", "uint64_t", "float16_t", "float32_t", "float64_t",
-                        "i8vec", "i16vec", "i64vec", "u8vec", "u16vec", "u64vec", "f16vec", "f32vec", "f64vec", "f16mat",
-                        "f32mat", "f64mat", "doubleBitsTo", "int64BitsTo", "uint64BitsTo", "packInt", "packUint",
-                        "unpackInt", "unpackUint", "packFloat2x16", "unpackFloat2x16"})
+  // The bit casts and packings of the explicit arithmetic types not in builtins.def.
+  for (const char* p : {"doubleBitsTo", "int64BitsTo", "uint64BitsTo", "packInt", "packUint", "unpackInt", "unpackUint",
+                        "packFloat2x16", "unpackFloat2x16", "float16BitsTo", "int16BitsTo", "uint16BitsTo", "halfBitsTo",
+                        "pack8", "pack16", "pack32", "pack64", "unpack8", "unpack16", "unpack32"})
     if (starts(p)) return true;
   return false;
 }
@@ -211,7 +210,7 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   }
   CallShape shape;
   for (const SigType& p : sig.params) shape.params.push_back(instantiate_shape(p, *match));
-  shape.result = instantiate_shape(sig.result, *match);
+  shape.result = instantiate_shape(sig.result, *match, true);
   shape.dim_params = &sig.dim_params;
   shape.space_params = &sig.space_params;
 

@@ -9,14 +9,21 @@
 
 namespace safegi::detail {
 
-// A buffer reference from a 64-bit address (uint64_t: unmodelled, so an
-// erroneous type that never reaches here), a uvec2
-// (GL_EXT_buffer_reference_uvec2) or another reference.
+namespace {
+
+// A 64-bit device address: a uint64_t, or a uvec2 (GL_EXT_buffer_reference_uvec2).
+bool is_address(const Type& a) {
+  return !a.is_array() && ((a.shape == Shape::scalar && a.scalar == Scalar::uint64_) ||
+                           (a.shape == Shape::vector && a.rows == 2 && a.scalar == Scalar::uint_));
+}
+
+}  // namespace
+
+// A buffer reference from a 64-bit address or another reference.
 Value Checker::buffer_reference_constructor(const ast::CallExpr& e, const Value& out, const std::vector<Value>& args) {
   const Type& a = args.size() == 1 ? args[0].type : Type::error();
-  const bool uvec2 = a.shape == Shape::vector && a.rows == 2 && a.scalar == Scalar::uint_ && !a.is_array();
   const bool reference = a.shape == Shape::structure && a.structure->buffer_reference && !a.is_array();
-  if (args.size() == 1 && (uvec2 || reference)) return out;
+  if (args.size() == 1 && (is_address(a) || reference)) return out;
   report(Diagnostic::error(e.range, "a buffer reference '" + out.type.structure->name +
                                         "' is made from one 64-bit address (uint64_t or uvec2) or another reference")
              .with_code(code::E_CONSTRUCTOR));
@@ -166,13 +173,16 @@ Value Checker::constructor(const ast::CallExpr& e) {
   if (args.size() == 1 && ((is_handle(t, false) && args[0].type.shape == Shape::opaque && !args[0].type.is_array()) ||
                            (t.shape == Shape::opaque && is_handle(args[0].type, true))))
     return out;
-  // GL_EXT_buffer_reference_uvec2: uvec2(reference).
-  if (args.size() == 1 && is_handle(t, false) && args[0].type.shape == Shape::structure && args[0].type.structure->buffer_reference)
+  // A reference's address: uint64_t(reference), or uvec2(reference) (GL_EXT_buffer_reference_uvec2).
+  if (args.size() == 1 && is_address(t) && args[0].type.shape == Shape::structure && args[0].type.structure->buffer_reference &&
+      !args[0].type.is_array())
     return out;
   if (t.shape == Shape::opaque && combined_sampler(t, args)) return out;
   if (t.shape == Shape::opaque && args.size() == 2 && t.opaque.find("sampler") != std::string::npos)
     return fail(e.range, what + " is made from a " + texture_of_sampler(t.opaque) + " and a sampler or samplerShadow, not from " +
                              glsl_name(args[0].type) + " and " + glsl_name(args[1].type));
+  // GL_EXT_ray_tracing: an acceleration structure from its device address.
+  if (t.opaque == "accelerationStructureEXT" && args.size() == 1 && is_address(args[0].type)) return out;
   if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
   if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
 
@@ -289,7 +299,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
     out.type.dim = DimSlot::zero();
   }
   remember_affine_part(out.type, args);
-  if (single && t.shape == Shape::vector && t.rows == 3)
+  if (single && t.shape == Shape::vector && t.rows == 3 && t.scalar == first.scalar)
     if (std::optional<Type> part = affine_part(first, "xyz")) out.type = *part;  // vec3(m * vec4(p, 1.0))
   // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.
   // Homogeneous components stay homogeneous: vec3(h.xy, h.z) still needs the divide by w.
@@ -363,13 +373,17 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     report(std::move(d));
     return error_value(call_range);
   }
-  const Scalar texel_scalar = (name[0] == 'i') ? Scalar::int_ : (name[0] == 'u') ? Scalar::uint_ : Scalar::float_;
+  // isampler2D: int; u64image2D (GL_EXT_shader_image_int64): uint64_t; f16sampler2D (GL_AMD_gpu_shader_half_float_fetch): float16_t.
+  const bool wide = name.compare(1, 2, "64") == 0 || name.compare(1, 2, "16") == 0;
+  const Scalar texel_scalar = name[0] == 'i' ? (wide ? Scalar::int64_ : Scalar::int_)
+                              : name[0] == 'u' ? (wide ? Scalar::uint64_ : Scalar::uint_)
+                              : name[0] == 'f' && wide ? Scalar::float16_ : Scalar::float_;
   switch (sig.rule) {
     case BuiltinRule::texture: {
       const bool shadow = name.find("Shadow") != std::string::npos;
       const bool gather = sig.name.rfind("textureGather", 0) == 0;
       const bool legacy_shadow = sig.name.rfind("shadow", 0) == 0;  // shadow2D(...) and friends return vec4 (GLSL 1.10)
-      out.type = (shadow && !gather && !legacy_shadow) ? Type::scalar_of(Scalar::float_) : Type::vector_of(texel_scalar, 4);
+      out.type = (shadow && !gather && !legacy_shadow) ? Type::scalar_of(texel_scalar) : Type::vector_of(texel_scalar, 4);
       if (sampler.texel) out.type.dim = value_dimension(*sampler.texel, result_.registry);
       out.type.dim.spelling = sampler.texel ? sampler.texel->dim.spelling : std::string();
       // A G-buffer of normals, directions or positions: the texel's xyz is that kind in that space.
@@ -405,7 +419,7 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
     case BuiltinRule::image:
       if (sig.name == "imageStore") out.type = Type::void_type();
       else if (sig.name == "imageLoad") out.type = Type::vector_of(texel_scalar, 4);
-      else out.type = Type::scalar_of(texel_scalar == Scalar::uint_ ? Scalar::uint_ : Scalar::int_);
+      else out.type = Type::scalar_of(is_integer_scalar(texel_scalar) ? texel_scalar : Scalar::int_);
       if (sampler.texel && sig.name == "imageLoad") out.type.dim = value_dimension(*sampler.texel, result_.registry);
       return out;
     default: return no_match();

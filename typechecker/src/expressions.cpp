@@ -11,6 +11,24 @@
 #include "dim_slot.hpp"
 
 namespace safegi::detail {
+namespace {
+
+// The type an integer literal's suffix gives it: u, l (int64_t), ul, s (int16_t), us (GL_EXT_shader_explicit_arithmetic_types).
+Scalar integer_literal_scalar(std::string_view spelling, bool is_signed) {
+  auto lower = [&](std::size_t from_end) { return static_cast<char>(spelling.size() > from_end ? spelling[spelling.size() - 1 - from_end] | 0x20 : 0); };
+  const char last = lower(0), before = lower(1);
+  if (last == 'l') return before == 'u' ? Scalar::uint64_ : Scalar::int64_;
+  if (last == 's') return before == 'u' ? Scalar::uint16_ : Scalar::int16_;
+  return is_signed ? Scalar::int_ : Scalar::uint_;
+}
+
+// hf: float16_t; lf (a double literal) is LiteralKind::Double.
+Scalar float_literal_scalar(std::string_view spelling) {
+  const std::size_t n = spelling.size();
+  return n >= 2 && (spelling[n - 1] | 0x20) == 'f' && (spelling[n - 2] | 0x20) == 'h' ? Scalar::float16_ : Scalar::float_;
+}
+
+}  // namespace
 
 Value Checker::expr(const ast::Expr* e) {
   if (!e) return error_value({});
@@ -95,7 +113,9 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     // state, extensions) are left to the driver rather than reported wrongly.
     if (e.name.rfind("gl_Max", 0) == 0 || e.name.rfind("gl_Min", 0) == 0) {
       Value v;
-      v.type = Type::scalar_of(Scalar::int_);
+      // The two vector limits (GLSL 4.60 §7.4): ivec3; their components are not folded.
+      const bool vector = e.name == "gl_MaxComputeWorkGroupCount" || e.name == "gl_MaxComputeWorkGroupSize";
+      v.type = vector ? Type::vector_of(Scalar::int_, 3) : Type::scalar_of(Scalar::int_);
       v.range = e.range;
       v.read_only = true;
       v.constant = builtin_constant(e.name);
@@ -117,18 +137,22 @@ Value Checker::literal(const ast::LiteralExpr& e) {
   switch (e.literal_kind) {
     case ast::LiteralKind::Int:
     case ast::LiteralKind::Uint: {
-      v.type = Type::scalar_of(e.literal_kind == ast::LiteralKind::Int ? Scalar::int_ : Scalar::uint_);
+      v.type = Type::scalar_of(integer_literal_scalar(e.spelling, e.literal_kind == ast::LiteralKind::Int));
       const char* text = e.spelling.c_str();
       int base = 10;
       if (e.spelling.size() > 1 && e.spelling[0] == '0') base = (e.spelling[1] == 'x' || e.spelling[1] == 'X') ? 16 : 8;
       unsigned long long value = std::strtoull(text, nullptr, base);
-      v.constant = static_cast<long long>(value & 0xffffffffull);
-      if (e.literal_kind == ast::LiteralKind::Int && *v.constant > 0x7fffffff) *v.constant -= 0x100000000ll;
+      const int bits = 8 * scalar_bytes(v.type.scalar);
+      const unsigned long long mask = bits == 64 ? ~0ull : (1ull << bits) - 1;
+      v.constant = static_cast<long long>(value & mask);
+      if (!is_float_scalar(v.type.scalar) && v.type.scalar != Scalar::uint_ && v.type.scalar != Scalar::uint16_ &&
+          v.type.scalar != Scalar::uint64_ && bits < 64 && *v.constant >= (1ll << (bits - 1)))
+        *v.constant -= 1ll << bits;
       v.number = static_cast<double>(*v.constant);
       break;
     }
     case ast::LiteralKind::Float:
-      v.type = Type::scalar_of(Scalar::float_);
+      v.type = Type::scalar_of(float_literal_scalar(e.spelling));
       v.number = std::strtod(e.spelling.c_str(), nullptr);
       v.pi_multiple = is_pi_multiple(*v.number);
       break;
@@ -168,7 +192,7 @@ Value Checker::unary(const ast::UnaryExpr& e) {
         return out;
       }
       if (e.op == ast::UnaryOp::Minus) out.type.orientation = flipped(out.type.orientation);
-      if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = -*out.constant;
+      if (out.constant && e.op == ast::UnaryOp::Minus) *out.constant = static_cast<long long>(0ull - static_cast<unsigned long long>(*out.constant));
       if (out.number && e.op == ast::UnaryOp::Minus) *out.number = -*out.number;
       return out;
     case ast::UnaryOp::Not:
@@ -256,7 +280,9 @@ std::string Checker::member_path(const ast::Expr* target, const std::string& var
 // `vec3 sum = vec3(0.0);`: an unannotated local whose start is zero, which fits any dimension.
 bool Checker::infer_from_zero(bool global, const Type& declared, const Value& init) const {
   return !global && init.zero && !declared.is_annotated() && !declared.is_error() && !declared.is_array() &&
-         (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating();
+         (declared.shape == Shape::scalar || declared.shape == Shape::vector) && declared.is_floating() &&
+         init.type.shape == declared.shape && init.type.rows == declared.rows && !init.type.is_array() &&
+         implicitly_converts(init.type.scalar, declared.scalar);  // `vec4 a = vec2(0.0);` is still a GLSL error
 }
 
 // A local whose type was inferred from its initializer (no annotation written) is a name,

@@ -138,5 +138,39 @@ TEST(Glsl, Textures) {
             Messages{"error: no matching overload for call to 'texture(vec2, vec2)'"});
 }
 
+// A local that starts at zero is an accumulator, but its GLSL type is still checked (piglit's
+// initialization-incompatible-type-propagation-1.frag).
+TEST(Glsl, ZeroStartKeepsGlslTypes) {
+  EXPECT_EQ(plain("void main() { vec4 a = vec2(0.0); }"),
+            Messages{"error: cannot initialize 'a' of type vec4 with a value of type vec2"});
+  EXPECT_EQ(plain("void main() { vec3 a = vec3(0.0); a += vec3(1.0); }"), Messages{});
+}
+
+// GL_EXT_shader_explicit_arithmetic_types: glslang's conversions, literal suffixes, built-ins at every width.
+TEST(Glsl, ExplicitArithmeticTypes) {
+  // (check_source's words are GLSL 4.60's with every extension group: the types are keywords.)
+  auto check = [&](const std::string& body) { return plain("void main() { " + body + " }"); };
+  EXPECT_EQ(check("int8_t a = int8_t(1); int16_t b = a; int c = b; int64_t d = c; uint64_t e = d; double f = e;"), Messages{});
+  EXPECT_EQ(check("uint8_t a = uint8_t(1); int b = a; uint16_t c = a; float16_t h = c; float f = h; double d = h;"), Messages{});
+  EXPECT_EQ(check("int64_t a = 1l; uint64_t b = 1ul; int16_t c = 1s; uint16_t d = 1us; float16_t h = 1.0hf; double x = 1.0lf;"),
+            Messages{});
+  EXPECT_EQ(check("float16_t h = 1.0;"), Messages{"error: cannot initialize 'h' of type float16_t with a value of type float<1>"});
+  EXPECT_EQ(check("int64_t a = 1l; int b = a;"), Messages{"error: cannot initialize 'b' of type int with a value of type int64_t<1>"});
+  EXPECT_EQ(check("uint8_t u = uint8_t(1); int i = 2; uint r = i + u; int64_t q = i * 2l;"), Messages{});
+  EXPECT_EQ(check("int64_t q = 1l; float f = 2.0; double d = f + q;"),
+            Messages{"error: invalid operands to binary expression (float<1> and int64_t<1>)"});
+  EXPECT_EQ(check("f16vec3 v = f16vec3(1.0hf); float16_t l = length(v); f16vec3 m = max(v, f16vec3(0.0hf)); i16vec3 e; v = frexp(v, e);"),
+            Messages{});
+  // A fixed parameter keeps its type (bitfieldExtract's int offsets); the result takes the call's width.
+  EXPECT_EQ(check("int16_t a = 1s; int16_t b = bitfieldExtract(a, 0, 3); float16_t d = dot(f16vec2(1.0hf), f16vec2(2.0hf));"),
+            Messages{});
+  EXPECT_EQ(check("i64vec2 v = i64vec2(1l); i64vec2 a = abs(v); int64_t m = min(v.x, 3l);"), Messages{});
+  // Folding wraps at 64 bits instead of trapping (glslang's constFoldIntMin.frag).
+  EXPECT_EQ(plain("const int64_t a = -9223372036854775808L; const int64_t b = a / -1L; const int64_t c = a % -1L;"
+                  "const int64_t d = a * a - a; const int64_t e = -a; const int64_t f = 1l << 63l; void main() {}"),
+            Messages{});
+  EXPECT_EQ(check("f16mat2x3 m = f16mat2x3(1.0hf); f16vec3 c = m[0]; f64vec2 d = dvec2(1.0lf); i32vec2 i = ivec2(1);"), Messages{});
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -1,6 +1,7 @@
 // Binary operators: GLSL's shape rules, then dimensions (Abelian group) and
 // the affine rules of points, vectors, directions and normals.
 
+#include <climits>
 #include <cstdint>
 #include <vector>
 
@@ -33,13 +34,10 @@ const char* verb(ast::BinaryOp op) {
 // GLSL's result shape of an arithmetic operator, or nothing when the operands do not fit.
 std::optional<Type> arithmetic_shape(ast::BinaryOp op, const Type& a, const Type& b) {
   if (a.is_array() || b.is_array() || !a.is_numeric() || !b.is_numeric()) return std::nullopt;
-  Scalar scalar;
-  if (implicitly_converts(a.scalar, b.scalar)) scalar = b.scalar;
-  else if (implicitly_converts(b.scalar, a.scalar)) scalar = a.scalar;
-  else return std::nullopt;
-  if (op == ast::BinaryOp::Mod && (a.scalar == Scalar::float_ || a.scalar == Scalar::double_ ||
-                                   b.scalar == Scalar::float_ || b.scalar == Scalar::double_))
-    return std::nullopt;
+  const std::optional<Scalar> common = common_scalar(a.scalar, b.scalar);
+  if (!common) return std::nullopt;
+  const Scalar scalar = *common;
+  if (op == ast::BinaryOp::Mod && (a.is_floating() || b.is_floating())) return std::nullopt;
   auto with = [&](Type t) {
     t.scalar = scalar;
     return t.plain();
@@ -134,8 +132,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     case ast::BinaryOp::Ne: {
       const bool ordering = op != ast::BinaryOp::Eq && op != ast::BinaryOp::Ne;
       Type pa = a, pb = b;
-      if (implicitly_converts(pa.scalar, pb.scalar)) pa.scalar = pb.scalar;
-      else if (implicitly_converts(pb.scalar, pa.scalar)) pb.scalar = pa.scalar;
+      if (const std::optional<Scalar> common = common_scalar(pa.scalar, pb.scalar)) pa.scalar = pb.scalar = *common;
       if (!same_glsl_type(pa.plain(), pb.plain())) return invalid();
       if (ordering && !(a.shape == Shape::scalar && a.is_numeric() && !a.is_array())) return invalid();
       if (!ordering && (a.shape == Shape::opaque || a.shape == Shape::void_)) return invalid();
@@ -176,15 +173,17 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       if (shift && a.shape == Shape::scalar && b.shape == Shape::vector) return invalid();
       out.type = (shift || a.shape == Shape::vector) ? a.plain() : b.plain();
       if (!shift && a.scalar != b.scalar) {
-        if (!implicitly_converts(a.scalar, b.scalar) && !implicitly_converts(b.scalar, a.scalar)) return invalid();
-        out.type.scalar = Scalar::uint_;
+        const std::optional<Scalar> common = common_scalar(a.scalar, b.scalar);
+        if (!common) return invalid();
+        out.type.scalar = *common;
       }
       if (lhs.constant && rhs.constant) {
         const long long x = *lhs.constant, y = *rhs.constant;
         if (op == ast::BinaryOp::BitAnd) out.constant = x & y;
         if (op == ast::BinaryOp::BitOr) out.constant = x | y;
         if (op == ast::BinaryOp::BitXor) out.constant = x ^ y;
-        if (shift && y >= 0 && y < 32) out.constant = op == ast::BinaryOp::Shl ? (x << y) & 0xffffffffll : x >> y;
+        if (shift && y >= 0 && y < 32)
+          out.constant = op == ast::BinaryOp::Shl ? static_cast<long long>((static_cast<unsigned long long>(x) << y) & 0xffffffffull) : x >> y;
       }
       return out;
     }
@@ -254,11 +253,15 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     if (out.zero) out.type.dim = DimSlot::zero();
   }
   if (lhs.constant && rhs.constant && out.type.shape == Shape::scalar && out.type.is_integer()) {
+    // Wrapping, as the 64-bit types (INT64_MIN / -1L) do not fit the folding otherwise; a result
+    // beyond 32 bits is not folded.
     const long long x = *lhs.constant, y = *rhs.constant;
-    if (op == ast::BinaryOp::Add) out.constant = x + y;
-    if (op == ast::BinaryOp::Sub) out.constant = x - y;
-    if (op == ast::BinaryOp::Mul) out.constant = x * y;
-    if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0) out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
+    const auto ux = static_cast<unsigned long long>(x), uy = static_cast<unsigned long long>(y);
+    if (op == ast::BinaryOp::Add) out.constant = static_cast<long long>(ux + uy);
+    if (op == ast::BinaryOp::Sub) out.constant = static_cast<long long>(ux - uy);
+    if (op == ast::BinaryOp::Mul) out.constant = static_cast<long long>(ux * uy);
+    if ((op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod) && y != 0 && !(y == -1 && x == LLONG_MIN))
+      out.constant = op == ast::BinaryOp::Div ? x / y : x % y;
     if (out.constant && (*out.constant > 0xffffffffll || *out.constant < -0x80000000ll)) out.constant.reset();
   }
   if (out.constant) out.number = static_cast<double>(*out.constant);

@@ -1,5 +1,8 @@
 #include "safegi/typechecker/type.hpp"
 
+#include <algorithm>
+#include <initializer_list>
+
 namespace safegi {
 
 const char* geometry_name(Geometry g) {
@@ -71,14 +74,76 @@ bool same_glsl_type(const Type& a, const Type& b) {
          a.opaque == b.opaque && a.structure == b.structure && a.array == b.array;
 }
 
-bool implicitly_converts(Scalar from, Scalar to) {
-  if (from == to) return true;
-  switch (from) {
-    case Scalar::int_: return to == Scalar::uint_ || to == Scalar::float_ || to == Scalar::double_;
-    case Scalar::uint_: return to == Scalar::float_ || to == Scalar::double_;
-    case Scalar::float_: return to == Scalar::double_;
+int scalar_bytes(Scalar s) {
+  switch (s) {
+    case Scalar::int8_:
+    case Scalar::uint8_: return 1;
+    case Scalar::int16_:
+    case Scalar::uint16_:
+    case Scalar::float16_: return 2;
+    case Scalar::double_:
+    case Scalar::int64_:
+    case Scalar::uint64_: return 8;
+    default: return 4;
+  }
+}
+
+bool is_float_scalar(Scalar s) { return s == Scalar::float_ || s == Scalar::double_ || s == Scalar::float16_; }
+
+bool is_integer_scalar(Scalar s) {
+  switch (s) {
+    case Scalar::int_:
+    case Scalar::uint_:
+    case Scalar::int8_:
+    case Scalar::uint8_:
+    case Scalar::int16_:
+    case Scalar::uint16_:
+    case Scalar::int64_:
+    case Scalar::uint64_: return true;
     default: return false;
   }
+}
+
+namespace {
+
+bool is_signed_integer(Scalar s) { return s == Scalar::int_ || s == Scalar::int8_ || s == Scalar::int16_ || s == Scalar::int64_; }
+
+Scalar unsigned_twin(Scalar s) {
+  switch (s) {
+    case Scalar::int8_: return Scalar::uint8_;
+    case Scalar::int16_: return Scalar::uint16_;
+    case Scalar::int64_: return Scalar::uint64_;
+    default: return Scalar::uint_;
+  }
+}
+
+}  // namespace
+
+bool implicitly_converts(Scalar from, Scalar to) {
+  if (from == to) return true;
+  using S = Scalar;
+  auto one_of = [to](std::initializer_list<Scalar> l) { return std::find(l.begin(), l.end(), to) != l.end(); };
+  switch (from) {
+    case S::int8_: return one_of({S::uint8_, S::int16_, S::uint16_, S::int_, S::uint_, S::int64_, S::uint64_, S::float16_, S::float_, S::double_});
+    case S::uint8_: return one_of({S::int16_, S::uint16_, S::int_, S::uint_, S::int64_, S::uint64_, S::float16_, S::float_, S::double_});
+    case S::int16_: return one_of({S::uint16_, S::int_, S::uint_, S::int64_, S::uint64_, S::float16_, S::float_, S::double_});
+    case S::uint16_: return one_of({S::int_, S::uint_, S::int64_, S::uint64_, S::float16_, S::float_, S::double_});
+    case S::int_: return one_of({S::uint_, S::int64_, S::uint64_, S::float_, S::double_});
+    case S::uint_: return one_of({S::int64_, S::uint64_, S::float_, S::double_});
+    case S::int64_: return one_of({S::uint64_, S::double_});
+    case S::uint64_: return to == S::double_;
+    case S::float16_: return one_of({S::float_, S::double_});
+    case S::float_: return to == S::double_;
+    default: return false;
+  }
+}
+
+std::optional<Scalar> common_scalar(Scalar a, Scalar b) {
+  if (implicitly_converts(b, a)) return a;
+  if (implicitly_converts(a, b)) return b;
+  if (is_signed_integer(a) && is_integer_scalar(b) && !is_signed_integer(b) && scalar_bytes(a) > scalar_bytes(b)) return unsigned_twin(a);
+  if (is_signed_integer(b) && is_integer_scalar(a) && !is_signed_integer(a) && scalar_bytes(b) > scalar_bytes(a)) return unsigned_twin(b);
+  return std::nullopt;
 }
 
 namespace {
@@ -90,6 +155,13 @@ const char* scalar_word(Scalar s) {
     case Scalar::uint_: return "uint";
     case Scalar::float_: return "float";
     case Scalar::double_: return "double";
+    case Scalar::int8_: return "int8_t";
+    case Scalar::uint8_: return "uint8_t";
+    case Scalar::int16_: return "int16_t";
+    case Scalar::uint16_: return "uint16_t";
+    case Scalar::int64_: return "int64_t";
+    case Scalar::uint64_: return "uint64_t";
+    case Scalar::float16_: return "float16_t";
     case Scalar::none: break;
   }
   return "?";
@@ -101,6 +173,13 @@ const char* vector_prefix(Scalar s) {
     case Scalar::int_: return "i";
     case Scalar::uint_: return "u";
     case Scalar::double_: return "d";
+    case Scalar::int8_: return "i8";
+    case Scalar::uint8_: return "u8";
+    case Scalar::int16_: return "i16";
+    case Scalar::uint16_: return "u16";
+    case Scalar::int64_: return "i64";
+    case Scalar::uint64_: return "u64";
+    case Scalar::float16_: return "f16";
     default: return "";
   }
 }
@@ -132,7 +211,7 @@ std::string glsl_name(const Type& t) {
     case Shape::scalar: base = scalar_word(t.scalar); break;
     case Shape::vector: base = std::string(vector_prefix(t.scalar)) + "vec" + std::to_string(t.rows); break;
     case Shape::matrix:
-      base = std::string(t.scalar == Scalar::double_ ? "d" : "") + "mat" + std::to_string(t.columns);
+      base = std::string(vector_prefix(t.scalar)) + "mat" + std::to_string(t.columns);
       if (t.rows != t.columns) base += "x" + std::to_string(t.rows);
       break;
     case Shape::opaque: base = t.opaque; break;

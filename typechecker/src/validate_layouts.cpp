@@ -106,14 +106,14 @@ long long location_slots(const Type& t) {
     per = 0;
     for (const StructField& f : e.structure->fields) per += location_slots(f.type);
   } else if (e.shape == Shape::matrix) {
-    per = e.columns * (e.scalar == Scalar::double_ && e.rows >= 3 ? 2 : 1);
-  } else if (e.scalar == Scalar::double_ && e.rows >= 3) {
+    per = e.columns * (scalar_bytes(e.scalar) == 8 && e.rows >= 3 ? 2 : 1);
+  } else if (scalar_bytes(e.scalar) == 8 && e.rows >= 3) {
     per = 2;
   }
   return count * per;
 }
 
-// Bytes of one transform-feedback captured value (GLSL 4.60 §4.4.2.1): components × 4 (8 for doubles).
+// Bytes of one transform-feedback captured value (GLSL 4.60 §4.4.2.1): components × their size.
 long long xfb_bytes(const Type& t) {
   long long count = 1;
   for (int n : t.array) count *= std::max(n, 1);
@@ -124,7 +124,7 @@ long long xfb_bytes(const Type& t) {
     for (const StructField& f : e.structure->fields) sum += xfb_bytes(f.type);
     return count * sum;
   }
-  return count * e.components() * (e.scalar == Scalar::double_ ? 8 : 4);
+  return count * e.components() * scalar_bytes(e.scalar);
 }
 
 enum class PackingRules { std140, std430, scalar };
@@ -139,7 +139,7 @@ struct Packing {
 // Base alignment and size under std140 / std430 (GLSL 4.60 §7.6.2.2) or
 // scalar (GL_EXT_scalar_block_layout: everything aligns to its scalars).
 Packing packing_of(const Type& t, PackingRules rules, bool row_major) {
-  const long long scalar = t.scalar == Scalar::double_ ? 8 : 4;
+  const long long scalar = scalar_bytes(t.scalar);
   auto round_up = [](long long v, long long a) { return (v + a - 1) / a * a; };
   if (t.is_error()) return {4, 4, 0, 0, false};
   if (t.is_array()) {
@@ -373,7 +373,7 @@ class LayoutRules {
       return fail(id.name_range, "layout 'component' does not apply to a matrix, a struct or a block");
     if (!t || !value) return true;
     const Type element = t->is_array() ? t->element() : *t;
-    const bool is_double = element.scalar == Scalar::double_;
+    const bool is_double = scalar_bytes(element.scalar) == 8;
     const long long width = (element.shape == Shape::vector ? element.rows : 1) * (is_double ? 2 : 1);
     if (is_double && *value % 2 != 0)
       return fail(id.value->range, "a double starts at component 0 or 2, not " + std::to_string(*value));
@@ -470,12 +470,15 @@ class LayoutRules {
     } else if (site_.type) {
       captured.push_back(site_.type);
     }
+    // 8 with a 64-bit scalar in it, else 4 with a 32-bit one, else 2 with a 16-bit one (glslang: no rule for 8-bit).
+    int widest = 0;
+    for (const Type* c : captured) widest = std::max(widest, widest_scalar_bytes(*c));
+    const long long multiple = widest == 0 ? 4 : widest;
     const bool doubles =
         std::any_of(captured.begin(), captured.end(), [](const Type* t) { return contains_scalar(*t, Scalar::double_); });
-    const long long multiple = doubles ? 8 : 4;
     if (v % multiple != 0)
       return fail(id.value->range, "layout 'xfb_offset' must be a multiple of " + std::to_string(multiple) +
-                                       (doubles ? " (the value holds a double)" : ""));
+                                       (doubles ? " (the value holds a double)" : multiple == 8 ? " (the value holds a 64-bit integer)" : ""));
     long long bytes = 0;
     for (const Type* t : captured) {
       if (t->is_array() && t->array[0] < 0) return fail(id.name_range, "layout 'xfb_offset' cannot capture an unsized array");
@@ -528,7 +531,7 @@ class LayoutRules {
       if (std::optional<long long> v = c_.layout_value(*comp)) {
         const Type e = t.is_array() ? t.element() : t;
         use.first_component = static_cast<int>(*v);
-        use.last_component = static_cast<int>(*v + (e.shape == Shape::vector ? e.rows : 1) * (e.scalar == Scalar::double_ ? 2 : 1) - 1);
+        use.last_component = static_cast<int>(*v + (e.shape == Shape::vector ? e.rows : 1) * (scalar_bytes(e.scalar) == 8 ? 2 : 1) - 1);
       }
     use.name = site_.name;
     use.range = location_->name_range;

@@ -76,6 +76,15 @@ bool contains_scalar(const Type& t, Scalar scalar) {
   return t.scalar == scalar;
 }
 
+int widest_scalar_bytes(const Type& t) {
+  if (t.shape == Shape::structure && t.structure && !t.structure->buffer_reference) {
+    int widest = 0;
+    for (const StructField& f : t.structure->fields) widest = std::max(widest, widest_scalar_bytes(f.type));
+    return widest;
+  }
+  return t.scalar == Scalar::none ? 0 : scalar_bytes(t.scalar);
+}
+
 const ast::Qualifier* find_qualifier(const ast::TypeQualifiers& q, std::string_view word) {
   for (const ast::Qualifier& x : q.list)
     if (x.word == word) return &x;

@@ -54,6 +54,8 @@ const ast::LayoutId* find_layout_id(const ast::TypeQualifiers& q, std::string_vi
 bool contains_opaque(const Type& t);
 // `t` is of scalar type `scalar` (bool, double, …) or a struct holding one.
 bool contains_scalar(const Type& t, Scalar scalar);
+// Bytes of the widest scalar in `t` (its struct members' included); 0 for none.
+int widest_scalar_bytes(const Type& t);
 
 // The value of a gl_Max constant the rules need (glslang's default resource limits), or nothing.
 std::optional<long long> builtin_constant(std::string_view name);

@@ -36,6 +36,10 @@ const ExtensionInfo* find_extension(std::string_view name);
 bool glslang_knows_extension(std::string_view name);
 // The names of known_extensions(): PreprocessorOptions::extension_macros' default.
 std::vector<std::string> default_extension_macros();
+// For a type word of an extension (`float16_t`, `i64vec2`, `u64image2D`): the
+// extensions that declare it, in words ("GL_EXT_shader_explicit_arithmetic_types_float16
+// (or GL_EXT_shader_16bit_storage, ...)"); empty for other words.
+std::string_view extensions_declaring_type(std::string_view word);
 
 enum class LanguageFeature : std::uint8_t {
   double_literals,    // 1.0lf

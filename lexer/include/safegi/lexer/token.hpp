@@ -61,6 +61,8 @@ enum class ExtensionGroup : std::uint8_t {
   mesh_shading,       // taskPayloadSharedEXT, perprimitiveEXT (and NV): GL_EXT/NV_mesh_shader
   nonuniform,         // nonuniformEXT: GL_EXT_nonuniform_qualifier
   barycentric,        // pervertexEXT / pervertexNV: GL_EXT/NV_fragment_shader_barycentric
+  image_int64,        // i64image*, u64image*: GL_EXT_shader_image_int64
+  half_float_fetch,   // f16sampler*, f16image*, f16texture*, f16subpassInput*: GL_AMD_gpu_shader_half_float_fetch
 };
 
 // Bit mask of ExtensionGroup values that `extension` (a #extension name)

@@ -17,7 +17,15 @@
 namespace safegi {
 
 enum class Shape : std::uint8_t { error, void_, scalar, vector, matrix, opaque, structure };
-enum class Scalar : std::uint8_t { none, bool_, int_, uint_, float_, double_ };
+// int_, uint_, float_ and double_ are GLSL's 32- and 64-bit types (int32_t, float64_t, ... are other
+// names of them); the others are the 8-, 16- and 64-bit types of GL_EXT_shader_explicit_arithmetic_types
+// and the extensions before it (docs/language.md, "Explicit arithmetic types").
+enum class Scalar : std::uint8_t { none, bool_, int_, uint_, float_, double_, int8_, uint8_, int16_, uint16_, int64_, uint64_, float16_ };
+
+// Bytes of one component (bool: 4, as GLSL lays it out).
+int scalar_bytes(Scalar s);
+bool is_float_scalar(Scalar s);
+bool is_integer_scalar(Scalar s);
 
 // What an annotated type word says about a value (docs/language.md, "Annotated types").
 enum class Geometry : std::uint8_t {
@@ -133,8 +141,8 @@ struct Type {
   bool is_error() const { return shape == Shape::error; }
   bool is_array() const { return !array.empty(); }
   bool is_numeric() const { return (shape == Shape::scalar || shape == Shape::vector || shape == Shape::matrix) && scalar != Scalar::bool_; }
-  bool is_floating() const { return scalar == Scalar::float_ || scalar == Scalar::double_; }
-  bool is_integer() const { return scalar == Scalar::int_ || scalar == Scalar::uint_; }
+  bool is_floating() const { return is_float_scalar(scalar); }
+  bool is_integer() const { return is_integer_scalar(scalar); }
   bool is_annotated() const {
     return geometry != Geometry::none || dim.state == DimSlot::State::known || texel != nullptr || affine != nullptr;
   }
@@ -162,8 +170,14 @@ struct StructInfo {
 
 // Same GLSL type (shape, scalar, sizes, arrays, struct, opaque name), ignoring annotations.
 bool same_glsl_type(const Type& a, const Type& b);
-// GLSL's implicit conversion of the scalar type (int -> uint -> float -> double).
+// GLSL's implicit conversion of the scalar type (int -> uint -> float -> double), with the
+// explicit arithmetic types' (glslang's canImplicitlyPromote: int8 -> int16 -> int -> int64,
+// integers to floats at least as wide, float16 -> float -> double).
 bool implicitly_converts(Scalar from, Scalar to);
+// The scalar type two operands of a binary operator are converted to, or nothing: the one the
+// other converts to, else a signed and a narrower unsigned integer meet at the signed one's
+// unsigned twin (int + uint8_t is uint), as glslang does (float + int64_t has none).
+std::optional<Scalar> common_scalar(Scalar a, Scalar b);
 
 // The GLSL spelling: float, vec3, mat4x3, sampler2D, S, float[4].
 std::string glsl_name(const Type& t);
