@@ -600,6 +600,7 @@ Value Checker::member(const ast::MemberExpr& e) {
     for (std::size_t i = 0; i < s.size(); ++i)
       for (std::size_t j = i + 1; j < s.size(); ++j) repeated = repeated || s[i] == s[j];
     const bool identity = static_cast<int>(s.size()) == t.rows && s == std::string(kSets[set]).substr(0, s.size());
+    out.unit_w = false;
     if (std::optional<Type> part = affine_part(t, s)) {
       out.type = *part;
     } else if (!identity) {
@@ -607,6 +608,7 @@ Value Checker::member(const ast::MemberExpr& e) {
       out.type.dim = t.geometry == Geometry::hpoint ? DimSlot::unknown() : value_dimension(t, result_.registry);
       if (t.geometry == Geometry::hpoint) keep_homogeneous(out.type, t);
       if (s == "z" && frame_cosine(t)) out.type.dim = DimSlot::known(*frame_cosine(t));
+      out.unit_w = t.affine && t.affine_w == 1 && t.rows == 4 && (s == "w" || s == "a" || s == "q");
     }
     out.lvalue = base.lvalue && !repeated;
     return out;

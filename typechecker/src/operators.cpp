@@ -398,6 +398,11 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
   // * and /
   const bool a_scalar = a.shape == Shape::scalar, b_scalar = b.shape == Shape::scalar;
   if (ga == Geometry::hpoint || gb == Geometry::hpoint) return homogeneous_product(op, lhs, rhs, shape, op_range, range);
+  // (m * vec4(p, 1.0)).xyz / (m * vec4(p, 1.0)).w under an affine map: w is 1, the point is itself.
+  if (ga == Geometry::point && op == ast::BinaryOp::Div && rhs.unit_w) {
+    out.type = a;
+    return out;
+  }
   if (ga == Geometry::point || gb == Geometry::point)
     return reject(std::string("cannot ") + verb(op) + " " + both + ": a point cannot be scaled",
                   "subtract another point to get a vector, which can be scaled", code::E_POINT_ARITHMETIC);
