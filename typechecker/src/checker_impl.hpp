@@ -97,7 +97,9 @@ struct Variable {
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   unsigned version = 0;               // how often it may have been written so far (LengthOf::version)
-  std::optional<PiFactor> pi_constant;  // an unannotated const float initialised with kπ or 1/(kπ)
+  // An unannotated const float initialised with kπ or 1/(kπ), or an unannotated local initialised with
+  // a product with one (until it is written).
+  std::optional<PiFactor> pi_constant;
   std::optional<SourceRange> w_divided_at;  // Value::w_divided_at
 };
 
@@ -234,7 +236,8 @@ class Checker {
   void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
   std::optional<Value> pi_multiple_as_angle(const Type& target, const Value& value) const;
   // `known · X^e` of a product or quotient with an unannotated π constant (PiFactor).
-  void carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out) const;
+  // false after reporting a sum no quantity π measures makes consistent.
+  bool carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out, SourceRange op_range);
   // A value that is the target's dimension for no quantity its π constant can be: the dimension it has
   // with π read as the likeliest quantity (pi_reading), for the message; nothing when it fits.
   std::optional<DimSlot> pi_factor_misfit(const Type& target, const Value& value) const;

@@ -345,6 +345,10 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       if (is_const && init.literal && init.number && !declared.is_annotated() && declared.shape == Shape::scalar &&
           declared.is_floating() && !declared.is_array())
         v.pi_constant = pi_constant(decl.name, *init.number);
+      // `vec3 diffuse = albedo / PI;`: an unannotated local holding a product with a π constant carries it on.
+      if (!v.pi_constant && init.pi_factor && !declared.is_annotated() &&
+          value_dimension(declared, result_.registry).state == DimSlot::State::unknown)
+        v.pi_constant = init.pi_factor;
       // Unsized arrays take their size from the initialiser.
       if (!declared.array.empty() && declared.array[0] < 0 && !init.type.array.empty()) declared.array[0] = init.type.array[0];
       const bool infer = !global && !declared.is_annotated() && !declared.is_error() && !init.type.is_error() &&

@@ -191,20 +191,85 @@ bool pi_can_measure(double multiple, const Dimension& x, const DimensionRegistry
   return false;
 }
 
-void Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out) const {
-  if ((op != ast::BinaryOp::Mul && op != ast::BinaryOp::Div) || lhs.pi_factor.has_value() == rhs.pi_factor.has_value() ||
-      value_dimension(out.type, result_.registry).is_known())
-    return;
-  const bool left = lhs.pi_factor.has_value();
-  const DimSlot other = value_dimension((left ? rhs : lhs).type, result_.registry);
-  if (!other.is_known()) return;
-  PiFactor pi = *(left ? lhs : rhs).pi_factor;
-  const int sign = op == ast::BinaryOp::Mul ? 1 : -1;
-  const std::optional<DimSlot> known = left ? combine(pi.known, other, sign) : combine(other, pi.known, sign);
-  if (!known || !known->is_known()) return;
-  if (!left && op == ast::BinaryOp::Div) pi.exponent = -pi.exponent;
-  pi.known = *known;
-  out.pi_factor = pi;
+// How products, quotients and sums of values carrying the same π constant (PiFactor) go: products
+// add the exponents (π / π cancels to a known dimension), a sum with a known dimension decides the
+// quantity π is there, and two sides no quantity π measures can make agree are an error.
+bool Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& rhs, Value& out, SourceRange op_range) {
+  const DimensionRegistry& reg = result_.registry;
+  if (out.type.is_error() || value_dimension(out.type, reg).is_known()) return true;
+  const bool product = op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div;
+  const bool sum = op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub;
+  if (!product && !sum) return true;
+  const std::optional<PiFactor>& a = lhs.pi_factor;
+  const std::optional<PiFactor>& b = rhs.pi_factor;
+  const DimSlot da = value_dimension(lhs.type, reg), db = value_dimension(rhs.type, reg);
+  const int sign = op == ast::BinaryOp::Div ? -1 : 1;
+  if (product && a && b) {
+    if (a->name != b->name || !a->known.is_known() || !b->known.is_known()) return true;
+    const std::optional<DimSlot> known = combine(a->known, b->known, sign);
+    if (!known || !known->is_known()) return true;
+    PiFactor pi = *a;
+    pi.exponent = a->exponent + sign * b->exponent;
+    pi.known = *known;
+    if (pi.exponent == 0) out.type.dim = *known;  // kπ / kπ: whichever quantity, it cancels
+    else out.pi_factor = pi;
+    return true;
+  }
+  if (product && (a || b)) {
+    const DimSlot& other = a ? db : da;
+    if (!other.is_known()) return true;
+    PiFactor pi = a ? *a : *b;
+    const std::optional<DimSlot> known = a ? combine(pi.known, other, sign) : combine(other, pi.known, sign);
+    if (!known || !known->is_known()) return true;
+    if (!a && op == ast::BinaryOp::Div) pi.exponent = -pi.exponent;
+    pi.known = *known;
+    out.pi_factor = pi;
+    return true;
+  }
+  if (!sum) return true;
+  // A sum: the side of known dimension says what π is on the other.
+  if ((a && !b && da.state == DimSlot::State::unknown && db.is_known()) ||
+      (b && !a && db.state == DimSlot::State::unknown && da.is_known())) {
+    const Value& with_pi = a ? lhs : rhs;
+    const DimSlot& known = a ? db : da;
+    Type target = out.type;
+    target.dim = known;
+    if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, with_pi)) {
+      Diagnostic d = Diagnostic::error(op_range, std::string("cannot ") + (op == ast::BinaryOp::Add ? "add " : "subtract ") +
+                                                     "a value of dimension " + reg.format(known.value) + " and one that is " +
+                                                     reg.format(as_pi->value) + ", taking '" + with_pi.pi_factor->name + "' as " +
+                                                     pi_reading(*with_pi.pi_factor, *as_pi) + ": no quantity π measures makes them agree")
+                         .with_code(code::E_DIMENSION_MISMATCH);
+      d.with_highlight(lhs.range).with_highlight(rhs.range);
+      d.with_hint(physics_hint(known, *as_pi));
+      report(std::move(d));
+      return false;
+    }
+    out.type.dim = known;
+    return true;
+  }
+  if (a && b && a->name == b->name && a->exponent == b->exponent && a->known.is_known() && b->known.is_known()) {
+    if (same_dimension(a->known, b->known)) {
+      out.pi_factor = a;
+      return true;
+    }
+    Diagnostic d = Diagnostic::error(op_range, std::string("cannot ") + (op == ast::BinaryOp::Add ? "add " : "subtract ") +
+                                                   "values of dimension " + reg.format(a->known.value) + " and " +
+                                                   reg.format(b->known.value) + ", each times the same power of '" + a->name +
+                                                   "': they differ whatever quantity π is")
+                       .with_code(code::E_DIMENSION_MISMATCH);
+    d.with_highlight(lhs.range).with_highlight(rhs.range);
+    // They differ by what π itself can be (Lambert's 1/π applied on one side only): say so.
+    const Checked<Dimension> ratio = divide(a->known.value, b->known.value);
+    const Checked<Dimension> inverse = ratio ? divide(Dimension{}, *ratio) : ratio;
+    if (ratio && inverse && (pi_can_measure(a->multiple, *ratio, reg) || pi_can_measure(a->multiple, *inverse, reg)))
+      d.with_hint("they differ by one factor of " + pi_text(a->multiple) + " (as " +
+                  reg.format(pi_can_measure(a->multiple, *ratio, reg) ? *ratio : *inverse) +
+                  "): a division by '" + a->name + "' on one side only, or a multiplication missing on the other?");
+    report(std::move(d));
+    return false;
+  }
+  return true;
 }
 
 std::optional<DimSlot> Checker::pi_factor_misfit(const Type& target, const Value& value) const {

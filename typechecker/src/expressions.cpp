@@ -361,7 +361,7 @@ Value Checker::assign(const ast::AssignExpr& e) {
     if (value.type.is_error()) return error_value(e.range);
     if (e.op == ast::AssignOp::Div)
       if (std::optional<Value> unit = divided_by_own_length(e.lhs, lhs, rhs, e.range)) value = *unit;
-    carry_pi_factor(kOps[static_cast<int>(e.op)], lhs, rhs, value);
+    if (!carry_pi_factor(kOps[static_cast<int>(e.op)], lhs, rhs, value, e.op_range)) return error_value(e.range);
   }
   note_write(e.lhs);
   divided_in_place(e);

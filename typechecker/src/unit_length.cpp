@@ -141,6 +141,7 @@ void Checker::note_write(const ast::Expr* target) {
     if (auto found = scope->find(id->name); found != scope->end()) {
       ++found->second.version;
       found->second.length_of.reset();
+      found->second.pi_constant.reset();
       return;
     }
 }
