@@ -5,11 +5,19 @@
 
 #include "scale_handles.hpp"
 #include "test_types.hpp"
+#include "triangles_handles.hpp"
 
 using namespace safegi;
 using namespace safegi::vk;
 using namespace safegi::vk::testing;
 namespace layout = shaders::scale::layout;
+
+// An array of structs checked field by field against the table's fields (the control, CASE 0: the
+// test's own Triangle, 48 bytes).
+using fields = shaders::triangles::layout::Triangles::triangles::fields;
+SAFEGI_VK_EXPECT_MEMBER(Triangle, a, fields::a);
+SAFEGI_VK_EXPECT_MEMBER(Triangle, c, fields::c);
+SAFEGI_VK_EXPECT_MEMBER(Triangle, material, fields::material);
 
 #if CASE == 1  // a push constant of another dimension
 void wrong_dimension(block_data& push, const shaders::scale::Handles& handles) {
@@ -42,6 +50,19 @@ struct ParamsHost {
 SAFEGI_VK_EXPECT_MEMBER(ParamsHost, weights, layout::Params::weights);
 #elif CASE == 6  // a hand-written binding that is not the shader's
 SAFEGI_VK_EXPECT_SLOT(layout::Params, 0, 2);
+#elif CASE == 8  // a triangle's corner in object space where the shader's are in world space
+struct TriangleHost {
+  world_point a;
+  float pad0;
+  point<spaces::object> b;
+};
+SAFEGI_VK_EXPECT_MEMBER(TriangleHost, b, fields::b);
+#elif CASE == 9  // the std430 padding forgotten: material at byte 36, not 44
+struct TriangleHost {
+  world_point a, b, c;
+  std::uint32_t material;
+};
+SAFEGI_VK_EXPECT_MEMBER(TriangleHost, material, fields::material);
 #elif CASE == 7  // a vec3 storage image: Vulkan has no such storage format
 image2d<glm::vec3>* wrong_image = nullptr;
 void touch() { (void)wrong_image->width(); }

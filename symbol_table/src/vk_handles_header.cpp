@@ -1,5 +1,6 @@
 // The Vulkan flavour of the generated handles header: typed handles for a
 // runtime_vk ComputePipeline, and the layout of every block as constants.
+#include <functional>
 #include <sstream>
 
 #include "safegi/symbol_table/error.hpp"
@@ -41,9 +42,38 @@ std::string generate_vk_handles_header(const SymbolTable& table, const HandlesHe
     } catch (const SymbolTableError& error) {
       skipped.push_back(std::string(error.what()).substr(0, std::string(error.what()).find(": error: ")) + ": " +
                         s.block + '.' + s.name + " (" + s.type.glsl_type +
-                        ": declare a safegi::vk::std430_struct and look it up yourself)");
+                        ": declare a safegi::vk::std430_struct, check its fields against layout::…::fields "
+                        "with SAFEGI_VK_EXPECT_MEMBER, and look it up yourself)");
       return {};
     }
+  };
+  // A member's struct in layout::, named as the member unless that is one of the names the struct
+  // holds (a member called `offset`: `struct offset_`, since a class cannot hold its own name).
+  const auto layout_name = [](const Symbol& s, bool typed) {
+    const bool taken = (s.name == "type" && typed) || s.name == "offset" || (s.name == "size" && s.size) ||
+                       (s.name == "stride" && s.array_stride) || (s.name == "count" && s.array_size) ||
+                       (s.name == "fields" && !s.fields.empty());
+    return taken ? s.name + '_' : s.name;
+  };
+  // A struct member's fields (an array of structs': its element's), each placed from the struct's
+  // start, for SAFEGI_VK_EXPECT_MEMBER on the host struct: layout::Block::member::fields::field.
+  const std::function<void(const Symbol&, const std::string&)> write_fields = [&](const Symbol& s, const std::string& indent) {
+    if (s.fields.empty()) return;
+    layout << indent << "struct fields {\n";
+    for (const Symbol& f : s.fields) {
+      if (!f.offset) continue;
+      const std::string type = f.fields.empty() ? spell(f) : std::string();
+      layout << indent << "  struct " << layout_name(f, !type.empty()) << " {\n";
+      if (!type.empty()) layout << indent << "    using type = " << type << ";\n";
+      layout << indent << "    static constexpr std::uint32_t offset = " << *f.offset;
+      if (f.size) layout << ", size = " << *f.size;
+      if (f.array_stride) layout << ", stride = " << *f.array_stride;
+      if (f.array_size) layout << ", count = " << *f.array_size;
+      layout << ";\n";
+      write_fields(f, indent + "    ");
+      layout << indent << "  };\n";
+    }
+    layout << indent << "};\n";
   };
   for (const Symbol& block : stage->symbols) {
     if (block.type.kind != Kind::block) {
@@ -68,13 +98,15 @@ std::string generate_vk_handles_header(const SymbolTable& table, const HandlesHe
       }
       const std::string type = spell(m);
       const bool array = m.array_size || m.unsized;
-      layout << "  struct " << m.name << " {\n";
+      layout << "  struct " << layout_name(m, !type.empty()) << " {\n";
       if (!type.empty()) layout << "    using type = " << type << ";\n";
       layout << "    static constexpr std::uint32_t offset = " << *m.offset;
       if (m.size) layout << ", size = " << *m.size;
       if (m.array_stride) layout << ", stride = " << *m.array_stride;
       if (m.array_size) layout << ", count = " << *m.array_size;
-      layout << ";\n  };\n";
+      layout << ";\n";
+      write_fields(m, "    ");
+      layout << "  };\n";
       if (type.empty()) continue;
       const std::string name = block.name + '.' + m.name;
       const std::string lookup = block.push_constant ? "push_constant"
