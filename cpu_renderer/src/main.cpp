@@ -20,13 +20,6 @@
 
 namespace {
 
-std::filesystem::path with_extension(std::filesystem::path output, const char* extension) {
-  std::string ext = output.extension().string();
-  if (ext == ".exr" || ext == ".png" || ext == ".pfm") output.replace_extension();
-  output += extension;
-  return output;
-}
-
 double cpu_seconds(const rusage& usage) {
   return usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec + usage.ru_stime.tv_usec * 1e-6;
 }
@@ -153,9 +146,9 @@ int main(int argc, char** argv) {
     double other_ranks_cpu_seconds = session.sum_over_ranks(session.is_root() ? 0.0 : cpu_seconds(resource_usage()));
     if (!session.is_root()) return 0;
     doing = "writing the image";
-    write_exr(with_extension(output, ".exr"), image);
-    write_png(with_extension(output, ".png"), image);
-    if (pfm) write_pfm(with_extension(output, ".pfm"), image);
+    write_exr(with_image_extension(output, ".exr"), image);
+    write_png(with_image_extension(output, ".png"), image);
+    if (pfm) write_pfm(with_image_extension(output, ".pfm"), image);
 
     rusage usage = resource_usage();
     double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.total_rays()) / stats.seconds : 0.0;

@@ -14,17 +14,6 @@
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene_loader.hpp"
 
-namespace {
-
-std::filesystem::path with_extension(std::filesystem::path output, const char* extension) {
-  std::string ext = output.extension().string();
-  if (ext == ".exr" || ext == ".png" || ext == ".pfm") output.replace_extension();
-  output += extension;
-  return output;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace safegi::render;
   CLI::App app{"SafeGI GPU path tracer: renders a scene file (docs/scene-format.md) to EXR and PNG on a Vulkan "
@@ -70,9 +59,9 @@ int main(int argc, char** argv) {
     safegi::gpu::GpuRenderStats stats;
     Image image = safegi::gpu::render_on_gpu(scene, options, stats);
     for (const std::string& line : stats.unsupported) std::fprintf(stderr, "warning: not on the GPU: %s\n", line.c_str());
-    write_exr(with_extension(output, ".exr"), image);
-    write_png(with_extension(output, ".png"), image);
-    if (pfm) write_pfm(with_extension(output, ".pfm"), image);
+    write_exr(with_image_extension(output, ".exr"), image);
+    write_png(with_image_extension(output, ".png"), image);
+    if (pfm) write_pfm(with_image_extension(output, ".pfm"), image);
     const double rays_per_second = stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds : 0.0;
     if (!quiet)
       std::fprintf(stderr, "%dx%d, %d spp in %.2f s on %s: %.2f M rays (%.2f M rays/s)\n", stats.width, stats.height,

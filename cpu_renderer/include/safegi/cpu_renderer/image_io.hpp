@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include "safegi/cpu_renderer/image.hpp"
@@ -24,6 +25,15 @@ void write_png(const std::filesystem::path& file, const Image& image, std::strin
 // formats scaled to [0, 1] (still encoded: sRGB decoding is the caller's). The
 // ImageFileReader the programs give the scene loader.
 Image read_image(const std::filesystem::path& file);
+
+// The programs' `-o render.exr` (or `render`, `render.png`, `render.pfm`) with `extension` in place
+// of an image extension of theirs: each output file of one render.
+inline std::filesystem::path with_image_extension(std::filesystem::path output, const char* extension) {
+  const std::string ext = output.extension().string();
+  if (ext == ".exr" || ext == ".png" || ext == ".pfm") output.replace_extension();
+  output += extension;
+  return output;
+}
 
 // The sRGB transfer function of a linear value, clamped to [0, 1].
 float linear_to_srgb(float linear);
