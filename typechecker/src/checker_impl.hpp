@@ -80,6 +80,7 @@ struct Value {
   std::optional<PiFactor> pi_factor;  // of unknown dimension only through an unannotated π constant
   std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
   bool unit_w = false;  // the w of a vec4(p, 1.0) carried by affine maps: exactly 1
+  bool homogeneous_w = false;  // the w of an hpoint (`h.w`), which its coordinates are divided by
 };
 
 struct Variable {

@@ -601,6 +601,7 @@ Value Checker::member(const ast::MemberExpr& e) {
       for (std::size_t j = i + 1; j < s.size(); ++j) repeated = repeated || s[i] == s[j];
     const bool identity = static_cast<int>(s.size()) == t.rows && s == std::string(kSets[set]).substr(0, s.size());
     out.unit_w = false;
+    out.homogeneous_w = t.geometry == Geometry::hpoint && t.rows == 4 && (s == "w" || s == "a" || s == "q");
     if (std::optional<Type> part = affine_part(t, s)) {
       out.type = *part;
     } else if (!identity) {

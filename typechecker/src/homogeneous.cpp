@@ -5,6 +5,8 @@
 // reads w = 1 as a point and w = 0 as a vector, direction or normal, so a
 // normal taken through the model matrix, or given w = 1, is told as such.
 
+#include <algorithm>
+
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -288,6 +290,12 @@ std::string member_of_variable(const ast::Expr* e, std::string_view member) {
 }  // namespace
 
 bool Checker::homogeneous_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args) {
+  // `project(h.xy, h.w)`: a w handed over beside its coordinates lets the function divide.
+  const auto w_given = [&](const Type& coordinates) {
+    return std::any_of(args.begin(), args.end(), [&](const Value& v) {
+      return v.homogeneous_w && v.type.weight == coordinates.weight && consistent(v.type.from, coordinates.from);
+    });
+  };
   for (std::size_t i = 0; i < args.size() && i < params.size(); ++i) {
     const Type& a = args[i].type;
     const std::string argument = "argument " + std::to_string(i + 1) + " of '" + callee + "'";
@@ -302,7 +310,7 @@ bool Checker::homogeneous_parameters(const std::string& callee, const std::vecto
       return false;
     }
     if (params[i].geometry != Geometry::hpoint && a.geometry == Geometry::hpoint && a.shape == Shape::vector && a.rows < 4 &&
-        a.weight != 0 && !a.is_array()) {
+        a.weight != 0 && !a.is_array() && !w_given(a)) {
       Diagnostic d = Diagnostic::error(args[i].range, argument + " has type " + name_of(a) +
                                                           ": the parameter takes these coordinates of the homogeneous point but not the w they are divided by")
                          .with_code(code::E_KIND_MISMATCH);
