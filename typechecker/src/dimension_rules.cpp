@@ -166,6 +166,12 @@ std::string pi_text(double multiple) {
   return den == 1 ? text : text + "/" + std::to_string(den);
 }
 
+// X of `known · X^exponent` = `whole`: the quantity π is when the product is `whole`.
+Checked<Dimension> pi_quantity(const PiFactor& pi, const Dimension& whole) {
+  const Checked<Dimension> x = divide(whole, pi.known.value);
+  return x && pi.exponent < 0 ? divide(Dimension{}, *x) : x;
+}
+
 std::optional<Dimension> projected_solid_angle(const DimensionRegistry& registry) {
   const std::optional<Dimension> sr = registry.find_dimension("solid_angle"), proj = registry.find_dimension("proj");
   if (!sr || !proj) return std::nullopt;
@@ -278,8 +284,7 @@ std::optional<DimSlot> Checker::pi_factor_misfit(const Type& target, const Value
   const DimSlot want = value_dimension(target, reg);
   if (!want.is_known() || value_dimension(value.type, reg).state != DimSlot::State::unknown) return std::nullopt;
   const PiFactor& pi = *value.pi_factor;
-  Checked<Dimension> x = divide(want.value, pi.known.value);
-  if (x && pi.exponent < 0) x = divide(Dimension{}, *x);
+  const Checked<Dimension> x = pi_quantity(pi, want.value);
   if (!x || pi_can_measure(pi.multiple, *x, reg)) return std::nullopt;
   // A radiometric target (steradians or proj in it) reads π as a lobe's or a pdf's projected
   // steradians where kπ can be that; any other, as the plain number (4πr² for an area).
@@ -300,8 +305,7 @@ std::optional<DimSlot> Checker::pi_factor_misfit(const Type& target, const Value
 std::string Checker::pi_reading(const PiFactor& pi, const DimSlot& as) const {
   const std::string k = pi_text(pi.multiple);
   const std::optional<Dimension> psa = projected_solid_angle(result_.registry);
-  Checked<Dimension> x = divide(as.value, pi.known.value);
-  if (x && pi.exponent < 0) x = divide(Dimension{}, *x);
+  const Checked<Dimension> x = pi_quantity(pi, as.value);
   if (x && psa && *x == *psa) return k + " projected steradians (the cosine-weighted hemisphere)";
   return "the plain number " + k;
 }

@@ -404,10 +404,14 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
     report(std::move(d));
     return false;
   };
-  const std::string sentence =
-      std::string(action) == "return"
-          ? "cannot return a value of type " + name_of(v) + " from '" + target_name + "', which returns " + name_of(target)
-          : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(v);
+  // "cannot initialize 'x' of type T with a value of type V" (V as `found` has it).
+  const auto sentence_for = [&](const Type& found) {
+    return std::string(action) == "return"
+               ? "cannot return a value of type " + name_of(found) + " from '" + target_name + "', which returns " + name_of(target)
+               : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " +
+                     name_of(found);
+  };
+  const std::string sentence = sentence_for(v);
   const std::string kind_hint = kind_mismatch_hint(target.geometry, v.geometry);
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
@@ -435,10 +439,7 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, value)) {
     Type shown = v;
     shown.dim = *as_pi;
-    const std::string taken = std::string(action) == "return"
-        ? "cannot return a value of type " + name_of(shown) + " from '" + target_name + "', which returns " + name_of(target)
-        : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " + name_of(shown);
-    return fail(taken + ", taking '" + value.pi_factor->name + "' as " + pi_reading(*value.pi_factor, *as_pi) +
+    return fail(sentence_for(shown) + ", taking '" + value.pi_factor->name + "' as " + pi_reading(*value.pi_factor, *as_pi) +
                     ": no quantity π measures makes it " + name_of(target),
                 physics_hint(target.dim, *as_pi, value.range), code::E_DIMENSION_MISMATCH);
   }
