@@ -249,6 +249,21 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
 
   std::optional<Type> result = unify_call(name, shape, args, call_range);
   if (!result) return error_value(call_range);
+  // normalize() of an unannotated vector is of unit length, but whether it is a normal (whose
+  // cosines are projected) is as unknown as the vector was: it stays `?`.
+  // A vec4(v, 0.0) of a vector keeps w = 0, so its normalization is vec4(normalize(v), 0.0).
+  if (name == "normalize" && result->geometry == Geometry::none && args[0].type.dim.state == DimSlot::State::unknown) {
+    result->dim = DimSlot::unknown();
+    const Type& arg = args[0].type;
+    if (arg.affine && arg.affine_w == 0 && vectorish(arg.affine->geometry)) {
+      Type unit = *arg.affine;
+      if (unit.geometry == Geometry::vector) unit.geometry = Geometry::direction;
+      unit.dim = DimSlot::known(Dimension{});
+      unit.length_loss = Type::LengthLoss::none;
+      result->affine = std::make_shared<const Type>(std::move(unit));
+      result->affine_w = 0;
+    }
+  }
   std::optional<Orientation> orientation = builtin_orientation(name, args, call_range);
   if (!orientation) return error_value(call_range);
   if (result->geometry == Geometry::vector || result->geometry == Geometry::direction || result->geometry == Geometry::normal ||

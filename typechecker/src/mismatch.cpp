@@ -305,7 +305,7 @@ std::string Checker::operand_hint(const DimSlot& left, const DimSlot& right, Sou
 // Why a value of one geometric kind does not fit where another is expected.
 std::string Checker::kind_mismatch_hint(Geometry expected, Geometry found) const {
   if (expected == Geometry::direction && found == Geometry::vector) return "a vector becomes a direction only through normalize()";
-  if (expected == Geometry::vector && found == Geometry::direction) return "scale it by a length to get a vector";
+  if (expected == Geometry::vector && found == Geometry::direction) return "a direction has unit length (normalize() drops the length): scale it by a length to get a vector";
   if (expected == Geometry::vector && found == Geometry::normal)
     return "a normal is not a vector: it transforms by the inverse transpose; convert explicitly with vector<S>(n) if you mean it";
   if (expected == Geometry::normal && found == Geometry::vector)
