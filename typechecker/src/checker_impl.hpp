@@ -352,6 +352,7 @@ class Checker {
   // How `x in …` names the unit of `d`: `centimeter`, `(meter^2)`.
   std::string conversion_target(const Dimension& d) const;
   std::string space_hint(const SpaceSlot& expected, const SpaceSlot& found) const;
+  std::string normal_matrix_for_direction_hint(const Value& map, const std::string& kind) const;
   std::string kind_mismatch_hint(Geometry expected, Geometry found) const;
   // Why `left * right` does not compose when their spaces do not meet: wrong order, an inverse, or the space needed.
   std::string compose_hint(const Type& left, const Type& right) const;

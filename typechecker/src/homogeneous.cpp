@@ -109,6 +109,16 @@ std::optional<Value> Checker::map_matrix_call(const std::string& name, const std
   return out;
 }
 
+// A normal matrix applied to a direction: the map itself carries it; a declared 3×3 normal
+// matrix of a rotation is the rotation, which its declaration can say.
+std::string Checker::normal_matrix_for_direction_hint(const Value& map, const std::string& kind) const {
+  const std::string itself = "apply the map itself to a " + kind;
+  const Type& m = map.type;
+  if (map.name.empty() || m.rows != 3 || !m.from.is_known() || !m.to.is_known()) return itself;
+  return itself + "; if '" + map.name + "' is a rotation, its normal matrix is itself: declare it mat3<" + name_of_space(m.from) +
+         ", " + name_of_space(m.to) + ", rigid> " + map.name;
+}
+
 // m * v and v * m with a 4×4 map and a vec4, or a 3×3 map and a vec3; nothing when the
 // operands are no such pair (the built-in table's map operations then apply).
 std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range) {
@@ -195,7 +205,7 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   }
   if (carries_normals && !rigid && !normal)
     return reject(cannot + ": the inverse transpose carries normals, not a " + kind,
-                  row ? row_hint : "apply the map itself to a " + kind, code::E_KIND_MISMATCH);
+                  row ? row_hint : normal_matrix_for_direction_hint(map, kind), code::E_KIND_MISMATCH);
   if (normal && !carries_normals && !rigid) {
     const std::string zero = operand_text(v, frame ? "n" : "vec4(n, 0.0)");
     return reject(cannot + ": a normal transforms by the inverse transpose of the map, and this map may scale or shear",
