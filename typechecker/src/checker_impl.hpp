@@ -97,6 +97,9 @@ struct Variable {
   bool zero_start = false;            // an unannotated local that starts at zero: its first value names its type
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
+  // A float initialised with dot(a, b): a and b as written, until it is written (a written-out reflection
+  // 2 n (n·w) - w may name its cosine).
+  std::optional<std::pair<std::string, std::string>> dot_of;
   unsigned version = 0;               // how often it may have been written so far (LengthOf::version)
   // An unannotated const float initialised with kπ or 1/(kπ), or an unannotated local initialised with
   // a product with one (until it is written).
@@ -234,6 +237,7 @@ class Checker {
   std::optional<Dimension> frame_cosine(const Type& t) const;
   bool negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   bool written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range);
+  std::string dot_partner(const ast::Expr* product, const std::string& w_text) const;
   void radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const;
   std::optional<Value> pi_multiple_as_angle(const Type& target, const Value& value) const;
   // `known · X^e` of a product or quotient with an unannotated π constant (PiFactor).

@@ -1,5 +1,6 @@
 // Scopes, declarations, functions and statements.
 
+#include <safegi/parser/printer.hpp>
 #include <cstring>
 
 #include "checker_impl.hpp"
@@ -341,7 +342,12 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
     } else if (decl.initializer) {
       Value init = expr(decl.initializer);
       pi_multiple = init.pi_multiple;
-      if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) v.length_of = init.length_of;
+      if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) {
+        v.length_of = init.length_of;
+        if (const auto* dot = ast::dyn_cast<ast::CallExpr>(ast::without_parens(decl.initializer));
+            dot && dot->callee == "dot" && dot->args.size() == 2)
+          v.dot_of = std::pair{print_expression(*dot->args[0]), print_expression(*dot->args[1])};
+      }
       if (is_const && init.literal && init.number && !declared.is_annotated() && declared.shape == Shape::scalar &&
           declared.is_floating() && !declared.is_array())
         v.pi_constant = pi_constant(decl.name, *init.number);

@@ -11,10 +11,7 @@
 namespace safegi::detail {
 namespace {
 
-const ast::Expr* without_parens(const ast::Expr* e) {
-  while (const auto* paren = ast::dyn_cast<ast::ParenExpr>(e)) e = paren->inner;
-  return e;
-}
+using ast::without_parens;
 
 // `x` as an operand of unary minus: names, members, indices and calls need no parentheses.
 std::string negated(const ast::Expr* e) {
@@ -139,36 +136,53 @@ std::optional<Orientation> Checker::builtin_orientation(const std::string& name,
   return Orientation::none;
 }
 
-// The reflection written out, 2 n (n·w) - w, mirrors w about n only for a w that points away
-// from the surface (pbrt's wo); an incident direction (toward it) comes out pointing into the
-// surface: that one is reflect(w, n).
-bool Checker::written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range) {
-  if (rhs.type.orientation != Orientation::toward || !vectorish(rhs.type.geometry) || !vectorish(lhs.type.geometry)) return true;
-  const ast::Expr* minuend = without_parens(expression_at(lhs.range));
-  const ast::Expr* w = without_parens(expression_at(rhs.range));
-  if (minuend == nullptr || w == nullptr) return true;
-  const std::string w_text = print_expression(*w);
-  // A dot(n, w) or dot(w, n) among the factors of the minuend; n is its other argument.
-  std::string n_text;
-  std::vector<const ast::Expr*> factors{minuend};
-  while (!factors.empty() && n_text.empty()) {
+// The other argument of a dot(n, w) or dot(w, n) among the factors of `product` — the call, or a
+// local it initialised (`float ndotl = dot(n, w);`) — where w is written `w_text`; empty when none.
+std::string Checker::dot_partner(const ast::Expr* product, const std::string& w_text) const {
+  auto partner = [&](const std::string& a, const std::string& b) { return a == w_text ? b : b == w_text ? a : std::string(); };
+  std::vector<const ast::Expr*> factors{product};
+  while (!factors.empty()) {
     const ast::Expr* f = without_parens(factors.back());
     factors.pop_back();
+    std::string n;
     if (const auto* b = ast::dyn_cast<ast::BinaryExpr>(f); b && b->op == ast::BinaryOp::Mul) {
       factors.push_back(b->lhs);
       factors.push_back(b->rhs);
     } else if (const auto* dot = ast::dyn_cast<ast::CallExpr>(f); dot && dot->callee == "dot" && dot->args.size() == 2) {
-      const std::string a = print_expression(*dot->args[0]), b = print_expression(*dot->args[1]);
-      if (a == w_text || b == w_text) n_text = a == w_text ? b : a;
+      n = partner(print_expression(*dot->args[0]), print_expression(*dot->args[1]));
+    } else if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(f)) {
+      const Variable* cosine = lookup(id->name);
+      if (cosine && cosine->dot_of) n = partner(cosine->dot_of->first, cosine->dot_of->second);
     }
+    if (!n.empty()) return n;
   }
+  return {};
+}
+
+// The reflection written out mirrors w about n in one orientation only: 2 n (n·w) - w for a w
+// that points away from the surface (pbrt's wo), and w - 2 n (n·w) — GLSL's reflect(w, n) —
+// for an incident w, toward it. The other orientation comes out pointing into the surface.
+bool Checker::written_reflection_ok(const Value& lhs, const Value& rhs, SourceRange op_range) {
+  if (!vectorish(rhs.type.geometry) || !vectorish(lhs.type.geometry)) return true;
+  const bool mirrored_away = rhs.type.orientation == Orientation::toward;  // 2 n (n·w) - w
+  const bool mirrored_incident = lhs.type.orientation == Orientation::away;  // w - 2 n (n·w)
+  if (!mirrored_away && !mirrored_incident) return true;
+  const Value& w_value = mirrored_away ? rhs : lhs;
+  const ast::Expr* product = without_parens(expression_at((mirrored_away ? lhs : rhs).range));
+  const ast::Expr* w = without_parens(expression_at(w_value.range));
+  if (product == nullptr || w == nullptr) return true;
+  const std::string w_text = print_expression(*w);
+  const std::string n_text = dot_partner(product, w_text);
   if (n_text.empty()) return true;
-  Diagnostic d = Diagnostic::error(rhs.range, "2 n (n·w) - w mirrors w about n only when w points away from the surface, and '" +
-                                                  w_text + "' points toward it: the result points into the surface")
-                     .with_code(code::E_ORIENTATION)
-                     .with_highlight(op_range);
-  add_origin_note(d, rhs);
-  d.with_hint("the reflection of an incident direction is reflect(" + w_text + ", " + n_text + ")");
+  const std::string message =
+      mirrored_away ? "2 n (n·w) - w mirrors w about n only when w points away from the surface, and '" + w_text +
+                          "' points toward it: the result points into the surface"
+                    : "w - 2 n (n·w) is reflect(w, n), which mirrors an incident w (toward the surface), and '" + w_text +
+                          "' points away from it: the result points into the surface";
+  Diagnostic d = Diagnostic::error(w_value.range, message).with_code(code::E_ORIENTATION).with_highlight(op_range);
+  add_origin_note(d, w_value);
+  d.with_hint(mirrored_away ? "the reflection of an incident direction is reflect(" + w_text + ", " + n_text + ")"
+                            : "the mirror image of a direction that points away is reflect(-" + w_text + ", " + n_text + ")");
   report(std::move(d));
   return false;
 }

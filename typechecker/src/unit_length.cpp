@@ -92,10 +92,7 @@ std::optional<Dimension> Checker::frame_cosine(const Type& t) const {
 
 namespace {
 
-const ast::Expr* without_parens(const ast::Expr* e) {
-  while (const auto* p = e ? ast::dyn_cast<ast::ParenExpr>(e) : nullptr) e = p->inner;
-  return e;
-}
+using ast::without_parens;
 
 // The variable an assignment, ++/-- or out argument writes: `L` of `L`, `L.x`, `L[i]`.
 const ast::IdentifierExpr* written_variable(const ast::Expr* e) {
@@ -141,6 +138,7 @@ void Checker::note_write(const ast::Expr* target) {
     if (auto found = scope->find(id->name); found != scope->end()) {
       ++found->second.version;
       found->second.length_of.reset();
+      found->second.dot_of.reset();
       found->second.pi_constant.reset();
       return;
     }

@@ -224,6 +224,12 @@ struct ParenExpr : Expr {
   Expr* inner = nullptr;
 };
 
+// The expression inside any parentheses around it.
+inline const Expr* without_parens(const Expr* e) {
+  while (e != nullptr && e->kind == NodeKind::ParenExpr) e = static_cast<const ParenExpr*>(e)->inner;
+  return e;
+}
+
 struct DimExpr;
 
 // `p in world`, `d in centimeter`, `v in (kilometer / hour)` (docs/language.md,
