@@ -315,6 +315,24 @@ Value Checker::builtin_call(const ast::CallExpr* node, const std::string& name, 
   return out;
 }
 
+// -p of a point of a space whose origin is not the eye.
+void Checker::negated_point(const Value& p, SourceRange range) {
+  const std::string space = name_of_space(p.type.from);
+  const std::string q = p.name.empty() ? "p" : written_name(p);
+  Diagnostic d = Diagnostic::error(range, "cannot negate " + name_of(p.type) + (p.name.empty() ? "" : " '" + q + "'") +
+                                              ": -p is the vector from p to " + space +
+                                              "'s origin, which depends on where that origin is")
+                     .with_code(code::E_POINT_ARITHMETIC);
+  add_origin_note(d, p);
+  // A camera's space by its name: its origin is likely the eye, which the declaration can say.
+  const bool camera_like = space.find("view") != std::string::npos || space.find("eye") != std::string::npos ||
+                           space.find("cam") != std::string::npos;
+  d.with_hint("the vector from " + q + " to another point e is e - " + q + "; " +
+              (camera_like ? "if " + space + "'s origin is the eye, declare it so: space " + space + " : eye;"
+                           : "if " + q + " is measured from " + space + "'s origin, say so: -vector<" + space + ">(" + q + ")"));
+  report(std::move(d));
+}
+
 void Checker::point_given_for_vector(const std::string& name, const Signature& sig, const std::vector<Value>& args) {
   std::size_t i = 0;
   while (i + 1 < args.size() && sig.params[i].type.geometry != Geometry::point) ++i;

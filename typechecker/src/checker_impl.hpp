@@ -266,6 +266,7 @@ class Checker {
                                  SourceRange call_range);
   // A point passed to a vector operation (normalize, length, dot, ...): the one error, physics-aware.
   void point_given_for_vector(const std::string& name, const Signature& sig, const std::vector<Value>& args);
+  void negated_point(const Value& p, SourceRange range);
   // Operators on maps and geometric values routed through the built-in table (transform, compose).
   std::optional<Value> geometric_operator(const ast::Node* node, const std::string& builtin, const Value& lhs,
                                           const Value& rhs, SourceRange range);

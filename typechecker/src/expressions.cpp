@@ -184,7 +184,12 @@ Value Checker::unary(const ast::UnaryExpr& e) {
       if (!t.is_numeric() || t.is_array()) break;
       if (t.geometry == Geometry::point) {
         if (e.op == ast::UnaryOp::Plus) return out;
-        // -p is origin - p: the vector from p to its space's origin (the eye, in view space).
+        // -p is origin - p: the vector from p to its space's origin, the eye in a space declared
+        // `: eye`; elsewhere it depends on where the origin is (as normalize(p) and length(p) do).
+        if (t.from.is_known() && !result_.registry.is_eye_space(t.from.id)) {
+          negated_point(v, e.range);
+          return error_value(e.range);
+        }
         out.type.geometry = Geometry::vector;
         out.type.orientation = t.orientation == Orientation::shaded ? Orientation::away : Orientation::none;
         out.constant.reset();

@@ -4,7 +4,7 @@
 // front and back horizon angles (arc cosines, radians) are shifted by the
 // slice normal's angle and mapped to [0, 1] to pick the sectors they cover;
 // the normal's angle is already divided by pi, so the horizons must be too.
-space view;
+space view : eye;
 
 const float PI = 3.14159265358979;
 const float HALF_PI = 1.5707963267949;
