@@ -56,9 +56,17 @@ DimSlot Checker::projected_component(const DimSlot& scale) const {
 // is an angle in radians for sin, cos and tan: writing the unit would restate the π. A plain
 // number without one (sin(0.5), sin(angleInDegrees)) still asks: radians or degrees?
 void Checker::radians_of_pi_multiple(const std::string& name, std::vector<Value>& args) const {
-  if ((name != "sin" && name != "cos" && name != "tan") || args.size() != 1 || !args[0].pi_multiple) return;
-  const DimSlot d = value_dimension(args[0].type, result_.registry);
+  if ((name != "sin" && name != "cos" && name != "tan") || args.size() != 1) return;
   const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  // A plain number times a π constant is radians; divided by one (1.0 / PI), it is no angle.
+  if (const std::optional<PiFactor>& pi = args[0].pi_factor;
+      pi && pi->known.is_known() && pi->known.value.is_dimensionless() && angle &&
+      value_dimension(args[0].type, result_.registry).state == DimSlot::State::unknown) {
+    args[0].type.dim = DimSlot::known(pi->exponent == 1 ? *angle : Dimension{});
+    return;
+  }
+  if (!args[0].pi_multiple) return;
+  const DimSlot d = value_dimension(args[0].type, result_.registry);
   if (d.is_known() && d.value.is_dimensionless() && angle) args[0].type.dim = DimSlot::known(*angle);
 }
 
@@ -97,7 +105,7 @@ std::optional<DimSlot> Checker::conversion_written_out(const Value& a, const Dim
 
 bool is_pi_multiple(double value) {
   const double quarters = value / 3.141592653589793 * 4.0;
-  return value != 0.0 && std::fabs(quarters) <= 64.0 && std::fabs(quarters - std::round(quarters)) < 1e-4;
+  return value != 0.0 && std::round(quarters) != 0.0 && std::fabs(quarters) <= 64.0 && std::fabs(quarters - std::round(quarters)) < 1e-4;
 }
 
 // radians(x) of an angle in degrees is the angle (in radians); degrees(x) of
@@ -187,7 +195,9 @@ std::optional<Dimension> projected_solid_angle(const DimensionRegistry& registry
 bool pi_can_measure(double multiple, const Dimension& x, const DimensionRegistry& registry) {
   if (x.is_dimensionless()) return true;
   const Checked<Dimension> reference = registry.reference(x);
-  const Dimension& q = reference ? *reference : x;
+  // kπ is radians, steradians …: a quantity measured in another unit (degrees) is no multiple of π.
+  if (reference && !(*reference == x)) return false;
+  const Dimension& q = x;
   const auto one_of = [&](std::initializer_list<double> ks) {
     return std::any_of(ks.begin(), ks.end(), [&](double k) { return std::fabs(std::fabs(multiple) - k) < 1e-6; });
   };
@@ -229,6 +239,14 @@ bool Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& r
     if (!known || !known->is_known()) return true;
     if (!a && op == ast::BinaryOp::Div) pi.exponent = -pi.exponent;
     pi.known = *known;
+    // A literal factor is part of the multiple: 4.0 * PI is 4π, 1.0 / (2.0 * PI) is 1/(2π), PI / 2.0 is π/2.
+    const Value& factor = a ? rhs : lhs;
+    if (factor.literal && factor.number && *factor.number != 0.0 && !factor.pi_factor) {
+      const bool divides_pi = a && op == ast::BinaryOp::Div;  // PI / c
+      const double c = divides_pi ? 1.0 / *factor.number : *factor.number;
+      // c · (kπ)^e: k·c for e = 1, k/c for e = −1.
+      pi.multiple = pi.exponent > 0 ? pi.multiple * c : pi.multiple / c;
+    }
     out.pi_factor = pi;
     return true;
   }
@@ -288,15 +306,39 @@ std::optional<DimSlot> Checker::pi_factor_misfit(const Type& target, const Value
   if (!x || pi_can_measure(pi.multiple, *x, reg)) return std::nullopt;
   // A radiometric target (steradians or proj in it) reads π as a lobe's or a pdf's projected
   // steradians where kπ can be that; any other, as the plain number (4πr² for an area).
-  Dimension as{};
+  const auto reading = [&](const Dimension& as) -> std::optional<Dimension> {
+    Checked<Dimension> power = as;
+    if (pi.exponent < 0) power = divide(Dimension{}, as);
+    Checked<Dimension> found = power ? multiply(pi.known.value, *power) : power;
+    return found ? std::optional<Dimension>(*found) : std::nullopt;
+  };
+  // A reading that makes the value the inverse of the target says the likeliest mistake: a measure
+  // (4π sr, the sphere) where its density (1/(4π) per steradian) belongs, or the other way.
+  const std::optional<Dimension> sr = reg.find_dimension("solid_angle");
   const std::optional<Dimension> psa = projected_solid_angle(reg);
-  bool radiometric = false;
-  for (const Factor& f : want.value.factors())
+  for (const std::optional<Dimension>& as : {sr, psa}) {
+    if (!as || !pi_can_measure(pi.multiple, *as, reg)) continue;
+    const std::optional<Dimension> found = reading(*as);
+    if (!found || found->is_dimensionless()) continue;
+    const Checked<Dimension> product = multiply(*found, want.value);
+    if (product && product->is_dimensionless()) return DimSlot::known(*found);
+  }
+  // A target per steradian without proj (an intensity, a phase function) reads π as steradians,
+  // though no solid angle is that multiple of it; another radiometric target (steradians or proj in
+  // it) reads π as a lobe's or a pdf's projected steradians where kπ can be that; any other, as the
+  // plain number (4πr² for an area).
+  bool radiometric = false, projected = false, per_steradian = false;
+  for (const Factor& f : want.value.factors()) {
     if (psa && psa->exponent(f.base) != 0) radiometric = true;
-  if (radiometric && pi_can_measure(pi.multiple, *psa, reg)) as = *psa;
-  Checked<Dimension> power = as;
-  if (pi.exponent < 0) power = divide(Dimension{}, as);
-  Checked<Dimension> found = power ? multiply(pi.known.value, *power) : power;
+    if (sr && sr->exponent(f.base) != 0) per_steradian = true;
+    else if (psa && psa->exponent(f.base) != 0) projected = true;
+  }
+  Dimension as{};
+  // A bare density per steradian (a pdf) keeps the projected reading: cos θ / π without its cosine.
+  const Checked<Dimension> per_sr = sr ? divide(Dimension{}, *sr) : Checked<Dimension>(Dimension{});
+  if (per_steradian && !projected && sr && !(per_sr && want.value == *per_sr)) as = *sr;
+  else if (radiometric && pi_can_measure(pi.multiple, *psa, reg)) as = *psa;
+  const std::optional<Dimension> found = reading(as);
   if (!found) return std::nullopt;
   return DimSlot::known(*found);
 }
@@ -306,7 +348,13 @@ std::string Checker::pi_reading(const PiFactor& pi, const DimSlot& as) const {
   const std::string k = pi_text(pi.multiple);
   const std::optional<Dimension> psa = projected_solid_angle(result_.registry);
   const Checked<Dimension> x = pi_quantity(pi, as.value);
-  if (x && psa && *x == *psa) return k + " projected steradians (the cosine-weighted hemisphere)";
+  if (x && psa && *x == *psa)
+    return k + " projected steradians" + (std::fabs(std::fabs(pi.multiple) - 1) < 1e-6 ? " (the cosine-weighted hemisphere)" : "");
+  const std::optional<Dimension> sr = result_.registry.find_dimension("solid_angle");
+  if (x && sr && *x == *sr) {
+    const double m = std::fabs(pi.multiple);
+    return k + " steradians" + (std::fabs(m - 4) < 1e-6 ? " (the sphere)" : std::fabs(m - 2) < 1e-6 ? " (the hemisphere)" : "");
+  }
   return "the plain number " + k;
 }
 

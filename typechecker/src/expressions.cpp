@@ -155,6 +155,13 @@ Value Checker::literal(const ast::LiteralExpr& e) {
       v.type = Type::scalar_of(float_literal_scalar(e.spelling));
       v.number = std::strtod(e.spelling.c_str(), nullptr);
       v.pi_multiple = is_pi_multiple(*v.number);
+      // A literal kπ or 1/(kπ) (`#define M_PI 3.14159265359` expanded) is a π constant: which
+      // quantity it is depends on its use, as for `const float PI` (docs/language.md, "Gradual typing").
+      v.pi_factor = pi_constant(e.spelling, *v.number);
+      if (v.pi_factor) {
+        v.type.dim = DimSlot::unknown();
+        return v;
+      }
       break;
     case ast::LiteralKind::Double: v.type = Type::scalar_of(Scalar::double_); v.number = std::strtod(e.spelling.c_str(), nullptr); break;
     case ast::LiteralKind::Bool:
@@ -444,8 +451,12 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, value)) {
     Type shown = v;
     shown.dim = *as_pi;
-    return fail(sentence_for(shown) + ", taking '" + value.pi_factor->name + "' as " + pi_reading(*value.pi_factor, *as_pi) +
-                    ": no quantity π measures makes it " + name_of(target),
+    const std::string taking = ", taking '" + value.pi_factor->name + "' as " + pi_reading(*value.pi_factor, *as_pi);
+    if (same_dimension(*as_pi, target.dim))  // steradians, but not 2π or 4π of them
+      return fail(sentence_for(shown) + taking + ", which is no hemisphere (2π) or sphere (4π)",
+                  "over the sphere the solid angle is 4π sr, over the hemisphere 2π sr: a missing factor of 2 or 4?",
+                  code::E_DIMENSION_MISMATCH);
+    return fail(sentence_for(shown) + taking + ": no quantity π measures makes it " + name_of(target),
                 physics_hint(target.dim, *as_pi, value.range), code::E_DIMENSION_MISMATCH);
   }
   if (v.length_loss != Type::LengthLoss::none && target.length_loss == Type::LengthLoss::none &&
@@ -500,6 +511,9 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   if (implicitly_converts(ta.scalar, tb.scalar) && ta.scalar != tb.scalar) out.type.scalar = tb.scalar;
   if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
   if (ta.orientation != tb.orientation) out.type.orientation = Orientation::none;  // `front ? wo : -wo`
+  // `c ? angleInDegrees : PI / 4.0`: the branch with a π constant is checked where the value is stored.
+  if (da.state == DimSlot::State::unknown && db.state != DimSlot::State::unknown && a.pi_factor) out.pi_factor = a.pi_factor;
+  if (db.state == DimSlot::State::unknown && da.state != DimSlot::State::unknown && b.pi_factor) out.pi_factor = b.pi_factor;
   out.zero = a.zero && b.zero;
   return out;
 }

@@ -1,6 +1,7 @@
 // Physics-aware hints for dimension and space mismatches, and the notes that
 // say where an operand's annotation came from.
 
+#include <safegi/parser/printer.hpp>
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -86,6 +87,14 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
   Checked<Dimension> ratio = divide(found.value, expected.value);  // what the value has too much of
   if (!ratio) return {};
   const Dimension& r = *ratio;
+  // The value is the inverse of what is expected: a measure for its density (4π sr for 1/(4π) per
+  // steradian), a pdf for its reciprocal.
+  if (const Checked<Dimension> product = multiply(found.value, expected.value);
+      product && product->is_dimensionless() && !found.value.is_dimensionless()) {
+    const ast::Expr* e = expression_at(found_range);
+    return "the value is the inverse of " + reg.format(expected.value) + ": inverted?" +
+           (e ? " 1.0 / (" + print_expression(*e) + ")" : std::string());
+  }
   auto make = [&](std::initializer_list<std::pair<const char*, int>> factors) -> std::optional<Dimension> {
     std::vector<Factor> want;
     for (const auto& [name, e] : factors) {

@@ -3,7 +3,10 @@
 uniform spectrum<power> Phi;
 out vec4 c;
 void main() {
-  // a point light of power Phi: intensity is Phi / (4 pi sr)
+  // A point light of power Phi: its intensity is Phi / (4π sr). A literal kπ is a
+  // π constant (docs/language.md, "Gradual typing"): 4π here is the sphere's
+  // steradians. Normalised by π alone, no quantity π measures makes it an intensity.
   spectrum<intensity> I = Phi / (4.0 * 3.14159265);
-  c = vec4(I, 1.0);
+  spectrum<intensity> improper = Phi / 3.14159265;
+  c = vec4(I + improper, 1.0);
 }
