@@ -330,6 +330,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     result.stages.push_back(std::move(out));
   }
   table.source_hash = source_hash(stage_hashes);
+  trim_vocabulary(table);
   result.success = !diags.has_errors();
   if (!result.success) {
     for (StageOutput& s : result.stages) s.glsl.clear();

@@ -2,6 +2,9 @@
 // safegi::gl::SymbolTable so that what the compiler writes is what the
 // runtime reads.
 
+#include <algorithm>
+#include <set>
+#include <sstream>
 #include <unordered_map>
 
 #include <safegi/lexer/extensions.hpp>
@@ -282,6 +285,85 @@ void add_declarations(gl::SymbolTable& table, const ElideInput& input) {
         table.spaces.push_back({space->name, location_of(input.sources, space->name_range.begin)});
     }
   }
+}
+
+namespace {
+
+struct UsedVocabulary {
+  std::set<std::string> names;  // dimensions (base and derived), units and spaces, all in one set
+
+  void add(const gl::ValueType& type) {
+    if (!type.dimension.name.empty()) names.insert(type.dimension.name);
+    for (const auto& [name, exponent] : type.dimension.exponents) names.insert(name);
+    names.insert(type.spaces.begin(), type.spaces.end());
+  }
+  void add(const gl::Symbol& symbol) {
+    add(symbol.type);
+    if (symbol.texel) add(*symbol.texel);
+    for (const gl::Symbol& member : symbol.members) add(member);
+    for (const gl::Symbol& field : symbol.fields) add(field);
+  }
+  bool has(const std::string& name) const { return names.contains(name); }
+};
+
+bool from_prelude(const gl::SourceLocation& at) { return at.file == kBuiltinDir; }
+
+std::string exponents_text(const gl::DimensionExponents& exponents) {
+  std::string text;
+  for (const auto& [name, exponent] : exponents) text += " " + name + "^" + std::to_string(exponent);
+  return text;
+}
+
+}  // namespace
+
+void trim_vocabulary(gl::SymbolTable& table) {
+  // The prelude's content, without its text: a comment or a reordering changes no table.
+  std::vector<std::string> entries;
+  for (const auto& base : table.base_dimensions)
+    if (from_prelude(base.declared_at)) entries.push_back("dimension " + base.name);
+  for (const auto& derived : table.derived_dimensions)
+    if (from_prelude(derived.declared_at)) entries.push_back("dimension " + derived.name + " =" + exponents_text(derived.exponents));
+  for (const auto& unit : table.units)
+    if (from_prelude(unit.declared_at)) {
+      std::ostringstream scale;
+      scale.precision(17);
+      scale << unit.scale;
+      entries.push_back("unit " + unit.name + " :" + exponents_text(unit.dimension.exponents) + " = " + scale.str());
+    }
+  for (const auto& space : table.spaces)
+    if (from_prelude(space.declared_at)) entries.push_back("space " + space.name);
+  if (entries.empty()) return;
+  std::sort(entries.begin(), entries.end());
+  std::string content;
+  for (const std::string& e : entries) content += e + "\n";
+  table.vocabulary = {"safegi/prelude.sgl", source_hash(content)};
+
+  UsedVocabulary used;
+  for (const gl::StageSymbols& stage : table.stages) {
+    for (const gl::Symbol& symbol : stage.symbols) used.add(symbol);
+    for (const gl::SpecializationConstant& constant : stage.specialization_constants) used.add(constant.type);
+  }
+  // A used derived dimension or unit is read through its bases.
+  for (const auto& derived : table.derived_dimensions)
+    if (used.has(derived.name))
+      for (const auto& [base, exponent] : derived.exponents) used.names.insert(base);
+  for (const auto& unit : table.units)
+    if (used.has(unit.name))
+      for (const auto& [base, exponent] : unit.dimension.exponents) used.names.insert(base);
+  auto unused = [&](const auto& entry) { return from_prelude(entry.declared_at) && !used.has(entry.name); };
+  std::erase_if(table.base_dimensions, unused);
+  std::erase_if(table.derived_dimensions, unused);
+  std::erase_if(table.units, unused);
+  std::erase_if(table.spaces, unused);
+  // Where in the prelude an entry stands is no part of the table (a comment there moves it).
+  auto unplace = [](auto& list) {
+    for (auto& entry : list)
+      if (from_prelude(entry.declared_at)) entry.declared_at = {std::string(kBuiltinDir), 0, 0};
+  };
+  unplace(table.base_dimensions);
+  unplace(table.derived_dimensions);
+  unplace(table.units);
+  unplace(table.spaces);
 }
 
 }  // namespace safegi

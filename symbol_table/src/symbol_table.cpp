@@ -108,7 +108,9 @@ class Node {
 };
 
 SourceLocation read_location(const Node& node) {
-  return {node.at("file").string(), node.at("line").integer(), node.has("column") ? node.at("column").integer() : 0};
+  // A prelude entry is named by its file alone: the vocabulary's hash identifies its text.
+  return {node.at("file").string(), node.has("line") ? node.at("line").integer() : 0,
+          node.has("column") ? node.at("column").integer() : 0};
 }
 
 DimensionExponents read_exponents(const Node& node) {
@@ -323,6 +325,10 @@ SymbolTable parse_symbol_table(std::string_view json_text, std::string_view orig
   else if (mode.string() != "shader") mode.fail("expected \"shader\" or \"program\"");
   table.compiler = root.optional_string("compiler");
   table.source_hash = root.optional_string("source_hash");
+  if (root.has("vocabulary")) {
+    Node vocabulary = root.at("vocabulary");
+    table.vocabulary = {vocabulary.at("name").string(), vocabulary.at("hash").string()};
+  }
   if (root.has("dimensions")) {
     Node dimensions = root.at("dimensions");
     if (dimensions.has("base"))
@@ -356,7 +362,8 @@ SymbolTable parse_symbol_table(std::string_view json_text, std::string_view orig
 namespace {
 
 json write_location(const SourceLocation& location) {
-  json node{{"file", location.file}, {"line", location.line}};
+  json node{{"file", location.file}};
+  if (location.line > 0) node["line"] = location.line;
   if (location.column > 0) node["column"] = location.column;
   return node;
 }
@@ -419,6 +426,8 @@ std::string to_json(const SymbolTable& table) {
   json root{{"format", "safegi-symbol-table"}, {"version", table.version}, {"mode", mode_name(table.mode)}};
   if (!table.compiler.empty()) root["compiler"] = table.compiler;
   if (!table.source_hash.empty()) root["source_hash"] = table.source_hash;
+  if (!table.vocabulary.name.empty())
+    root["vocabulary"] = {{"name", table.vocabulary.name}, {"hash", table.vocabulary.hash}};
   json& dimensions = root["dimensions"];
   dimensions["base"] = json::array();
   for (const auto& base : table.base_dimensions)

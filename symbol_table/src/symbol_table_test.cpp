@@ -66,17 +66,23 @@ TEST(SymbolTable, ParsesTheFragmentExample) {
   EXPECT_EQ(stage.find(Storage::uniform, "color"), nullptr);
 }
 
-TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheDeclarations) {
+TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheVocabularyItUses) {
   SymbolTable table = parse_symbol_table(read_testdata("emission.program.json"));
   EXPECT_EQ(table.mode, TableMode::program);
   ASSERT_NE(table.stage(Stage::vertex), nullptr);
   ASSERT_NE(table.stage(Stage::fragment), nullptr);
   EXPECT_EQ(table.stage(Stage::geometry), nullptr);
-  EXPECT_EQ(table.base_dimensions.size(), 6u);
-  EXPECT_EQ(table.units.at(1).name, "metre");  // the prelude's units in both spellings
-  EXPECT_EQ(table.units.at(4).name, "millimeter");
-  EXPECT_DOUBLE_EQ(table.units.at(4).scale, 0.001);
-  EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
+  // The prelude is named by its hash; of its entries only those the symbols use are listed
+  // (no symbol has an angle, none a unit), each without a line in it.
+  EXPECT_EQ(table.vocabulary.name, "safegi/prelude.sgl");
+  EXPECT_EQ(table.vocabulary.hash.rfind("fnv1a64:", 0), 0u);
+  EXPECT_EQ(table.base_dimensions.size(), 5u);
+  EXPECT_EQ(table.base_dimensions.front().declared_at.file, "<builtin>");
+  EXPECT_EQ(table.base_dimensions.front().declared_at.line, 0);
+  EXPECT_TRUE(table.units.empty());
+  EXPECT_EQ(table.spaces.size(), 3u);  // the program's own, used or not
+  EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"proj", -1}, {"solid_angle", -1}, {"time", -1}}, ""}),
+            "radiance");
 }
 
 TEST(SymbolTable, WritesWhatItReads) {

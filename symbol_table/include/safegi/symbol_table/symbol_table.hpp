@@ -127,6 +127,13 @@ struct SpaceDeclaration {
   SourceLocation declared_at;
 };
 
+// The vocabulary a table was checked against, by name and content hash: a table lists
+// only the prelude entries its symbols use (and every entry its programs declare).
+struct Vocabulary {
+  std::string name;  // "safegi/prelude.sgl"
+  std::string hash;  // "fnv1a64:…" of the entries' names, exponents and scales (not their text)
+};
+
 enum class TableMode { shader, program };
 
 struct SymbolTable {
@@ -134,6 +141,7 @@ struct SymbolTable {
   TableMode mode = TableMode::shader;
   std::string compiler;     // producer, e.g. "safeglslc 0.1.0"
   std::string source_hash;  // over all stages' sources
+  Vocabulary vocabulary;    // empty when the program includes no prelude
   std::vector<BaseDimension> base_dimensions;
   std::vector<DerivedDimension> derived_dimensions;
   std::vector<Unit> units;
