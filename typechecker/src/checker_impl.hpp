@@ -212,6 +212,7 @@ class Checker {
   std::optional<Type> affine_part(const Type& vec4, const std::string& swizzle) const;
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
+  Value compose_3x3(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   // A user function's parameters: homogeneous coordinates without their w for a parameter that is not
   // an hpoint, and a vec4 whose xyz were divided by its w (divided_in_place) for one that is.

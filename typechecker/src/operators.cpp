@@ -198,9 +198,13 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
   if (map_operand && op == ast::BinaryOp::Mul) {
     if (std::optional<Value> v = homogeneous_application(lhs, rhs, op_range, range)) return *v;
     const bool composing = b.shape == Shape::matrix;
+    if (composing && a.rows == 3 && a.columns == 3 && b.rows == 3 && b.columns == 3 && is_map(a.geometry) && is_map(b.geometry))
+      return compose_3x3(lhs, rhs, op_range, range);
     if (a.normal_matrix || b.normal_matrix) {
-      // Normal matrices compose with normal matrices: transpose(inverse(m2 * m1)) = N(m2) * N(m1).
-      if (!(a.normal_matrix && b.normal_matrix) || !composing) {
+      // Normal matrices compose with normal matrices: transpose(inverse(m2 * m1)) = N(m2) * N(m1); a
+      // rotation is its own normal matrix (N(R) = R), so it composes with one too.
+      const auto normal_or_rigid = [](const Type& t) { return t.normal_matrix || t.geometry == Geometry::rigidmap; };
+      if (!(normal_or_rigid(a) && normal_or_rigid(b)) || !composing) {
         operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) + ")", lhs, rhs, op_range,
                          "a normal matrix carries normals as vec4(n, 0.0), and composes only with normal matrices",
                          code::E_INVALID_OPERANDS);
@@ -208,6 +212,8 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
       }
       Value l = lhs, r = rhs;
       l.type.normal_matrix = r.type.normal_matrix = false;
+      if (l.type.geometry == Geometry::rigidmap) l.type.geometry = Geometry::map;  // the product carries normals only
+      if (r.type.geometry == Geometry::rigidmap) r.type.geometry = Geometry::map;
       std::optional<Value> v = geometric_operator(nullptr, "compose", l, r, range);
       if (!v) return error_value(range);
       v->type.normal_matrix = true;
@@ -492,6 +498,37 @@ Value Checker::homogeneous_product(ast::BinaryOp op, const Value& lhs, const Val
     out.type.affine = std::make_shared<const Type>(point);
     out.type.affine_w = 1;
   }
+  return out;
+}
+
+// m2 * m1 of 3×3 maps: the linear part of the composed map. Two rotations compose to a rotation;
+// normal matrices (and rotations, their own normal matrices) compose to a normal matrix,
+// transpose(inverse(m2 * m1)) = N(m2) * N(m1); a normal matrix with a map that may scale does not.
+Value Checker::compose_3x3(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range) {
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  const auto normal_or_rigid = [](const Type& t) { return t.normal_matrix || t.geometry == Geometry::rigidmap; };
+  const bool normal = a.normal_matrix || b.normal_matrix;
+  if (normal && !(normal_or_rigid(a) && normal_or_rigid(b))) {
+    operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) + ")", lhs, rhs, op_range,
+                     "a normal matrix carries normals, and composes only with normal matrices and rotations",
+                     code::E_INVALID_OPERANDS);
+    return error_value(range);
+  }
+  if (!consistent(a.from, b.to)) {
+    operand_mismatch("cannot compose " + name_of(a) + " with " + name_of(b) + ": the first takes values in " +
+                         name_of_space(a.from) + ", the second gives them in " + name_of_space(b.to),
+                     lhs, rhs, op_range, space_hint(a.from, b.to), code::E_SPACE_MISMATCH);
+    return error_value(range);
+  }
+  Value out;
+  out.range = range;
+  out.type = a;
+  out.type.from = b.from;
+  out.type.to = a.to;
+  out.type.normal_matrix = normal;
+  out.type.geometry = !normal && a.geometry == Geometry::rigidmap && b.geometry == Geometry::rigidmap ? Geometry::rigidmap
+                                                                                                        : Geometry::map;
   return out;
 }
 
