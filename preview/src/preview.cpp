@@ -352,6 +352,9 @@ struct Preview::Impl {
                                  },
                                  [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [&](const SubstrateMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const DisneyMaterial& m) -> Lit {
+                                   return LitSurface{preview_diffuse(m.diffuse) * ((1 - m.metallic) * (1 - m.spec_trans)), {}};
+                                 },
                                  [&](const TranslucentMaterial& m) -> Lit {
                                    return LitSurface{preview_diffuse(m.diffuse) * m.reflect, {}};
                                  },
