@@ -85,7 +85,7 @@ class Bsdf {
   // below it (wi.z < 0), which light samples there must ask for.
   bool transmits() const {
     const auto* d = std::get_if<DisneyMaterial>(&model_);
-    return std::holds_alternative<TranslucentMaterial>(model_) || (d && d->spec_trans > 0);
+    return std::holds_alternative<TranslucentMaterial>(model_) || (d && (d->spec_trans > 0 || d->thin));
   }
 
   Brdf eval(DirectionShading wo, DirectionShading wi) const {

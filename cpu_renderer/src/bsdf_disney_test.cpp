@@ -69,6 +69,47 @@ TEST(Disney, WithoutSpecularIsBurleysDiffuse) {
   }
 }
 
+// A thin surface of flatness 1 and no diffuse transmission (difftrans 0),
+// without specular reflection (η 1): Hanrahan and Krueger's approximation as
+// Burley 2015 flattens it, c/π · 1.25 (F_ss (1/(cos θo + cos θi) − ½) + ½),
+// F_ss = (1 + (F_ss90 − 1)(1 − cos θo)⁵)(1 + (F_ss90 − 1)(1 − cos θi)⁵),
+// F_ss90 = roughness cos²θd, plus the retro-reflection (Burley's diffuse at
+// roughness r minus its roughness-0 form); with difftrans 2 everything
+// diffuse but the retro-reflection goes through, c/π below.
+TEST(Disney, ThinIsTheFakeSubsurfaceLobeAndLambertTransmission) {
+  const double roughness = 0.6, c = 0.7;
+  DisneyMaterial d;
+  d.eta = 1;
+  d.roughness = static_cast<Real>(roughness);
+  d.thin = true;
+  d.flatness = 1;
+  d.diff_trans = 0;
+  const Material flat = disney_material(d);
+  d.flatness = 0.3f;
+  d.diff_trans = 2;
+  const Material through = disney_material(d);
+  for (double theta_o : {0.0, 0.5, 1.2})
+    for (double theta_i : {0.2, 0.9, 1.4})
+      for (double phi_i : {0.0, 1.5, 3.0}) {
+        const double phi_o = 0.7;
+        const DirectionShading wo = spherical(theta_o, phi_o), wi = spherical(theta_i, phi_i);
+        const double cos_angle = glm::dot(glm::dvec3(sg::raw(wo)), glm::dvec3(sg::raw(wi)));
+        const double cos2_d = (1 + cos_angle) / 2;
+        const double f90 = roughness * cos2_d;
+        const double fss = (1 + (f90 - 1) * schlick(std::cos(theta_o))) * (1 + (f90 - 1) * schlick(std::cos(theta_i)));
+        const double ss = 1.25 * (fss * (1 / (std::cos(theta_o) + std::cos(theta_i)) - 0.5) + 0.5);
+        const double retro = burley_diffuse(c, roughness, theta_o, phi_o, theta_i, phi_i) -
+                             burley_diffuse(c, 0, theta_o, phi_o, theta_i, phi_i);
+        const double expected = c / kPiD * ss + retro;
+        EXPECT_NEAR(sg::raw(Bsdf(flat, grey(static_cast<Real>(c)), false).eval(wo, wi)).g, expected, 2e-5 * (1 + expected))
+            << theta_o << " " << theta_i << " " << phi_i;
+        const Bsdf thin(through, grey(static_cast<Real>(c)), false);
+        EXPECT_TRUE(thin.transmits());
+        EXPECT_NEAR(sg::raw(thin.eval(wo, -wi)).g, c / kPiD, 1e-6);
+        EXPECT_NEAR(sg::raw(thin.eval(wo, wi)).g, retro, 2e-5 * (1 + retro));
+      }
+}
+
 // Metallic 1 without diffuse: Schlick's F from the colour times the
 // anisotropic GGX's D (in slopes: 1 / (π αx αy cos⁴θh (1 + tan²θh (cos²φh/αx²
 // + sin²φh/αy²))²)) and Smith's separable G1 G1, Λ from the projected
@@ -146,7 +187,10 @@ TEST(Disney, Reciprocal) {
   d.clearcoat_gloss = 0.4f;
   d.spec_trans = 0.6f;
   d.specular_tint = 0.5f;
-  const Material material = disney_material(d);
+  DisneyMaterial thin_d = d;
+  thin_d.thin = true, thin_d.flatness = 0.6f, thin_d.diff_trans = 0.7f;
+  for (const DisneyMaterial& dd : {d, thin_d}) {
+  const Material material = disney_material(dd);
   const Reflectance colour(0.9f, 0.5f, 0.3f);
   const double pairs[][2] = {{0.1, 0.3}, {0.1, 0.5}, {0.6, 0.3}, {0.6, 0.9}, {1.2, 0.9}, {1.2, 1.0}, {1.5, 0.2}};
   for (const auto& [a, b] : pairs)
@@ -165,7 +209,10 @@ TEST(Disney, Reciprocal) {
     const double forward = sg::raw(Bsdf(material, colour, false).eval(outside, -inside)).g;
     const double backward = sg::raw(Bsdf(material, colour, true).eval(inside, -outside)).g;
     EXPECT_GT(forward, 0) << a << ", " << b;
-    EXPECT_NEAR(backward, 1.5 * 1.5 * forward, 1e-4 * backward) << a << ", " << b;
+    // (The thin surface's Lambert transmission is the same both ways: it adds (1 − η²) of it.)
+    const double lambert = dd.thin ? 0.35 * 0.5 / kPiD * (1 - 1.5 * 1.5) : 0;
+    EXPECT_NEAR(backward, 1.5 * 1.5 * forward + lambert, 1e-4 * backward) << a << ", " << b;
+  }
   }
 }
 
@@ -243,18 +290,20 @@ TEST(Disney, WhiteFurnaceLobesAtMostOneAndTheirSumBounded) {
 TEST(Disney, SamplesItsPdfWhichIntegratesToAtMostOne) {
   std::mt19937 rng(44);
   std::uniform_real_distribution<Real> u(0, 1);
-  std::vector<DisneyMaterial> sets(4);
+  std::vector<DisneyMaterial> sets(5);
   sets[0].roughness = 0.5f;                                             // pbrt-v3's defaults but roughness
   sets[1].metallic = 0.4f, sets[1].roughness = 0.6f, sets[1].sheen = 1;  // every reflecting lobe
   sets[1].clearcoat = 1, sets[1].clearcoat_gloss = 0, sets[1].specular_tint = 0.5f;
   sets[2].spec_trans = 0.7f, sets[2].roughness = 0.55f;  // refracting too
   sets[3].metallic = 1, sets[3].roughness = 0.7f, sets[3].anisotropic = 0.9f;
+  sets[4].thin = true, sets[4].flatness = 0.5f, sets[4].diff_trans = 0.8f, sets[4].spec_trans = 0.4f;  // thin
+  sets[4].roughness = 0.8f, sets[4].sheen = 0.5f;
   const Reflectance colour(0.8f, 0.6f, 0.3f);
   for (const DisneyMaterial& d : sets) {
     const Material material = disney_material(d);
     for (bool from_inside : {false, true}) {
       const Bsdf bsdf(material, colour, from_inside);
-      EXPECT_EQ(bsdf.transmits(), d.spec_trans > 0);
+      EXPECT_EQ(bsdf.transmits(), d.spec_trans > 0 || d.thin);
       EXPECT_FALSE(bsdf.is_specular());
       for (double theta : {0.0, 0.7, 1.3}) {
         const DirectionShading wo = spherical(theta, 0.4);
@@ -307,6 +356,18 @@ TEST(Disney, HasPbrtV3sLobes) {
   d = DisneyMaterial{};
   d.metallic = 1;
   EXPECT_EQ(DisneyBsdf(d, colour, false).lobe_count(), 1);
+  // Thin: the fake subsurface lobe after the diffuse one, the Lambert transmission last, always.
+  d.metallic = 0;
+  d.thin = true;
+  d.spec_trans = 0.5f;
+  const DisneyBsdf thin(d, colour, false);
+  ASSERT_EQ(thin.lobe_count(), 6);
+  EXPECT_EQ(thin.lobe(1), DisneyLobe::fake_subsurface);
+  EXPECT_EQ(thin.lobe(4), DisneyLobe::transmission);
+  EXPECT_EQ(thin.lobe(5), DisneyLobe::diffuse_transmission);
+  // Its refraction's roughness is (0.65 η − 0.35) roughness: 0.625 · 0.5; height-correlated masking.
+  EXPECT_NEAR(thin.transmission_facets().alpha_x(), 0.3125 * 0.3125, 1e-6);
+  EXPECT_NEAR(thin.facets().alpha_x(), 0.25, 1e-6);
   // pbrt-v3's alphas: max(0.001, r²/aspect), max(0.001, r² aspect), aspect = √(1 − 0.9 anisotropic).
   d.roughness = 0.5f;
   d.anisotropic = 0.5f;

@@ -52,12 +52,12 @@ quantity<dim::pdf_projected_solid_angle> AnisotropicTrowbridgeReitz::density(Dir
   return 1 / (kPi * alpha_x_ * alpha_y_ * s * s) / units::steradian / units::proj;
 }
 
-Real AnisotropicTrowbridgeReitz::masking(DirectionShading w) const {
+// Smith's Λ(ω) = (√(1 + α² tan²θ) − 1) / 2, α² = αx² cos²φ + αy² sin²φ.
+Real AnisotropicTrowbridgeReitz::lambda(DirectionShading w) const {
   const Real cos2 = w.z() * w.z();
-  if (!(cos2 > 0)) return 0;
+  if (!(cos2 > 0)) return 0;  // (not asked: masking() answers for cos θ = 0)
   const Real x = alpha_x_ * w.x(), y = alpha_y_ * w.y();
-  const Real lambda = (std::sqrt(1 + (x * x + y * y) / cos2) - 1) / 2;
-  return 1 / (1 + lambda);
+  return (std::sqrt(1 + (x * x + y * y) / cos2) - 1) / 2;
 }
 
 DirectionShading AnisotropicTrowbridgeReitz::sample_visible_normal(DirectionShading wo, Real u1, Real u2) const {
@@ -124,6 +124,12 @@ namespace {
 
 Real aspect_of(const DisneyMaterial& m) { return std::sqrt(1 - Real(0.9) * m.anisotropic); }
 
+// pbrt-v3's alphas of a roughness: max(0.001, r²/aspect) along x, max(0.001, r² aspect) along y.
+AnisotropicTrowbridgeReitz facets_of(Real roughness, const DisneyMaterial& m, bool separable) {
+  return AnisotropicTrowbridgeReitz(std::max(Real(0.001), roughness * roughness / aspect_of(m)),
+                                    std::max(Real(0.001), roughness * roughness * aspect_of(m)), separable);
+}
+
 }  // namespace
 
 DisneyBsdf::DisneyBsdf(const DisneyMaterial& material, const Reflectance& colour, bool from_inside)
@@ -132,8 +138,9 @@ DisneyBsdf::DisneyBsdf(const DisneyMaterial& material, const Reflectance& colour
       eta_(from_inside ? 1 / material.eta : material.eta),
       diffuse_weight_((1 - material.metallic) * (1 - material.spec_trans)),
       clearcoat_alpha_((1 - material.clearcoat_gloss) * Real(0.1) + material.clearcoat_gloss * Real(0.001)),
-      facets_(std::max(Real(0.001), material.roughness * material.roughness / aspect_of(material)),
-              std::max(Real(0.001), material.roughness * material.roughness * aspect_of(material))) {
+      facets_(facets_of(material.roughness, material, true)),
+      // Burley 2015's figure 15: the roughness scaled by the index.
+      thin_facets_(facets_of((Real(0.65) * material.eta - Real(0.35)) * material.roughness, material, false)) {
   const Real lum = luminance(colour_);
   // The colour's hue and saturation alone.
   const Reflectance tint = lum > 0 ? colour_ * (1 / lum) : Reflectance(1.0f);
@@ -144,12 +151,20 @@ DisneyBsdf::DisneyBsdf(const DisneyMaterial& material, const Reflectance& colour
   auto add = [&](bool present, DisneyLobe lobe) {
     if (present) lobes_[lobe_count_++] = lobe;
   };
+  if (material.thin) {
+    const Real through = material.diff_trans / 2;
+    burley_share_ = (1 - material.flatness) * (1 - through);
+    fake_subsurface_share_ = material.flatness * (1 - through);
+    diffuse_transmittance_ = colour_ * through;
+  }
   add(diffuse_weight_ > 0, DisneyLobe::diffuse);
+  add(diffuse_weight_ > 0 && material.thin, DisneyLobe::fake_subsurface);
   add(diffuse_weight_ > 0, DisneyLobe::retro);
   add(diffuse_weight_ > 0 && material.sheen > 0, DisneyLobe::sheen);
   add(true, DisneyLobe::specular);
   add(material.clearcoat > 0, DisneyLobe::clearcoat);
   add(material.spec_trans > 0, DisneyLobe::transmission);
+  add(material.thin, DisneyLobe::diffuse_transmission);
 }
 
 // pbrt-v3's DisneyFresnel: the dielectric's Fresnel reflectance of index η
@@ -167,9 +182,13 @@ Brdf DisneyBsdf::eval(DirectionShading wo, DirectionShading wi, bool importance)
   if (!(wo.z() > 0) || wi.z() == 0) return Brdf{};
   if (wi.z() < 0) {
     if (!transmits()) return Brdf{};
-    const DirectionShading h = transmission_half_vector(wo, wi, eta_);
-    const Real through = (1 - fresnel_dielectric(sg::dot(wo, h), eta_)) * (importance ? eta_ * eta_ : Real(1));
-    return transmittance_ * through * facets_.transmission(wo, wi, h, eta_);
+    Brdf f = over_pi(diffuse_transmittance_);
+    if (material_.spec_trans > 0) {
+      const DirectionShading h = transmission_half_vector(wo, wi, eta_);
+      const Real through = (1 - fresnel_dielectric(sg::dot(wo, h), eta_)) * (importance ? eta_ * eta_ : Real(1));
+      f += transmittance_ * through * transmission_facets().transmission(wo, wi, h, eta_);
+    }
+    return f;
   }
   const Real fo = schlick_weight(wo.z()), fi = schlick_weight(wi.z());
   const DirectionShading h = half_vector(wo, wi);
@@ -178,7 +197,14 @@ Brdf DisneyBsdf::eval(DirectionShading wo, DirectionShading wi, bool importance)
   if (diffuse_weight_ > 0) {
     const Reflectance base = colour_ * diffuse_weight_;
     const Real retro = 2 * material_.roughness * cos_d * cos_d;
-    f += over_pi(base * ((1 - fo / 2) * (1 - fi / 2) + retro * (fo + fi + fo * fi * (retro - 1))));
+    Real shape = burley_share_ * (1 - fo / 2) * (1 - fi / 2) + retro * (fo + fi + fo * fi * (retro - 1));
+    if (fake_subsurface_share_ > 0) {
+      // Hanrahan–Krueger's flattened retro-reflection, 1.25 keeping the albedo roughly.
+      const Real flat90 = cos_d * cos_d * material_.roughness;
+      const Real flattened = ((1 - fo) + fo * flat90) * ((1 - fi) + fi * flat90);
+      shape += fake_subsurface_share_ * Real(1.25) * (flattened * (1 / (wo.z() + wi.z()) - Real(0.5)) + Real(0.5));
+    }
+    f += over_pi(base * shape);
     if (material_.sheen > 0) f += sheen_colour_ * schlick_weight(cos_d) / units::steradian / units::proj;
   }
   f += specular_fresnel(cos_d) * facets_.reflection(wo, wi, h);
@@ -200,9 +226,13 @@ PdfSolidAngle DisneyBsdf::pdf(DirectionShading wo, DirectionShading wi) const {
   for (int i = 0; i < lobe_count_; ++i) {
     switch (lobes_[i]) {
       case DisneyLobe::diffuse:
+      case DisneyLobe::fake_subsurface:
       case DisneyLobe::retro:
       case DisneyLobe::sheen:
         if (above) sum += cosine_pdf(wi);
+        break;
+      case DisneyLobe::diffuse_transmission:
+        if (!above) sum += cosine_pdf(-wi);
         break;
       case DisneyLobe::specular:
         if (above) sum += facets_.visible_normal_pdf(wo, h) * reflection_jacobian(wo, h);
@@ -211,7 +241,7 @@ PdfSolidAngle DisneyBsdf::pdf(DirectionShading wo, DirectionShading wi) const {
         if (above) sum += gtr1_density(h, clearcoat_alpha_) * sg::cos_theta(h) * reflection_jacobian(wo, h);
         break;
       case DisneyLobe::transmission:
-        if (!above) sum += facets_.visible_transmission_pdf(wo, wi, h, eta_);
+        if (!above) sum += transmission_facets().visible_transmission_pdf(wo, wi, h, eta_);
         break;
     }
   }
@@ -224,10 +254,15 @@ std::optional<DirectionShading> DisneyBsdf::sample_direction(DirectionShading wo
   std::optional<DirectionShading> wi;
   switch (lobes_[chosen]) {
     case DisneyLobe::diffuse:
+    case DisneyLobe::fake_subsurface:
     case DisneyLobe::retro:
     case DisneyLobe::sheen:
       wi = from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
       break;
+    case DisneyLobe::diffuse_transmission:
+      wi = -from_kernel<DirectionShading>(sample_cosine_hemisphere(u1, u2));
+      if (!(wi->z() < 0)) return std::nullopt;
+      return wi;
     case DisneyLobe::specular:
       wi = reflected(wo, facets_.sample_visible_normal(wo, u1, u2));
       break;
@@ -235,7 +270,7 @@ std::optional<DirectionShading> DisneyBsdf::sample_direction(DirectionShading wo
       wi = reflected(wo, sample_gtr1_normal(clearcoat_alpha_, u1, u2));
       break;
     case DisneyLobe::transmission:
-      wi = refract(wo, facets_.sample_visible_normal(wo, u1, u2), eta_);
+      wi = refract(wo, transmission_facets().sample_visible_normal(wo, u1, u2), eta_);
       if (!wi || !(wi->z() < 0)) return std::nullopt;  // totally reflected, or refracted above the surface
       return wi;
   }

@@ -11,6 +11,11 @@
 //  - clearcoat: ¼ clearcoat · Schlick(0.04) · GTR1 · G(α = 0.25) / (4 cos θo cos θi);
 //  - specular transmission (spectrans > 0): Walter et al.'s rough refraction,
 //    spectrans·√c · (1 − F_dielectric(η)), through the specular lobe's facets.
+// A thin surface (pbrt-v3's "thin") blends Burley's diffuse with the fake
+// subsurface lobe (Hanrahan–Krueger's approximation) by flatness, sends
+// difftrans/2 of its diffuse light through (Lambert transmission of
+// difftrans/2 · c), and refracts through facets of roughness (0.65 η − 0.35)
+// roughness with height-correlated masking (pbrt-v3's plain TrowbridgeReitz).
 // Sampled as pbrt-v3's BSDF::Sample_f samples it: one of the lobes chosen
 // uniformly, its direction drawn as its BxDF draws it (the cosine hemisphere
 // for the three diffuse ones, visible normals for the specular lobes, GTR1's
@@ -26,16 +31,23 @@ namespace safegi::render {
 
 // The Trowbridge–Reitz distribution of roughness αx along the shading
 // frame's x and αy along its y, with Smith's separable masking–shadowing
-// G1(ωo) G1(ωi) (pbrt-v3's DisneyMicrofacetDistribution). D(h) is a density
-// per projected solid angle of normals, as TrowbridgeReitz's.
+// G1(ωo) G1(ωi) (pbrt-v3's DisneyMicrofacetDistribution) or, not
+// `separable`, the height-correlated 1 / (1 + Λ(ωo) + Λ(ωi)) (pbrt-v3's
+// TrowbridgeReitzDistribution). D(h) is a density per projected solid angle
+// of normals, as TrowbridgeReitz's.
 class AnisotropicTrowbridgeReitz {
  public:
-  AnisotropicTrowbridgeReitz(Real alpha_x, Real alpha_y) : alpha_x_(alpha_x), alpha_y_(alpha_y) {}
+  AnisotropicTrowbridgeReitz(Real alpha_x, Real alpha_y, bool separable = true)
+      : alpha_x_(alpha_x), alpha_y_(alpha_y), separable_(separable) {}
 
   quantity<dim::pdf_projected_solid_angle> density(DirectionShading h) const;
   // Smith's masking of one direction, 1 / (1 + Λ(ω)).
-  Real masking(DirectionShading w) const;
-  Real masking_shadowing(DirectionShading wo, DirectionShading wi) const { return masking(wo) * masking(wi); }
+  // (Along the surface, cos θ = 0, a direction is masked entirely.)
+  Real masking(DirectionShading w) const { return w.z() != 0 ? 1 / (1 + lambda(w)) : Real(0); }
+  Real masking_shadowing(DirectionShading wo, DirectionShading wi) const {
+    if (wo.z() == 0 || wi.z() == 0) return 0;
+    return separable_ ? masking(wo) * masking(wi) : 1 / (1 + lambda(wo) + lambda(wi));
+  }
   // A normal that ωo sees (Heitz 2018, stretched by αx, αy): density D(h)
   // G1(ωo) max(0, ωo·h) / cos θo per solid angle of normals.
   DirectionShading sample_visible_normal(DirectionShading wo, Real u1, Real u2) const;
@@ -53,7 +65,10 @@ class AnisotropicTrowbridgeReitz {
   Real alpha_y() const { return alpha_y_; }
 
  private:
+  Real lambda(DirectionShading w) const;
+
   Real alpha_x_, alpha_y_;
+  bool separable_;
 };
 
 // Burley's GTR1 ("generalised Trowbridge–Reitz", γ = 1) of the clearcoat:
@@ -63,7 +78,9 @@ quantity<dim::pdf_projected_solid_angle> gtr1_density(DirectionShading h, Real a
 DirectionShading sample_gtr1_normal(Real alpha, Real u1, Real u2);
 
 // pbrt-v3's DisneyMaterial's BxDFs, in the order it adds them.
-enum class DisneyLobe { diffuse, retro, sheen, specular, clearcoat, transmission };
+enum class DisneyLobe {
+  diffuse, fake_subsurface, retro, sheen, specular, clearcoat, transmission, diffuse_transmission
+};
 
 // The Disney BSDF at one shading point: the material, its colour there (the
 // textured "color"), and the side the light leaves towards.
@@ -71,7 +88,7 @@ class DisneyBsdf {
  public:
   DisneyBsdf(const DisneyMaterial& material, const Reflectance& colour, bool from_inside);
 
-  bool transmits() const { return material_.spec_trans > 0; }
+  bool transmits() const { return material_.spec_trans > 0 || material_.thin; }
   // f(ωo, ωi); `importance`: for photons' flux, which refraction does not
   // compress (pbrt-v3's TransportMode::Importance multiplies its BTDF by η²).
   Brdf eval(DirectionShading wo, DirectionShading wi, bool importance = false) const;
@@ -88,6 +105,9 @@ class DisneyBsdf {
   // The specular lobe's (αx, αy): pbrt-v3's max(0.001, roughness² / aspect)
   // and max(0.001, roughness² · aspect), aspect = √(1 − 0.9 anisotropic).
   const AnisotropicTrowbridgeReitz& facets() const { return facets_; }
+  // Those the transmission refracts through: the same, or a thin surface's
+  // of roughness (0.65 η − 0.35) roughness.
+  const AnisotropicTrowbridgeReitz& transmission_facets() const { return material_.thin ? thin_facets_ : facets_; }
   // Its Fresnel factor at cos θ between ωi and the facet's normal.
   Reflectance specular_fresnel(Real cos_h) const;
 
@@ -96,12 +116,14 @@ class DisneyBsdf {
   Reflectance colour_;
   Real eta_;
   Real diffuse_weight_;
+  Real burley_share_ = 1, fake_subsurface_share_ = 0;  // of the diffuse lobe (thin: by flatness and difftrans)
+  Reflectance diffuse_transmittance_{};              // thin: difftrans/2 · c
   Reflectance sheen_colour_;      // sheen · Csheen · diffuse weight
   Reflectance specular_colour_;   // Cspec0: the metallic part's reflectance at normal incidence
   Reflectance transmittance_;     // spectrans · √c
   Real clearcoat_alpha_;          // GTR1's α: lerp(clearcoatgloss, 0.1, 0.001)
-  AnisotropicTrowbridgeReitz facets_;
-  DisneyLobe lobes_[6] = {};
+  AnisotropicTrowbridgeReitz facets_, thin_facets_;
+  DisneyLobe lobes_[8] = {};
   int lobe_count_ = 0;
 };
 

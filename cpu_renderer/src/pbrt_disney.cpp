@@ -1,8 +1,8 @@
 // The importer's pbrt-v3 "disney" material (src/materials/disney.cpp's
 // CreateDisneyMaterial): its parameters and defaults, onto DisneyMaterial.
 // What the renderer does not model is an error at the parameter that asks for
-// it: an anisotropic lobe (no surface tangent orients it), a thin surface and
-// subsurface scattering (a non-black "scatterdistance").
+// it: an anisotropic lobe (no surface tangent orients it) and subsurface
+// scattering (a non-black "scatterdistance").
 #include <cmath>
 
 #include "pbrt_importer.hpp"
@@ -53,17 +53,20 @@ MaterialModel Importer::disney(ParamSet& params, SourceRange) {
       params.fail_at(*distance, "subsurface scattering (\"scatterdistance\") of " + params.context() + " is not supported",
                      "pbrt-v3 renders the diffuse part by its BSSRDF there; a black \"scatterdistance\" (the default) is "
                      "Burley's diffuse");
-  if (params.one_bool("thin", false))
-    params.fail_at(*params.find("thin", {ParamType::boolean}),
-                   "a thin " + params.context() + " (\"bool thin\" true) is not supported",
-                   "only the solid Disney BSDF is implemented here: no \"flatness\", \"difftrans\" or thin transmission");
-  // Read by pbrt-v3 for thin surfaces only.
-  for (const char* name : {"flatness", "difftrans"}) {
-    const Param* param = nullptr;
-    if (float_or_texture(params, name, param))
-      warn(param->declaration, "parameter \"" + param->type_name + " " + param->name + "\" of " + params.context() +
-                                   " is not used: it applies to thin surfaces (\"bool thin\" true) only",
-           "pbrt-v3 ignores it too without \"thin\"");
+  d.thin = params.one_bool("thin", false);
+  if (d.thin) {
+    d.flatness = disney_float(params, "flatness", 0, 0, 1);
+    // pbrt-v3 transmits difftrans/2 of the diffuse light: up to 2 sends it all through.
+    d.diff_trans = disney_float(params, "difftrans", 1, 0, 2);
+  } else {
+    // Read by pbrt-v3 for thin surfaces only.
+    for (const char* name : {"flatness", "difftrans"}) {
+      const Param* param = nullptr;
+      if (float_or_texture(params, name, param))
+        warn(param->declaration, "parameter \"" + param->type_name + " " + param->name + "\" of " + params.context() +
+                                     " is not used: it applies to thin surfaces (\"bool thin\" true) only",
+             "pbrt-v3 ignores it too without \"thin\"");
+    }
   }
   return d;
 }

@@ -1,7 +1,7 @@
 // pbrt-v3's disney material as the importer reads it: the parameters and
 // defaults of its CreateDisneyMaterial (src/materials/disney.cpp), a shape's
-// own values, the winding of its interface, and what is refused (an
-// anisotropic lobe, a thin surface, subsurface scattering, textured weights)
+// own values, thin surfaces, the winding of its interface, and what is
+// refused (an anisotropic lobe, subsurface scattering, textured weights)
 // with the parameter's place.
 #include <gtest/gtest.h>
 
@@ -68,10 +68,10 @@ TEST(PbrtImport, DisneyRefusesWhatItDoesNotModel) {
             "Material \"disney\" \"float anisotropic\" 0.5\n                  ^~~~~~~~~~~~~~~~~~~\n"
             "help: the renderer's shading frames have no surface tangent (pbrt-v3's dp/du) to orient the lobe by; "
             "\"anisotropic\" 0 is isotropic\n");
-  EXPECT_EQ(import_error(world(used("Material \"disney\" \"bool thin\" \"true\""))),
-            "scene.pbrt:2:19: error: a thin Material \"disney\" (\"bool thin\" true) is not supported\n"
-            "Material \"disney\" \"bool thin\" \"true\"\n                  ^~~~~~~~~~~\n"
-            "help: only the solid Disney BSDF is implemented here: no \"flatness\", \"difftrans\" or thin transmission\n");
+  EXPECT_EQ(import_error(world(used("Material \"disney\" \"bool thin\" \"true\" \"float difftrans\" 2.5"))),
+            "scene.pbrt:2:38: error: \"difftrans\" of Material \"disney\" must lie in [0, 2], found 2.5\n"
+            "Material \"disney\" \"bool thin\" \"true\" \"float difftrans\" 2.5\n"
+            "                                     ^~~~~~~~~~~~~~~~~\n");
   EXPECT_EQ(import_error(world(used("Material \"disney\" \"rgb scatterdistance\" [0.1 0.1 0.1]"))),
             "scene.pbrt:2:19: error: subsurface scattering (\"scatterdistance\") of Material \"disney\" is not supported\n"
             "Material \"disney\" \"rgb scatterdistance\" [0.1 0.1 0.1]\n                  ^~~~~~~~~~~~~~~~~~~~~\n"
@@ -84,6 +84,24 @@ TEST(PbrtImport, DisneyRefusesWhatItDoesNotModel) {
             "scene.pbrt:3:19: error: a procedural texture as \"roughness\" of Material \"disney\" is not supported\n"
             "Material \"disney\" \"texture roughness\" \"f\"\n                  ^~~~~~~~~~~~~~~~~~~\n"
             "help: \"disney\" reads its float parameters as numbers here; \"color\" and \"bumpmap\" take textures\n");
+}
+
+// "thin": "flatness" 0, "difftrans" 1 by default.
+TEST(PbrtImport, DisneyThin) {
+  PbrtScene scene = import(world(used("Material \"disney\" \"bool thin\" \"true\"") + "\n" +
+                                 used("Material \"disney\" \"bool thin\" \"true\" \"float flatness\" 0.4 "
+                                      "\"float difftrans\" 1.5")));
+  const Scene& s = scene.scene;
+  ASSERT_EQ(s.shapes.size(), 2u);
+  const DisneyMaterial defaults = as<DisneyMaterial>(s.materials.at(s.shapes[0].material));
+  EXPECT_TRUE(defaults.thin);
+  EXPECT_EQ(defaults.flatness, 0.0f);
+  EXPECT_EQ(defaults.diff_trans, 1.0f);
+  const DisneyMaterial given = as<DisneyMaterial>(s.materials.at(s.shapes[1].material));
+  EXPECT_EQ(given.flatness, 0.4f);
+  EXPECT_EQ(given.diff_trans, 1.5f);
+  EXPECT_FALSE(as<DisneyMaterial>(import(world(used("Material \"disney\""))).scene.materials.at(0)).thin);
+  EXPECT_EQ(scene.warnings, "");
 }
 
 // pbrt-v3 reads "flatness" and "difftrans" for thin surfaces only: a warning.
