@@ -183,8 +183,8 @@ Brdf DisneyBsdf::eval(DirectionShading wo, DirectionShading wi, bool importance)
   if (wi.z() < 0) {
     if (!transmits()) return Brdf{};
     Brdf f = over_pi(diffuse_transmittance_);
-    if (material_.spec_trans > 0) {
-      const DirectionShading h = transmission_half_vector(wo, wi, eta_);
+    const DirectionShading h = transmission_half_vector(wo, wi, eta_);
+    if (material_.spec_trans > 0 && sg::dot(wo, h) > 0) {  // (no h at all where ωo + η ωi = 0: NaN, not > 0)
       const Real through = (1 - fresnel_dielectric(sg::dot(wo, h), eta_)) * (importance ? eta_ * eta_ : Real(1));
       f += transmittance_ * through * transmission_facets().transmission(wo, wi, h, eta_);
     }
