@@ -292,6 +292,9 @@ struct Preview::Impl {
     add(names_of([&](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model) && !rough_glass(m); }),
         "translucent is drawn as its diffuse reflection (reflect times Kd), without its glossy lobes or the light it "
         "lets through");
+    add(names_of([](const Material& m) { return std::holds_alternative<DisneyMaterial>(m.model); }),
+        "disney is drawn as its diffuse part ((1 - metallic)(1 - spectrans) times its colour) as Lambert, without its "
+        "specular, sheen or clearcoat reflection or the light it lets through");
     add(names_of([](const Material& m) { return m.mix.has_value(); }),
         "mix materials are drawn as their parts' diffuse and Phong colours weighted by the amount, mirrors, glass "
         "and metal among them as black");
