@@ -27,9 +27,11 @@ TEST(PbrtImport, DisneyAsPbrtV3DefinesIt) {
       "Shape \"sphere\"\n"                                                        // 2: a textured colour
       "Material \"disney\"\nShape \"sphere\" \"float metallic\" 0.75\n"  // 3: the shape's own value
       "Texture \"half\" \"float\" \"constant\" \"float value\" 0.5\n"
-      "Material \"disney\" \"texture sheen\" \"half\"\nShape \"sphere\""));  // 4: a constant float texture
+      "Material \"disney\" \"texture sheen\" \"half\"\nShape \"sphere\"\n"  // 4: a constant float texture
+      "Texture \"bumps\" \"float\" \"fbm\"\n"
+      "Material \"disney\" \"texture bumpmap\" \"bumps\"\nShape \"sphere\""));  // 5: a bump map
   const Scene& s = scene.scene;
-  ASSERT_EQ(s.shapes.size(), 5u);
+  ASSERT_EQ(s.shapes.size(), 6u);
   auto disney = [&](size_t shape) { return as<DisneyMaterial>(s.materials.at(s.shapes[shape].material)); };
   const DisneyMaterial d = disney(0);
   EXPECT_EQ(sg::raw(d.diffuse.value), glm::vec3(0.5f));
@@ -59,6 +61,10 @@ TEST(PbrtImport, DisneyAsPbrtV3DefinesIt) {
   EXPECT_EQ(diffuse(s.materials.at(s.shapes[2].material)).pattern, 0);  // what the integrator's textures look up
   EXPECT_EQ(disney(3).metallic, 0.75f);
   EXPECT_EQ(disney(4).sheen, 0.5f);
+  EXPECT_FALSE(s.materials.at(s.shapes[4].material).bump.has_value());
+  const std::optional<BumpMap>& bump = s.materials.at(s.shapes[5].material).bump;
+  ASSERT_TRUE(bump.has_value());
+  EXPECT_EQ(bump->pattern, 1);  // the fbm, after the checkerboard
   EXPECT_EQ(scene.warnings, "");
 }
 
