@@ -4,7 +4,8 @@
 // plus a Fresnel-weighted Trowbridge–Reitz microfacet lobe), rough metal
 // (the same lobe weighted by the conductor's Fresnel term), pbrt-v3's
 // substrate (Ashikhmin and Shirley's FresnelBlend) and pbrt-v3's translucent
-// (Lambert and a rough dielectric interface, reflecting and transmitting).
+// (Lambert and a rough dielectric interface, reflecting and transmitting);
+// pbrt-v3's disney in disney.hpp.
 #pragma once
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <variant>
 
 #include "safegi/cpu_renderer/sampling.hpp"
+#include "disney.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
 #include "scattering.hpp"
 
@@ -81,7 +83,10 @@ class Bsdf {
   bool is_specular() const { return render::is_specular(model_); }
   // Non-specular light through the surface: eval() and pdf() have values
   // below it (wi.z < 0), which light samples there must ask for.
-  bool transmits() const { return std::holds_alternative<TranslucentMaterial>(model_); }
+  bool transmits() const {
+    const auto* d = std::get_if<DisneyMaterial>(&model_);
+    return std::holds_alternative<TranslucentMaterial>(model_) || (d && (d->spec_trans > 0 || d->thin));
+  }
 
   Brdf eval(DirectionShading wo, DirectionShading wi) const {
     if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return Brdf{};
@@ -92,6 +97,7 @@ class Bsdf {
                                  [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
                                  [&](const SubstrateMaterial& m) { return substrate(m, wo, wi); },
                                  [&](const TranslucentMaterial& m) { return translucent(m, wo, wi, Transport::radiance); },
+                                 [&](const DisneyMaterial& m) { return disney(m).eval(wo, wi); },
                                  [](const MirrorMaterial&) { return Brdf{}; },
                                  [](const GlassMaterial&) { return Brdf{}; },
                                  [](const BlackMaterial&) { return Brdf{}; }},
@@ -107,6 +113,7 @@ class Bsdf {
                                  [&](const ConductorMaterial& m) { return conductor_pdf(m, wo, wi); },
                                  [&](const SubstrateMaterial& m) { return substrate_pdf(m, wo, wi); },
                                  [&](const TranslucentMaterial& m) { return translucent_pdf(m, wo, wi); },
+                                 [&](const DisneyMaterial& m) { return disney(m).pdf(wo, wi); },
                                  [](const MirrorMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const GlassMaterial&) { return PdfSolidAngle(sg::zero); },
                                  [](const BlackMaterial&) { return PdfSolidAngle(sg::zero); }},
@@ -146,6 +153,12 @@ class Bsdf {
                      return weighted(wi, substrate(m, wo, wi), substrate_pdf(m, wo, wi));
                    },
                    [&](const TranslucentMaterial& m) { return sample_translucent(m, wo, u_lobe, u1, u2, transport); },
+                   [&](const DisneyMaterial& m) -> Sampled {
+                     const DisneyBsdf bsdf = disney(m);
+                     std::optional<DirectionShading> wi = bsdf.sample_direction(wo, u_lobe, u1, u2);
+                     if (!wi) return std::nullopt;
+                     return weighted(*wi, bsdf.eval(wo, *wi, transport == Transport::importance), bsdf.pdf(wo, *wi));
+                   },
                    [](const BlackMaterial&) -> Sampled { return std::nullopt; }},
         model_);
   }
@@ -184,6 +197,8 @@ class Bsdf {
     const TexturedReflectance* diffuse = diffuse_of(material);
     return diffuse ? diffuse->value : kBlack;
   }
+
+  DisneyBsdf disney(const DisneyMaterial& m) const { return DisneyBsdf(m, diffuse_, from_inside_); }
 
   static DirectionShading reflect(DirectionShading w) { return DirectionShading(-w.x(), -w.y(), w.z()); }
 

@@ -134,10 +134,10 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
             "scene.pbrt:2:7: error: shape \"bilinearmesh\" is not supported\nShape \"bilinearmesh\"\n      ^~~~~~~~~~~~~~\n"
             "help: supported: \"trianglemesh\", \"plymesh\", \"sphere\", \"disk\", \"cylinder\", \"cone\", "
             "\"paraboloid\", \"hyperboloid\", \"nurbs\", \"heightfield\", \"loopsubdiv\", \"curve\"\n");
-  EXPECT_EQ(import_error(world(used("Material \"disney\""))),
-            "scene.pbrt:2:10: error: material \"disney\" is not supported\nMaterial \"disney\"\n"
-            "         ^~~~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
-            "\"translucent\", \"uber\", \"mix\"\n");
+  EXPECT_EQ(import_error(world(used("Material \"hair\""))),
+            "scene.pbrt:2:10: error: material \"hair\" is not supported\nMaterial \"hair\"\n"
+            "         ^~~~~~\nhelp: supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", "
+            "\"translucent\", \"uber\", \"mix\", \"disney\"\n");
   // pbrt-v3's matte with "sigma" (degrees) is Oren-Nayar; 0 is Lambert.
   PbrtScene rough = import(world(used("Material \"matte\" \"float sigma\" [20] \"rgb Kd\" [0.4 0.5 0.6]")));
   const OrenNayarMaterial oren_nayar = as<OrenNayarMaterial>(rough.scene.materials.at(rough.scene.shapes[0].material));
@@ -549,7 +549,8 @@ TEST(PbrtImport, GlassKeepsPbrtsOutside) {
   EXPECT_EQ(scene.scene.shapes.at(3).indices, (std::vector<uint32_t>{0, 1, 2}));  // diffuse lobes only: two-sided
   EXPECT_EQ(scene.scene.shapes.at(4).indices, (std::vector<uint32_t>{0, 1, 2}));  // mirrored and reversed
   EXPECT_EQ(import_error(world("Material \"glass\"\nReverseOrientation\nShape \"sphere\"")),
-            "scene.pbrt:4:7: error: a glass or translucent sphere turned inside out (ReverseOrientation) is not supported\n"
+            "scene.pbrt:4:7: error: a glass, translucent or disney sphere turned inside out (ReverseOrientation) is not "
+            "supported\n"
             "Shape \"sphere\"\n      ^~~~~~~~\nhelp: its outside would be the inside of the sphere\n");
 }
 

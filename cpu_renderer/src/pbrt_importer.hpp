@@ -210,6 +210,8 @@ class Importer {
   MaterialModel metal(ParamSet& params, SourceRange at);
   MaterialModel substrate(ParamSet& params, SourceRange at);
   MaterialModel translucent(ParamSet& params, SourceRange at);
+  MaterialModel disney(ParamSet& params, SourceRange at);  // pbrt_disney.cpp
+  Real disney_float(ParamSet& params, const char* name, double fallback, double low, double high);
   IndexSpectrum index_spectrum(ParamSet& params, const char* name, const Rgb& fallback, bool zero_allowed);
   static double isotropic_roughness(double u, double v, const ParamSet& params, SourceRange at,
                                     bool reads_roughness = true);

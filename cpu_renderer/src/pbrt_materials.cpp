@@ -1,6 +1,6 @@
 // The importer's materials and textures: pbrt-v3's matte, mirror, plastic,
-// glass, metal, substrate, translucent and the matte/plastic/glass subsets of
-// uber (src/materials/*.cpp), and
+// glass, metal, substrate, translucent, disney (pbrt_disney.cpp) and the
+// matte/plastic/glass subsets of uber (src/materials/*.cpp), and
 // its constant, imagemap and scale textures (src/textures/*.cpp), mapped onto
 // the Scene's materials and image textures. What the Scene cannot represent
 // is an error at the parameter or name that asks for it.
@@ -26,7 +26,7 @@ M& writable(std::shared_ptr<M>& shared) {
 // them gets its own copy of the material (pbrt-v3's GetMaterialForShape).
 struct MaterialParams {
   std::string_view type;
-  std::array<std::string_view, 12> names;  // empty names pad the list
+  std::array<std::string_view, 16> names;  // empty names pad the list
 };
 constexpr MaterialParams kMaterialParams[] = {
     {"matte", {"Kd", "sigma", "bumpmap"}},
@@ -40,10 +40,13 @@ constexpr MaterialParams kMaterialParams[] = {
      {"Kd", "Ks", "Kr", "Kt", "roughness", "uroughness", "vroughness", "eta", "index", "opacity", "remaproughness",
       "bumpmap"}},
     {"mix", {"amount", "namedmaterial1", "namedmaterial2"}},
+    {"disney",
+     {"color", "metallic", "eta", "roughness", "speculartint", "anisotropic", "sheen", "sheentint", "clearcoat",
+      "clearcoatgloss", "spectrans", "scatterdistance", "thin", "flatness", "difftrans", "bumpmap"}},
 };
 constexpr const char* kSupportedMaterials =
     "supported: \"matte\", \"mirror\", \"plastic\", \"glass\", \"metal\", \"substrate\", \"translucent\", "
-    "\"uber\", \"mix\"";
+    "\"uber\", \"mix\", \"disney\"";
 constexpr const char* kSupportedTextures =
     "supported: \"constant\", \"imagemap\", \"scale\", \"mix\", \"checkerboard\", \"dots\", \"fbm\", "
     "\"wrinkled\", \"windy\", \"marble\", \"uv\", \"bilerp\"";
@@ -342,6 +345,8 @@ Material Importer::convert_material(const std::string& type, ParamSet& params, S
     material.model = substrate(params, at);
   } else if (type == "translucent") {
     material.model = translucent(params, at);
+  } else if (type == "disney") {
+    material.model = disney(params, at);
   }
   return material;
 }

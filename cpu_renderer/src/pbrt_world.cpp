@@ -14,7 +14,8 @@ namespace {
 
 // A material with an outside (pbrt-v3's: its geometric normal's side; ours:
 // the winding's): glass, and translucent's glossy lobes, whose interface has
-// index 1.5 inside; pbrt-v3's plastic, whose swapped Fresnel indices hold on
+// index 1.5 inside; disney, whose Fresnel terms and refraction see index eta
+// inside; pbrt-v3's plastic, whose swapped Fresnel indices hold on
 // that side only (with `plastic`); a mix with any of them among its parts.
 bool has_outside(const Scene& scene, int index, bool plastic = true) {
   if (index < 0) return false;
@@ -24,6 +25,7 @@ bool has_outside(const Scene& scene, int index, bool plastic = true) {
   // (A glass of index 1, uber's transparent part, bends nothing: it has no outside.)
   return std::visit(Overloaded{[](const GlassMaterial& g) { return g.ior != 1; },
                                [](const TranslucentMaterial& t) { return !sg::is_black(t.specular); },
+                               [](const DisneyMaterial& d) { return d.eta != 1; },
                                [&](const PlasticMaterial& p) { return plastic && p.pbrt_v3_fresnel; },
                                [](const auto&) { return false; }},
                     material.model);
@@ -522,7 +524,7 @@ void Importer::place(const ShapeSource& source, const Matrix& world_from_pbrt_wo
            "\"bool twosided\" \"true\" emits on both sides");
     // (A plastic one keeps the swapped Fresnel on its outside: pbrt-v3's has it on the inside.)
     if (source.reverse_orientation && has_outside(result_.scene, shape.material, false))
-      fail(source.at, "a glass or translucent sphere turned inside out (ReverseOrientation) is not supported",
+      fail(source.at, "a glass, translucent or disney sphere turned inside out (ReverseOrientation) is not supported",
            "its outside would be the inside of the sphere");
     // Our sphere's normal points out; pbrt-v3's, in, under ReverseOrientation.
     if (shape.media && source.reverse_orientation) std::swap(shape.media->inside, shape.media->outside);

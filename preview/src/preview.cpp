@@ -292,6 +292,9 @@ struct Preview::Impl {
     add(names_of([&](const Material& m) { return std::holds_alternative<TranslucentMaterial>(m.model) && !rough_glass(m); }),
         "translucent is drawn as its diffuse reflection (reflect times Kd), without its glossy lobes or the light it "
         "lets through");
+    add(names_of([](const Material& m) { return std::holds_alternative<DisneyMaterial>(m.model); }),
+        "disney is drawn as its diffuse part ((1 - metallic)(1 - spectrans) times its colour) as Lambert, without its "
+        "specular, sheen or clearcoat reflection or the light it lets through");
     add(names_of([](const Material& m) { return m.mix.has_value(); }),
         "mix materials are drawn as their parts' diffuse and Phong colours weighted by the amount, mirrors, glass "
         "and metal among them as black");
@@ -352,6 +355,9 @@ struct Preview::Impl {
                                  },
                                  [&](const PlasticMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
                                  [&](const SubstrateMaterial& m) -> Lit { return LitSurface{preview_diffuse(m.diffuse), {}}; },
+                                 [&](const DisneyMaterial& m) -> Lit {
+                                   return LitSurface{preview_diffuse(m.diffuse) * ((1 - m.metallic) * (1 - m.spec_trans)), {}};
+                                 },
                                  [&](const TranslucentMaterial& m) -> Lit {
                                    return LitSurface{preview_diffuse(m.diffuse) * m.reflect, {}};
                                  },

@@ -111,11 +111,33 @@ struct TranslucentMaterial {
   Real alpha = 0.001f;          // the microfacets' GGX roughness alpha (pbrt-v3's floor: 0.001)
   Real ior = 1.5f;              // the interface's index, inside over outside (pbrt-v3 fixes 1.5)
 };
+// pbrt-v3's disney without subsurface scattering: Burley's diffuse,
+// retro-reflection and sheen, an anisotropic GGX specular lobe with pbrt-v3's
+// DisneyFresnel, a GTR1 clearcoat and rough specular transmission; a thin
+// one blends the diffuse with a fake subsurface lobe (flatness) and lets
+// some through diffusely (difftrans) (disney.hpp). Each weight lies in [0, 1],
+// as pbrt-v3's parameters of the same names.
+struct DisneyMaterial {
+  TexturedReflectance diffuse;  // pbrt's "color", the base colour (diffuse_of's: a texture applies to it)
+  Real metallic = 0;
+  Real eta = 1.5f;  // the interface's index, inside over outside
+  Real roughness = 0.5f;
+  Real specular_tint = 0;
+  Real anisotropic = 0;  // along the shading frame's x and y
+  Real sheen = 0;
+  Real sheen_tint = 0.5f;
+  Real clearcoat = 0;
+  Real clearcoat_gloss = 1;
+  Real spec_trans = 0;
+  bool thin = false;
+  Real flatness = 0;    // thin: the fake subsurface lobe's share of the diffuse one
+  Real diff_trans = 1;  // thin: twice the share of the diffuse light transmitted (pbrt-v3 halves it)
+};
 struct BlackMaterial {};  // absorbs everything
 
 using MaterialModel = std::variant<BlackMaterial, LambertMaterial, PhongMaterial, PlasticMaterial, MirrorMaterial,
                                    GlassMaterial, ConductorMaterial, SubstrateMaterial, TranslucentMaterial,
-                                   OrenNayarMaterial>;
+                                   OrenNayarMaterial, DisneyMaterial>;
 
 // pbrt-v3's bump map: the surface displaced along its normal by `scale` times
 // the luminance of an image texture at (u, v), or a float pattern's value at
