@@ -489,9 +489,16 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
                                                   ta.array == tb.array && (implicitly_converts(ta.scalar, tb.scalar) ||
                                                                            implicitly_converts(tb.scalar, ta.scalar)));
   const DimSlot da = value_dimension(ta, result_.registry), db = value_dimension(tb, result_.registry);
+  // `pointLight ? 1.0 : max(dot(n, l), 0.0)`: a literal beside a cosine is a cosine (of 0), as a bound is.
+  const auto cosine_beside_literal = [&](const Value& literal, const DimSlot& literal_dim, const DimSlot& other) {
+    return literal.literal && literal_dim.is_known() && literal_dim.value.is_dimensionless() &&
+           cosine_as_number(DimSlot::known(Dimension{}), other);
+  };
+  const bool a_takes_cosine = cosine_beside_literal(a, da, db), b_takes_cosine = cosine_beside_literal(b, db, da);
   const bool annotations_ok = (kind_fits(ta.geometry, tb.geometry) || kind_fits(tb.geometry, ta.geometry) ||
                                ta.geometry == Geometry::none || tb.geometry == Geometry::none) &&
-                              consistent(ta.from, tb.from) && consistent(ta.to, tb.to) && (a.zero || b.zero || consistent(da, db));
+                              consistent(ta.from, tb.from) && consistent(ta.to, tb.to) &&
+                              (a.zero || b.zero || a_takes_cosine || b_takes_cosine || consistent(da, db));
   if (!glsl_ok || !annotations_ok) {
     Diagnostic d = Diagnostic::error(e.range, "the branches of '?:' have different types, " + name_of(ta) + " and " + name_of(tb))
                        .with_code(glsl_ok ? code::E_DIMENSION_MISMATCH : code::E_TYPE_MISMATCH)
@@ -506,7 +513,7 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   }
   Value out;
   out.range = e.range;
-  out.type = a.zero ? tb : ta;
+  out.type = a.zero || a_takes_cosine ? tb : ta;
   if (ta.geometry != tb.geometry && is_map(ta.geometry) && is_map(tb.geometry)) out.type.geometry = Geometry::map;  // rigid or affine
   if (implicitly_converts(ta.scalar, tb.scalar) && ta.scalar != tb.scalar) out.type.scalar = tb.scalar;
   if (da.state == DimSlot::State::unknown || db.state == DimSlot::State::unknown) out.type.dim = DimSlot::unknown();
