@@ -682,7 +682,7 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
   CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};
   std::optional<Type> result = unify_call(e.callee, shape, args, e.range);
   if (!result) return error_value(e.range);
-  if (!unit_length_parameters(e.callee, best->params, args)) return error_value(e.range);
+  if (!unit_length_parameters(e.callee, *best, args)) return error_value(e.range);
   if (!homogeneous_parameters(e.callee, best->params, args)) return error_value(e.range);
   symbols_.call_result(*result);
   Value out;

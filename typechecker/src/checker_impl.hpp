@@ -225,7 +225,7 @@ class Checker {
   std::string written_name(const Value& v) const;
   void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
-  bool unit_length_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args);
+  bool unit_length_parameters(const std::string& callee, const Function& f, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   // length(L) of a variable whose value is known not to change behind the checker's back.
   std::optional<LengthOf> length_of_variable(const ast::Expr* arg);

@@ -57,11 +57,33 @@ bool Checker::unit_length_arguments(const std::string& name, const std::vector<V
   return true;
 }
 
-// A user function's normal or direction parameter takes a unit vector.
-bool Checker::unit_length_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args) {
+namespace {
+
+// The body reads the parameter only as normalize(param): the function makes it unit itself
+// (`vec3 n = normalize(vnormal);`), so an argument that is not of unit length is fine.
+bool normalized_on_every_use(const ast::FunctionDecl* f, std::size_t param) {
+  if (f == nullptr || f->body == nullptr || param >= f->params.size() || f->params[param]->name.empty()) return false;
+  const std::string& name = f->params[param]->name;
+  int uses = 0, normalized = 0;
+  ast::walk(f->body, [&](const ast::Node& node) {
+    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(&node); id && id->name == name) ++uses;
+    if (const auto* call = ast::dyn_cast<ast::CallExpr>(&node); call && call->callee == "normalize" && call->args.size() == 1)
+      if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(ast::without_parens(call->args[0])); id && id->name == name)
+        ++normalized;
+  });
+  return uses > 0 && uses == normalized;
+}
+
+}  // namespace
+
+// A user function's normal or direction parameter takes a unit vector, unless its body
+// normalizes the parameter wherever it reads it.
+bool Checker::unit_length_parameters(const std::string& callee, const Function& f, const std::vector<Value>& args) {
+  const std::vector<Type>& params = f.params;
   for (std::size_t i = 0; i < args.size() && i < params.size(); ++i) {
     const Geometry want = params[i].geometry;
-    if (args[i].type.length_loss != Type::LengthLoss::none && (want == Geometry::normal || want == Geometry::direction)) {
+    if (args[i].type.length_loss != Type::LengthLoss::none && (want == Geometry::normal || want == Geometry::direction) &&
+        !normalized_on_every_use(f.decl, i)) {
       report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + callee + "' is");
       return false;
     }

@@ -12,6 +12,8 @@ in normal<world> vN;
 flat in normal<world> faceN;
 out vec4 c;
 float<proj> lambert(normal<world> n) { return max(dot(n, toLight), 0.0); }
+// A function that normalizes its parameter wherever it reads it takes one that is not unit.
+float<proj> lambertOfAny(normal<world> n) { vec3 unit = normalize(n); return max(dot(unit, toLight), 0.0); }
 void main() {
     normal<world> n = normalize(vN);
     float<proj> good = max(dot(n, toLight), 0.0) + max(dot(faceN, toLight), 0.0) + lambert(n);
@@ -19,6 +21,7 @@ void main() {
     float<proj> cosine = max(dot(vN, toLight), 0.0);
     point<world> lifted = P + vN * bias;
     float<proj> viaFunction = lambert(vN);
+    float<proj> normalizedInside = lambertOfAny(vN);
     normal<world> declared = vN;
-    c = vec4(shrink * (good + cosine + viaFunction), declared.x, 0.0, 1.0);
+    c = vec4(shrink * (good + cosine + viaFunction + normalizedInside), declared.x, 0.0, 1.0);
 }
