@@ -394,6 +394,12 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       out.type.geometry = Geometry::hpoint;
       out.type.dim = DimSlot::unknown();
       out.type.weight = ga == Geometry::hpoint ? a.weight : b.weight;
+    } else if ((ga == Geometry::normal && gb == Geometry::none && db.state == DimSlot::State::unknown) ||
+               (gb == Geometry::normal && ga == Geometry::none && da.state == DimSlot::State::unknown)) {
+      // A normal offset by an unannotated vector (a morph target's delta, a bump): gradually, still a
+      // normal of that space, no longer of unit length (normalize(n + dn) is the morphed normal).
+      out.type = ga == Geometry::normal ? a : b;
+      out.type.length_loss = Type::LengthLoss::offset;
     } else if (vectorish(ga) || vectorish(gb)) {
       out.type.geometry = Geometry::vector;  // a sum of directions is no longer unit length
       out.type.orientation = sum_orientation(add, a.orientation, b.orientation);  // wo + wi is away, like both

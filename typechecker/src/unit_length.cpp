@@ -28,6 +28,7 @@ std::string Checker::not_unit_subject(const Value& v) const {
   return "'" + name + "', a " + geometry_name(v.type.geometry) +
          (v.type.length_loss == Type::LengthLoss::scaled     ? " carried by a normal matrix that may scale"
           : v.type.length_loss == Type::LengthLoss::filtered ? " filtered by a texture lookup"
+          : v.type.length_loss == Type::LengthLoss::offset   ? " offset by an unannotated vector"
                                                              : " interpolated across the primitive");
 }
 

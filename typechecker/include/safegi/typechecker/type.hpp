@@ -123,8 +123,9 @@ struct Type {
   // Geometry::normal: why it is not of unit length until normalize() (docs/language.md,
   // "What spaces do not reach"): interpolated across a primitive (a fragment shader's
   // input), carried by a normal matrix that may scale, or filtered by a texture lookup
-  // (a G-buffer's normal read with texture(); texelFetch reads it as stored).
-  enum class LengthLoss : std::uint8_t { none, interpolated, scaled, filtered };
+  // (a G-buffer's normal read with texture(); texelFetch reads it as stored), or offset by an
+  // unannotated vector (a morph target's `n + dn`).
+  enum class LengthLoss : std::uint8_t { none, interpolated, scaled, filtered, offset };
   LengthLoss length_loss = LengthLoss::none;
 
   static Type error() { return {}; }
