@@ -273,8 +273,10 @@ inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
 
 // What the operations ask of their operands. Each holds in the unchecked build, so a
-// report is never chosen there. An operation requires these concepts and its report
-// overload requires less, so where both are viable the operation is more constrained.
+// report is never chosen there. An operation requires these concepts; its report overload
+// requires a rule's negation where the report names dimensions in words (so a valid call
+// never forms it, report_if above), and otherwise less, so where both are viable the
+// operation is more constrained.
 template <class Left, class Right>
 concept same_dimension = !is_checked || std::is_same_v<Left, Right>;
 template <class Left, class Right>

@@ -212,8 +212,9 @@ constexpr quantity<D, rep_of<Q>> dimension_cast(Q q) {
 // ---- operators (only basic_quantity needs them; plain numbers have their own)
 
 // Each operation on two quantities has its reports beside it (diagnose.hpp): the operation
-// takes one dimension and one representation twice, so any other pair selects a report
-// (partial ordering: the more specialised signature wins), which names the two sides.
+// takes one dimension and one representation twice, so any other pair selects a report,
+// which names the two sides; each report requires its rule to fail, so a valid call never
+// forms one (diagnose.hpp, report_if).
 template <class D, class T>
 constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
