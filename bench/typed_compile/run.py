@@ -14,8 +14,10 @@ standard headers the library itself includes (the floor no library over GLM can 
 below); the library's own cost is the difference.
 
 SAFEGI_TYPED_BASELINE=<commit> adds the same measurement against the headers of that
-commit (extracted with git archive), for a before/after comparison; programs that do
-not compile against the old headers are left out of its rows.
+commit (extracted with git archive), for a before/after comparison, interleaved with this
+commit's runs; programs that do not compile against the old headers are left out of its
+rows. SAFEGI_TYPED_REPEATS=<n> sets the runs of each compile (default 9, 2 quick): on a
+loaded machine more runs steady the medians.
 """
 from __future__ import annotations
 
@@ -78,24 +80,32 @@ def include_cost(trees: list[tuple[str, Path]], tmp: Path, repeats: int) -> list
     return rows
 
 
-def measure(include: Path, sources: dict[str, Path], tmp: Path, repeats: int) -> list[tuple[str, h.Timing, h.Timing]]:
+def measure(trees: list[tuple[str, Path]], sources: dict[str, Path], tmp: Path,
+            repeats: int) -> list[tuple[str, str, h.Timing, h.Timing]]:
+    """Each program checked and unchecked against every tree's headers, all interleaved
+    (one run of each per round), so a change in the machine's load falls on every row alike."""
     cxx = os.environ.get("CXX", "g++")
     rows = []
     for name, source in sources.items():
-        base = [cxx, "-std=c++20", "-O2", "-DNDEBUG", f"-I{include}", "-c", str(source), "-o", str(tmp / "out.o")]
-        commands = {"checked": base, "unchecked": base[:1] + ["-DSAFEGI_UNCHECKED=1"] + base[1:]}
-        if subprocess.run(base, capture_output=True).returncode != 0:
-            continue  # e.g. the quick-start program against headers older than it
-        samples: dict[str, list[float]] = {mode: [] for mode in commands}
+        commands: dict[tuple[str, str], list[str]] = {}
+        for label, include in trees:
+            base = [cxx, "-std=c++20", "-O2", "-DNDEBUG", f"-I{include}", "-c", str(source), "-o", str(tmp / "out.o")]
+            if subprocess.run(base, capture_output=True).returncode != 0:
+                continue  # e.g. the quick-start program against headers older than it
+            commands[(label, "checked")] = base
+            commands[(label, "unchecked")] = base[:1] + ["-DSAFEGI_UNCHECKED=1"] + base[1:]
+        samples: dict[tuple[str, str], list[float]] = {key: [] for key in commands}
         for _ in range(repeats):
-            for mode, command in commands.items():
-                samples[mode].append(cpu_seconds(command))
-        rows.append((name, h.Timing(samples["checked"]), h.Timing(samples["unchecked"])))
+            for key, command in commands.items():
+                samples[key].append(cpu_seconds(command))
+        for label, _ in trees:
+            if (label, "checked") in samples:
+                rows.append((name, label, h.Timing(samples[(label, "checked")]), h.Timing(samples[(label, "unchecked")])))
     return rows
 
 
 def main() -> None:
-    repeats = 2 if h.quick() else 9
+    repeats = int(os.environ.get("SAFEGI_TYPED_REPEATS", "0")) or (2 if h.quick() else 9)
     baseline = os.environ.get("SAFEGI_TYPED_BASELINE", "")
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
@@ -110,17 +120,17 @@ def main() -> None:
             trees.append((f"headers at {baseline}", old / "typed/include"))
         include_rows = include_cost(trees, tmp, repeats)
         table_rows = []
-        for label, include in trees:
-            for name, checked, unchecked in measure(include, sources, tmp, repeats):
-                table_rows.append([name, label, checked.cell(), unchecked.cell(),
-                                   h.ratio(checked.median, unchecked.median)])
+        for name, label, checked, unchecked in measure(trees, sources, tmp, repeats):
+            table_rows.append([name, label, checked.cell(), unchecked.cell(),
+                               h.ratio(checked.median, unchecked.median)])
     text = f"""## Compile-time cost of the typed library's checks
 
 Measured by `bench/typed_compile/run.py` ({'quick' if h.quick() else 'full'} mode; {h.machine_line()}).
 Each program compiled with `g++ -std=c++20 -O2 -DNDEBUG -c`, checked and with
 `-DSAFEGI_UNCHECKED=1`, {repeats} interleaved runs each; compiler CPU seconds (user + system),
 median (min–max); ratio = checked / unchecked. `SAFEGI_TYPED_BASELINE=<commit>` adds rows
-for the headers of an older commit.
+for the headers of an older commit, measured interleaved with this commit's
+(`SAFEGI_TYPED_REPEATS=<n>` sets the runs).
 
 """ + h.table(["program", "headers", "checked (s)", "unchecked (s)", "ratio"], table_rows) + f"""
 

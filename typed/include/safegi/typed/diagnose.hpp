@@ -185,6 +185,36 @@ template <dimension_type L, dimension_type R>
 using ratio_in_words = in_words<dim::quotient<L, R>>;
 }  // namespace safegi
 
+namespace safegi::diagnose {
+// A report that names dimensions in words is formed only for the mistake itself. Forming
+// one means searching the vocabulary for each dimension it names, so a declaration that
+// formed it for every use (a class's member template instantiated with the class, a
+// converting constructor's defaulted Report, a mistake's return type when the rule holds)
+// made every checked program pay for its reports. An overload for a mistake therefore
+// names its report through report_if<Mistake, Words>::type, which is Words::type where
+// Mistake holds and names nothing (so the overload drops out, cheaply) where it does not;
+// the free overloads also require the rule's negation, which g++ checks before forming
+// their result type. The words_* below form the reports of diagnose:: above.
+template <bool Mistake, class Words>
+struct report_if {};
+template <class Words>
+struct report_if<true, Words> {
+  using type = typename Words::type;
+};
+template <class Operation, class L, class R>
+struct words_dimension_mismatch {
+  using type = dimension_mismatch<Operation, in_words<L>, in_words<R>, ratio_in_words<L, R>>;
+};
+template <class From, class To>
+struct words_conversion_between_dimensions {
+  using type = conversion_between_dimensions<in_words<From>, in_words<To>, ratio_in_words<From, To>>;
+};
+template <class Operation, class D>
+struct words_plain_number_with_dimension {
+  using type = plain_number_with_dimension<Operation, in_words<D>>;
+};
+}  // namespace safegi::diagnose
+
 namespace safegi {
 namespace diagnose {
 /// What std::numeric_limits says of a geometric kind: nothing. The primary template would
@@ -243,8 +273,10 @@ inline namespace SAFEGI_MODE_NAMESPACE {
 namespace rules {
 
 // What the operations ask of their operands. Each holds in the unchecked build, so a
-// report is never chosen there. An operation requires these concepts and its report
-// overload requires less, so where both are viable the operation is more constrained.
+// report is never chosen there. An operation requires these concepts; its report overload
+// requires a rule's negation where the report names dimensions in words (so a valid call
+// never forms it, report_if above), and otherwise less, so where both are viable the
+// operation is more constrained.
 template <class Left, class Right>
 concept same_dimension = !is_checked || std::is_same_v<Left, Right>;
 template <class Left, class Right>

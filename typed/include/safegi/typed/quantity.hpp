@@ -68,7 +68,7 @@ class basic_quantity {
 
   // Conversions that are always mistakes, declared so that the error names both sides
   // (diagnose.hpp); never called.
-  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
+  template <class E, class Report = typename diagnose::report_if<!std::is_same_v<E, D>, diagnose::words_conversion_between_dimensions<E, D>>::type>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE basic_quantity(const basic_quantity<E, T>& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("cannot convert a quantity of one dimension into another");  // NOLINT
@@ -76,7 +76,7 @@ class basic_quantity {
     requires(!std::is_same_v<U, T>)
   SAFEGI_MISTAKE basic_quantity(const basic_quantity<E, U>& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("float and double quantities do not mix: build it in safegi::real (real(2) * units::metre, 2.0f * units::metre in a float build), or convert with from_raw<quantity<D, T>>(T(raw(q)))");  // NOLINT
-  template <arithmetic U, class Report = diagnose::plain_number_with_dimension<diagnose::op::conversion, in_words<D>>>
+  template <arithmetic U, class Report = typename diagnose::report_if<arithmetic<U>, diagnose::words_plain_number_with_dimension<diagnose::op::conversion, D>>::type>
   SAFEGI_MISTAKE basic_quantity(const U& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("a plain number has no dimension: give it a unit (2.0f * units::metre)");  // NOLINT
 
@@ -95,14 +95,16 @@ class basic_quantity {
     return *this;
   }
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::plus_assign, D, E>>::type
   operator+=(basic_quantity<E, T>);
   template <class E, class U>
+    requires(!std::is_same_v<T, U>)
   diagnose::representation_mismatch<diagnose::op::plus_assign, T, U> operator+=(basic_quantity<E, U>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::minus_assign, D, E>>::type
   operator-=(basic_quantity<E, T>);
   template <class E, class U>
+    requires(!std::is_same_v<T, U>)
   diagnose::representation_mismatch<diagnose::op::minus_assign, T, U> operator-=(basic_quantity<E, U>);
   template <arithmetic U>
   constexpr basic_quantity& operator*=(U factor) {
@@ -210,43 +212,52 @@ constexpr quantity<D, rep_of<Q>> dimension_cast(Q q) {
 // ---- operators (only basic_quantity needs them; plain numbers have their own)
 
 // Each operation on two quantities has its reports beside it (diagnose.hpp): the operation
-// takes one dimension and one representation twice, so any other pair selects a report
-// (partial ordering: the more specialised signature wins), which names the two sides.
+// takes one dimension and one representation twice, so any other pair selects a report,
+// which names the two sides; each report requires its rule to fail, so a valid call never
+// forms one (diagnose.hpp, report_if).
 template <class D, class T>
 constexpr basic_quantity<D, T> operator+(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E, class T>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator+(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::plus, T, U> operator+(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
 constexpr basic_quantity<D, T> operator-(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E, class T>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator-(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::minus, T, U> operator-(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
 constexpr bool operator==(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return a.raw_value() == b.raw_value();
 }
 template <class D, class E, class T>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator==(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::equal, T, U> operator==(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T>
 constexpr std::partial_ordering operator<=>(basic_quantity<D, T> a, basic_quantity<D, T> b) {
   return a.raw_value() <=> b.raw_value();
 }
 template <class D, class E, class T>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::compare, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator<=>(basic_quantity<D, T>, basic_quantity<E, T>);
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::compare, T, U> operator<=>(basic_quantity<D, T>, basic_quantity<E, U>);
 
 template <class D, class T>
@@ -282,8 +293,10 @@ constexpr quantity<dim::quotient<D, E>, T> operator/(basic_quantity<D, T> a, bas
   return make_quantity<dim::quotient<D, E>, T>(a.raw_value() / b.raw_value());
 }
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::times, T, U> operator*(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class E, class T, class U>
+  requires(!std::is_same_v<T, U>)
 diagnose::representation_mismatch<diagnose::op::divide, T, U> operator/(basic_quantity<D, T>, basic_quantity<E, U>);
 template <class D, class T, arithmetic U>
 constexpr basic_quantity<D, T> operator*(basic_quantity<D, T> a, U factor) {
@@ -323,6 +336,7 @@ constexpr Q min(Q a, R b) {
   return raw(b) < raw(a) ? detail::same_kind<Q>(raw(b)) : a;
 }
 template <quantity_like Q, quantity_like R>
+  requires(!rules::same_dimension<dimension_of<Q>, dimension_of<R>>)
 diagnose::dimension_mismatch<diagnose::op::min, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
 min(Q, R);
@@ -332,6 +346,7 @@ constexpr Q max(Q a, R b) {
   return raw(a) < raw(b) ? detail::same_kind<Q>(raw(b)) : a;
 }
 template <quantity_like Q, quantity_like R>
+  requires(!rules::same_dimension<dimension_of<Q>, dimension_of<R>>)
 diagnose::dimension_mismatch<diagnose::op::max, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
 max(Q, R);
@@ -359,6 +374,7 @@ using clamp_bound_dimension =
     std::conditional_t<std::is_same_v<dimension_of<Q>, dimension_of<L>>, dimension_of<H>, dimension_of<L>>;
 }  // namespace detail
 template <quantity_like Q, quantity_like L, quantity_like H>
+  requires(!rules::same_dimension<dimension_of<Q>, detail::clamp_bound_dimension<Q, L, H>>)
 diagnose::dimension_mismatch<diagnose::op::clamp, in_words<dimension_of<Q>>,
                              in_words<detail::clamp_bound_dimension<Q, L, H>>,
                              ratio_in_words<dimension_of<Q>, detail::clamp_bound_dimension<Q, L, H>>>
@@ -371,6 +387,7 @@ constexpr Q clamp(Q q, L low, H high) {
 }
 /// a + t (b - a), like std::lerp; t is a plain number.
 template <quantity_like Q, quantity_like R>
+  requires(!rules::same_dimension<dimension_of<Q>, dimension_of<R>>)
 diagnose::dimension_mismatch<diagnose::op::lerp, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
 lerp(Q, R, rep_of<Q>);
@@ -381,6 +398,7 @@ constexpr Q lerp(Q a, R b, rep_of<Q> t) {
 }
 
 template <quantity_like Q>
+  requires(!rules::even_exponents<dimension_of<Q>>)
 diagnose::sqrt_of_odd_exponent<in_words<dimension_of<Q>>> sqrt(Q);
 template <quantity_like Q>
   requires rules::even_exponents<dimension_of<Q>>
@@ -389,6 +407,7 @@ constexpr quantity<dim::root<dimension_of<Q>, 2>, rep_of<Q>> sqrt(Q q) {
 }
 /// sqrt(max(q, 0)): pbrt's SafeSqrt, for values that rounding can push below zero.
 template <quantity_like Q>
+  requires(!rules::even_exponents<dimension_of<Q>>)
 diagnose::sqrt_of_odd_exponent<in_words<dimension_of<Q>>> safe_sqrt(Q);
 template <quantity_like Q>
   requires rules::even_exponents<dimension_of<Q>>
@@ -405,6 +424,7 @@ constexpr quantity<dim::pow<dimension_of<Q>, N>, rep_of<Q>> pow(Q q) {
 }
 /// A real exponent needs a dimensionless base.
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::pow, in_words<dimension_of<Q>>> pow(Q, rep_of<Q>);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>
@@ -413,6 +433,7 @@ constexpr rep_of<Q> pow(Q base, rep_of<Q> exponent) {
 }
 
 template <quantity_like Q>
+  requires(!rules::angle<dimension_of<Q>>)
 diagnose::argument_is_not_an_angle<diagnose::op::sin, in_words<dimension_of<Q>>> sin(Q);
 template <quantity_like Q>
   requires rules::angle<dimension_of<Q>>
@@ -420,6 +441,7 @@ constexpr rep_of<Q> sin(Q angle) {
   return std::sin(raw(angle));
 }
 template <quantity_like Q>
+  requires(!rules::angle<dimension_of<Q>>)
 diagnose::argument_is_not_an_angle<diagnose::op::cos, in_words<dimension_of<Q>>> cos(Q);
 template <quantity_like Q>
   requires rules::angle<dimension_of<Q>>
@@ -427,6 +449,7 @@ constexpr rep_of<Q> cos(Q angle) {
   return std::cos(raw(angle));
 }
 template <quantity_like Q>
+  requires(!rules::angle<dimension_of<Q>>)
 diagnose::argument_is_not_an_angle<diagnose::op::tan, in_words<dimension_of<Q>>> tan(Q);
 template <quantity_like Q>
   requires rules::angle<dimension_of<Q>>
@@ -434,6 +457,7 @@ constexpr rep_of<Q> tan(Q angle) {
   return std::tan(raw(angle));
 }
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::asin, in_words<dimension_of<Q>>> asin(Q);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>
@@ -441,6 +465,7 @@ constexpr quantity<dim::angle, rep_of<Q>> asin(Q ratio) {
   return make_quantity<dim::angle, rep_of<Q>>(std::asin(raw(ratio)));
 }
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::acos, in_words<dimension_of<Q>>> acos(Q);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>
@@ -448,6 +473,7 @@ constexpr quantity<dim::angle, rep_of<Q>> acos(Q ratio) {
   return make_quantity<dim::angle, rep_of<Q>>(std::acos(raw(ratio)));
 }
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::atan, in_words<dimension_of<Q>>> atan(Q);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>
@@ -456,6 +482,7 @@ constexpr quantity<dim::angle, rep_of<Q>> atan(Q ratio) {
 }
 /// The angle of (x, y); x and y may have any dimension, but the same one.
 template <quantity_like Q, quantity_like R>
+  requires(!rules::same_dimension<dimension_of<Q>, dimension_of<R>>)
 diagnose::dimension_mismatch<diagnose::op::atan2, in_words<dimension_of<Q>>, in_words<dimension_of<R>>,
                              ratio_in_words<dimension_of<Q>, dimension_of<R>>>
 atan2(Q, R);
@@ -465,6 +492,7 @@ constexpr quantity<dim::angle, rep_of<Q>> atan2(Q y, R x) {
   return make_quantity<dim::angle, rep_of<Q>>(std::atan2(raw(y), raw(x)));
 }
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::exp, in_words<dimension_of<Q>>> exp(Q);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>
@@ -472,6 +500,7 @@ constexpr rep_of<Q> exp(Q exponent) {
   return std::exp(raw(exponent));
 }
 template <quantity_like Q>
+  requires(!rules::dimensionless<dimension_of<Q>>)
 diagnose::argument_is_not_dimensionless<diagnose::op::log, in_words<dimension_of<Q>>> log(Q);
 template <quantity_like Q>
   requires rules::dimensionless<dimension_of<Q>>

@@ -220,7 +220,7 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
     requires(!std::is_same_v<S2, S>)
   SAFEGI_MISTAKE basic_vector(const basic_vector<S2, E>& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("cannot convert a vector from one space into another by assignment: apply a map<From, To>");  // NOLINT
-  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
+  template <class E, class Report = typename diagnose::report_if<!std::is_same_v<E, D>, diagnose::words_conversion_between_dimensions<E, D>>::type>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE basic_vector(const basic_vector<S, E>& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("cannot convert a vector of one dimension into another");  // NOLINT
@@ -242,12 +242,12 @@ class basic_vector : public detail::vec3_storage<basic_vector<S, D>> {
   template <class S2, class E>
   diagnose::space_mismatch<diagnose::op::plus_assign, S, S2> operator+=(basic_vector<S2, E>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::plus_assign, D, E>>::type
   operator+=(basic_vector<S, E>);
   template <class S2, class E>
   diagnose::space_mismatch<diagnose::op::minus_assign, S, S2> operator-=(basic_vector<S2, E>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::minus_assign, D, E>>::type
   operator-=(basic_vector<S, E>);
   template <arithmetic U>
   constexpr basic_vector& operator*=(U factor) {
@@ -368,7 +368,7 @@ constexpr detail::displacement<S> operator-(basic_point<S> a, basic_point<S2> b)
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<detail::length_dimension, D>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<detail::length_dimension>, in_words<D>,
                              ratio_in_words<detail::length_dimension, D>>
 operator+(basic_point<S>, basic_vector<S2, D>);
@@ -380,7 +380,7 @@ constexpr basic_point<S> operator+(basic_point<S> p, basic_vector<S2, D> v) {
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::plus, S2, S> operator+(basic_vector<S2, D>, basic_point<S>);
 template <class S, class S2, class D>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<D, detail::length_dimension>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<detail::length_dimension>,
                              ratio_in_words<D, detail::length_dimension>>
 operator+(basic_vector<S2, D>, basic_point<S>);
@@ -392,7 +392,7 @@ constexpr basic_point<S> operator+(basic_vector<S2, D> v, basic_point<S> p) {
 template <class S, class S2, class D>
 diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_point<S>, basic_vector<S2, D>);
 template <class S, class S2, class D>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<detail::length_dimension, D>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<detail::length_dimension>, in_words<D>,
                              ratio_in_words<detail::length_dimension, D>>
 operator-(basic_point<S>, basic_vector<S2, D>);
@@ -414,7 +414,7 @@ constexpr bool operator==(basic_point<S> a, basic_point<S2> b) {
 template <class S, class S2, class D, class E>
 diagnose::space_mismatch<diagnose::op::plus, S, S2> operator+(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator+(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
@@ -425,7 +425,7 @@ constexpr basic_vector<S, D> operator+(basic_vector<S, D> a, basic_vector<S2, E>
 template <class S, class S2, class D, class E>
 diagnose::space_mismatch<diagnose::op::minus, S, S2> operator-(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator-(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
@@ -436,7 +436,7 @@ constexpr basic_vector<S, D> operator-(basic_vector<S, D> a, basic_vector<S2, E>
 template <class S, class S2, class D, class E>
 diagnose::space_mismatch<diagnose::op::equal, S, S2> operator==(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
-  requires rules::same_space<S, S2>
+  requires rules::same_space<S, S2> && (!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator==(basic_vector<S, D>, basic_vector<S2, E>);
 template <class S, class S2, class D, class E>
@@ -558,7 +558,7 @@ constexpr basic_vector<detail::space_of_unit<A>, dim::dimensionless> operator-(A
 template <class S, class D, detail::unit_vector U>
 diagnose::space_mismatch<diagnose::op::plus, S, detail::space_of_unit<U>> operator+(basic_vector<S, D>, U);
 template <class S, class D, detail::unit_vector U>
-  requires rules::same_space<S, detail::space_of_unit<U>>
+  requires rules::same_space<S, detail::space_of_unit<U>> && (!rules::same_dimension<D, dim::dimensionless>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<dim::dimensionless>,
                              ratio_in_words<D, dim::dimensionless>>
 operator+(basic_vector<S, D>, U);
@@ -570,7 +570,7 @@ constexpr basic_vector<S, D> operator+(basic_vector<S, D> v, U u) {
 template <class S, class D, detail::unit_vector U>
 diagnose::space_mismatch<diagnose::op::minus, S, detail::space_of_unit<U>> operator-(basic_vector<S, D>, U);
 template <class S, class D, detail::unit_vector U>
-  requires rules::same_space<S, detail::space_of_unit<U>>
+  requires rules::same_space<S, detail::space_of_unit<U>> && (!rules::same_dimension<D, dim::dimensionless>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<dim::dimensionless>,
                              ratio_in_words<D, dim::dimensionless>>
 operator-(basic_vector<S, D>, U);
@@ -582,7 +582,7 @@ constexpr basic_vector<S, D> operator-(basic_vector<S, D> v, U u) {
 template <class S, class D, detail::unit_vector U>
 diagnose::space_mismatch<diagnose::op::plus, detail::space_of_unit<U>, S> operator+(U, basic_vector<S, D>);
 template <class S, class D, detail::unit_vector U>
-  requires rules::same_space<S, detail::space_of_unit<U>>
+  requires rules::same_space<S, detail::space_of_unit<U>> && (!rules::same_dimension<dim::dimensionless, D>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<dim::dimensionless>, in_words<D>,
                              ratio_in_words<dim::dimensionless, D>>
 operator+(U, basic_vector<S, D>);
@@ -594,7 +594,7 @@ constexpr basic_vector<S, D> operator+(U u, basic_vector<S, D> v) {
 template <class S, class D, detail::unit_vector U>
 diagnose::space_mismatch<diagnose::op::minus, detail::space_of_unit<U>, S> operator-(U, basic_vector<S, D>);
 template <class S, class D, detail::unit_vector U>
-  requires rules::same_space<S, detail::space_of_unit<U>>
+  requires rules::same_space<S, detail::space_of_unit<U>> && (!rules::same_dimension<dim::dimensionless, D>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<dim::dimensionless>, in_words<D>,
                              ratio_in_words<dim::dimensionless, D>>
 operator-(U, basic_vector<S, D>);

@@ -26,7 +26,7 @@ class basic_spectrum {
   constexpr explicit basic_spectrum(quantity<D> grey) : rgb_(raw(grey)) {}
   constexpr basic_spectrum(detail::raw_tag, vec3_rep rgb) : rgb_(rgb) {}
   /// Converting between dimensions is always a mistake, declared to say so in words.
-  template <class E, class Report = diagnose::conversion_between_dimensions<in_words<E>, in_words<D>, ratio_in_words<E, D>>>
+  template <class E, class Report = typename diagnose::report_if<!std::is_same_v<E, D>, diagnose::words_conversion_between_dimensions<E, D>>::type>
     requires(!std::is_same_v<E, D>)
   SAFEGI_MISTAKE basic_spectrum(const basic_spectrum<E>& SAFEGI_REPORTED_AS(Report))
       SAFEGI_SAYS("cannot convert a spectrum of one dimension into another");  // NOLINT
@@ -47,10 +47,10 @@ class basic_spectrum {
     return *this;
   }
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::plus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::plus_assign, D, E>>::type
   operator+=(basic_spectrum<E>);
   template <class E>
-  diagnose::dimension_mismatch<diagnose::op::minus_assign, in_words<D>, in_words<E>, ratio_in_words<D, E>>
+  typename diagnose::report_if<!std::is_same_v<D, E>, diagnose::words_dimension_mismatch<diagnose::op::minus_assign, D, E>>::type
   operator-=(basic_spectrum<E>);
   /// Scaling by a dimensionless factor (a plain number or a dimensionless spectrum).
   template <class Q>
@@ -92,6 +92,7 @@ constexpr basic_spectrum<D> operator+(basic_spectrum<D> a, basic_spectrum<D> b) 
   return {detail::raw_tag{}, a.raw_value() + b.raw_value()};
 }
 template <class D, class E>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::plus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator+(basic_spectrum<D>, basic_spectrum<E>);
 template <class D>
@@ -99,6 +100,7 @@ constexpr basic_spectrum<D> operator-(basic_spectrum<D> a, basic_spectrum<D> b) 
   return {detail::raw_tag{}, a.raw_value() - b.raw_value()};
 }
 template <class D, class E>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::minus, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator-(basic_spectrum<D>, basic_spectrum<E>);
 template <class D>
@@ -106,6 +108,7 @@ constexpr bool operator==(basic_spectrum<D> a, basic_spectrum<D> b) {
   return a.raw_value() == b.raw_value();
 }
 template <class D, class E>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::equal, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 operator==(basic_spectrum<D>, basic_spectrum<E>);
 template <class D, class E>
@@ -180,6 +183,7 @@ constexpr bool is_black(basic_spectrum<D> s) {
 }
 /// Per-channel exponential (Beer–Lambert transmittance): the exponent must be dimensionless.
 template <class D>
+  requires(!rules::dimensionless<D>)
 diagnose::argument_is_not_dimensionless<diagnose::op::exp, in_words<D>> exp(basic_spectrum<D>);
 template <class D>
   requires rules::dimensionless<D>
@@ -188,6 +192,7 @@ constexpr basic_spectrum<dim::dimensionless> exp(basic_spectrum<D> s) {
 }
 /// Per-channel square root; every exponent of D must be even.
 template <class D>
+  requires(!rules::even_exponents<D>)
 diagnose::sqrt_of_odd_exponent<in_words<D>> sqrt(basic_spectrum<D>);
 template <class D>
   requires rules::even_exponents<D>
@@ -195,6 +200,7 @@ constexpr basic_spectrum<dim::root<D, 2>> sqrt(basic_spectrum<D> s) {
   return {detail::raw_tag{}, glm::sqrt(s.raw_value())};
 }
 template <class D, class E>
+  requires(!rules::same_dimension<D, E>)
 diagnose::dimension_mismatch<diagnose::op::lerp, in_words<D>, in_words<E>, ratio_in_words<D, E>>
 lerp(basic_spectrum<D>, basic_spectrum<E>, real);
 template <class D>

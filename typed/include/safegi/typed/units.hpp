@@ -60,6 +60,7 @@ constexpr rep_of<Q> in(Q q, basic_unit<D> u) {
   return raw(q) / rep_of<Q>(u.factor);
 }
 template <quantity_like Q, class D>
+  requires(!rules::same_dimension<dimension_of<Q>, D>)
 diagnose::unit_of_another_dimension<in_words<dimension_of<Q>>, in_words<D>> in(Q, basic_unit<D>);
 
 /// The vocabulary's units (vocabulary.def, the same as shaders' and scene files'), in
