@@ -371,6 +371,13 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
                         ? "divide each by its own w first (h.xy / h.w): two projections' coordinates meet only after the perspective divide"
                         : space_hint(a.from, b.from),
                     code::E_SPACE_MISMATCH);
+    // hpoint<S> ± vec4(v, 0.0) of a vector of another space: an offset added in the wrong space.
+    for (const auto& [h, other] : {std::pair{&a, &b}, std::pair{&b, &a}})
+      if (h->geometry == Geometry::hpoint && other->affine && other->affine->from.is_known() && !consistent(h->from, other->affine->from))
+        return reject(std::string("cannot ") + verb(op) + " " + both + ": they are in different spaces",
+                      "add the offset in " + name_of_space(other->affine->from) + ", before the map to " + name_of_space(h->from) +
+                          " (m * (p + vec4(v, 0.0)))",
+                      code::E_SPACE_MISMATCH);
     // Colours as numbers, as scalars are: a plain colour times a cosine (a Lambert term of
     // unannotated lights) beside one times a lobe (Phong's specular) is a plain colour.
     const bool colours = colour_like(ga) && colour_like(gb);
