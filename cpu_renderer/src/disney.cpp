@@ -61,22 +61,7 @@ Real AnisotropicTrowbridgeReitz::lambda(DirectionShading w) const {
 }
 
 DirectionShading AnisotropicTrowbridgeReitz::sample_visible_normal(DirectionShading wo, Real u1, Real u2) const {
-  // ωo stretched to where both alphas are 1 and the visible normals a hemisphere's.
-  const Real vx0 = alpha_x_ * wo.x(), vy0 = alpha_y_ * wo.y();
-  const Real v_length = std::sqrt(vx0 * vx0 + vy0 * vy0 + wo.z() * wo.z());
-  const Real vx = vx0 / v_length, vy = vy0 / v_length, vz = wo.z() / v_length;
-  const Real across = std::sqrt(vx * vx + vy * vy);
-  const Real t1x = across > 0 ? -vy / across : Real(1), t1y = across > 0 ? vx / across : Real(0);
-  const Real t2x = -vz * t1y, t2y = vz * t1x, t2z = vx * t1y - vy * t1x;  // V × T1
-  // A uniform point of the disk across V, the half behind the hemisphere squeezed.
-  const Real r = std::sqrt(u1), phi = 2 * kPi * u2;
-  const Real p1 = r * std::cos(phi);
-  const Real s = (1 + vz) / 2;
-  const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
-  const Real p3 = std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
-  const Real nx = p1 * t1x + p2 * t2x + p3 * vx, ny = p1 * t1y + p2 * t2y + p3 * vy, nz = p2 * t2z + p3 * vz;
-  return sg::from_raw<DirectionShading>(
-      glm::normalize(sg::vec3_rep(alpha_x_ * nx, alpha_y_ * ny, std::max(Real(1e-6), nz))));
+  return sample_ggx_visible_normal(alpha_x_, alpha_y_, wo, u1, u2);
 }
 
 PdfSolidAngle AnisotropicTrowbridgeReitz::visible_normal_pdf(DirectionShading wo, DirectionShading h) const {

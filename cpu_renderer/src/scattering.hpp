@@ -74,6 +74,28 @@ inline std::optional<DirectionShading> refract(DirectionShading wo, DirectionSha
   return sg::normalize(wo * (-1 / eta) + h * (along / eta - depth));
 }
 
+// Heitz's 2018 construction ("Sampling the GGX Distribution of Visible Normals"): a normal drawn
+// from those ωo (cos θo > 0) sees under the GGX distribution of roughness (αx, αy).
+inline DirectionShading sample_ggx_visible_normal(Real alpha_x, Real alpha_y, DirectionShading wo, Real u1, Real u2) {
+  // ωo stretched to the configuration where alpha is 1 and the visible
+  // normals are a hemisphere's, projected onto the disk across it.
+  const Real vx0 = alpha_x * wo.x(), vy0 = alpha_y * wo.y();
+  const Real v_length = std::sqrt(vx0 * vx0 + vy0 * vy0 + wo.z() * wo.z());
+  const Real vx = vx0 / v_length, vy = vy0 / v_length, vz = wo.z() / v_length;
+  const Real across = std::sqrt(vx * vx + vy * vy);
+  const Real t1x = across > 0 ? -vy / across : Real(1), t1y = across > 0 ? vx / across : Real(0);
+  const Real t2x = -vz * t1y, t2y = vz * t1x, t2z = vx * t1y - vy * t1x;  // V × T1
+  // A uniform point on the disk, its half hidden behind the hemisphere squeezed by cos θ of V.
+  const Real r = std::sqrt(u1), phi = 2 * kPi * u2;
+  const Real p1 = r * std::cos(phi);
+  const Real s = (1 + vz) / 2;
+  const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
+  const Real p3 = std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
+  // Lifted onto the hemisphere, then unstretched.
+  const Real nx = p1 * t1x + p2 * t2x + p3 * vx, ny = p1 * t1y + p2 * t2y + p3 * vy, nz = p2 * t2z + p3 * vz;
+  return sg::from_raw<DirectionShading>(glm::normalize(sg::vec3_rep(alpha_x * nx, alpha_y * ny, std::max(Real(1e-6), nz))));
+}
+
 // The isotropic Trowbridge–Reitz (GGX) distribution of microfacet normals h
 // with roughness alpha. D(h) is a density per projected solid angle of
 // normals, ∫ D(h) cos θ_h dω_h = 1, hence its type.
@@ -129,23 +151,7 @@ class TrowbridgeReitz {
   // 2014 slopes; this draws it by Heitz's 2018 construction ("Sampling the
   // GGX Distribution of Visible Normals"): the same density, another map of (u1, u2).
   DirectionShading sample_visible_normal(DirectionShading wo, Real u1, Real u2) const {
-    // ωo stretched to the configuration where alpha is 1 and the visible
-    // normals are a hemisphere's, projected onto the disk across it.
-    const Real vx0 = alpha_ * wo.x(), vy0 = alpha_ * wo.y();
-    const Real v_length = std::sqrt(vx0 * vx0 + vy0 * vy0 + wo.z() * wo.z());
-    const Real vx = vx0 / v_length, vy = vy0 / v_length, vz = wo.z() / v_length;
-    const Real across = std::sqrt(vx * vx + vy * vy);
-    const Real t1x = across > 0 ? -vy / across : Real(1), t1y = across > 0 ? vx / across : Real(0);
-    const Real t2x = -vz * t1y, t2y = vz * t1x, t2z = vx * t1y - vy * t1x;  // V × T1
-    // A uniform point on the disk, its half hidden behind the hemisphere squeezed by cos θ of V.
-    const Real r = std::sqrt(u1), phi = 2 * kPi * u2;
-    const Real p1 = r * std::cos(phi);
-    const Real s = (1 + vz) / 2;
-    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
-    const Real p3 = std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
-    // Lifted onto the hemisphere, then unstretched.
-    const Real nx = p1 * t1x + p2 * t2x + p3 * vx, ny = p1 * t1y + p2 * t2y + p3 * vy, nz = p2 * t2z + p3 * vz;
-    return sg::from_raw<DirectionShading>(glm::normalize(sg::vec3_rep(alpha_ * nx, alpha_ * ny, std::max(Real(1e-6), nz))));
+    return sample_ggx_visible_normal(alpha_, alpha_, wo, u1, u2);
   }
   // The density of sample_visible_normal, per solid angle of normals. The
   // facet's area seen from ωo (ωo·h of it, G1 unmasked) over the surface's
