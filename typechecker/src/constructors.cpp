@@ -393,10 +393,12 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
         out.type.affine_w = texel->geometry == Geometry::point ? 1 : 0;
         // A filtered lookup blends neighbouring texels (and 8-bit storage rounds them): the normal it gives
         // is shorter than 1 until normalize(), as an interpolated one is. texelFetch reads one texel as stored.
-        if (texel->geometry == Geometry::normal && sig.name.rfind("texelFetch", 0) != 0) {
-          Type filtered = *texel;
-          filtered.length_loss = Type::LengthLoss::filtered;
-          out.type.affine = std::make_shared<const Type>(filtered);
+        // A normal texel is the surface's own normal at the pixel looked up: it points away from that point.
+        if (texel->geometry == Geometry::normal) {
+          Type stored = *texel;
+          stored.orientation = Orientation::away;
+          if (sig.name.rfind("texelFetch", 0) != 0) stored.length_loss = Type::LengthLoss::filtered;
+          out.type.affine = std::make_shared<const Type>(stored);
         }
       }
       return out;

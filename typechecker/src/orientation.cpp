@@ -130,7 +130,7 @@ std::optional<Orientation> Checker::builtin_orientation(const std::string& name,
     auto sign = [](Orientation o) { return o == Orientation::away ? 1 : o == Orientation::toward ? -1 : 0; };
     return sign(args[0].type.orientation) * sign(args[1].type.orientation) < 0 ? Orientation::toward : Orientation::none;
   }
-  if ((name == "max" || name == "clamp") && !negative_cosine_kept(name, args, call_range)) return std::nullopt;
+  if ((name == "max" || name == "clamp" || name == "acos") && !negative_cosine_kept(name, args, call_range)) return std::nullopt;
   if (name == "normalize" && args.size() == 1) return args[0].type.orientation;
   if (name == "transform" && args.size() == 2) return args[1].type.orientation;  // the shaded point moves with its space
   return Orientation::none;
@@ -196,7 +196,8 @@ bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Va
     if (a.type.shape == Shape::scalar && a.type.orientation == Orientation::toward) cosine = &a;
     zero_bound = zero_bound || (a.number && *a.number == 0.0);
   }
-  if (cosine == nullptr || !zero_bound) return true;
+  const bool angle = name == "acos";  // the angle to the other side, π − θ
+  if (cosine == nullptr || (!zero_bound && !angle)) return true;
   std::string fixed;  // dot(n, -d) when the argument is the dot product itself
   if (const auto* call = ast::dyn_cast<ast::CallExpr>(without_parens(expression_at(cosine->range)));
       call && call->callee == "dot" && call->args.size() == 2) {
@@ -207,9 +208,11 @@ bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Va
                                  : print_expression(*call->args[0]) + ", " + reversed_expression(call->args[1])) + ")";
     }
   }
-  Diagnostic d = Diagnostic::error(cosine->range, "'" + name + "' bounds at 0 a cosine between the shaded point's normal and a "
-                                                      "direction toward the surface: it is negative wherever the surface faces "
-                                                      "that direction, so the result is 0 there")
+  const std::string between = "a cosine between the shaded point's normal and a direction toward the surface";
+  Diagnostic d = Diagnostic::error(cosine->range, angle ? "'acos' of " + between + " is the angle to the other side of the surface, π − θ"
+                                                        : "'" + name + "' bounds at 0 " + between +
+                                                              ": it is negative wherever the surface faces that direction, so the "
+                                                              "result is 0 there")
                      .with_code(code::E_ORIENTATION)
                      .with_highlight(call_range);
   add_origin_note(d, *cosine);
