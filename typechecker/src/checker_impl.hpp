@@ -76,6 +76,10 @@ struct Value {
   const StructInfo* readonly_reference = nullptr;
   bool stage_output = false;     // an `out` of the stage, or a member or component of one
   bool pi_multiple = false;      // a plain number made with a multiple of π (2.0 * PI * u): an angle in radians
+  // How many times the value divides by a squared distance written out (d * d of a length; −1 for
+  // d * d itself): 1/d² written out may be the solid angle per projected area the inverse-square
+  // law gives (inverse_square(d)); where the value is stored, that reading is taken when it fits.
+  int inverse_squares = 0;
   std::optional<LengthOf> length_of;  // length(L) of a variable L, or a local that holds it
   std::optional<PiFactor> pi_factor;  // of unknown dimension only through an unannotated π constant
   std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
@@ -96,6 +100,7 @@ struct Variable {
   bool stage_output = false;          // what it holds leaves the stage
   bool zero_start = false;            // an unannotated local that starts at zero: its first value names its type
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
+  int inverse_squares = 0;            // Value::inverse_squares of an unannotated local's initialiser, until written
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   // A float initialised with dot(a, b): a and b as written, until it is written (a written-out reflection
   // 2 n (n·w) - w may name its cosine).
@@ -213,6 +218,9 @@ class Checker {
   std::optional<Value> map_matrix_call(const std::string& name, const std::vector<Value>& args, SourceRange call_range);
   std::optional<Value> homogeneous_application(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
   Value compose_3x3(const Value& lhs, const Value& rhs, SourceRange op_range, SourceRange range);
+  void carry_inverse_squares(const ast::BinaryExpr& node, const Value& lhs, const Value& rhs, Value& out) const;
+  std::optional<DimSlot> inverse_square_reading(const Value& value) const;
+  std::optional<Value> inverse_square_as_solid_angle(const Type& target, const Value& value) const;
   bool homogeneous_part_kept(const Value& value, SourceRange target_range, const std::string& target_name);
   // A user function's parameters: homogeneous coordinates without their w for a parameter that is not
   // an hpoint, and a vec4 whose xyz were divided by its w (divided_in_place) for one that is.

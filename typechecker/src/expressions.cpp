@@ -69,6 +69,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.read_only = var->read_only;
     v.stage_output = var->stage_output;
     v.pi_multiple = var->pi_multiple;
+    v.inverse_squares = var->inverse_squares;
     v.length_of = var->length_of;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
@@ -402,6 +403,8 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
                                const char* action) {
   if (std::optional<Value> radians = pi_multiple_as_angle(target, value))
     return check_assignable(target, *radians, target_range, target_name, target_origin, action);
+  if (std::optional<Value> jacobian = inverse_square_as_solid_angle(target, value))
+    return check_assignable(target, *jacobian, target_range, target_name, target_origin, action);
   const Type& v = value.type;
   if (target.is_error() || v.is_error()) return true;
   const std::string subject = target_name.empty() ? std::string("a value") : "'" + target_name + "'";
@@ -447,7 +450,8 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   }
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
-    return fail(sentence, physics_hint(target.dim, found, value.range), code::E_DIMENSION_MISMATCH);
+    return fail(sentence, physics_hint(target.dim, inverse_square_reading(value).value_or(found), value.range),
+                code::E_DIMENSION_MISMATCH);
   if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, value)) {
     Type shown = v;
     shown.dim = *as_pi;

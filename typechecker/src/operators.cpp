@@ -94,6 +94,7 @@ Value Checker::binary(const ast::BinaryExpr& e) {
     const Value lhs = std::move(value);
     value = arithmetic(&node, node.op, lhs, rhs, node.op_range, node.range);
     if (!carry_pi_factor(node.op, lhs, rhs, value, node.op_range)) value = error_value(node.range);
+    carry_inverse_squares(node, lhs, rhs, value);
     // Only the leftmost operand is a variable as written: `L / d`, not `a * L / d`.
     if (node.op == ast::BinaryOp::Div && it == spine.rbegin() && !value.type.is_error())
       if (std::optional<Value> unit = divided_by_own_length(node.lhs, lhs, rhs, node.range)) value = *unit;
@@ -542,6 +543,59 @@ Value Checker::compose_3x3(const Value& lhs, const Value& rhs, SourceRange op_ra
   out.type.normal_matrix = normal;
   out.type.geometry = !normal && a.geometry == Geometry::rigidmap && b.geometry == Geometry::rigidmap ? Geometry::rigidmap
                                                                                                         : Geometry::map;
+  return out;
+}
+
+// d * d of a length, and the products and quotients of one: how many times a value divides by a
+// squared distance (Value::inverse_squares).
+void Checker::carry_inverse_squares(const ast::BinaryExpr& node, const Value& lhs, const Value& rhs, Value& out) const {
+  if (out.type.is_error() || (node.op != ast::BinaryOp::Mul && node.op != ast::BinaryOp::Div)) return;
+  const std::optional<Dimension> length = result_.registry.find_dimension("length");
+  const auto is_length = [&](const Value& v) {
+    const DimSlot d = value_dimension(v.type, result_.registry);
+    return length && v.type.shape == Shape::scalar && d.is_known() && d.value == *length;
+  };
+  if (node.op == ast::BinaryOp::Mul && is_length(lhs) && is_length(rhs) && node.lhs && node.rhs &&
+      print_expression(*node.lhs) == print_expression(*node.rhs)) {
+    out.inverse_squares = -1;
+    return;
+  }
+  // x * d * d and x / d / d: the chain's last two factors are the squared distance.
+  if (const auto* inner = ast::dyn_cast<ast::BinaryExpr>(ast::without_parens(node.lhs));
+      inner && inner->op == node.op && inner->rhs && node.rhs && is_length(rhs) &&
+      print_expression(*inner->rhs) == print_expression(*node.rhs)) {
+    const auto found = result_.types.find(inner->rhs);
+    if (found != result_.types.end() && is_length(Value{.type = found->second})) {
+      out.inverse_squares = lhs.inverse_squares + (node.op == ast::BinaryOp::Div ? 1 : -1);
+      return;
+    }
+  }
+  const int sign = node.op == ast::BinaryOp::Div ? -1 : 1;
+  out.inverse_squares = lhs.inverse_squares + sign * rhs.inverse_squares;
+}
+
+// The dimension of a value that divides by written-out squared distances when each 1/d² is the
+// solid angle per projected area (sr / (m²·proj)) that inverse_square(d) is.
+std::optional<DimSlot> Checker::inverse_square_reading(const Value& value) const {
+  if (value.inverse_squares == 0) return std::nullopt;
+  const DimensionRegistry& reg = result_.registry;
+  const std::optional<Dimension> sr = reg.find_dimension("solid_angle"), proj = reg.find_dimension("proj");
+  const DimSlot have = value_dimension(value.type, reg);
+  if (!sr || !proj || !have.is_known()) return std::nullopt;
+  const Checked<Dimension> per = divide(*sr, *proj);
+  const Checked<Dimension> jacobian = per ? power(*per, value.inverse_squares) : per;
+  const Checked<Dimension> read = jacobian ? multiply(have.value, *jacobian) : jacobian;
+  return read ? std::optional<DimSlot>(DimSlot::known(*read)) : std::nullopt;
+}
+
+// Such a value stored where that reading fits.
+std::optional<Value> Checker::inverse_square_as_solid_angle(const Type& target, const Value& value) const {
+  const DimSlot want = value_dimension(target, result_.registry), have = value_dimension(value.type, result_.registry);
+  const std::optional<DimSlot> read = inverse_square_reading(value);
+  if (!read || !want.is_known() || !same_dimension(*read, want) || same_dimension(have, want)) return std::nullopt;
+  Value out = value;
+  out.type.dim = *read;
+  out.inverse_squares = 0;
   return out;
 }
 

@@ -162,6 +162,7 @@ void Checker::note_write(const ast::Expr* target) {
       ++found->second.version;
       found->second.length_of.reset();
       found->second.dot_of.reset();
+      found->second.inverse_squares = 0;
       found->second.pi_constant.reset();
       return;
     }

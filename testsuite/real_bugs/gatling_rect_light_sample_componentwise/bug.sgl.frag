@@ -30,7 +30,7 @@ void main() {
     float dist = length(dir);
     direction<world> dirToLight = normalize(dir);
 
-    float geometryTerm = max(0.0, dot(lightNormal, -dirToLight)) * inverse_square(dist);
+    float geometryTerm = max(0.0, dot(lightNormal, -dirToLight)) / (dist * dist);
     vec3 power = lightIntensity * geometryTerm;
     float<pdf_area> pdf = 1.0 / (lightWidth * lightHeight);
 

@@ -36,7 +36,7 @@ void main() {
     direction<world> dirToLight = normalize(dir);
 
     float cosTheta = (lightRadius > 0.0) ? max(0.0, dot(normalize(samplePos - lightPos), -dirToLight)) : 1.0;
-    float geometryTerm = cosTheta * inverse_square(dist);
+    float geometryTerm = cosTheta / (dist * dist);
 
     vec3 power = lightIntensity * geometryTerm;
     float pdf = samplePdf;

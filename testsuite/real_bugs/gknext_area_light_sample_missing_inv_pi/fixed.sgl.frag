@@ -33,7 +33,7 @@ void main() {
         direction<world> wi = normalize(tolight);
         const float epsVariance = 0.01;
         float cosine = max(dot(lightNormal, -wi), epsVariance);
-        float<pdf_solid_angle> light_pdf = 1.0 / (cosine * lightArea * inverse_square(dist));
+        float<pdf_solid_angle> light_pdf = dist * dist / (cosine * lightArea);
         float weight = M_1_PI / light_pdf;
         spectrum<radiance> L = albedo * weight * lightEmit;
         color = L;
