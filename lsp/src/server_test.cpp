@@ -187,7 +187,7 @@ TEST(Server, DiagnosticsHaveRangeSeverityCodeAndRelatedInformation) {
       {"location": {"uri": "file:///tmp/a.sgl.frag", "range": {"start": {"line": 8, "character": 36}, "end": {"line": 8, "character": 37}}},
        "message": "'E' declared here"},
       {"location": {"uri": "file:///tmp/a.sgl.frag", "range": {"start": {"line": 8, "character": 40}, "end": {"line": 8, "character": 51}}},
-       "message": "help: the value lacks a factor of solid_angle: missing division by a pdf?"}]})j"))
+       "message": "help: the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?"}]})j"))
       << published.dump(1);
 }
 
@@ -200,7 +200,7 @@ TEST(Server, WithoutRelatedInformationNotesJoinTheMessageAsSafeglslcPrintsThem) 
   EXPECT_EQ(published["diagnostics"][0]["message"],
             "cannot initialize 'E' of type spectrum<irradiance> with a value of type spectrum<energy·length⁻²·time⁻¹·solid_angle⁻¹>\n"
             "/tmp/a.sgl.frag:9:42: note: 'E' declared here\n"
-            "help: the value lacks a factor of solid_angle: missing division by a pdf?");
+            "help: the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?");
 }
 
 TEST(Server, ControlBytesOfTheSourceAreEscapedInMessages) {
