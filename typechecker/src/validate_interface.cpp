@@ -123,8 +123,9 @@ void Checker::validate_interface(const ast::VariableDecl& d, const Type& base) {
   check_interface_variable(*this, d, base, options_.stage);
 }
 
-void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
+void Checker::validate_block(const ast::InterfaceBlockDecl& d, bool layouts) {
   const ast::TypeQualifiers& q = d.qualifiers;
+  if (!memory_model_qualifiers(q)) return;
   const char* storage = q.has("uniform") ? "uniform" : q.has("buffer") ? "buffer" : q.has("in") ? "in" : q.has("out") ? "out" : "";
   const std::string storage_word = storage;
   if (storage_word == "in" && options_.stage == Stage::vertex) {
@@ -171,6 +172,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
              "define the struct at global scope and use its name");
       return;
     }
+    if (!memory_model_qualifiers(member->qualifiers)) return;
     for (const ast::Qualifier& x : member->qualifiers.list) {
       if (!is_storage_word(x.word) || x.word == storage_word) continue;
       reject(x.range, "member storage '" + x.word + "' contradicts the block's '" + storage_word + "'", code::E_INTERFACE_BLOCK);
@@ -192,7 +194,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
       return;
     }
   }
-  validate_block_layouts(d);
+  if (layouts) validate_block_layouts(d);
 }
 
 }  // namespace safegi::detail
