@@ -74,6 +74,10 @@ static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, boo
       slot = &storage;
       what = "storage qualifier";
     } else if (is_auxiliary_word(x.word)) {
+      // GL_NV_mesh_shader: a per-view output may also be per-primitive (`perviewNV perprimitiveNV out vec4 v[][];`).
+      const bool view_and_primitive = auxiliary && ((auxiliary->word == "perviewNV" && x.word == "perprimitiveNV") ||
+                                                    (auxiliary->word == "perprimitiveNV" && x.word == "perviewNV"));
+      if (view_and_primitive) continue;
       slot = &auxiliary;
       what = "auxiliary qualifier (centroid, sample, patch)";
     } else if (x.kind == ast::QualifierKind::Interpolation) {
