@@ -164,6 +164,16 @@ void Checker::declare_builtin_variables() {
                         {"gl_PointSize", Type::scalar_of(Scalar::float_)},
                         {"gl_ClipDistance", parse_simple_type("float[]")},
                         {"gl_CullDistance", parse_simple_type("float[]")}};
+  // GL_NV_stereo_view_rendering and GL_NVX_multiview_per_view_attributes add members (glslang's
+  // spv.stereoViewRendering.tesc, spv.multiviewPerViewAttributes.tesc).
+  if (const LanguageLevel* level = language(); level && level->extension_enabled("GL_NV_stereo_view_rendering")) {
+    per_vertex->fields.push_back({"gl_SecondaryPositionNV", Type::vector_of(Scalar::float_, 4)});
+    per_vertex->fields.push_back({"gl_SecondaryViewportMaskNV", parse_simple_type("int[]")});
+  }
+  if (const LanguageLevel* level = language(); level && level->extension_enabled("GL_NVX_multiview_per_view_attributes")) {
+    per_vertex->fields.push_back({"gl_PositionPerViewNV", parse_simple_type("vec4[]")});
+    per_vertex->fields.push_back({"gl_ViewportMaskPerViewNV", parse_simple_type("int[]")});
+  }
   if (compatibility_profile()) {  // GLSL 1.50 compatibility §7.1: the fixed-function varyings
     for (const char* name : {"gl_FrontColor", "gl_BackColor", "gl_FrontSecondaryColor", "gl_BackSecondaryColor", "gl_ClipVertex"})
       per_vertex->fields.push_back({name, Type::vector_of(Scalar::float_, 4)});

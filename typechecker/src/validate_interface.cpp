@@ -157,11 +157,15 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d, bool layouts) {
            code::E_INTERFACE_BLOCK);
     return;
   }
-  if (d.block_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+  // The built-in blocks a shader may redeclare: gl_PerVertex, and a mesh shader's vertex and primitive blocks.
+  const bool builtin_block = d.block_name == "gl_PerVertex" || d.block_name == "gl_MeshPerVertexNV" ||
+                             d.block_name == "gl_MeshPerVertexEXT" || d.block_name == "gl_MeshPerPrimitiveNV" ||
+                             d.block_name == "gl_MeshPerPrimitiveEXT";
+  if (d.block_name.rfind("gl_", 0) == 0 && !builtin_block) {
     reject(d.block_name_range, "block name '" + d.block_name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
     return;
   }
-  if (d.instance_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+  if (d.instance_name.rfind("gl_", 0) == 0 && !builtin_block) {
     reject(d.instance_name_range, "instance name '" + d.instance_name + "' begins with 'gl_', which is reserved",
            code::E_RESERVED_NAME);
     return;
@@ -181,7 +185,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d, bool layouts) {
     for (const ast::Declarator& decl : member->declarators) {
       if (!d.instance_name.empty() && member->qualifiers.has("readonly"))
         validation_.readonly_members.emplace(d.instance_name + "." + decl.name, decl.name_range);
-      if (decl.name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+      if (decl.name.rfind("gl_", 0) == 0 && !builtin_block) {
         reject(decl.name_range, "member name '" + decl.name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
         return;
       }
