@@ -41,7 +41,7 @@ const std::unordered_map<std::string, Word>& word_table() {
     }
     // Storage classes of ray tracing and mesh shading (the lexer makes them keywords only with their extension).
     for (const char* s : {"rayPayloadEXT", "rayPayloadInEXT", "hitAttributeEXT", "callableDataEXT", "callableDataInEXT",
-                          "rayPayloadNV", "rayPayloadInNV", "hitAttributeNV", "callableDataNV",
+                          "rayPayloadNV", "rayPayloadInNV", "hitAttributeNV", "hitObjectAttributeNV", "callableDataNV",
                           "callableDataInNV", "taskPayloadSharedEXT", "perprimitiveEXT",
                           "perprimitiveNV", "perviewNV", "taskNV"}) {
       w.emplace(s, Word{T::QualKw, QK::Storage});

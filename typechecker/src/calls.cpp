@@ -103,6 +103,10 @@ bool Checker::atomic_overload_available(const std::string& name, const std::vect
   const std::string what = "'" + name + "' of " + (image ? "a float image" : name_of(target));
   const bool add_like = op == "Add" || op == "Exchange" || op == "Load" || op == "Store";
   if (image && op == "Exchange") return true;  // GLSL 4.50's imageAtomicExchange(float)
+  // GL_NV_shader_atomic_float (OpenGL; Mesa, piglit): add and exchange of a float, in memory or a float image.
+  if ((op == "Add" || op == "Exchange") && (image || target.scalar == Scalar::float_) &&
+      level->extension_enabled("GL_NV_shader_atomic_float"))
+    return true;
   if (float32_64 && add_like) return need("GL_EXT_shader_atomic_float", what);
   if (add_like || op == "Min" || op == "Max") return need("GL_EXT_shader_atomic_float2", what);
   reject(where, what + ": only integer " + (image ? "images" : "values") + " have atomic " + op, code::E_NO_OVERLOAD);
