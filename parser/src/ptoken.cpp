@@ -41,7 +41,7 @@ const std::unordered_map<std::string, Word>& word_table() {
     }
     // Storage classes of ray tracing and mesh shading (the lexer makes them keywords only with their extension).
     for (const char* s : {"rayPayloadEXT", "rayPayloadInEXT", "hitAttributeEXT", "callableDataEXT", "callableDataInEXT",
-                          "rayPayloadNV", "rayPayloadInNV", "hitAttributeNV", "callableDataNV",
+                          "rayPayloadNV", "rayPayloadInNV", "hitAttributeNV", "hitObjectAttributeNV", "callableDataNV",
                           "callableDataInNV", "taskPayloadSharedEXT", "perprimitiveEXT",
                           "perprimitiveNV", "perviewNV", "taskNV"}) {
       w.emplace(s, Word{T::QualKw, QK::Storage});
@@ -52,7 +52,7 @@ const std::unordered_map<std::string, Word>& word_table() {
     w.emplace("invariant", Word{T::QualKw, QK::Invariant});
     w.emplace("precise", Word{T::QualKw, QK::Precise});
     for (const char* s : {"coherent", "volatile", "restrict", "readonly", "writeonly", "devicecoherent",
-                          "queuefamilycoherent", "workgroupcoherent", "subgroupcoherent", "nonprivate"}) {
+                          "queuefamilycoherent", "workgroupcoherent", "subgroupcoherent", "shadercallcoherent", "nonprivate"}) {
       w.emplace(s, Word{T::QualKw, QK::Memory});
     }
     return w;

@@ -64,7 +64,7 @@ std::optional<Type> glsl_builtin_type(const std::string& name) {
   for (const char* opaque : {"sampler", "isampler", "usampler", "image", "iimage", "uimage", "texture", "itexture",
                              "utexture", "subpassInput", "isubpassInput", "usubpassInput", "atomic_uint",
                              "f16sampler", "f16image", "f16texture", "f16subpassInput", "i64image", "u64image",
-                             "accelerationStructure", "rayQuery"}) {
+                             "accelerationStructure", "rayQuery", "hitObjectNV"}) {
     const std::string p = opaque;
     if (name.compare(0, p.size(), p) == 0) {
       Type t;

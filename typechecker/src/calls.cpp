@@ -76,6 +76,43 @@ bool Checker::extension_name(const std::string& name) {
   return false;
 }
 
+bool Checker::atomic_overload_available(const std::string& name, const std::vector<Value>& args, SourceRange where) {
+  const LanguageLevel* level = language();
+  if (!level || args.empty()) return true;
+  auto need = [&](const char* extension, const std::string& what) {
+    if (level->extension_enabled(extension)) return true;
+    reject(where, what + " requires " + extension, code::E_VERSION, "enable it with '#extension " + std::string(extension) + " : enable'");
+    return false;
+  };
+  const char* scope_semantics = "GL_KHR_memory_scope_semantics";
+  if (name == "memoryBarrier") return need(scope_semantics, "memoryBarrier(scope, storage, semantics)");
+  const bool image = name.rfind("imageAtomic", 0) == 0;
+  const bool buffer = name.rfind("atomic", 0) == 0 && name.rfind("atomicCounter", 0) != 0;
+  if (!image && !buffer) return true;
+  const std::string op = name.substr(image ? 11 : 6);
+  const Type& target = args[0].type;
+  // The forms with (scope, storage semantics, semantics): more than 3 arguments, or for an image more
+  // than its coordinates, sample and data (glslang's builtInOpCheck).
+  const bool multisample = image && target.opaque.find("MS") != std::string::npos;
+  if (args.size() > (image ? (multisample ? 5u : 4u) : 3u) && op != "Load" && op != "Store" &&
+      !need(scope_semantics, "'" + name + "' with scope and semantics"))
+    return false;
+  const bool float32_64 = image ? target.opaque.rfind("image", 0) == 0 : target.scalar == Scalar::float_ || target.scalar == Scalar::double_;
+  const bool float16 = !image && target.scalar == Scalar::float16_;
+  if (!float32_64 && !float16) return true;
+  const std::string what = "'" + name + "' of " + (image ? "a float image" : name_of(target));
+  const bool add_like = op == "Add" || op == "Exchange" || op == "Load" || op == "Store";
+  if (image && op == "Exchange") return true;  // GLSL 4.50's imageAtomicExchange(float)
+  // GL_NV_shader_atomic_float (OpenGL; Mesa, piglit): add and exchange of a float, in memory or a float image.
+  if ((op == "Add" || op == "Exchange") && (image || target.scalar == Scalar::float_) &&
+      level->extension_enabled("GL_NV_shader_atomic_float"))
+    return true;
+  if (float32_64 && add_like) return need("GL_EXT_shader_atomic_float", what);
+  if (add_like || op == "Min" || op == "Max") return need("GL_EXT_shader_atomic_float2", what);
+  reject(where, what + ": only integer " + (image ? "images" : "values") + " have atomic " + op, code::E_NO_OVERLOAD);
+  return false;
+}
+
 Value Checker::call(const ast::CallExpr& e) {
   if (e.constructor_type) return constructor(e);
   std::vector<Value> args;
@@ -107,6 +144,7 @@ Value Checker::call(const ast::CallExpr& e) {
       return v;
     }
     Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
+    if (!v.type.is_error() && !atomic_overload_available(e.callee, args, e.callee_range)) return error_value(e.range);
     if (!v.type.is_error() && !unit_length_arguments(e.callee, args)) return error_value(e.range);
     if (e.callee == "length" && e.args.size() == 1 && !v.type.is_error()) v.length_of = length_of_variable(e.args[0]);
     const auto info = result_.calls.find(&e);

@@ -193,6 +193,9 @@ class Checker {
   Value convert_unit(const ast::ConvertExpr& e, const Value& v, const Dimension& target);
   Value convert_space(const ast::ConvertExpr& e, const Value& v, const SpaceSlot& target);
   // operators.cpp: the type of `lhs op rhs` for arithmetic, comparison, logical and bit operators.
+  std::optional<Value> reference_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range,
+                                            SourceRange range);
+  bool buffer_reference2(SourceRange where, const std::string& what);  // GL_EXT_buffer_reference2 enabled, else an error
   Value arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range,
                    SourceRange range);
   Value geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, Type shape, SourceRange op_range,
@@ -295,11 +298,16 @@ class Checker {
   void validate_global_initializer(const ast::Declarator& decl);  // GLSL ES: constant
   // The built-in `name` exists at this version, stage and profile (builtin_availability.def); else one error at `where`.
   bool builtin_available(const std::string& name, SourceRange where, bool function);
+  bool memory_model_qualifiers(const ast::TypeQualifiers& q);  // devicecoherent … nonprivate: their extension
+  // The extensions glslang asks of an overload once resolved: the memory-model forms (scope and semantics
+  // arguments) need GL_KHR_memory_scope_semantics, atomics on floating-point values
+  // GL_EXT_shader_atomic_float or _float2 (calls.cpp).
+  bool atomic_overload_available(const std::string& name, const std::vector<Value>& args, SourceRange where);
   void validate_variable(const ast::VariableDecl& d, const Type& base, bool global);
   void validate_interface(const ast::VariableDecl& d, const Type& base);  // a global input or output
   void validate_struct_members(const ast::StructDecl& s);
   void validate_builtin_redeclaration(const ast::VariableDecl& d, const ast::Declarator& decl, const Type& type);
-  void validate_block(const ast::InterfaceBlockDecl& d);
+  void validate_block(const ast::InterfaceBlockDecl& d, bool layouts = true);
   void validate_qualifier_decl(const ast::QualifierDecl& d, bool global);
   void validate_function(const ast::FunctionDecl& d, const Function& f);
   void validate_precision(const ast::PrecisionDecl& d);
@@ -407,6 +415,9 @@ class Checker {
   int muted_ = 0;  // > 0: report() drops diagnostics (a check tried, not made)
   std::unordered_map<std::string, std::vector<Function>> functions_;
   std::unordered_map<std::string, const StructInfo*> structs_;
+  // GL_EXT_buffer_reference2: the bytes r + 1 moves a reference of each block type (its size rounded up
+  // to its buffer_reference_align, 16 unless given); absent when the size is not known.
+  std::unordered_map<const StructInfo*, long long> reference_strides_;
   std::unordered_map<std::string, Function> subroutine_types_;  // `subroutine void T(...);`
   // Template parameters of the function being declared (resolve_type maps their names to generic slots).
   const std::vector<std::string>* template_dims_ = nullptr;

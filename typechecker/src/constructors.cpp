@@ -23,7 +23,11 @@ bool is_address(const Type& a) {
 Value Checker::buffer_reference_constructor(const ast::CallExpr& e, const Value& out, const std::vector<Value>& args) {
   const Type& a = args.size() == 1 ? args[0].type : Type::error();
   const bool reference = a.shape == Shape::structure && a.structure->buffer_reference && !a.is_array();
-  if (args.size() == 1 && (is_address(a) || reference)) return out;
+  if (args.size() == 1 && (is_address(a) || reference)) {
+    Value made = out;
+    if (a.shape == Shape::scalar || reference) made.constant = args[0].constant;  // T(uint64_t(3)) is address 3
+    return made;
+  }
   report(Diagnostic::error(e.range, "a buffer reference '" + out.type.structure->name +
                                         "' is made from one 64-bit address (uint64_t or uvec2) or another reference")
              .with_code(code::E_CONSTRUCTOR));
@@ -175,8 +179,11 @@ Value Checker::constructor(const ast::CallExpr& e) {
     return out;
   // A reference's address: uint64_t(reference), or uvec2(reference) (GL_EXT_buffer_reference_uvec2).
   if (args.size() == 1 && is_address(t) && args[0].type.shape == Shape::structure && args[0].type.structure->buffer_reference &&
-      !args[0].type.is_array())
-    return out;
+      !args[0].type.is_array()) {
+    Value address = out;
+    if (t.shape == Shape::scalar) address.constant = args[0].constant;  // const uint64_t t = uint64_t(T(uint64_t(10)));
+    return address;
+  }
   if (t.shape == Shape::opaque && combined_sampler(t, args)) return out;
   if (t.shape == Shape::opaque && args.size() == 2 && t.opaque.find("sampler") != std::string::npos)
     return fail(e.range, what + " is made from a " + texture_of_sampler(t.opaque) + " and a sampler or samplerShadow, not from " +
@@ -419,9 +426,9 @@ Value Checker::rule_call(const ast::CallExpr* node, const Signature& sig, std::v
       out.type = sig.name == "textureQueryLod" || sig.name == "textureQueryLOD" ? Type::vector_of(Scalar::float_, 2) : Type::scalar_of(Scalar::int_);
       return out;
     case BuiltinRule::image:
-      if (sig.name == "imageStore") out.type = Type::void_type();
+      if (sig.name == "imageStore" || sig.name == "imageAtomicStore") out.type = Type::void_type();
       else if (sig.name == "imageLoad") out.type = Type::vector_of(texel_scalar, 4);
-      else out.type = Type::scalar_of(is_integer_scalar(texel_scalar) ? texel_scalar : Scalar::int_);
+      else out.type = Type::scalar_of(texel_scalar);  // imageAtomicExchange (GLSL 4.50), imageAtomicAdd (GL_EXT_shader_atomic_float) of a float image: float
       if (sampler.texel && sig.name == "imageLoad") out.type.dim = value_dimension(*sampler.texel, result_.registry);
       return out;
     default: return no_match();

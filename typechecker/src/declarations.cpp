@@ -164,6 +164,16 @@ void Checker::declare_builtin_variables() {
                         {"gl_PointSize", Type::scalar_of(Scalar::float_)},
                         {"gl_ClipDistance", parse_simple_type("float[]")},
                         {"gl_CullDistance", parse_simple_type("float[]")}};
+  // GL_NV_stereo_view_rendering and GL_NVX_multiview_per_view_attributes add members (glslang's
+  // spv.stereoViewRendering.tesc, spv.multiviewPerViewAttributes.tesc).
+  if (const LanguageLevel* level = language(); level && level->extension_enabled("GL_NV_stereo_view_rendering")) {
+    per_vertex->fields.push_back({"gl_SecondaryPositionNV", Type::vector_of(Scalar::float_, 4)});
+    per_vertex->fields.push_back({"gl_SecondaryViewportMaskNV", parse_simple_type("int[]")});
+  }
+  if (const LanguageLevel* level = language(); level && level->extension_enabled("GL_NVX_multiview_per_view_attributes")) {
+    per_vertex->fields.push_back({"gl_PositionPerViewNV", parse_simple_type("vec4[]")});
+    per_vertex->fields.push_back({"gl_ViewportMaskPerViewNV", parse_simple_type("int[]")});
+  }
   if (compatibility_profile()) {  // GLSL 1.50 compatibility §7.1: the fixed-function varyings
     for (const char* name : {"gl_FrontColor", "gl_BackColor", "gl_FrontSecondaryColor", "gl_BackSecondaryColor", "gl_ClipVertex"})
       per_vertex->fields.push_back({name, Type::vector_of(Scalar::float_, 4)});
@@ -423,10 +433,23 @@ void Checker::buffer_reference_block(const ast::InterfaceBlockDecl& d) {
     }
   symbols_.declare_fields(info, d.members);
   validate_block_layouts(d);
+  reference_strides_.erase(info);
+  if (auto layout = result_.block_layouts.find(&d); layout != result_.block_layouts.end() && layout->second.size >= 0) {
+    long long align = 16;
+    if (const ast::LayoutId* a = find_layout_id(d.qualifiers, "buffer_reference_align"))
+      if (std::optional<long long> v = layout_value(*a); v && *v > 0) align = *v;
+    reference_strides_[info] = (layout->second.size + align - 1) / align * align;
+  }
 }
 
 void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
-  if (d.qualifiers.has_layout_id("buffer_reference")) return buffer_reference_block(d);
+  const bool reference_type = d.qualifiers.has_layout_id("buffer_reference");
+  if (reference_type) {
+    buffer_reference_block(d);
+    // `layout(buffer_reference, set = 3, binding = 1) buffer T { … } x;` (glslang): T is the type of a
+    // reference, and x a storage buffer of T's members at that set and binding (spv.bufferhandle6.frag).
+    if (d.instance_name.empty()) return;
+  }
   auto info = std::make_unique<StructInfo>();
   info->name = d.block_name;
   const bool read_only = d.qualifiers.has("uniform") || d.qualifiers.has("in") || d.qualifiers.has("readonly");
@@ -460,7 +483,7 @@ void Checker::block_decl(const ast::InterfaceBlockDecl& d) {
     declare_variable(std::move(v));
   }
   result_.structs.push_back(std::move(info));
-  validate_block(d);
+  validate_block(d, !reference_type);  // a reference block's layout was placed by buffer_reference_block
 }
 
 void Checker::function_decl(const ast::FunctionDecl& d) {

@@ -565,6 +565,11 @@ Value Checker::index(const ast::IndexExpr& e) {
     out.type = Type::vector_of(t.scalar, t.rows);
     out.type.dim = is_map(t.geometry) ? DimSlot::unknown() : t.dim;
     if (idx.constant) map_column(out.type, t, *idx.constant);
+  } else if (t.shape == Shape::structure && t.structure && t.structure->buffer_reference) {
+    // GL_EXT_buffer_reference2: r[i] is r + i, a reference (glslang: indices add up, r[i][j] is r + i + j).
+    if (!buffer_reference2(e.range, "indexing a buffer reference")) return error_value(e.range);
+    out.lvalue = false;
+    return out;
   } else {
     report(Diagnostic::error(e.base->range, "subscripted value of type " + name_of(t) + " is not an array, vector or matrix")
                .with_code(code::E_INDEX_BASE));

@@ -103,6 +103,55 @@ Value Checker::binary(const ast::BinaryExpr& e) {
   return value;
 }
 
+bool Checker::buffer_reference2(SourceRange where, const std::string& what) {
+  const LanguageLevel* level = language();
+  if (!level || level->extension_enabled("GL_EXT_buffer_reference2")) return true;
+  reject(where, what + " requires GL_EXT_buffer_reference2", code::E_VERSION, "enable it with '#extension GL_EXT_buffer_reference2 : enable'");
+  return false;
+}
+
+// GL_EXT_buffer_reference2: a reference plus or minus an integer is the reference that many blocks
+// on (glslang steps by the block's size rounded to its buffer_reference_align); two references of
+// one type subtract to the int64_t count of blocks between them. Nothing else applies to a reference
+// but `,`, `==` and `!=` (and those are the switch's).
+std::optional<Value> Checker::reference_arithmetic(ast::BinaryOp op, const Value& lhs, const Value& rhs, SourceRange op_range,
+                                                   SourceRange range) {
+  const auto reference = [](const Type& t) {
+    return t.shape == Shape::structure && t.structure && t.structure->buffer_reference && !t.is_array();
+  };
+  const Type& a = lhs.type;
+  const Type& b = rhs.type;
+  if (!reference(a) && !reference(b)) return std::nullopt;
+  if (op != ast::BinaryOp::Add && op != ast::BinaryOp::Sub) return std::nullopt;
+  const auto integer = [](const Type& t) { return t.shape == Shape::scalar && t.is_integer() && !t.is_array(); };
+  Value out;
+  out.range = range;
+  const auto stride = [&](const Type& t) -> std::optional<long long> {
+    auto it = reference_strides_.find(t.structure);
+    return it == reference_strides_.end() ? std::nullopt : std::optional<long long>(it->second);
+  };
+  if (reference(a) && reference(b) && op == ast::BinaryOp::Sub && a.structure == b.structure) {
+    out.type = Type::scalar_of(Scalar::int64_);
+    if (lhs.constant && rhs.constant && stride(a)) out.constant = (*lhs.constant - *rhs.constant) / *stride(a);
+  } else if ((reference(a) && integer(b)) || (op == ast::BinaryOp::Add && integer(a) && reference(b))) {
+    const Type& r = reference(a) ? a : b;
+    out.type = r;
+    // The address of T(uint64_t(0)) + 1 is a constant: the #define sizeof(T) of glslang's tests.
+    if (lhs.constant && rhs.constant && stride(r)) {
+      const long long steps = reference(a) ? *rhs.constant : *lhs.constant;
+      const long long address = reference(a) ? *lhs.constant : *rhs.constant;
+      out.constant = address + (op == ast::BinaryOp::Sub ? -steps : steps) * *stride(r);
+    }
+  } else {
+    operand_mismatch("invalid operands to binary expression (" + name_of(a) + " and " + name_of(b) +
+                         "): a buffer reference moves by an integer, and two of one type subtract",
+                     lhs, rhs, op_range, "", code::E_INVALID_OPERANDS);
+    return error_value(range);
+  }
+  if (!buffer_reference2(op_range, "arithmetic on a buffer reference")) return error_value(range);
+  return out;
+}
+
 Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& lhs, const Value& rhs,
                           SourceRange op_range, SourceRange range) {
   if (lhs.type.is_error() || rhs.type.is_error()) return error_value(range);
@@ -115,6 +164,7 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
                      op_range, "", code::E_INVALID_OPERANDS);
     return error_value(range);
   };
+  if (std::optional<Value> v = reference_arithmetic(op, lhs, rhs, op_range, range)) return *v;
   switch (op) {
     case ast::BinaryOp::Comma: return rhs;
     case ast::BinaryOp::LogAnd:

@@ -123,8 +123,9 @@ void Checker::validate_interface(const ast::VariableDecl& d, const Type& base) {
   check_interface_variable(*this, d, base, options_.stage);
 }
 
-void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
+void Checker::validate_block(const ast::InterfaceBlockDecl& d, bool layouts) {
   const ast::TypeQualifiers& q = d.qualifiers;
+  if (!memory_model_qualifiers(q)) return;
   const char* storage = q.has("uniform") ? "uniform" : q.has("buffer") ? "buffer" : q.has("in") ? "in" : q.has("out") ? "out" : "";
   const std::string storage_word = storage;
   if (storage_word == "in" && options_.stage == Stage::vertex) {
@@ -156,11 +157,15 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
            code::E_INTERFACE_BLOCK);
     return;
   }
-  if (d.block_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+  // The built-in blocks a shader may redeclare: gl_PerVertex, and a mesh shader's vertex and primitive blocks.
+  const bool builtin_block = d.block_name == "gl_PerVertex" || d.block_name == "gl_MeshPerVertexNV" ||
+                             d.block_name == "gl_MeshPerVertexEXT" || d.block_name == "gl_MeshPerPrimitiveNV" ||
+                             d.block_name == "gl_MeshPerPrimitiveEXT";
+  if (d.block_name.rfind("gl_", 0) == 0 && !builtin_block) {
     reject(d.block_name_range, "block name '" + d.block_name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
     return;
   }
-  if (d.instance_name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+  if (d.instance_name.rfind("gl_", 0) == 0 && !builtin_block) {
     reject(d.instance_name_range, "instance name '" + d.instance_name + "' begins with 'gl_', which is reserved",
            code::E_RESERVED_NAME);
     return;
@@ -171,6 +176,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
              "define the struct at global scope and use its name");
       return;
     }
+    if (!memory_model_qualifiers(member->qualifiers)) return;
     for (const ast::Qualifier& x : member->qualifiers.list) {
       if (!is_storage_word(x.word) || x.word == storage_word) continue;
       reject(x.range, "member storage '" + x.word + "' contradicts the block's '" + storage_word + "'", code::E_INTERFACE_BLOCK);
@@ -179,7 +185,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
     for (const ast::Declarator& decl : member->declarators) {
       if (!d.instance_name.empty() && member->qualifiers.has("readonly"))
         validation_.readonly_members.emplace(d.instance_name + "." + decl.name, decl.name_range);
-      if (decl.name.rfind("gl_", 0) == 0 && d.block_name != "gl_PerVertex") {
+      if (decl.name.rfind("gl_", 0) == 0 && !builtin_block) {
         reject(decl.name_range, "member name '" + decl.name + "' begins with 'gl_', which is reserved", code::E_RESERVED_NAME);
         return;
       }
@@ -192,7 +198,7 @@ void Checker::validate_block(const ast::InterfaceBlockDecl& d) {
       return;
     }
   }
-  validate_block_layouts(d);
+  if (layouts) validate_block_layouts(d);
 }
 
 }  // namespace safegi::detail

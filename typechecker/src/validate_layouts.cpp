@@ -520,9 +520,14 @@ class LayoutRules {
     const std::optional<long long> first = c_.layout_value(*location_);
     if (!first) return;
     Type t = *site_.type;
+    // A fragment shader's `pervertexEXT in float v[3];` (GL_EXT/NV_fragment_shader_barycentric) is one value per
+    // vertex of the primitive: one location, as a geometry shader's inputs (spv.fragmentShaderBarycentric2.frag).
+    const bool barycentric = letter_ == 'f' && site_.storage == "in" && (q_.has("pervertexEXT") || q_.has("pervertexNV"));
     const bool per_vertex = (site_.storage == "in" && (letter_ == 'g' || letter_ == 'c' || letter_ == 'e')) ||
-                            (site_.storage == "out" && letter_ == 'c');
+                            (site_.storage == "out" && (letter_ == 'c' || letter_ == 'm')) || barycentric;
     if (per_vertex && t.is_array()) t = t.element();
+    // GL_NV_mesh_shader: a per-view output's next dimension is the view's (spv.meshShaderPerViewUserDefined.mesh).
+    if (letter_ == 'm' && site_.storage == "out" && q_.has("perviewNV") && t.is_array()) t = t.element();
     LocationUse use;
     use.output = site_.storage == "out";
     use.first = *first;

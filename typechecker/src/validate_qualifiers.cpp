@@ -56,6 +56,7 @@ namespace {
 // are the two storage pairs GLSL has.
 // Returns false when it reported an error.
 static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, bool parameter) {
+  if (!c.memory_model_qualifiers(q)) return false;
   const ast::Qualifier* storage = nullptr;
   const ast::Qualifier* auxiliary = nullptr;
   const ast::Qualifier* interpolation = nullptr;
@@ -73,6 +74,10 @@ static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, boo
       slot = &storage;
       what = "storage qualifier";
     } else if (is_auxiliary_word(x.word)) {
+      // GL_NV_mesh_shader: a per-view output may also be per-primitive (`perviewNV perprimitiveNV out vec4 v[][];`).
+      const bool view_and_primitive = auxiliary && ((auxiliary->word == "perviewNV" && x.word == "perprimitiveNV") ||
+                                                    (auxiliary->word == "perprimitiveNV" && x.word == "perviewNV"));
+      if (view_and_primitive) continue;
       slot = &auxiliary;
       what = "auxiliary qualifier (centroid, sample, patch)";
     } else if (x.kind == ast::QualifierKind::Interpolation) {
@@ -120,6 +125,26 @@ static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, boo
   return true;
 }
 
+// The Vulkan memory model's coherence qualifiers (devicecoherent, queuefamilycoherent, workgroupcoherent,
+// subgroupcoherent, nonprivate) need GL_KHR_memory_scope_semantics, shadercallcoherent GL_EXT_ray_tracing;
+// they are keywords wherever `coherent` is (glslang).
+bool Checker::memory_model_qualifiers(const ast::TypeQualifiers& q) {
+  const LanguageLevel* level = language();
+  if (!level) return true;
+  for (const ast::Qualifier& x : q.list) {
+    if (x.kind != ast::QualifierKind::Memory) continue;
+    const char* need = x.word == "shadercallcoherent" ? "GL_EXT_ray_tracing"
+                       : x.word == "devicecoherent" || x.word == "queuefamilycoherent" || x.word == "workgroupcoherent" ||
+                               x.word == "subgroupcoherent" || x.word == "nonprivate"
+                           ? "GL_KHR_memory_scope_semantics"
+                           : nullptr;
+    if (!need || level->extension_enabled(need)) continue;
+    reject(x.range, "'" + x.word + "' requires " + need, code::E_VERSION, "enable it with '#extension " + std::string(need) + " : enable'");
+    return false;
+  }
+  return true;
+}
+
 void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bool global) {
   const ast::TypeQualifiers& q = d.qualifiers;
   if (!check_qualifier_counts(*this, q, false)) return;
@@ -131,7 +156,10 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
     for (const ast::Qualifier& x : q.list) {
       const bool allowed = x.word == "const" || x.word == "nonuniformEXT" || x.kind == ast::QualifierKind::Precision ||
                            x.kind == ast::QualifierKind::Precise ||
-                           (x.kind == ast::QualifierKind::Memory && allows(kBindlessGate));  // image handles in locals
+                           (x.kind == ast::QualifierKind::Memory && allows(kBindlessGate)) ||  // image handles in locals
+                           // a reference's memory (GL_EXT_buffer_reference): `nonprivate Ref r = …;`
+                           (x.kind == ast::QualifierKind::Memory && base.shape == Shape::structure && base.structure &&
+                            base.structure->buffer_reference);
       if (allowed) continue;
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
       reject(x.range, what + " cannot qualify a local variable; locals take only 'const', 'precise' and a precision",

@@ -38,7 +38,8 @@ const char* stages_of_storage(std::string_view w) {
   static constexpr std::pair<std::string_view, const char*> kStorages[] = {
       {"rayPayloadEXT", "rhs"},   {"rayPayloadNV", "rhs"},      {"rayPayloadInEXT", "ahs"},   {"rayPayloadInNV", "ahs"},
       {"hitAttributeEXT", "iah"}, {"hitAttributeNV", "iah"},    {"callableDataEXT", "rhsk"},  {"callableDataNV", "rhsk"},
-      {"callableDataInEXT", "k"}, {"callableDataInNV", "k"},    {"taskPayloadSharedEXT", "tm"}};
+      {"callableDataInEXT", "k"}, {"callableDataInNV", "k"},    {"taskPayloadSharedEXT", "tm"},
+      {"hitObjectAttributeNV", "rhs"}};  // GL_NV_shader_invocation_reorder
   for (const auto& [word, stages] : kStorages)
     if (w == word) return stages;
   return nullptr;
