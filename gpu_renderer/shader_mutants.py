@@ -21,8 +21,8 @@ MUTANTS = [
      "E-DIMENSION-MISMATCH"),  # point light without the inverse-square law
     ("lights.sgl", "chosen.pdf = choice * solidAngleDensity(1.0 / area, chosen.distance, cosLight);",
      "chosen.pdf = choice / area;", "E-DIMENSION-MISMATCH"),  # area density used as solid-angle density
-    ("lights.sgl", "return pdfArea / (cosLight * inverse_square(distance));", "return pdfArea * distance * distance / cosLight;",
-     "E-DIMENSION-MISMATCH"),  # the Jacobian written out without its solid angle: d²/cos is per proj
+    ("lights.sgl", "return pdfArea / (cosLight * inverse_square(distance));", "return pdfArea * cosLight / (distance * distance);",
+     "E-DIMENSION-MISMATCH"),  # the Jacobian inverted: cos / d² where d² / cos belongs (d² / cos written out is right)
     ("lights.sgl", "vector<world, away> toLight = lightPosition[light] - shaded;",
      "vector<world, away> toLight = shaded - lightPosition[light];", "E-ORIENTATION"),  # reversed light vector
     ("material_lambert.sgl", "return albedo / HEMISPHERE_PROJECTED;", "return albedo;",

@@ -272,7 +272,8 @@ bool Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& r
     out.type.dim = known;
     return true;
   }
-  if (a && b && a->name == b->name && a->exponent == b->exponent && a->known.is_known() && b->known.is_known()) {
+  // Two π constants are the same π (`HALF_PI - QUARTER_PI * r`, two literals): a sum of them is one.
+  if (a && b && a->exponent == b->exponent && a->known.is_known() && b->known.is_known()) {
     if (same_dimension(a->known, b->known)) {
       out.pi_factor = a;
       return true;

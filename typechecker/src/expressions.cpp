@@ -475,7 +475,10 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
                                    consistent(target.texel->dim, v.texel->dim)))
     return fail(sentence, "", code::E_TEXEL_MISMATCH);
-  if (options_.strict && target.dim.is_known() && found.state == DimSlot::State::unknown && !value.zero) {
+  // A π constant (or a literal kπ) times known dimensions is not unannotated: pi_factor_misfit above
+  // checked it against the target, as one of the quantities kπ measures.
+  const bool checked_pi = value.pi_factor && std::abs(value.pi_factor->exponent) == 1 && value.pi_factor->known.is_known();
+  if (options_.strict && target.dim.is_known() && found.state == DimSlot::State::unknown && !value.zero && !checked_pi) {
     report(Diagnostic::warning(value.range, std::string("unannotated value used to ") + action + " " + subject + " of type " +
                                                 name_of(target))
                .with_code(code::W_IMPLICIT_ANNOTATION));
