@@ -343,16 +343,16 @@ void trim_vocabulary(gl::SymbolTable& table) {
     for (const gl::Symbol& symbol : stage.symbols) used.add(symbol);
     for (const gl::SpecializationConstant& constant : stage.specialization_constants) used.add(constant.type);
   }
-  // A used derived dimension or unit is read through its bases.
-  for (const auto& derived : table.derived_dimensions)
-    if (used.has(derived.name))
-      for (const auto& [base, exponent] : derived.exponents) used.names.insert(base);
+  // A used unit is read through its bases.
   for (const auto& unit : table.units)
     if (used.has(unit.name))
       for (const auto& [base, exponent] : unit.dimension.exponents) used.names.insert(base);
   auto unused = [&](const auto& entry) { return from_prelude(entry.declared_at) && !used.has(entry.name); };
+  // Every derived dimension stays: readers name a host's exponent vectors by them ("the host uses
+  // spectrum<irradiance>"), whether the program uses that dimension or not.
+  for (const auto& derived : table.derived_dimensions)
+    for (const auto& [base, exponent] : derived.exponents) used.names.insert(base);
   std::erase_if(table.base_dimensions, unused);
-  std::erase_if(table.derived_dimensions, unused);
   std::erase_if(table.units, unused);
   std::erase_if(table.spaces, unused);
   // Where in the prelude an entry stands is no part of the table (a comment there moves it).

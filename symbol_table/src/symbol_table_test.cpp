@@ -72,8 +72,8 @@ TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheVocabularyItUses) {
   ASSERT_NE(table.stage(Stage::vertex), nullptr);
   ASSERT_NE(table.stage(Stage::fragment), nullptr);
   EXPECT_EQ(table.stage(Stage::geometry), nullptr);
-  // The prelude is named by its hash; of its entries only those the symbols use are listed
-  // (no symbol has an angle, none a unit), each without a line in it.
+  // The prelude is named by its hash; of its base dimensions, units and spaces only those the
+  // symbols and the derived dimensions use are listed (no angle, no unit), each without a line in it.
   EXPECT_EQ(table.vocabulary.name, "safegi/prelude.sgl");
   EXPECT_EQ(table.vocabulary.hash.rfind("fnv1a64:", 0), 0u);
   EXPECT_EQ(table.base_dimensions.size(), 5u);
@@ -83,6 +83,8 @@ TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheVocabularyItUses) {
   EXPECT_EQ(table.spaces.size(), 3u);  // the program's own, used or not
   EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"proj", -1}, {"solid_angle", -1}, {"time", -1}}, ""}),
             "radiance");
+  // Every derived dimension stays, used or not: a host's value is named by it ("the host uses spectrum<irradiance>").
+  EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
 }
 
 TEST(SymbolTable, WritesWhatItReads) {

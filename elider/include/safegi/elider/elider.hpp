@@ -55,9 +55,10 @@ gl::StageSymbols stage_symbols(const ElideInput& input, gl::Stage stage, const s
 // prelude's included) to `table`, skipping names already there.
 void add_declarations(gl::SymbolTable& table, const ElideInput& input);
 
-// Keeps the dimensions, units and spaces the table's symbols use, and every one its
-// programs declare themselves; the prelude's others are named by `table.vocabulary`
-// (the prelude's name and a hash of its entries), not listed.
+// Keeps the base dimensions, units and spaces the table's symbols use, every derived
+// dimension (readers name exponent vectors by them), and every entry its programs declare
+// themselves; the prelude's others are named by `table.vocabulary` (the prelude's name and
+// a hash of its entries), not listed.
 void trim_vocabulary(gl::SymbolTable& table);
 
 // "fnv1a64:<16 hex digits>" of `text`.
