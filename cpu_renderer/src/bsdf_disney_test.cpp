@@ -103,7 +103,8 @@ TEST(Disney, ThinIsTheFakeSubsurfaceLobeAndLambertTransmission) {
         const double expected = c / kPiD * ss + retro;
         EXPECT_NEAR(sg::raw(Bsdf(flat, grey(static_cast<Real>(c)), false).eval(wo, wi)).g, expected, 2e-5 * (1 + expected))
             << theta_o << " " << theta_i << " " << phi_i;
-        const Bsdf thin(through, grey(static_cast<Real>(c)), false);
+        const Reflectance through_colour = grey(static_cast<Real>(c));  // Bsdf keeps a reference to it
+        const Bsdf thin(through, through_colour, false);
         EXPECT_TRUE(thin.transmits());
         EXPECT_NEAR(sg::raw(thin.eval(wo, -wi)).g, c / kPiD, 1e-6);
         EXPECT_NEAR(sg::raw(thin.eval(wo, wi)).g, retro, 2e-5 * (1 + retro));
@@ -121,7 +122,8 @@ TEST(Disney, MetallicIsAnisotropicGgxWithSchlicksFresnel) {
   d.anisotropic = 0.8f;
   const Material material = disney_material(d);
   const double c = 0.8;
-  const Bsdf bsdf(material, grey(static_cast<Real>(c)), false);
+  const Reflectance albedo = grey(static_cast<Real>(c));  // Bsdf keeps a reference to it
+  const Bsdf bsdf(material, albedo, false);
   const double aspect = std::sqrt(1 - 0.9 * 0.8), ax = 0.36 / aspect, ay = 0.36 * aspect;
   auto lambda = [&](double theta, double phi) {
     const double a2 = ax * ax * std::cos(phi) * std::cos(phi) + ay * ay * std::sin(phi) * std::sin(phi);
@@ -182,7 +184,8 @@ TEST(Disney, DielectricLobesArePbrtV3sMicrofacetReflectionAndTransmission) {
   };
   int compared[2] = {0, 0};
   for (bool from_inside : {false, true}) {
-    const Bsdf bsdf(material, grey(static_cast<Real>(c)), from_inside);
+    const Reflectance albedo = grey(static_cast<Real>(c));  // Bsdf keeps a reference to it
+    const Bsdf bsdf(material, albedo, from_inside);
     const double sign = from_inside ? -1 : 1;  // ours to pbrt-v3's frame
     for (double theta_o : {0.1, 0.7, 1.2})
       for (double theta_i : {0.2, 0.6, 1.1, 1.45})
@@ -309,7 +312,8 @@ TEST(Disney, Reciprocal) {
 TEST(Disney, WhiteFurnaceLobesAtMostOneAndTheirSumBounded) {
   auto albedo_of = [](const DisneyMaterial& d, double theta, int steps = 800) {
     const Material material = disney_material(d);
-    const Bsdf bsdf(material, grey(1), false);
+    const Reflectance white = grey(1);  // Bsdf keeps a reference to it
+    const Bsdf bsdf(material, white, false);
     const DirectionShading wo = spherical(theta, 0.4);
     return sphere_integral([&](DirectionShading wi) { return sg::raw(bsdf.eval(wo, wi)).g * std::abs(wi.z()); }, steps, steps / 5);
   };
