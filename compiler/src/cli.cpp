@@ -321,6 +321,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   if (desktop_default) options.default_version = GlslVersion{110, false};
   options.override_version = override_version;
   if (spirv && spirv->client == SpirvClient::vulkan) options.vulkan = spirv->client_version;
+  options.emit = !outputs.empty() || !symbols_path.empty() || write_spirv;
   CompileResult result = compile(sources, options);
 
   if (diagnostics_format == "json") {

@@ -310,14 +310,17 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
     out.stage = w.stage;
     out.path = w.source->path;
     if (w.ok && !diags.has_errors()) {
-      ElideInput input{*manager, w.file, w.preprocessed, *w.parsed.unit, *w.checked, options.defines, options.undefines};
+      ElideInput input{*manager, w.file, w.preprocessed, *w.parsed.unit, *w.checked, options.defines, options.undefines,
+                       options.emit};
       ElideResult elided = elide(input, diags);
-      out.glsl = with_checked_version(std::move(elided.glsl), w.preprocessed, options.override_version.has_value());
-      if (std::optional<gl::Stage> table_stage = to_table_stage(w.stage)) {
-        table.stages.push_back(stage_symbols(input, *table_stage, w.source->path, elided.source_files));
-        stage_hashes += table.stages.back().source_hash;
+      if (options.emit) {
+        out.glsl = with_checked_version(std::move(elided.glsl), w.preprocessed, options.override_version.has_value());
+        if (std::optional<gl::Stage> table_stage = to_table_stage(w.stage)) {
+          table.stages.push_back(stage_symbols(input, *table_stage, w.source->path, elided.source_files));
+          stage_hashes += table.stages.back().source_hash;
+        }
+        add_declarations(table, input);
       }
-      add_declarations(table, input);
     }
     if (options.keep_analysis && w.checked) {
       auto analysis = std::make_shared<StageAnalysis>();

@@ -140,6 +140,7 @@ class Eraser {
     for (const auto& [node, info] : in_.checked.calls) geometric(*node, info);
     for (const auto& [node, info] : in_.checked.conversions) conversion(*node, info);
     ElideResult result;
+    if (!in_.render) return result;
     result.source_files.push_back(in_.sources.path(in_.main_file));
     std::string text = render(in_.main_file, 0, result.source_files);
     result.glsl = with_preamble(std::move(text));

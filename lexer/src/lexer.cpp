@@ -83,6 +83,21 @@ bool Lexer::skip_blanks_and_comments() {
   }
 }
 
+void Lexer::skip_to_directive_line() {
+  for (;;) {
+    skip_blanks_and_comments();  // comments (a block comment may hide a `#`), newlines
+    if (pos_ >= text_.size() || (at_line_start_ && text_[pos_] == '#')) return;
+    at_line_start_ = false;
+    // The rest of the logical line, up to its newline or a comment, which the
+    // loop's skip_blanks_and_comments() then reads as next() would.
+    for (pos_ = skip_splices(pos_); pos_ < text_.size(); pos_ = skip_splices(pos_)) {
+      char c = text_[pos_];
+      if (is_newline(c) || (c == '/' && (peek2() == '/' || peek2() == '*'))) break;
+      ++pos_;
+    }
+  }
+}
+
 void Lexer::finish(Token& token, std::size_t begin) {
   token.range.begin = sources_.location_after(file_, static_cast<std::uint32_t>(begin), line_hint_);
   token.range.end = sources_.location_after(file_, static_cast<std::uint32_t>(pos_), line_hint_);

@@ -126,6 +126,7 @@ void Preprocessor::skip_group(FileState& f) {
   std::uint32_t skip_begin = f.peeked ? f.peeked->range.begin.offset : f.lexer.offset();
   int depth = 0;
   for (;;) {
+    if (!f.peeked) f.lexer.skip_to_directive_line();
     Token t = get(f);
     if (t.kind == TokenKind::eof) {
       unget(f, t);

@@ -68,6 +68,10 @@ struct CompileOptions {
   // the checker's symbols recorded (StageOutput::analysis): what an editor
   // asks about (lsp/). Off by default.
   bool keep_analysis = false;
+  // Off: check only. Every diagnostic is still found (the elider's too), but
+  // no GLSL is rendered and no symbol table built, which safeglslc without
+  // -o, --symbols or SPIR-V output does not need.
+  bool emit = true;
 };
 
 // One stage's front-end products, kept when CompileOptions::keep_analysis is

@@ -33,6 +33,8 @@ struct ElideInput {
   // takes the same #if branches the checker saw.
   std::vector<std::pair<std::string, std::string>> defines;
   std::vector<std::string> undefines;
+  // Off: only the checks the erasure makes (its diagnostics); no text.
+  bool render = true;
 };
 
 struct ElideResult {

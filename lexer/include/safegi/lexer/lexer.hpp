@@ -48,6 +48,12 @@ class Lexer {
   // an unterminated block comment is always reported.
   void set_report_errors(bool report) { report_errors_ = report; }
 
+  // In a skipped #if group: moves past every line that is not a directive
+  // without lexing its tokens (skipped text is never tokenised, only its
+  // comments and line splices matter), up to a `#` that starts a line or the
+  // end of the file. Large shaders skip most of their text this way.
+  void skip_to_directive_line();
+
   // Skips to the end of the current line (the newline is left for next()),
   // returning the range of the skipped text without surrounding blanks and
   // without a trailing // comment. For #error and friends.
