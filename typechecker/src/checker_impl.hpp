@@ -85,6 +85,9 @@ struct Value {
   std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
   bool unit_w = false;  // the w of a vec4(p, 1.0) carried by affine maps: exactly 1
   bool homogeneous_w = false;  // the w of an hpoint (`h.w`), which its coordinates are divided by
+  // mat3(t, b, n) with a column of unknown length (a vector, not a direction): "'b' (column 1
+  // of the frame)", why the frame is linear rather than rigid.
+  std::string non_unit_column;
 };
 
 struct Variable {

@@ -280,6 +280,9 @@ Value Checker::constructor(const ast::CallExpr& e) {
   // A plain GLSL constructor: the components' common dimension, if they share one.
   if (std::optional<Type> frame = frame_constructor(t, args)) {  // mat3(m), mat3(T, B, N)
     out.type = *frame;
+    for (std::size_t i = 0; args.size() == 3 && i < args.size() && out.non_unit_column.empty(); ++i)
+      if (args[i].type.geometry == Geometry::vector)
+        out.non_unit_column = "'" + operand_text(args[i], "?") + "' (column " + std::to_string(i) + " of the frame)";
     return out;
   }
   if (t.shape == Shape::matrix) return out;  // other matrices built from parts stay unannotated

@@ -427,7 +427,12 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
                      name_of(found);
   };
   const std::string sentence = sentence_for(v);
-  const std::string kind_hint = kind_mismatch_hint(target.geometry, v.geometry);
+  const std::string kind_hint =
+      target.geometry == Geometry::rigidmap && v.geometry == Geometry::map && !value.non_unit_column.empty()
+          ? value.non_unit_column + " is a vector of unknown length, not a direction: normalize() it (a cross "
+                                    "product of two directions has unit length only when they are perpendicular), or declare "
+                                    "the frame without 'rigid'"
+          : kind_mismatch_hint(target.geometry, v.geometry);
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
