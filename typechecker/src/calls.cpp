@@ -147,6 +147,7 @@ Value Checker::call(const ast::CallExpr& e) {
     if (!v.type.is_error() && !atomic_overload_available(e.callee, args, e.callee_range)) return error_value(e.range);
     if (!v.type.is_error() && !unit_length_arguments(e.callee, args)) return error_value(e.range);
     if (e.callee == "length" && e.args.size() == 1 && !v.type.is_error()) v.length_of = length_of_variable(e.args[0]);
+    if (!v.type.is_error()) carry_perpendicular(e, args, v);
     const auto info = result_.calls.find(&e);
     symbols_.use_builtin_function(e.callee, e.callee_range, info == result_.calls.end() ? "" : info->second.signature, v.type);
     return v;

@@ -37,7 +37,11 @@ struct LengthOf {
   std::string name;          // the vector measured
   SourceRange declared_at;   // which declaration of that name
   unsigned version = 0;      // its Variable::version then
+  bool operator==(const LengthOf&) const = default;
 };
+// A variable as it was at a point of the program (its version then): the vectors a value is
+// known to be perpendicular to are held this way (unit_length.cpp, "Orthonormal frames").
+using VariableAt = LengthOf;
 // An unannotated `const float PI = 3.14159…;` (or 2π, π/2, 1/π …): which quantity π is depends on
 // its use — a plain number (πr²), radians, steradians (2π the hemisphere, 4π the sphere) or projected
 // steradians (π for the cosine-weighted hemisphere). A product of it with known dimensions is
@@ -81,6 +85,9 @@ struct Value {
   // law gives (inverse_square(d)); where the value is stored, that reading is taken when it fits.
   int inverse_squares = 0;
   std::optional<LengthOf> length_of;  // length(L) of a variable L, or a local that holds it
+  // Vectors this one is perpendicular to by construction: cross(a, b) to a and b,
+  // x - n * dot(x, n) to n, and normalize() of such a value to the same.
+  std::vector<VariableAt> perpendicular_to;
   std::optional<PiFactor> pi_factor;  // of unknown dimension only through an unannotated π constant
   std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
   bool unit_w = false;  // the w of a vec4(p, 1.0) carried by affine maps: exactly 1
@@ -105,6 +112,7 @@ struct Variable {
   bool pi_multiple = false;           // an unannotated float initialised with a multiple of π (Value::pi_multiple)
   int inverse_squares = 0;            // Value::inverse_squares of an unannotated local's initialiser, until written
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
+  std::vector<VariableAt> perpendicular_to;  // Value::perpendicular_to of its initialiser, until written
   // A float initialised with dot(a, b): a and b as written, until it is written (a written-out reflection
   // 2 n (n·w) - w may name its cosine).
   std::optional<std::pair<std::string, std::string>> dot_of;
@@ -245,6 +253,10 @@ class Checker {
   std::optional<LengthOf> length_of_variable(const ast::Expr* arg);
   // `L / length(L)`, `L / d` with d that length, `L /= d`: normalize(L) written out, its type.
   std::optional<Value> divided_by_own_length(const ast::Expr* numerator, const Value& lhs, const Value& rhs, SourceRange range);
+  // Orthonormal frames: what normalize(), cross() and Gram-Schmidt's x - n * dot(x, n) are
+  // perpendicular to, and cross(n, t) of two perpendicular unit vectors as a direction.
+  void carry_perpendicular(const ast::CallExpr& e, const std::vector<Value>& args, Value& v);
+  void gram_schmidt(const ast::BinaryExpr& e, Value& v);
   // Everything `n` may write (assignments, ++/--, arguments of calls that can write them) gets a new
   // version; a loop's writes are noted on entry, as its next iteration sees them.
   void note_writes(const ast::Node* n);

@@ -353,6 +353,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       Value init = expr(decl.initializer);
       pi_multiple = init.pi_multiple;
       if (!declared.is_annotated()) v.inverse_squares = init.inverse_squares;
+      v.perpendicular_to = init.perpendicular_to;
       if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) {
         v.length_of = init.length_of;
         if (const auto* dot = ast::dyn_cast<ast::CallExpr>(ast::without_parens(decl.initializer));

@@ -71,6 +71,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.pi_multiple = var->pi_multiple;
     v.inverse_squares = var->inverse_squares;
     v.length_of = var->length_of;
+    v.perpendicular_to = var->perpendicular_to;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;

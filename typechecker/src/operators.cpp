@@ -95,6 +95,7 @@ Value Checker::binary(const ast::BinaryExpr& e) {
     value = arithmetic(&node, node.op, lhs, rhs, node.op_range, node.range);
     if (!carry_pi_factor(node.op, lhs, rhs, value, node.op_range)) value = error_value(node.range);
     carry_inverse_squares(node, lhs, rhs, value);
+    if (node.op == ast::BinaryOp::Sub && it == spine.rbegin() && !value.type.is_error()) gram_schmidt(node, value);
     // Only the leftmost operand is a variable as written: `L / d`, not `a * L / d`.
     if (node.op == ast::BinaryOp::Div && it == spine.rbegin() && !value.type.is_error())
       if (std::optional<Value> unit = divided_by_own_length(node.lhs, lhs, rhs, node.range)) value = *unit;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include <safegi/parser/printer.hpp>
 #include <safegi/parser/walk.hpp>
 
 #include "checker_impl.hpp"
@@ -154,6 +155,53 @@ std::optional<Value> Checker::divided_by_own_length(const ast::Expr* numerator, 
   return unit;
 }
 
+// Orthonormal frames. A basis built around a normal, t = normalize(cross(up, n)) or Gram-Schmidt's
+// t = normalize(x - n * dot(x, n)), then b = cross(n, t), has a unit b: the cross product of two
+// unit vectors has unit length exactly when they are perpendicular, which these constructions make
+// them. Without this, mat3(t, b, n) would be a linear frame and a rigid one refused.
+void Checker::carry_perpendicular(const ast::CallExpr& e, const std::vector<Value>& args, Value& v) {
+  if (e.callee == "normalize" && args.size() == 1) {
+    v.perpendicular_to = args[0].perpendicular_to;
+    return;
+  }
+  if (e.callee != "cross" || args.size() != 2) return;
+  const std::optional<VariableAt> a = length_of_variable(e.args[0]), b = length_of_variable(e.args[1]);
+  const auto knows = [](const Value& x, const std::optional<VariableAt>& y) {
+    return y && std::find(x.perpendicular_to.begin(), x.perpendicular_to.end(), *y) != x.perpendicular_to.end();
+  };
+  const auto unit = [](const Value& x) {
+    return (x.type.geometry == Geometry::direction || x.type.geometry == Geometry::normal) &&
+           x.type.length_loss == Type::LengthLoss::none;
+  };
+  if (v.type.geometry == Geometry::vector && unit(args[0]) && unit(args[1]) && (knows(args[0], b) || knows(args[1], a))) {
+    v.type.geometry = Geometry::direction;
+    v.type.orientation = Orientation::none;
+  }
+  v.perpendicular_to.clear();
+  for (const std::optional<VariableAt>& x : {a, b})
+    if (x) v.perpendicular_to.push_back(*x);
+}
+
+// `x - n * dot(x, n)` (either factor order, dot's arguments either way) of a unit n is x without
+// its component along n: perpendicular to n.
+void Checker::gram_schmidt(const ast::BinaryExpr& e, Value& v) {
+  const auto* product = ast::dyn_cast<ast::BinaryExpr>(without_parens(e.rhs));
+  if (product == nullptr || product->op != ast::BinaryOp::Mul || e.lhs == nullptr) return;
+  const std::string x = print_expression(*without_parens(e.lhs));
+  for (auto [along, projection] : {std::pair{product->lhs, product->rhs}, std::pair{product->rhs, product->lhs}}) {
+    const auto* dot = ast::dyn_cast<ast::CallExpr>(without_parens(projection));
+    const auto* n = ast::dyn_cast<ast::IdentifierExpr>(without_parens(along));
+    if (dot == nullptr || n == nullptr || dot->callee != "dot" || dot->args.size() != 2) continue;
+    const std::string first = print_expression(*without_parens(dot->args[0]));
+    const std::string second = print_expression(*without_parens(dot->args[1]));
+    if (!((first == x && second == n->name) || (second == x && first == n->name))) continue;
+    const Variable* var = lookup(n->name);
+    if (var == nullptr || (var->type.geometry != Geometry::direction && var->type.geometry != Geometry::normal)) continue;
+    if (std::optional<VariableAt> at = length_of_variable(along)) v.perpendicular_to = {*at};
+    return;
+  }
+}
+
 void Checker::note_write(const ast::Expr* target) {
   const ast::IdentifierExpr* id = written_variable(target);
   if (id == nullptr) return;
@@ -161,6 +209,7 @@ void Checker::note_write(const ast::Expr* target) {
     if (auto found = scope->find(id->name); found != scope->end()) {
       ++found->second.version;
       found->second.length_of.reset();
+      found->second.perpendicular_to.clear();
       found->second.dot_of.reset();
       found->second.inverse_squares = 0;
       found->second.pi_constant.reset();
