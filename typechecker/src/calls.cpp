@@ -2,6 +2,7 @@
 // generic functions (unification over dimensions and spaces), constructors
 // and casts, and the map operators routed through the table.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -76,6 +77,32 @@ bool Checker::extension_name(const std::string& name) {
   return false;
 }
 
+// `dot(n, lightEuler)`: a vec3 of angles is no vector of a space (its components are rotations
+// about three axes, not coordinates along them), whatever a geometric built-in makes of it beside
+// one. The direction such angles describe is a column of the rotation built from them.
+bool Checker::angles_as_vector(const std::string& name, const std::vector<Value>& args) {
+  if (name != "dot" && name != "cross" && name != "reflect" && name != "refract" && name != "faceforward" &&
+      name != "distance")
+    return true;
+  const std::optional<BaseId> angle = result_.registry.find_base("angle");
+  const auto spatial = [](const Value& v) { return v.type.geometry != Geometry::none && v.type.geometry != Geometry::spectrum; };
+  if (!angle || std::none_of(args.begin(), args.end(), spatial)) return true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Type& t = args[i].type;
+    if (t.shape != Shape::vector || spatial(args[i]) || t.dim.state != DimSlot::State::known || t.dim.value.exponent(*angle) == 0)
+      continue;
+    Diagnostic d = Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + name + "' is " + name_of(t) +
+                                                        ", a triple of angles, beside a vector of a space: angles (Euler angles) "
+                                                        "are rotations about axes, not coordinates along them")
+                       .with_code(code::E_DIMENSION_MISMATCH);
+    add_origin_note(d, args[i]);
+    d.with_hint("the direction a rotation points is a column of its matrix, or (sin θ cos φ, sin θ sin φ, cos θ) of two angles");
+    report(std::move(d));
+    return false;
+  }
+  return true;
+}
+
 bool Checker::atomic_overload_available(const std::string& name, const std::vector<Value>& args, SourceRange where) {
   const LanguageLevel* level = language();
   if (!level || args.empty()) return true;
@@ -146,6 +173,7 @@ Value Checker::call(const ast::CallExpr& e) {
     Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
     if (!v.type.is_error() && !atomic_overload_available(e.callee, args, e.callee_range)) return error_value(e.range);
     if (!v.type.is_error() && !unit_length_arguments(e.callee, args)) return error_value(e.range);
+    if (!v.type.is_error() && !angles_as_vector(e.callee, args)) return error_value(e.range);
     if (e.callee == "length" && e.args.size() == 1 && !v.type.is_error()) v.length_of = length_of_variable(e.args[0]);
     if (!v.type.is_error()) carry_perpendicular(e, args, v);
     const auto info = result_.calls.find(&e);

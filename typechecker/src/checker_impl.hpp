@@ -247,6 +247,8 @@ class Checker {
   std::string written_name(const Value& v) const;
   void report_not_unit(const Value& v, const std::string& where);
   bool unit_length_arguments(const std::string& name, const std::vector<Value>& args);
+  // A vector of angles (Euler angles) beside a vector of a space in dot, cross, reflect, …
+  bool angles_as_vector(const std::string& name, const std::vector<Value>& args);
   bool unit_length_parameters(const std::string& callee, const Function& f, const std::vector<Value>& args);
   bool unit_length_offset(ast::BinaryOp op, const Value& lhs, const Value& rhs);
   // length(L) of a variable whose value is known not to change behind the checker's back.
