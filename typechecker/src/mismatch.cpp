@@ -199,6 +199,13 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
       if (f.sign < 0 && proj_of(f) < 0)
         return "the value has an extra factor of proj: '" + (f.name.empty() ? std::string("the divisor") : f.name) +
                "' is per projected area and divides without its cosine: missing the light-side cos θ of dω = cos θ dA / r²?";
+    // A light's irradiance declared as it is measured, facing the light (a sun's E⊥): the
+    // receiver's cosine then makes one proj too many, and the declaration is what is wrong.
+    for (const ProductFactor& f : factors)
+      if (f.sign > 0 && !f.name.empty() && f.dim.state == DimSlot::State::known && named("irradiance", f.dim.value))
+        return "the value has an extra factor of proj: a cosine applied twice, or '" + f.name +
+               "' is an irradiance measured facing its source (a sun's or a point light's), which is irradiance / proj: "
+               "declared so, the receiver's cosine makes it the irradiance on the surface";
     return "the value has an extra factor of proj: is a cosine applied twice?";
   }
   bool pdf_factor = false;  // a density among the factors (pdf_area, pdf_solid_angle, ...)
