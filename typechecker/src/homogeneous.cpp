@@ -11,6 +11,22 @@
 #include "dim_slot.hpp"
 
 namespace safegi::detail {
+
+namespace {
+
+// "X" of a spelling "transpose(X)" whose parentheses close at its end; empty otherwise.
+std::string transposed_argument(const std::string& text) {
+  const std::string head = "transpose(";
+  if (text.size() <= head.size() + 1 || text.compare(0, head.size(), head) != 0 || text.back() != ')') return {};
+  int depth = 0;
+  for (std::size_t i = head.size() - 1; i < text.size(); ++i) {
+    depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+    if (depth == 0 && i + 1 != text.size()) return {};
+  }
+  return text.substr(head.size(), text.size() - head.size() - 1);
+}
+
+}  // namespace
 namespace {
 
 bool is_vec4(const Type& t) {
@@ -192,7 +208,12 @@ std::optional<Value> Checker::homogeneous_application(const Value& lhs, const Va
   if (!consistent(x.from, source) && normal && !carries_normals && !row && consistent(x.from, target) && !rigid)
     return reject(cannot + ": this matrix takes values from " + name_of_space(source) + " to " + name_of_space(target) +
                       "; a normal of " + name_of_space(x.from) + " goes by its transpose, the normal matrix transpose(inverse(m))",
-                  "missing transpose: transpose(" + m_name + ") * " + operand_text(v, "n"), code::E_SPACE_MISMATCH);
+                  transposed_argument(m_name).empty()
+                      ? "missing transpose: transpose(" + m_name + ") * " + operand_text(v, "n")
+                      : "a transpose too many: " + transposed_argument(m_name) +
+                            " already is the normal matrix (the inverse transpose): " + transposed_argument(m_name) + " * " +
+                            operand_text(v, "n"),
+                  code::E_SPACE_MISMATCH);
   if (!consistent(x.from, source))
     return reject(cannot + ": the " + (row ? "transposed " : "") + "map takes values in " + name_of_space(source) + ", not in " +
                       name_of_space(x.from),
