@@ -158,7 +158,7 @@ std::size_t Parser::scan_dim_expr(std::size_t i, int nesting) const {
   if (nesting > static_cast<int>(options_.max_nesting)) return 0;
   for (;;) {
     const PToken& t = tokens_[i];
-    if (t.kind == T::Ident || t.kind == T::IntLit) {
+    if (t.kind == T::Ident || t.kind == T::IntLit || (t.kind == T::Unknown && t.reserved)) {
       ++i;
     } else if (t.kind == T::LParen) {
       i = scan_dim_expr(i + 1, nesting + 1);
@@ -256,7 +256,7 @@ bool Parser::at_declaration() const {
 
 bool Parser::at_annotation_declaration() const {
   const PToken& t = peek();
-  if (t.kind != T::Ident || peek(1).kind != T::Ident) return false;
+  if (t.kind != T::Ident || !at_annotation_name(1)) return false;
   if (t.text != "dimension" && t.text != "unit" && t.text != "space") return false;
   return !is_type_name(t.text);
 }
@@ -548,7 +548,7 @@ DimExpr* Parser::parse_dim_term() {
 DimExpr* Parser::parse_dim_primary() {
   DepthGuard guard(*this);
   SourceLocation begin = here();
-  if (at(T::Ident)) {
+  if (at_annotation_name()) {
     auto* name = make<DimName>(begin);
     name->name = std::string(advance().text);
     name->range = range_from(begin);

@@ -268,7 +268,7 @@ bool Parser::at_in(std::size_t offset) const {
 bool Parser::at_conversion() const {
   if (!at_in()) return false;
   if (peek(1).kind == T::LParen) return true;
-  return peek(1).kind == T::Ident && peek(2).kind != T::Ident;
+  return at_annotation_name(1) && peek(2).kind != T::Ident;
 }
 
 Expr* Parser::parse_conversion() {

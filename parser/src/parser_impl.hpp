@@ -97,6 +97,10 @@ class Parser {
                                                SourceRange template_range);
   ast::Decl* parse_annotation_declaration();
   bool at_annotation_declaration() const;
+  // A name a dimension, unit or space may have: an identifier, or a word GLSL only reserves.
+  bool at_annotation_name(std::size_t offset = 0) const {
+    return peek(offset).kind == T::Ident || (peek(offset).kind == T::Unknown && peek(offset).reserved);
+  }
   void parse_template_header(std::vector<ast::TemplateParam>& params, SourceRange& range);
   ast::TypeQualifiers parse_qualifiers();
   bool at_qualifier() const;

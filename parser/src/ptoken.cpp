@@ -154,6 +154,7 @@ void append_lexer_token(std::vector<PToken>& out, const Token& token) {
   }
   if (!is_punctuator(token.kind)) {  // reserved words, invalid bytes, strings
     t.kind = T::Unknown;
+    t.reserved = token.kind == TokenKind::reserved_word;
     out.push_back(t);
     return;
   }

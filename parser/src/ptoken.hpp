@@ -46,6 +46,9 @@ struct PToken {
   // can close one level at a time; `glued` marks the first half, which the
   // expression parser joins back into a shift.
   bool glued = false;
+  // A word GLSL reserves (`common`, `filter`, `input`; T::Unknown): no GLSL use, but it may
+  // name a space, dimension or unit, whose declarations and uses are erased from the output.
+  bool reserved = false;
   std::string_view text;
   SourceRange range;
 };
