@@ -28,6 +28,8 @@ struct Origin {
   SourceRange range;
   std::string text;  // "'L' declared here", "type of 'c' inferred from its initializer"
   bool inferred = false;  // the type is not written at `range`: notes print it
+  // What the note prints when not the value's own type: vec4(x, 0.0) points at x's origin.
+  std::shared_ptr<const Type> type;
 };
 
 struct Value;

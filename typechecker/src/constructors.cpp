@@ -309,6 +309,12 @@ Value Checker::constructor(const ast::CallExpr& e) {
     out.type.dim = DimSlot::zero();
   }
   remember_affine_part(out.type, args);
+  // vec4(x, w) is x where a map meets it: a mistake there points at where x got its kind
+  // (`vec3 tangent = skinnedNormal;` makes the tangent a normal).
+  if (out.type.affine && args[0].origin) {
+    out.origin = args[0].origin;
+    out.origin->type = out.type.affine;
+  }
   if (single && t.shape == Shape::vector && t.rows == 3 && t.scalar == first.scalar)
     if (std::optional<Type> part = affine_part(first, "xyz")) out.type = *part;  // vec3(m * vec4(p, 1.0))
   // `vec3(p)` of a geometric value keeps nothing but its dimension; `vec3(spectrum)` likewise.

@@ -26,9 +26,6 @@ std::string transposed_argument(const std::string& text) {
   return text.substr(head.size(), text.size() - head.size() - 1);
 }
 
-}  // namespace
-namespace {
-
 bool is_vec4(const Type& t) {
   return t.shape == Shape::vector && t.rows == 4 && t.is_floating() && !t.is_array() && t.geometry == Geometry::none;
 }

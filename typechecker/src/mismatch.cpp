@@ -360,7 +360,7 @@ std::string Checker::compose_hint(const Type& left, const Type& right) const {
 
 void Checker::add_origin_note(Diagnostic& d, const Value& v) const {
   if (!v.origin || !v.origin->range.valid() || !v.type.is_annotated()) return;
-  d.with_note(Diagnostic::note(v.origin->range, v.origin->text + " as " + name_of(v.type)));
+  d.with_note(Diagnostic::note(v.origin->range, v.origin->text + " as " + name_of(v.origin->type ? *v.origin->type : v.type)));
 }
 
 }  // namespace safegi::detail
