@@ -91,7 +91,7 @@ TEST(Safeglslc, WritesAMakeStyleDepfile) {
   EXPECT_TRUE(std::filesystem::exists(dir / "deps.d"));
   r = run({shader, "-MD"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target\n");
+  EXPECT_EQ(r.err, "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target [E-COMMAND-LINE]\n");
   std::filesystem::remove_all(dir);
 }
 

@@ -4,10 +4,9 @@
 
 #include <algorithm>
 #include <exception>
-#include <fstream>
-#include <sstream>
 
 #include <safegi/diagnostics/codes.hpp>
+#include <safegi/diagnostics/file.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/elider/elider.hpp>
 #include <safegi/lexer/preprocessor.hpp>
@@ -156,7 +155,7 @@ std::optional<gl::Stage> to_table_stage(Stage stage) {
   switch (stage) {
 #define SAFEGI_STAGE(id, ...) \
   case Stage::id: return gl::Stage::id;
-#include <safegi/typechecker/stages.def>
+#include <safegi/symbol_table/stages.def>
     case Stage::unknown: break;
   }
   return std::nullopt;
@@ -344,14 +343,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
 
 }  // namespace
 
-std::optional<std::string> read_file_from_disk(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
+std::optional<std::string> read_file_from_disk(const std::string& path) { return read_file(path); }
 
 PreprocessorOptions preprocessor_options(const CompileOptions& options) {
   PreprocessorOptions pp;

@@ -181,6 +181,20 @@ TEST(Annotation, DimensionsInUnits) {
   EXPECT_NE(parsed->glsl().find("float<velocity in kilometer / hour>(1.0)"), std::string::npos) << parsed->glsl();
 }
 
+// vocabulary.def's entries as the prelude declares them: bases, derived dimensions and their
+// synonyms; units and their other spellings (C++'s own units are not the prelude's).
+constexpr std::size_t kVocabularyDimensions = 0
+#define VOCABULARY_BASE(name) +1
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) +1
+#define VOCABULARY_SYNONYM(name, of) +1
+#include "safegi/typed/vocabulary.def"
+    ;
+constexpr std::size_t kVocabularyUnits = 0
+#define VOCABULARY_UNIT(name, symbol, dimension, scale) +1
+#define VOCABULARY_UNIT_ALIAS(alias, of) +1
+#include "safegi/typed/vocabulary.def"
+    ;
+
 TEST(Annotation, ThePreludeParses) {
   std::ifstream in(SAFEGI_PRELUDE_FILE);
   std::stringstream text;
@@ -193,8 +207,10 @@ TEST(Annotation, ThePreludeParses) {
     dimensions += ast::isa<ast::DimensionDecl>(d);
     units += ast::isa<ast::UnitDecl>(d);
   }
-  EXPECT_EQ(dimensions, 24u);  // vocabulary.def's 6 bases and 18 dimensions (synonyms too)
-  EXPECT_EQ(units, 37u);       // its 28 units and 9 aliases
+  EXPECT_EQ(dimensions, kVocabularyDimensions);
+  EXPECT_EQ(units, kVocabularyUnits);
+  EXPECT_GT(kVocabularyDimensions, 0u);
+  EXPECT_GT(kVocabularyUnits, 0u);
 }
 
 TEST(Annotation, ThePreludeLineThroughThePreprocessor) {
