@@ -122,10 +122,9 @@ std::string to_string(const GlslVersion& version) {
 }
 
 std::optional<Stage> stage_from_name(std::string_view name) {
+  // Its extension, its long name, or its id in stages.def (the symbol table's name: "tess_control").
   for (const StageInfo& s : stage_table())
-    if (name == s.extension || name == s.long_name) return s.stage;
-  if (name == "tess_control") return Stage::tess_control;
-  if (name == "tess_evaluation") return Stage::tess_evaluation;
+    if (name == s.extension || name == s.long_name || name == gl::to_string(*to_table_stage(s.stage))) return s.stage;
   return std::nullopt;
 }
 
