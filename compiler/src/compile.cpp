@@ -7,6 +7,7 @@
 
 #include <safegi/diagnostics/codes.hpp>
 #include <safegi/diagnostics/file.hpp>
+#include <safegi/diagnostics/printable.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/elider/elider.hpp>
 #include <safegi/lexer/preprocessor.hpp>
@@ -35,37 +36,7 @@ struct StageWork {
 
 // Diagnostics are text for terminals and JSON: bytes that are not UTF-8 (a
 // stray byte of the source quoted in a message, a file name) become `\xNN`.
-std::string valid_utf8(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    // RFC 3629: leads C2..F4; no overlong forms, surrogates or code points above U+10FFFF.
-    const std::size_t length = byte < 0x80 ? 1 : byte >= 0xC2 && byte <= 0xDF ? 2 : byte >= 0xE0 && byte <= 0xEF ? 3
-                             : byte >= 0xF0 && byte <= 0xF4 ? 4 : 0;
-    bool ok = length != 0 && i + length <= text.size();
-    for (std::size_t k = 1; ok && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      unsigned char low = 0x80, high = 0xBF;
-      if (k == 1 && byte == 0xE0) low = 0xA0;
-      if (k == 1 && byte == 0xED) high = 0x9F;
-      if (k == 1 && byte == 0xF0) low = 0x90;
-      if (k == 1 && byte == 0xF4) high = 0x8F;
-      ok = next >= low && next <= high;
-    }
-    if (ok) {
-      out.append(text.substr(i, length));
-      i += length;
-    } else {
-      static const char* digits = "0123456789ABCDEF";
-      out += "\\x";
-      out += digits[byte >> 4];
-      out += digits[byte & 0xF];
-      ++i;
-    }
-  }
-  return out;
-}
+std::string valid_utf8(std::string_view text) { return escape_invalid_utf8(text); }
 
 void make_printable(Diagnostic& d) {
   d.message = valid_utf8(d.message);
