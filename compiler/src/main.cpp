@@ -63,7 +63,11 @@ int main(int argc, char** argv) {
     std::cout.flush();
     return status;
   } catch (const std::bad_alloc&) {
-    std::cerr << "safeglslc: " << safegi::error_report(safegi::out_of_memory_text("compiling"));
+    std::string what = safegi::out_of_memory_text("compiling");
+    what += " [";
+    what += safegi::code::E_LIMIT;
+    what += ']';
+    std::cerr << "safeglslc: " << safegi::error_report(what);
     return safegi::kExitInputError;
   }
 }
