@@ -3,11 +3,10 @@
 // ordinary identifiers in plain GLSL.
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include <safegi/diagnostics/file.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/lexer/preprocessor.hpp>
 
@@ -196,11 +195,9 @@ constexpr std::size_t kVocabularyUnits = 0
     ;
 
 TEST(Annotation, ThePreludeParses) {
-  std::ifstream in(SAFEGI_PRELUDE_FILE);
-  std::stringstream text;
-  text << in.rdbuf();
-  ASSERT_FALSE(text.str().empty());
-  auto parsed = parse_text(text.str());
+  const std::string text = read_file(SAFEGI_PRELUDE_FILE).value_or("");
+  ASSERT_FALSE(text.empty());
+  auto parsed = parse_text(text);
   ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
   std::size_t dimensions = 0, units = 0;
   for (const ast::Decl* d : parsed->unit().decls) {
