@@ -6,16 +6,17 @@
     diagnostics/codes_table.py --sources .                     # ctest: sources emit codes through code::
     diagnostics/codes_table.py --goldens DIR...                # ctest: every located diagnostic has a code
 
---sources reads every C++ source of the repository and fails on a code spelled
-as a string literal ("E-…"/"W-…") outside codes.def and tests (call sites use
-the constants, code::E_…), on a constant code::E_… that codes.def lacks, and on
-a declared code no source emits. Tests may spell codes: they are expected values.
+--sources reads every C++ source of the repository (and its .def, .inc and .in
+files) and fails on a code spelled as a string literal ("E-…"/"W-…") outside
+codes.def and tests (call sites use the constants, code::E_…), on a constant
+code::E_… that codes.def lacks, and on a declared code no source emits. Tests
+may spell codes: they are expected values.
 
 --goldens reads the expected outputs (*.expected) under each DIR and fails on
-a diagnostic with a location (a line `file:line:col: error:` or `warning:`, or
-a JSON diagnostic with a range) that has no code, or one codes.def lacks. Lines
-of the driver (`safeglslc: error:`, usage) and the ones glslangValidator prints
-for SPIR-V (`file:line: error:`) are not the stages'.
+a diagnostic line of any stage that has no code, or one codes.def lacks: the
+checker's (`file:line:col: error: … [E-…]`), the driver's (`safeglslc: error:
+… [E-COMMAND-LINE]`) and glslang's for SPIR-V (`file:line: error: … [E-SPIRV]`),
+and every error or warning of --diagnostics-format=json.
 """
 import argparse
 import json
@@ -60,7 +61,9 @@ def check_sources(root: pathlib.Path) -> int:
     used, bad = set(), []
     for path in sorted(root.rglob("*")):
         parts = path.relative_to(root).parts
-        if path.suffix not in (".cpp", ".hpp", ".h", ".cc") or parts[0].startswith("build"):
+        if path.suffix not in (".cpp", ".hpp", ".h", ".cc", ".def", ".inc", ".in") or parts[0].startswith("build"):
+            continue
+        if path == DEF:
             continue
         if any(part.startswith(".") for part in parts):
             continue
@@ -84,8 +87,9 @@ def check_sources(root: pathlib.Path) -> int:
     return 1 if bad else 0
 
 
-# A diagnostic with a location as the text renderer prints it (colour codes removed).
-LOCATED = re.compile(r"^\S.*?:\d+:\d+: (error|warning): ")
+# A diagnostic line as a stage prints it (colour codes removed): `file:line:col:`, glslang's
+# `file:line:` or `file:`, the driver's `safeglslc:`. Excerpts of source lines start with a blank.
+DIAGNOSTIC = re.compile(r"^\S.*?: (error|warning): ")
 ANSI = re.compile(r"\x1b\[[0-9;]*m")
 CODE_AT_END = re.compile(r"\[([EW]-[A-Z0-9-]+)\]$")
 
@@ -98,10 +102,10 @@ def check_goldens(folders) -> int:
             line = ANSI.sub("", line).rstrip()
             if line.startswith('{"diagnostics":'):  # --diagnostics-format=json
                 for d in json.loads(line)["diagnostics"]:
-                    if d.get("severity") in ("error", "warning") and "range" in d and d.get("code") not in declared:
+                    if d.get("severity") in ("error", "warning") and d.get("code") not in declared:
                         bad.append(f"{path}:{number}: a diagnostic without a declared code: {d.get('message')}")
                 continue
-            if not LOCATED.match(line):
+            if not DIAGNOSTIC.match(line):
                 continue
             m = CODE_AT_END.search(line)
             if not m:

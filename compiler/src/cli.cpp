@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <safegi/diagnostics/codes.hpp>
 #include <safegi/diagnostics/command_line.hpp>
+#include <safegi/diagnostics/file.hpp>
 
 #include "safegi/compiler/compile.hpp"
 #include "safegi/compiler/spirv.hpp"
@@ -60,6 +61,16 @@ bool apply_client(const std::string& text, SpirvOptions& options) {
   return false;
 }
 
+// The driver's own errors end as its diagnostics do, with their code (codes.def):
+// "safeglslc: error: cannot read 'x.frag' [E-FILE]". Returns kExitUsage.
+template <typename... Parts>
+int driver_error(CliStreams& io, std::string_view code, const Parts&... what) {
+  io.err << "safeglslc: error: ";
+  (io.err << ... << what);
+  io.err << " [" << code << "]\n";
+  return kExitUsage;
+}
+
 bool write_output(const std::string& path, const std::string& text, CliStreams& io) {
   if (path == "-") {
     io.out << text;
@@ -69,7 +80,7 @@ bool write_output(const std::string& path, const std::string& text, CliStreams& 
   file << text;
   file.close();
   if (!file) {
-    io.err << "safeglslc: error: cannot write '" << path << "'\n";
+    driver_error(io, code::E_FILE, "cannot write '", path, "'");
     return false;
   }
   return true;
@@ -144,8 +155,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   if (raw_args.size() == 2 && raw_args[0] == "--explain") {
     const std::string text = explain_diagnostic_code(raw_args[1]);
     if (text.empty()) {
-      io.err << "safeglslc: error: '" << raw_args[1] << "' is no diagnostic code (docs/typechecker.md lists them)\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "'", raw_args[1], "' is no diagnostic code (docs/typechecker.md lists them)");
     }
     io.out << text;
     return 0;
@@ -198,7 +208,7 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     io.out << kCompilerName << " " << kCompilerVersion << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
-    io.err << usage_error_text("safeglslc", e.what());
+    io.err << usage_error_text("safeglslc", e.what(), code::E_COMMAND_LINE);
     return kExitUsage;
   }
 
@@ -206,26 +216,23 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   if (!stage_name.empty()) {
     forced_stage = stage_from_name(stage_name);
     if (!forced_stage) {
-      io.err << "safeglslc: error: unknown stage '" << stage_name << "' (expected one of " << stage_words << ")\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "unknown stage '", stage_name, "' (expected one of ", stage_words, ")");
     }
   }
   std::optional<GlslVersion> override_version;
   if (!glsl_version.empty()) {
     override_version = parse_glsl_version(glsl_version);
     if (!override_version) {
-      io.err << "safeglslc: error: unknown --glsl-version '" << glsl_version
-             << "' (expected 100, 110, 120, 130, 140, 150, 300es, 310es, 320es, 330, 400, 410, 420, 430, 440, 450 "
-                "or 460)\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "unknown --glsl-version '", glsl_version,
+                          "' (expected 100, 110, 120, 130, 140, 150, 300es, 310es, 320es, 330, 400, 410, 420, 430, 440, "
+                          "450 or 460)");
     }
   }
   std::optional<SpirvOptions> spirv;
   if (!client.empty()) {
     spirv.emplace();
     if (!apply_client(client, *spirv)) {
-      io.err << "safeglslc: error: unknown --client '" << client << "' (expected vulkan100 or opengl100)\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "unknown --client '", client, "' (expected vulkan100 or opengl100)");
     }
   }
   // The environments first, then the SPIR-V versions, whatever their order on the line.
@@ -234,13 +241,11 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   for (const std::string& env : target_envs) {
     SpirvOptions candidate = spirv.value_or(SpirvOptions{});
     if (!apply_target_env(env, candidate)) {
-      io.err << "safeglslc: error: unknown --target-env '" << env
-             << "' (expected vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3, opengl or spirv1.0 ... spirv1.6)\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "unknown --target-env '", env,
+                          "' (expected vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3, opengl or spirv1.0 ... spirv1.6)");
     }
     if (!spirv && env.rfind("spirv", 0) == 0) {
-      io.err << "safeglslc: error: --target-env " << env << " sets the SPIR-V version; give -V or -G too\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE, "--target-env ", env, " sets the SPIR-V version; give -V or -G too");
     }
     spirv = candidate;
   }
@@ -250,9 +255,9 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
   if (spirv && client.empty()) {
     const std::optional<bool> form = target_env_writes_spirv(outputs);
     if (!form) {
-      io.err << "safeglslc: error: some -o outputs are named .spv and some are not; with --target-env the names choose "
-                "SPIR-V (.spv) or plain GLSL for every input alike\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE,
+                          "some -o outputs are named .spv and some are not; with --target-env the names choose "
+                          "SPIR-V (.spv) or plain GLSL for every input alike");
     }
     write_spirv = *form;
   }
@@ -263,19 +268,17 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     spirv->relaxed_vulkan_rules = relaxed;
     spirv->debug_info = debug_info;
   } else if (auto_map_locations || auto_map_bindings || relaxed || debug_info) {
-    io.err << "safeglslc: error: --aml, --amb, -R and -g are for SPIR-V output; give -V or -G too (or name the outputs .spv)\n";
-    return kExitUsage;
+    return driver_error(io, code::E_COMMAND_LINE,
+                        "--aml, --amb, -R and -g are for SPIR-V output; give -V or -G too (or name the outputs .spv)");
   }
   if (write_spirv && !spirv_backend) {
-    io.err << "safeglslc: error: this safeglslc cannot write SPIR-V (it is safeglslc-spirv's job, which was not found "
-              "beside it)\n";
-    return kExitUsage;
+    return driver_error(io, code::E_SPIRV,
+                        "this safeglslc cannot write SPIR-V (it is safeglslc-spirv's job, which was not found beside it)");
   }
 
   if (!outputs.empty() && outputs.size() != files.size()) {
-    io.err << "safeglslc: error: " << outputs.size() << " -o given for " << files.size()
-           << " inputs; give one per input, in order\n";
-    return kExitUsage;
+    return driver_error(io, code::E_COMMAND_LINE, outputs.size(), " -o given for ", files.size(),
+                        " inputs; give one per input, in order");
   }
 
   std::vector<ShaderSource> sources;
@@ -284,27 +287,20 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     s.stage = forced_stage;
     if (path == "-") {
       if (!forced_stage) {
-        io.err << "safeglslc: error: reading stdin needs the stage: give -S " << stage_extension_list("|") << "\n";
-        return kExitUsage;
+        return driver_error(io, code::E_PROGRAM, "reading stdin needs the stage: give -S ", stage_extension_list("|"));
       }
       s.path = "<stdin>";
       std::ostringstream text;
       text << io.in.rdbuf();
       s.text = text.str();
     } else {
-      std::ifstream in(path, std::ios::binary);
-      if (!in) {
-        io.err << "safeglslc: error: cannot read '" << path << "'\n";
-        return kExitUsage;
-      }
-      std::ostringstream text;
-      text << in.rdbuf();
+      std::optional<std::string> text = read_file(path);
+      if (!text) return driver_error(io, code::E_FILE, "cannot read '", path, "'");
       s.path = path;
-      s.text = text.str();
+      s.text = std::move(*text);
       if (!forced_stage && !stage_from_path(path)) {
-        io.err << "safeglslc: error: cannot tell the stage of '" << path
-               << "' from its extension (" << stage_extension_list(" ", ".") << ", optionally after .sgl); use -S\n";
-        return kExitUsage;
+        return driver_error(io, code::E_PROGRAM, "cannot tell the stage of '", path, "' from its extension (",
+                            stage_extension_list(" ", "."), ", optionally after .sgl); use -S");
       }
     }
     sources.push_back(std::move(s));
@@ -360,8 +356,8 @@ int run_safeglslc(const std::vector<std::string>& raw_args, CliStreams& io, Spir
     // The depfile's target is the first file written (what the build rule produces).
     std::string target = !outputs.empty() && outputs.front() != "-" ? outputs.front() : symbols_path;
     if (target.empty() || target == "-") {
-      io.err << "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target\n";
-      return kExitUsage;
+      return driver_error(io, code::E_COMMAND_LINE,
+                          "-MD needs an output file (-o or --symbols) to name as the depfile's target");
     }
     const std::string path = depfile_path.empty() ? target + ".d" : depfile_path;
     written = write_output(path, depfile_text(target, result.dependencies), io) && written;

@@ -8,6 +8,8 @@
 #include <random>
 #include <sstream>
 
+#include <safegi/diagnostics/file.hpp>
+
 #include "safegi/compiler/cli.hpp"
 
 namespace safegi {
@@ -60,12 +62,9 @@ TEST(Safeglslc, WritesGlslAndSymbolsFiles) {
   CliRun r = run({"-", "-S", "frag", "-o", glsl, "--symbols", json},
               "#version 330 core\n#include <safegi/prelude.sgl>\nuniform float<length> d;\nout vec4 c;\nvoid main() { c = vec4(d); }\n");
   ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream g(glsl), j(json);
-  std::stringstream gs, js;
-  gs << g.rdbuf();
-  js << j.rdbuf();
-  EXPECT_NE(gs.str().find("uniform float         d;"), std::string::npos) << gs.str();
-  EXPECT_NE(js.str().find("\"name\": \"d\""), std::string::npos) << js.str();
+  const std::string gs = read_file(glsl).value_or(""), js = read_file(json).value_or("");
+  EXPECT_NE(gs.find("uniform float         d;"), std::string::npos) << gs;
+  EXPECT_NE(js.find("\"name\": \"d\""), std::string::npos) << js;
   std::filesystem::remove_all(dir);
 }
 
@@ -79,19 +78,17 @@ TEST(Safeglslc, WritesAMakeStyleDepfile) {
   const std::string glsl = (dir / "a.frag.glsl").string();
   CliRun r = run({shader, "-o", glsl, "-MD"});
   ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream in(glsl + ".d");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string depfile = read_file(glsl + ".d").value_or("");
   std::string escaped_header = header;
   escaped_header.replace(escaped_header.find("my lib"), 6, "my\\ lib");
-  EXPECT_EQ(text.str(), glsl + ": \\\n  " + shader + " \\\n  " + escaped_header + "\n");
+  EXPECT_EQ(depfile, glsl + ": \\\n  " + shader + " \\\n  " + escaped_header + "\n");
   // -MF names the file; without an output file there is no target to name.
   r = run({shader, "-o", glsl, "-MD", "-MF", (dir / "deps.d").string()});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "deps.d"));
   r = run({shader, "-MD"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target\n");
+  EXPECT_EQ(r.err, "safeglslc: error: -MD needs an output file (-o or --symbols) to name as the depfile's target [E-COMMAND-LINE]\n");
   std::filesystem::remove_all(dir);
 }
 

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <exception>
-#include <fstream>
-#include <sstream>
 
 #include <safegi/diagnostics/codes.hpp>
+#include <safegi/diagnostics/file.hpp>
+#include <safegi/diagnostics/printable.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/elider/elider.hpp>
 #include <safegi/lexer/preprocessor.hpp>
@@ -36,37 +36,7 @@ struct StageWork {
 
 // Diagnostics are text for terminals and JSON: bytes that are not UTF-8 (a
 // stray byte of the source quoted in a message, a file name) become `\xNN`.
-std::string valid_utf8(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    // RFC 3629: leads C2..F4; no overlong forms, surrogates or code points above U+10FFFF.
-    const std::size_t length = byte < 0x80 ? 1 : byte >= 0xC2 && byte <= 0xDF ? 2 : byte >= 0xE0 && byte <= 0xEF ? 3
-                             : byte >= 0xF0 && byte <= 0xF4 ? 4 : 0;
-    bool ok = length != 0 && i + length <= text.size();
-    for (std::size_t k = 1; ok && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      unsigned char low = 0x80, high = 0xBF;
-      if (k == 1 && byte == 0xE0) low = 0xA0;
-      if (k == 1 && byte == 0xED) high = 0x9F;
-      if (k == 1 && byte == 0xF0) low = 0x90;
-      if (k == 1 && byte == 0xF4) high = 0x8F;
-      ok = next >= low && next <= high;
-    }
-    if (ok) {
-      out.append(text.substr(i, length));
-      i += length;
-    } else {
-      static const char* digits = "0123456789ABCDEF";
-      out += "\\x";
-      out += digits[byte >> 4];
-      out += digits[byte & 0xF];
-      ++i;
-    }
-  }
-  return out;
-}
+std::string valid_utf8(std::string_view text) { return escape_invalid_utf8(text); }
 
 void make_printable(Diagnostic& d) {
   d.message = valid_utf8(d.message);
@@ -123,10 +93,9 @@ std::string to_string(const GlslVersion& version) {
 }
 
 std::optional<Stage> stage_from_name(std::string_view name) {
+  // Its extension, its long name, or its id in stages.def (the symbol table's name: "tess_control").
   for (const StageInfo& s : stage_table())
-    if (name == s.extension || name == s.long_name) return s.stage;
-  if (name == "tess_control") return Stage::tess_control;
-  if (name == "tess_evaluation") return Stage::tess_evaluation;
+    if (name == s.extension || name == s.long_name || name == gl::to_string(*to_table_stage(s.stage))) return s.stage;
   return std::nullopt;
 }
 
@@ -156,7 +125,7 @@ std::optional<gl::Stage> to_table_stage(Stage stage) {
   switch (stage) {
 #define SAFEGI_STAGE(id, ...) \
   case Stage::id: return gl::Stage::id;
-#include <safegi/typechecker/stages.def>
+#include <safegi/symbol_table/stages.def>
     case Stage::unknown: break;
   }
   return std::nullopt;
@@ -347,14 +316,7 @@ CompileResult compile_here(const std::vector<ShaderSource>& sources, const Compi
 
 }  // namespace
 
-std::optional<std::string> read_file_from_disk(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
+std::optional<std::string> read_file_from_disk(const std::string& path) { return read_file(path); }
 
 PreprocessorOptions preprocessor_options(const CompileOptions& options) {
   PreprocessorOptions pp;

@@ -51,7 +51,8 @@ TEST(StageFromPath, VulkanStagesByTheirExtensionsAndNames) {
   for (const StageInfo& s : stage_table()) {
     EXPECT_EQ(stage_from_name(s.extension), s.stage) << s.extension;
     EXPECT_EQ(stage_from_path(std::string("x.") + s.extension), s.stage) << s.extension;
-    EXPECT_EQ(to_table_stage(s.stage).has_value(), true) << s.extension;
+    ASSERT_EQ(to_table_stage(s.stage).has_value(), true) << s.extension;
+    EXPECT_EQ(stage_from_name(gl::to_string(*to_table_stage(s.stage))), s.stage) << s.extension;  // "tess_control"
   }
 }
 

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <string>
 
+#include <safegi/diagnostics/codes.hpp>
 #include <safegi/diagnostics/exit_status.hpp>
 #include <safegi/diagnostics/printable.hpp>
 
@@ -29,16 +30,16 @@ void become_spirv_compiler(char** argv) {
   char self[PATH_MAX];
   const ssize_t length = readlink("/proc/self/exe", self, sizeof self - 1);
   if (length <= 0) {
-    std::fprintf(stderr, "safeglslc: error: cannot find this program's path to run safeglslc-spirv: %s\n",
-                 std::strerror(errno));
+    std::fprintf(stderr, "safeglslc: error: cannot find this program's path to run safeglslc-spirv: %s [%s]\n",
+                 std::strerror(errno), safegi::code::E_SPIRV);
     return;
   }
   std::string path(self, static_cast<std::size_t>(length));
   path = path.substr(0, path.rfind('/') + 1) + "safeglslc-spirv";
   argv[0] = path.data();
   execv(path.c_str(), argv);
-  std::fprintf(stderr, "safeglslc: error: SPIR-V output runs %s, which could not be started: %s\n", path.c_str(),
-               std::strerror(errno));
+  std::fprintf(stderr, "safeglslc: error: SPIR-V output runs %s, which could not be started: %s [%s]\n", path.c_str(),
+               std::strerror(errno), safegi::code::E_SPIRV);
 }
 #endif
 
@@ -62,7 +63,11 @@ int main(int argc, char** argv) {
     std::cout.flush();
     return status;
   } catch (const std::bad_alloc&) {
-    std::cerr << "safeglslc: " << safegi::error_report(safegi::out_of_memory_text("compiling"));
+    std::string what = safegi::out_of_memory_text("compiling");
+    what += " [";
+    what += safegi::code::E_LIMIT;
+    what += ']';
+    std::cerr << "safeglslc: " << safegi::error_report(what);
     return safegi::kExitInputError;
   }
 }

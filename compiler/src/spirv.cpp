@@ -10,6 +10,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <safegi/diagnostics/codes.hpp>
 #include <safegi/symbol_table/driver_log.hpp>
 
 #include "glslang_language.hpp"
@@ -42,6 +43,23 @@ const gl::StageSymbols* table_entry(const CompileResult& compiled, Stage stage) 
   return table_stage ? compiled.symbols.stage(*table_stage) : nullptr;
 }
 
+// " [E-SPIRV]": how a diagnostic line ends with its code.
+std::string code_suffix(std::string_view code) {
+  std::string suffix = " [";
+  suffix += code;
+  suffix += ']';
+  return suffix;
+}
+
+// "safeglslc: error: <what> [E-SPIRV]", a line of the log.
+std::string driver_error_line(std::string_view what) {
+  std::string line = "safeglslc: error: ";
+  line += what;
+  line += code_suffix(code::E_SPIRV);
+  line += '\n';
+  return line;
+}
+
 std::string mapped_log(std::string log, const CompileResult& compiled, Stage stage, const std::string& path) {
   // glslang's summary ("ERROR: 2 compilation errors.  No code generated."):
   // safeglslc counts the errors itself.
@@ -58,7 +76,18 @@ std::string mapped_log(std::string log, const CompileResult& compiled, Stage sta
   for (const auto& [from, to] : {std::pair{": ERROR: ", ": error: "}, std::pair{": WARNING: ", ": warning: "}})
     for (std::size_t at = mapped.find(from); at != std::string::npos; at = mapped.find(from, at))
       mapped.replace(at, std::string_view(from).size(), to);
-  return mapped;
+  // glslang's messages are the SPIR-V step's diagnostics: each ends with its code, as the checker's do.
+  std::string coded;
+  for (std::size_t begin = 0; begin < mapped.size();) {
+    const std::size_t end = std::min(mapped.find('\n', begin), mapped.size());
+    const std::string_view line = std::string_view(mapped).substr(begin, end - begin);
+    coded += line;
+    if (line.find(": error: ") != std::string_view::npos) coded += code_suffix(code::E_SPIRV);
+    else if (line.find(": warning: ") != std::string_view::npos) coded += code_suffix(code::W_SPIRV);
+    coded += '\n';
+    begin = end + 1;
+  }
+  return coded;
 }
 
 // A GLSL type that takes one uniform location (an array one per element);
@@ -87,8 +116,17 @@ struct UniformLocations {
 UniformLocations program_uniform_locations(const CompileResult& compiled) {
   std::vector<const gl::StageSymbols*> stages;
   for (const gl::StageSymbols& stage : compiled.symbols.stages) stages.push_back(&stage);
+  // glslang numbers them in its order of stages (EShLanguage), not the pipeline's.
+  auto glslang_order = [](gl::Stage stage) {
+    switch (stage) {
+#define SAFEGI_STAGE(id, ...) \
+  case gl::Stage::id: return static_cast<int>(glslang_language(Stage::id));
+#include <safegi/symbol_table/stages.def>
+    }
+    return 0;
+  };
   std::stable_sort(stages.begin(), stages.end(),
-                   [](const auto* a, const auto* b) { return static_cast<int>(a->stage) < static_cast<int>(b->stage); });
+                   [&](const auto* a, const auto* b) { return glslang_order(a->stage) < glslang_order(b->stage); });
   // In glslang's order (TVarEntryInfo::TOrderByPriority): a layout(binding) first, then
   // layout(set), then declaration order.
   auto uniforms = [](const gl::StageSymbols& stage) {
@@ -153,12 +191,12 @@ SpirvResult to_spirv_one_by_one(const CompileResult& compiled, const SpirvOption
 SpirvResult to_spirv(const CompileResult& compiled, const SpirvOptions& options) {
   SpirvResult result;
   if (!compiled.success) {
-    result.log = "safeglslc: error: SPIR-V needs a shader that compiled without errors\n";
+    result.log = driver_error_line("SPIR-V needs a shader that compiled without errors");
     return result;
   }
   if (options.vulkan_minor < 0 || options.vulkan_minor > 3 || options.spirv_minor.value_or(0) < 0 ||
       options.spirv_minor.value_or(0) > 6) {
-    result.log = "safeglslc: error: SPIR-V targets are vulkan1.0 … vulkan1.3 and spirv1.0 … spirv1.6\n";
+    result.log = driver_error_line("SPIR-V targets are vulkan1.0 … vulkan1.3 and spirv1.0 … spirv1.6");
     return result;
   }
   // glslang links one entry point per stage: a ray-tracing pipeline's several

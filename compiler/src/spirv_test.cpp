@@ -105,7 +105,7 @@ TEST(Spirv, GlslangMessagesPointAtTheAnnotatedSources) {
   SpirvResult vulkan = to_spirv(r, {});
   EXPECT_FALSE(vulkan.success);
   EXPECT_EQ(vulkan.log,
-            "lights.glsl:2: error: 'non-opaque uniforms outside a block' : not allowed when using GLSL for Vulkan\n")
+            "lights.glsl:2: error: 'non-opaque uniforms outside a block' : not allowed when using GLSL for Vulkan [E-SPIRV]\n")
       << vulkan.log;
   SpirvResult relaxed = to_spirv(r, {.auto_map_bindings = true, .relaxed_vulkan_rules = true});
   EXPECT_TRUE(relaxed.success) << relaxed.log;

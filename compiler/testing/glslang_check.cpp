@@ -1,13 +1,13 @@
 #include "glslang_check.hpp"
 
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <vector>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <safegi/diagnostics/file.hpp>
 
 #include "../src/glslang_language.hpp"
 
@@ -66,11 +66,6 @@ std::optional<int> spirv_instruction_count(const std::string& glsl, Stage stage,
   return count;
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string read_text_file(const std::filesystem::path& path) { return read_file(path.string()).value_or(""); }
 
 }  // namespace safegi::testing

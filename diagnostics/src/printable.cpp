@@ -50,7 +50,7 @@ TextUnit text_unit_at(std::string_view text, std::size_t at) {
   const unsigned char c = byte_at(text, at);
   if (c < 0x80) return {1, c >= 0x20 && c != 0x7F};
   const std::size_t length = utf8_sequence_length(text, at);
-  if (length == 0) return {1, false};
+  if (length == 0) return {1, false, false};
   return {length, !is_unprintable_sequence(text.substr(at, length))};
 }
 
@@ -70,6 +70,19 @@ std::string escape_unprintable(std::string_view text, bool keep_line_breaks) {
     const TextUnit unit = text_unit_at(text, at);
     const std::string_view bytes = text.substr(at, unit.bytes);
     if (unit.printable || (keep_line_breaks && bytes == "\n")) out += bytes;
+    else append_escaped(out, bytes);
+    at += unit.bytes;
+  }
+  return out;
+}
+
+std::string escape_invalid_utf8(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const TextUnit unit = text_unit_at(text, at);
+    const std::string_view bytes = text.substr(at, unit.bytes);
+    if (unit.utf8) out += bytes;
     else append_escaped(out, bytes);
     at += unit.bytes;
   }

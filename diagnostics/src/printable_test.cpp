@@ -28,6 +28,17 @@ TEST(Printable, MalformedUtf8C1ControlsAndBidiOverridesAreEscaped) {
   EXPECT_FALSE(text_unit_at("\x9B", 0).printable);
 }
 
+// The other policy, over the same validator: only what is not UTF-8 is escaped (controls,
+// C1 and bidi overrides stay, for escape_unprintable when the text reaches a terminal).
+TEST(Printable, EscapeInvalidUtf8KeepsEveryWellFormedSequence) {
+  EXPECT_EQ(escape_invalid_utf8("\xFF\xC3"), "\\xFF\\xC3");
+  EXPECT_EQ(escape_invalid_utf8("\xC0\xAF"), "\\xC0\\xAF");
+  EXPECT_EQ(escape_invalid_utf8("\xED\xA0\x80"), "\\xED\\xA0\\x80");
+  EXPECT_EQ(escape_invalid_utf8("tab\tline\n\x1b \xC2\x9B a\xE2\x80\xAE \xC3\xA9"), "tab\tline\n\x1b \xC2\x9B a\xE2\x80\xAE \xC3\xA9");
+  EXPECT_FALSE(text_unit_at("\x9B", 0).utf8);  // a lone continuation byte
+  EXPECT_TRUE(text_unit_at("\x01", 0).utf8);
+}
+
 TEST(Printable, ErrorReportKeepsAWholeDiagnosticAndPrefixesAnythingElse) {
   EXPECT_EQ(error_report("s.pbrt:1:1: error: bad\nbad\n^\n"), "s.pbrt:1:1: error: bad\nbad\n^\n");
   EXPECT_EQ(error_report("cannot open 'a\x1b]0;x\x07'"), "error: cannot open 'a\\x1B]0;x\\x07'\n");

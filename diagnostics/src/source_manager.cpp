@@ -1,10 +1,8 @@
 #include <safegi/diagnostics/source_manager.hpp>
 
+#include <safegi/diagnostics/file.hpp>
+
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace safegi {
@@ -44,18 +42,9 @@ FileId SourceManager::add_file(std::string path, std::string contents) {
 }
 
 std::optional<FileId> SourceManager::load_file(const std::string& path, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (error) *error = std::strerror(errno);
-    return std::nullopt;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    if (error) *error = "read error";
-    return std::nullopt;
-  }
-  return add_file(path, std::move(buffer).str());
+  std::optional<std::string> text = read_file(path, error);
+  if (!text) return std::nullopt;
+  return add_file(path, std::move(*text));
 }
 
 FileId SourceManager::add_inclusion(FileId id, SourceRange included_at) {

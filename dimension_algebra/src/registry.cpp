@@ -280,8 +280,8 @@ std::string DimensionRegistry::describe(const DimensionError& error) const {
 }
 
 DimensionRegistry DimensionRegistry::rendering_prelude() {
-  // vocabulary.def, the list C++ and scene files take too; safegi/prelude.sgl declares the
-  // same names in the same order (typechecker/src/prelude_test.cpp).
+  // vocabulary.def, the list C++ and scene files take too; the build makes safegi/prelude.sgl
+  // from it, the same names in the same order (typechecker/src/prelude_test.cpp checks it).
   DimensionRegistry r;
   auto derive = [&r](std::string name, std::initializer_list<std::int32_t> exponents) {
     std::vector<Factor> factors;
@@ -298,7 +298,7 @@ DimensionRegistry DimensionRegistry::rendering_prelude() {
   };
 #define VOCABULARY_BASE(name) r.add_base(#name);
 #define VOCABULARY_RATIO_BASE(name) r.add_base(#name, BaseKind::ratio);
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) \
   derive(#name, {length, time, energy, angle, solid_angle, proj});
 #define VOCABULARY_SYNONYM(name, of) r.add_derived(#name, r.find_derived(#of)->value);
 #define VOCABULARY_UNIT(name, symbol, dimension, scale) unit(#name, #dimension, scale);

@@ -3,11 +3,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <safegi/diagnostics/codes.hpp>
+#include <safegi/diagnostics/file.hpp>
 #include <safegi/lexer/extensions.hpp>
 
 #include "preprocessor_impl.hpp"
@@ -19,11 +18,7 @@ namespace {
 std::optional<std::string> read_from_disk(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return std::move(buffer).str();
+  return read_file(path);
 }
 
 bool is_known_version(int v) {

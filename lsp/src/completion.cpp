@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include <safegi/lexer/preprocessor.hpp>
 
@@ -217,10 +216,8 @@ json completion(const std::string& path, const std::string& text, std::size_t of
     for (const std::string& u : v.units) {
       std::string detail = "unit";
       if (const Unit* found = registry ? registry->find_unit(u) : nullptr) {
-        std::ostringstream scale;
-        scale.precision(17);
-        scale << found->scale;
-        detail = "unit of " + registry->format(found->dimension) + " = " + scale.str() + " " + registry->format_si(found->dimension);
+        detail = "unit of " + registry->format(found->dimension) + " = " + DimensionRegistry::format_number(found->scale) + " " +
+                 registry->format_si(found->dimension);
       }
       items.push_back(item(u, completion_kind::unit, detail));
     }

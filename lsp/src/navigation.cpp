@@ -1,7 +1,6 @@
 #include "navigation.hpp"
 
 #include <algorithm>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -120,11 +119,9 @@ std::string symbol_hover_text(const SymbolOccurrence* o, const DimensionRegistry
       const Unit* unit = registry.find_unit(o->name);
       code = "unit " + o->name;
       if (unit) {
-        std::ostringstream scale;
-        scale.precision(17);
-        scale << unit->scale;
-        code += " : " + registry.format(unit->dimension) + " = " + scale.str();
-        words = "1 " + o->name + " = " + scale.str() + " " + registry.format_si(unit->dimension);
+        const std::string scale = DimensionRegistry::format_number(unit->scale);  // as the checker prints numbers
+        code += " : " + registry.format(unit->dimension) + " = " + scale;
+        words = "1 " + o->name + " = " + scale + " " + registry.format_si(unit->dimension);
       }
       break;
     }

@@ -139,6 +139,17 @@ TEST_F(Navigation, DefinitionInTheDocumentAndInThePrelude) {
   EXPECT_EQ(definition(11, 8), nullptr);  // `spectrum` is a type word, not a declared name
 }
 
+// A unit's scale prints as the checker prints numbers (DimensionRegistry::format_number), not
+// as a 17-digit stream did ("9.9999999999999995e-07" for the prelude's 1e-6).
+TEST_F(Navigation, HoverPrintsAUnitsScaleAsTheCheckerDoes) {
+  const std::string uri = "file:///tmp/nav/micro.sgl.frag";
+  ASSERT_EQ(s->open(uri, "#version 330 core\n#include <safegi/prelude.sgl>\n"
+                         "void main() { float<length> d = 2.0 * micrometer; }\n")["diagnostics"],
+            json::array());
+  const json hovered = s->request("textDocument/hover", at(uri, 2, 42))["result"];
+  EXPECT_EQ(hovered["contents"]["value"], "```glsl\nunit micrometer : length = 0.000001\n```\n1 micrometer = 0.000001 m");
+}
+
 TEST_F(Navigation, HoverOnADiagnosticExplainsItsCodeAsSafeglslcExplainDoes) {
   const std::string uri = "file:///tmp/nav/bug.sgl.frag";
   const json opened = s->open(uri, "#version 330 core\n#include <safegi/prelude.sgl>\n"
@@ -149,7 +160,7 @@ TEST_F(Navigation, HoverOnADiagnosticExplainsItsCodeAsSafeglslcExplainDoes) {
   explanation.pop_back();  // its last newline
   // On a name inside the diagnostic's range: the name, then the explanation.
   const json on_name = s->request("textDocument/hover", at(uri, 2, 40))["result"];
-  EXPECT_EQ(on_name["contents"]["value"], "```glsl\nunit second : time = 1\n```\n1 second = 1 s\n\n---\n\n" + explanation);
+  EXPECT_EQ(on_name["contents"]["value"], "```glsl\nunit second : time = 1.0\n```\n1 second = 1.0 s\n\n---\n\n" + explanation);
   // Where no name is: the explanation alone, over the diagnostic's range.
   const json on_operator = s->request("textDocument/hover", at(uri, 2, 37))["result"];
   EXPECT_EQ(on_operator["contents"]["value"], explanation);

@@ -362,7 +362,7 @@ std::string find_prelude_file(const std::string& executable) {
   const fs::path exe = fs::weakly_canonical(fs::path(executable), error);
   std::vector<fs::path> candidates = {exe.parent_path().parent_path() / "share/safegi/include/safegi/prelude.sgl"};
 #ifdef SAFEGI_SOURCE_PRELUDE
-  candidates.emplace_back(SAFEGI_SOURCE_PRELUDE);  // the build tree's: the source file it was compiled from
+  candidates.emplace_back(SAFEGI_SOURCE_PRELUDE);  // the build tree's: the file the build made from vocabulary.def
 #endif
   for (const fs::path& candidate : candidates) {
     std::optional<std::string> text = read_file_from_disk(candidate.string());

@@ -3,8 +3,7 @@
 // get errors and never end the process, and the exit codes of the spec.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
+#include <safegi/diagnostics/file.hpp>
 
 #include "test_client.hpp"
 
@@ -12,10 +11,7 @@ namespace safegi::lsp::testing {
 namespace {
 
 std::string example(const std::string& name) {
-  std::ifstream in(std::string(SAFEGI_EXAMPLE_SHADERS) + "/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_file(std::string(SAFEGI_EXAMPLE_SHADERS) + "/" + name).value_or("");
 }
 
 json position(int line, int character) { return {{"line", line}, {"character", character}}; }

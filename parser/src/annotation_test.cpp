@@ -3,11 +3,10 @@
 // ordinary identifiers in plain GLSL.
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include <safegi/diagnostics/file.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/lexer/preprocessor.hpp>
 
@@ -181,20 +180,34 @@ TEST(Annotation, DimensionsInUnits) {
   EXPECT_NE(parsed->glsl().find("float<velocity in kilometer / hour>(1.0)"), std::string::npos) << parsed->glsl();
 }
 
+// vocabulary.def's entries as the prelude declares them: bases, derived dimensions and their
+// synonyms; units and their other spellings (C++'s own units are not the prelude's).
+constexpr std::size_t kVocabularyDimensions = 0
+#define VOCABULARY_BASE(name) +1
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) +1
+#define VOCABULARY_SYNONYM(name, of) +1
+#include "safegi/typed/vocabulary.def"
+    ;
+constexpr std::size_t kVocabularyUnits = 0
+#define VOCABULARY_UNIT(name, symbol, dimension, scale) +1
+#define VOCABULARY_UNIT_ALIAS(alias, of) +1
+#include "safegi/typed/vocabulary.def"
+    ;
+
 TEST(Annotation, ThePreludeParses) {
-  std::ifstream in(SAFEGI_PRELUDE_FILE);
-  std::stringstream text;
-  text << in.rdbuf();
-  ASSERT_FALSE(text.str().empty());
-  auto parsed = parse_text(text.str());
+  const std::string text = read_file(SAFEGI_PRELUDE_FILE).value_or("");
+  ASSERT_FALSE(text.empty());
+  auto parsed = parse_text(text);
   ASSERT_FALSE(parsed->diagnostics.has_errors()) << parsed->errors();
   std::size_t dimensions = 0, units = 0;
   for (const ast::Decl* d : parsed->unit().decls) {
     dimensions += ast::isa<ast::DimensionDecl>(d);
     units += ast::isa<ast::UnitDecl>(d);
   }
-  EXPECT_EQ(dimensions, 24u);  // vocabulary.def's 6 bases and 18 dimensions (synonyms too)
-  EXPECT_EQ(units, 37u);       // its 28 units and 9 aliases
+  EXPECT_EQ(dimensions, kVocabularyDimensions);
+  EXPECT_EQ(units, kVocabularyUnits);
+  EXPECT_GT(kVocabularyDimensions, 0u);
+  EXPECT_GT(kVocabularyUnits, 0u);
 }
 
 TEST(Annotation, ThePreludeLineThroughThePreprocessor) {

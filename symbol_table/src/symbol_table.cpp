@@ -11,22 +11,10 @@ namespace {
 
 using nlohmann::json;
 
-constexpr std::array<std::pair<Stage, std::string_view>, 14> kStageNames{{
-    {Stage::vertex, "vertex"},
-    {Stage::tess_control, "tess_control"},
-    {Stage::tess_evaluation, "tess_evaluation"},
-    {Stage::geometry, "geometry"},
-    {Stage::fragment, "fragment"},
-    {Stage::compute, "compute"},
-    {Stage::task, "task"},
-    {Stage::mesh, "mesh"},
-    {Stage::ray_generation, "ray_generation"},
-    {Stage::intersection, "intersection"},
-    {Stage::any_hit, "any_hit"},
-    {Stage::closest_hit, "closest_hit"},
-    {Stage::miss, "miss"},
-    {Stage::callable, "callable"},
-}};
+constexpr std::pair<Stage, std::string_view> kStageNames[] = {
+#define SAFEGI_STAGE(id, ...) {Stage::id, #id},
+#include "safegi/symbol_table/stages.def"
+};
 
 std::string_view json_type_name(const json& value) {
   if (value.is_number_integer()) return "integer";

@@ -87,6 +87,25 @@ TEST(SymbolTable, ProgramModeHoldsEveryStageAndTheVocabularyItUses) {
   EXPECT_EQ(table.namer().name({{{"energy", 1}, {"length", -2}, {"time", -1}}, ""}), "irradiance");
 }
 
+// gl::Stage is made from stages.def, as the checker's Stage is; a table names a stage by its id,
+// the names tables have always had (a renamed id would break every reader).
+TEST(SymbolTable, StagesAreStagesDefsAndKeepTheirNames) {
+  const std::vector<std::string> ids = {
+#define SAFEGI_STAGE(id, ...) #id,
+#include "safegi/symbol_table/stages.def"
+  };
+  const std::vector<std::string> names = {"vertex",         "tess_control", "tess_evaluation", "geometry", "task",
+                                          "mesh",           "fragment",     "compute",         "ray_generation",
+                                          "intersection",   "any_hit",      "closest_hit",     "miss",     "callable"};
+  EXPECT_EQ(ids, names);
+  for (const std::string& id : ids) {
+    const std::optional<Stage> stage = stage_from_string(id);
+    ASSERT_TRUE(stage) << id;
+    EXPECT_EQ(to_string(*stage), id);
+  }
+  EXPECT_FALSE(stage_from_string("vert"));  // the file extension is safeglslc's spelling, not the table's
+}
+
 TEST(SymbolTable, WritesWhatItReads) {
   const std::string text = read_testdata("emission.program.json");
   SymbolTable table = parse_symbol_table(text);

@@ -21,7 +21,7 @@ const std::vector<StageInfo>& stage_table() {
   static const std::vector<StageInfo> table = {
 #define SAFEGI_STAGE(id, letter, extension, long_name, words, family) \
   {Stage::id, letter, extension, long_name, words, StageFamily::family},
-#include "safegi/typechecker/stages.def"
+#include "safegi/symbol_table/stages.def"
   };
   return table;
 }

@@ -1,6 +1,8 @@
-// safegi/prelude.sgl and vocabulary.def (through DimensionRegistry::rendering_prelude(),
-// which is made from it) declare the same vocabulary: every base, dimension and unit, in
-// the same order, with the same value. A name added to one and not the other fails here.
+// The build makes safegi/prelude.sgl from vocabulary.def (cmake/SafeGIPrelude.cmake); the
+// checker's DimensionRegistry::rendering_prelude() is made from the same file by the C++
+// preprocessor. The generated prelude parses and declares exactly the vocabulary's entries:
+// every base, dimension and unit, in the same order, with the same value (a dimension's
+// shader formula is checked against its exponents here).
 
 #include <gtest/gtest.h>
 
@@ -11,7 +13,7 @@ namespace {
 
 std::vector<std::string> listed(const std::vector<std::string>& names) { return names; }
 
-TEST(Prelude, DeclaresTheVocabularyOfTheTypedLibraryAndTheRenderer) {
+TEST(Prelude, TheGeneratedPreludeDeclaresExactlyTheVocabulary) {
   auto c = check_source("void main() {}");
   ASSERT_EQ(c->rendered(), "");
   const DimensionRegistry& shader = c->result.registry;
@@ -34,6 +36,7 @@ TEST(Prelude, DeclaresTheVocabularyOfTheTypedLibraryAndTheRenderer) {
   for (const Unit& u : shader.units()) shader_units.push_back(describe(shader, u));
   for (const Unit& u : vocabulary.units()) vocabulary_units.push_back(describe(vocabulary, u));
   EXPECT_EQ(shader_units, vocabulary_units);
+  EXPECT_FALSE(shader_units.empty());
 }
 
 TEST(Prelude, BothSpellingsOfAUnitAreOneUnit) {

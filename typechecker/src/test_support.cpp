@@ -1,8 +1,6 @@
 #include "test_support.hpp"
 
-#include <fstream>
-#include <sstream>
-
+#include <safegi/diagnostics/file.hpp>
 #include <safegi/diagnostics/render.hpp>
 #include <safegi/lexer/lexer.hpp>
 
@@ -20,10 +18,7 @@ std::string CheckedSource::rendered() const { return render_text(diagnostics.dia
 std::unique_ptr<CheckedSource> check_source(std::string_view source, SourceOptions options) {
   auto c = std::make_unique<CheckedSource>();
   if (options.prelude) {
-    std::ifstream in(SAFEGI_PRELUDE_FILE);
-    std::stringstream text;
-    text << in.rdbuf();
-    FileId prelude = c->sources.add_file("prelude.sgl", text.str());
+    FileId prelude = c->sources.add_file("prelude.sgl", read_file(SAFEGI_PRELUDE_FILE).value_or(""));
     c->tokens = tokenize(c->sources, prelude, c->diagnostics);
     if (!c->tokens.empty()) c->tokens.pop_back();  // its eof
   }

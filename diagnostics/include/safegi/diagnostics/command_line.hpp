@@ -6,6 +6,7 @@
 
 #include <iostream>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
@@ -14,8 +15,18 @@
 
 namespace safegi {
 
-inline std::string usage_error_text(const std::string& program, const std::string& what) {
-  return program + ": error: " + escape_unprintable(what) + "\nRun with --help for usage.\n";
+// `code`, where the program's diagnostics have codes (safeglslc: E-COMMAND-LINE), ends the line.
+inline std::string usage_error_text(const std::string& program, const std::string& what, std::string_view code = {}) {
+  std::string text = program;
+  text += ": error: ";
+  text += escape_unprintable(what);
+  if (!code.empty()) {
+    text += " [";
+    text += code;
+    text += "]";
+  }
+  text += "\nRun with --help for usage.\n";
+  return text;
 }
 
 // --help and --version print to `out` and exit 0; anything else is a usage error on `err`.

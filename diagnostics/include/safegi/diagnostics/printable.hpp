@@ -16,6 +16,7 @@ namespace safegi {
 struct TextUnit {
   std::size_t bytes = 1;
   bool printable = true;  // false: C0 and C1 controls, DEL, bytes that are not UTF-8, bidirectional overrides
+  bool utf8 = true;       // false: a byte that starts no well-formed UTF-8 sequence
 };
 
 // The unit that starts at text[at] (at < text.size()).
@@ -27,6 +28,11 @@ void append_escaped(std::string& out, std::string_view unit);
 // `text` with every unprintable unit escaped; tabs and line breaks too, unless
 // `keep_line_breaks` (for text that is already a whole diagnostic, lines and all).
 std::string escape_unprintable(std::string_view text, bool keep_line_breaks = false);
+
+// `text` with every byte that is not UTF-8 escaped as \xHH and everything else, controls
+// too, as it is: for text that must be UTF-8 (a diagnostic bound for JSON) and is escaped
+// for a terminal when printed (escape_unprintable). One validator for both (RFC 3629).
+std::string escape_invalid_utf8(std::string_view text);
 
 // What a program prints for an error it caught, as a line on stderr. A text
 // ending in a newline is a whole diagnostic already ("file:line:col: error: …"

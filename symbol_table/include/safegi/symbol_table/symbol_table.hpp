@@ -18,10 +18,11 @@ inline constexpr int kSymbolTableVersion = 2;
 // table without them, and is read as one.
 inline constexpr int kOldestSymbolTableVersion = 1;
 
+// The stages of stages.def, in its order (the pipeline's); a table names each by its id
+// ("tess_control", "ray_generation"), as the checker's Stage does.
 enum class Stage {
-  vertex, tess_control, tess_evaluation, geometry, fragment, compute,
-  // Vulkan: mesh shading (GL_EXT_mesh_shader) and ray tracing (GL_EXT_ray_tracing).
-  task, mesh, ray_generation, intersection, any_hit, closest_hit, miss, callable
+#define SAFEGI_STAGE(id, ...) id,
+#include "safegi/symbol_table/stages.def"
 };
 
 std::string_view to_string(Stage stage);

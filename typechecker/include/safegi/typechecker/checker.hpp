@@ -31,7 +31,7 @@ namespace safegi {
 // The stages of stages.def, in pipeline order, then `unknown`.
 enum class Stage : std::uint8_t {
 #define SAFEGI_STAGE(id, ...) id,
-#include "safegi/typechecker/stages.def"
+#include "safegi/symbol_table/stages.def"
   unknown
 };
 

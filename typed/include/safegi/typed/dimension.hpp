@@ -195,7 +195,7 @@ template <int Length, int Time, int Energy, int Angle, int SolidAngle, int Proj>
 using of_exponents = product<pow<of<base::length>, Length>, pow<of<base::time>, Time>, pow<of<base::energy>, Energy>,
                              pow<of<base::angle>, Angle>, pow<of<base::solid_angle>, SolidAngle>, pow<of<base::proj>, Proj>>;
 #define VOCABULARY_BASE(name) using name = of<base::name>;
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) \
   using name = of_exponents<length, time, energy, angle, solid_angle, proj>;
 #define VOCABULARY_SYNONYM(name, same_as) using name = same_as;
 #include "safegi/typed/vocabulary.def"

@@ -12,7 +12,7 @@
 // (diagnose.hpp), since clang 14 prints string template arguments as character codes.
 namespace safegi::named {
 #define VOCABULARY_BASE(name) struct name;
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) struct name;
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) struct name;
 #include "safegi/typed/vocabulary.def"
 /// A dimension the vocabulary names more than once (brdf and pdf_projected_solid_angle).
 template <class... Names>
@@ -42,7 +42,7 @@ struct no_dimension {};
 // ("brdf or pdf_projected_solid_angle"); synonyms are not.
 using vocabulary = vocabulary_list<
 #define VOCABULARY_BASE(name) named_dimension<dim::name, #name, named::name>,
-#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj) \
+#define VOCABULARY_DIMENSION(name, length, time, energy, angle, solid_angle, proj, shader) \
   named_dimension<dim::name, #name, named::name>,
 #include "safegi/typed/vocabulary.def"
     named_dimension<no_dimension, "", void>>;
