@@ -62,7 +62,7 @@ void PrimitiveSet::build_triangles(int threads) {
   const uint32_t count = static_cast<uint32_t>(triangles_.size());
   if (count == 0) return;
   constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
-  triangle_bvh_ = kernel::Bvh(
+  triangle_bvh_ = kernel::Bvh8(
       count,
       [&](uint32_t i) {
         const Triangle& t = triangles_[i];
@@ -72,14 +72,14 @@ void PrimitiveSet::build_triangles(int threads) {
         b.extend(t.p0 + t.e2);
         return b;
       },
-      kernel::Bvh::kDefaultMaxLeafSize, threads, kWidth);
+      kernel::Bvh8::kDefaultMaxLeafSize, threads, kWidth);
   const std::vector<uint32_t> order = triangle_bvh_.take_primitive_order();
   struct Leaf {
     uint32_t first_entry, count, first_block;
   };
   std::vector<Leaf> leaves;
-  for (const kernel::WideBvhNode& node : triangle_bvh_.nodes())
-    for (int i = 0; i < kernel::WideBvhNode::kWidth; ++i)
+  for (const kernel::Bvh8::Node& node : triangle_bvh_.nodes())
+    for (int i = 0; i < kernel::Bvh8::Node::kWidth; ++i)
       if (node.primitive_count[i] > 0) leaves.push_back({node.child[i], node.primitive_count[i], 0});
   std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.first_entry < b.first_entry; });
   // A leaf's first block, looked up by its first entry below.
@@ -174,7 +174,8 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
     const uint32_t lines = std::min<uint32_t>(2, (count + kWidth - 1) / kWidth) * sizeof(kernel::TriangleBlock) / 64;
     for (uint32_t line = 0; line < lines; ++line) __builtin_prefetch(block + 64 * line);
   };
-  return triangle_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, prefetch_leaf);
+  return kernel::traversal_uses_avx2 ? triangle_bvh_.traverse_avx2<any_hit>(traversal, t_max, test_leaf, prefetch_leaf)
+                                     : triangle_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, prefetch_leaf);
 }
 
 template <bool any_hit>
