@@ -14,6 +14,7 @@
 #include <functional>
 #include <span>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -128,10 +129,13 @@ class BasicBvh {
   // eight-wide.
   static const uint64_t kPeakBytesPerPrimitive;
 
-  // Calls `test_leaf(first, count, t_max)` for every leaf the ray reaches
-  // before `t_max` (`first` its first leaf entry, see take_primitive_order, or
-  // what renumber_leaves made of it); `test_leaf` returns true on a hit and
-  // lowers t_max. With `any_hit`, returns at the first hit (shadow rays).
+  // Calls `test_leaf(first, count, t_max, vector_width)` for every leaf the
+  // ray reaches before `t_max` (`first` its first leaf entry, see
+  // take_primitive_order, or what renumber_leaves made of it; `vector_width` a
+  // std::integral_constant: how many lanes of Real the code it is compiled
+  // into holds in a vector, 4 for SSE, 8 for AVX2); `test_leaf` returns true
+  // on a hit and lowers t_max. With `any_hit`, returns at the first hit
+  // (shadow rays).
   // `prefetch_leaf(first, count)` is called for each leaf the ray enters as
   // soon as its node is tested, so that the leaf's primitives are on their way
   // from memory while nearer children are visited.
@@ -263,7 +267,7 @@ bool BasicBvh<Width>::traverse_inline(const TraversalRay& ray, Real& t_max, Leaf
   bool hit = false;
   for (;;) {
     if (current.primitive_count > 0) {
-      if (test_leaf(current.child, current.primitive_count, t_max)) {
+      if (test_leaf(current.child, current.primitive_count, t_max, std::integral_constant<int, VectorWidth>{})) {
         hit = true;
         if constexpr (any_hit) return true;
       }

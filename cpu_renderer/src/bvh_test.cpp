@@ -155,7 +155,9 @@ void expect_leaves_hold_each_primitive_once_inside_their_boxes() {
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(boxes.size()));
 }
 
-TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) { expect_leaves_hold_each_primitive_once_inside_their_boxes<4>(); }
+TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
+  expect_leaves_hold_each_primitive_once_inside_their_boxes<4>();
+}
 TEST(Bvh, EightWideLeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
   expect_leaves_hold_each_primitive_once_inside_their_boxes<8>();
 }
