@@ -171,10 +171,10 @@ structure holds for tracing (ours: triangle blocks with their shape and face ind
                   if r["triangles"] == largest[r["mesh"]]]
         memory = [r["ours_bytes_per_triangle"] / r["embree_bytes_per_triangle"] for r in traced]
         text += (f"\n* Around {million_rows[0]['triangles']:,} triangles ours traces {min(ratios):.2f}–{max(ratios):.2f}× "
-                 f"Embree's rays per CPU-second (all three sets, both meshes); below 100 000 triangles, where both "
-                 f"structures sit in cache, the gap is wider (ours tests one ray against a node's four boxes, and a "
-                 f"leaf's four triangles, in one SSE operation each, then each triangle it keeps in double; "
-                 f"Embree 3 picks its AVX2 kernels and eight-wide nodes).\n"
+                 f"Embree's rays per CPU-second (all three sets, both meshes; ours: eight-wide nodes, each one AVX2 "
+                 f"test of a ray against its eight boxes where the CPU has AVX2 and two SSE tests elsewhere, a leaf's "
+                 f"blocks of four triangles filtered two at a time with AVX2 (one at a time with SSE), each triangle "
+                 f"kept re-tested in double; Embree 3: its AVX2 kernels, eight-wide nodes).\n"
                  f"* Build at {max(largest.values()) / 1e6:.0f} M triangles: {min(builds):.2f}–{max(builds):.2f}× Embree's time on the same "
                  f"threads; memory per triangle {min(memory):.2f}–{max(memory):.2f}× Embree's.\n")
     render_header = ["triangles", "spp", "ours: rays per render CPU-s", "ours: peak MiB", "ours: wall s"]

@@ -1,7 +1,7 @@
 // The renderer's acceleration structure at scale, against Embree on the same
 // rays (bench/scale/run.py drives it; never a test).
 //
-//   safegi-bench-scale --mesh heightfield|torus --triangles N [--resolution R] [--threads T]
+//   safegi-bench-scale --mesh heightfield|torus --triangles N [--resolution R] [--threads T] [--avx2 on|off]
 //   safegi-bench-scale --mesh ... --triangles N --ply FILE   (writes the mesh, traces nothing)
 //
 // Generates the mesh (no files), builds our BVH (PrimitiveSet, as the renderer
@@ -11,7 +11,9 @@
 //   extension  from each camera hit, a cosine-distributed bounce;
 //   shadow     from each camera hit to a point on a quad light above the mesh.
 // Prints one JSON object: build seconds, bytes per triangle, rays per CPU-second
-// per set, and how often the two structures disagree about a hit.
+// per set, and how often the two structures disagree about a hit. `--avx2 off`
+// traces through the SSE build of our traversal where the CPU has AVX2 (the
+// one a CPU without it runs).
 #include <time.h>
 
 #include <algorithm>
@@ -183,6 +185,7 @@ struct Options {
   size_t resolution = 512;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string ply;  // write the mesh here and stop
+  bool avx2 = kernel::cpu_has_avx2();
 };
 
 // Binary little-endian PLY, as pbrt-v3 and safegi-render read it.
@@ -214,6 +217,7 @@ Options parse(int argc, char** argv) {
     else if (flag == "--resolution") options.resolution = std::stoull(value);
     else if (flag == "--threads") options.threads = std::stoi(value);
     else if (flag == "--ply") options.ply = value;
+    else if (flag == "--avx2") options.avx2 = value == "on" && kernel::cpu_has_avx2();
     else {
       std::fprintf(stderr, "safegi-bench-scale: unknown option '%s'\n", flag.c_str());
       std::exit(2);
@@ -325,6 +329,7 @@ int main(int argc, char** argv) {
     return 0;
   }
 
+  kernel::traversal_uses_avx2 = options.avx2;
   PrimitiveSet set;
   for (size_t i = 0; i < triangles; ++i)
     set.add_triangle(mesh.vertex(mesh.indices[3 * i]), mesh.vertex(mesh.indices[3 * i + 1]),
@@ -336,8 +341,8 @@ int main(int argc, char** argv) {
   RaySets rays = make_rays(set, options.resolution);
   const SetAnswers ours = trace_sets(rays, OurScene{set});
 
-  std::printf("{\n  \"mesh\": \"%s\", \"triangles\": %zu, \"threads\": %d,\n", options.mesh.c_str(), triangles,
-              options.threads);
+  std::printf("{\n  \"mesh\": \"%s\", \"triangles\": %zu, \"threads\": %d, \"avx2\": %s,\n", options.mesh.c_str(),
+              triangles, options.threads, options.avx2 ? "true" : "false");
   std::printf("  \"ours_build_seconds\": %.6g, \"ours_bytes_per_triangle\": %.4g,\n", build_seconds,
               static_cast<double>(set.memory_bytes()) / triangles);
   const SetAnswers* embree_answers = nullptr;

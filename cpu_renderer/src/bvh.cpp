@@ -25,7 +25,7 @@ constexpr int kMaxSahDepth = 48;
 // CPU-second, 1.0 0.53-0.77x, 1.5 0.49-0.89x, 2.0 0.48-0.92x (larger leaves:
 // better at 1e6, worse at 1e4); 1.5 keeps the gains at scale.
 constexpr Real kTraversalCost = 1.5f;
-constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // WideBvhNode::primitive_count is 16 bits
+constexpr uint32_t kMaxLeafPrimitives = 0xFFFFu;  // BasicWideBvhNode::primitive_count is 16 bits
 
 // Binning touches every primitive's box three times per split, so a bin's box
 // is kept as two Lanes4 (x, y, z and a lane nobody reads) that one SSE min and
@@ -80,13 +80,14 @@ int bin_of(Real centroid, Real lower, Real scale) {
 
 }  // namespace
 
-// Builds four-wide nodes top down: a node's range is split in two by binned
-// SAH, then its widest part again, until four parts or only leaves remain; each
+// Builds wide nodes top down: a node's range is split in two by binned
+// SAH, then its widest part again, until Width parts or only leaves remain; each
 // part that is not a leaf becomes a child node (large ones as tasks that any
 // of the build's workers takes). Nodes go into per-worker arenas, then
 // `flatten` lays them out depth first. Every decision depends only on the
 // primitives, so the hierarchy is the same on one thread or many.
-class Bvh::Builder {
+template <int Width>
+class BasicBvh<Width>::Builder {
  public:
   Builder(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, std::vector<uint32_t>& order,
           int max_leaf_size, int batch_width)
@@ -98,7 +99,7 @@ class Bvh::Builder {
   }
 
   // Builds the hierarchy into `nodes` and fills `order`; returns its bounds.
-  Bounds3 build(int threads, std::vector<WideBvhNode>& nodes) {
+  Bounds3 build(int threads, std::vector<Node>& nodes) {
     const uint32_t count = static_cast<uint32_t>(records_.size());
     const int chunks = count >= kParallelMinimum ? threads : 1;
     std::vector<Side> chunk_sides(chunks);
@@ -145,8 +146,8 @@ class Bvh::Builder {
     bool leaf = false;
   };
   struct PendingNode {
-    WideBvhNode node;
-    const PendingNode* children[WideBvhNode::kWidth] = {};
+    Node node;
+    const PendingNode* children[Width] = {};
   };
 
   // Nodes in blocks that never move (parents point at them), one arena per thread.
@@ -300,8 +301,8 @@ class Bvh::Builder {
   // mask; interior children are linked later.
   static PendingNode& lay_out(const Range* slots, int filled, Arena& arena) {
     PendingNode& pending = arena.emplace_back();
-    WideBvhNode& node = pending.node;
-    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+    Node& node = pending.node;
+    for (int i = 0; i < Width; ++i) {
       Bounds3 box = i < filled ? slots[i].side.bounds : Bounds3{};  // Bounds3{} is inverted: +inf .. -inf
       for (int axis = 0; axis < 3; ++axis) {
         node.lower[axis][i] = box.lower[axis];
@@ -324,8 +325,8 @@ class Bvh::Builder {
 
   // A node whose range splits into `halves`.
   const PendingNode& build_node(const std::pair<Range, Range>& halves, int threads, Arena& arena) {
-    Range slots[WideBvhNode::kWidth] = {halves.first, halves.second};
-    std::optional<std::pair<Range, Range>> slot_halves[WideBvhNode::kWidth];
+    Range slots[Width] = {halves.first, halves.second};
+    std::optional<std::pair<Range, Range>> slot_halves[Width];
     int filled = 2;
     // Every slot's split is found once: a slot opened here gives way to its
     // halves; one left when the node is full passes them to its own node.
@@ -340,7 +341,7 @@ class Bvh::Builder {
             (widest < 0 || slots[i].side.bounds.surface_area() > slots[widest].side.bounds.surface_area()))
           widest = i;
       }
-      if (widest < 0 || filled == WideBvhNode::kWidth) break;
+      if (widest < 0 || filled == Width) break;
       std::pair<Range, Range> opened = *slot_halves[widest];
       slots[widest] = opened.first;
       slot_halves[widest].reset();
@@ -353,8 +354,8 @@ class Bvh::Builder {
 
   // The interior slots' nodes. Large ones become tasks for the build's
   // workers when it has more than one; the rest are built here, on one thread.
-  void build_children(const Range (&slots)[WideBvhNode::kWidth],
-                      const std::optional<std::pair<Range, Range>> (&slot_halves)[WideBvhNode::kWidth], int filled,
+  void build_children(const Range (&slots)[Width], const std::optional<std::pair<Range, Range>> (&slot_halves)[Width],
+                      int filled,
                       PendingNode& pending, Arena& arena) {
     for (int i = 0; i < filled; ++i) {
       if (slots[i].leaf) continue;
@@ -388,10 +389,10 @@ class Bvh::Builder {
     }
   }
 
-  static uint32_t flatten(const PendingNode& pending, std::vector<WideBvhNode>& nodes) {
+  static uint32_t flatten(const PendingNode& pending, std::vector<Node>& nodes) {
     const uint32_t index = static_cast<uint32_t>(nodes.size());
     nodes.push_back(pending.node);
-    for (int i = 0; i < WideBvhNode::kWidth; ++i)
+    for (int i = 0; i < Width; ++i)
       if (pending.children[i]) {
         uint32_t child = flatten(*pending.children[i], nodes);  // may reallocate nodes: index, not reference
         nodes[index].child[i] = child;
@@ -421,15 +422,34 @@ class Bvh::Builder {
   int busy_ = 0;  // workers building a task
 };
 
-Bvh::Bvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads)
-    : Bvh(static_cast<uint32_t>(bounds.size()), [&](uint32_t i) { return bounds[i]; }, max_leaf_size, threads) {}
+template <int Width>
+BasicBvh<Width>::BasicBvh(std::span<const Bounds3> bounds, int max_leaf_size, int threads)
+    : BasicBvh(static_cast<uint32_t>(bounds.size()), [&](uint32_t i) { return bounds[i]; }, max_leaf_size, threads) {}
 
-Bvh::Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
-         int batch_width) {
+template <int Width>
+BasicBvh<Width>::BasicBvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size,
+                          int threads, int batch_width) {
   if (count == 0) return;
   primitive_order_.resize(count);
   Builder builder(count, bounds_of, primitive_order_, max_leaf_size, batch_width);
   bounds_ = builder.build(std::max(1, threads), nodes_);
+}
+
+template class BasicBvh<4>;
+template class BasicBvh<8>;
+
+bool cpu_has_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+  // __builtin_cpu_init first: this may run from a static initialiser, before
+  // the one that sets up __builtin_cpu_supports.
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return has;
+#else
+  return false;
+#endif
 }
 
 }  // namespace safegi::render::kernel

@@ -1,17 +1,20 @@
-// Bounding volume hierarchy of four-wide nodes, whose children's boxes one
-// vector test checks together. Built top down by binned SAH (large subtrees and
-// bin passes on parallel threads); traversal visits the nearer children first
-// and stops at the first hit for shadow rays.
+// Bounding volume hierarchy of four- or eight-wide nodes, whose children's
+// boxes one vector test checks together. Built top down by binned SAH (large
+// subtrees and bin passes on parallel threads); traversal visits the nearer
+// children first and stops at the first hit for shadow rays.
 //
 // The BVH knows only primitive bounds; the caller supplies the primitive test
 // as a callable, so triangles, spheres and instances share one traversal.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <functional>
 #include <span>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,11 +43,13 @@ void for_each_chunk(uint32_t count, int chunks, Work&& work) {
 // start costs more than the work it takes over.
 inline constexpr uint32_t kParallelMinimum = 1u << 14;
 
-// Two cache lines in float, aligned so that a node never straddles a third.
-struct alignas(64) WideBvhNode {
-  static constexpr int kWidth = 4;
+// A node's children side by side: four (two cache lines in float) or eight
+// (four), aligned so that a node never straddles a cache line more.
+template <int Width>
+struct alignas(64) BasicWideBvhNode {
+  static constexpr int kWidth = Width;
   // The children's boxes, one array per slab plane (lower[axis][child]), so
-  // that each plane of all four children is one vector load and one vector
+  // that each plane of all children is one vector load and one vector
   // operation (intersect_children). An empty slot holds an inverted box.
   Real lower[3][kWidth];
   Real upper[3][kWidth];
@@ -54,7 +59,18 @@ struct alignas(64) WideBvhNode {
   // Bit i set: slot i holds a child. A ray with a NaN component passes every
   // slab test, even an empty slot's; this mask keeps it out of those.
   uint8_t occupied = 0;
+  static_assert(Width <= 8, "occupied has a bit per slot");
 };
+// Four-wide: the GPU renderer's layout (its shader reads four children) and
+// the spheres'. The CPU's triangles take eight (Bvh8): half the nodes on a
+// ray's way down, each one AVX2 test where the CPU has it (traverse_avx2).
+using WideBvhNode = BasicWideBvhNode<4>;
+
+#if defined(__x86_64__) || defined(__i386__)
+#define SAFEGI_TARGET_AVX2 __attribute__((target("avx2")))
+#else
+#define SAFEGI_TARGET_AVX2  // no AVX2 to compile for; cpu_has_avx2() is false
+#endif
 
 // A ray prepared for slab tests.
 struct TraversalRay {
@@ -71,21 +87,23 @@ struct TraversalRay {
   }
 };
 
-class Bvh {
+template <int Width>
+class BasicBvh {
  public:
+  using Node = BasicWideBvhNode<Width>;
   static constexpr int kDefaultMaxLeafSize = 4;
 
-  Bvh() = default;
+  BasicBvh() = default;
   // Builds over `bounds[i]`, the bounds of primitive i, on up to `threads`
   // threads; the hierarchy is the same whatever the thread count.
-  explicit Bvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
+  explicit BasicBvh(std::span<const Bounds3> bounds, int max_leaf_size = kDefaultMaxLeafSize, int threads = 1);
   // The same over `count` primitives whose bounds `bounds_of(i)` gives (called
   // once each, from the build's threads), so that no array of them is kept.
   // `batch_width`: how many primitives the caller's leaf test takes at once
   // (a power of two, 1 or 4; another is taken down to one); the SAH then
   // prices a leaf by whole batches (4 triangles cost one test).
-  Bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
-      int batch_width = 1);
+  BasicBvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int max_leaf_size, int threads,
+           int batch_width = 1);
 
   // The leaves' primitives: leaf entry k is primitive order[k]. The traversal
   // names entries, not primitives, so that a caller who stores its primitives
@@ -96,36 +114,51 @@ class Bvh {
     order.swap(primitive_order_);
     return order;
   }
-  const std::vector<WideBvhNode>& nodes() const { return nodes_; }
+  const std::vector<Node>& nodes() const { return nodes_; }
   bool empty() const { return nodes_.empty(); }
   Bounds3 bounds() const { return bounds_; }
   size_t memory_bytes() const {
-    return nodes_.capacity() * sizeof(WideBvhNode) + primitive_order_.capacity() * sizeof(uint32_t);
+    return nodes_.capacity() * sizeof(Node) + primitive_order_.capacity() * sizeof(uint32_t);
   }
 
   // What a build holds per primitive beside the caller's bounds: its record,
   // its place in the order (twice, while the caller reorders its primitives)
   // and the nodes, each while built and as laid out. Nodes are counted at one
-  // per two primitives: the meshes of bench/scale need 0.15, and a node has at
-  // least two leaves of its own or four children.
+  // per Width / 2 primitives (four-wide: one per two; eight-wide: one per
+  // four): the meshes of bench/scale need 0.15 four-wide and 0.035–0.056
+  // eight-wide.
   static const uint64_t kPeakBytesPerPrimitive;
 
-  // Calls `test_leaf(first, count, t_max)` for every leaf the ray reaches
-  // before `t_max` (`first` its first leaf entry, see take_primitive_order, or
-  // what renumber_leaves made of it); `test_leaf` returns true on a hit and
-  // lowers t_max. With `any_hit`, returns at the first hit (shadow rays).
+  // Calls `test_leaf(first, count, t_max, vector_width)` for every leaf the
+  // ray reaches before `t_max` (`first` its first leaf entry, see
+  // take_primitive_order, or what renumber_leaves made of it; `vector_width` a
+  // std::integral_constant: how many lanes of Real the code it is compiled
+  // into holds in a vector, 4 for SSE, 8 for AVX2); `test_leaf` returns true
+  // on a hit and lowers t_max. With `any_hit`, returns at the first hit
+  // (shadow rays).
   // `prefetch_leaf(first, count)` is called for each leaf the ray enters as
   // soon as its node is tested, so that the leaf's primitives are on their way
   // from memory while nearer children are visited.
   template <bool any_hit, class LeafTest, class LeafPrefetch>
-  bool traverse(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf, LeafPrefetch&& prefetch_leaf) const;
+  bool traverse(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf, LeafPrefetch&& prefetch_leaf) const {
+    return traverse_inline<any_hit, 4>(ray, t_max, test_leaf, prefetch_leaf);
+  }
+  // The same traversal compiled for AVX2 (an eight-wide node's slab test one
+  // 256-bit operation; the leaf test and the exact re-test inlined into it
+  // are VEX-encoded, rounding as before: no FMA, so every result is the
+  // same). Only for a CPU that has it: see cpu_has_avx2.
+  template <bool any_hit, class LeafTest, class LeafPrefetch>
+  SAFEGI_TARGET_AVX2 bool traverse_avx2(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf,
+                                        LeafPrefetch&& prefetch_leaf) const {
+    return traverse_inline<any_hit, std::min(Width, 8)>(ray, t_max, test_leaf, prefetch_leaf);
+  }
 
   // Replaces each leaf's first entry by `renumbered(first, count)`: a caller
   // that stores a leaf's primitives in blocks of its own names the block.
   template <class Renumber>
   void renumber_leaves(Renumber&& renumbered) {
-    for (WideBvhNode& node : nodes_)
-      for (int i = 0; i < WideBvhNode::kWidth; ++i)
+    for (Node& node : nodes_)
+      for (int i = 0; i < Width; ++i)
         if (node.primitive_count[i] > 0) node.child[i] = renumbered(node.child[i], node.primitive_count[i]);
   }
 
@@ -138,14 +171,30 @@ class Bvh {
   };
   class Builder;
 
-  std::vector<WideBvhNode> nodes_;
+  // traverse and traverse_avx2's one body, inlined into each so that each
+  // compiles it (and the leaf test it inlines) for its own instruction set.
+  template <bool any_hit, int VectorWidth, class LeafTest, class LeafPrefetch>
+  [[gnu::always_inline]] inline bool traverse_inline(const TraversalRay& ray, Real& t_max, LeafTest& test_leaf,
+                                                     LeafPrefetch& prefetch_leaf) const;
+
+  std::vector<Node> nodes_;
   std::vector<uint32_t> primitive_order_;
   Bounds3 bounds_;
 };
 
-inline constexpr uint64_t Bvh::kPeakBytesPerPrimitive =
-    sizeof(Record) + 2 * sizeof(uint32_t) +
-    (sizeof(WideBvhNode) + WideBvhNode::kWidth * sizeof(void*) + sizeof(WideBvhNode)) / 2;
+template <int Width>
+inline constexpr uint64_t BasicBvh<Width>::kPeakBytesPerPrimitive =
+    sizeof(Record) + 2 * sizeof(uint32_t) + (sizeof(Node) + Width * sizeof(void*) + sizeof(Node)) * 2 / Width;
+
+using Bvh = BasicBvh<4>;
+using Bvh8 = BasicBvh<8>;
+
+// Whether this CPU runs AVX2 code (traverse_avx2), asked of the CPU once. The
+// build itself targets any x86-64, so the choice is made here, not by -march.
+bool cpu_has_avx2();
+// Whether the renderer traces through traverse_avx2: cpu_has_avx2(), or false
+// where a test compares the SSE build of the same kernels with it.
+inline bool traversal_uses_avx2 = cpu_has_avx2();
 
 // t_max widened by 1 + 2γ(3), so that rounding in the slab test never loses a
 // box the ray touches (pbrt-v3 §3.9.2).
@@ -167,57 +216,65 @@ inline bool intersect_bounds(const Bounds3& b, const TraversalRay& ray, Real t_m
   return t_near <= t_far;
 }
 
-// Slab test of a node's four children at once (one Lanes4 each plane);
-// `t_near[i]` is where the ray enters child i. NaN-tolerant the way pbrt-v3
-// is: a 0 · ∞ term is ignored, because each comparison below keeps the other
-// operand when one is NaN.
-static_assert(WideBvhNode::kWidth == 4, "one Lanes4 holds a node's children");
-
-inline unsigned intersect_children(const WideBvhNode& node, const TraversalRay& ray, Real t_max,
-                                   Real (&t_near_out)[WideBvhNode::kWidth]) {
-  Lanes4 t_near = {}, t_far = Lanes4{} + t_max;
-  for (int axis = 0; axis < 3; ++axis) {
-    const bool negative = ray.direction_is_negative[axis];
-    Lanes4 near_plane, far_plane;
-    std::memcpy(&near_plane, negative ? node.upper[axis] : node.lower[axis], sizeof near_plane);
-    std::memcpy(&far_plane, negative ? node.lower[axis] : node.upper[axis], sizeof far_plane);
-    const Real origin = ray.origin[axis], inverse = ray.inverse_direction[axis];
-    Lanes4 t0 = (near_plane - origin) * inverse;
-    Lanes4 t1 = (far_plane - origin) * inverse * kSlabWidening;
-    t_near = t0 > t_near ? t0 : t_near;
-    t_far = t1 < t_far ? t1 : t_far;
+// Slab test of a node's children, `VectorWidth` at a time (one vector of lanes
+// each plane): eight at once in AVX2 code; four at a time in SSE code, where
+// GCC would take a vector of eight apart lane by lane. `t_near[i]` is where the
+// ray enters child i. NaN-tolerant the way pbrt-v3 is: a 0 · ∞ term is
+// ignored, because each comparison below keeps the other operand when one is NaN.
+template <int VectorWidth, int Width>
+inline unsigned intersect_children(const BasicWideBvhNode<Width>& node, const TraversalRay& ray, Real t_max,
+                                   Real (&t_near_out)[Width]) {
+  static_assert(Width % VectorWidth == 0, "whole vectors of children");
+  using Lanes = typename LanesOf<VectorWidth>::Type;
+  unsigned entered_bits = 0;
+  for (int first = 0; first < Width; first += VectorWidth) {
+    Lanes t_near = {}, t_far = Lanes{} + t_max;
+    for (int axis = 0; axis < 3; ++axis) {
+      const bool negative = ray.direction_is_negative[axis];
+      Lanes near_plane, far_plane;
+      std::memcpy(&near_plane, (negative ? node.upper[axis] : node.lower[axis]) + first, sizeof near_plane);
+      std::memcpy(&far_plane, (negative ? node.lower[axis] : node.upper[axis]) + first, sizeof far_plane);
+      const Real origin = ray.origin[axis], inverse = ray.inverse_direction[axis];
+      Lanes t0 = (near_plane - origin) * inverse;
+      Lanes t1 = (far_plane - origin) * inverse * kSlabWidening;
+      t_near = t0 > t_near ? t0 : t_near;
+      t_far = t1 < t_far ? t1 : t_far;
+    }
+    const auto entered = t_near <= t_far;
+    std::memcpy(t_near_out + first, &t_near, sizeof t_near);
+    entered_bits |= lane_bits(entered) << first;
   }
-  const auto entered = t_near <= t_far;
-  std::memcpy(t_near_out, &t_near, sizeof t_near);
-  return lane_bits(entered);
+  return entered_bits;
 }
 
-template <bool any_hit, class LeafTest, class LeafPrefetch>
-bool Bvh::traverse(const TraversalRay& ray, Real& t_max, LeafTest&& test_leaf, LeafPrefetch&& prefetch_leaf) const {
+template <int Width>
+template <bool any_hit, int VectorWidth, class LeafTest, class LeafPrefetch>
+bool BasicBvh<Width>::traverse_inline(const TraversalRay& ray, Real& t_max, LeafTest& test_leaf,
+                                      LeafPrefetch& prefetch_leaf) const {
   if (nodes_.empty()) return false;
   struct Entry {
     Real t_near;
     uint32_t child;
     uint32_t primitive_count;  // 0: `child` is a node
   };
-  // Each visit pushes at most three entries (the nearest child is visited
+  // Each visit pushes at most Width - 1 entries (the nearest child is visited
   // next without a round trip through the stack), and the build is at most ~80
-  // binary splits deep (SAH to depth 48, then halving by count), so 3 · 80
-  // entries suffice.
-  Entry stack[256];
+  // binary splits deep (SAH to depth 48, then halving by count), each node at
+  // least one of them, so (Width - 1) · 86 entries suffice.
+  Entry stack[(Width - 1) * 86];
   int stack_size = 0;
   Entry current{0, 0, 0};
   bool hit = false;
   for (;;) {
     if (current.primitive_count > 0) {
-      if (test_leaf(current.child, current.primitive_count, t_max)) {
+      if (test_leaf(current.child, current.primitive_count, t_max, std::integral_constant<int, VectorWidth>{})) {
         hit = true;
         if constexpr (any_hit) return true;
       }
     } else {
-      const WideBvhNode& node = nodes_[current.child];
-      Real t_near[WideBvhNode::kWidth];
-      unsigned hits = intersect_children(node, ray, t_max, t_near) & node.occupied;
+      const Node& node = nodes_[current.child];
+      Real t_near[Width];
+      unsigned hits = intersect_children<VectorWidth>(node, ray, t_max, t_near) & node.occupied;
       if (hits != 0) {
         auto entry = [&](int i) {
           Entry e{t_near[i], node.child[i], node.primitive_count[i]};

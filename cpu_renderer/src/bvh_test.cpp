@@ -13,6 +13,26 @@ namespace {
 
 using kernel::Real3;
 
+// The traversals a test runs its rays through: the SSE build, and the AVX2
+// build where this CPU has it (the renderer's choice there). Each answer must
+// be the same.
+std::vector<bool> traversal_kinds() {
+  if (kernel::cpu_has_avx2()) return {false, true};
+  return {false};
+}
+
+// Sets which traversal the renderer takes for a scope.
+class TraversalKind {
+ public:
+  explicit TraversalKind(bool avx2) : saved_(kernel::traversal_uses_avx2) { kernel::traversal_uses_avx2 = avx2; }
+  ~TraversalKind() { kernel::traversal_uses_avx2 = saved_; }
+  TraversalKind(const TraversalKind&) = delete;
+  TraversalKind& operator=(const TraversalKind&) = delete;
+
+ private:
+  bool saved_;
+};
+
 // Every BVH answer must equal a brute-force loop over the same primitives.
 TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
   std::mt19937 rng(7);
@@ -44,14 +64,17 @@ TEST(Bvh, MatchesBruteForceOnRandomTriangles) {
     Real best = kernel::kInfinity;
     for (const PrimitiveSet& single : singles)
       if (auto hit = single.intersect(ray, best)) best = hit->distance;
-    std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
-    ASSERT_EQ(hit.has_value(), best < kernel::kInfinity);
-    if (hit) {
-      EXPECT_EQ(hit->distance, best);
-      EXPECT_EQ(hit->face, hit->shape);  // each triangle's own pair, through its leaf's block
-      ++hits;
+    for (bool avx2 : traversal_kinds()) {
+      TraversalKind kind(avx2);
+      std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
+      ASSERT_EQ(hit.has_value(), best < kernel::kInfinity) << "avx2 " << avx2;
+      if (hit) {
+        EXPECT_EQ(hit->distance, best) << "avx2 " << avx2;
+        EXPECT_EQ(hit->face, hit->shape);  // each triangle's own pair, through its leaf's block
+        hits += !avx2;
+      }
+      EXPECT_EQ(set.occluded(ray, kernel::kInfinity), best < kernel::kInfinity) << "avx2 " << avx2;
     }
-    EXPECT_EQ(set.occluded(ray, kernel::kInfinity), best < kernel::kInfinity);
   }
   EXPECT_GT(hits, 100);
 }
@@ -69,14 +92,16 @@ std::vector<kernel::Bounds3> random_boxes(size_t count, uint32_t seed) {
 }
 
 // Large enough that subtrees and bin passes go to helper threads.
-TEST(Bvh, HierarchyDoesNotDependOnThreadCount) {
+template <int Width>
+void expect_hierarchy_independent_of_thread_count() {
+  using Bvh = kernel::BasicBvh<Width>;
   std::vector<kernel::Bounds3> boxes = random_boxes(100000, 3);
-  kernel::Bvh one(boxes, kernel::Bvh::kDefaultMaxLeafSize, 1), four(boxes, kernel::Bvh::kDefaultMaxLeafSize, 4);
+  Bvh one(boxes, Bvh::kDefaultMaxLeafSize, 1), four(boxes, Bvh::kDefaultMaxLeafSize, 4);
   ASSERT_EQ(one.nodes().size(), four.nodes().size());
   for (size_t n = 0; n < one.nodes().size(); ++n) {
-    const kernel::WideBvhNode &a = one.nodes()[n], &b = four.nodes()[n];
+    const typename Bvh::Node &a = one.nodes()[n], &b = four.nodes()[n];
     ASSERT_EQ(a.occupied, b.occupied) << "node " << n;
-    for (int i = 0; i < kernel::WideBvhNode::kWidth; ++i) {
+    for (int i = 0; i < Width; ++i) {
       ASSERT_EQ(a.child[i], b.child[i]) << "node " << n;
       ASSERT_EQ(a.primitive_count[i], b.primitive_count[i]) << "node " << n;
       for (int axis = 0; axis < 3; ++axis) {
@@ -88,14 +113,20 @@ TEST(Bvh, HierarchyDoesNotDependOnThreadCount) {
   EXPECT_EQ(one.take_primitive_order(), four.take_primitive_order());
 }
 
+TEST(Bvh, HierarchyDoesNotDependOnThreadCount) { expect_hierarchy_independent_of_thread_count<4>(); }
+TEST(Bvh, EightWideHierarchyDoesNotDependOnThreadCount) { expect_hierarchy_independent_of_thread_count<8>(); }
+
 // Every primitive sits in exactly one leaf, inside every box above it.
-TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
+template <int Width>
+void expect_leaves_hold_each_primitive_once_inside_their_boxes() {
+  using Bvh = kernel::BasicBvh<Width>;
+  using Node = typename Bvh::Node;
   std::vector<kernel::Bounds3> boxes = random_boxes(30000, 4);
-  kernel::Bvh bvh(boxes, kernel::Bvh::kDefaultMaxLeafSize, 2);
-  const std::vector<kernel::WideBvhNode> nodes = bvh.nodes();
+  Bvh bvh(boxes, Bvh::kDefaultMaxLeafSize, 2);
+  const std::vector<Node> nodes = bvh.nodes();
   const std::vector<uint32_t> order = bvh.take_primitive_order();
   std::vector<int> seen(boxes.size(), 0);
-  auto inside = [](const kernel::Bounds3& box, const kernel::WideBvhNode& node, int i) {
+  auto inside = [](const kernel::Bounds3& box, const Node& node, int i) {
     for (int axis = 0; axis < 3; ++axis)
       if (box.lower[axis] < node.lower[axis][i] || box.upper[axis] > node.upper[axis][i]) return false;
     return true;
@@ -105,8 +136,8 @@ TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
   while (!pending.empty()) {
     auto [index, path] = pending.back();
     pending.pop_back();
-    const kernel::WideBvhNode& node = nodes[index];
-    for (int i = 0; i < kernel::WideBvhNode::kWidth; ++i) {
+    const Node& node = nodes[index];
+    for (int i = 0; i < Width; ++i) {
       if (!(node.occupied >> i & 1)) continue;
       auto child_path = path;
       child_path.push_back({index, i});
@@ -122,6 +153,13 @@ TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
     }
   }
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(boxes.size()));
+}
+
+TEST(Bvh, LeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
+  expect_leaves_hold_each_primitive_once_inside_their_boxes<4>();
+}
+TEST(Bvh, EightWideLeavesHoldEachPrimitiveOnceInsideTheirBoxes) {
+  expect_leaves_hold_each_primitive_once_inside_their_boxes<8>();
 }
 
 TEST(Bvh, TrianglesAndSpheresTogetherMatchBruteForce) {
@@ -156,14 +194,17 @@ TEST(Bvh, TrianglesAndSpheresTogetherMatchBruteForce) {
         best = hit->distance;
         best_shape = hit->shape;
       }
-    std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
-    ASSERT_EQ(hit.has_value(), best < kernel::kInfinity);
-    if (hit) {
-      EXPECT_EQ(hit->distance, best);
-      EXPECT_EQ(hit->shape, best_shape);
-      ++hits;
+    for (bool avx2 : traversal_kinds()) {
+      TraversalKind kind(avx2);
+      std::optional<kernel::Hit> hit = set.intersect(ray, kernel::kInfinity);
+      ASSERT_EQ(hit.has_value(), best < kernel::kInfinity) << "avx2 " << avx2;
+      if (hit) {
+        EXPECT_EQ(hit->distance, best) << "avx2 " << avx2;
+        EXPECT_EQ(hit->shape, best_shape) << "avx2 " << avx2;
+        hits += !avx2;
+      }
+      EXPECT_EQ(set.occluded(ray, kernel::kInfinity), best < kernel::kInfinity) << "avx2 " << avx2;
     }
-    EXPECT_EQ(set.occluded(ray, kernel::kInfinity), best < kernel::kInfinity);
   }
   EXPECT_GT(hits, 150);
 }
@@ -176,8 +217,11 @@ TEST(Bvh, NanRayEndsWithoutAHit) {
   set.build();
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   kernel::Ray ray{{0.5f, 0.25f, 1.0f}, {nan, 0, -1}, 0.0f};
-  EXPECT_FALSE(set.intersect(ray, kernel::kInfinity).has_value());
-  EXPECT_FALSE(set.occluded(ray, kernel::kInfinity));
+  for (bool avx2 : traversal_kinds()) {
+    TraversalKind kind(avx2);
+    EXPECT_FALSE(set.intersect(ray, kernel::kInfinity).has_value());
+    EXPECT_FALSE(set.occluded(ray, kernel::kInfinity));
+  }
 }
 
 TEST(Bvh, OnePrimitiveIsALeafUnderTheRoot) {

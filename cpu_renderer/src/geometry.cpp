@@ -62,7 +62,7 @@ void PrimitiveSet::build_triangles(int threads) {
   const uint32_t count = static_cast<uint32_t>(triangles_.size());
   if (count == 0) return;
   constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
-  triangle_bvh_ = kernel::Bvh(
+  triangle_bvh_ = kernel::Bvh8(
       count,
       [&](uint32_t i) {
         const Triangle& t = triangles_[i];
@@ -72,14 +72,14 @@ void PrimitiveSet::build_triangles(int threads) {
         b.extend(t.p0 + t.e2);
         return b;
       },
-      kernel::Bvh::kDefaultMaxLeafSize, threads, kWidth);
+      kernel::Bvh8::kDefaultMaxLeafSize, threads, kWidth);
   const std::vector<uint32_t> order = triangle_bvh_.take_primitive_order();
   struct Leaf {
     uint32_t first_entry, count, first_block;
   };
   std::vector<Leaf> leaves;
-  for (const kernel::WideBvhNode& node : triangle_bvh_.nodes())
-    for (int i = 0; i < kernel::WideBvhNode::kWidth; ++i)
+  for (const kernel::Bvh8::Node& node : triangle_bvh_.nodes())
+    for (int i = 0; i < kernel::Bvh8::Node::kWidth; ++i)
       if (node.primitive_count[i] > 0) leaves.push_back({node.child[i], node.primitive_count[i], 0});
   std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.first_entry < b.first_entry; });
   // A leaf's first block, looked up by its first entry below.
@@ -146,15 +146,25 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
                                    std::span<const kernel::PrimitiveId> skipped) const {
   constexpr uint32_t kWidth = kernel::TriangleBlock::kWidth;
   const kernel::BlockRay block_ray(ray.origin, ray.direction);
-  auto test_leaf = [&](uint32_t first_block, uint32_t count, Real& t_limit) {
+  // The traversal says how many lanes its vectors hold: with eight (AVX2), a
+  // leaf's blocks are tested two at a time while more than one block's
+  // triangles are left. The lanes come out in the same order either way, so
+  // the exact test sees the same triangles in the same order.
+  auto test_leaf = [&](uint32_t first_block, uint32_t count, Real& t_limit, auto vector_width) {
     bool hit = false;
-    for (uint32_t block = first_block; count > 0; ++block) {
-      const int lanes = static_cast<int>(std::min(count, kWidth));
+    for (uint32_t block = first_block; count > 0;) {
+      const bool pair = decltype(vector_width)::value >= 2 * kWidth && count > kWidth;
+      const int lanes = static_cast<int>(std::min(count, pair ? 2 * kWidth : kWidth));
       count -= static_cast<uint32_t>(lanes);
-      const kernel::TriangleBlock& triangles = triangle_blocks_[block];
-      for (unsigned candidates = kernel::candidate_lanes(triangles, block_ray, t_limit, lanes); candidates != 0;
-           candidates &= candidates - 1) {
-        const int lane = std::countr_zero(candidates);
+      const uint32_t first = block;
+      block += pair ? 2 : 1;
+      const kernel::TriangleBlock& first_triangles = triangle_blocks_[first];
+      unsigned candidates = pair ? kernel::candidate_lanes<2 * kWidth>(first_triangles, block_ray, t_limit, lanes)
+                                 : kernel::candidate_lanes(first_triangles, block_ray, t_limit, lanes);
+      for (; candidates != 0; candidates &= candidates - 1) {
+        const uint32_t index = first * kWidth + static_cast<uint32_t>(std::countr_zero(candidates));
+        const kernel::TriangleBlock& triangles = triangle_blocks_[index / kWidth];
+        const int lane = static_cast<int>(index % kWidth);
         if constexpr (skipping)
           if (std::ranges::any_of(skipped, [&](kernel::PrimitiveId id) {
                 return id.shape == triangles.shape[lane] && id.face == triangles.face[lane];
@@ -162,7 +172,7 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
             continue;
         Real b1, b2;
         if (!kernel::intersect_lane(triangles, lane, block_ray, t_limit, b1, b2)) continue;
-        found = {false, block * kWidth + static_cast<uint32_t>(lane), b1, b2};
+        found = {false, index, b1, b2};
         hit = true;
         if constexpr (any_hit) return true;
       }
@@ -174,13 +184,14 @@ bool PrimitiveSet::trace_triangles(const Ray& ray, const kernel::TraversalRay& t
     const uint32_t lines = std::min<uint32_t>(2, (count + kWidth - 1) / kWidth) * sizeof(kernel::TriangleBlock) / 64;
     for (uint32_t line = 0; line < lines; ++line) __builtin_prefetch(block + 64 * line);
   };
-  return triangle_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, prefetch_leaf);
+  return kernel::traversal_uses_avx2 ? triangle_bvh_.traverse_avx2<any_hit>(traversal, t_max, test_leaf, prefetch_leaf)
+                                     : triangle_bvh_.traverse<any_hit>(traversal, t_max, test_leaf, prefetch_leaf);
 }
 
 template <bool any_hit>
 bool PrimitiveSet::trace_spheres(const Ray& ray, const kernel::TraversalRay& traversal, Real& t_max,
                                  Found& found) const {
-  auto test_leaf = [&](uint32_t first, uint32_t count, Real& t_limit) {
+  auto test_leaf = [&](uint32_t first, uint32_t count, Real& t_limit, auto) {
     bool hit = false;
     for (uint32_t index = first; index < first + count; ++index) {
       // The discriminant from the perpendicular offset, for precision far from

@@ -113,7 +113,8 @@ class PrimitiveSet {
   // Each triangle leaf's triangles, from a block boundary on (the leaf names its first block).
   std::vector<kernel::TriangleBlock> triangle_blocks_;
   std::vector<Sphere> spheres_;  // in the order of the sphere hierarchy's leaf entries
-  kernel::Bvh triangle_bvh_, sphere_bvh_;
+  kernel::Bvh8 triangle_bvh_;
+  kernel::Bvh sphere_bvh_;
 };
 
 class SurfaceTextures;

@@ -28,15 +28,16 @@ namespace {
 // larger of the two.
 constexpr uint64_t kFilmBytesPerPixel = std::max(3 * sizeof(double) + 3 * sizeof(float),
                                                  3 * sizeof(float) + 3 * sizeof(uint8_t) + 3 * sizeof(float));
-// Per primitive: what the BVH's build holds.
-constexpr uint64_t kBvhBytesPerPrimitive = kernel::Bvh::kPeakBytesPerPrimitive;
+// Per primitive: what the BVH's build holds (triangles eight-wide, spheres four).
+constexpr uint64_t kTriangleBvhBytesPerPrimitive = kernel::Bvh8::kPeakBytesPerPrimitive;
+constexpr uint64_t kSphereBvhBytesPerPrimitive = kernel::Bvh::kPeakBytesPerPrimitive;
 // A triangle as added, and its lane of a leaf's block: a leaf starts at a block
 // boundary, so a block may hold fewer than four. Counted at three a block: the
 // SAH prices leaves by whole blocks, and meshes of 1e3 to 1e6 triangles (bench/scale,
 // the pbrt-v3 test scenes) fill 3.8 to 4.
 constexpr uint64_t kBlockBytesPerTriangle = sizeof(kernel::TriangleBlock) / 3;
-constexpr uint64_t kTriangleBytes = sizeof(PrimitiveSet::Triangle) + kBlockBytesPerTriangle + kBvhBytesPerPrimitive;
-constexpr uint64_t kSphereBytes = 2 * sizeof(PrimitiveSet::Sphere) + kBvhBytesPerPrimitive;
+constexpr uint64_t kTriangleBytes = sizeof(PrimitiveSet::Triangle) + kBlockBytesPerTriangle + kTriangleBvhBytesPerPrimitive;
+constexpr uint64_t kSphereBytes = 2 * sizeof(PrimitiveSet::Sphere) + kSphereBvhBytesPerPrimitive;
 // A worker's stack as far as a path of the deepest bounces touches it, and its counters.
 constexpr uint64_t kBytesPerThread = 256 * 1024;
 constexpr uint64_t kBytesPerTile = sizeof(PixelRect);

@@ -55,20 +55,32 @@ struct BlockRay {
 
 namespace triangle_block_detail {
 
-using Lanes = Lanes4;
-using Mask = LaneMask4;
-static_assert(TriangleBlock::kWidth == 4, "one Lanes4 holds a block's triangles");
+static_assert(TriangleBlock::kWidth == 4, "one Lanes4 holds a block's lanes of a field");
 // A vector cast between vector types of one size keeps the bits (GCC, Clang);
 // as macros, since a function returning lanes by value makes GCC warn about
-// the ABI in the double build (32-byte lanes without AVX).
-#define SAFEGI_LANE_BITS(lanes) ((::safegi::render::kernel::triangle_block_detail::Mask)(lanes))
-#define SAFEGI_LANES(bits) ((::safegi::render::kernel::triangle_block_detail::Lanes)(bits))
+// the ABI in the double build (32-byte lanes without AVX). They name the
+// caller's `Lanes` and `Mask`.
+#define SAFEGI_LANE_BITS(lanes) ((Mask)(lanes))
+#define SAFEGI_LANES(bits) ((Lanes)(bits))
 
 // The helpers take and give lanes by reference: in the double build they are
 // 32 bytes, which GCC would warn pass differently by value with AVX.
-using AliasingLanes = Real __attribute__((vector_size(sizeof(Lanes)), may_alias));
+using AliasingLanes = Real __attribute__((vector_size(sizeof(Lanes4)), may_alias));
 inline const AliasingLanes& load(const Real (&lanes)[TriangleBlock::kWidth]) {
   return *reinterpret_cast<const AliasingLanes*>(lanes);
+}
+// A field's lanes of `Width` / 4 consecutive blocks, `lanes` the first block's:
+// the next block's are one block further on in the same array.
+template <int Width>
+inline void load_lanes(typename LanesOf<Width>::Type& out, const Real (&lanes)[TriangleBlock::kWidth]) {
+  if constexpr (Width == TriangleBlock::kWidth) {
+    out = load(lanes);
+  } else {
+    static_assert(Width == 2 * TriangleBlock::kWidth, "one or two blocks");
+    const auto& next = *reinterpret_cast<const AliasingLanes*>(reinterpret_cast<const char*>(lanes) +
+                                                                sizeof(TriangleBlock));
+    out = __builtin_shufflevector(load(lanes), next, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
 }
 
 // Magnitudes between these keep every product below exact enough for the
@@ -85,13 +97,26 @@ inline constexpr Real kErrorFactor = 256 * std::numeric_limits<Real>::epsilon() 
 }  // namespace triangle_block_detail
 
 // Bit i set: lane i (of the first `count`) may be hit before `t_max` by the
-// exact test; every lane that test would accept is set.
+// exact test; every lane that test would accept is set. `Width` 4 tests
+// `block`; 8 tests it and the block after it (lane 4 + i: the next one's lane
+// i) in one vector of eight, as AVX2 code does.
+template <int Width = TriangleBlock::kWidth>
 inline unsigned candidate_lanes(const TriangleBlock& block, const BlockRay& ray, Real t_max, int count) {
   using namespace triangle_block_detail;
-  const Lanes sx = ray.origin.x - load(block.p0[0]), sy = ray.origin.y - load(block.p0[1]),
-              sz = ray.origin.z - load(block.p0[2]);
-  const Lanes e1x = load(block.e1[0]), e1y = load(block.e1[1]), e1z = load(block.e1[2]);
-  const Lanes e2x = load(block.e2[0]), e2y = load(block.e2[1]), e2z = load(block.e2[2]);
+  using Lanes = typename LanesOf<Width>::Type;
+  using Mask = decltype(Lanes{} < Lanes{});
+  Lanes p0x, p0y, p0z, e1x, e1y, e1z, e2x, e2y, e2z, edge;
+  load_lanes<Width>(p0x, block.p0[0]);
+  load_lanes<Width>(p0y, block.p0[1]);
+  load_lanes<Width>(p0z, block.p0[2]);
+  load_lanes<Width>(e1x, block.e1[0]);
+  load_lanes<Width>(e1y, block.e1[1]);
+  load_lanes<Width>(e1z, block.e1[2]);
+  load_lanes<Width>(e2x, block.e2[0]);
+  load_lanes<Width>(e2y, block.e2[1]);
+  load_lanes<Width>(e2z, block.e2[2]);
+  load_lanes<Width>(edge, block.edge_bound);
+  const Lanes sx = ray.origin.x - p0x, sy = ray.origin.y - p0y, sz = ray.origin.z - p0z;
   const Real dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
   // p = d × e2, det = e1 · p, U = s · p, q = s × e1, V = d · q, T = e2 · q;
   // u = U / det, v = V / det, t = T / det.
@@ -108,7 +133,6 @@ inline unsigned candidate_lanes(const TriangleBlock& block, const BlockRay& ray,
   const Mask magnitude_bits = ~sign_bit;
   const Lanes det_abs = SAFEGI_LANES(SAFEGI_LANE_BITS(det) & magnitude_bits);
 
-  const Lanes edge = load(block.edge_bound);
   const Lanes abs_sx = SAFEGI_LANES(SAFEGI_LANE_BITS(sx) & magnitude_bits),
               abs_sy = SAFEGI_LANES(SAFEGI_LANE_BITS(sy) & magnitude_bits),
               abs_sz = SAFEGI_LANES(SAFEGI_LANE_BITS(sz) & magnitude_bits);

@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+#include "bvh.hpp"  // cpu_has_avx2, SAFEGI_TARGET_AVX2
+
 namespace safegi::render::kernel {
 namespace {
 
@@ -20,6 +22,26 @@ unsigned exact_hits(const TriangleBlock& block, const BlockRay& ray, Real t_max,
     if (intersect_lane(block, lane, ray, t, b1, b2)) lanes |= 1u << lane;
   }
   return lanes;
+}
+
+// The filter over two blocks as one vector of eight lanes, compiled for AVX2
+// as the AVX2 traversal has it (only called where the CPU has AVX2).
+SAFEGI_TARGET_AVX2 unsigned candidate_pair_avx2(const TriangleBlock (&blocks)[2], const BlockRay& ray, Real t_max,
+                                                int count) {
+  return candidate_lanes<2 * kWidth>(blocks[0], ray, t_max, count);
+}
+
+// The eight-lane filter over `blocks` must keep exactly what the four-lane one
+// keeps of each block: lane for lane the same arithmetic.
+void check_pair(const TriangleBlock (&blocks)[2], const BlockRay& ray, Real t_max) {
+  for (int count = kWidth + 1; count <= 2 * kWidth; ++count) {
+    const unsigned expected = candidate_lanes(blocks[0], ray, t_max, kWidth) |
+                              candidate_lanes(blocks[1], ray, t_max, count - kWidth) << kWidth;
+    ASSERT_EQ(candidate_lanes<2 * kWidth>(blocks[0], ray, t_max, count), expected) << "count " << count;
+    if (cpu_has_avx2()) {
+      ASSERT_EQ(candidate_pair_avx2(blocks, ray, t_max, count), expected) << "count " << count;
+    }
+  }
 }
 
 struct Tally {
@@ -59,7 +81,12 @@ void check_scale(std::mt19937& rng, Real3 center, Real size, Real distance, int 
     const Real3 origin = aim + normalize(Real3{unit(rng), unit(rng), unit(rng)}) * distance;
     const BlockRay ray(origin, normalize(aim - origin));
     const Real limits[] = {kInfinity, distance * 1.5f, distance, distance * 0.5f};
+    // The same triangles in a second block, lanes reversed: the pair's upper half.
+    TriangleBlock blocks[2] = {block, block};
+    for (int lane = 0; lane < kWidth; ++lane)
+      blocks[1].set(kWidth - 1 - lane, vertex[lane], e1[lane], e2[lane], 0, 0);
     for (Real t_max : limits) {
+      ASSERT_NO_FATAL_FAILURE(check_pair(blocks, ray, t_max));
       for (int count = 1; count <= kWidth; ++count) {
         const unsigned exact = exact_hits(block, ray, t_max, count);
         const unsigned kept = candidate_lanes(block, ray, t_max, count);
