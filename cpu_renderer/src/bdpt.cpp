@@ -1,6 +1,7 @@
 #include "bdpt.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "bsdf.hpp"
@@ -435,6 +436,7 @@ void LightImage::add_now(const std::vector<bdpt::Splat>& splats) {
     const int x = static_cast<int>(splat.x), y = static_cast<int>(splat.y);
     if (x < window_.x0 || x >= window_.x1 || y < window_.y0 || y >= window_.y1) continue;
     const sg::vec3_rep L = sg::raw(splat.radiance);  // W/(m2 sr), as the film's other sums
+    if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) continue;  // as the camera's invalid samples
     double* sum = &sums_[3 * (static_cast<size_t>(y - window_.y0) * window_width + (x - window_.x0))];
     sum[0] += L.r;
     sum[1] += L.g;

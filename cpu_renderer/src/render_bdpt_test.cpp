@@ -178,5 +178,17 @@ TEST(RenderBdpt, PointLightInAMirrorLightsTheFloor) {
   }
 }
 
+// Light tracing's splats land on other tiles' pixels; they are added in tile
+// order, so the image is the same bit for bit whatever the thread count.
+TEST(RenderBdpt, ImageDoesNotDependOnTheThreadCount) {
+  const std::filesystem::path folder = std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box";
+  const std::string text = read_text(folder / "cornell-box.json");
+  auto small = [](RenderSettings& s) { s.integrator = IntegratorType::bdpt, s.max_depth = 4, s.width = 40, s.height = 40; };
+  const Image one = render_text(text, 2, 1, std::nullopt, small, folder);
+  const Image three = render_text(text, 2, 3, std::nullopt, small, folder);
+  ASSERT_EQ(one.rgb.size(), three.rgb.size());
+  EXPECT_EQ(std::memcmp(one.rgb.data(), three.rgb.data(), one.rgb.size() * sizeof(float)), 0);
+}
+
 }  // namespace
 }  // namespace safegi::render

@@ -133,6 +133,10 @@ bool splats_samples(const PixelFilter& filter) {
   return filter.mode == PixelFilterMode::splat && !PixelFilterSampler::is_plain_box(filter);
 }
 
+bool sums_on_first_process(const RenderSettings& settings) {
+  return splats_samples(settings.filter) || settings.integrator == IntegratorType::bdpt;
+}
+
 std::vector<PixelRect> render_tiles(int width, int height) {
   std::vector<PixelRect> tiles;
   for (int y = 0; y < height; y += kTileSize)
@@ -289,6 +293,11 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   }
   progress.finish();
 
+  // bdpt: every process's pixels on the first (sums_on_first_process), the others' tiles zeros in each sum.
+  if (light_image && partition && !splat_film) {
+    partition->sum_to_first(sums);
+    if (filter) partition->sum_to_first(weight_sums);
+  }
   Image image;
   image.width = window.width;
   image.height = window.height;
