@@ -140,6 +140,15 @@ class LightImage {
   std::vector<double>& sums() { return sums_; }
 
   static constexpr int kTilesAheadPerThread = 8;
+  // Samples per pixel in one pass over the tiles: a tile's splats wait in a
+  // list until the tiles before it are in, so a pass of at most this many
+  // bounds each list (256 pixels × 16 samples × a light path's vertices).
+  static constexpr int kPassSpp = 16;
+  // The most the splats of the tiles waiting and being rendered hold, for paths of `max_depth`.
+  static uint64_t waiting_bytes(int threads, int max_depth) {
+    return static_cast<uint64_t>(std::max(1, threads)) * (kTilesAheadPerThread + 1) * 16 * 16 * kPassSpp *
+           (static_cast<uint64_t>(std::max(0, max_depth)) + 1) * sizeof(bdpt::Splat);
+  }
 
  private:
   void add_now(const std::vector<bdpt::Splat>& splats);

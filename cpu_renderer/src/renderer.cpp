@@ -6,6 +6,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -205,6 +206,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int spp_cap = settings.spp;
   // With a time budget, samples are added in passes; without, one pass renders all.
   int pass_spp = budgeted ? 1 : spp_cap;
+  // bdpt: passes short enough that the splats waiting stay few (LightImage::kPassSpp).
+  const int most_pass_spp = bdpt ? LightImage::kPassSpp : std::numeric_limits<int>::max();
+  pass_spp = std::min(pass_spp, most_pass_spp);
   Progress progress(options.progress, pixel_count * static_cast<uint64_t>(spp_cap));
 
   std::vector<RayCounters> counters(thread_count);
@@ -284,6 +288,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
           remaining < per_sample
               ? 0
               : std::max(1, std::min(static_cast<int>(remaining / per_sample / 2), 2 * (pass_end - pass_begin)));
+      next_pass_spp = std::min(next_pass_spp, most_pass_spp);
       if (partition) next_pass_spp = partition->next_pass_spp_of_first(next_pass_spp);
       if (next_pass_spp == 0) break;
       pass_spp = next_pass_spp;
