@@ -313,7 +313,9 @@ Radiance Bdpt::connect(std::span<const LightVertex> light, std::span<const Camer
                        Time time, RayCounters& counters, std::vector<bdpt::Splat>& splats) const {
   Radiance sum;
   for (size_t t = 1; t <= camera.size(); ++t) {
-    for (size_t s = 0; s <= light.size(); ++s) {
+    // s = 1 samples its own light point: it runs whether or not the light
+    // subpath started (a spot light's uniform directions miss its cone).
+    for (size_t s = 0; s <= std::max<size_t>(light.size(), 1); ++s) {
       const int depth = static_cast<int>(s + t) - 2;
       if ((s == 1 && t == 1) || depth < 0 || depth > max_depth_) continue;
       const CameraVertex& pt = camera[t - 1];

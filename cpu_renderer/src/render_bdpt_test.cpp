@@ -179,6 +179,25 @@ TEST(RenderBdpt, PointLightInAMirrorLightsTheFloor) {
   }
 }
 
+// A spot light's light paths leave in uniform directions, most outside its
+// cone, where none starts: its light samples (s = 1) must go on without one.
+// The floor it lights, one bounce: bdpt's image mean within 2 % of the path
+// tracer's (which is exact here but for noise; measured 0.1 %; without those
+// light samples bdpt was 6× darker).
+TEST(RenderBdpt, SpotLightSamplesDoNotNeedALightPath) {
+  const std::string scene = R"json({
+    "render": {"resolution": [32, 32], "integrator": "bdpt", "max_depth": 1},
+    "camera": {"position": ["0 m", "1.9 m", "0 m"], "look_at": ["0 m", "0 m", "0 m"], "up": [0, 0, -1], "fov": "60 deg"},
+    "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
+    "shapes": [{"type": "quad", "material": "floor", "origin": ["-20 m", "0 m", "-20 m"], "edge_u": ["0 m", "0 m", "40 m"],
+                "edge_v": ["40 m", "0 m", "0 m"]}],
+    "lights": [{"type": "spot", "position": ["0 m", "1.5 m", "0 m"], "look_at": ["0.3 m", "0 m", "0 m"],
+                "intensity": "10 W/sr", "cone_angle": "25 deg", "cone_delta": "10 deg"}]})json";
+  const double bdpt = channel_estimate(render_text(scene, 64, 2), 0).mean;
+  const double path = channel_estimate(render_text(scene, 16, 2, std::nullopt, with(IntegratorType::path)), 0).mean;
+  EXPECT_NEAR(bdpt, path, 0.02 * path);
+}
+
 // A scene bdpt cannot render is refused with the reason (the pbrt importer
 // falls back to path before it gets here).
 TEST(RenderBdpt, RefusesWhatItCannotRenderWithTheReason) {
