@@ -14,7 +14,7 @@
 // per area (pdf_solid_angle_to_area), and only densities per area ever meet
 // in a ratio. Forgetting the conversion, or the cosine in it, leaves a
 // density per solid angle where one per area is expected: a compile error in
-// the checked build (cpu_renderer/fuzz/../compile_fail cases show it).
+// the checked build (testsuite/compile_fail/cases/bdpt_*.cpp show it).
 //
 // Throughput is typed by the subpath: a camera path's is a plain ratio (the
 // camera's importance over its density is one), a light path's is power
