@@ -88,7 +88,9 @@ class Bsdf {
     return std::holds_alternative<TranslucentMaterial>(model_) || (d && (d->spec_trans > 0 || d->thin));
   }
 
-  Brdf eval(DirectionShading wo, DirectionShading wi) const {
+  // `transport`: importance, the adjoint BSDF that light paths see (it differs
+  // only where transmission compresses radiance).
+  Brdf eval(DirectionShading wo, DirectionShading wi, Transport transport = Transport::radiance) const {
     if (wo.z() <= 0 || wi.z() == 0 || (wi.z() < 0 && !transmits())) return Brdf{};
     return std::visit(Overloaded{[&](const LambertMaterial&) { return lambert(diffuse_); },
                                  [&](const OrenNayarMaterial& m) { return oren_nayar(m, wo, wi); },
@@ -96,8 +98,8 @@ class Bsdf {
                                  [&](const PlasticMaterial& m) { return eval_lobed(m, wo, wi); },
                                  [&](const ConductorMaterial& m) { return conductor(m, wo, wi); },
                                  [&](const SubstrateMaterial& m) { return substrate(m, wo, wi); },
-                                 [&](const TranslucentMaterial& m) { return translucent(m, wo, wi, Transport::radiance); },
-                                 [&](const DisneyMaterial& m) { return disney(m).eval(wo, wi); },
+                                 [&](const TranslucentMaterial& m) { return translucent(m, wo, wi, transport); },
+                                 [&](const DisneyMaterial& m) { return disney(m).eval(wo, wi, transport == Transport::importance); },
                                  [](const MirrorMaterial&) { return Brdf{}; },
                                  [](const GlassMaterial&) { return Brdf{}; },
                                  [](const BlackMaterial&) { return Brdf{}; }},

@@ -106,6 +106,36 @@ class CameraRays {
   }
   bool has_shutter() const { return shutter_span_ > sg::zero; }
 
+  // Light tracing (the bidirectional path tracer's t = 1 strategy) sees the
+  // camera as a pinhole: its position, and for a direction leaving it, where
+  // on the image (in pixels from the top left corner) that direction's rays
+  // start, with the density over solid angle of generate_at()'s directions
+  // for a film point uniform over the whole image, 1 / (A cos³ θ), A the
+  // image's area on the plane at unit distance (pbrt-v3's We over the
+  // pinhole's unit "lens area", one cosine of which the caller's inverse-
+  // square law per projected area holds). None outside the image.
+  bool is_pinhole() const { return projection_ == CameraProjection::perspective && !has_lens(); }
+  PointWorld position() const { return position_; }
+  struct ImagePoint {
+    Real x = 0, y = 0;
+    PdfSolidAngle pdf = sg::zero;
+  };
+  std::optional<ImagePoint> image_point(DirectionWorld d) const {
+    const Real facing = sg::dot(d, forward_);
+    if (!(facing > 0)) return std::nullopt;
+    const Real sx = sg::dot(d, right_) / facing;
+    const Real sy = sg::dot(d, up_) / facing;
+    const Real fx = (sx / half_width_ + 1) / 2, fy = (1 - sy / half_height_) / 2;
+    if (!(fx >= 0 && fx < 1 && fy >= 0 && fy < 1)) return std::nullopt;
+    return ImagePoint{fx / inverse_width_, fy / inverse_height_, direction_pdf(d)};
+  }
+  PdfSolidAngle direction_pdf(DirectionWorld d) const {
+    const Real facing = sg::dot(d, forward_);
+    if (!(facing > 0)) return sg::zero;
+    const Real image_area = 4 * half_width_ * half_height_;
+    return 1 / (image_area * facing * facing * facing * units::steradian);
+  }
+
   // A ray through the image point (x, y), in pixels from the top left corner.
   TimedRay generate_at(Real x, Real y, Sampler& sampler) const {
     const Real fx = x * inverse_width_;

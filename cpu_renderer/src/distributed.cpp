@@ -145,8 +145,8 @@ Image DistributedSession::render(const Scene& scene, RenderOptions options, Rend
   Image image = safegi::render::render(scene, options, &local);
   test_fault_point();
   communicator_.wait_for_every_rank();
-  // Splatted, rank 0's image is whole already (the ranks' sums were added in render()).
-  Image whole = splats_samples(options.settings.filter) ? (is_root() ? std::move(image) : Image{})
+  // Splatted or bidirectional, rank 0's image is whole already (the ranks' sums were added in render()).
+  Image whole = sums_on_first_process(options.settings) ? (is_root() ? std::move(image) : Image{})
                                                         : gather_on_first(std::move(image));
 
   uint64_t totals[] = {local.camera_rays, local.extension_rays, local.shadow_rays, local.invalid_samples,

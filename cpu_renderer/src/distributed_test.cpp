@@ -194,6 +194,24 @@ TEST_F(Distributed, SplattedFilterSumsTheRanksPixels) {
   for (size_t i = 0; i < one.rgb.size(); ++i) EXPECT_NEAR(three.rgb[i], one.rgb[i], 1e-5f * (1 + one.rgb[i])) << i;
 }
 
+// The bidirectional path tracer's light tracing splats onto any rank's pixels:
+// the ranks' sums, camera and light, are added on rank 0, the single
+// process's image to rounding.
+TEST_F(Distributed, BdptSumsTheRanksPixels) {
+  auto args = [&](const std::string& output) {
+    return "\"" + (kScenes / "cornell-box" / "cornell-box.json").string() +
+           "\" --integrator bdpt --max-depth 4 --resolution 40x36 --spp 2 --threads 1 -q -o \"" +
+           (directory_ / output).string() + "\"";
+  };
+  Result single = render(0, args("single"));
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  Result job = render(3, args("ranks3"));
+  ASSERT_EQ(job.exit_code, 0) << job.err;
+  const Image one = read_image(directory_ / "single.exr"), three = read_image(directory_ / "ranks3.exr");
+  ASSERT_EQ(one.rgb.size(), three.rgb.size());
+  for (size_t i = 0; i < one.rgb.size(); ++i) EXPECT_NEAR(three.rgb[i], one.rgb[i], 1e-5f * (1 + one.rgb[i])) << i;
+}
+
 // A scene that fails to load on every rank: the single process's message, once.
 TEST_F(Distributed, SceneErrorIsPrintedOnce) {
   fs::path scene = directory_ / "bad.json";

@@ -6,6 +6,7 @@
 #include "material_mix.hpp"
 #include "medium.hpp"
 #include "safegi/cpu_renderer/sampling.hpp"
+#include "surface_scatter.hpp"
 
 namespace safegi::render {
 
@@ -18,49 +19,6 @@ Real mis_weight(PdfSolidAngle chosen, PdfSolidAngle other) { return power_heuris
 
 // Invisible boundaries a shadow ray crosses at most (each one is a BVH query).
 constexpr int kMaxCrossings = 256;
-
-// A direction turned into the shading frame's upper hemisphere.
-DirectionShading folded_up(DirectionShading d) {
-  const Real3 v = to_kernel(d);
-  return from_kernel<DirectionShading>(Real3{v.x, v.y, std::abs(v.z)});
-}
-
-// A surface point's scattering towards a light: its BSDF in its shading frame.
-struct SurfaceScatter {
-  const Bsdf& bsdf;
-  const ShadingFrame& frame;
-  DirectionShading wo;
-  NormalWorld normal;  // the geometric one, on wo's side
-  // The frame's normal is a bump map's or interpolated, so the shading and
-  // geometric hemispheres differ (pbrt-v3's BSDF::f rule below).
-  bool perturbed;
-
-  std::optional<ScatteringDensity> towards(DirectionWorld wi_world) const {
-    DirectionShading wi = frame.to_local(wi_world);
-    if (perturbed && !bsdf.transmits()) {
-      // pbrt-v3: the geometric normal says whether light is reflected, and a
-      // reflecting BSDF's lobes then count on either side of the shading
-      // normal (at a smooth mesh's silhouette the viewer can be below it, a
-      // light above the surface below it). Evaluated with both directions
-      // folded into the shading hemisphere: Lambert's and Oren–Nayar's value
-      // is pbrt-v3's there, a glossy lobe's its mirror image's.
-      if (!(sg::dot(normal, wi_world) > sg::zero)) return std::nullopt;
-      Brdf f = bsdf.eval(folded_up(wo), folded_up(wi));
-      if (sg::is_black(f)) return std::nullopt;
-      return f * sg::abs_cos_theta(wi);
-    }
-    const bool above = wi.z() > 0;
-    if (!above && !bsdf.transmits()) return std::nullopt;
-    // Through a transmitting BSDF, reflection or transmission is the geometric
-    // normal's to say, as in pbrt-v3; where the shading frame puts the light on
-    // the other side, nothing counts.
-    if (perturbed && (sg::dot(normal, wi_world) > sg::zero) != above) return std::nullopt;
-    Brdf f = bsdf.eval(wo, wi);
-    if (sg::is_black(f)) return std::nullopt;
-    return f * sg::abs_cos_theta(wi);
-  }
-  PdfSolidAngle pdf(DirectionWorld wi) const { return bsdf.pdf(wo, frame.to_local(wi)); }
-};
 
 // A point inside a medium: Henyey–Greenstein's phase function about the
 // direction the light was travelling.

@@ -306,6 +306,7 @@ std::optional<LightSample> Lights::sample_light(uint32_t index, Real weight, Rea
                                                 Time time, Real u1, Real u2) const {
   const Light& light = lights_[index];
   LightSample sample;
+  sample.light = index;
   if (light.type == Light::Type::environment) {
     std::optional<Environment::Sample> direction = environment_->sample(u1, u2);
     if (!direction) return std::nullopt;
@@ -427,6 +428,8 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
   const Real probability = chosen.probability;
   if (!(probability > 0)) return std::nullopt;
   PhotonEmission photon;
+  photon.light = index;
+  photon.choice = probability;
   if (light.type == Light::Type::point || light.type == Light::Type::spot) {
     photon.origin = light.position;
     photon.origin_error = kernel::abs(to_kernel(light.position)) * kernel::gamma(1);
@@ -443,6 +446,7 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
       intensity = light.intensity * falloff;
     }
     photon.flux = intensity / (pdf * probability);
+    photon.pdf_direction = pdf;
     return photon;
   }
   if (light.type == Light::Type::environment || light.type == Light::Type::distant) {
@@ -495,7 +499,33 @@ std::optional<PhotonEmission> Lights::sample_emission(Time time, Real u_light, R
   photon.surface_normal = to_kernel(normal);
   photon.direction = frame.from_local(local);
   photon.flux = light.radiance * cos_emitted * sides / (pdf_direction * point.pdf_area * probability);
+  photon.pdf_position = point.pdf_area;
+  photon.pdf_direction = pdf_direction / sides;
   return photon;
+}
+
+EmissionDensity Lights::emission_density(uint32_t index, const SurfaceHit& point, DirectionWorld direction,
+                                         Time time) const {
+  const Light& light = lights_[index];
+  EmissionDensity density;
+  density.choice = light_probability(power_cdf_, index);
+  if (light.type == Light::Type::point || light.type == Light::Type::spot) {
+    density.direction = 1 / (4 * kPi * units::steradian);  // uniform, as sample_emission() draws them
+    return density;
+  }
+  Proj cos_emitted = sg::dot(point.normal, direction);
+  if (light.two_sided) cos_emitted = sg::abs(cos_emitted);
+  if (!(cos_emitted > sg::zero)) return density;
+  const Real sides = light.two_sided ? 2 : 1;
+  density.position = light.motion < 0 ? light.pdf_area : moving_pdf_area(light, point, time);
+  density.direction = cos_emitted / (sides * kPi * units::steradian * units::proj);
+  return density;
+}
+
+bool Lights::has_directional_lights() const {
+  return std::any_of(lights_.begin(), lights_.end(), [](const Light& light) {
+    return light.type == Light::Type::environment || light.type == Light::Type::distant;
+  });
 }
 
 PdfSolidAngle Lights::environment_pdf(PointWorld reference, DirectionWorld direction) const {

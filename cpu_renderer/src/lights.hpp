@@ -38,6 +38,7 @@ struct LightSample {
   // light's samples per round: the density of all of them together).
   Radiance radiance;
   PdfSolidAngle pdf = sg::zero;
+  uint32_t light = 0;  // which one (Lights' index)
 };
 
 // A photon leaving a light: where, which way, and the flux it carries, with
@@ -49,6 +50,22 @@ struct PhotonEmission {
   Real3 surface_normal;  // the emitter's, oriented along the photon; zero for point lights and the environment
   DirectionWorld direction;
   spectrum<dim::power> flux;
+  // The densities divided out of `flux`, apart (the bidirectional path
+  // tracer's weights need each): the light, its choice by power, the density
+  // of the origin per area (zero for a point light's: a delta) and of the
+  // direction per solid angle.
+  uint32_t light = 0;
+  Real choice = 0;
+  PdfArea pdf_position = sg::zero;
+  PdfSolidAngle pdf_direction = sg::zero;
+};
+
+// The densities with which sample_emission() would emit from a point of a
+// light along a direction (PhotonEmission's, for a path found another way).
+struct EmissionDensity {
+  Real choice = 0;
+  PdfArea position = sg::zero;  // zero: a point light's delta
+  PdfSolidAngle direction = sg::zero;
 };
 
 class Lights {
@@ -105,6 +122,18 @@ class Lights {
   // environment's from a disc across the scene's bounding sphere, facing the
   // sampled direction.
   std::optional<PhotonEmission> sample_emission(Time time, Real u_light, Real u1, Real u2, Real u3, Real u4) const;
+  // The densities of sample_emission() for light `index` emitting from `point`
+  // (an area light's surface point, its normal `normal` as the light's
+  // geometry has it; ignored for point and spot lights) along `direction`.
+  // Not for the environment and distant lights.
+  EmissionDensity emission_density(uint32_t index, const SurfaceHit& point, DirectionWorld direction, Time time) const;
+  // Whether light `index` is a point or spot light (a delta in position).
+  bool is_point(uint32_t index) const {
+    return lights_[index].type == Light::Type::point || lights_[index].type == Light::Type::spot;
+  }
+  // Whether some light has no emission density over points and directions
+  // (the environment, a distant light).
+  bool has_directional_lights() const;
 
   // The environment, seen by a ray that escapes along `direction`, and the
   // density with which sample() picks that direction (light choice included).

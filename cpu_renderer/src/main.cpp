@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", resolution, "image size WIDTHxHEIGHT (default: the scene's)");
   app.add_option("--crop", crop, "render only the window X,Y,WIDTH,HEIGHT (pixels)");
   app.add_option("--time-budget", time_budget, "render until this many seconds are spent")->check(CLI::PositiveNumber);
-  app.add_option("--integrator", integrator, "direct, path or photon (default: the scene's)")
-      ->check(CLI::IsMember({"direct", "path", "photon"}));
+  app.add_option("--integrator", integrator, "direct, path, photon or bdpt (default: the scene's)")
+      ->check(CLI::IsMember({"direct", "path", "photon", "bdpt"}));
   int photons = 0;
   double photon_radius = 0;
   app.add_option("--photons", photons, "photons traced by the photon integrator (default: the scene's, 200000)")
@@ -101,9 +101,10 @@ int main(int argc, char** argv) {
     else if (time_budget > 0) options.settings.spp = 1 << 24;
     if (max_depth > 0) options.settings.max_depth = max_depth;
     if (!integrator.empty())
-      options.settings.integrator = integrator == "direct" ? IntegratorType::direct
-                                    : integrator == "path" ? IntegratorType::path
-                                                           : IntegratorType::photon;
+      options.settings.integrator = integrator == "direct"   ? IntegratorType::direct
+                                    : integrator == "path"   ? IntegratorType::path
+                                    : integrator == "photon" ? IntegratorType::photon
+                                                             : IntegratorType::bdpt;
     if (photons > 0) options.settings.photons = photons;
     if (photon_radius > 0) options.settings.photon_radius = static_cast<Real>(photon_radius) * units::metre;
     if (!mis.empty()) options.settings.mis = mis == "on";
@@ -176,7 +177,9 @@ int main(int argc, char** argv) {
           "\"peak_memory_kib\": %ld, \"invalid_samples\": %llu}\n",
           image.width, image.height, stats.samples_per_pixel, static_cast<unsigned long long>(stats.camera_rays),
           session.ranks(), stats.threads, seed,
-          used.integrator == IntegratorType::direct ? "direct" : used.integrator == IntegratorType::path ? "path" : "photon",
+          used.integrator == IntegratorType::direct ? "direct"
+          : used.integrator == IntegratorType::path ? "path"
+          : used.integrator == IntegratorType::photon ? "photon" : "bdpt",
           used.max_depth,
           used.mis ? "true" : "false", used.light_samples, name_of(used.light_strategy), used.russian_roulette ? "true" : "false",
           used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,

@@ -11,6 +11,7 @@
 
 #include <safegi/diagnostics/printable.hpp>
 
+#include "bdpt.hpp"
 #include "bvh.hpp"
 #include "geometry.hpp"
 #include "light_choice.hpp"
@@ -138,6 +139,11 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
   if (splats_samples(settings.filter))
     estimate.threads += static_cast<uint64_t>(estimate.thread_count) * (SplatFilm::kTilesAheadPerThread + 1) *
                         SplatFilm::tile_splats_bytes(settings.filter, kTileSide);
+  // bdpt: light tracing's image, and the tiles' splats that wait to be added to it.
+  if (settings.integrator == IntegratorType::bdpt) {
+    estimate.film += pixels * 3 * sizeof(double);
+    estimate.threads += LightImage::waiting_bytes(estimate.thread_count, settings.max_depth);
+  }
   if (settings.integrator == IntegratorType::photon)
     estimate.photons = static_cast<uint64_t>(std::max(0, settings.photons)) * kBytesPerPhoton;
   if (settings.light_strategy == LightStrategy::spatial) {

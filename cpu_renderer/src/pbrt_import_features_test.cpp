@@ -737,23 +737,31 @@ TEST(PbrtImport, SppmIterationsCountThePhotonsTraced) {
 
 // pbrt-v3's integrators we do not have render with the nearest we do, and a
 // warning names the substitution; their own parameters are read (noise only).
+// bdpt is ours too, where it can render the scene.
 TEST(PbrtImport, MissingIntegratorsAreSubstitutedByName) {
   PbrtScene bdpt = import("Integrator \"bdpt\" \"integer maxdepth\" 7 \"bool visualizestrategies\" \"false\"\n" + world(""));
-  EXPECT_EQ(bdpt.scene.settings.integrator, IntegratorType::path);
+  EXPECT_EQ(bdpt.scene.settings.integrator, IntegratorType::bdpt);
   EXPECT_EQ(bdpt.scene.settings.max_depth, 7);
-  EXPECT_EQ(bdpt.warnings,
-            "scene.pbrt:1:12: warning: integrator \"bdpt\" is not implemented: rendering with \"path\"\n"
-            "Integrator \"bdpt\" \"integer maxdepth\" 7 \"bool visualizestrategies\" \"false\"\n           ^~~~~~\n"
-            "help: the path tracer converges to the same image, with more noise where light arrives through small or "
-            "specular paths\n");
+  EXPECT_EQ(bdpt.warnings, "");
+  // A scene ours cannot render bidirectionally (here: an environment light): the path tracer, and why.
+  PbrtScene sky = import("Integrator \"bdpt\" \"integer maxdepth\" 7\n" + world("LightSource \"infinite\""));
+  EXPECT_EQ(sky.scene.settings.integrator, IntegratorType::path);
+  EXPECT_EQ(sky.scene.settings.max_depth, 7);
+  EXPECT_EQ(sky.warnings,
+            "scene.pbrt:1:12: warning: integrator \"bdpt\": bdpt cannot render this scene (the scene has an environment "
+            "light): rendering with \"path\"\n"
+            "Integrator \"bdpt\" \"integer maxdepth\" 7\n           ^~~~~~\n"
+            "help: the same image in expectation except caustics of point and spot lights seen through specular "
+            "surfaces, which the path tracer cannot sample\n");
   PbrtScene sppm = import("Integrator \"sppm\" \"integer numiterations\" 64 \"float radius\" 0.05\n" + world(""));
   EXPECT_EQ(sppm.scene.settings.integrator, IntegratorType::photon);
   EXPECT_EQ(sppm.scene.settings.max_depth, 5);  // pbrt-v3's default
   EXPECT_NE(sppm.warnings.find("integrator \"sppm\" is not implemented: rendering with \"photon\""), std::string::npos);
   EXPECT_EQ(sppm.warnings.find("not used"), std::string::npos);
   PbrtScene mlt = import("Integrator \"mlt\"\n" + world(""));
-  EXPECT_EQ(mlt.scene.settings.integrator, IntegratorType::path);
-  EXPECT_NE(mlt.warnings.find("rendering with \"path\""), std::string::npos);
+  EXPECT_EQ(mlt.scene.settings.integrator, IntegratorType::bdpt);
+  EXPECT_NE(mlt.warnings.find("integrator \"mlt\" is not implemented: rendering with \"bdpt\""), std::string::npos)
+      << mlt.warnings;
   // volpath is pbrt-v3's path tracer with media, which ours is: no substitution.
   PbrtScene volpath = import("Integrator \"volpath\" \"integer maxdepth\" 9 \"float rrthreshold\" 0.5\n" + world(""));
   EXPECT_EQ(volpath.scene.settings.integrator, IntegratorType::path);

@@ -113,6 +113,12 @@ TEST(PbrtImportMedia, OtherIntegratorsRenderWithoutMediaAsPbrtV3) {
   PbrtScene bdpt = import(std::string("Integrator \"bdpt\"\n") + kFog + world(body));
   EXPECT_EQ(bdpt.scene.media.size(), 1u);
   EXPECT_EQ(bdpt.scene.shapes.size(), 2u);
+  // Ours does not trace media bidirectionally yet: the path tracer renders them, saying so.
+  EXPECT_EQ(bdpt.scene.settings.integrator, IntegratorType::path);
+  EXPECT_NE(bdpt.warnings.find("integrator \"bdpt\": bdpt cannot render this scene (the scene has participating media "
+                               "or invisible surfaces): rendering with \"path\""),
+            std::string::npos)
+      << bdpt.warnings;
 }
 
 TEST(PbrtImportMedia, ErrorsNameTheParameter) {

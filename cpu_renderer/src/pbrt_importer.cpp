@@ -96,7 +96,7 @@ constexpr DirectiveRule kRules[] = {
 
 // pbrt-v3's integrators that we do not have, and the nearest one we do: the
 // same image in expectation (all are unbiased or consistent estimators of the
-// same light transport, participating media aside), with other noise.
+// same light transport), with other noise.
 struct IntegratorSubstitute {
   std::string_view pbrt;
   IntegratorType ours;
@@ -105,11 +105,8 @@ struct IntegratorSubstitute {
   std::array<std::string_view, 6> noise_only;  // its parameters that change the noise only (empty names pad)
 };
 constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
-    {"bdpt", IntegratorType::path, "path",
-     "the path tracer converges to the same image, with more noise where light arrives through small or specular paths",
-     {"lightsamplestrategy", "visualizestrategies", "visualizeweights"}},
-    {"mlt", IntegratorType::path, "path",
-     "the path tracer converges to the same image; Metropolis sampling only spreads its noise differently",
+    {"mlt", IntegratorType::bdpt, "bdpt",
+     "bdpt converges to the same image; MLT's Metropolis sampling of bdpt's paths only spreads its noise differently",
      {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
     {"sppm", IntegratorType::photon, "photon",
      "the photon integrator renders the caustics SPPM is chosen for, from one photon map of as many photons as "
@@ -427,6 +424,11 @@ void Importer::integrator(const Directive& d) {
     settings.russian_roulette = false;  // neither plays it: their specular chains end at maxdepth
     settings.light_strategy = type == "whitted" ? LightStrategy::all : light_strategy(params, "strategy", "all", {"all", "one"});
     light_samples_per_light_ = type == "directlighting";
+  } else if (type == "bdpt") {
+    settings.integrator = IntegratorType::bdpt;
+    // Ours chooses lights by power (as pbrt-v3's default for bdpt) and shows no strategies apart.
+    for (std::string_view name : {"lightsamplestrategy", "visualizestrategies", "visualizeweights"})
+      params.find(name, {ParamType::integer, ParamType::floating, ParamType::boolean, ParamType::string});
   } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {
     settings.integrator = substitute->ours;
     for (std::string_view name : substitute->noise_only) {
@@ -439,8 +441,8 @@ void Importer::integrator(const Directive& d) {
     if (type == "sppm") read_sppm_photons(params, d.string_ranges[0]);
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
-         "supported: \"path\", \"volpath\", \"directlighting\", \"whitted\" (as direct lighting); \"bdpt\", "
-         "\"mlt\" (as path) and \"sppm\" (as photon)");
+         "supported: \"path\", \"volpath\", \"bdpt\", \"directlighting\", \"whitted\" (as direct lighting); "
+         "\"mlt\" (as bdpt) and \"sppm\" (as photon)");
   }
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");

@@ -186,6 +186,7 @@ class Importer {
   void pixel_filter(const Directive& d);
   void read_sppm_photons(ParamSet& params, SourceRange at);
   void set_sppm_photons();
+  void fall_back_from_bdpt(SourceRange world_end);
   void finish_camera(SourceRange world_begin);
   glm::dmat3 similarity_camera_frame(const glm::dmat3& frame, SourceRange at);
   void warn_if_rounded(SourceRange at, const std::string& subject, double deviation);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "bdpt.hpp"
 #include "pbrt_importer.hpp"
 
 namespace safegi::render::pbrt {
@@ -105,12 +106,29 @@ void Importer::finish_media(SourceRange world_end) {
   // (pbrt-v3's VisibilityTester::Unoccluded); volpath's, bdpt's and mlt's pass through it.
   if (!integrator_traces_media_)
     for (Shape& shape : scene.shapes) shape.occludes_light = shape.invisible;
+  fall_back_from_bdpt(world_end);
   if (!media_used_ || integrator_traces_media_) return;
   warn(integrator_at_ ? *integrator_at_ : world_end,
        "the scene has participating media, which pbrt-v3's integrator \"" + integrator_name_ +
            "\" does not trace: rendering without them, as pbrt-v3 does",
        "\"volpath\", \"bdpt\" or \"mlt\" render them (here: the path tracer, which traces them)");
   scene.drop_media();
+}
+
+// bdpt (and mlt, rendered by it) where ours cannot render the scene (media,
+// the environment, distant lights, a thin lens, diffuse transmission): the
+// path tracer, with a warning that says what it misses.
+void Importer::fall_back_from_bdpt(SourceRange world_end) {
+  Scene& scene = result_.scene;
+  if (scene.settings.integrator != IntegratorType::bdpt) return;
+  const std::optional<std::string> reason = bdpt_refusal(scene);
+  if (!reason) return;
+  scene.settings.integrator = IntegratorType::path;
+  warn(integrator_at_ ? *integrator_at_ : world_end,
+       "integrator \"" + integrator_name_ + "\": bdpt cannot render this scene (" + *reason +
+           "): rendering with \"path\"",
+       "the same image in expectation except caustics of point and spot lights seen through specular surfaces, "
+       "which the path tracer cannot sample");
 }
 
 }  // namespace safegi::render::pbrt

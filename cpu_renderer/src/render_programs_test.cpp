@@ -18,9 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Image run(const char* program, const fs::path& scene, const fs::path& output) {
+Image run(const char* program, const fs::path& scene, const fs::path& output, const std::string& options = "") {
   std::string units = scene.extension() == ".pbrt" ? " --length-unit m" : "";
-  std::string command = std::string(program) + " \"" + scene.string() + "\"" + units +
+  std::string command = std::string(program) + " \"" + scene.string() + "\"" + units + options +
                         " --resolution 40x30 --spp 2 --threads 2 -q -o \"" + output.string() + "\"";
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   return read_image(output.string() + ".exr");
@@ -54,6 +54,23 @@ TEST(RenderPrograms, CheckedAndUncheckedImagesAreBitIdenticalAndDoubleAgrees) {
     ++scenes;
   }
   EXPECT_GE(scenes, 11);
+  fs::remove_all(directory);
+}
+
+// The bidirectional path tracer too: its densities and weights are typed in
+// one build and plain floats in the other, the same arithmetic either way.
+TEST(RenderPrograms, CheckedAndUncheckedBdptImagesAreBitIdentical) {
+  fs::path directory = fs::temp_directory_path() / ("safegi-render-bdpt-" + std::to_string(::getpid()));
+  fs::create_directories(directory);
+  const fs::path scene = fs::path(SAFEGI_SCENES_DIR) / "cornell-box" / "cornell-box.json";
+  Image checked = run(SAFEGI_RENDER_CHECKED, scene, directory / "checked", " --integrator bdpt --max-depth 5");
+  Image unchecked = run(SAFEGI_RENDER_UNCHECKED, scene, directory / "unchecked", " --integrator bdpt --max-depth 5");
+  ASSERT_EQ(checked.rgb.size(), 40u * 30u * 3u);
+  ASSERT_EQ(checked.rgb.size(), unchecked.rgb.size());
+  EXPECT_EQ(std::memcmp(checked.rgb.data(), unchecked.rgb.data(), checked.rgb.size() * sizeof(float)), 0);
+  double sum = 0;
+  for (float v : checked.rgb) sum += v;
+  EXPECT_GT(sum, 0);
   fs::remove_all(directory);
 }
 

@@ -6,11 +6,13 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
 #include <unistd.h>
 
+#include "bdpt.hpp"
 #include "camera.hpp"
 #include "geometry.hpp"
 #include "integrator.hpp"
@@ -132,6 +134,10 @@ bool splats_samples(const PixelFilter& filter) {
   return filter.mode == PixelFilterMode::splat && !PixelFilterSampler::is_plain_box(filter);
 }
 
+bool sums_on_first_process(const RenderSettings& settings) {
+  return splats_samples(settings.filter) || settings.integrator == IntegratorType::bdpt;
+}
+
 std::vector<PixelRect> render_tiles(int width, int height) {
   std::vector<PixelRect> tiles;
   for (int y = 0; y < height; y += kTileSize)
@@ -151,9 +157,13 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
 
   const int hardware_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Geometry geometry(scene, options.threads > 0 ? options.threads : hardware_threads);
-  Lights lights(scene, settings.light_strategy);
+  // The bidirectional path tracer's light subpaths choose lights by power, and so do its light samples.
+  const bool bidirectional = settings.integrator == IntegratorType::bdpt;
+  Lights lights(scene, bidirectional ? LightStrategy::power : settings.light_strategy);
   CameraRays camera(scene.camera, settings.width, settings.height);
   Integrator integrator(scene, geometry, lights, settings);
+  std::optional<Bdpt> bdpt;
+  if (bidirectional) bdpt.emplace(scene, geometry, lights, settings);
 
   // How samples make pixels: uniform in their pixel (the plain box), offset
   // by the filter and kept in their pixel, or splatted over the filter's
@@ -167,6 +177,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   else if (!PixelFilterSampler::is_plain_box(settings.filter))
     filter.emplace(settings.filter);
   const PixelRect sampled = splat_film ? splat_film->sample_bounds() : window_rect;
+  // Light tracing's contributions (bdpt), wherever on the film they land.
+  std::optional<LightImage> light_image;
+  if (bdpt) light_image.emplace(window_rect);
 
   // This process's tiles, in image coordinates; with a partition, every
   // parts()-th of them.
@@ -193,6 +206,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int spp_cap = settings.spp;
   // With a time budget, samples are added in passes; without, one pass renders all.
   int pass_spp = budgeted ? 1 : spp_cap;
+  // bdpt: passes short enough that the splats waiting stay few (LightImage::kPassSpp).
+  const int most_pass_spp = bdpt ? LightImage::kPassSpp : std::numeric_limits<int>::max();
+  pass_spp = std::min(pass_spp, most_pass_spp);
   Progress progress(options.progress, pixel_count * static_cast<uint64_t>(spp_cap));
 
   std::vector<RayCounters> counters(thread_count);
@@ -204,6 +220,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     Clock::time_point pass_start = Clock::now();
     std::atomic<size_t> next_tile{0};
     if (splat_film) splat_film->begin_pass(tiles.size(), thread_count);
+    if (light_image) light_image->begin_pass(tiles.size(), thread_count);
     auto worker = [&](int thread_index) {
       RayCounters& counter = counters[thread_index];
       for (size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
@@ -213,6 +230,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
           splat_film->wait_for_room(t);
           splats = splat_film->tile_splats(tile);
         }
+        std::vector<bdpt::Splat> light_splats;
+        if (light_image) light_image->wait_for_room(t);
         for (int y = tile.y0; y < tile.y1; ++y) {
           for (int x = tile.x0; x < tile.x1; ++x) {
             for (int s = pass_begin; s < pass_end; ++s) {
@@ -228,7 +247,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
               }
               const TimedRay ray = camera.generate_at(film_x, film_y, sampler);
               ++counter.camera;
-              sg::vec3_rep L = sg::raw(integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
+              sg::vec3_rep L = sg::raw(bdpt ? bdpt->radiance(ray, sampler, counter, light_splats)
+                                            : integrator.radiance(ray, sampler, counter));  // W/(m2 sr)
               if (!std::isfinite(L.r) || !std::isfinite(L.g) || !std::isfinite(L.b)) {
                 ++invalid[thread_index];
                 continue;
@@ -247,6 +267,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
           }
         }
         if (splats) splat_film->add_in_order(t, std::move(*splats));
+        if (light_image) light_image->add_in_order(t, std::move(light_splats));
         progress.advance(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * (pass_end - pass_begin));
       }
     };
@@ -267,6 +288,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
           remaining < per_sample
               ? 0
               : std::max(1, std::min(static_cast<int>(remaining / per_sample / 2), 2 * (pass_end - pass_begin)));
+      next_pass_spp = std::min(next_pass_spp, most_pass_spp);
       if (partition) next_pass_spp = partition->next_pass_spp_of_first(next_pass_spp);
       if (next_pass_spp == 0) break;
       pass_spp = next_pass_spp;
@@ -276,6 +298,11 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   }
   progress.finish();
 
+  // bdpt: every process's pixels on the first (sums_on_first_process), the others' tiles zeros in each sum.
+  if (light_image && partition && !splat_film) {
+    partition->sum_to_first(sums);
+    if (filter) partition->sum_to_first(weight_sums);
+  }
   Image image;
   image.width = window.width;
   image.height = window.height;
@@ -288,6 +315,16 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     double scale = spp_done > 0 ? 1.0 / spp_done : 0.0;
     for (size_t i = 0; i < sums.size(); ++i)
       image.rgb[i] = filter ? filtered_pixel(sums[i], weight_sums[i / 3]) : static_cast<float>(sums[i] * scale);
+  }
+  if (light_image) {
+    // pbrt-v3's splat scale, 1/spp: each camera sample traced one light
+    // path, spp per pixel of the whole image, whose camera density the splats
+    // hold. A crop traces them for its own pixels only: fewer, each counting more.
+    if (partition) partition->sum_to_first(light_image->sums());
+    const double traced_pixels = static_cast<double>(sampled.x1 - sampled.x0) * (sampled.y1 - sampled.y0);
+    const double image_pixels = static_cast<double>(settings.width) * settings.height;
+    const double scale = spp_done > 0 ? image_pixels / (traced_pixels * spp_done) : 0.0;
+    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] += static_cast<float>(light_image->sums()[i] * scale);
   }
   if (settings.film_scale != 1)
     for (float& value : image.rgb) value = static_cast<float>(value * settings.film_scale);

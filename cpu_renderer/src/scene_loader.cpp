@@ -84,7 +84,8 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     if (name == "direct") settings.integrator = IntegratorType::direct;
     else if (name == "path") settings.integrator = IntegratorType::path;
     else if (name == "photon") settings.integrator = IntegratorType::photon;
-    else fail(path.field("integrator"), "expected \"direct\", \"path\" or \"photon\", got " + short_dump(value["integrator"]));
+    else if (name == "bdpt") settings.integrator = IntegratorType::bdpt;
+    else fail(path.field("integrator"), "expected \"direct\", \"path\", \"photon\" or \"bdpt\", got " + short_dump(value["integrator"]));
   }
   if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
   if (value.contains("light_samples"))

@@ -64,31 +64,12 @@ uint64_t SplatFilm::tile_splats_bytes(const PixelFilter& filter, int tile_side) 
   return width * height * 4 * sizeof(double);
 }
 
-void SplatFilm::begin_pass(size_t tile_count, int threads) {
-  std::lock_guard lock(mutex_);
-  waiting_.clear();
-  waiting_.resize(tile_count);
-  next_to_add_ = 0;
-  tiles_ahead_ = static_cast<size_t>(std::max(1, threads)) * kTilesAheadPerThread;
-}
+void SplatFilm::begin_pass(size_t tile_count, int threads) { order_.begin_pass(tile_count, threads, kTilesAheadPerThread); }
 
-// Tiles are handed out in index order, so the tile next_to_add_ is already
-// being rendered by another thread: waiting for it always ends.
-void SplatFilm::wait_for_room(size_t index) {
-  std::unique_lock lock(mutex_);
-  added_.wait(lock, [&] { return index < next_to_add_ + tiles_ahead_; });
-}
+void SplatFilm::wait_for_room(size_t index) { order_.wait_for_room(index); }
 
 void SplatFilm::add_in_order(size_t index, TileSplats&& splats) {
-  {
-    std::lock_guard lock(mutex_);
-    waiting_[index] = std::move(splats);
-    for (; next_to_add_ < waiting_.size() && waiting_[next_to_add_]; ++next_to_add_) {
-      add_now(*waiting_[next_to_add_]);
-      waiting_[next_to_add_].reset();
-    }
-  }
-  added_.notify_all();
+  order_.add_in_order(index, std::move(splats), [&](const TileSplats& ready) { add_now(ready); });
 }
 
 void SplatFilm::add_now(const TileSplats& splats) {

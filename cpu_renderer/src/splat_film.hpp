@@ -11,15 +11,14 @@
 // buffers waiting stay few (kTilesAheadPerThread per thread).
 #pragma once
 
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <optional>
 #include <vector>
 
 #include "safegi/cpu_renderer/renderer.hpp"
 #include "safegi/cpu_renderer/scene.hpp"
+#include "tile_order.hpp"
 
 namespace safegi::render {
 
@@ -70,11 +69,7 @@ class SplatFilm {
   PixelRect window_, sample_bounds_;
   int reach_x_, reach_y_;  // how many pixels a sample's splat extends each side of its own
   std::vector<double> sums_;
-  std::mutex mutex_;
-  std::condition_variable added_;
-  std::vector<std::optional<TileSplats>> waiting_;
-  size_t next_to_add_ = 0;
-  size_t tiles_ahead_ = 1;
+  TileOrder<TileSplats> order_;
 };
 
 }  // namespace safegi::render

@@ -52,6 +52,12 @@ class RenderPartition {
 // the filter's radius (PixelFilterMode::splat; a plain one-pixel box never needs to).
 bool splats_samples(const PixelFilter& filter);
 
+// Whether a render split over processes ends with the whole image on process
+// 0, every process's sums added there (RenderPartition::sum_to_first):
+// splatted samples, and the bidirectional path tracer, whose light tracing
+// lands on any process's pixels. Otherwise process 0 gathers the others' tiles.
+bool sums_on_first_process(const RenderSettings& settings);
+
 struct RenderOptions {
   RenderSettings settings;          // resolution, spp, integrator, max depth
   int threads = 0;                  // 0: every hardware thread

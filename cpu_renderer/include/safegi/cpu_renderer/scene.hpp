@@ -349,7 +349,7 @@ struct Camera {
   int medium = -1;  // the medium the camera is in (index into Scene::media; -1: vacuum)
 };
 
-enum class IntegratorType { direct, path, photon };
+enum class IntegratorType { direct, path, photon, bdpt };
 
 // How next-event estimation picks the lights its shadow rays go to (pbrt-v3's
 // strategies of those names): one light per shadow ray, in proportion to
