@@ -94,6 +94,9 @@ struct Value {
   std::optional<SourceRange> w_divided_at;  // a vec4 that was an hpoint until its xyz were divided by its w here
   bool unit_w = false;  // the w of a vec4(p, 1.0) carried by affine maps: exactly 1
   bool homogeneous_w = false;  // the w of an hpoint (`h.w`), which its coordinates are divided by
+  // Exactly +1 or -1 without being a literal: `front ? 1.0 : -1.0`, a local holding it. A unit
+  // vector times it is still unit (a double-sided material's normal flipped to the viewer).
+  bool unit_sign = false;
   // mat3(t, b, n) with a column of unknown length (a vector, not a direction): "'b' (column 1
   // of the frame)", why the frame is linear rather than rigid.
   std::string non_unit_column;
@@ -115,6 +118,7 @@ struct Variable {
   int inverse_squares = 0;            // Value::inverse_squares of an unannotated local's initialiser, until written
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   std::vector<VariableAt> perpendicular_to;  // Value::perpendicular_to of its initialiser, until written
+  bool unit_sign = false;                    // Value::unit_sign of its initialiser, until written
   // A float initialised with dot(a, b): a and b as written, until it is written (a written-out reflection
   // 2 n (n·w) - w may name its cosine).
   std::optional<std::pair<std::string, std::string>> dot_of;

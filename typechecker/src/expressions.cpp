@@ -2,6 +2,7 @@
 // members and swizzles, indexing, the conditional operator, initialiser lists.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -72,6 +73,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.inverse_squares = var->inverse_squares;
     v.length_of = var->length_of;
     v.perpendicular_to = var->perpendicular_to;
+    v.unit_sign = var->unit_sign;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;
@@ -535,6 +537,8 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   if (da.state == DimSlot::State::unknown && db.state != DimSlot::State::unknown && a.pi_factor) out.pi_factor = a.pi_factor;
   if (db.state == DimSlot::State::unknown && da.state != DimSlot::State::unknown && b.pi_factor) out.pi_factor = b.pi_factor;
   out.zero = a.zero && b.zero;
+  const auto sign = [](const Value& v) { return v.unit_sign || (v.literal && v.number && std::fabs(*v.number) == 1.0); };
+  out.unit_sign = sign(a) && sign(b) && out.type.shape == Shape::scalar;
   return out;
 }
 

@@ -2,6 +2,7 @@
 // the affine rules of points, vectors, directions and normals.
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -501,6 +502,14 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     const bool plain_multiple = g == Geometry::vector && geo_dim.state == DimSlot::State::known && geo_dim.value.is_dimensionless();
     if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal || plain_multiple))
       out.type.dim = projected_component(*d);
+    const Value& scale = a_scalar ? lhs : rhs;
+    if ((g == Geometry::direction || g == Geometry::normal) && (scale.unit_sign || (scale.literal && scale.number && std::fabs(*scale.number) == 1.0))) {
+      // ±1 keeps a unit vector unit: `n * faceDirection`, `-1.0 * d`.
+      out.type = geo;
+      out.type.orientation = scaled_orientation(geo.orientation, scale);
+      if (scale.unit_sign) out.type.orientation = Orientation::none;
+      return out;
+    }
     if (vectorish(g)) {
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;

@@ -210,6 +210,7 @@ void Checker::note_write(const ast::Expr* target) {
       ++found->second.version;
       found->second.length_of.reset();
       found->second.perpendicular_to.clear();
+      found->second.unit_sign = false;
       found->second.dot_of.reset();
       found->second.inverse_squares = 0;
       found->second.pi_constant.reset();
