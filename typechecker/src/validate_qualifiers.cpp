@@ -177,7 +177,7 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
     return;
   }
   for (const ast::Declarator& decl : d.declarators) {
-    if (reserved_name(decl.name) && !lookup(decl.name) && !known_builtin_variable(decl.name)) {
+    if (reserved_name(decl.name) && !lookup(decl.name) && !known_builtin_variable(decl.name) && !spirv_intrinsics()) {
       reject(decl.name_range, "'" + decl.name + "' is not a built-in variable here, and names beginning with 'gl_' are reserved",
              code::E_RESERVED_NAME);
       return;
@@ -248,7 +248,8 @@ void Checker::validate_function(const ast::FunctionDecl& d, const Function& f) {
     for (const ast::Qualifier& x : q.list) {
       const bool allowed = x.word == "const" || x.word == "in" || x.word == "out" || x.word == "inout" ||
                            x.kind == ast::QualifierKind::Precision || x.kind == ast::QualifierKind::Precise ||
-                           x.kind == ast::QualifierKind::Memory;
+                           x.kind == ast::QualifierKind::Memory || x.word == "spirv_by_reference" ||
+                           x.word == "spirv_literal";
       if (allowed) continue;
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
       reject(x.range, what + " cannot qualify a function parameter; parameters take const, in, out, inout, precise, "
