@@ -57,6 +57,17 @@ namespace {
 // Returns false when it reported an error.
 static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, bool parameter) {
   if (!c.memory_model_qualifiers(q)) return false;
+  // spirv_decorate_id(..., x): x names a variable or constant declared before.
+  for (const ast::Qualifier& x : q.list) {
+    if (x.kind != ast::QualifierKind::Spirv || x.word != "spirv_decorate_id") continue;
+    for (const ast::SpirvArg& arg : x.spirv_args) {
+      const auto* name = ast::dyn_cast<ast::IdentifierExpr>(arg.value);
+      if (arg.kind != ast::SpirvArg::Kind::Value || !name || c.lookup(name->name)) continue;
+      c.reject(name->range, "use of undeclared identifier '" + name->name + "' in 'spirv_decorate_id(...)'",
+               code::E_UNDECLARED);
+      return false;
+    }
+  }
   const ast::Qualifier* storage = nullptr;
   const ast::Qualifier* auxiliary = nullptr;
   const ast::Qualifier* interpolation = nullptr;
