@@ -44,6 +44,8 @@ class SymbolBuilder {
   gl::ValueType value_type(const Type& t) const {
     gl::ValueType v;
     v.glsl_type = glsl_name(t.element());
+    // A spirv_type (GL_EXT_spirv_intrinsics) is opaque to a host: its arguments are in printed_type.
+    if (v.glsl_type.rfind("spirv_type", 0) == 0) v.glsl_type = "spirv_type";
     auto space = [&](const SpaceSlot& s) { return s.is_known() ? registry_.space_name(s.id) : std::string("?"); };
     switch (t.geometry) {
       case Geometry::spectrum: v.kind = gl::Kind::spectrum; break;
@@ -125,6 +127,8 @@ class SymbolBuilder {
   // none (GL_KHR_vulkan_glsl); push constants and shader records are in no set.
   std::optional<int> descriptor_set(const InterfaceVariable& iv, gl::Storage storage) const {
     if (iv.set >= 0) return iv.set;
+    // glslang gives a spirv_type uniform (GL_EXT_spirv_intrinsics) no DescriptorSet of its own.
+    if (iv.type.shape == Shape::opaque && iv.type.opaque.rfind("spirv_type", 0) == 0) return std::nullopt;
     const bool resource = storage == gl::Storage::uniform || storage == gl::Storage::buffer;
     if (vulkan_ && resource && !iv.push_constant && !iv.shader_record) return 0;
     return std::nullopt;

@@ -262,7 +262,6 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
     return;
   }
   extra_tokens_warning(line, 3, "extension");
-  if (name == "GL_EXT_debug_printf") strings_allowed_ = behavior != "disable";
   std::uint32_t groups = extension_groups_enabled_by(name);
   if (behavior == "disable") {
     unit_.keywords.extension_groups &= ~groups;
@@ -276,6 +275,9 @@ void Preprocessor::directive_extension(FileState& f, const Token& hash) {
   } else if (name != "all" && !unit_.language.extension_enabled(name)) {
     enabled.emplace_back(name);
   }
+  // String literals: debugPrintfEXT's format, and the arguments of GL_EXT_spirv_intrinsics.
+  strings_allowed_ = unit_.language.extension_enabled("GL_EXT_debug_printf") ||
+                     unit_.language.extension_enabled("GL_EXT_spirv_intrinsics");
   const auto& supported = options_.extension_macros;
   if (options_.reject_unsupported_extensions && name != "all" && behavior != "disable" &&
       std::find(supported.begin(), supported.end(), name) == supported.end()) {

@@ -137,6 +137,7 @@ constexpr std::array kExtensions = {
     ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int64", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_subgroup_extended_types_int8", kArithmetic},
     ExtensionInfo{"GL_EXT_shader_texture_lod", 0},
+    ExtensionInfo{"GL_EXT_spirv_intrinsics", 0},
     ExtensionInfo{"GL_EXT_tessellation_shader", bit(G::tessellation)},
     ExtensionInfo{"GL_EXT_texture_array", bit(G::texture_array)},
     ExtensionInfo{"GL_EXT_texture_buffer", bit(G::texture_buffer)},

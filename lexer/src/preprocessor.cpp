@@ -203,18 +203,22 @@ bool Preprocessor::check_macro_name(const Token& name, bool defining, bool comma
     error(code::E_MACRO, name.range, "'defined' cannot be used as a macro name");
     return false;
   }
-  if (Macro* m = find_macro(name.text); m && m->predefined) {
+  // GL_EXT_spirv_intrinsics lets a shader define `GL_` macros (glslang's reservedPpErrorCheck), as
+  // its shaders do to say which extension's built-ins they declare themselves; an extension's own
+  // macro then follows the rule of any macro (the same definition again is no redefinition).
+  const bool spirv_intrinsics = unit_.language.extension_enabled("GL_EXT_spirv_intrinsics");
+  if (Macro* m = find_macro(name.text); m && m->predefined && !(spirv_intrinsics && name.text.starts_with("GL_"))) {
     error(code::E_MACRO, name.range,
           std::string(defining ? "cannot redefine" : "cannot undefine") + " predefined macro '" +
               std::string(name.text) + "'");
     return false;
   }
   if (command_line) return true;
-  if (name.text.starts_with("GL_")) {
+  if (name.text.starts_with("GL_") && !spirv_intrinsics) {
     error(code::E_MACRO, name.range, "macro names beginning with 'GL_' are reserved");
     return false;
   }
-  if (name.text.find("__") != std::string_view::npos) {
+  if (name.text.find("__") != std::string_view::npos && !spirv_intrinsics) {
     diagnostics_.report(
         Diagnostic::warning(name.range, "macro names containing '__' are reserved").with_code(code::W_MACRO));
   }

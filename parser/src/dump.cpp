@@ -136,7 +136,7 @@ class Dumper {
       }
       case NodeKind::TypeSpecifier: {
         const auto* t = static_cast<const TypeSpecifier*>(n);
-        static constexpr std::string_view forms[] = {"builtin", "annotated", "named", "struct"};
+        static constexpr std::string_view forms[] = {"builtin", "annotated", "named", "struct", "spirv"};
         text(forms[static_cast<int>(t->form)]);
         if (!t->name.empty()) text(t->name);
         close();

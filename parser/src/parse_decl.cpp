@@ -226,7 +226,7 @@ std::size_t Parser::scan_type_specifier(std::size_t i) const {
 
 bool Parser::at_qualifier() const {
   T k = peek().kind;
-  return k == T::QualKw || k == T::Layout || k == T::Subroutine;
+  return k == T::QualKw || k == T::Layout || k == T::Subroutine || (k == T::Ident && at_spirv_qualifier());
 }
 
 bool Parser::at_declaration() const {
@@ -243,7 +243,7 @@ bool Parser::at_declaration() const {
       return end != 0 && tokens_[end].kind != T::LParen && tokens_[end].kind != T::Dot;
     }
     case T::Ident: {
-      if (peek(1).kind == T::Ident) return true;
+      if (peek(1).kind == T::Ident || at_spirv_qualifier() || at_spirv_type()) return true;
       bool annotated = is_annotated_type_word(t) && peek(1).kind == T::Lt;
       if (!annotated && !is_type_name(t.text)) return false;
       std::size_t end = scan_type_specifier(pos_);
@@ -584,6 +584,8 @@ TypeQualifiers Parser::parse_qualifiers() {
       qualifiers.list.push_back(parse_layout_qualifier());
     } else if (at(T::Subroutine)) {
       qualifiers.list.push_back(parse_subroutine_qualifier());
+    } else if (at(T::Ident)) {
+      qualifiers.list.push_back(parse_spirv_qualifier());
     } else {
       Qualifier q;
       q.kind = peek().qual;
@@ -667,6 +669,8 @@ TypeSpecifier* Parser::parse_type_specifier_nonarray() {
     type->struct_decl = parse_struct_specifier();
     type->name = type->struct_decl->name;
     type->name_range = type->struct_decl->name_range;
+  } else if (at_spirv_type()) {
+    return parse_spirv_type();
   } else if (at(T::TypeKw)) {
     type->form = TypeSpecifier::Form::Builtin;
     type->name = std::string(peek().text);

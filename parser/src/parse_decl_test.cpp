@@ -252,5 +252,33 @@ TEST(ParseDecl, SampleQualifiesOnlyInputsAndOutputs) {
             "           ^~~~~~\n");
 }
 
+// GL_EXT_spirv_intrinsics (issue 46): the qualifiers keep their canonical spelling, spirv_type is a type
+// specifier of its own whose arguments may be type names; without a #version (everything allowed) the
+// words need no #extension.
+TEST(ParseDecl, SpirvIntrinsics) {
+  EXPECT_EQ(dump_first("spirv_decorate(extensions = [\"SPV_X\"], 11, 4992) spirv_decorate(0) in vec2 v;"),
+            "VariableDecl [spirv_decorate(extensions=[\"SPV_X\"], 11, 4992)] [spirv_decorate(0)] [in]\n"
+            "  TypeSpecifier builtin vec2\n  Declarator v\n");
+  EXPECT_EQ(dump_first("spirv_execution_mode(5027);"), "QualifierDecl [spirv_execution_mode(5027)]\n");
+  EXPECT_EQ(dump_first("spirv_type(capabilities = [5347], id = 32, 5349, uint) p;"),
+            "VariableDecl\n  TypeSpecifier spirv spirv_type(capabilities=[5347], id=32, 5349, uint)\n  Declarator p\n");
+  auto parsed = parse_text("spirv_instruction(set = \"GLSL.std.450\", id = 35)\n"
+                           "float modf(float x, spirv_by_reference float i, spirv_literal int m);\n"
+                           "spirv_type(id = 32, 5349, uint) ptr;\n");
+  EXPECT_EQ(parsed->errors(), "");
+  const auto* fn = ast::dyn_cast<ast::FunctionDecl>(parsed->unit().decls.at(0));
+  ASSERT_NE(fn, nullptr);
+  ASSERT_EQ(fn->qualifiers.list.size(), 1u);
+  EXPECT_EQ(fn->qualifiers.list[0].kind, ast::QualifierKind::Spirv);
+  ASSERT_EQ(fn->qualifiers.list[0].spirv_args.size(), 2u);
+  EXPECT_EQ(fn->qualifiers.list[0].spirv_args[0].kind, ast::SpirvArg::Kind::Set);
+  EXPECT_TRUE(fn->params.at(1)->qualifiers.has("spirv_by_reference"));
+  EXPECT_TRUE(fn->params.at(2)->qualifiers.has("spirv_literal"));
+  const auto* ptr = ast::dyn_cast<ast::VariableDecl>(parsed->unit().decls.at(1));
+  ASSERT_NE(ptr, nullptr);
+  ASSERT_EQ(ptr->type->spirv_args.size(), 3u);
+  EXPECT_EQ(ptr->type->spirv_args[2].kind, ast::SpirvArg::Kind::Type);
+}
+
 }  // namespace
 }  // namespace safegi::testing

@@ -147,6 +147,19 @@ class Parser {
   std::size_t scan_brackets(std::size_t at) const;
   bool at_declaration() const;  // in a statement context
 
+  // ---------------------------------------- GL_EXT_spirv_intrinsics (parse_spirv.cpp)
+  bool spirv_enabled() const;
+  // A spirv_* qualifier starts here (spirv_decorate(…), spirv_by_reference, …), or spirv_type(…).
+  bool at_spirv_qualifier() const;
+  bool at_spirv_type() const;
+  void require_spirv(const PToken& word);  // the extension's error when it is not enabled
+  ast::Qualifier parse_spirv_qualifier();
+  ast::TypeSpecifier* parse_spirv_type();
+  std::vector<ast::SpirvArg> parse_spirv_args(std::string_view word);
+  void check_spirv_value(std::string_view word, std::size_t index, const PToken& first, const ast::Expr* value,
+                         const std::string& context);
+  std::string spirv_spelling(std::size_t first) const;  // tokens [first, pos_) as one canonical text
+
   // ------------------------------------------------------- statements (parse_stmt.cpp)
   ast::Stmt* parse_statement();
   ast::Stmt* parse_substatement();  // the body of a control statement

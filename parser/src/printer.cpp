@@ -274,6 +274,10 @@ void GlslPrinter::array_dims(const std::vector<ArrayDim>& dims) {
 }
 
 void GlslPrinter::qualifier(const Qualifier& q) {
+  if (q.kind == QualifierKind::Spirv) {  // GL_EXT_spirv_intrinsics: as written (canonical spacing)
+    out_ += q.spirv_text;
+    return;
+  }
   out_ += q.word;
   if (q.kind == QualifierKind::Layout) {
     out_ += '(';

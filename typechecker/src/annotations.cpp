@@ -540,6 +540,11 @@ Type Checker::resolve_type(const ast::TypeSpecifier* spec, const std::vector<ast
       symbols_.use_structure(it->second, spec->name_range);
       break;
     }
+    case ast::TypeSpecifier::Form::Spirv:
+      // GL_EXT_spirv_intrinsics: an opaque type, the same as another spirv_type of the same arguments.
+      t.shape = Shape::opaque;
+      t.opaque = spec->name;
+      break;
     case ast::TypeSpecifier::Form::Struct: {
       auto info = std::make_unique<StructInfo>();
       info->name = spec->struct_decl && !spec->struct_decl->name.empty() ? spec->struct_decl->name : "<anonymous struct>";

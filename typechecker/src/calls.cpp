@@ -744,6 +744,18 @@ Value Checker::user_call(const ast::CallExpr& e, const std::vector<Function>& ov
                  .with_code(code::E_NOT_ASSIGNABLE));
       return error_value(e.range);
     }
+    if (i < best->by_reference_params.size() && best->by_reference_params[i] && !args[i].lvalue) {
+      report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + e.callee +
+                                                  "' is a spirv_by_reference parameter and needs a variable")
+                 .with_code(code::E_NOT_ASSIGNABLE));
+      return error_value(e.range);
+    }
+    if (i < best->literal_params.size() && best->literal_params[i] && !args[i].constant && !args[i].literal) {
+      report(Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + e.callee +
+                                                  "' is a spirv_literal parameter and needs a constant expression")
+                 .with_code(code::E_NO_OVERLOAD));
+      return error_value(e.range);
+    }
     // Kinds: a geometric parameter takes the same kind (or an unannotated value).
   }
   CallShape shape{best->params, best->result, &best->dim_params, &best->space_params};

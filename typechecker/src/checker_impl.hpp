@@ -134,6 +134,10 @@ struct Function {
   std::vector<Type> params;
   std::vector<bool> out_params;    // out or inout: the argument must be writable
   std::vector<bool> inout_params;  // inout: no implicit conversion either way
+  // GL_EXT_spirv_intrinsics: spirv_by_reference (the argument is a variable, passed by its pointer)
+  // and spirv_literal (the argument is a constant, passed as a literal operand).
+  std::vector<bool> by_reference_params;
+  std::vector<bool> literal_params;
   Type result;
   std::vector<std::string> dim_params;
   std::vector<std::string> space_params;
@@ -309,6 +313,8 @@ class Checker {
   // validate_*.cpp: what GL drivers reject beyond the type rules (docs/typechecker.md, "Validation").
   // Version-dependent rules run only when CheckOptions::language is set.
   const LanguageLevel* language() const { return options_.language ? &*options_.language : nullptr; }
+  // GL_EXT_spirv_intrinsics is enabled: `gl_` names may be declared, spirv_* qualifiers and types used.
+  bool spirv_intrinsics() const { return language() && language()->extension_enabled("GL_EXT_spirv_intrinsics"); }
   bool allows(const VersionGate& gate) const;  // true when the language is unknown
   // The compatibility profile's built-ins exist: desktop GLSL before 1.40, `#version 150 compatibility`, or
   // GL_ARB_compatibility (Mesa: 1.40 is core unless the extension is enabled). True when the language is unknown.

@@ -133,6 +133,12 @@ Value Checker::constructor(const ast::CallExpr& e) {
   std::vector<Value> args;
   bool bad = t.is_error();
   for (const ast::Expr* a : e.args) {
+    // A string literal (allowed by GL_EXT_debug_printf and GL_EXT_spirv_intrinsics) has no numeric
+    // value: glslang 12 builds a constant of the string's address (spv.intrinsicsStringConstructorError.vert).
+    if (const auto* lit = ast::dyn_cast<ast::LiteralExpr>(ast::without_parens(a)); lit && lit->literal_kind == ast::LiteralKind::String) {
+      report(Diagnostic::error(a->range, "a string literal is not a constructor argument").with_code(code::E_CONSTRUCTOR));
+      return error_value(e.range);
+    }
     args.push_back(expr(a));
     bad = bad || args.back().type.is_error();
   }

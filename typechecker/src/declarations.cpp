@@ -504,6 +504,8 @@ void Checker::function_decl(const ast::FunctionDecl& d) {
     f.params.push_back(t);
     f.out_params.push_back(p->qualifiers.has("out") || p->qualifiers.has("inout"));
     f.inout_params.push_back(p->qualifiers.has("inout"));
+    f.by_reference_params.push_back(p->qualifiers.has("spirv_by_reference"));
+    f.literal_params.push_back(p->qualifiers.has("spirv_literal"));
   }
   f.defined = d.body != nullptr;
   symbols_.declare_function(d, f.result, f.params);

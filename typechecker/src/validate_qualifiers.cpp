@@ -57,6 +57,17 @@ namespace {
 // Returns false when it reported an error.
 static bool check_qualifier_counts(Checker& c, const ast::TypeQualifiers& q, bool parameter) {
   if (!c.memory_model_qualifiers(q)) return false;
+  // spirv_decorate_id(..., x): x names a variable or constant declared before.
+  for (const ast::Qualifier& x : q.list) {
+    if (x.kind != ast::QualifierKind::Spirv || x.word != "spirv_decorate_id") continue;
+    for (const ast::SpirvArg& arg : x.spirv_args) {
+      const auto* name = ast::dyn_cast<ast::IdentifierExpr>(arg.value);
+      if (arg.kind != ast::SpirvArg::Kind::Value || !name || c.lookup(name->name)) continue;
+      c.reject(name->range, "use of undeclared identifier '" + name->name + "' in 'spirv_decorate_id(...)'",
+               code::E_UNDECLARED);
+      return false;
+    }
+  }
   const ast::Qualifier* storage = nullptr;
   const ast::Qualifier* auxiliary = nullptr;
   const ast::Qualifier* interpolation = nullptr;
@@ -177,7 +188,7 @@ void Checker::validate_variable(const ast::VariableDecl& d, const Type& base, bo
     return;
   }
   for (const ast::Declarator& decl : d.declarators) {
-    if (reserved_name(decl.name) && !lookup(decl.name) && !known_builtin_variable(decl.name)) {
+    if (reserved_name(decl.name) && !lookup(decl.name) && !known_builtin_variable(decl.name) && !spirv_intrinsics()) {
       reject(decl.name_range, "'" + decl.name + "' is not a built-in variable here, and names beginning with 'gl_' are reserved",
              code::E_RESERVED_NAME);
       return;
@@ -248,7 +259,8 @@ void Checker::validate_function(const ast::FunctionDecl& d, const Function& f) {
     for (const ast::Qualifier& x : q.list) {
       const bool allowed = x.word == "const" || x.word == "in" || x.word == "out" || x.word == "inout" ||
                            x.kind == ast::QualifierKind::Precision || x.kind == ast::QualifierKind::Precise ||
-                           x.kind == ast::QualifierKind::Memory;
+                           x.kind == ast::QualifierKind::Memory || x.word == "spirv_by_reference" ||
+                           x.word == "spirv_literal";
       if (allowed) continue;
       const std::string what = x.kind == ast::QualifierKind::Layout ? std::string("layout qualifiers") : "'" + x.word + "'";
       reject(x.range, what + " cannot qualify a function parameter; parameters take const, in, out, inout, precise, "

@@ -59,6 +59,8 @@ bool is_interpolation_word(std::string_view w) {
 }
 
 bool contains_opaque(const Type& t) {
+  // A spirv_type (GL_EXT_spirv_intrinsics) may be any SPIR-V type: not held to the rules of samplers.
+  if (t.shape == Shape::opaque && t.opaque.rfind("spirv_type", 0) == 0) return false;
   if (t.shape == Shape::opaque)
     return t.opaque.find("sampler") != std::string::npos || t.opaque.find("image") != std::string::npos ||
            t.opaque == "atomic_uint";

@@ -324,6 +324,19 @@ struct Annotation : Node {
 };
 
 struct StructDecl;
+struct TypeSpecifier;
+
+// One argument of a GL_EXT_spirv_intrinsics qualifier or type (`spirv_decorate(...)`,
+// `spirv_type(...)`): `extensions = ["…", …]`, `capabilities = [n, …]`, `set = "…"`, `id = n`,
+// a literal or constant expression (an identifier in spirv_decorate_id), or a type name (spirv_type).
+struct SpirvArg {
+  enum class Kind : std::uint8_t { Extensions, Capabilities, Set, Id, Value, Type };
+  Kind kind = Kind::Value;
+  SourceRange range;
+  std::vector<Expr*> list;  // Extensions, Capabilities
+  Expr* value = nullptr;    // Set, Id, Value
+  TypeSpecifier* type = nullptr;  // Type
+};
 
 // The GLSL type an annotated type word stands for (docs/language.md):
 // "point" -> "vec3", "hpoint" -> "vec4", "map" -> "mat4", ...; empty when
@@ -340,6 +353,7 @@ struct TypeSpecifier : Node {
     Annotated,  // a SafeGI annotated type word: spectrum, point, map, ...
     Named,      // a user struct name
     Struct,     // an inline struct specifier (`struct S { ... }`)
+    Spirv,      // `spirv_type(...)` (GL_EXT_spirv_intrinsics): opaque; `name` is its canonical spelling
   };
   Form form = Form::Builtin;
   std::string name;            // empty for an anonymous inline struct
@@ -347,6 +361,7 @@ struct TypeSpecifier : Node {
   Annotation* annotation = nullptr;
   StructDecl* struct_decl = nullptr;  // Form::Struct
   std::vector<ArrayDim> array_dims;   // `float[3][2]`
+  std::vector<SpirvArg> spirv_args;   // Form::Spirv
 };
 
 // ----------------------------------------------------------------- qualifiers
@@ -360,6 +375,10 @@ enum class QualifierKind : std::uint8_t {
   Precise,
   Memory,         // coherent volatile restrict readonly writeonly (and *coherent, nonprivate)
   Subroutine,     // subroutine, subroutine(T1, T2)
+  // GL_EXT_spirv_intrinsics: spirv_decorate, spirv_decorate_id, spirv_decorate_string,
+  // spirv_storage_class, spirv_execution_mode, spirv_execution_mode_id, spirv_instruction
+  // (each with an argument list), spirv_by_reference, spirv_literal.
+  Spirv,
 };
 
 struct LayoutId {
@@ -375,6 +394,8 @@ struct Qualifier {
   std::vector<LayoutId> layout_ids;         // Layout
   std::vector<std::string> type_names;      // Subroutine with a type list
   bool has_type_list = false;               // `subroutine(...)` even if empty
+  std::vector<SpirvArg> spirv_args;         // Spirv with an argument list
+  std::string spirv_text;                   // Spirv: the canonical spelling, `spirv_decorate(11, 4992)`
 };
 
 struct TypeQualifiers {
