@@ -164,6 +164,22 @@ TEST(Hints, OneCandidateSaysWhichArgumentDoesNotFit) {
                             "through normalize()");
 }
 
+TEST(Hints, ANormalForADirectionParameterSaysHowToConvert) {
+  auto c = check_source(
+      "space world; uniform normal<world> n; out vec4 color;\n"
+      "vec2 equirect(direction<world> v) { return v.xy; }\n"
+      "void main() { color = vec4(equirect(n), 0.0, 1.0); }\n");
+  ASSERT_EQ(c->errors(), 1u);
+  EXPECT_EQ(first_hint(*c), "argument 1 is normal<world> but the parameter is direction<world>: a normal is not a direction (a map "
+                            "carries it by the inverse transpose): take a normal<S> where one is meant, or convert explicitly "
+                            "with direction<S>(n)");
+  auto fixed = check_source(
+      "space world; uniform normal<world> n; out vec4 color;\n"
+      "vec2 equirect(direction<world> v) { return v.xy; }\n"
+      "void main() { color = vec4(equirect(direction<world>(n)), 0.0, 1.0); }\n");
+  EXPECT_EQ(fixed->errors(), 0u);
+}
+
 // normalize(name) is offered for a named vector only: an expression has no name to put in the code.
 TEST(Hints, AnUnnamedVectorBesideADirectionIsNotNormalizedByAPlaceholder) {
   auto c = check_source(

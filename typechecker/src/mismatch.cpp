@@ -331,6 +331,9 @@ std::string Checker::kind_mismatch_hint(Geometry expected, Geometry found) const
   if (expected == Geometry::vector && found == Geometry::point) return "subtract another point to get a vector";
   if (expected == Geometry::normal && found == Geometry::direction)
     return "a direction is not a normal; convert explicitly with normal<S>(d) if it is one";
+  if (expected == Geometry::direction && found == Geometry::normal)
+    return "a normal is not a direction (a map carries it by the inverse transpose): take a normal<S> where one is meant, "
+           "or convert explicitly with direction<S>(n)";
   if (expected == Geometry::map && found == Geometry::projmap) return "a projective map gives hpoints, not points";
   if (expected == Geometry::rigidmap && found == Geometry::map)
     return "a map composed with a non-rigid one is not rigid: declare it map<…> (normals then transform by the inverse transpose)";
