@@ -2,6 +2,7 @@
 // say where an operand's annotation came from.
 
 #include <safegi/parser/printer.hpp>
+#include <safegi/parser/walk.hpp>
 #include "checker_impl.hpp"
 #include "dim_slot.hpp"
 
@@ -77,6 +78,30 @@ std::vector<Checker::ProductFactor> Checker::product_factors(SourceRange range) 
     out.push_back(std::move(f));
   }
   return out;
+}
+
+// In `e`, a dot(a, b) of a unit vector (direction or normal) and a vector of a space: "'b', a
+// vector<S, 1>". Empty if there is none.
+std::string Checker::non_unit_dot_operand(const ast::Expr* e) const {
+  std::string found;
+  if (e == nullptr) return found;
+  const auto geometry = [&](const ast::Expr* x) {
+    const auto t = result_.types.find(x);
+    return t == result_.types.end() ? Geometry::none : t->second.geometry;
+  };
+  ast::walk(e, [&](const ast::Node& n) {
+    const auto* call = ast::dyn_cast<ast::CallExpr>(&n);
+    if (!found.empty() || call == nullptr || call->callee != "dot" || call->args.size() != 2) return;
+    for (int i = 0; i < 2; ++i) {
+      const Geometry unit = geometry(call->args[i]), other = geometry(call->args[1 - i]);
+      if ((unit == Geometry::direction || unit == Geometry::normal) && other == Geometry::vector) {
+        const auto t = result_.types.find(call->args[1 - i]);
+        found = "'" + print_expression(*call->args[1 - i]) + "', a " + name_of(t->second);
+        return;
+      }
+    }
+  });
+  return found;
 }
 
 std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range) const {
@@ -192,7 +217,13 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
           return "the unit '" + f.name + "' measures " + reg.format(found.value) + ", not " + expected_name + ": use a unit of " +
                  expected_name + ", e.g. x * " + unit.name;
     }
-  if (is({{"proj", -1}})) return "the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?";
+  if (is({{"proj", -1}})) {
+    // The cosine is written, but one side of its dot product is not of unit length.
+    if (std::string scaled = non_unit_dot_operand(expression_at(found_range)); !scaled.empty())
+      return "the value lacks a factor of proj: the cosine's dot product takes " + scaled +
+             ", which is not of unit length, so it is no cosine: normalize it";
+    return "the value lacks a factor of proj: missing cosine factor, e.g. max(dot(n, wi), 0.0)?";
+  }
   if (is({{"proj", 1}})) {
     // One proj too many: a cosine applied twice, or a per-projected-area factor divided without its cosine.
     for (const ProductFactor& f : factors)
