@@ -97,6 +97,7 @@ struct Value {
   // Exactly +1 or -1 without being a literal: `front ? 1.0 : -1.0`, a local holding it. A unit
   // vector times it is still unit (a double-sided material's normal flipped to the viewer).
   bool unit_sign = false;
+  bool plane_normal = false;  // cross(a, b) of two vectors of a space: normalize() makes it their plane's normal
   // mat3(t, b, n) with a column of unknown length (a vector, not a direction): "'b' (column 1
   // of the frame)", why the frame is linear rather than rigid.
   std::string non_unit_column;
@@ -119,6 +120,7 @@ struct Variable {
   std::optional<LengthOf> length_of;  // a float initialised with length(L), until either is written
   std::vector<VariableAt> perpendicular_to;  // Value::perpendicular_to of its initialiser, until written
   bool unit_sign = false;                    // Value::unit_sign of its initialiser, until written
+  bool plane_normal = false;                 // Value::plane_normal of its initialiser, until written
   // A float initialised with dot(a, b): a and b as written, until it is written (a written-out reflection
   // 2 n (n·w) - w may name its cosine).
   std::optional<std::pair<std::string, std::string>> dot_of;

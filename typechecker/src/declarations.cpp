@@ -355,6 +355,7 @@ void Checker::variable_decl(const ast::VariableDecl& d, bool global) {
       if (!declared.is_annotated()) v.inverse_squares = init.inverse_squares;
       v.perpendicular_to = init.perpendicular_to;
       v.unit_sign = init.unit_sign && !declared.is_annotated();
+      v.plane_normal = init.plane_normal && !declared.is_annotated();
       if (declared.shape == Shape::scalar && declared.is_floating() && !declared.is_array()) {
         v.length_of = init.length_of;
         if (const auto* dot = ast::dyn_cast<ast::CallExpr>(ast::without_parens(decl.initializer));

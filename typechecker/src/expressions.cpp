@@ -74,6 +74,7 @@ Value Checker::identifier(const ast::IdentifierExpr& e) {
     v.length_of = var->length_of;
     v.perpendicular_to = var->perpendicular_to;
     v.unit_sign = var->unit_sign;
+    v.plane_normal = var->plane_normal;
     v.constant = var->constant;
     v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
     v.name = e.name;

@@ -162,6 +162,11 @@ std::optional<Value> Checker::divided_by_own_length(const ast::Expr* numerator, 
 void Checker::carry_perpendicular(const ast::CallExpr& e, const std::vector<Value>& args, Value& v) {
   if (e.callee == "normalize" && args.size() == 1) {
     v.perpendicular_to = args[0].perpendicular_to;
+    // The unit cross product of two vectors of a surface (edges, derivatives of a point) is its normal.
+    if (args[0].plane_normal && v.type.geometry == Geometry::direction) {
+      v.type.geometry = Geometry::normal;
+      v.type.orientation = Orientation::none;
+    }
     return;
   }
   if (e.callee != "cross" || args.size() != 2) return;
@@ -177,6 +182,8 @@ void Checker::carry_perpendicular(const ast::CallExpr& e, const std::vector<Valu
     v.type.geometry = Geometry::direction;
     v.type.orientation = Orientation::none;
   }
+  v.plane_normal = args[0].type.geometry == Geometry::vector && args[1].type.geometry == Geometry::vector &&
+                   v.type.geometry == Geometry::vector;
   v.perpendicular_to.clear();
   for (const std::optional<VariableAt>& x : {a, b})
     if (x) v.perpendicular_to.push_back(*x);
@@ -211,6 +218,7 @@ void Checker::note_write(const ast::Expr* target) {
       found->second.length_of.reset();
       found->second.perpendicular_to.clear();
       found->second.unit_sign = false;
+      found->second.plane_normal = false;
       found->second.dot_of.reset();
       found->second.inverse_squares = 0;
       found->second.pi_constant.reset();
