@@ -103,6 +103,9 @@ struct Value {
   std::string non_unit_column;
 };
 
+// Exactly +1 or -1: a literal ±1, or a Value::unit_sign.
+inline bool is_unit_sign(const Value& v) { return v.unit_sign || (v.literal && v.number && (*v.number == 1.0 || *v.number == -1.0)); }
+
 struct Variable {
   std::string name;
   Type type;

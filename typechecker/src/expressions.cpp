@@ -2,7 +2,6 @@
 // members and swizzles, indexing, the conditional operator, initialiser lists.
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -538,8 +537,7 @@ Value Checker::ternary(const ast::TernaryExpr& e) {
   if (da.state == DimSlot::State::unknown && db.state != DimSlot::State::unknown && a.pi_factor) out.pi_factor = a.pi_factor;
   if (db.state == DimSlot::State::unknown && da.state != DimSlot::State::unknown && b.pi_factor) out.pi_factor = b.pi_factor;
   out.zero = a.zero && b.zero;
-  const auto sign = [](const Value& v) { return v.unit_sign || (v.literal && v.number && std::fabs(*v.number) == 1.0); };
-  out.unit_sign = sign(a) && sign(b) && out.type.shape == Shape::scalar;
+  out.unit_sign = is_unit_sign(a) && is_unit_sign(b) && out.type.shape == Shape::scalar;
   return out;
 }
 

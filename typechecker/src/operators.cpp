@@ -2,7 +2,6 @@
 // the affine rules of points, vectors, directions and normals.
 
 #include <climits>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -503,7 +502,7 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     if (op == ast::BinaryOp::Mul && (g == Geometry::direction || g == Geometry::normal || plain_multiple))
       out.type.dim = projected_component(*d);
     const Value& scale = a_scalar ? lhs : rhs;
-    if ((g == Geometry::direction || g == Geometry::normal) && (scale.unit_sign || (scale.literal && scale.number && std::fabs(*scale.number) == 1.0))) {
+    if ((g == Geometry::direction || g == Geometry::normal) && is_unit_sign(scale)) {
       // ±1 keeps a unit vector unit: `n * faceDirection`, `-1.0 * d`.
       out.type = geo;
       out.type.orientation = scaled_orientation(geo.orientation, scale);

@@ -194,11 +194,11 @@ void Checker::carry_perpendicular(const ast::CallExpr& e, const std::vector<Valu
 void Checker::gram_schmidt(const ast::BinaryExpr& e, Value& v) {
   const auto* product = ast::dyn_cast<ast::BinaryExpr>(without_parens(e.rhs));
   if (product == nullptr || product->op != ast::BinaryOp::Mul || e.lhs == nullptr) return;
-  const std::string x = print_expression(*without_parens(e.lhs));
   for (auto [along, projection] : {std::pair{product->lhs, product->rhs}, std::pair{product->rhs, product->lhs}}) {
     const auto* dot = ast::dyn_cast<ast::CallExpr>(without_parens(projection));
     const auto* n = ast::dyn_cast<ast::IdentifierExpr>(without_parens(along));
     if (dot == nullptr || n == nullptr || dot->callee != "dot" || dot->args.size() != 2) continue;
+    const std::string x = print_expression(*without_parens(e.lhs));  // printed only for a candidate
     const std::string first = print_expression(*without_parens(dot->args[0]));
     const std::string second = print_expression(*without_parens(dot->args[1]));
     if (!((first == x && second == n->name) || (second == x && first == n->name))) continue;
