@@ -16,6 +16,19 @@ namespace {
 // A spectrum or a kind-less value: what colour arithmetic takes (no point, vector or map).
 bool colour_like(Geometry g) { return g == Geometry::spectrum || g == Geometry::none; }
 
+// A normal, or a vector that is a plain multiple of one (Type::normal_multiple).
+bool normal_like(const Type& t) {
+  return t.geometry == Geometry::normal || (t.geometry == Geometry::vector && t.normal_multiple);
+}
+
+// `n * 0.5 + 0.5`, `0.5 + 0.5 * d`, `n + 1.0`: a plain (unit or halved) vector's coordinates
+// moved by the literal 0.5 or 1 into [0, 1], the way normals are written as colours.
+bool unit_interval_encoding(const Type& geo, const Value& number) {
+  const bool vector_kind = geo.geometry == Geometry::direction || geo.geometry == Geometry::normal || geo.geometry == Geometry::vector;
+  return vector_kind && geo.dim.is_known() && geo.dim.value.is_dimensionless() && number.literal && number.number &&
+         (*number.number == 0.5 || *number.number == 1.0);
+}
+
 bool is_arith(ast::BinaryOp op) {
   return op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div;
 }
@@ -408,6 +421,12 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
     auto spatial = [](Geometry g) { return g == Geometry::point || vectorish(g); };
     if ((spatial(ga) && scalar_b && !rhs.zero) || (spatial(gb) && scalar_a && !lhs.zero)) {
       const Type& geo = spatial(ga) ? a : b;
+      if (unit_interval_encoding(geo, spatial(ga) ? rhs : lhs)) {
+        // n * 0.5 + 0.5, d + 1.0: a unit vector's coordinates remapped to [0, 1] (a normal written
+        // as a colour): plain numbers, no longer a vector of the space.
+        out.type.dim = DimSlot::known(Dimension{});
+        return out;
+      }
       return reject(std::string("cannot ") + verb(op) + " " + both + ": a number added to every coordinate of a " +
                         geometry_name(geo.geometry) + " depends on the axes of " + name_of_space(geo.from),
                     "scale a direction by it instead (e.g. t - dot(t, n) * n), or build the vector it stands for",
@@ -453,6 +472,21 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       out.type.geometry = Geometry::hpoint;
       out.type.dim = DimSlot::unknown();
       out.type.weight = ga == Geometry::hpoint ? a.weight : b.weight;
+    } else if (normal_like(a) && normal_like(b)) {
+      // Normals are covectors: n + m and w0 * n0 + w1 * n1 are normals of the space (unit only once
+      // normalized); m - n is a normal's change, a vector a normal plus it is a normal again.
+      out.type = ga == Geometry::normal ? a : b;
+      out.type.dim = DimSlot::known(Dimension{});
+      out.type.orientation = sum_orientation(add, a.orientation, b.orientation);
+      if (add) {
+        out.type.geometry = Geometry::normal;
+        out.type.length_loss = Type::LengthLoss::blended;
+        out.type.normal_multiple = false;
+      } else {
+        out.type.geometry = Geometry::vector;
+        out.type.length_loss = Type::LengthLoss::none;
+        out.type.normal_multiple = true;
+      }
     } else if ((ga == Geometry::normal && gb == Geometry::none && db.state == DimSlot::State::unknown) ||
                (gb == Geometry::normal && ga == Geometry::none && da.state == DimSlot::State::unknown)) {
       // A normal offset by an unannotated vector (a morph target's delta, a bump): gradually, still a
@@ -513,6 +547,9 @@ Value Checker::geometric_arithmetic(ast::BinaryOp op, const Value& lhs, const Va
       out.type.geometry = Geometry::vector;  // a scaled direction or normal is a vector of the scale's dimension
       out.type.from = geo.from;
       out.type.orientation = scaled_orientation(geo.orientation, a_scalar ? lhs : rhs);
+      const DimSlot& scale_dim = a_scalar ? da : db;
+      out.type.normal_multiple = normal_like(geo) && (scale_dim.state == DimSlot::State::unknown ||
+                                                      (scale_dim.is_known() && scale_dim.value.is_dimensionless()));
     } else if (g == Geometry::hpoint) {
       out.type.geometry = Geometry::hpoint;
       out.type.from = geo.from;

@@ -60,6 +60,7 @@ Type Type::plain() const {
   t.affine_w = 0;
   t.normal_matrix = false;
   t.length_loss = LengthLoss::none;
+  t.normal_multiple = false;
   return t;
 }
 

@@ -30,6 +30,7 @@ std::string Checker::not_unit_subject(const Value& v) const {
          (v.type.length_loss == Type::LengthLoss::scaled     ? " carried by a normal matrix that may scale"
           : v.type.length_loss == Type::LengthLoss::filtered ? " filtered by a texture lookup"
           : v.type.length_loss == Type::LengthLoss::offset   ? " offset by an unannotated vector"
+          : v.type.length_loss == Type::LengthLoss::blended  ? " summed from normals"
                                                              : " interpolated across the primitive");
 }
 

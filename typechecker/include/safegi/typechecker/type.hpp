@@ -124,9 +124,13 @@ struct Type {
   // "What spaces do not reach"): interpolated across a primitive (a fragment shader's
   // input), carried by a normal matrix that may scale, or filtered by a texture lookup
   // (a G-buffer's normal read with texture(); texelFetch reads it as stored), or offset by an
-  // unannotated vector (a morph target's `n + dn`).
-  enum class LengthLoss : std::uint8_t { none, interpolated, scaled, filtered, offset };
+  // unannotated vector (a morph target's `n + dn`), or summed from normals (a blend `w0 * n0 + w1 * n1`).
+  enum class LengthLoss : std::uint8_t { none, interpolated, scaled, filtered, offset, blended };
   LengthLoss length_loss = LengthLoss::none;
+  // Geometry::vector: a plain multiple of a normal (`w * n`) or a difference of two (`m - n`): a
+  // vector with a length, which added to a normal or another such multiple is a normal again
+  // (normals are covectors: their weighted sums are normals), unit only once normalized.
+  bool normal_multiple = false;
 
   static Type error() { return {}; }
   static Type void_type() { Type t; t.shape = Shape::void_; return t; }
