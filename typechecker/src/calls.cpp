@@ -173,6 +173,7 @@ Value Checker::call(const ast::CallExpr& e) {
     Value v = builtin_call(&e, e.callee, *sigs, args, e.callee_range, e.range);
     if (!v.type.is_error() && !atomic_overload_available(e.callee, args, e.callee_range)) return error_value(e.range);
     if (!v.type.is_error() && !unit_length_arguments(e.callee, args)) return error_value(e.range);
+    if (!v.type.is_error() && !homogeneous_arguments(e.callee, args)) return error_value(e.range);
     if (!v.type.is_error() && !angles_as_vector(e.callee, args)) return error_value(e.range);
     if (e.callee == "length" && e.args.size() == 1 && !v.type.is_error()) v.length_of = length_of_variable(e.args[0]);
     if (!v.type.is_error()) carry_perpendicular(e, args, v);

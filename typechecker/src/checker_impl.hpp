@@ -254,6 +254,7 @@ class Checker {
   // A user function's parameters: homogeneous coordinates without their w for a parameter that is not
   // an hpoint, and a vec4 whose xyz were divided by its w (divided_in_place) for one that is.
   bool homogeneous_parameters(const std::string& callee, const std::vector<Type>& params, const std::vector<Value>& args);
+  bool homogeneous_arguments(const std::string& name, const std::vector<Value>& args);
   // `h.xyz /= h.w;`, `h.xyz = h.xyz / h.w;` of an hpoint variable h: from here h is a plain vec4, remembered as divided.
   void divided_in_place(const ast::AssignExpr& e);
   // Interpolated normals and directions (unit_length.cpp).

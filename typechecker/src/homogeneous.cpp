@@ -5,6 +5,7 @@
 // reads w = 1 as a point and w = 0 as a vector, direction or normal, so a
 // normal taken through the model matrix, or given w = 1, is told as such.
 
+#include <set>
 #include <algorithm>
 
 #include "checker_impl.hpp"
@@ -347,6 +348,36 @@ bool Checker::homogeneous_parameters(const std::string& callee, const std::vecto
       report(std::move(d));
       return false;
     }
+  }
+  return true;
+}
+
+// normalize(h.xyz), length(h.xyz), dFdx(h.xyz) of a homogeneous point before its divide: its
+// coordinates are a position only once divided by w (a ray's direction from the inverse projection's
+// undivided xyz, a tangent frame from derivatives of clip coordinates).
+bool Checker::homogeneous_arguments(const std::string& name, const std::vector<Value>& args) {
+  static const std::set<std::string, std::less<>> geometric = {
+      "normalize", "length",   "distance", "dot",       "cross",     "reflect",    "refract",     "faceforward", "dFdx",
+      "dFdy",      "fwidth",   "dFdxFine", "dFdyFine",  "dFdxCoarse", "dFdyCoarse", "fwidthFine", "fwidthCoarse"};
+  if (!geometric.contains(name)) return true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Type& a = args[i].type;
+    if (a.geometry != Geometry::hpoint || a.shape != Shape::vector || a.rows == 4 || a.weight == 0 || a.is_array()) continue;
+    const std::string text = written_name(args[i]);
+    const std::size_t dot = text.rfind('.');
+    const bool swizzle = dot != std::string::npos && dot > 0 && text.find_first_of("()[] ") == std::string::npos;
+    Diagnostic d = Diagnostic::error(args[i].range, "argument " + std::to_string(i + 1) + " of '" + name + "' has type " + name_of(a) +
+                                                        ": the coordinates of a homogeneous point are a position in " + name_of_space(a.from) +
+                                                        " only once divided by its w")
+                       .with_code(code::E_KIND_MISMATCH);
+    add_origin_note(d, args[i]);
+    const bool derivative = name.starts_with("dF") || name.starts_with("fwidth");
+    const std::string quotient = swizzle ? text + " / " + text.substr(0, dot) + ".w" : std::string("h.xyz / h.w");
+    const std::string divided = swizzle && args.size() == 1 ? name + "(" + quotient + ")" : quotient;
+    d.with_hint(derivative ? "differentiate a position of a space (the view-space one, say), or divide by w first: " + divided
+                           : "divide by w first: " + divided);
+    report(std::move(d));
+    return false;
   }
   return true;
 }
