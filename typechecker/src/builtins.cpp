@@ -19,6 +19,17 @@ constexpr Entry kEntries[] = {
 #undef BUILTIN
 };
 
+struct ArgumentRuleEntry {
+  std::string_view name;
+  ArgumentRule rule;
+};
+
+constexpr ArgumentRuleEntry kArgumentRules[] = {
+#define BUILTIN_ARGUMENT_RULE(name, rule) {#name, ArgumentRule::rule},
+#include "builtin_argument_rules.def"
+#undef BUILTIN_ARGUMENT_RULE
+};
+
 // A tiny recursive-descent reader for the signature strings of builtins.def.
 // The table is ours, so a malformed entry is a programming error (logic_error),
 // caught by the unit tests that load the library.
@@ -478,6 +489,12 @@ Type instantiate_shape(const SigType& t, const ShapeMatch& m, bool result) {
     case SizeClass::row: out.rows = static_cast<std::uint8_t>(m.columns); break;
   }
   return out;
+}
+
+bool builtin_argument_rule(std::string_view name, ArgumentRule rule) {
+  for (const ArgumentRuleEntry& e : kArgumentRules)
+    if (e.rule == rule && e.name == name) return true;
+  return false;
 }
 
 }  // namespace safegi

@@ -67,6 +67,10 @@ class BuiltinLibrary {
   std::unordered_map<std::string, std::vector<Signature>> by_name_;
 };
 
+// What the checker asks of a built-in's arguments beyond their signature (builtin_argument_rules.def).
+enum class ArgumentRule : std::uint8_t { unit_length, no_angle_triples, divided_only };
+bool builtin_argument_rule(std::string_view name, ArgumentRule rule);
+
 // Rules typed by their signature text (the others are typed by code from an opaque argument).
 inline bool has_signature(BuiltinRule r) {
   return r == BuiltinRule::plain || r == BuiltinRule::pow || r == BuiltinRule::angle_unit || r == BuiltinRule::normal_transform || r == BuiltinRule::point_misuse;

@@ -17,6 +17,23 @@ TEST(Builtins, EverySignatureParsesWithThePrelude) {
   EXPECT_EQ(library.find("nonexistent"), nullptr);
 }
 
+TEST(Builtins, ArgumentRulesNameBuiltinsAndKeepTheirFamilies) {
+  const DimensionRegistry prelude = DimensionRegistry::rendering_prelude();
+  BuiltinLibrary library(prelude);
+  for (const char* name : {"dot", "reflect", "refract", "faceforward"}) {
+    EXPECT_NE(library.find(name), nullptr) << name;
+    EXPECT_TRUE(builtin_argument_rule(name, ArgumentRule::unit_length)) << name;
+    EXPECT_TRUE(builtin_argument_rule(name, ArgumentRule::no_angle_triples)) << name;
+    EXPECT_TRUE(builtin_argument_rule(name, ArgumentRule::divided_only)) << name;
+  }
+  for (const char* name : {"normalize", "length", "dFdx", "dFdyCoarse", "fwidthFine"}) {
+    EXPECT_NE(library.find(name), nullptr) << name;
+    EXPECT_TRUE(builtin_argument_rule(name, ArgumentRule::divided_only)) << name;
+  }
+  EXPECT_FALSE(builtin_argument_rule("length", ArgumentRule::unit_length));  // length(vN) takes it as it is
+  EXPECT_FALSE(builtin_argument_rule("mix", ArgumentRule::divided_only));
+}
+
 TEST(Builtins, WithoutThePreludeNamedDimensionsAreUnknown) {
   BuiltinLibrary library{DimensionRegistry{}};
   const Signature& sin = library.find("sin")->front();

@@ -81,9 +81,7 @@ bool Checker::extension_name(const std::string& name) {
 // about three axes, not coordinates along them), whatever a geometric built-in makes of it beside
 // one. The direction such angles describe is a column of the rotation built from them.
 bool Checker::angles_as_vector(const std::string& name, const std::vector<Value>& args) {
-  if (name != "dot" && name != "cross" && name != "reflect" && name != "refract" && name != "faceforward" &&
-      name != "distance")
-    return true;
+  if (!builtin_argument_rule(name, ArgumentRule::no_angle_triples)) return true;
   const std::optional<BaseId> angle = result_.registry.find_base("angle");
   const auto spatial = [](const Value& v) { return v.type.geometry != Geometry::none && v.type.geometry != Geometry::spectrum; };
   if (!angle || std::none_of(args.begin(), args.end(), spatial)) return true;

@@ -5,7 +5,6 @@
 // reads w = 1 as a point and w = 0 as a vector, direction or normal, so a
 // normal taken through the model matrix, or given w = 1, is told as such.
 
-#include <set>
 #include <algorithm>
 
 #include "checker_impl.hpp"
@@ -356,10 +355,7 @@ bool Checker::homogeneous_parameters(const std::string& callee, const std::vecto
 // coordinates are a position only once divided by w (a ray's direction from the inverse projection's
 // undivided xyz, a tangent frame from derivatives of clip coordinates).
 bool Checker::homogeneous_arguments(const std::string& name, const std::vector<Value>& args) {
-  static const std::set<std::string, std::less<>> geometric = {
-      "normalize", "length",   "distance", "dot",       "cross",     "reflect",    "refract",     "faceforward", "dFdx",
-      "dFdy",      "fwidth",   "dFdxFine", "dFdyFine",  "dFdxCoarse", "dFdyCoarse", "fwidthFine", "fwidthCoarse"};
-  if (!geometric.contains(name)) return true;
+  if (!builtin_argument_rule(name, ArgumentRule::divided_only)) return true;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const Type& a = args[i].type;
     if (a.geometry != Geometry::hpoint || a.shape != Shape::vector || a.rows == 4 || a.weight == 0 || a.is_array()) continue;

@@ -51,7 +51,7 @@ void Checker::report_not_unit(const Value& v, const std::string& where) {
 }
 
 bool Checker::unit_length_arguments(const std::string& name, const std::vector<Value>& args) {
-  if (name != "dot" && name != "reflect" && name != "refract" && name != "faceforward") return true;
+  if (!builtin_argument_rule(name, ArgumentRule::unit_length)) return true;
   for (std::size_t i = 0; i < args.size(); ++i)
     if (args[i].type.length_loss != Type::LengthLoss::none) {
       report_not_unit(args[i], "argument " + std::to_string(i + 1) + " of '" + name + "' is");
