@@ -483,22 +483,25 @@ std::optional<Type> Checker::unify_call(const std::string& callee, const CallSha
     report(std::move(d));
   };
 
-  // A cosine kept off zero or clamped to [0, 1] (`max(dot(n, l), 1e-4)`, `clamp(dot(n, l), 0.001, 1.0)`,
-  // saturate): a literal bound of min, max or clamp takes the cosine's dimension, as zero does.
-  // A named plain constant (`const float eps = 1e-4;`) bounds as its literal does.
+  // A quantity kept off zero or clamped (`max(dot(n, l), 1e-4)`, `clamp(dot(n, l), 0.001, 1.0)`, saturate,
+  // `max(range, 0.0001)`): a literal bound of min, max or clamp takes the dimension of what it bounds,
+  // as zero does. A named plain constant (`const float eps = 1e-4;`) bounds as its literal does.
+  // (In a sum the literal still needs its unit: `abs(dot(n, v)) + 0.001` of an unnormalized v.)
   const auto literal_bound = [&](const Value& a) {
     const DimSlot d = value_dimension(a.type, reg);
     return a.literal || (a.number && a.read_only && d.is_known() && d.value.is_dimensionless());
   };
-  bool cosine_bounds = false;
+  bool dimensioned_bounds = false;
   if (callee == "min" || callee == "max" || callee == "clamp")
-    for (const Value& a : args)
-      cosine_bounds = cosine_bounds || (!literal_bound(a) && cosine_as_number(DimSlot::known(Dimension{}), value_dimension(a.type, reg)));
+    for (const Value& a : args) {
+      const DimSlot d = value_dimension(a.type, reg);
+      dimensioned_bounds = dimensioned_bounds || (!literal_bound(a) && d.is_known() && !d.value.is_dimensionless());
+    }
 
   for (std::size_t i = 0; i < args.size(); ++i) {
     const Type& p = shape.params[i];
     const Value& a = args[i];
-    if (cosine_bounds && literal_bound(a)) continue;
+    if (dimensioned_bounds && literal_bound(a)) continue;
     // Spaces.
     const SpaceSlot* pslots[] = {&p.from, &p.to};
     const SpaceSlot* aslots[] = {&a.type.from, &a.type.to};

@@ -16,7 +16,7 @@ out vec4 fragmentColor;
 
 void main() {
     float dist = length(lightPosition - position);
-    float window = clamp(1.0 - pow(dist / max(lightRange, 0.0001 * meter), 4.0), 0.0, 1.0);
+    float window = clamp(1.0 - pow(dist / max(lightRange, 0.0001), 4.0), 0.0, 1.0);
     float attenuation = window * window / (1.0 + dist * dist);
     vec3 light = normalize(lightPosition - position);
     float NdotL = max(dot(normalize(normal), light), 0.0);

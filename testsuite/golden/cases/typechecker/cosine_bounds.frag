@@ -1,7 +1,8 @@
 #version 330 core
 #include <safegi/prelude.sgl>
 // A cosine kept off zero or clamped to [0, 1] stays a cosine: the literal bounds of min,
-// max and clamp take its dimension; a length's bound still needs its unit.
+// max and clamp take its dimension, a length's guard too (max(d, 1e-4) keeps a
+// division finite); added to a length, a literal still needs its unit.
 space world;
 uniform normal<world> N;
 uniform direction<world> L;
@@ -15,5 +16,6 @@ void main() {
   float<1> saturated = clamp(dot(N, L), 0.0, 1.0);
   spectrum<radiance> Lo = f * Li * clamped * saturated * float<solid_angle>(1.0);
   float<length> reach = max(d, 1e-4);
-  c = vec4(Lo * floored, reach);
+  float<length> padded = d + 1e-4;
+  c = vec4(Lo * floored, reach + padded);
 }
