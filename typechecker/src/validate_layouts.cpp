@@ -647,6 +647,8 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
     if (std::optional<long long> v = layout_value(*a)) block_align = *v;
   const bool block_row_major = find_layout_id(d.qualifiers, "row_major") != nullptr;
   long long next = 0;  // the first byte after the previous member
+  long long end = 0;   // the first byte after every member (members out of order under Vulkan)
+  std::vector<std::pair<const ast::Declarator*, std::pair<long long, long long>>> placed_ranges;  // [begin, end)
   for (const ast::VariableDecl* m : d.members) {
     const ast::LayoutId* offset = find_layout_id(m->qualifiers, "offset");
     const ast::LayoutId* align = find_layout_id(m->qualifiers, "align");
@@ -677,7 +679,20 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
                  code::E_LAYOUT);
           return;
         }
-        if (!scalar && *v < next) {
+        // Vulkan's rule is that members do not overlap, in any order (glslang targeting SPIR-V places a
+        // member at its offset unchecked: `spv.offsets.frag` declares c, b, a); OpenGL's that each
+        // member starts past the one before it.
+        if (!scalar && vulkan_glsl(language())) {
+          const long long end_of_member = *v + (runtime_sized ? 1 : p.size);
+          for (const auto& [placed, range] : placed_ranges)
+            if (*v < range.second && range.first < end_of_member) {
+              reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name + "' overlaps '" +
+                                               placed->name + "', bytes " + std::to_string(range.first) + " to " +
+                                               std::to_string(range.second - 1),
+                     code::E_LAYOUT);
+              return;
+            }
+        } else if (!scalar && *v < next) {
           reject(offset->value->range, "layout 'offset' " + std::to_string(*v) + " of '" + decl.name +
                                            "' lies inside the member before it, which ends at byte " + std::to_string(next),
                  code::E_LAYOUT);
@@ -692,9 +707,11 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
         return;
       }
       next = at + p.size;
+      end = std::max(end, next);
+      placed_ranges.emplace_back(&decl, std::pair{at, next});
     }
   }
-  layout.size = next;
+  layout.size = end;
   result_.block_layouts[&d] = std::move(layout);
 }
 
