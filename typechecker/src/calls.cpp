@@ -438,7 +438,13 @@ std::optional<Value> Checker::geometric_operator(const ast::Node* node, const st
       if (rhs.type.geometry == Geometry::projmap) {
         message += ": the projective map gives homogeneous points, which a " + std::string(geometry_name(lhs.type.geometry)) +
                    " does not take";
-        hint = "apply the projective map last: it goes leftmost, projmap * map";
+        // When the two maps chain the other way round (rigidmap<world, view> * projmap<view, clip>), the
+        // order is the mistake: say so with the product swapped.
+        const bool reversed = lhs.type.to.is_known() && rhs.type.from.is_known() && lhs.type.to == rhs.type.from;
+        const std::string l = operand_text(lhs, ""), r = operand_text(rhs, "");
+        hint = reversed && !l.empty() && !r.empty()
+                   ? "the order is reversed: the projective map applies last, so it goes leftmost, " + r + " * " + l
+                   : "apply the projective map last: it goes leftmost, projmap * map";
       }
     }
     operand_mismatch(message, lhs, rhs, range, hint, code::E_INVALID_OPERANDS);

@@ -399,7 +399,7 @@ class Checker {
     bool literal = false;
   };
   std::vector<ProductFactor> product_factors(SourceRange range) const;
-  std::string non_unit_dot_operand(const ast::Expr* e) const;
+  std::string non_unit_dot_operand(const ast::Expr* e, int depth = 0) const;
   std::string physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range = {}) const;
   std::string operand_hint(const DimSlot& left, const DimSlot& right, SourceRange right_range) const;  // a + b, a - b
   std::string lambert_hint() const;

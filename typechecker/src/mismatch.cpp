@@ -82,7 +82,7 @@ std::vector<Checker::ProductFactor> Checker::product_factors(SourceRange range) 
 
 // In `e`, a dot(a, b) of a unit vector (direction or normal) and a vector of a space: "'b', a
 // vector<S, 1>". Empty if there is none.
-std::string Checker::non_unit_dot_operand(const ast::Expr* e) const {
+std::string Checker::non_unit_dot_operand(const ast::Expr* e, int depth) const {
   std::string found;
   if (e == nullptr) return found;
   const auto geometry = [&](const ast::Expr* x) {
@@ -90,8 +90,16 @@ std::string Checker::non_unit_dot_operand(const ast::Expr* e) const {
     return t == result_.types.end() ? Geometry::none : t->second.geometry;
   };
   ast::walk(e, [&](const ast::Node& n) {
+    if (!found.empty()) return;
+    // A local whose type was inferred from its initialiser (`float cosL = max(dot(n, -dir), 0.0);`):
+    // the dot product is there.
+    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(&n); id && depth < 3) {
+      if (const Variable* v = lookup(id->name); v && !v->builtin && v->origin.inferred)
+        found = non_unit_dot_operand(expression_at(v->origin.range), depth + 1);
+      return;
+    }
     const auto* call = ast::dyn_cast<ast::CallExpr>(&n);
-    if (!found.empty() || call == nullptr || call->callee != "dot" || call->args.size() != 2) return;
+    if (call == nullptr || call->callee != "dot" || call->args.size() != 2) return;
     for (int i = 0; i < 2; ++i) {
       const Geometry unit = geometry(call->args[i]), other = geometry(call->args[1 - i]);
       if ((unit == Geometry::direction || unit == Geometry::normal) && other == Geometry::vector) {
@@ -264,9 +272,15 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
     return "a pdf per area where a pdf per solid angle is needed: convert it with the Jacobian, pdfA · r² / cos θ at the light";
   if (named("pdf_area", expected.value) && named("pdf_solid_angle", found.value))
     return "a pdf per solid angle where a pdf per area is needed: convert it with the Jacobian, pdfW · cos θ / r² at the light";
-  if ((area_per_sr || sr_per_area) && !pdf_factor && !factors.empty())
+  if ((area_per_sr || sr_per_area) && !pdf_factor && !factors.empty()) {
+    if (area_per_sr)
+      for (const ProductFactor& f : factors)  // a point light's intensity used as the irradiance it gives
+        if (f.sign > 0 && !f.name.empty() && f.dim.state == DimSlot::State::known && named("intensity", f.dim.value))
+          return "the value lacks solid angle per area: '" + f.name +
+                 "' is an intensity (power per steradian), missing the inverse-square falloff that makes it irradiance, inverse_square(d)?";
     return area_per_sr ? "the value lacks solid angle per area: missing the inverse-square falloff, inverse_square(d)?"
                        : "the value has an extra solid angle per area: the inverse-square falloff applied twice?";
+  }
   if (area_per_sr) return "a pdf per area where a pdf per solid angle is needed (or the reverse): missing r²/cos Jacobian?";
   if (sr_per_area) return "a pdf per solid angle where a pdf per area is needed (or the reverse): missing r²/cos Jacobian?";
   if (is({{"solid_angle", -1}, {"proj", -1}})) {
@@ -285,6 +299,11 @@ std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found,
   }
   if (is({{"solid_angle", 1}, {"proj", 1}}))
     return "irradiance where radiance is expected: reflect it with a brdf (1/(solid_angle·proj)) to get radiance";
+  // One length too many, from a cosine taken with a vector that was never normalized (N·L with L = lightPos - P).
+  if (is({{"length", 1}}) || is({{"length", 1}, {"proj", -1}}))
+    if (std::string scaled = non_unit_dot_operand(expression_at(found_range)); !scaled.empty())
+      return "the value has an extra factor of length: the cosine's dot product takes " + scaled +
+             ", which is not of unit length: normalize it";
   if (is({{"length", 2}})) return "the value has an extra factor of area: missing division by the squared distance?";
   // An area light's sample counted as a point light's: its radiance reaches a receiver through the solid angle
   // its area subtends, A cos θ_light / r², and the inverse square alone leaves A cos θ_light out.
