@@ -400,6 +400,8 @@ class Checker {
   };
   std::vector<ProductFactor> product_factors(SourceRange range) const;
   std::string non_unit_dot_operand(const ast::Expr* e, int depth = 0) const;
+  std::string angle_divided_by_pi(const ast::Expr* e, int depth = 0) const;
+  std::optional<std::string> angle_fraction_hint(const Value& lhs, const Value& rhs) const;
   std::string physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range = {}) const;
   std::string operand_hint(const DimSlot& left, const DimSlot& right, SourceRange right_range) const;  // a + b, a - b
   std::string lambert_hint() const;

@@ -247,6 +247,13 @@ bool Checker::carry_pi_factor(ast::BinaryOp op, const Value& lhs, const Value& r
       // c · (kπ)^e: k·c for e = 1, k/c for e = −1.
       pi.multiple = pi.exponent > 0 ? pi.multiple * c : pi.multiple / c;
     }
+    // An angle divided by π (`theta / PI`, a lat-long map's u = φ / 2π, an angle normalised to [0, 1]) is
+    // divided by π radians: a plain fraction, decided here so that adding it to an angle is refused.
+    if (const std::optional<Dimension> angle = reg.find_dimension("angle");
+        angle && pi.exponent == -1 && pi.known.is_known() && pi.known.value == *angle) {
+      out.type.dim = DimSlot::known(Dimension{});
+      return true;
+    }
     out.pi_factor = pi;
     return true;
   }

@@ -1,6 +1,7 @@
 // Physics-aware hints for dimension and space mismatches, and the notes that
 // say where an operand's annotation came from.
 
+#include <tuple>
 #include <safegi/parser/printer.hpp>
 #include <safegi/parser/walk.hpp>
 #include "checker_impl.hpp"
@@ -110,6 +111,47 @@ std::string Checker::non_unit_dot_operand(const ast::Expr* e, int depth) const {
     }
   });
   return found;
+}
+
+// The π constant an expression divides an angle by (`theta / PI`, following inferred locals:
+// `float n = (a + HALF_PI) / PI;`), or empty.
+std::string Checker::angle_divided_by_pi(const ast::Expr* e, int depth) const {
+  std::string found;
+  if (e == nullptr) return found;
+  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  ast::walk(e, [&](const ast::Node& n) {
+    if (!found.empty() || !angle) return;
+    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(&n); id && depth < 3) {
+      if (const Variable* v = lookup(id->name); v && !v->builtin && v->origin.inferred)
+        found = angle_divided_by_pi(expression_at(v->origin.range), depth + 1);
+      return;
+    }
+    const auto* div = ast::dyn_cast<ast::BinaryExpr>(&n);
+    if (div == nullptr || div->op != ast::BinaryOp::Div) return;
+    const auto* pi = ast::dyn_cast<ast::IdentifierExpr>(ast::without_parens(div->rhs));
+    const Variable* constant = pi ? lookup(pi->name) : nullptr;
+    const auto numerator = result_.types.find(div->lhs);
+    if (constant && constant->pi_constant && numerator != result_.types.end() && numerator->second.dim.is_known() &&
+        numerator->second.dim.value == *angle)
+      found = pi->name;
+  });
+  return found;
+}
+
+// An angle beside an angle divided by π (a fraction of π radians): one side was normalised, the other not.
+std::optional<std::string> Checker::angle_fraction_hint(const Value& lhs, const Value& rhs) const {
+  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  if (!angle) return std::nullopt;
+  const DimSlot da = value_dimension(lhs.type, result_.registry), db = value_dimension(rhs.type, result_.registry);
+  for (const auto& [plain, other, dp, dother] : {std::tuple{&lhs, &rhs, da, db}, std::tuple{&rhs, &lhs, db, da}}) {
+    if (!dp.is_known() || !dp.value.is_dimensionless() || !dother.is_known() || dother.value != *angle) continue;
+    const std::string pi = angle_divided_by_pi(expression_at(plain->range));
+    if (pi.empty()) continue;
+    const std::string text = operand_text(*other, "the angle");
+    return "'" + operand_text(*plain, "the other side") + "' is an angle divided by '" + pi + "', a fraction of " + pi +
+           " radians: divide " + text + " by " + pi + " too (" + text + " / " + pi + ")";
+  }
+  return std::nullopt;
 }
 
 std::string Checker::physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range) const {

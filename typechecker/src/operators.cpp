@@ -300,8 +300,8 @@ Value Checker::arithmetic(const ast::Node* node, ast::BinaryOp op, const Value& 
     const bool cosine_a = cosine_as_number(db, da), cosine_b = cosine_as_number(da, db);  // 1 - cos θ is a number
     if (!lhs.zero && !rhs.zero && !consistent(da, db) && !cosine_a && !cosine_b) {
       operand_mismatch(std::string("cannot ") + verb(op) + " " + name_of(a) + " and " + name_of(b), lhs, rhs, op_range,
-                       unnormalized_dot_hint(lhs).value_or(unnormalized_dot_hint(rhs).value_or(
-                           literal_sum_hint(lhs, rhs).value_or(operand_hint(da, db, rhs.range)))),
+                       unnormalized_dot_hint(lhs).value_or(unnormalized_dot_hint(rhs).value_or(angle_fraction_hint(lhs, rhs).value_or(
+                           literal_sum_hint(lhs, rhs).value_or(operand_hint(da, db, rhs.range))))),
                        code::E_DIMENSION_MISMATCH);
       return error_value(range);
     }
