@@ -3,6 +3,7 @@
 #include <safegi/diagnostics/file.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace safegi {
@@ -11,6 +12,20 @@ namespace {
 // Offsets where each line starts; "\n", "\r\n" and a lone "\r" all end a line.
 std::vector<std::uint32_t> compute_line_starts(std::string_view text) {
   std::vector<std::uint32_t> starts{0};
+  if (text.empty()) return starts;
+  if (std::memchr(text.data(), '\r', text.size()) == nullptr) {
+    // Only "\n" ends lines (the usual case): memchr finds them a vector at a time.
+    starts.reserve(text.size() / 24 + 1);
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    for (const char* p = begin; p < end;) {
+      const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      if (nl == nullptr) break;
+      starts.push_back(static_cast<std::uint32_t>(nl - begin + 1));
+      p = nl + 1;
+    }
+    return starts;
+  }
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] == '\n') {
       starts.push_back(static_cast<std::uint32_t>(i + 1));
@@ -101,7 +116,15 @@ SourceLocation SourceManager::location_after(FileId id, std::uint32_t offset, st
     line_hint = location.line;
     return location;
   }
-  while (line_hint < starts.size() && starts[line_hint] <= offset) ++line_hint;
+  // A token is mostly on the hint's line or the next few; past those (a skipped #if group), search.
+  for (int step = 0; line_hint < starts.size() && starts[line_hint] <= offset; ++step) {
+    if (step == 4) {
+      line_hint = static_cast<std::uint32_t>(std::upper_bound(starts.begin() + line_hint, starts.end(), offset) -
+                                             starts.begin());
+      break;
+    }
+    ++line_hint;
+  }
   return SourceLocation{id, offset, line_hint, offset - starts[line_hint - 1] + 1};
 }
 

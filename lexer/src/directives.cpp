@@ -106,7 +106,7 @@ void Preprocessor::directive_define(FileState& f, const Token& hash) {
     return;  // an identical redefinition changes nothing
   }
   std::string_view key = macro->name;
-  macros_.emplace(key, std::move(macro));
+  add_macro(key, std::move(macro));
 }
 
 void Preprocessor::directive_undef(FileState& f, const Token& hash) {
@@ -201,7 +201,7 @@ void Preprocessor::define_predefined(std::string_view name, std::string_view val
     t.text = value;
     m->body.push_back(t);
   }
-  macros_.emplace(name, std::move(m));
+  add_macro(name, std::move(m));
 }
 
 void Preprocessor::apply_version() {

@@ -1,5 +1,6 @@
 #include <safegi/lexer/lexer.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -50,16 +51,23 @@ bool Lexer::skip_blanks_and_comments() {
     char c = text_[pos_];
     if (is_blank(c)) {
       ++pos_;
+      while (pos_ < text_.size() && is_blank(text_[pos_])) ++pos_;  // indentation
     } else if (is_newline(c)) {
       pos_ += (c == '\r' && at(pos_ + 1) == '\n') ? 2 : 1;
       at_line_start_ = true;
     } else if (c == '/' && peek2() == '/') {
-      while (!at_end(pos_) && !is_newline(peek())) advance();
+      for (;;) {
+        // Plain characters first, a byte at a time; a backslash may splice the comment on.
+        while (pos_ < text_.size() && text_[pos_] != '\\' && !is_newline(text_[pos_])) ++pos_;
+        if (at_end(pos_) || is_newline(peek())) break;
+        advance();
+      }
     } else if (c == '/' && peek2() == '*') {
       std::size_t start = pos_;
       advance();
       advance();
       for (;;) {
+        while (pos_ < text_.size() && text_[pos_] != '*' && text_[pos_] != '\\') ++pos_;  // plain characters
         if (at_end(pos_)) {
           // Reported even in skipped groups: it swallows the rest of the file.
           bool report = report_errors_;
@@ -94,14 +102,24 @@ void Lexer::skip_to_directive_line() {
       char c = text_[pos_];
       if (is_newline(c) || (c == '/' && (peek2() == '/' || peek2() == '*'))) break;
       ++pos_;
+      // Plain characters up to one that may end the line, start a comment or splice lines.
+      while (pos_ < text_.size() && text_[pos_] != '\\' && text_[pos_] != '/' && !is_newline(text_[pos_])) ++pos_;
     }
   }
 }
 
 void Lexer::finish(Token& token, std::size_t begin) {
   token.range.begin = sources_.location_after(file_, static_cast<std::uint32_t>(begin), line_hint_);
-  token.range.end = sources_.location_after(file_, static_cast<std::uint32_t>(pos_), line_hint_);
   std::string_view raw = text_.substr(begin, pos_ - begin);
+  if (std::none_of(raw.begin(), raw.end(), [](char c) { return c == '\\' || is_newline(c); })) {
+    // One line, no splice (nearly every token): the end is on the line the beginning is.
+    token.range.end = token.range.begin;
+    token.range.end.offset = static_cast<std::uint32_t>(pos_);
+    token.range.end.column += static_cast<std::uint32_t>(pos_ - begin);
+    token.text = raw;
+    return;
+  }
+  token.range.end = sources_.location_after(file_, static_cast<std::uint32_t>(pos_), line_hint_);
   if (raw.find('\\') == std::string_view::npos) {
     token.text = raw;
     return;
@@ -153,7 +171,11 @@ Token Lexer::next() {
 
 void Lexer::lex_word(Token& token) {
   std::size_t begin = pos_;
-  while (is_word_char(peek())) advance();
+  for (;;) {
+    while (pos_ < text_.size() && is_word_char(text_[pos_])) ++pos_;  // no splice among them
+    if (!is_word_char(peek())) break;
+    advance();
+  }
   finish(token, begin);
   token.kind = options_.classify_words ? classify_word(token.text, options_.keywords) : TokenKind::identifier;
 }

@@ -1,6 +1,7 @@
 // Macro replacement: invocations, argument pre-expansion, substitution,
 // token pasting, and the limits that keep runaway expansions finite.
 
+#include <algorithm>
 #include <string>
 
 #include "preprocessor_impl.hpp"
@@ -10,6 +11,10 @@ namespace safegi::detail {
 // ------------------------------------------------------ macro expansion ---
 
 Macro* Preprocessor::find_macro(std::string_view name) {
+  const auto initial = name.empty() ? 0u : static_cast<unsigned char>(name[0]);
+  if (!((macro_initials_[initial >> 6] >> (initial & 63u)) & 1u) ||
+      !((macro_lengths_ >> std::min<std::size_t>(name.size(), 63)) & 1u))
+    return nullptr;
   auto it = macros_.find(name);
   return it == macros_.end() ? nullptr : it->second.get();
 }

@@ -3,6 +3,8 @@
 // files, conditionals and output; directives.cpp: the other directives;
 // macro_expansion.cpp: macro replacement). Not installed.
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -129,6 +131,16 @@ class Preprocessor {
   std::vector<Conditional> conditionals_;
   bool skipping_ = false;
   std::unordered_map<std::string_view, std::unique_ptr<Macro>> macros_;
+  // The first bytes and lengths (63 and longer share a bit) macro names have had: a word with
+  // another first byte or length is no macro, found without hashing it (find_macro, most words).
+  std::uint64_t macro_initials_[4] = {0, 0, 0, 0};
+  std::uint64_t macro_lengths_ = 0;
+  void add_macro(std::string_view name, std::unique_ptr<Macro> macro) {
+    const auto initial = name.empty() ? 0u : static_cast<unsigned char>(name[0]);
+    macro_initials_[initial >> 6] |= std::uint64_t{1} << (initial & 63u);
+    macro_lengths_ |= std::uint64_t{1} << std::min<std::size_t>(name.size(), 63);
+    macros_.emplace(name, std::move(macro));
+  }
   std::unordered_map<std::string, FileId> loaded_files_;
   std::unordered_set<std::string> once_files_;
   Stream main_stream_{{}, true};

@@ -95,6 +95,32 @@ SourceRange sub_range(SourceRange r, std::uint32_t begin, std::uint32_t end) {
   return out;
 }
 
+struct KindVerdict {
+  bool ready = false;
+  T kind = T::Unknown;
+  QK qual = QK::Storage;
+  std::string_view spelling;
+};
+
+PToken classify_keyword(std::string_view text, SourceRange range, TokenKind kind);
+
+// What append_lexer_token gives a keyword or punctuator of each kind spelled as the kind is.
+const std::vector<KindVerdict>& classified_by_kind() {
+  static const std::vector<KindVerdict> table = [] {
+    std::vector<KindVerdict> out(kTokenKindCount);
+    for (std::size_t i = 0; i < kTokenKindCount; ++i) {
+      const auto kind = static_cast<TokenKind>(i);
+      if (!is_keyword(kind) && !is_punctuator(kind)) continue;
+      const std::string_view spelling = token_kind_spelling(kind);
+      if (spelling.empty() || spelling == ">>" || spelling == ">>=") continue;
+      const PToken t = is_keyword(kind) ? classify_keyword(spelling, {}, kind) : classify(spelling, {});
+      out[i] = KindVerdict{true, t.kind, t.qual, spelling};
+    }
+    return out;
+  }();
+  return table;
+}
+
 }  // namespace
 
 PToken classify(std::string_view text, SourceRange range) {
@@ -118,6 +144,23 @@ PToken classify(std::string_view text, SourceRange range) {
   return t;
 }
 
+namespace {
+
+PToken classify_keyword(std::string_view text, SourceRange range, TokenKind kind) {
+  PToken t = classify(text, range);
+  if (t.kind == T::Ident) {  // a keyword this parser has no special rule for
+    KeywordCategory category = keyword_category(kind);
+    if (category == KeywordCategory::type) t.kind = T::TypeKw;
+    if (category == KeywordCategory::qualifier) {
+      t.kind = T::QualKw;
+      t.qual = ast::QualifierKind::Memory;
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
 void append_lexer_token(std::vector<PToken>& out, const Token& token) {
   std::string_view text = token.text;
   SourceRange range = token.range;
@@ -139,17 +182,17 @@ void append_lexer_token(std::vector<PToken>& out, const Token& token) {
     case TokenKind::string_literal: t.kind = T::StringLit; out.push_back(t); return;
     default: break;
   }
-  if (is_keyword(token.kind)) {
-    t = classify(text, range);
-    if (t.kind == T::Ident) {  // a keyword this parser has no special rule for
-      KeywordCategory category = keyword_category(token.kind);
-      if (category == KeywordCategory::type) t.kind = T::TypeKw;
-      if (category == KeywordCategory::qualifier) {
-        t.kind = T::QualKw;
-        t.qual = ast::QualifierKind::Memory;
-      }
-    }
+  // Keywords and punctuators (but `>>` and `>>=`, which split) classify by their kind: the
+  // verdict on their spelling, looked up once per kind instead of hashed per token.
+  const auto& by_kind = classified_by_kind();
+  if (const KindVerdict& v = by_kind[static_cast<std::size_t>(token.kind)]; v.ready && text == v.spelling) {
+    t.kind = v.kind;
+    t.qual = v.qual;
     out.push_back(t);
+    return;
+  }
+  if (is_keyword(token.kind)) {
+    out.push_back(classify_keyword(text, range, token.kind));
     return;
   }
   if (!is_punctuator(token.kind)) {  // reserved words, invalid bytes, strings

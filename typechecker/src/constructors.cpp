@@ -122,6 +122,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
     // texture2D(...) and friends: a Vulkan texture type word in newer GLSL, a built-in function in older.
     if (const std::vector<Signature>* sigs = builtins_->find(e.constructor_type->name)) {
       std::vector<Value> args;
+      args.reserve(e.args.size());
       for (const ast::Expr* a : e.args) {
         args.push_back(expr(a));
         if (args.back().type.is_error()) return error_value(e.range);
@@ -131,6 +132,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
   }
   Type t = resolve_type(e.constructor_type);
   std::vector<Value> args;
+  args.reserve(e.args.size());
   bool bad = t.is_error();
   for (const ast::Expr* a : e.args) {
     // A string literal (allowed by GL_EXT_debug_printf and GL_EXT_spirv_intrinsics) has no numeric
@@ -146,7 +148,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
   Value out;
   out.range = e.range;
   out.type = t;
-  const std::string what = name_of(t);
+  const auto what = [&] { return name_of(t); };  // for messages only: most constructors check
   auto fail = [&](SourceRange r, const std::string& message, const std::string& hint = {}, const char* code = code::E_CONSTRUCTOR) {
     Diagnostic d = Diagnostic::error(r, message).with_code(code);
     if (!hint.empty()) d.with_hint(hint);
@@ -157,7 +159,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
   if (t.is_array()) {
     if (t.array[0] < 0) out.type.array[0] = static_cast<int>(args.size());
     else if (static_cast<std::size_t>(t.array[0]) != args.size())
-      return fail(e.range, "array constructor of " + what + " needs " + std::to_string(t.array[0]) + " arguments, found " +
+      return fail(e.range, "array constructor of " + what() + " needs " + std::to_string(t.array[0]) + " arguments, found " +
                                std::to_string(args.size()));
     const Type element = out.type.element();
     for (const Value& a : args)
@@ -192,27 +194,27 @@ Value Checker::constructor(const ast::CallExpr& e) {
   }
   if (t.shape == Shape::opaque && combined_sampler(t, args)) return out;
   if (t.shape == Shape::opaque && args.size() == 2 && t.opaque.find("sampler") != std::string::npos)
-    return fail(e.range, what + " is made from a " + texture_of_sampler(t.opaque) + " and a sampler or samplerShadow, not from " +
+    return fail(e.range, what() + " is made from a " + texture_of_sampler(t.opaque) + " and a sampler or samplerShadow, not from " +
                              glsl_name(args[0].type) + " and " + glsl_name(args[1].type));
   // GL_EXT_ray_tracing: an acceleration structure from its device address.
   if (t.opaque == "accelerationStructureEXT" && args.size() == 1 && is_address(args[0].type)) return out;
-  if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what);
-  if (args.empty()) return fail(e.range, "constructor of " + what + " needs arguments");
+  if (t.shape == Shape::opaque || t.shape == Shape::void_) return fail(e.range, "cannot construct " + what());
+  if (args.empty()) return fail(e.range, "constructor of " + what() + " needs arguments");
 
   // GLSL: one scalar (splat / diagonal), one matrix (resize), or enough components.
   int components = 0;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const Type& a = args[i].type;
     if (a.is_array() || !(a.shape == Shape::scalar || a.shape == Shape::vector || a.shape == Shape::matrix))
-      return fail(args[i].range, "cannot use " + name_of(a) + " to construct " + what);
+      return fail(args[i].range, "cannot use " + name_of(a) + " to construct " + what());
     if (components >= t.components() && t.shape != Shape::matrix)
-      return fail(args[i].range, "too many arguments to constructor of " + what);
+      return fail(args[i].range, "too many arguments to constructor of " + what());
     components += a.components();
   }
   const bool single = args.size() == 1;
   const Type& first = args[0].type;
   if (!single && components < t.components())
-    return fail(e.range, "too few components to construct " + what + " (" + std::to_string(components) + " of " +
+    return fail(e.range, "too few components to construct " + what() + " (" + std::to_string(components) + " of " +
                              std::to_string(t.components()) + ")");
   if (t.shape == Shape::matrix && !single && args.size() > 1)
     for (const Value& a : args)
@@ -235,7 +237,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
       if (!out.zero && !args[0].literal && quantity && to.is_known() &&
           !DimensionRegistry::same_scale(reg.scale(to.value), reg.scale(from.value))) {
         const double factor = reg.scale(from.value) / reg.scale(to.value);
-        Diagnostic d = Diagnostic::error(args[0].range, "a cast to " + what + " would read " + reg.format_units(from.value) +
+        Diagnostic d = Diagnostic::error(args[0].range, "a cast to " + what() + " would read " + reg.format_units(from.value) +
                                                             " as " + reg.format_units(to.value) + ": a cast keeps the number")
                            .with_code(code::E_UNIT_CAST);
         add_origin_note(d, args[0]);
@@ -251,7 +253,7 @@ Value Checker::constructor(const ast::CallExpr& e) {
     }
     if (std::optional<Type> frame = frame_constructor(t.plain(), args)) {  // mat3<tangent, world, rigid>(T, B, N)
       if (!consistent(frame->to, t.to))
-        return fail(e.range, "the columns of " + what + " are in " + name_of_space(frame->to) + ", not in " + name_of_space(t.to), "",
+        return fail(e.range, "the columns of " + what() + " are in " + name_of_space(frame->to) + ", not in " + name_of_space(t.to), "",
                     code::E_SPACE_MISMATCH);
       return out;
     }
@@ -262,11 +264,11 @@ Value Checker::constructor(const ast::CallExpr& e) {
       const DimSlot have = value_dimension(a.type, result_.registry);
       if (a.zero || a.literal || have.state == DimSlot::State::unknown) continue;
       if (!consistent(want, have) || (a.type.geometry != Geometry::none && a.type.geometry != Geometry::spectrum)) {
-        Diagnostic d = Diagnostic::error(a.range, "a component of type " + name_of(a.type) + " cannot build " + what)
+        Diagnostic d = Diagnostic::error(a.range, "a component of type " + name_of(a.type) + " cannot build " + what())
                            .with_code(code::E_DIMENSION_MISMATCH);
         add_origin_note(d, a);
         std::string hint = physics_hint(want, have);
-        d.with_hint(hint.empty() ? "to reinterpret a value, cast the whole of it: " + what + "(v)" : hint);
+        d.with_hint(hint.empty() ? "to reinterpret a value, cast the whole of it: " + what() + "(v)" : hint);
         report(std::move(d));
         return error_value(e.range);
       }

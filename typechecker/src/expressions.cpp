@@ -28,57 +28,68 @@ Scalar float_literal_scalar(std::string_view spelling) {
   return n >= 2 && (spelling[n - 1] | 0x20) == 'f' && (spelling[n - 2] | 0x20) == 'h' ? Scalar::float16_ : Scalar::float_;
 }
 
+// The value a use of `var` reads (one Value, returned in place: identifier() has other returns).
+Value variable_value(const Variable& var, const ast::IdentifierExpr& e) {
+  Value v;
+  v.type = var.type;
+  v.range = e.range;
+  v.pi_factor = var.pi_constant;
+  v.w_divided_at = var.w_divided_at;
+  v.lvalue = true;
+  v.read_only = var.read_only;
+  v.stage_output = var.stage_output;
+  v.pi_multiple = var.pi_multiple;
+  v.inverse_squares = var.inverse_squares;
+  v.length_of = var.length_of;
+  v.perpendicular_to = var.perpendicular_to;
+  v.unit_sign = var.unit_sign;
+  v.plane_normal = var.plane_normal;
+  v.constant = var.constant;
+  v.number = var.constant ? std::optional<double>(static_cast<double>(*var.constant)) : var.number;
+  v.name = e.name;
+  if (var.range.valid()) v.origin = var.origin;
+  return v;
+}
+
 }  // namespace
 
 Value Checker::expr(const ast::Expr* e) {
-  if (!e) return error_value({});
-  switch (e->kind) {
-    case ast::NodeKind::IdentifierExpr: return record(e, identifier(*static_cast<const ast::IdentifierExpr*>(e)));
-    case ast::NodeKind::LiteralExpr: return record(e, literal(*static_cast<const ast::LiteralExpr*>(e)));
-    case ast::NodeKind::UnaryExpr: return record(e, unary(*static_cast<const ast::UnaryExpr*>(e)));
-    case ast::NodeKind::BinaryExpr: return record(e, binary(*static_cast<const ast::BinaryExpr*>(e)));
-    case ast::NodeKind::AssignExpr: return record(e, assign(*static_cast<const ast::AssignExpr*>(e)));
-    case ast::NodeKind::TernaryExpr: return record(e, ternary(*static_cast<const ast::TernaryExpr*>(e)));
-    case ast::NodeKind::CallExpr: return record(e, call(*static_cast<const ast::CallExpr*>(e)));
-    case ast::NodeKind::IndexExpr: return record(e, index(*static_cast<const ast::IndexExpr*>(e)));
-    case ast::NodeKind::MemberExpr: return record(e, member(*static_cast<const ast::MemberExpr*>(e)));
-    case ast::NodeKind::MethodCallExpr: return record(e, method_call(*static_cast<const ast::MethodCallExpr*>(e)));
-    case ast::NodeKind::ConvertExpr: return record(e, convert(*static_cast<const ast::ConvertExpr*>(e)));
-    case ast::NodeKind::ParenExpr: {
-      Value v = expr(static_cast<const ast::ParenExpr*>(e)->inner);
-      v.range = e->range;
-      return record(e, v);
+  // Each kind's Value is built in place and recorded here, then returned without a copy or a move
+  // (a Value is large: passing it through record() cost a move per expression).
+  Value v = e == nullptr ? error_value({}) : [&]() -> Value {
+    switch (e->kind) {
+      case ast::NodeKind::IdentifierExpr: return identifier(*static_cast<const ast::IdentifierExpr*>(e));
+      case ast::NodeKind::LiteralExpr: return literal(*static_cast<const ast::LiteralExpr*>(e));
+      case ast::NodeKind::UnaryExpr: return unary(*static_cast<const ast::UnaryExpr*>(e));
+      case ast::NodeKind::BinaryExpr: return binary(*static_cast<const ast::BinaryExpr*>(e));
+      case ast::NodeKind::AssignExpr: return assign(*static_cast<const ast::AssignExpr*>(e));
+      case ast::NodeKind::TernaryExpr: return ternary(*static_cast<const ast::TernaryExpr*>(e));
+      case ast::NodeKind::CallExpr: return call(*static_cast<const ast::CallExpr*>(e));
+      case ast::NodeKind::IndexExpr: return index(*static_cast<const ast::IndexExpr*>(e));
+      case ast::NodeKind::MemberExpr: return member(*static_cast<const ast::MemberExpr*>(e));
+      case ast::NodeKind::MethodCallExpr: return method_call(*static_cast<const ast::MethodCallExpr*>(e));
+      case ast::NodeKind::ConvertExpr: return convert(*static_cast<const ast::ConvertExpr*>(e));
+      case ast::NodeKind::ParenExpr: {
+        Value inner = expr(static_cast<const ast::ParenExpr*>(e)->inner);
+        inner.range = e->range;
+        return inner;
+      }
+      case ast::NodeKind::InitializerList:
+        report(Diagnostic::error(e->range, "an initializer list can only initialize a declared variable").with_code(code::E_INIT_LIST));
+        return error_value(e->range);
+      default: return error_value(e->range);
     }
-    case ast::NodeKind::InitializerList:
-      report(Diagnostic::error(e->range, "an initializer list can only initialize a declared variable").with_code(code::E_INIT_LIST));
-      return record(e, error_value(e->range));
-    default: return record(e, error_value(e->range));
-  }
+  }();
+  if (e == nullptr) return v;
+  if (auto [at, inserted] = result_.types.try_emplace(e, v.type); !inserted) at->second = v.type;
+  return v;
 }
 
 Value Checker::identifier(const ast::IdentifierExpr& e) {
   if (const Variable* var = lookup(e.name)) {
     if (var->builtin && !builtin_available(e.name, e.range, false)) return error_value(e.range);
     symbols_.use_variable(e.name, e.range, var->range, var->type, var->builtin);
-    Value v;
-    v.type = var->type;
-    v.range = e.range;
-    v.pi_factor = var->pi_constant;
-    v.w_divided_at = var->w_divided_at;
-    v.lvalue = true;
-    v.read_only = var->read_only;
-    v.stage_output = var->stage_output;
-    v.pi_multiple = var->pi_multiple;
-    v.inverse_squares = var->inverse_squares;
-    v.length_of = var->length_of;
-    v.perpendicular_to = var->perpendicular_to;
-    v.unit_sign = var->unit_sign;
-    v.plane_normal = var->plane_normal;
-    v.constant = var->constant;
-    v.number = var->constant ? std::optional<double>(static_cast<double>(*var->constant)) : var->number;
-    v.name = e.name;
-    if (var->range.valid()) v.origin = var->origin;
-    return v;
+    return variable_value(*var, e);
   }
   if (const Unit* unit = result_.registry.find_unit(e.name)) {
     // A unit in an expression is a constant of its dimension (docs/language.md).
@@ -429,36 +440,38 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
                : std::string("cannot ") + action + " " + subject + " of type " + name_of(target) + " with a value of type " +
                      name_of(found);
   };
-  const std::string sentence = sentence_for(v);
-  const std::string kind_hint =
-      target.geometry == Geometry::rigidmap && v.geometry == Geometry::map && !value.non_unit_column.empty()
+  // Built only when a check fails: most assignments pass.
+  const auto sentence = [&] { return sentence_for(v); };
+  const auto kind_hint = [&]() -> std::string {
+    return target.geometry == Geometry::rigidmap && v.geometry == Geometry::map && !value.non_unit_column.empty()
           ? value.non_unit_column + " is a vector of unknown length, not a direction: normalize() it (a cross "
                                     "product of two directions has unit length only when they are perpendicular), or declare "
                                     "the frame without 'rigid'"
           : kind_mismatch_hint(target.geometry, v.geometry);
+  };
   // GLSL first: the representation must match, up to implicit scalar conversion.
   Type a = target, b = v;
   const bool unsized = !a.array.empty() && a.array[0] < 0 && !b.array.empty();
   if (unsized) a.array[0] = b.array[0];
   const bool scalar_ok = implicitly_converts(b.scalar, a.scalar);
   b.scalar = a.scalar;
-  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence, kind_hint, code::E_TYPE_MISMATCH);
+  if (!same_glsl_type(a, b) || !scalar_ok) return fail(sentence(), kind_hint(), code::E_TYPE_MISMATCH);
   if (target.shape == Shape::opaque || target.shape == Shape::structure) return true;
   // Geometric kind: an unannotated (kind-less) side is consistent with any kind.
   if (target.geometry != Geometry::none && v.geometry != Geometry::none && !kind_fits(v.geometry, target.geometry))
-    return fail(sentence, kind_hint, code::E_KIND_MISMATCH);
+    return fail(sentence(), kind_hint(), code::E_KIND_MISMATCH);
   if (is_map(target.geometry) && is_map(v.geometry) && target.normal_matrix != v.normal_matrix &&
       v.geometry != Geometry::rigidmap)
-    return fail(sentence, v.normal_matrix ? "the normal matrix (the inverse transpose) carries normals; the map itself is m"
+    return fail(sentence(), v.normal_matrix ? "the normal matrix (the inverse transpose) carries normals; the map itself is m"
                                           : "the normal matrix of m is transpose(inverse(m))",
                 code::E_KIND_MISMATCH);
   if (!consistent(target.from, v.from) || !consistent(target.to, v.to)) {
     const bool first = !consistent(target.from, v.from);
-    return fail(sentence, first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), code::E_SPACE_MISMATCH);
+    return fail(sentence(), first ? space_hint(target.from, v.from) : space_hint(target.to, v.to), code::E_SPACE_MISMATCH);
   }
   const DimSlot found = value_dimension(v, result_.registry);
   if (!value.zero && !consistent(target.dim, found) && !cosine_as_number(target.dim, found))
-    return fail(sentence, physics_hint(target.dim, inverse_square_reading(value).value_or(found), value.range),
+    return fail(sentence(), physics_hint(target.dim, inverse_square_reading(value).value_or(found), value.range),
                 code::E_DIMENSION_MISMATCH);
   if (std::optional<DimSlot> as_pi = pi_factor_misfit(target, value)) {
     Type shown = v;
@@ -479,10 +492,10 @@ bool Checker::check_assignable(const Type& target, const Value& value, SourceRan
                 "normalize it first: normalize(" + name + ")", code::E_KIND_MISMATCH);
   }
   if (orientations_clash(target.orientation, v.orientation))
-    return fail(sentence, orientation_hint(value, target.orientation), code::E_ORIENTATION);
+    return fail(sentence(), orientation_hint(value, target.orientation), code::E_ORIENTATION);
   if (target.texel && v.texel && !(glsl_name(*target.texel) == glsl_name(*v.texel) &&
                                    consistent(target.texel->dim, v.texel->dim)))
-    return fail(sentence, "", code::E_TEXEL_MISMATCH);
+    return fail(sentence(), "", code::E_TEXEL_MISMATCH);
   // A π constant (or a literal kπ) times known dimensions is not unannotated: pi_factor_misfit above
   // checked it against the target, as one of the quantities kπ measures.
   const bool checked_pi = value.pi_factor && std::abs(value.pi_factor->exponent) == 1 && value.pi_factor->known.is_known();
