@@ -45,6 +45,10 @@ MUTANTS = [
     ("lights.sgl", "return 4.0 * PI * r * r;", "return 4.0 * PI * r;", "E-DIMENSION-MISMATCH"),  # a sphere's area
     ("surface.sgl", "return Ray(surface.position + surface.normal * offset, direction);",
      "return Ray(surface.position + offset, direction);", "E-KIND-MISMATCH"),  # offset added to every coordinate
+    ("lights.sgl", "return lightChoiceProbability(light) * solidAngleDensity(1.0 / area, distance(origin, surface.position), cosLight);",
+     "return lightChoiceProbability(light);", "E-DIMENSION-MISMATCH"),  # the light's choice probability taken for its density (MIS)
+    ("lights.sgl", "lightChoiceProbability(frame.environmentLight) * uniformSpherePdf();",
+     "lightChoiceProbability(frame.environmentLight) * SPHERE_SOLID_ANGLE;", "E-DIMENSION-MISMATCH"),  # the sky's density inverted (times 4π sr)
 ]
 
 

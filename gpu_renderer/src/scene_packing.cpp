@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -47,6 +48,20 @@ void append_nodes(PackedScene& packed, const Bvh& bvh, std::uint32_t first_node)
 }
 
 std::uint32_t index_of(std::size_t i) { return static_cast<std::uint32_t>(i); }
+
+using Power = quantity<dim::power>;
+using Area = quantity<dim::area>;
+
+// What a diffuse emitter of `area` radiates: π·A·L per side (lights.cpp).
+Power emitted_power(const Radiance& radiance, Area area, bool two_sided) {
+  const Power one_side = sg::average(radiance) * area * (sg::pi * units::steradian * units::proj);
+  return two_sided ? 2.0f * one_side : one_side;
+}
+
+Area triangle_area(const Triangle& t) {
+  const Real3 p0 = kernel_point(t.p0);
+  return sg::from_raw<Area>(0.5f * render::kernel::length(render::kernel::cross(kernel_point(t.p1) - p0, kernel_point(t.p2) - p0)));
+}
 
 void pack_materials(const Scene& scene, PackedScene& packed) {
   for (const render::Material& material : scene.materials) {
@@ -197,13 +212,21 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
   append_nodes(packed, sphere_bvh, index_of(triangle_bvh.nodes().size()));
 
   // Primitives in leaf order; every emitting one is a light of its own.
+  // Each light's power (watts, averaged over the channels) for choosing
+  // lights in proportion to it, defined per kind as the CPU renderer's
+  // Lights (lights.cpp): an emitting triangle's is its share of its shape's.
+  std::vector<double> powers;
   for (std::uint32_t entry : triangle_bvh.take_primitive_order()) {
     const Triangle& t = triangles[entry];
     packed.triangle_vertex.insert(packed.triangle_vertex.end(), {t.p0, t.p1, t.p2});
     packed.triangle_shape.push_back(t.shape);
     const bool emits = scene.shapes[t.shape].emission.has_value();
     packed.triangle_light.push_back(emits ? index_of(packed.light_kind.size()) : kNone);
-    if (emits) add_light(packed, LightKind::triangle, index_of(packed.triangle_shape.size() - 1));
+    if (emits) {
+      add_light(packed, LightKind::triangle, index_of(packed.triangle_shape.size() - 1));
+      const render::Shape& shape = scene.shapes[t.shape];
+      powers.push_back(sg::raw(emitted_power(*shape.emission, triangle_area(t), shape.two_sided_emission)));
+    }
   }
   for (std::uint32_t entry : sphere_bvh.take_primitive_order()) {
     const Sphere& s = spheres[entry];
@@ -212,7 +235,12 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
     packed.sphere_shape.push_back(s.shape);
     const bool emits = scene.shapes[s.shape].emission.has_value();
     packed.sphere_light.push_back(emits ? index_of(packed.light_kind.size()) : kNone);
-    if (emits) add_light(packed, LightKind::sphere, index_of(packed.sphere_shape.size() - 1));
+    if (emits) {
+      add_light(packed, LightKind::sphere, index_of(packed.sphere_shape.size() - 1));
+      const render::Shape& shape = scene.shapes[s.shape];
+      const Area area = 4 * sg::pi * s.radius * s.radius;
+      powers.push_back(sg::raw(emitted_power(*shape.emission, area, shape.two_sided_emission)));
+    }
   }
 
   for (const render::PointLight& light : scene.point_lights) {
@@ -220,6 +248,7 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
     add_light(packed, LightKind::point, kNone);
     packed.light_position.back() = light.position;
     packed.light_intensity.back() = light.intensity;
+    powers.push_back(sg::raw(sg::average(light.intensity) * (4 * sg::pi * units::steradian)));
   }
   for (const render::SpotLight& light : scene.spot_lights) {
     add_light(packed, LightKind::spot, kNone);
@@ -228,20 +257,34 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
     packed.light_axis.back() = light.direction;
     packed.light_cos_cone[packed.light_cos_cone.size() - 2] = sg::cos(light.cone_angle);
     packed.light_cos_cone.back() = sg::cos(light.cone_angle - light.cone_delta);
+    // pbrt-v3's SpotLight::Power: the full cone at I, the falloff band at half.
+    const float cos_total = sg::cos(light.cone_angle), cos_start = sg::cos(light.cone_angle - light.cone_delta);
+    const auto cone = (2 * sg::pi * (1 - 0.5f * (cos_start + cos_total))) * units::steradian;
+    powers.push_back(sg::raw(sg::average(light.intensity) * cone));
   }
+  // The scene's bounding sphere, for the distant lights' and the sky's power.
+  const Length scene_radius = sg::from_raw<Length>(std::max(0.5f * render::kernel::length(scene_bounds.extent()),
+                                                            std::numeric_limits<float>::min()));
   for (const render::DistantLight& light : scene.distant_lights) {
     add_light(packed, LightKind::distant, kNone);
     packed.light_axis.back() = light.direction;
     packed.light_irradiance.back() = light.irradiance / units::proj;
+    // pbrt-v3's DistantLight::Power: the flux through a disc across the scene's bounding sphere.
+    powers.push_back(sg::raw(sg::average(light.irradiance) * (sg::pi * scene_radius * scene_radius)));
   }
   if (scene.environment) {
     if (scene.environment->map) packed.unsupported.push_back("environment map (its constant factor is used)");
     packed.frame.environment_light = index_of(packed.light_kind.size());
     packed.frame.environment_radiance = scene.environment->radiance;
     add_light(packed, LightKind::environment, kNone);
+    // The flux it sends into the scene's bounding sphere, π · L̄ · 4πr².
+    const Area sphere = 4 * sg::pi * scene_radius * scene_radius;
+    powers.push_back(sg::raw(sg::average(scene.environment->radiance) * sphere *
+                             (sg::pi * units::steradian * units::proj)));
   }
 
   packed.frame.light_count = index_of(packed.light_kind.size());
+  packed.light_cdf = light_cdf(powers);
   packed.frame.max_depth = static_cast<std::uint32_t>(scene.settings.max_depth);
   packed.frame.roulette_depth =
       scene.settings.russian_roulette ? static_cast<std::uint32_t>(scene.settings.russian_roulette_depth) : kNone;
@@ -255,6 +298,21 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
   packed.frame.ray_offset = sg::from_raw<Length>(1e-5f * std::max(largest, 1.0f));
   // Empty arrays still need one element: a storage buffer is never empty.
   return packed;
+}
+
+std::vector<float> light_cdf(const std::vector<double>& weights) {
+  double total = 0;
+  for (double w : weights) total += w;
+  const bool uniform = !(total > 0) || !std::isfinite(total);
+  std::vector<float> cdf;
+  cdf.reserve(weights.size());
+  double running = 0;
+  for (double w : weights) {
+    running += uniform ? 1.0 / static_cast<double>(weights.size()) : w / total;
+    cdf.push_back(static_cast<float>(running));
+  }
+  if (!cdf.empty()) cdf.back() = 1;
+  return cdf;
 }
 
 }  // namespace safegi::gpu

@@ -71,6 +71,9 @@ struct PackedScene {
   std::vector<DirectionWorld> light_axis;
   std::vector<float> light_cos_cone;                    // 2 per light, float<1>
   std::vector<NormalIrradiance> light_irradiance;
+  // The running sums of the lights' choice probabilities, in proportion to
+  // their power as the CPU renderer's (lights.cpp); the last is exactly 1.
+  std::vector<float> light_cdf;                         // float<1>
   // What the GPU renderer leaves out of this scene, one line each (textures,
   // media, motion, ...): the program prints them as warnings.
   std::vector<std::string> unsupported;
@@ -79,6 +82,11 @@ struct PackedScene {
 // Packs `scene` for an image of width × height. Throws std::runtime_error
 // when the scene has nothing the shaders can draw with.
 PackedScene pack_scene(const Scene& scene, int width, int height);
+
+// The running sums of `weights` over their total, the last exactly 1; all-zero
+// or non-finite weights give the uniform distribution (as the CPU renderer's
+// light_cdf).
+std::vector<float> light_cdf(const std::vector<double>& weights);
 
 // Calls visit(name, values) for every storage array, `name` being the block
 // member's name in the symbol table ("NodeLower.nodeLower").
@@ -113,6 +121,7 @@ void for_each_array(const PackedScene& p, Visitor&& visit) {
   visit(std::string_view("LightAxis.lightAxis"), p.light_axis);
   visit(std::string_view("LightCosCone.lightCosCone"), p.light_cos_cone);
   visit(std::string_view("LightIrradiance.lightIrradiance"), p.light_irradiance);
+  visit(std::string_view("LightCdf.lightCdf"), p.light_cdf);
 }
 
 }  // namespace safegi::gpu

@@ -89,7 +89,7 @@ void expect_matches_table(const PackedScene& packed) {
     const std::string space = member->contains("spaces") ? (*member)["spaces"][0].get<std::string>() : "";
     EXPECT_EQ(space, e.space);
   });
-  EXPECT_EQ(arrays, 29);
+  EXPECT_EQ(arrays, 30);
 }
 
 TEST(ScenePacking, CornellBoxArraysMatchTheSymbolTable) {
@@ -133,6 +133,34 @@ TEST(ScenePacking, LightsOfEveryKind) {
             static_cast<std::uint32_t>(LightKind::environment));
   const PackedScene phong = pack_scene(load("phong.json"), 40, 16);
   EXPECT_EQ(std::count(phong.light_kind.begin(), phong.light_kind.end(), static_cast<std::uint32_t>(LightKind::point)), 1);
+}
+
+// Lights are chosen in proportion to their power (as the CPU renderer's
+// Lights): the running sums end at 1, and two point lights' probabilities
+// are in the ratio of their mean intensities.
+TEST(ScenePacking, LightsAreChosenInProportionToPower) {
+  EXPECT_EQ(light_cdf({1, 3}), (std::vector<float>{0.25f, 1.0f}));
+  EXPECT_EQ(light_cdf({0, 0}), (std::vector<float>{0.5f, 1.0f}));
+  const render::Scene scene = load("many-lights.json");
+  const PackedScene packed = pack_scene(scene, 32, 20);
+  ASSERT_EQ(packed.light_cdf.size(), packed.frame.light_count);
+  EXPECT_EQ(packed.light_cdf.back(), 1.0f);
+  EXPECT_TRUE(std::is_sorted(packed.light_cdf.begin(), packed.light_cdf.end()));
+  auto probability = [&](std::size_t i) { return i == 0 ? packed.light_cdf[0] : packed.light_cdf[i] - packed.light_cdf[i - 1]; };
+  const auto first_point = static_cast<std::size_t>(
+      std::find(packed.light_kind.begin(), packed.light_kind.end(), static_cast<std::uint32_t>(LightKind::point)) -
+      packed.light_kind.begin());
+  ASSERT_GE(scene.point_lights.size(), 2u);
+  ASSERT_LE(first_point + scene.point_lights.size(), packed.light_cdf.size());
+  const double intensity0 = sg::raw(sg::average(scene.point_lights[0].intensity));
+  for (std::size_t k = 1; k < scene.point_lights.size(); ++k) {
+    const double ratio = sg::raw(sg::average(scene.point_lights[k].intensity)) / intensity0;
+    EXPECT_NEAR(probability(first_point + k) / probability(first_point), ratio, 1e-3 * ratio) << "point light " << k;
+  }
+  // The Cornell box's light: two triangles of one area, one half each.
+  const PackedScene box = pack_scene(load("cornell-box/cornell-box.json"), 16, 16);
+  ASSERT_EQ(box.light_cdf.size(), 2u);
+  EXPECT_NEAR(box.light_cdf[0], 0.5f, 1e-5f);
 }
 
 }  // namespace
