@@ -33,10 +33,10 @@ MUTANTS = [
      "E-SPACE-MISMATCH"),  # a shading-frame direction traced as a world one
     ("integrator.sgl", "direction<shading> wi = worldToShading * light.wi;",
      "direction<shading> wi = shadingToWorld * light.wi;", "E-SPACE-MISMATCH"),  # the frame applied backwards
-    ("lights.sgl", "chosen.radianceOverPdf = frame.environmentRadiance / chosen.pdf;",
-     "chosen.radianceOverPdf = frame.environmentRadiance * chosen.pdf;", "E-DIMENSION-MISMATCH"),  # times the pdf
-    ("integrator.sgl", "radiance += throughput * frame.environmentRadiance * weight;",
-     "radiance += throughput * frame.environmentRadiance * weight / previousPdf;", "E-DIMENSION-MISMATCH"),
+    ("lights.sgl", "chosen.radianceOverPdf = environmentRadianceTowards(sky.wi) / chosen.pdf;",
+     "chosen.radianceOverPdf = environmentRadianceTowards(sky.wi) * chosen.pdf;", "E-DIMENSION-MISMATCH"),  # times the pdf
+    ("integrator.sgl", "radiance += throughput * environmentRadianceTowards(ray.direction) * weight;",
+     "radiance += throughput * environmentRadianceTowards(ray.direction) * weight / previousPdf;", "E-DIMENSION-MISMATCH"),
     ("material_plastic.sgl", "specular * fresnelDielectric(dot(wi, h), eta) * torranceSparrow(alpha, wo, wi, h);",
      "specular * fresnelDielectric(dot(wi, h), eta) * torranceSparrow(alpha, wo, wi, h) * wi.z;",
      "E-DIMENSION-MISMATCH"),  # the cosine folded into the BRDF
@@ -47,8 +47,17 @@ MUTANTS = [
      "return Ray(surface.position + offset, direction);", "E-KIND-MISMATCH"),  # offset added to every coordinate
     ("lights.sgl", "return lightChoiceProbability(light) * solidAngleDensity(1.0 / area, distance(origin, surface.position), cosLight);",
      "return lightChoiceProbability(light);", "E-DIMENSION-MISMATCH"),  # the light's choice probability taken for its density (MIS)
-    ("lights.sgl", "lightChoiceProbability(frame.environmentLight) * uniformSpherePdf();",
-     "lightChoiceProbability(frame.environmentLight) * SPHERE_SOLID_ANGLE;", "E-DIMENSION-MISMATCH"),  # the sky's density inverted (times 4π sr)
+    ("lights.sgl", "return lightChoiceProbability(frame.environmentLight) * environmentDirectionPdf(wi);",
+     "return lightChoiceProbability(frame.environmentLight) * SPHERE_SOLID_ANGLE;", "E-DIMENSION-MISMATCH"),  # the sky's density inverted (times 4π sr)
+    ("environment.sgl", "return SkySample(worldFromSky() * w, mapDensity / solidAnglePerMapArea(sinTheta));",
+     "return SkySample(worldFromSky() * w, mapDensity);", "E-DIMENSION-MISMATCH"),  # the map's density without the sin θ Jacobian
+    ("environment.sgl", "return environmentMapDensity(p.uv) / solidAnglePerMapArea(p.sinTheta);",
+     "return environmentMapDensity(p.uv) * solidAnglePerMapArea(p.sinTheta);", "E-DIMENSION-MISMATCH"),  # the Jacobian inverted
+    ("environment.sgl", "return 2.0 * PI * PI * sinTheta * steradian;", "return 2.0 * PI * PI * sinTheta;",
+     "E-DIMENSION-MISMATCH"),  # the map's area stretch as a number
+    ("environment.sgl", "direction<sky> w = transpose(worldFromSky()) * wi;", "direction<sky> w = worldFromSky() * wi;",
+     "E-SPACE-MISMATCH"),  # the sky's rotation applied backwards
+    ("environment.sgl", "return SkySample(worldFromSky() * w,", "return SkySample(w,", "E-SPACE-MISMATCH"),  # a sky-frame direction used as a world one
 ]
 
 

@@ -47,6 +47,8 @@ void set_frame_constants(const vk::ComputePipeline& pipeline, vk::block_data& bl
   block.set(pipeline.member<std::uint32_t>("frame.environmentLight"), frame.environment_light);
   block.set(pipeline.member<Length>("frame.lensRadius"), frame.lens_radius);
   block.set(pipeline.member<Length>("frame.focusDistance"), frame.focus_distance);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentWidth"), frame.environment_width);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentHeight"), frame.environment_height);
 }
 
 std::string beside_program_or(const char* file, const char* build_path) {

@@ -139,9 +139,12 @@ TEST_P(GpuRenderScene, MeanMatchesSafegiRender) {
 // a spot, a constant sky, a spherical and a two-sided emitter, plastic;
 // many-lights.json: 25 point lights of different power, chosen in proportion
 // to it (with the uniform choice it was 4.4 % off in green at 128 spp and
-// needed ~512 spp). Not here: caustic.json is the photon integrator's.
+// needed ~512 spp); environment.json: a lat-long sky map with a small sun,
+// importance-sampled (marginal and conditional running sums, the sin θ
+// Jacobian), over glass, plastic and a Lambert ground. Not here: caustic.json
+// is the photon integrator's; materials.json's floor is an image texture.
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuRenderScene,
-                         testing::Values("phong.json", "mirror.json", "depth-of-field.json", "many-lights.json",
+                         testing::Values("phong.json", "mirror.json", "depth-of-field.json", "many-lights.json", "environment.json",
                                          SAFEGI_GPU_TESTDATA "/spot-sky-plastic.json"),
                          [](const testing::TestParamInfo<const char*>& info) {
                            std::string name = std::filesystem::path(info.param).stem().string();

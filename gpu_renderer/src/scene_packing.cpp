@@ -134,6 +134,51 @@ void add_light(PackedScene& packed, LightKind kind, std::uint32_t primitive) {
   packed.light_irradiance.push_back(NormalIrradiance{});
 }
 
+// The environment map (environment.sgl): texels padded by one with the map's
+// wrap, the sky's axes, and the piecewise-constant distribution the CPU
+// renderer's Environment draws from (each cell weighted by the luminance of
+// its 3 × 3 neighbourhood times sin θ, the map's area stretch). Returns the
+// sky's mean radiance over the sphere (for choosing lights by power).
+Radiance pack_environment_map(const render::EnvironmentLight& light, PackedScene& packed) {
+  const render::MipMap& map = *light.map;
+  const int width = map.width(0), height = map.height(0);
+  packed.frame.environment_width = index_of(static_cast<std::size_t>(width));
+  packed.frame.environment_height = index_of(static_cast<std::size_t>(height));
+  for (int y = -1; y <= height; ++y)
+    for (int x = -1; x <= width; ++x) packed.environment_texel.push_back(map.texel(0, x, y));
+  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(1, 0, 0)));
+  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(0, 1, 0)));
+  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(0, 0, 1)));
+  std::vector<double> weights(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  std::vector<double> row_sums(static_cast<std::size_t>(height));
+  Reflectance texel_sum{};
+  double sin_sum = 0, total = 0;
+  for (int y = 0; y < height; ++y) {
+    const double sin_theta = std::sin(3.14159265358979 * (y + 0.5) / height);
+    for (int x = 0; x < width; ++x) {
+      double sum = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) sum += sg::raw(sg::luminance(map.texel(0, x + dx, y + dy)));
+      const double w = sum / 9 * sin_theta;
+      weights[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = w;
+      row_sums[static_cast<std::size_t>(y)] += w;
+      total += w;
+      texel_sum += map.texel(0, x, y) * static_cast<float>(sin_theta);
+    }
+    sin_sum += sin_theta * width;
+  }
+  packed.environment_row_cdf = light_cdf(row_sums);
+  const double cells = static_cast<double>(width) * height;
+  for (int y = 0; y < height; ++y) {
+    const auto first = weights.begin() + static_cast<std::ptrdiff_t>(y) * width;
+    const std::vector<float> row = light_cdf(std::vector<double>(first, first + width));
+    packed.environment_column_cdf.insert(packed.environment_column_cdf.end(), row.begin(), row.end());
+  }
+  for (double w : weights)
+    packed.environment_density.push_back(static_cast<float>(total > 0 ? w / total * cells : 1.0));
+  return light.radiance * (texel_sum / static_cast<float>(sin_sum));
+}
+
 void pack_camera(const Scene& scene, int width, int height, FrameValues& frame) {
   const render::Camera& camera = scene.camera;
   frame.camera_position = camera.position;
@@ -273,13 +318,14 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
     powers.push_back(sg::raw(sg::average(light.irradiance) * (sg::pi * scene_radius * scene_radius)));
   }
   if (scene.environment) {
-    if (scene.environment->map) packed.unsupported.push_back("environment map (its constant factor is used)");
     packed.frame.environment_light = index_of(packed.light_kind.size());
     packed.frame.environment_radiance = scene.environment->radiance;
     add_light(packed, LightKind::environment, kNone);
+    const Radiance average =
+        scene.environment->map ? pack_environment_map(*scene.environment, packed) : scene.environment->radiance;
     // The flux it sends into the scene's bounding sphere, π · L̄ · 4πr².
     const Area sphere = 4 * sg::pi * scene_radius * scene_radius;
-    powers.push_back(sg::raw(sg::average(scene.environment->radiance) * sphere *
+    powers.push_back(sg::raw(sg::average(average) * sphere *
                              (sg::pi * units::steradian * units::proj)));
   }
 

@@ -47,6 +47,7 @@ struct FrameValues {
   std::uint32_t light_count = 0, max_depth = 0, roulette_depth = 0;
   std::uint32_t environment_light = kNone;
   Length lens_radius = sg::zero, focus_distance = sg::zero;
+  std::uint32_t environment_width = 0, environment_height = 0;  // 0: a constant sky
 };
 
 struct PackedScene {
@@ -74,6 +75,13 @@ struct PackedScene {
   // The running sums of the lights' choice probabilities, in proportion to
   // their power as the CPU renderer's (lights.cpp); the last is exactly 1.
   std::vector<float> light_cdf;                         // float<1>
+  // The environment map, when the sky has one (environment.sgl): its texels
+  // padded by one all round ((width + 2) × (height + 2), the map's wrap
+  // applied), the sky's frame (three world axes), the running sums of the
+  // rows' shares and of each row's cells', each cell's density per map area.
+  std::vector<Reflectance> environment_texel;
+  std::vector<DirectionWorld> environment_axis;
+  std::vector<float> environment_row_cdf, environment_column_cdf, environment_density;  // float<1>
   // What the GPU renderer leaves out of this scene, one line each (textures,
   // media, motion, ...): the program prints them as warnings.
   std::vector<std::string> unsupported;
@@ -122,6 +130,11 @@ void for_each_array(const PackedScene& p, Visitor&& visit) {
   visit(std::string_view("LightCosCone.lightCosCone"), p.light_cos_cone);
   visit(std::string_view("LightIrradiance.lightIrradiance"), p.light_irradiance);
   visit(std::string_view("LightCdf.lightCdf"), p.light_cdf);
+  visit(std::string_view("EnvironmentTexel.environmentTexel"), p.environment_texel);
+  visit(std::string_view("EnvironmentAxis.environmentAxis"), p.environment_axis);
+  visit(std::string_view("EnvironmentRowCdf.environmentRowCdf"), p.environment_row_cdf);
+  visit(std::string_view("EnvironmentColumnCdf.environmentColumnCdf"), p.environment_column_cdf);
+  visit(std::string_view("EnvironmentDensity.environmentDensity"), p.environment_density);
 }
 
 }  // namespace safegi::gpu

@@ -89,7 +89,7 @@ void expect_matches_table(const PackedScene& packed) {
     const std::string space = member->contains("spaces") ? (*member)["spaces"][0].get<std::string>() : "";
     EXPECT_EQ(space, e.space);
   });
-  EXPECT_EQ(arrays, 30);
+  EXPECT_EQ(arrays, 35);
 }
 
 TEST(ScenePacking, CornellBoxArraysMatchTheSymbolTable) {
@@ -131,6 +131,21 @@ TEST(ScenePacking, LightsOfEveryKind) {
   ASSERT_NE(environment.frame.environment_light, kNone);
   EXPECT_EQ(environment.light_kind[environment.frame.environment_light],
             static_cast<std::uint32_t>(LightKind::environment));
+  // Its map: padded texels, three axes, a distribution whose densities per
+  // map area average 1 (the map square has area 1).
+  const std::size_t width = environment.frame.environment_width, height = environment.frame.environment_height;
+  ASSERT_GT(width * height, 0u);
+  EXPECT_EQ(environment.environment_texel.size(), (width + 2) * (height + 2));
+  EXPECT_EQ(environment.environment_axis.size(), 3u);
+  ASSERT_EQ(environment.environment_row_cdf.size(), height);
+  ASSERT_EQ(environment.environment_column_cdf.size(), width * height);
+  EXPECT_EQ(environment.environment_row_cdf.back(), 1.0f);
+  double density_sum = 0;
+  for (float d : environment.environment_density) density_sum += d;
+  EXPECT_NEAR(density_sum / static_cast<double>(width * height), 1.0, 1e-4);
+  EXPECT_TRUE(environment.unsupported.empty() ||
+              std::none_of(environment.unsupported.begin(), environment.unsupported.end(),
+                           [](const std::string& s) { return s.find("environment map") != std::string::npos; }));
   const PackedScene phong = pack_scene(load("phong.json"), 40, 16);
   EXPECT_EQ(std::count(phong.light_kind.begin(), phong.light_kind.end(), static_cast<std::uint32_t>(LightKind::point)), 1);
 }
