@@ -58,6 +58,8 @@ MUTANTS = [
     ("environment.sgl", "direction<sky> w = transpose(worldFromSky()) * wi;", "direction<sky> w = worldFromSky() * wi;",
      "E-SPACE-MISMATCH"),  # the sky's rotation applied backwards
     ("environment.sgl", "return SkySample(worldFromSky() * w,", "return SkySample(w,", "E-SPACE-MISMATCH"),  # a sky-frame direction used as a world one
+    ("surface.sgl", "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / determinant : 0.0;",
+     "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / d11 : 0.0;", "E-DIMENSION-MISMATCH"),  # a barycentric weight not normalised
 ]
 
 

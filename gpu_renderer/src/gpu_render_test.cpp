@@ -141,10 +141,13 @@ TEST_P(GpuRenderScene, MeanMatchesSafegiRender) {
 // to it (with the uniform choice it was 4.4 % off in green at 128 spp and
 // needed ~512 spp); environment.json: a lat-long sky map with a small sun,
 // importance-sampled (marginal and conditional running sums, the sin θ
-// Jacobian), over glass, plastic and a Lambert ground. Not here: caustic.json
-// is the photon integrator's; materials.json's floor is an image texture.
+// Jacobian), over glass, plastic and a Lambert ground; materials.json: an
+// image-textured floor (the GPU looks up level 0 bilinearly, the CPU filters
+// its MIP pyramid: the same mean), glass and plastic spheres. Not here:
+// caustic.json is the photon integrator's.
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuRenderScene,
                          testing::Values("phong.json", "mirror.json", "depth-of-field.json", "many-lights.json", "environment.json",
+                                         "materials.json",
                                          SAFEGI_GPU_TESTDATA "/spot-sky-plastic.json"),
                          [](const testing::TestParamInfo<const char*>& info) {
                            std::string name = std::filesystem::path(info.param).stem().string();

@@ -1,6 +1,7 @@
 #include "scene_packing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -21,6 +22,7 @@ using render::kernel::WideBvhNode;
 struct Triangle {
   PointWorld p0, p1, p2;
   std::uint32_t shape;
+  std::array<float, 6> uv;  // the corners' (u, v)
 };
 struct Sphere {
   PointWorld center;
@@ -63,14 +65,44 @@ Area triangle_area(const Triangle& t) {
   return sg::from_raw<Area>(0.5f * render::kernel::length(render::kernel::cross(kernel_point(t.p1) - p0, kernel_point(t.p2) - p0)));
 }
 
+// The scene's image textures (texture.sgl): level 0 of each MIP pyramid,
+// padded by one texel with its wrap; its uv mapping, or none (kNone) for the
+// mappings the GPU lacks.
+std::vector<std::uint32_t> pack_textures(const Scene& scene, PackedScene& packed) {
+  std::vector<std::uint32_t> index(scene.textures.size(), kNone);
+  for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+    const render::ImageTexture& texture = scene.textures[i];
+    if (!texture.mipmap) continue;
+    if (texture.mapping.kind != render::Mapping2D::Kind::uv) {
+      packed.unsupported.push_back("texture '" + texture.name + "': not a uv mapping (its material's constant factor is used)");
+      continue;
+    }
+    const render::MipMap& map = *texture.mipmap;
+    const int width = map.width(0), height = map.height(0);
+    index[i] = index_of(packed.texture_width.size());
+    packed.texture_first_texel.push_back(index_of(packed.texture_texel.size()));
+    packed.texture_width.push_back(index_of(static_cast<std::size_t>(width)));
+    packed.texture_height.push_back(index_of(static_cast<std::size_t>(height)));
+    for (int y = -1; y <= height; ++y)
+      for (int x = -1; x <= width; ++x) packed.texture_texel.push_back(map.texel(0, x, y));
+    packed.texture_mapping.insert(packed.texture_mapping.end(), {texture.mapping.u_scale, texture.mapping.v_scale,
+                                                                 texture.mapping.u_offset, texture.mapping.v_offset});
+  }
+  return index;
+}
+
 void pack_materials(const Scene& scene, PackedScene& packed) {
+  const std::vector<std::uint32_t> texture_index = pack_textures(scene, packed);
   for (const render::Material& material : scene.materials) {
+    std::uint32_t texture = kNone;
     MaterialKind kind = MaterialKind::black;
     Reflectance diffuse{}, specular{}, transmittance{};
     float exponent = 1, alpha = 0, ior = 1.5f;
     bool swapped = false;
     auto note_texture = [&](const render::TexturedReflectance& r) {
-      if (r.textured())
+      if (r.texture >= 0 && texture_index[static_cast<std::size_t>(r.texture)] != kNone)
+        texture = texture_index[static_cast<std::size_t>(r.texture)];
+      else if (r.textured())
         packed.unsupported.push_back("material '" + material.name + "': texture (its constant factor is used)");
       return r.value;
     };
@@ -120,6 +152,7 @@ void pack_materials(const Scene& scene, PackedScene& packed) {
     packed.material_alpha.push_back(alpha);
     packed.material_ior.push_back(ior);
     packed.material_swapped_fresnel.push_back(swapped ? 1u : 0u);
+    packed.material_texture.push_back(kind == MaterialKind::black ? kNone : texture);
   }
 }
 
@@ -222,10 +255,18 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
                          index_of(s)});
       continue;
     }
-    for (std::size_t i = 0; i + 2 < shape.indices.size(); i += 3)
+    // A triangle's corners' (u, v): the shape's, or (0, 0), (1, 0), (1, 1) (as the CPU renderer's vertex_uv).
+    for (std::size_t i = 0; i + 2 < shape.indices.size(); i += 3) {
+      std::array<float, 6> uv{0, 0, 1, 0, 1, 1};
+      if (!shape.uvs.empty())
+        for (std::size_t k = 0; k < 3; ++k) {
+          uv[2 * k] = shape.uvs[shape.indices[i + k]].u;
+          uv[2 * k + 1] = shape.uvs[shape.indices[i + k]].v;
+        }
       triangles.push_back({shape.render_from_object(shape.positions[shape.indices[i]]),
                            shape.render_from_object(shape.positions[shape.indices[i + 1]]),
-                           shape.render_from_object(shape.positions[shape.indices[i + 2]]), index_of(s)});
+                           shape.render_from_object(shape.positions[shape.indices[i + 2]]), index_of(s), uv});
+    }
   }
   if (triangles.empty() && spheres.empty()) throw std::runtime_error("the scene has no shapes the GPU renderer draws");
 
@@ -265,6 +306,7 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
     const Triangle& t = triangles[entry];
     packed.triangle_vertex.insert(packed.triangle_vertex.end(), {t.p0, t.p1, t.p2});
     packed.triangle_shape.push_back(t.shape);
+    packed.triangle_uv.insert(packed.triangle_uv.end(), t.uv.begin(), t.uv.end());
     const bool emits = scene.shapes[t.shape].emission.has_value();
     packed.triangle_light.push_back(emits ? index_of(packed.light_kind.size()) : kNone);
     if (emits) {

@@ -82,6 +82,15 @@ struct PackedScene {
   std::vector<Reflectance> environment_texel;
   std::vector<DirectionWorld> environment_axis;
   std::vector<float> environment_row_cdf, environment_column_cdf, environment_density;  // float<1>
+  // Image textures (texture.sgl): each triangle's corners' (u, v), 6 per
+  // triangle in leaf order; each material's diffuse texture (kNone: none);
+  // every texture's texels padded by one all round, where each starts, its
+  // size, and its uv mapping (u scale, v scale, u offset, v offset).
+  std::vector<float> triangle_uv;                       // float<1>
+  std::vector<std::uint32_t> material_texture;
+  std::vector<Reflectance> texture_texel;
+  std::vector<std::uint32_t> texture_first_texel, texture_width, texture_height;
+  std::vector<float> texture_mapping;                   // float<1>, 4 per texture
   // What the GPU renderer leaves out of this scene, one line each (textures,
   // media, motion, ...): the program prints them as warnings.
   std::vector<std::string> unsupported;
@@ -135,6 +144,13 @@ void for_each_array(const PackedScene& p, Visitor&& visit) {
   visit(std::string_view("EnvironmentRowCdf.environmentRowCdf"), p.environment_row_cdf);
   visit(std::string_view("EnvironmentColumnCdf.environmentColumnCdf"), p.environment_column_cdf);
   visit(std::string_view("EnvironmentDensity.environmentDensity"), p.environment_density);
+  visit(std::string_view("TriangleUv.triangleUv"), p.triangle_uv);
+  visit(std::string_view("MaterialTexture.materialTexture"), p.material_texture);
+  visit(std::string_view("TextureTexel.textureTexel"), p.texture_texel);
+  visit(std::string_view("TextureFirstTexel.textureFirstTexel"), p.texture_first_texel);
+  visit(std::string_view("TextureWidth.textureWidth"), p.texture_width);
+  visit(std::string_view("TextureHeight.textureHeight"), p.texture_height);
+  visit(std::string_view("TextureMapping.textureMapping"), p.texture_mapping);
 }
 
 }  // namespace safegi::gpu
