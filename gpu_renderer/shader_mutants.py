@@ -60,6 +60,8 @@ MUTANTS = [
     ("environment.sgl", "return SkySample(worldFromSky() * w,", "return SkySample(w,", "E-SPACE-MISMATCH"),  # a sky-frame direction used as a world one
     ("surface.sgl", "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / determinant : 0.0;",
      "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / d11 : 0.0;", "E-DIMENSION-MISMATCH"),  # a barycentric weight not normalised
+    ("lights.sgl", "return 1.0 / (HEMISPHERE_SOLID_ANGLE * oneMinusCos);", "return 1.0 / oneMinusCos;",
+     "E-DIMENSION-MISMATCH"),  # the cone's density as a plain number (its 2π sr left out)
 ]
 
 

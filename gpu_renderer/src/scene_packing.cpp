@@ -83,6 +83,7 @@ std::vector<std::uint32_t> pack_textures(const Scene& scene, PackedScene& packed
     packed.texture_first_texel.push_back(index_of(packed.texture_texel.size()));
     packed.texture_width.push_back(index_of(static_cast<std::size_t>(width)));
     packed.texture_height.push_back(index_of(static_cast<std::size_t>(height)));
+    packed.texture_repeats.push_back(map.wrap() == render::TextureWrap::repeat ? 1u : 0u);
     for (int y = -1; y <= height; ++y)
       for (int x = -1; x <= width; ++x) packed.texture_texel.push_back(map.texel(0, x, y));
     packed.texture_mapping.insert(packed.texture_mapping.end(), {texture.mapping.u_scale, texture.mapping.v_scale,
@@ -179,9 +180,9 @@ Radiance pack_environment_map(const render::EnvironmentLight& light, PackedScene
   packed.frame.environment_height = index_of(static_cast<std::size_t>(height));
   for (int y = -1; y <= height; ++y)
     for (int x = -1; x <= width; ++x) packed.environment_texel.push_back(map.texel(0, x, y));
-  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(1, 0, 0)));
-  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(0, 1, 0)));
-  packed.environment_axis.push_back(light.render_from_light(direction<spaces::light>(0, 0, 1)));
+  packed.frame.sky_axis_x = light.render_from_light(direction<spaces::light>(1, 0, 0));
+  packed.frame.sky_axis_y = light.render_from_light(direction<spaces::light>(0, 1, 0));
+  packed.frame.sky_axis_z = light.render_from_light(direction<spaces::light>(0, 0, 1));
   std::vector<double> weights(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   std::vector<double> row_sums(static_cast<std::size_t>(height));
   Reflectance texel_sum{};
@@ -210,6 +211,35 @@ Radiance pack_environment_map(const render::EnvironmentLight& light, PackedScene
   for (double w : weights)
     packed.environment_density.push_back(static_cast<float>(total > 0 ? w / total * cells : 1.0));
   return light.radiance * (texel_sum / static_cast<float>(sin_sum));
+}
+
+// The arrays that share a buffer (PackedScene::number, texel, texture_info),
+// each from its offset.
+void pack_shared_arrays(PackedScene& packed) {
+  FrameValues& frame = packed.frame;
+  std::vector<float>& number = packed.number;
+  auto append = [&](std::uint32_t& first, const std::vector<float>& values) {
+    first = index_of(number.size());
+    number.insert(number.end(), values.begin(), values.end());
+  };
+  frame.material_numbers_first = index_of(number.size());
+  for (std::size_t m = 0; m < packed.material_exponent.size(); ++m)
+    number.insert(number.end(), {packed.material_exponent[m], packed.material_alpha[m], packed.material_ior[m]});
+  append(frame.light_cone_first, packed.light_cos_cone);
+  append(frame.light_cdf_first, packed.light_cdf);
+  append(frame.environment_row_cdf_first, packed.environment_row_cdf);
+  append(frame.environment_column_cdf_first, packed.environment_column_cdf);
+  append(frame.environment_density_first, packed.environment_density);
+  append(frame.triangle_uv_first, packed.triangle_uv);
+  append(frame.texture_mapping_first, packed.texture_mapping);
+  packed.texel = packed.environment_texel;
+  packed.texel.insert(packed.texel.end(), packed.texture_texel.begin(), packed.texture_texel.end());
+  packed.texture_info = packed.material_texture;
+  frame.texture_info_first = index_of(packed.texture_info.size());
+  for (std::size_t t = 0; t < packed.texture_width.size(); ++t)
+    packed.texture_info.insert(packed.texture_info.end(),
+                               {index_of(packed.environment_texel.size()) + packed.texture_first_texel[t],
+                                packed.texture_width[t], packed.texture_height[t], packed.texture_repeats[t]});
 }
 
 void pack_camera(const Scene& scene, int width, int height, FrameValues& frame) {
@@ -384,6 +414,7 @@ PackedScene pack_scene(const Scene& scene, int width, int height) {
                                   std::abs(scene_bounds.upper.y), std::abs(scene_bounds.upper.z), extent.x, extent.y,
                                   extent.z});
   packed.frame.ray_offset = sg::from_raw<Length>(1e-5f * std::max(largest, 1.0f));
+  pack_shared_arrays(packed);
   // Empty arrays still need one element: a storage buffer is never empty.
   return packed;
 }
