@@ -4,8 +4,8 @@
 // only the noise differs —
 //   * lights: both choose one in proportion to its power, the GPU each
 //     emitting triangle by its own power, the CPU a shape and then a triangle;
-//   * spherical emitters: the GPU samples their whole area, the CPU the cone
-//     they subtend;
+//   * spherical emitters: both sample the cone they subtend from outside,
+//     the GPU uniformly over the cone's solid angle;
 //   * random numbers: a PCG hash per pixel and sample, the CPU's own sampler;
 //   * Russian roulette: the GPU's survival is the throughput's largest
 //     channel, the CPU's divides glass's 1/η² out of it first.
