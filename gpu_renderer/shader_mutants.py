@@ -33,10 +33,10 @@ MUTANTS = [
      "E-SPACE-MISMATCH"),  # a shading-frame direction traced as a world one
     ("integrator.sgl", "direction<shading> wi = worldToShading * light.wi;",
      "direction<shading> wi = shadingToWorld * light.wi;", "E-SPACE-MISMATCH"),  # the frame applied backwards
-    ("lights.sgl", "chosen.radianceOverPdf = frame.environmentRadiance / chosen.pdf;",
-     "chosen.radianceOverPdf = frame.environmentRadiance * chosen.pdf;", "E-DIMENSION-MISMATCH"),  # times the pdf
-    ("integrator.sgl", "radiance += throughput * frame.environmentRadiance * weight;",
-     "radiance += throughput * frame.environmentRadiance * weight / previousPdf;", "E-DIMENSION-MISMATCH"),
+    ("lights.sgl", "chosen.radianceOverPdf = environmentRadianceTowards(sky.wi) / chosen.pdf;",
+     "chosen.radianceOverPdf = environmentRadianceTowards(sky.wi) * chosen.pdf;", "E-DIMENSION-MISMATCH"),  # times the pdf
+    ("integrator.sgl", "radiance += throughput * environmentRadianceTowards(ray.direction) * weight;",
+     "radiance += throughput * environmentRadianceTowards(ray.direction) * weight / previousPdf;", "E-DIMENSION-MISMATCH"),
     ("material_plastic.sgl", "specular * fresnelDielectric(dot(wi, h), eta) * torranceSparrow(alpha, wo, wi, h);",
      "specular * fresnelDielectric(dot(wi, h), eta) * torranceSparrow(alpha, wo, wi, h) * wi.z;",
      "E-DIMENSION-MISMATCH"),  # the cosine folded into the BRDF
@@ -45,6 +45,23 @@ MUTANTS = [
     ("lights.sgl", "return 4.0 * PI * r * r;", "return 4.0 * PI * r;", "E-DIMENSION-MISMATCH"),  # a sphere's area
     ("surface.sgl", "return Ray(surface.position + surface.normal * offset, direction);",
      "return Ray(surface.position + offset, direction);", "E-KIND-MISMATCH"),  # offset added to every coordinate
+    ("lights.sgl", "return lightChoiceProbability(light) * solidAngleDensity(1.0 / area, distance(origin, surface.position), cosLight);",
+     "return lightChoiceProbability(light);", "E-DIMENSION-MISMATCH"),  # the light's choice probability taken for its density (MIS)
+    ("lights.sgl", "return lightChoiceProbability(frame.environmentLight) * environmentDirectionPdf(wi);",
+     "return lightChoiceProbability(frame.environmentLight) * SPHERE_SOLID_ANGLE;", "E-DIMENSION-MISMATCH"),  # the sky's density inverted (times 4π sr)
+    ("environment.sgl", "return SkySample(worldFromSky() * w, mapDensity / solidAnglePerMapArea(sinTheta));",
+     "return SkySample(worldFromSky() * w, mapDensity);", "E-DIMENSION-MISMATCH"),  # the map's density without the sin θ Jacobian
+    ("environment.sgl", "return environmentMapDensity(p.uv) / solidAnglePerMapArea(p.sinTheta);",
+     "return environmentMapDensity(p.uv) * solidAnglePerMapArea(p.sinTheta);", "E-DIMENSION-MISMATCH"),  # the Jacobian inverted
+    ("environment.sgl", "return 2.0 * PI * PI * sinTheta * steradian;", "return 2.0 * PI * PI * sinTheta;",
+     "E-DIMENSION-MISMATCH"),  # the map's area stretch as a number
+    ("environment.sgl", "direction<sky> w = transpose(worldFromSky()) * wi;", "direction<sky> w = worldFromSky() * wi;",
+     "E-SPACE-MISMATCH"),  # the sky's rotation applied backwards
+    ("environment.sgl", "return SkySample(worldFromSky() * w,", "return SkySample(w,", "E-SPACE-MISMATCH"),  # a sky-frame direction used as a world one
+    ("surface.sgl", "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / determinant : 0.0;",
+     "float<1> b1 = determinant > 0.0 ? (d22 * d1 - d12 * d2) / d11 : 0.0;", "E-DIMENSION-MISMATCH"),  # a barycentric weight not normalised
+    ("lights.sgl", "return 1.0 / (HEMISPHERE_SOLID_ANGLE * oneMinusCos);", "return 1.0 / oneMinusCos;",
+     "E-DIMENSION-MISMATCH"),  # the cone's density as a plain number (its 2π sr left out)
 ]
 
 

@@ -47,6 +47,20 @@ void set_frame_constants(const vk::ComputePipeline& pipeline, vk::block_data& bl
   block.set(pipeline.member<std::uint32_t>("frame.environmentLight"), frame.environment_light);
   block.set(pipeline.member<Length>("frame.lensRadius"), frame.lens_radius);
   block.set(pipeline.member<Length>("frame.focusDistance"), frame.focus_distance);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentWidth"), frame.environment_width);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentHeight"), frame.environment_height);
+  block.set(pipeline.member<DirectionWorld>("frame.skyAxisX"), frame.sky_axis_x);
+  block.set(pipeline.member<DirectionWorld>("frame.skyAxisY"), frame.sky_axis_y);
+  block.set(pipeline.member<DirectionWorld>("frame.skyAxisZ"), frame.sky_axis_z);
+  block.set(pipeline.member<std::uint32_t>("frame.materialNumbersFirst"), frame.material_numbers_first);
+  block.set(pipeline.member<std::uint32_t>("frame.lightConeFirst"), frame.light_cone_first);
+  block.set(pipeline.member<std::uint32_t>("frame.lightCdfFirst"), frame.light_cdf_first);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentRowCdfFirst"), frame.environment_row_cdf_first);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentColumnCdfFirst"), frame.environment_column_cdf_first);
+  block.set(pipeline.member<std::uint32_t>("frame.environmentDensityFirst"), frame.environment_density_first);
+  block.set(pipeline.member<std::uint32_t>("frame.triangleUvFirst"), frame.triangle_uv_first);
+  block.set(pipeline.member<std::uint32_t>("frame.textureMappingFirst"), frame.texture_mapping_first);
+  block.set(pipeline.member<std::uint32_t>("frame.textureInfoFirst"), frame.texture_info_first);
 }
 
 std::string beside_program_or(const char* file, const char* build_path) {

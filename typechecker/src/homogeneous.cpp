@@ -291,11 +291,18 @@ std::optional<Type> Checker::frame_constructor(const Type& target, const std::ve
   bool unit = true;
   for (const Value& a : args) {
     const Type& c = a.type;
-    if (c.shape != Shape::vector || c.rows != 3 || !vectorish(c.geometry) || c.from.state != SpaceSlot::State::known) return std::nullopt;
+    if (c.shape != Shape::vector || c.rows != 3 || c.is_array()) return std::nullopt;
+    // A plain vec3 column (a tangent from an unannotated attribute, cross(n, vec3(0.0, 0.0, 1.0))) is
+    // gradual: it is taken to be an axis of the space the other columns are in.
+    const bool plain = c.geometry == Geometry::none && c.from.state == SpaceSlot::State::unknown &&
+                       (c.dim.state == DimSlot::State::unknown || (c.dim.is_known() && c.dim.value.is_dimensionless()));
+    if (plain) continue;
+    if (!vectorish(c.geometry) || c.from.state != SpaceSlot::State::known) return std::nullopt;
     if (space.state == SpaceSlot::State::known && !(space == c.from)) return std::nullopt;
     space = c.from;
     unit = unit && c.geometry != Geometry::vector;
   }
+  if (space.state != SpaceSlot::State::known) return std::nullopt;
   Type frame = target.plain();
   frame.geometry = unit ? Geometry::rigidmap : Geometry::map;
   frame.to = space;

@@ -4,6 +4,8 @@
 // carry or check the orientation; a stored, passed or returned value whose
 // orientation clashes with the declared one is E-ORIENTATION.
 
+#include <algorithm>
+#include <cctype>
 #include <safegi/parser/printer.hpp>
 
 #include "checker_impl.hpp"
@@ -187,6 +189,17 @@ bool Checker::written_reflection_ok(const Value& lhs, const Value& rhs, SourceRa
   return false;
 }
 
+namespace {
+
+// `lightTravel`, `incidentDir`: a name that says the direction travels toward the surface, as declared.
+bool named_as_travel(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name.find("travel") != std::string::npos || name.find("incid") != std::string::npos ||
+         name.find("propag") != std::string::npos;
+}
+
+}  // namespace
+
 // max(dot(n, d), 0.0) with d toward the surface is 0 wherever the surface faces d: the sign of
 // the cosine of incidence is the real bug (a light's travel direction not negated).
 bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Value>& args, SourceRange call_range) {
@@ -199,13 +212,24 @@ bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Va
   const bool angle = name == "acos";  // the angle to the other side, π − θ
   if (cosine == nullptr || (!zero_bound && !angle)) return true;
   std::string fixed;  // dot(n, -d) when the argument is the dot product itself
+  std::string declared;  // the annotation of a declared `toward` direction, which may be what is wrong
   if (const auto* call = ast::dyn_cast<ast::CallExpr>(without_parens(expression_at(cosine->range)));
       call && call->callee == "dot" && call->args.size() == 2) {
     for (std::size_t i = 0; i < 2; ++i) {
       const auto found = result_.types.find(call->args[i]);
-      if (found != result_.types.end() && found->second.orientation == Orientation::toward && found->second.geometry != Geometry::none)
+      if (found != result_.types.end() && found->second.orientation == Orientation::toward && found->second.geometry != Geometry::none) {
         fixed = "dot(" + (i == 0 ? reversed_expression(call->args[0]) + ", " + print_expression(*call->args[1])
                                  : print_expression(*call->args[0]) + ", " + reversed_expression(call->args[1])) + ")";
+        // A light direction declared `toward` by a reader who meant "toward the light".
+        if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(without_parens(call->args[i])))
+          if (const Variable* v = lookup(id->name);
+              v && !v->builtin && v->read_only && !v->origin.inferred && !named_as_travel(id->name)) {
+            Type away = found->second;
+            away.orientation = Orientation::away;
+            declared = "; or, if '" + id->name + "' points from the surface (to the light), declare it " + name_of(away) +
+                       ": 'toward' means pointing at the shaded point";
+          }
+      }
     }
   }
   const std::string between = "a cosine between the shaded point's normal and a direction toward the surface";
@@ -217,7 +241,7 @@ bool Checker::negative_cosine_kept(const std::string& name, const std::vector<Va
                      .with_highlight(call_range);
   add_origin_note(d, *cosine);
   d.with_hint("the cosine of incidence takes the direction away from the surface" +
-              (fixed.empty() ? std::string(": negate the direction toward it") : ": " + fixed));
+              (fixed.empty() ? std::string(": negate the direction toward it") : ": " + fixed) + declared);
   report(std::move(d));
   return false;
 }
