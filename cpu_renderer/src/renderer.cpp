@@ -21,6 +21,7 @@
 #include "printable.hpp"
 #include "sampler.hpp"
 #include "splat_film.hpp"
+#include "sppm.hpp"
 
 namespace safegi::render {
 
@@ -147,6 +148,7 @@ std::vector<PixelRect> render_tiles(int width, int height) {
 }
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  if (options.settings.integrator == IntegratorType::sppm) return render_sppm(scene, options, stats);
   Clock::time_point start = Clock::now();
   const RenderSettings& settings = options.settings;
   CropWindow window = options.crop.value_or(CropWindow{0, 0, settings.width, settings.height});
