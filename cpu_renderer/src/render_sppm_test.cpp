@@ -5,9 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
-#include <iostream>
 #include <string>
 
 #include "render_test_support.hpp"
@@ -18,17 +16,6 @@ namespace {
 
 using namespace test_support;
 
-// TUNING (temporary)
-int env_int(const char* n, int d) { const char* v = std::getenv(n); return v ? std::atoi(v) : d; }
-double env_double(const char* n, double d) { const char* v = std::getenv(n); return v ? std::atof(v) : d; }
-#define SPPM_CB_ITERATIONS env_int("CB_IT", 32)
-#define SPPM_CB_PHOTONS env_int("CB_PH", 4096)
-#define SPPM_CB_RADIUS env_double("CB_R", 0.1)
-#define SPPM_C_ITERATIONS env_int("C_IT", 32)
-#define SPPM_C_PHOTONS env_int("C_PH", 20000)
-#define SPPM_C_RADIUS env_double("C_R", 0.05)
-#define BDPT_SPP env_int("BDPT_SPP", 64)
-#define CAUSTIC_CROP env_int("CX", 12), env_int("CY", 16), env_int("CW", 8), env_int("CH", 6)
 
 // pbrt-v3's update, alpha = 2/3: with M photons found, N' = N + αM,
 // r'² = r² N'/(N + M), τ' = (τ + Φ) r'²/r²; with none, nothing shrinks.
@@ -72,7 +59,10 @@ std::function<void(RenderSettings&)> sppm_with(int iterations, int photons, doub
 }
 
 // Where both converge to one image (diffuse surfaces, an area light), SPPM's
-// is the path tracer's: the Cornell box at 32², up to 5 bounces.
+// is the path tracer's: the Cornell box at 32², up to 5 bounces, 32
+// iterations of 4096 photons from a 10 cm radius against 256 spp, channel
+// means within 3 % (measured: SPPM 1.0-1.1 % below, its bias from the radius
+// that is still shrinking, at walls' corners: 0.6 % after 128 iterations).
 TEST(RenderSppm, CornellBoxMatchesThePathTracer) {
   const std::filesystem::path folder = std::filesystem::path(SAFEGI_SCENES_DIR) / "cornell-box";
   const std::string text = read_text(folder / "cornell-box.json");
@@ -82,12 +72,11 @@ TEST(RenderSppm, CornellBoxMatchesThePathTracer) {
   const Image path = render_text(text, 256, 2, std::nullopt, small(IntegratorType::path), folder);
   const auto sppm = [&](RenderSettings& s) {
     small(IntegratorType::sppm)(s);
-    sppm_with(SPPM_CB_ITERATIONS, SPPM_CB_PHOTONS, SPPM_CB_RADIUS)(s);
+    sppm_with(32, 4096, 0.1)(s);
   };
   const Image image = render_text(text, 1, 2, std::nullopt, sppm, folder);
   for (int c = 0; c < 3; ++c) {
     const Estimate p = channel_estimate(path, c), q = channel_estimate(image, c);
-    std::cout << "channel " << c << ": path " << p.mean << " ± " << p.standard_error << ", sppm " << q.mean << "\n";
     EXPECT_NEAR(q.mean, p.mean, 0.03 * p.mean) << "channel " << c << ": path " << p.mean << ", sppm " << q.mean;
   }
 }
@@ -95,7 +84,12 @@ TEST(RenderSppm, CornellBoxMatchesThePathTracer) {
 // A point light above a glass sphere over a diffuse floor: under the sphere,
 // in its shadow, the floor is lit by the caustic alone (light → glass → floor
 // → camera), which the path tracer cannot sample (a point light is never hit)
-// and bdpt finds by light tracing. SPPM's mean over that patch against bdpt's.
+// and bdpt finds by light tracing. SPPM's mean over an 8×6-pixel patch there
+// (32 iterations of 20000 photons, 5 cm initial radius) within 5 % of bdpt's
+// at 128 spp. The patch mean holds the caustic's bright core, whose noise
+// sets the tolerance: over seeds 0-5 SPPM's spread 0.7 % and bdpt's 1.3 %
+// (64 spp), their means 0.1 % apart, the largest single difference 3.0 %;
+// the path tracer finds 0.03 % of it.
 TEST(RenderSppm, PointLightCausticUnderAGlassSphereMatchesBdpt) {
   const std::string scene = R"json({
     "render": {"resolution": [32, 32], "integrator": "sppm", "max_depth": 5},
@@ -106,17 +100,13 @@ TEST(RenderSppm, PointLightCausticUnderAGlassSphereMatchesBdpt) {
        "edge_v": ["6 m", "0 m", "0 m"]},
       {"type": "sphere", "material": "glass", "center": ["0 m", "0.8 m", "0 m"], "radius": "0.4 m"}],
     "lights": [{"type": "point", "position": ["0 m", "1.6 m", "0 m"], "intensity": "10 W/sr"}]})json";
-  const CropWindow caustic{CAUSTIC_CROP};
-  const Image full_sppm = render_text(scene, 1, 2, std::nullopt, sppm_with(SPPM_C_ITERATIONS, SPPM_C_PHOTONS, SPPM_C_RADIUS));
-  const Image full_bdpt = render_text(scene, BDPT_SPP, 2, std::nullopt, [](RenderSettings& s) { s.integrator = IntegratorType::bdpt; });
-  const Image full_path = render_text(scene, 16, 2, std::nullopt, [](RenderSettings& s) { s.integrator = IntegratorType::path; });
-  for (const auto* im : {&full_sppm, &full_bdpt, &full_path}) {
-    for (int y = 0; y < 32; y += 2) {
-      for (int x = 0; x < 32; x += 2) std::cout << (x >= caustic.x && x < caustic.x + caustic.width && y >= caustic.y && y < caustic.y + caustic.height ? "*" : " ") << std::min(99, int(10 * im->rgb[3 * (y * 32 + x)])) << " ";
-      std::cout << "\n";
-    }
-    std::cout << "\n";
-  }
+  const CropWindow caustic{12, 16, 8, 6};  // pixels of the 32² image
+  auto rendered = [&](int spp, const std::function<void(RenderSettings&)>& adjust) {
+    return render_text(scene, spp, 2, std::nullopt, adjust);
+  };
+  const Image full_sppm = rendered(1, sppm_with(32, 20000, 0.05));
+  const Image full_bdpt = rendered(128, [](RenderSettings& s) { s.integrator = IntegratorType::bdpt; });
+  const Image full_path = rendered(16, [](RenderSettings& s) { s.integrator = IntegratorType::path; });
   auto crop_mean = [&](const Image& im) {
     double sum = 0;
     for (int y = caustic.y; y < caustic.y + caustic.height; ++y)
@@ -124,9 +114,9 @@ TEST(RenderSppm, PointLightCausticUnderAGlassSphereMatchesBdpt) {
     return sum / (caustic.width * caustic.height);
   };
   const double sppm = crop_mean(full_sppm), bdpt = crop_mean(full_bdpt), path = crop_mean(full_path);
-  std::cout << "sppm " << sppm << " bdpt " << bdpt << " path " << path << "\n";
   EXPECT_NEAR(sppm, bdpt, 0.05 * bdpt);
-  EXPECT_LT(path, 0.2 * bdpt);
+  EXPECT_LT(path, 0.01 * bdpt);
+  EXPECT_GT(bdpt, 3.0);  // and brightly: ~5.4 W/(m2 sr), where the floor beside the shadow has ~0.5
 }
 
 }  // namespace
