@@ -4,8 +4,8 @@
 // path tracer cannot sample, against the bidirectional path tracer.
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <cstring>
+#include <filesystem>
+#include <functional>
 #include <string>
 
 #include "render_test_support.hpp"

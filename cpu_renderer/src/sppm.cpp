@@ -1,9 +1,11 @@
 #include "sppm.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -165,6 +167,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+uint64_t sppm_bytes(const RenderSettings& settings, uint64_t pixels) {
+  const uint64_t photons = settings.sppm_photons_per_iteration > 0
+                               ? static_cast<uint64_t>(settings.sppm_photons_per_iteration)
+                               : pixels;
+  const uint64_t deposits = photons * static_cast<uint64_t>(std::clamp(settings.max_depth, 1, 5));
+  return pixels * (sizeof(VisiblePoint) + sizeof(sppm::PixelStatistics) + 3 * sizeof(double)) +
+         deposits * (3 * sizeof(Deposit) + 3 * sizeof(uint32_t) + sizeof(int64_t));
+}
 
 std::optional<std::string> sppm_refusal(const Scene& scene) {
   if (scene.has_media())

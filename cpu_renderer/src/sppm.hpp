@@ -16,6 +16,7 @@
 // photons emitted in all: f Φ over an area, radiance, which the types check.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -62,6 +63,11 @@ inline Radiance indirect(const PixelStatistics& p, double photons) {
 
 // Why SPPM cannot render `scene` (none: it can): participating media or invisible surfaces.
 std::optional<std::string> sppm_refusal(const Scene& scene);
+
+// The bytes a render of `pixels` pixels holds beyond the film and the geometry:
+// each pixel's visible point and statistics, and an iteration's photon
+// deposits (counted at up to 5 per photon, in three copies, and their grid).
+uint64_t sppm_bytes(const RenderSettings& settings, uint64_t pixels);
 
 // The whole render under integrator sppm (render() dispatches here): a crop is
 // rendered, the pixel filter, time budget and partition are not used (every
