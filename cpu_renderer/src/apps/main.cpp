@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", resolution, "image size WIDTHxHEIGHT (default: the scene's)");
   app.add_option("--crop", crop, "render only the window X,Y,WIDTH,HEIGHT (pixels)");
   app.add_option("--time-budget", time_budget, "render until this many seconds are spent")->check(CLI::PositiveNumber);
-  app.add_option("--integrator", integrator, "direct, path, photon or bdpt (default: the scene's)")
-      ->check(CLI::IsMember({"direct", "path", "photon", "bdpt"}));
+  app.add_option("--integrator", integrator, "direct, path, photon, bdpt or sppm (default: the scene's)")
+      ->check(CLI::IsMember({"direct", "path", "photon", "bdpt", "sppm"}));
   int photons = 0;
   double photon_radius = 0;
   app.add_option("--photons", photons, "photons traced by the photon integrator (default: the scene's, 200000)")
@@ -104,6 +104,7 @@ int main(int argc, char** argv) {
       options.settings.integrator = integrator == "direct"   ? IntegratorType::direct
                                     : integrator == "path"   ? IntegratorType::path
                                     : integrator == "photon" ? IntegratorType::photon
+                                    : integrator == "sppm"   ? IntegratorType::sppm
                                                              : IntegratorType::bdpt;
     if (photons > 0) options.settings.photons = photons;
     if (photon_radius > 0) options.settings.photon_radius = static_cast<Real>(photon_radius) * units::metre;
@@ -179,7 +180,8 @@ int main(int argc, char** argv) {
           session.ranks(), stats.threads, seed,
           used.integrator == IntegratorType::direct ? "direct"
           : used.integrator == IntegratorType::path ? "path"
-          : used.integrator == IntegratorType::photon ? "photon" : "bdpt",
+          : used.integrator == IntegratorType::photon ? "photon"
+          : used.integrator == IntegratorType::sppm ? "sppm" : "bdpt",
           used.max_depth,
           used.mis ? "true" : "false", used.light_samples, name_of(used.light_strategy), used.russian_roulette ? "true" : "false",
           used.russian_roulette_depth, stats.seconds, render_cpu_seconds, busiest_rank_cpu_seconds, process_cpu_seconds,

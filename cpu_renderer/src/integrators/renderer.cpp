@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "integrators/bdpt.hpp"
+#include "integrators/sppm.hpp"
 #include "scene/camera.hpp"
 #include "accel/geometry.hpp"
 #include "integrators/integrator.hpp"
@@ -147,6 +148,7 @@ std::vector<PixelRect> render_tiles(int width, int height) {
 }
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  if (options.settings.integrator == IntegratorType::sppm) return render_sppm(scene, options, stats);
   Clock::time_point start = Clock::now();
   const RenderSettings& settings = options.settings;
   CropWindow window = options.crop.value_or(CropWindow{0, 0, settings.width, settings.height});

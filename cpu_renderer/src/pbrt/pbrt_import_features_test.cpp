@@ -700,39 +700,31 @@ TEST(PbrtImport, SurfacesWithoutMaterialOccludeLightWhereThePbrtV3IntegratorSays
   EXPECT_FALSE(import(world(used("Material \"matte\""))).scene.shapes[0].occludes_light);  // visible: blocks as any surface
 }
 
-// pbrt-v3's SPPM traces "iterations" (older: "numiterations", default 64)
-// passes of "photonsperiteration" photons (default: the cropped film's pixels);
-// the photon integrator traces as many in its one map, at most 2^24.
-TEST(PbrtImport, SppmIterationsCountThePhotonsTraced) {
-  const std::string film = "Film \"image\" \"integer xresolution\" 40 \"integer yresolution\" 30\n";
-  PbrtScene given = import("Integrator \"sppm\" \"integer iterations\" 10 \"integer photonsperiteration\" 5000\n" + world(""));
-  EXPECT_EQ(given.scene.settings.photons, 50000);
-  EXPECT_EQ(given.warnings.find("not used"), std::string::npos) << given.warnings;
-  // "iterations" wins over "numiterations", as in pbrt-v3.
-  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3 \"integer iterations\" 7 "
-                   "\"integer photonsperiteration\" 100\n" + world(""))
-                .scene.settings.photons,
-            700);
-  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3 \"integer photonsperiteration\" 100\n" + world(""))
-                .scene.settings.photons,
-            300);
-  // Defaults: 64 iterations of one photon per pixel, of the film whether it comes before or after.
-  EXPECT_EQ(import("Integrator \"sppm\"\n" + film + world("")).scene.settings.photons, 64 * 40 * 30);
-  EXPECT_EQ(import(film + "Integrator \"sppm\" \"integer photonsperiteration\" -1\n" + world("")).scene.settings.photons,
-            64 * 40 * 30);
-  EXPECT_EQ(import("Film \"image\" \"integer xresolution\" 40 \"integer yresolution\" 30 \"float cropwindow\" [0 0.5 0 1]\n"
-                   "Integrator \"sppm\" \"integer iterations\" 2\n" + world(""))
-                .scene.settings.photons,
-            2 * 20 * 30);
-  // More than one map takes: capped, with a warning.
-  PbrtScene many = import("Integrator \"sppm\" \"integer iterations\" 1000 \"integer photonsperiteration\" 1000000\n" + world(""));
-  EXPECT_EQ(many.scene.settings.photons, 1 << 24);
-  EXPECT_NE(many.warnings.find("scene.pbrt:1:12: warning: sppm's 1000 iterations of 1000000 photons: tracing 16777216 of them"),
-            std::string::npos)
-      << many.warnings;
-  // Another integrator keeps the photon integrator's own default.
-  EXPECT_EQ(import("Integrator \"sppm\" \"integer iterations\" 2\nIntegrator \"path\"\n" + world("")).scene.settings.photons,
-            RenderSettings{}.photons);
+// pbrt-v3's SPPM is ours (integrator sppm): "iterations" (older:
+// "numiterations", default 64) passes of "photonsperiteration" photons
+// (default -1: the film's pixels, counted when rendering), from visible points
+// of initial "radius" (default 1, in scene units), read without a warning.
+TEST(PbrtImport, SppmReadsItsParameters) {
+  PbrtScene given = import("Integrator \"sppm\" \"integer iterations\" 10 \"integer photonsperiteration\" 5000 "
+                           "\"float radius\" 0.25 \"integer maxdepth\" 7 \"integer imagewritefrequency\" 3\n" + world(""));
+  EXPECT_EQ(given.scene.settings.integrator, IntegratorType::sppm);
+  EXPECT_EQ(given.scene.settings.sppm_iterations, 10);
+  EXPECT_EQ(given.scene.settings.sppm_photons_per_iteration, 5000);
+  EXPECT_FLOAT_EQ(sg::raw(given.scene.settings.sppm_radius), 0.25f);  // metres: one scene unit is a metre here
+  EXPECT_EQ(given.scene.settings.max_depth, 7);
+  EXPECT_EQ(given.warnings, "");
+  // "iterations" wins over "numiterations", as in pbrt-v3; "numiterations" alone counts.
+  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3 \"integer iterations\" 7\n" + world(""))
+                .scene.settings.sppm_iterations,
+            7);
+  EXPECT_EQ(import("Integrator \"sppm\" \"integer numiterations\" 3\n" + world("")).scene.settings.sppm_iterations, 3);
+  // Defaults: 64 iterations of one photon per pixel (-1), radius 1, depth 5.
+  PbrtScene plain = import("Integrator \"sppm\"\n" + world(""));
+  EXPECT_EQ(plain.scene.settings.sppm_iterations, 64);
+  EXPECT_EQ(plain.scene.settings.sppm_photons_per_iteration, -1);
+  EXPECT_FLOAT_EQ(sg::raw(plain.scene.settings.sppm_radius), 1.0f);
+  EXPECT_EQ(plain.scene.settings.max_depth, 5);
+  EXPECT_EQ(plain.warnings, "");
 }
 
 // pbrt-v3's integrators we do not have render with the nearest we do, and a
@@ -753,11 +745,11 @@ TEST(PbrtImport, MissingIntegratorsAreSubstitutedByName) {
             "Integrator \"bdpt\" \"integer maxdepth\" 7\n           ^~~~~~\n"
             "help: the same image in expectation except caustics of point and spot lights seen through specular "
             "surfaces, which the path tracer cannot sample\n");
+  // sppm is ours: no substitution.
   PbrtScene sppm = import("Integrator \"sppm\" \"integer numiterations\" 64 \"float radius\" 0.05\n" + world(""));
-  EXPECT_EQ(sppm.scene.settings.integrator, IntegratorType::photon);
+  EXPECT_EQ(sppm.scene.settings.integrator, IntegratorType::sppm);
   EXPECT_EQ(sppm.scene.settings.max_depth, 5);  // pbrt-v3's default
-  EXPECT_NE(sppm.warnings.find("integrator \"sppm\" is not implemented: rendering with \"photon\""), std::string::npos);
-  EXPECT_EQ(sppm.warnings.find("not used"), std::string::npos);
+  EXPECT_EQ(sppm.warnings, "");
   PbrtScene mlt = import("Integrator \"mlt\"\n" + world(""));
   EXPECT_EQ(mlt.scene.settings.integrator, IntegratorType::bdpt);
   EXPECT_NE(mlt.warnings.find("integrator \"mlt\" is not implemented: rendering with \"bdpt\""), std::string::npos)

@@ -161,8 +161,8 @@ TEST(PbrtImport, UnsupportedFeaturesAreNamed) {
   EXPECT_EQ(import_error("Integrator \"ambientocclusion\"\n" + world("")),
             "scene.pbrt:1:12: error: integrator \"ambientocclusion\" is not supported\nIntegrator \"ambientocclusion\"\n"
             "           ^~~~~~~~~~~~~~~~~~\n"
-            "help: supported: \"path\", \"volpath\", \"bdpt\", \"directlighting\", \"whitted\" (as direct "
-            "lighting); \"mlt\" (as bdpt) and \"sppm\" (as photon)\n");
+            "help: supported: \"path\", \"volpath\", \"bdpt\", \"sppm\", \"directlighting\", \"whitted\" (as "
+            "direct lighting); \"mlt\" (as bdpt)\n");
   EXPECT_EQ(import_error("ActiveTransform EndTime\nTranslate 1 0 0\nCamera \"perspective\"\n" + world("")),
             "scene.pbrt:3:1: error: an animated camera (a transform ActiveTransform changed at one time only) is not "
             "supported\nCamera \"perspective\"\n^~~~~~\n"

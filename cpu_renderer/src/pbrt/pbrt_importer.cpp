@@ -70,10 +70,6 @@ bool invertible(const Matrix& m) {
   return std::isnormal(det) && finite(glm::inverse(m));
 }
 
-// The photons of sppm's iterations the photon integrator traces at most:
-// about 1 GB of photon map (memory_estimate.cpp's bytes per photon).
-constexpr uint64_t kMaxSppmPhotons = uint64_t{1} << 24;
-
 SourceRange span(const Directive& d) {
   return d.arguments.begin.file == d.range.begin.file ? SourceRange{d.range.begin, d.arguments.end} : d.range;
 }
@@ -108,10 +104,6 @@ constexpr IntegratorSubstitute kIntegratorSubstitutes[] = {
     {"mlt", IntegratorType::bdpt, "bdpt",
      "bdpt converges to the same image; MLT's Metropolis sampling of bdpt's paths only spreads its noise differently",
      {"bootstrapsamples", "chains", "mutationsperpixel", "largestepprobability", "sigma"}},
-    {"sppm", IntegratorType::photon, "photon",
-     "the photon integrator renders the caustics SPPM is chosen for, from one photon map of as many photons as "
-     "SPPM's iterations trace in all, of its own fixed radius",
-     {"imagewritefrequency", "radius", "seed"}},
 };
 
 const IntegratorSubstitute* substitute_for(const std::string& type) {
@@ -408,7 +400,6 @@ void Importer::integrator(const Directive& d) {
   RenderSettings& settings = result_.scene.settings;
   integrator_name_ = type;
   integrator_at_ = d.string_ranges[0];
-  sppm_.reset();
   integrator_traces_media_ = type == "volpath" || type == "bdpt" || type == "mlt";
   if (type == "path" || type == "volpath") {  // volpath: the path tracer, which traces media
     settings.integrator = IntegratorType::path;
@@ -429,6 +420,9 @@ void Importer::integrator(const Directive& d) {
     // Ours chooses lights by power (as pbrt-v3's default for bdpt) and shows no strategies apart.
     for (std::string_view name : {"lightsamplestrategy", "visualizestrategies", "visualizeweights"})
       params.find(name, {ParamType::integer, ParamType::floating, ParamType::boolean, ParamType::string});
+  } else if (type == "sppm") {
+    settings.integrator = IntegratorType::sppm;
+    read_sppm(params);
   } else if (const IntegratorSubstitute* substitute = substitute_for(type)) {
     settings.integrator = substitute->ours;
     for (std::string_view name : substitute->noise_only) {
@@ -438,43 +432,30 @@ void Importer::integrator(const Directive& d) {
     warn(d.string_ranges[0],
          "integrator \"" + type + "\" is not implemented: rendering with \"" + std::string(substitute->ours_name) + "\"",
          std::string(substitute->why));
-    if (type == "sppm") read_sppm_photons(params, d.string_ranges[0]);
   } else {
     fail(d.string_ranges[0], "integrator \"" + type + "\" is not supported",
-         "supported: \"path\", \"volpath\", \"bdpt\", \"directlighting\", \"whitted\" (as direct lighting); "
-         "\"mlt\" (as bdpt) and \"sppm\" (as photon)");
+         "supported: \"path\", \"volpath\", \"bdpt\", \"sppm\", \"directlighting\", \"whitted\" (as direct "
+         "lighting); \"mlt\" (as bdpt)");
   }
   settings.max_depth = params.one_int("maxdepth", 5, 0, 1024);
   params.reject("pixelbounds", "render the whole image, or crop with --crop");
   report_unused(params);
 }
 
-// pbrt-v3's SPPM traces "iterations" (or, in older versions, "numiterations";
-// 64) passes of "photonsperiteration" photons (the film's pixels when not
-// positive). The photon map is counted once the film is known (WorldBegin).
-void Importer::read_sppm_photons(ParamSet& params, SourceRange at) {
-  SppmPhotons sppm;
-  sppm.iterations = params.one_int("iterations", params.one_int("numiterations", 64, 1, 1 << 30), 1, 1 << 30);
-  sppm.per_iteration = params.one_int("photonsperiteration", -1, -(1 << 30), 1 << 30);
-  sppm.at = at;
-  sppm_ = sppm;
-}
-
-// SPPM's photons in all as the photon integrator's one map, as many as fit
-// (kMaxSppmPhotons; more is a warning).
-void Importer::set_sppm_photons() {
-  if (!sppm_ || result_.scene.settings.integrator != IntegratorType::photon) return;
-  const RenderSettings& settings = result_.scene.settings;
-  const uint64_t pixels = result_.crop ? static_cast<uint64_t>(result_.crop->width) * result_.crop->height
-                                       : static_cast<uint64_t>(settings.width) * settings.height;
-  const uint64_t per_iteration = sppm_->per_iteration > 0 ? static_cast<uint64_t>(sppm_->per_iteration) : pixels;
-  const uint64_t photons = per_iteration * static_cast<uint64_t>(sppm_->iterations);
-  if (photons > kMaxSppmPhotons)
-    warn(sppm_->at,
-         "sppm's " + std::to_string(sppm_->iterations) + " iterations of " + std::to_string(per_iteration) +
-             " photons: tracing " + std::to_string(kMaxSppmPhotons) + " of them",
-         "the most one photon map takes here; --photons traces another number");
-  result_.scene.settings.photons = static_cast<int>(std::min<uint64_t>(photons, kMaxSppmPhotons));
+// pbrt-v3's SPPM: "iterations" (or, in older versions, "numiterations"; 64)
+// passes of "photonsperiteration" photons (the film's pixels when not
+// positive), from visible points of initial "radius" (1, in scene units);
+// "imagewritefrequency" (intermediate images) and pbrt-v4's "seed" change no pixel.
+void Importer::read_sppm(ParamSet& params) {
+  RenderSettings& settings = result_.scene.settings;
+  settings.sppm_iterations = params.one_int("iterations", params.one_int("numiterations", 64, 1, 1 << 24), 1, 1 << 24);
+  settings.sppm_photons_per_iteration = params.one_int("photonsperiteration", -1, -(1 << 30), 1 << 28);
+  const double radius = params.one_float("radius", 1);
+  settings.sppm_radius = radius > 0 && std::isfinite(radius)
+                             ? sg::from_raw<Length>(static_cast<Real>(radius * options_.metres_per_unit))
+                             : Length(sg::zero);
+  for (std::string_view name : {"imagewritefrequency", "seed"})
+    params.find(name, {ParamType::integer, ParamType::floating, ParamType::boolean, ParamType::string});
 }
 
 // A light-choice parameter of pbrt-v3's integrators as our strategy ("one":
@@ -538,7 +519,6 @@ void Importer::pixel_filter(const Directive& d) {
 
 void Importer::world_begin(const Directive& d) {
   finish_camera(d.range);
-  set_sppm_photons();
   block_ = Block::world;
   state_.transform.start = state_.transform.end = Matrix(1.0);
   coordinate_systems_["world"] = {state_.transform.start, state_.transform.end};

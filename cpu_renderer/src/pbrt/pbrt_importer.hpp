@@ -184,8 +184,7 @@ class Importer {
   LightStrategy light_strategy(ParamSet& params, std::string_view name, std::string_view fallback,
                                std::initializer_list<std::string_view> known);
   void pixel_filter(const Directive& d);
-  void read_sppm_photons(ParamSet& params, SourceRange at);
-  void set_sppm_photons();
+  void read_sppm(ParamSet& params);
   void fall_back_from_bdpt(SourceRange world_end);
   void finish_camera(SourceRange world_begin);
   glm::dmat3 similarity_camera_frame(const glm::dmat3& frame, SourceRange at);
@@ -284,12 +283,6 @@ class Importer {
   std::optional<SourceRange> integrator_at_;
   bool integrator_traces_media_ = false;       // volpath, bdpt, mlt
   bool light_samples_per_light_ = false;      // directlighting: area lights' "nsamples" count
-  struct SppmPhotons {
-    int iterations = 64;
-    int per_iteration = -1;  // not positive: one per pixel of the (cropped) film
-    SourceRange at;          // the integrator's name
-  };
-  std::optional<SppmPhotons> sppm_;  // under "sppm", its photon budget
 
   GraphicsState state_;
   std::vector<GraphicsState> attribute_stack_;

@@ -69,7 +69,8 @@ Scene Loader::load(const Json& root) {
 void Loader::load_render_settings(const Json& value, const JsonPath& path, RenderSettings& settings) {
   object(value, path,
          {"resolution", "spp", "integrator", "max_depth", "mis", "light_samples", "light_strategy", "filter",
-          "russian_roulette", "russian_roulette_depth", "photons", "photon_radius"});
+          "russian_roulette", "russian_roulette_depth", "photons", "photon_radius", "sppm_iterations",
+          "sppm_photons_per_iteration", "sppm_radius"});
   if (value.contains("resolution")) {
     const Json& resolution = value["resolution"];
     if (!resolution.is_array() || resolution.size() != 2)
@@ -85,7 +86,8 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
     else if (name == "path") settings.integrator = IntegratorType::path;
     else if (name == "photon") settings.integrator = IntegratorType::photon;
     else if (name == "bdpt") settings.integrator = IntegratorType::bdpt;
-    else fail(path.field("integrator"), "expected \"direct\", \"path\", \"photon\" or \"bdpt\", got " + short_dump(value["integrator"]));
+    else if (name == "sppm") settings.integrator = IntegratorType::sppm;
+    else fail(path.field("integrator"), "expected \"direct\", \"path\", \"photon\", \"bdpt\" or \"sppm\", got " + short_dump(value["integrator"]));
   }
   if (value.contains("mis")) settings.mis = boolean(value["mis"], path.field("mis"));
   if (value.contains("light_samples"))
@@ -108,6 +110,15 @@ void Loader::load_render_settings(const Json& value, const JsonPath& path, Rende
   if (value.contains("photon_radius")) {
     settings.photon_radius = typed_scalar<dim::length>(value["photon_radius"], path.field("photon_radius"));
     if (!(settings.photon_radius > sg::zero)) fail(path.field("photon_radius"), "must be positive");
+  }
+  if (value.contains("sppm_iterations"))
+    settings.sppm_iterations = integer(value["sppm_iterations"], path.field("sppm_iterations"), 1, 1 << 24);
+  if (value.contains("sppm_photons_per_iteration"))
+    settings.sppm_photons_per_iteration =
+        integer(value["sppm_photons_per_iteration"], path.field("sppm_photons_per_iteration"), 1, 1 << 28);
+  if (value.contains("sppm_radius")) {
+    settings.sppm_radius = typed_scalar<dim::length>(value["sppm_radius"], path.field("sppm_radius"));
+    if (!(settings.sppm_radius > sg::zero)) fail(path.field("sppm_radius"), "must be positive");
   }
 }
 

@@ -333,7 +333,7 @@ TEST_F(LoaderFiles, PhotonSettings) {
   EXPECT_EQ(error(with_camera(R"j("render": {"photon_radius": "2 sr"})j")),
             "test.json: render.photon_radius: expected length (e.g. m), got \"2 sr\" (solid angle)");
   EXPECT_EQ(error(with_camera(R"j("render": {"integrator": "bidirectional"})j")),
-            "test.json: render.integrator: expected \"direct\", \"path\", \"photon\" or \"bdpt\", got \"bidirectional\"");
+            "test.json: render.integrator: expected \"direct\", \"path\", \"photon\", \"bdpt\" or \"sppm\", got \"bidirectional\"");
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "accel/geometry.hpp"
 #include "lights/light_choice.hpp"
 #include "integrators/photon_map.hpp"
+#include "integrators/sppm.hpp"
 #include "film/pixel_filter.hpp"
 #include "film/splat_film.hpp"
 
@@ -146,6 +147,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
   }
   if (settings.integrator == IntegratorType::photon)
     estimate.photons = static_cast<uint64_t>(std::max(0, settings.photons)) * kBytesPerPhoton;
+  if (settings.integrator == IntegratorType::sppm) estimate.film += sppm_bytes(settings, pixels);
   if (settings.light_strategy == LightStrategy::spatial) {
     uint64_t lights = scene.point_lights.size() + scene.spot_lights.size() + scene.distant_lights.size() +
                       (scene.environment ? 1 : 0);
