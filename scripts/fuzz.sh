@@ -18,7 +18,7 @@
 # targets). A crash leaves its input in build-fuzz/fuzz-artifacts/<target>/
 # and the script exits non-zero; turn every such input into a regression test
 # (compiler: a golden case under testsuite/golden/cases/fuzz/; lsp: a case in
-# lsp/src/server_test.cpp; pbrt: a case of cpu_renderer/src/pbrt_import_test.cpp).
+# lsp/src/server_test.cpp; pbrt: a case of cpu_renderer/src/pbrt/pbrt_import_test.cpp).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 target=${1:?usage: scripts/fuzz.sh compiler|lsp|pbrt [seconds]}

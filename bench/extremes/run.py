@@ -10,7 +10,7 @@ row here (time and outcome).
 * The typed C++ library: g++ -fsyntax-only on generated translation units (a
   chain of N derived dimensions, each a template instantiation deeper; the
   largest exponents; exponent overflow): compile time and outcome.
-* The renderer: the extremes tests of cpu_renderer/src/extremes_test.cpp, each
+* The renderer: the extremes tests of cpu_renderer/tests/extremes_test.cpp, each
   with its run time and result (docs/stability.md has what each checks).
 """
 from __future__ import annotations

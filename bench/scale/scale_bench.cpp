@@ -28,7 +28,7 @@
 #include <thread>
 #include <vector>
 
-#include "geometry.hpp"
+#include "accel/geometry.hpp"
 
 #ifdef SAFEGI_BENCH_EMBREE
 #include <embree3/rtcore.h>

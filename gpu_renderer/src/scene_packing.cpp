@@ -8,7 +8,7 @@
 #include <string>
 #include <variant>
 
-#include "bvh.hpp"  // cpu_renderer's BVH: the GPU walks the nodes it builds
+#include "accel/bvh.hpp"  // cpu_renderer's BVH: the GPU walks the nodes it builds
 #include "safegi/cpu_renderer/types.hpp"
 
 namespace safegi::gpu {

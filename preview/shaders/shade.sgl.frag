@@ -8,7 +8,7 @@
 //                 a point-like light of intensity Le · cos θy · A / N;
 //   MIRROR        a planar mirror, one bounce: Kr times the radiance its
 //                 reflection pass found at this pixel.
-// The BRDFs are the CPU renderer's (cpu_renderer/src/bsdf.hpp): Lambert ρ/π
+// The BRDFs are the CPU renderer's (cpu_renderer/src/materials/bsdf.hpp): Lambert ρ/π
 // and energy-conserving Phong ρs (n+2)/(2π) cosⁿα, two-sided.
 #include <safegi/prelude.sgl>
 

@@ -1,5 +1,5 @@
 // Reads a pbrt-v3 scene file (the subset docs/pbrt-import.md lists) into the
-// renderer's Scene: tokenizer → parser → importer, in cpu_renderer/src/pbrt_*.
+// renderer's Scene: tokenizer → parser → importer, in cpu_renderer/src/pbrt/.
 //
 // pbrt scenes carry no units: the caller says what one pbrt length unit is
 // (`safegi-render scene.pbrt --length-unit cm`). Radiometric numbers are read

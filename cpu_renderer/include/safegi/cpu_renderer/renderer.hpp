@@ -26,7 +26,7 @@ struct PixelRect {
 std::vector<PixelRect> render_tiles(int width, int height);
 
 // One process's share of a render split over several processes
-// (cpu_renderer/src/distributed.hpp). The process renders the tiles t with
+// (cpu_renderer/src/distributed/distributed.hpp). The process renders the tiles t with
 // t % parts() == part(), each pixel with all its samples, so every pixel's sum
 // adds the same samples in the same order as a single process would; a
 // time-budgeted render's pass decisions are taken by process 0 for all.

@@ -349,7 +349,7 @@ struct Camera {
   int medium = -1;  // the medium the camera is in (index into Scene::media; -1: vacuum)
 };
 
-enum class IntegratorType { direct, path, photon, bdpt };
+enum class IntegratorType { direct, path, photon, bdpt, sppm };
 
 // How next-event estimation picks the lights its shadow rays go to (pbrt-v3's
 // strategies of those names): one light per shadow ray, in proportion to
@@ -431,6 +431,12 @@ struct RenderSettings {
   // radius of the density estimate (zero: chosen from the scene's size).
   int photons = 200000;
   Length photon_radius = sg::zero;
+  // Stochastic progressive photon mapping (integrator sppm, sppm.hpp):
+  // iterations, photons per iteration (not positive: the film's pixels) and
+  // the initial radius of the visible points (zero: one metre).
+  int sppm_iterations = 64;
+  int sppm_photons_per_iteration = -1;
+  Length sppm_radius = sg::zero;
   // Every pixel of the finished image times this (pbrt-v3's Film "scale").
   double film_scale = 1;
 };
