@@ -5,6 +5,7 @@
 // calls.cpp (built-in, user and generic calls, constructors), mismatch.cpp
 // (type mismatch diagnostics and physics hints).
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -399,8 +400,10 @@ class Checker {
     bool literal = false;
   };
   std::vector<ProductFactor> product_factors(SourceRange range) const;
-  std::string non_unit_dot_operand(const ast::Expr* e, int depth = 0) const;
-  std::string angle_divided_by_pi(const ast::Expr* e, int depth = 0) const;
+  std::string find_following_locals(const ast::Expr* e, const std::function<std::string(const ast::Node&)>& match,
+                                    int depth = 0) const;
+  std::string non_unit_dot_operand(const ast::Expr* e) const;
+  std::string angle_divided_by_pi(const ast::Expr* e) const;
   std::optional<std::string> angle_fraction_hint(const Value& lhs, const Value& rhs) const;
   std::string physics_hint(const DimSlot& expected, const DimSlot& found, SourceRange found_range = {}) const;
   std::string operand_hint(const DimSlot& left, const DimSlot& right, SourceRange right_range) const;  // a + b, a - b

@@ -81,61 +81,59 @@ std::vector<Checker::ProductFactor> Checker::product_factors(SourceRange range) 
   return out;
 }
 
-// In `e`, a dot(a, b) of a unit vector (direction or normal) and a vector of a space: "'b', a
-// vector<S, 1>". Empty if there is none.
-std::string Checker::non_unit_dot_operand(const ast::Expr* e, int depth) const {
+// The first non-empty `match` of a node of `e`, walking on into the initialiser of each inferred
+// local `e` names (`float cosL = max(dot(n, -dir), 0.0);` ... `L * cosL`), three locals deep.
+std::string Checker::find_following_locals(const ast::Expr* e, const std::function<std::string(const ast::Node&)>& match,
+                                           int depth) const {
   std::string found;
   if (e == nullptr) return found;
-  const auto geometry = [&](const ast::Expr* x) {
-    const auto t = result_.types.find(x);
-    return t == result_.types.end() ? Geometry::none : t->second.geometry;
-  };
   ast::walk(e, [&](const ast::Node& n) {
     if (!found.empty()) return;
-    // A local whose type was inferred from its initialiser (`float cosL = max(dot(n, -dir), 0.0);`):
-    // the dot product is there.
     if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(&n); id && depth < 3) {
       if (const Variable* v = lookup(id->name); v && !v->builtin && v->origin.inferred)
-        found = non_unit_dot_operand(expression_at(v->origin.range), depth + 1);
+        found = find_following_locals(expression_at(v->origin.range), match, depth + 1);
       return;
     }
-    const auto* call = ast::dyn_cast<ast::CallExpr>(&n);
-    if (call == nullptr || call->callee != "dot" || call->args.size() != 2) return;
-    for (int i = 0; i < 2; ++i) {
-      const Geometry unit = geometry(call->args[i]), other = geometry(call->args[1 - i]);
-      if ((unit == Geometry::direction || unit == Geometry::normal) && other == Geometry::vector) {
-        const auto t = result_.types.find(call->args[1 - i]);
-        found = "'" + print_expression(*call->args[1 - i]) + "', a " + name_of(t->second);
-        return;
-      }
-    }
+    found = match(n);
   });
   return found;
 }
 
-// The π constant an expression divides an angle by (`theta / PI`, following inferred locals:
-// `float n = (a + HALF_PI) / PI;`), or empty.
-std::string Checker::angle_divided_by_pi(const ast::Expr* e, int depth) const {
-  std::string found;
-  if (e == nullptr) return found;
-  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
-  ast::walk(e, [&](const ast::Node& n) {
-    if (!found.empty() || !angle) return;
-    if (const auto* id = ast::dyn_cast<ast::IdentifierExpr>(&n); id && depth < 3) {
-      if (const Variable* v = lookup(id->name); v && !v->builtin && v->origin.inferred)
-        found = angle_divided_by_pi(expression_at(v->origin.range), depth + 1);
-      return;
+// In `e`, a dot(a, b) of a unit vector (direction or normal) and a vector of a space: "'b', a
+// vector<S, 1>". Empty if there is none.
+std::string Checker::non_unit_dot_operand(const ast::Expr* e) const {
+  const auto geometry = [&](const ast::Expr* x) {
+    const auto t = result_.types.find(x);
+    return t == result_.types.end() ? Geometry::none : t->second.geometry;
+  };
+  return find_following_locals(e, [&](const ast::Node& n) -> std::string {
+    const auto* call = ast::dyn_cast<ast::CallExpr>(&n);
+    if (call == nullptr || call->callee != "dot" || call->args.size() != 2) return {};
+    for (int i = 0; i < 2; ++i) {
+      const Geometry unit = geometry(call->args[i]), other = geometry(call->args[1 - i]);
+      if ((unit == Geometry::direction || unit == Geometry::normal) && other == Geometry::vector) {
+        const auto t = result_.types.find(call->args[1 - i]);
+        return "'" + print_expression(*call->args[1 - i]) + "', a " + name_of(t->second);
+      }
     }
+    return {};
+  });
+}
+
+// The π constant an expression divides an angle by (`theta / PI`, `float n = (a + HALF_PI) / PI;`), or empty.
+std::string Checker::angle_divided_by_pi(const ast::Expr* e) const {
+  const std::optional<Dimension> angle = result_.registry.find_dimension("angle");
+  if (!angle) return {};
+  return find_following_locals(e, [&](const ast::Node& n) -> std::string {
     const auto* div = ast::dyn_cast<ast::BinaryExpr>(&n);
-    if (div == nullptr || div->op != ast::BinaryOp::Div) return;
+    if (div == nullptr || div->op != ast::BinaryOp::Div) return {};
     const auto* pi = ast::dyn_cast<ast::IdentifierExpr>(ast::without_parens(div->rhs));
     const Variable* constant = pi ? lookup(pi->name) : nullptr;
     const auto numerator = result_.types.find(div->lhs);
-    if (constant && constant->pi_constant && numerator != result_.types.end() && numerator->second.dim.is_known() &&
-        numerator->second.dim.value == *angle)
-      found = pi->name;
+    const bool angle_over_pi = constant && constant->pi_constant && numerator != result_.types.end() &&
+                               numerator->second.dim.is_known() && numerator->second.dim.value == *angle;
+    return angle_over_pi ? pi->name : std::string();
   });
-  return found;
 }
 
 // An angle beside an angle divided by π (a fraction of π radians): one side was normalised, the other not.
