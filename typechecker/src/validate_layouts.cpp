@@ -647,8 +647,9 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
     if (std::optional<long long> v = layout_value(*a)) block_align = *v;
   const bool block_row_major = find_layout_id(d.qualifiers, "row_major") != nullptr;
   long long next = 0;  // the first byte after the previous member
-  long long end = 0;   // the first byte after every member (members out of order under Vulkan)
-  std::vector<std::pair<const ast::Declarator*, std::pair<long long, long long>>> placed_ranges;  // [begin, end)
+  // Each member's bytes, [begin, end): under Vulkan members may come in any order, so these are
+  // what an offset must not overlap, and the block ends at the last of them.
+  std::vector<std::pair<const ast::Declarator*, std::pair<long long, long long>>> placed_ranges;
   for (const ast::VariableDecl* m : d.members) {
     const ast::LayoutId* offset = find_layout_id(m->qualifiers, "offset");
     const ast::LayoutId* align = find_layout_id(m->qualifiers, "align");
@@ -707,11 +708,11 @@ void Checker::validate_block_layout(const ast::InterfaceBlockDecl& d) {
         return;
       }
       next = at + p.size;
-      end = std::max(end, next);
       placed_ranges.emplace_back(&decl, std::pair{at, next});
     }
   }
-  layout.size = end;
+  layout.size = 0;
+  for (const auto& placed : placed_ranges) layout.size = std::max(layout.size, placed.second.second);
   result_.block_layouts[&d] = std::move(layout);
 }
 
